@@ -1,0 +1,60 @@
+# FP3 -- Field-Programmable Physics Processor
+#
+#   make sim      build the Verilated RTL and run the default ship scene
+#   make test     the whole test suite (installs what is missing first)
+#   make lint     verilator --lint-only -Wall on the RTL
+#   make synth    Yosys synthesis of the top (xc2v), area report
+#   make help     all targets
+#
+# Missing tools are installed by scripts/setup.sh (Debian packages).
+
+BUILD      ?= build
+CC         ?= cc
+CXX        ?= g++
+VERILATOR  ?= verilator
+YOSYS      ?= yosys
+
+# C that models hardware: no contraction into FMA, no fast-math (DESIGN.md).
+CSTD       := -std=c11 -D_POSIX_C_SOURCE=200809L
+CWARN      := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+CFLAGS     ?= -O2 -g
+CFLAGS     += $(CSTD) $(CWARN) -ffp-contract=off -fno-fast-math -frounding-math -Isw
+SAN_FLAGS  ?= -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+LDLIBS_SW  := -lgsl -lgslcblas -lz -lm
+CMOCKA_LIB := -lcmocka
+
+VERILATOR_ROOT_INC := $(shell $(VERILATOR) --getenv VERILATOR_ROOT 2>/dev/null)/include
+VFLAGS     := -Wall -O3 --x-assign fast --x-initial fast --noassert -Irtl
+VERILATOR_CXXFLAGS := -O2 -std=c++14 -I$(VERILATOR_ROOT_INC) -I$(VERILATOR_ROOT_INC)/vltstd
+
+RTL_SRC    := $(wildcard rtl/*.v)
+RTL_INC    := rtl/fp3_isa.vh
+
+TEST_BINS    :=
+TEST_SCRIPTS :=
+
+.PHONY: all sim test lint synth setup clean help
+all: $(BUILD)/fp3
+
+help:
+	@sed -n '3,9p' Makefile | sed 's/^# \{0,1\}//'
+
+# ---- one set-up script installs what is missing ----------------------------
+SETUP_STAMP := $(BUILD)/.setup-ok
+setup $(SETUP_STAMP):
+	@mkdir -p $(BUILD)
+	@if command -v $(VERILATOR) >/dev/null && command -v iverilog >/dev/null && \
+	    command -v $(YOSYS) >/dev/null && [ -f /usr/include/gsl/gsl_errno.h ] && \
+	    [ -f /usr/include/cmocka.h ] && [ -f /usr/include/zlib.h ]; then \
+	  echo "setup: tools present"; \
+	else bash scripts/setup.sh; fi
+	@touch $(SETUP_STAMP)
+
+include $(wildcard mk/*.mk)
+
+clean:
+	rm -rf $(BUILD)
+
+# TEST_BINS / TEST_SCRIPTS are filled in by the mk/*.mk fragments.
+test: $(SETUP_STAMP) $(TEST_BINS)
+	@bash scripts/run-tests.sh $(TEST_BINS) $(TEST_SCRIPTS)

@@ -1,0 +1,92 @@
+/*
+ * engine.h -- one small interface to every FP3 execution engine.
+ *
+ * An engine runs a program image: the Verilated RTL (engine_rtl.c) or the
+ * instruction-set simulator (iss.c).  Tests and the CLI run the same
+ * program on two engines through this interface and compare.
+ *
+ * Observation: while a run goes on, the engine reports every register
+ * write-back and every end-of-integration (endi) to an observer.  The RTL
+ * engine takes these from the model's trace port while the machine runs
+ * freely, so observing changes no cycle count (DESIGN.md "Observe, don't
+ * stop").  Each write is tagged with the integration it belongs to: the
+ * number of endi instructions issued before the writing instruction, plus
+ * one (prologue writes belong to integration 1).  Writes to one register
+ * arrive in program order on every engine; writes to different registers
+ * may interleave differently on different engines.
+ */
+#ifndef FP3_ENGINE_H
+#define FP3_ENGINE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
+typedef struct fp3_config {
+  unsigned num_regs;    /* registers                                     */
+  unsigned imem_depth;  /* instruction memory entries                    */
+  unsigned add_latency; /* cycles, issue to dependent issue (RTL only)   */
+  unsigned mul_latency; /* cycles, issue to dependent issue (RTL only)   */
+} fp3_config;
+
+/* Status and counters after a run. */
+typedef struct fp3_status {
+  int done;              /* 1 when the run has ended                      */
+  unsigned error;        /* enum fp3_error                                */
+  uint32_t fault_pc;     /* PC of the faulting instruction if error != 0  */
+  uint32_t steps_done;   /* integrations completed (endi issued)          */
+  uint32_t flags;        /* sticky exception flags, enum fp3_flag bits    */
+  uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
+  uint64_t issued;       /* instructions issued                           */
+  uint64_t stalls;       /* cycles an instruction waited on a hazard      */
+} fp3_status;
+
+/* Observer callbacks; any may be NULL. */
+typedef struct fp3_observer {
+  void *ctx;
+  /* A result was written to register `reg`. */
+  void (*on_write)(void *ctx, unsigned reg, uint32_t value,
+                   uint32_t integration);
+  /* The endi closing integration `integration` (1-based) issued in `cycle`
+   * (cycles counted from 0 at START; the ISS counts instructions). */
+  void (*on_endi)(void *ctx, uint32_t integration, uint64_t cycle);
+} fp3_observer;
+
+typedef struct fp3_engine fp3_engine;
+
+/* Operations of one engine kind.  Each returns 0 on success and a negative
+ * value on failure, with a message from fp3_engine_error(). */
+typedef struct fp3_engine_ops {
+  const char *name; /* "rtl" or "iss" */
+  int (*load_program)(fp3_engine *e, const uint64_t *words, size_t n);
+  int (*write_reg)(fp3_engine *e, unsigned reg, uint32_t value);
+  int (*read_reg)(fp3_engine *e, unsigned reg, uint32_t *value);
+  int (*run)(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
+             fp3_status *st);
+  void (*destroy)(fp3_engine *e);
+} fp3_engine_ops;
+
+/* Common head of every engine object. */
+struct fp3_engine {
+  const fp3_engine_ops *ops;
+  fp3_config config;
+  char error[256]; /* last error message */
+};
+
+/* Constructors.  Return NULL only when out of memory. */
+fp3_engine *fp3_engine_iss_new(void);
+/* trace_path: waveform file to write (NULL: none). */
+fp3_engine *fp3_engine_rtl_new(const char *trace_path);
+/* By name, "rtl" or "iss"; NULL for an unknown name. */
+fp3_engine *fp3_engine_new(const char *name);
+
+/* Thin dispatchers over e->ops. */
+int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n);
+int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value);
+int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value);
+int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
+                   fp3_status *st);
+void fp3_engine_free(fp3_engine *e);
+const char *fp3_engine_error(const fp3_engine *e);
+
+#endif /* FP3_ENGINE_H */

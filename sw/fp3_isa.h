@@ -1,0 +1,164 @@
+/*
+ * fp3_isa.h -- the one source of truth for the FP3 instruction set,
+ * build configuration, exception flags, error codes and host-port map.
+ *
+ * Every table here is an X-macro list.  The C side (assembler, ISS,
+ * engines, CLI) expands them directly; `build/gen_isa` expands them into
+ * rtl/fp3_isa.vh, the Verilog header the RTL includes.  The test
+ * `tests/test_isa_sync.sh` regenerates that header and fails if it differs
+ * from the committed one, so the two sides cannot drift apart.
+ *
+ * Instruction word: 64 bits, one per instruction memory entry.
+ *
+ *   63      56 55    48 47    40 39    32 31                       0
+ *  +----------+--------+--------+--------+--------------------------+
+ *  |  opcode  |   rd   |   ra   |   rb   |          imm             |
+ *  +----------+--------+--------+--------+--------------------------+
+ *
+ * A field an opcode does not use must be zero, a register field must be
+ * below FP3_NUM_REGS; anything else is an illegal instruction (error
+ * ILLEGAL_INSN, with the faulting PC), both in the RTL and in the ISS.
+ */
+#ifndef FP3_ISA_H
+#define FP3_ISA_H
+
+/* Field positions (lsb) and widths of the instruction word. */
+#define FP3_INSN_BITS   64
+#define FP3_OPC_LSB     56
+#define FP3_RD_LSB      48
+#define FP3_RA_LSB      40
+#define FP3_RB_LSB      32
+#define FP3_IMM_LSB     0
+#define FP3_OPC_WIDTH   8
+#define FP3_REG_WIDTH   8
+#define FP3_IMM_WIDTH   32
+
+/* Operand fields an opcode uses (bit set = field used). */
+#define FP3_USES_RD  0x1
+#define FP3_USES_RA  0x2
+#define FP3_USES_RB  0x4
+#define FP3_USES_IMM 0x8
+
+/* Execution unit an opcode is sent to. */
+#define FP3_UNIT_NONE 0   /* no register result: nop, endi, halt          */
+#define FP3_UNIT_ADD  1   /* FP add/sub core, ADD_LATENCY cycles          */
+#define FP3_UNIT_MUL  2   /* FP mul core, MUL_LATENCY cycles              */
+#define FP3_UNIT_MOV  3   /* move/immediate path, result the next cycle   */
+
+/*
+ * X(NAME, opcode, mnemonic, fields used, unit, description)
+ *
+ * endi: end of integration.  Increments the integration counter; if it
+ * reached the requested count the run stops issuing (in-flight results
+ * still drain), otherwise the PC jumps to imm, the first instruction of the
+ * loop body.  Everything before the body is the prologue, run once.
+ */
+#define FP3_OPCODES(X)                                                         \
+  X(NOP,  0x00, "nop",  0,                                                     \
+    FP3_UNIT_NONE, "no operation")                                             \
+  X(ADD,  0x01, "add",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_ADD,  "rd = ra + rb (binary32)")                                  \
+  X(SUB,  0x02, "sub",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_ADD,  "rd = ra - rb (binary32)")                                  \
+  X(MUL,  0x03, "mul",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_MUL,  "rd = ra * rb (binary32)")                                  \
+  X(LI,   0x04, "li",   FP3_USES_RD | FP3_USES_IMM,                            \
+    FP3_UNIT_MOV,  "rd = imm (32-bit pattern)")                                \
+  X(MOV,  0x05, "mov",  FP3_USES_RD | FP3_USES_RA,                             \
+    FP3_UNIT_MOV,  "rd = ra (bit copy)")                                       \
+  X(ENDI, 0x06, "endi", FP3_USES_IMM,                                          \
+    FP3_UNIT_NONE, "end of integration; loop to imm unless the last")          \
+  X(HALT, 0x07, "halt", 0,                                                     \
+    FP3_UNIT_NONE, "stop issuing; the run ends when results drain")
+
+/*
+ * Build configuration: X(NAME, default).  The RTL top takes these as
+ * parameters with these defaults; the C side reads the values a model was
+ * built with back from the INFO host registers.
+ */
+#define FP3_CONFIG(X)                                                          \
+  X(NUM_REGS,    32)   /* registers per context (at most 256)          */      \
+  X(IMEM_DEPTH,  256)  /* instruction memory words (at most 1024)      */      \
+  X(ADD_LATENCY, 4)    /* add/sub core: issue to dependent issue       */      \
+  X(MUL_LATENCY, 3)    /* mul core: issue to dependent issue           */
+
+/* Exception flags, Berkeley SoftFloat / TestFloat bit order. */
+#define FP3_FLAGS(X)                                                           \
+  X(INEXACT,   0x01)                                                           \
+  X(UNDERFLOW, 0x02)                                                           \
+  X(OVERFLOW,  0x04)                                                           \
+  X(INFINITE,  0x08)  /* divide by zero: never raised by add/sub/mul */        \
+  X(INVALID,   0x10)
+
+/* Run error codes (STATUS.ERROR). */
+#define FP3_ERRORS(X)                                                          \
+  X(NONE,         0, "no error")                                               \
+  X(ILLEGAL_INSN, 1, "illegal instruction")                                    \
+  X(PC_OVERFLOW,  2, "PC ran past the end of instruction memory")             \
+  X(BAD_STEPS,    3, "run started with STEPS = 0")
+
+/*
+ * Host port: 32-bit words at 12-bit word addresses.
+ * X(NAME, address, access, description)
+ */
+#define FP3_HOSTREGS(X)                                                        \
+  X(CTRL,       0x000, "W",  "bit0 START a run, bit1 CLEAR status/counters")  \
+  X(STATUS,     0x001, "R",  "bit0 RUNNING, bit1 DONE, bits 11:8 ERROR")      \
+  X(STEPS,      0x002, "RW", "integrations to run")                           \
+  X(STEPS_DONE, 0x003, "R",  "integrations completed (endi issued)")          \
+  X(FAULT_PC,   0x004, "R",  "PC of the instruction that raised ERROR")       \
+  X(FLAGS,      0x005, "R",  "sticky exception flags of the run")             \
+  X(CYCLES_LO,  0x006, "R",  "cycles from START to DONE, low word")           \
+  X(CYCLES_HI,  0x007, "R",  "cycles, high word")                             \
+  X(ISSUED_LO,  0x008, "R",  "instructions issued, low word")                 \
+  X(ISSUED_HI,  0x009, "R",  "instructions issued, high word")                \
+  X(STALLS_LO,  0x00A, "R",  "cycles an instruction waited on a hazard, low") \
+  X(STALLS_HI,  0x00B, "R",  "stall cycles, high word")                       \
+  X(INFO0,      0x00C, "R",  "NUM_REGS[15:0], IMEM_DEPTH[31:16]")             \
+  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8]")           \
+  X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
+  X(REG_BASE,   0x100, "RW", "register r at REG_BASE + r (stopped only)")     \
+  X(IMEM_BASE,  0x800, "RW", "instruction i: low word at IMEM_BASE + 2i, "    \
+                             "high word at IMEM_BASE + 2i + 1 (writing the "  \
+                             "high word stores both halves)")
+
+#define FP3_STATUS_RUNNING   0x1u
+#define FP3_STATUS_DONE      0x2u
+#define FP3_STATUS_ERROR_LSB 8
+#define FP3_CTRL_START       0x1u
+#define FP3_CTRL_CLEAR       0x2u
+#define FP3_ID_VALUE         0x46503301u
+
+/* ---- C views of the tables ------------------------------------------- */
+
+enum fp3_opcode {
+#define X(name, code, mnem, uses, unit, desc) FP3_OP_##name = code,
+  FP3_OPCODES(X)
+#undef X
+};
+
+enum fp3_config_default {
+#define X(name, def) FP3_DEFAULT_##name = def,
+  FP3_CONFIG(X)
+#undef X
+};
+
+enum fp3_flag {
+#define X(name, bit) FP3_FLAG_##name = bit,
+  FP3_FLAGS(X)
+#undef X
+};
+
+enum fp3_error {
+#define X(name, code, desc) FP3_ERR_##name = code,
+  FP3_ERRORS(X)
+#undef X
+};
+
+enum fp3_hostreg {
+#define X(name, addr, acc, desc) FP3_HR_##name = addr,
+  FP3_HOSTREGS(X)
+#undef X
+};
+
+#endif /* FP3_ISA_H */
