@@ -1,0 +1,117 @@
+// fp3_arith -- the arithmetic unit (paper §4): one pipelined FP add/sub
+// core, one pipelined FP mul core and a one-cycle move path, each with its
+// own write-back port.
+//
+// One operation may enter per cycle (single issue).  Each unit carries the
+// destination register index in a delay line beside its data path, so the
+// index leaves with the result.  Write-back ports never collide on one
+// register because the scheduler stalls WAW hazards.
+//
+// Parameters
+//   ADD_LATENCY  cycles from issue to result of fp_add (= issue-to-dependent-
+//                issue distance, thanks to the register-file bypass)
+//   MUL_LATENCY  the same for fp_mul
+//   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
+//   IW           register index width
+// Ports
+//   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, rd_i,
+//   a_i, b_i: the operation issued in this cycle (for the move path a_i is
+//   the value to write: the source register or the immediate).
+//   {add,mul,mov}_{valid,reg,data}_o: write-back ports; add/mul flags_o are
+//   the IEEE exception flags of the result on the same port.
+`default_nettype none
+module fp3_arith #(
+  parameter integer ADD_LATENCY = 4,
+  parameter integer MUL_LATENCY = 3,
+  parameter integer ROUND       = 0,
+  parameter integer FTZ         = 0,
+  parameter integer IW          = 5
+) (
+  input  wire          clk_i,
+  input  wire          rst_i,
+  input  wire          valid_i,
+  input  wire [1:0]    unit_i,
+  input  wire          sub_i,
+  input  wire [IW-1:0] rd_i,
+  input  wire [31:0]   a_i,
+  input  wire [31:0]   b_i,
+  output wire          add_valid_o,
+  output wire [IW-1:0] add_reg_o,
+  output wire [31:0]   add_data_o,
+  output wire [4:0]    add_flags_o,
+  output wire          mul_valid_o,
+  output wire [IW-1:0] mul_reg_o,
+  output wire [31:0]   mul_data_o,
+  output wire [4:0]    mul_flags_o,
+  output reg           mov_valid_o,
+  output reg  [IW-1:0] mov_reg_o,
+  output reg  [31:0]   mov_data_o
+);
+`include "fp3_isa.vh"
+
+  wire add_go = valid_i && unit_i == UNIT_ADD;
+  wire mul_go = valid_i && unit_i == UNIT_MUL;
+  wire mov_go = valid_i && unit_i == UNIT_MOV;
+
+  // ---- add/sub core and its tag line ---------------------------------------
+  wire add_core_valid;
+  fp_add #(.LATENCY(ADD_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_add (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (add_go),
+    .sub_i   (sub_i),
+    .a_i     (a_i),
+    .b_i     (b_i),
+    .valid_o (add_core_valid),
+    .y_o     (add_data_o),
+    .flags_o (add_flags_o)
+  );
+  fp3_delay #(.WIDTH(IW), .DEPTH(ADD_LATENCY)) u_add_tag (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (add_go),
+    .data_i  (rd_i),
+    .valid_o (add_valid_o),
+    .data_o  (add_reg_o)
+  );
+
+  // ---- mul core and its tag line -------------------------------------------
+  wire mul_core_valid;
+  fp_mul #(.LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_mul (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (mul_go),
+    .a_i     (a_i),
+    .b_i     (b_i),
+    .valid_o (mul_core_valid),
+    .y_o     (mul_data_o),
+    .flags_o (mul_flags_o)
+  );
+  fp3_delay #(.WIDTH(IW), .DEPTH(MUL_LATENCY)) u_mul_tag (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (mul_go),
+    .data_i  (rd_i),
+    .valid_o (mul_valid_o),
+    .data_o  (mul_reg_o)
+  );
+
+  // The cores' own valid bits equal the tag lines' (same depth, same input);
+  // the tag lines' are used, the cores' are checked under FORMAL only.
+  wire unused_core_valid = add_core_valid ^ mul_core_valid;
+`ifdef FORMAL
+  always @(*) begin
+    assert (add_core_valid == add_valid_o);
+    assert (mul_core_valid == mul_valid_o);
+  end
+`endif
+
+  // ---- move path: one register stage ---------------------------------------
+  always @(posedge clk_i) begin
+    if (rst_i) mov_valid_o <= 1'b0;
+    else       mov_valid_o <= mov_go;
+    mov_reg_o  <= rd_i;
+    mov_data_o <= a_i;
+  end
+endmodule
+`default_nettype wire

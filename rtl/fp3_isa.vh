@@ -1,0 +1,90 @@
+// fp3_isa.vh -- GENERATED from sw/fp3_isa.h by sw/gen_isa.c; do not edit.
+// The instruction set, flag bits, error codes and host-port map of FP3,
+// shared by the RTL and the C host.  `include inside a module body.
+// Each module uses a few of these constants, never all of them, so the
+// unused-parameter lint is waived for this header only.
+/* verilator lint_off UNUSEDPARAM */
+
+// Instruction word fields: [msb:lsb]
+localparam integer ISA_INSN_BITS = 64;
+localparam integer ISA_OPC_LSB   = 56;
+localparam integer ISA_RD_LSB    = 48;
+localparam integer ISA_RA_LSB    = 40;
+localparam integer ISA_RB_LSB    = 32;
+localparam integer ISA_OPC_WIDTH = 8;
+localparam integer ISA_REG_WIDTH = 8;
+localparam integer ISA_IMM_WIDTH = 32;
+
+// Opcodes and the operand fields each one uses
+// (bit 0 rd, bit 1 ra, bit 2 rb, bit 3 imm; unused fields must be 0).
+// Unit: 0 none, 1 add/sub core, 2 mul core, 3 move path.
+localparam [7:0] OP_NOP  = 8'h00; localparam [3:0] OPUSES_NOP  = 4'h0; localparam [1:0] OPUNIT_NOP  = 2'd0; // nop: no operation
+localparam [7:0] OP_ADD  = 8'h01; localparam [3:0] OPUSES_ADD  = 4'h7; localparam [1:0] OPUNIT_ADD  = 2'd1; // add: rd = ra + rb (binary32)
+localparam [7:0] OP_SUB  = 8'h02; localparam [3:0] OPUSES_SUB  = 4'h7; localparam [1:0] OPUNIT_SUB  = 2'd1; // sub: rd = ra - rb (binary32)
+localparam [7:0] OP_MUL  = 8'h03; localparam [3:0] OPUSES_MUL  = 4'h7; localparam [1:0] OPUNIT_MUL  = 2'd2; // mul: rd = ra * rb (binary32)
+localparam [7:0] OP_LI   = 8'h04; localparam [3:0] OPUSES_LI   = 4'h9; localparam [1:0] OPUNIT_LI   = 2'd3; // li: rd = imm (32-bit pattern)
+localparam [7:0] OP_MOV  = 8'h05; localparam [3:0] OPUSES_MOV  = 4'h3; localparam [1:0] OPUNIT_MOV  = 2'd3; // mov: rd = ra (bit copy)
+localparam [7:0] OP_ENDI = 8'h06; localparam [3:0] OPUSES_ENDI = 4'h8; localparam [1:0] OPUNIT_ENDI = 2'd0; // endi: end of integration; loop to imm unless the last
+localparam [7:0] OP_HALT = 8'h07; localparam [3:0] OPUSES_HALT = 4'h0; localparam [1:0] OPUNIT_HALT = 2'd0; // halt: stop issuing; the run ends when results drain
+
+// Decode an opcode: {known, unit[1:0], uses[3:0]}; 0 for an unknown one.
+function [6:0] isa_decode;
+  input [7:0] opc;
+  begin
+    case (opc)
+      OP_NOP : isa_decode = {1'b1, OPUNIT_NOP , OPUSES_NOP };
+      OP_ADD : isa_decode = {1'b1, OPUNIT_ADD , OPUSES_ADD };
+      OP_SUB : isa_decode = {1'b1, OPUNIT_SUB , OPUSES_SUB };
+      OP_MUL : isa_decode = {1'b1, OPUNIT_MUL , OPUSES_MUL };
+      OP_LI  : isa_decode = {1'b1, OPUNIT_LI  , OPUSES_LI  };
+      OP_MOV : isa_decode = {1'b1, OPUNIT_MOV , OPUSES_MOV };
+      OP_ENDI: isa_decode = {1'b1, OPUNIT_ENDI, OPUSES_ENDI};
+      OP_HALT: isa_decode = {1'b1, OPUNIT_HALT, OPUSES_HALT};
+      default: isa_decode = 7'd0;
+    endcase
+  end
+endfunction
+localparam [1:0] UNIT_NONE = 2'd0, UNIT_ADD = 2'd1, UNIT_MUL = 2'd2, UNIT_MOV = 2'd3;
+
+// Build configuration defaults
+localparam integer DEFAULT_NUM_REGS = 32;
+localparam integer DEFAULT_IMEM_DEPTH = 256;
+localparam integer DEFAULT_ADD_LATENCY = 4;
+localparam integer DEFAULT_MUL_LATENCY = 3;
+
+// Exception flags (Berkeley SoftFloat bit order)
+localparam [4:0] FLAG_INEXACT = 5'h01;
+localparam [4:0] FLAG_UNDERFLOW = 5'h02;
+localparam [4:0] FLAG_OVERFLOW = 5'h04;
+localparam [4:0] FLAG_INFINITE = 5'h08;
+localparam [4:0] FLAG_INVALID = 5'h10;
+
+// Run error codes (STATUS[11:8])
+localparam [3:0] ERR_NONE = 4'd0; // no error
+localparam [3:0] ERR_ILLEGAL_INSN = 4'd1; // illegal instruction
+localparam [3:0] ERR_PC_OVERFLOW = 4'd2; // PC ran past the end of instruction memory
+localparam [3:0] ERR_BAD_STEPS = 4'd3; // run started with STEPS = 0
+
+// Host port: 12-bit word addresses
+localparam [11:0] HR_CTRL = 12'h000; // W bit0 START a run, bit1 CLEAR status/counters
+localparam [11:0] HR_STATUS = 12'h001; // R bit0 RUNNING, bit1 DONE, bits 11:8 ERROR
+localparam [11:0] HR_STEPS = 12'h002; // RW integrations to run
+localparam [11:0] HR_STEPS_DONE = 12'h003; // R integrations completed (endi issued)
+localparam [11:0] HR_FAULT_PC = 12'h004; // R PC of the instruction that raised ERROR
+localparam [11:0] HR_FLAGS = 12'h005; // R sticky exception flags of the run
+localparam [11:0] HR_CYCLES_LO = 12'h006; // R cycles from START to DONE, low word
+localparam [11:0] HR_CYCLES_HI = 12'h007; // R cycles, high word
+localparam [11:0] HR_ISSUED_LO = 12'h008; // R instructions issued, low word
+localparam [11:0] HR_ISSUED_HI = 12'h009; // R instructions issued, high word
+localparam [11:0] HR_STALLS_LO = 12'h00A; // R cycles an instruction waited on a hazard, low
+localparam [11:0] HR_STALLS_HI = 12'h00B; // R stall cycles, high word
+localparam [11:0] HR_INFO0 = 12'h00C; // R NUM_REGS[15:0], IMEM_DEPTH[31:16]
+localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8]
+localparam [11:0] HR_ID = 12'h00E; // R 0x46503301: 'FP3', version 1
+localparam [11:0] HR_REG_BASE = 12'h100; // RW register r at REG_BASE + r (stopped only)
+localparam [11:0] HR_IMEM_BASE = 12'h800; // RW instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
+localparam [31:0] STATUS_RUNNING = 32'h1, STATUS_DONE = 32'h2;
+localparam integer STATUS_ERROR_LSB = 8;
+localparam [31:0] CTRL_START = 32'h1, CTRL_CLEAR = 32'h2;
+localparam [31:0] ID_VALUE = 32'h46503301;
+/* verilator lint_on UNUSEDPARAM */

@@ -1,0 +1,240 @@
+// fp3_top -- the FP3 processor: workload scheduler, register file with busy
+// flags, arithmetic unit, a host port and a write-back trace port.
+//
+// Host port: a simple synchronous word port.  A write (host_we_i) takes
+// effect at the clock edge; read data for host_addr_i is registered and
+// appears on host_rdata_o in the next cycle.  The map (HR_* in
+// rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
+// counters, configuration, the register window and the program window.
+// Registers and instruction memory accept writes only while no run is in
+// progress; a write while running is ignored.
+//
+// Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
+// stop"): every issue (with its unit), every endi and every write-back
+// (register, value) is visible each cycle, so a host can check every
+// result while the machine runs freely.  It adds no state.
+//
+// Parameters
+//   NUM_REGS     registers, 2..256              (default sw/fp3_isa.h)
+//   IMEM_DEPTH   instruction memory entries, 2..1024
+//   ADD_LATENCY  add/sub core latency in cycles (issue to dependent issue)
+//   MUL_LATENCY  mul core latency in cycles
+//   ROUND        0 round to nearest even, 1 round toward zero
+//   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
+`default_nettype none
+module fp3_top #(
+  parameter integer NUM_REGS    = 32,
+  parameter integer IMEM_DEPTH  = 256,
+  parameter integer ADD_LATENCY = 4,
+  parameter integer MUL_LATENCY = 3,
+  parameter integer ROUND       = 0,
+  parameter integer FTZ         = 0
+) (
+  input  wire        clk_i,
+  input  wire        rst_i,
+  // host port
+  input  wire        host_we_i,
+  input  wire [11:0] host_addr_i,
+  input  wire [31:0] host_wdata_i,
+  output reg  [31:0] host_rdata_o,
+  output wire        running_o,
+  output wire        done_o,
+  // trace port
+  output wire        tr_issue_o,
+  output wire [1:0]  tr_issue_unit_o,
+  output wire        tr_endi_o,
+  output wire        tr_add_valid_o,
+  output wire [7:0]  tr_add_reg_o,
+  output wire [31:0] tr_add_data_o,
+  output wire        tr_mul_valid_o,
+  output wire [7:0]  tr_mul_reg_o,
+  output wire [31:0] tr_mul_data_o,
+  output wire        tr_mov_valid_o,
+  output wire [7:0]  tr_mov_reg_o,
+  output wire [31:0] tr_mov_data_o
+);
+`include "fp3_isa.vh"
+
+  localparam integer IW = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);
+  localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
+
+  // ---- host port decode ----------------------------------------------------
+  wire        win_reg  = host_addr_i[11:8] == HR_REG_BASE[11:8];
+  wire        win_imem = host_addr_i[11] == HR_IMEM_BASE[11];
+  wire [9:0]  imem_idx = host_addr_i[10:1];
+  wire        reg_ok   = {24'd0, host_addr_i[7:0]} < NUM_REGS;
+  wire        imem_ok  = {22'd0, imem_idx} < IMEM_DEPTH;
+
+  wire        running;
+  reg  [31:0] steps_q;
+  reg  [31:0] imem_lo_q;   // low half of an instruction being written
+  reg  [4:0]  flags_q;
+
+  wire host_idle   = !running;
+  wire wr_ctrl     = host_we_i && host_addr_i == HR_CTRL;
+  wire start       = wr_ctrl && host_wdata_i[0];
+  wire clear       = wr_ctrl && host_wdata_i[1];
+  wire host_reg_we = host_we_i && host_idle && win_reg && reg_ok;
+  wire imem_we     = host_we_i && host_idle && win_imem && imem_ok && host_addr_i[0];
+
+  always @(posedge clk_i) begin
+    if (rst_i) steps_q <= 32'd0;
+    else if (host_we_i && host_addr_i == HR_STEPS && host_idle) steps_q <= host_wdata_i;
+    if (host_we_i && win_imem && !host_addr_i[0]) imem_lo_q <= host_wdata_i;
+  end
+
+  // ---- scheduler -----------------------------------------------------------
+  wire          done;
+  wire [3:0]    error;
+  wire [31:0]   fault_pc, steps_done;
+  wire [63:0]   cycles, issued, stalls;
+  wire [IW-1:0] ra, rb, rd;
+  wire          ra_ready, rb_ready, rd_busy, idle;
+  wire          issue, issue_sub, issue_imm, endi;
+  wire [1:0]    issue_unit;
+  wire [31:0]   imm;
+
+  fp3_scheduler #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_sched (
+    .clk_i        (clk_i),
+    .rst_i        (rst_i),
+    .imem_we_i    (imem_we),
+    .imem_waddr_i (imem_idx[AW-1:0]),
+    .imem_wdata_i ({host_wdata_i, imem_lo_q}),
+    .start_i      (start),
+    .clear_i      (clear),
+    .steps_i      (steps_q),
+    .running_o    (running),
+    .done_o       (done),
+    .error_o      (error),
+    .fault_pc_o   (fault_pc),
+    .steps_done_o (steps_done),
+    .cycles_o     (cycles),
+    .issued_o     (issued),
+    .stalls_o     (stalls),
+    .ra_o         (ra),
+    .rb_o         (rb),
+    .rd_o         (rd),
+    .ra_ready_i   (ra_ready),
+    .rb_ready_i   (rb_ready),
+    .rd_busy_i    (rd_busy),
+    .idle_i       (idle),
+    .issue_o      (issue),
+    .issue_unit_o (issue_unit),
+    .issue_sub_o  (issue_sub),
+    .issue_imm_o  (issue_imm),
+    .imm_o        (imm),
+    .endi_o       (endi)
+  );
+
+  // ---- register file -------------------------------------------------------
+  wire [31:0]   ra_data, rb_data, host_reg_rdata;
+  wire          add_valid, mul_valid, mov_valid;
+  wire [IW-1:0] add_reg, mul_reg, mov_reg;
+  wire [31:0]   add_data, mul_data, mov_data;
+  wire [4:0]    add_flags, mul_flags;
+
+  fp3_regfile #(.NUM_REGS(NUM_REGS), .IW(IW)) u_regs (
+    .clk_i        (clk_i),
+    .rst_i        (rst_i),
+    .ra_i         (ra),
+    .rb_i         (rb),
+    .rd_i         (rd),
+    .ra_data_o    (ra_data),
+    .rb_data_o    (rb_data),
+    .ra_ready_o   (ra_ready),
+    .rb_ready_o   (rb_ready),
+    .rd_busy_o    (rd_busy),
+    .set_i        (issue && issue_unit != UNIT_NONE),
+    .set_reg_i    (rd),
+    .wb0_valid_i  (add_valid),
+    .wb0_reg_i    (add_reg),
+    .wb0_data_i   (add_data),
+    .wb1_valid_i  (mul_valid),
+    .wb1_reg_i    (mul_reg),
+    .wb1_data_i   (mul_data),
+    .wb2_valid_i  (mov_valid),
+    .wb2_reg_i    (mov_reg),
+    .wb2_data_i   (mov_data),
+    .host_we_i    (host_reg_we),
+    .host_reg_i   (host_addr_i[IW-1:0]),
+    .host_wdata_i (host_wdata_i),
+    .host_rdata_o (host_reg_rdata),
+    .idle_o       (idle)
+  );
+
+  // ---- arithmetic unit -----------------------------------------------------
+  fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
+              .IW(IW)) u_arith (
+    .clk_i       (clk_i),
+    .rst_i       (rst_i),
+    .valid_i     (issue),
+    .unit_i      (issue_unit),
+    .sub_i       (issue_sub),
+    .rd_i        (rd),
+    .a_i         (issue_imm ? imm : ra_data),
+    .b_i         (rb_data),
+    .add_valid_o (add_valid),
+    .add_reg_o   (add_reg),
+    .add_data_o  (add_data),
+    .add_flags_o (add_flags),
+    .mul_valid_o (mul_valid),
+    .mul_reg_o   (mul_reg),
+    .mul_data_o  (mul_data),
+    .mul_flags_o (mul_flags),
+    .mov_valid_o (mov_valid),
+    .mov_reg_o   (mov_reg),
+    .mov_data_o  (mov_data)
+  );
+
+  // ---- sticky exception flags of the run -----------------------------------
+  always @(posedge clk_i) begin
+    if (rst_i || (start && host_idle)) flags_q <= 5'd0;
+    else flags_q <= flags_q | (add_valid ? add_flags : 5'd0) | (mul_valid ? mul_flags : 5'd0);
+  end
+
+  // ---- host read mux (registered) ------------------------------------------
+  reg [31:0] rdata_d;
+  always @(*) begin
+    rdata_d = 32'd0;
+    case (host_addr_i)
+      HR_STATUS:     rdata_d = {20'd0, error, 6'd0, done, running};
+      HR_STEPS:      rdata_d = steps_q;
+      HR_STEPS_DONE: rdata_d = steps_done;
+      HR_FAULT_PC:   rdata_d = fault_pc;
+      HR_FLAGS:      rdata_d = {27'd0, flags_q};
+      HR_CYCLES_LO:  rdata_d = cycles[31:0];
+      HR_CYCLES_HI:  rdata_d = cycles[63:32];
+      HR_ISSUED_LO:  rdata_d = issued[31:0];
+      HR_ISSUED_HI:  rdata_d = issued[63:32];
+      HR_STALLS_LO:  rdata_d = stalls[31:0];
+      HR_STALLS_HI:  rdata_d = stalls[63:32];
+      HR_INFO0:      rdata_d = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
+      HR_INFO1:      rdata_d = {16'd0, MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+      HR_ID:         rdata_d = ID_VALUE;
+      default: begin
+        if (win_reg && reg_ok) rdata_d = host_reg_rdata;
+      end
+    endcase
+  end
+  always @(posedge clk_i) host_rdata_o <= rdata_d;
+
+  // ---- outputs -------------------------------------------------------------
+  assign running_o       = running;
+  assign done_o          = done;
+  assign tr_issue_o      = issue;
+  assign tr_issue_unit_o = issue_unit;
+  assign tr_endi_o       = endi;
+  assign tr_add_valid_o  = add_valid;
+  assign tr_add_reg_o    = {{(8-IW){1'b0}}, add_reg};
+  assign tr_add_data_o   = add_data;
+  assign tr_mul_valid_o  = mul_valid;
+  assign tr_mul_reg_o    = {{(8-IW){1'b0}}, mul_reg};
+  assign tr_mul_data_o   = mul_data;
+  assign tr_mov_valid_o  = mov_valid;
+  assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_reg};
+  assign tr_mov_data_o   = mov_data;
+
+  // Host address bits that select windows but are not register indices.
+  wire unused_addr = &{1'b0, host_addr_i};
+endmodule
+`default_nettype wire
