@@ -73,7 +73,8 @@ struct fp3_engine {
   char error[256]; /* last error message */
 };
 
-/* Constructors.  Return NULL only when out of memory. */
+/* Constructors.  Return NULL when out of memory (or, for the RTL, when the
+ * model does not answer with FP3_ID_VALUE; a message goes to stderr). */
 fp3_engine *fp3_engine_iss_new(void);
 /* trace_path: waveform file to write (NULL: none). */
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);

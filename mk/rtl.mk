@@ -1,0 +1,58 @@
+# rtl.mk -- the Verilated processor model, lint and synthesis.
+#
+# Exports RTL_OBJS (what an executable links to use sim/fp3_model.h) and
+# RTL_DEPS.  Model configuration: NUM_REGS, IMEM_DEPTH, ADD_LATENCY,
+# MUL_LATENCY on the make command line override the defaults of
+# sw/fp3_isa.h (e.g. `make sim ADD_LATENCY=6`); the C side reads the
+# values back from the model's INFO registers.
+
+RTL_TOP      := fp3_top
+RTL_OBJDIR   := $(BUILD)/obj_fp3
+RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ,\
+                  $(if $($(p)),-G$(p)=$($(p))))
+RTL_ARCHIVE  := $(RTL_OBJDIR)/Vfp3_top__ALL.a
+RTL_SHIM_OBJ := $(BUILD)/sim/fp3_shim.o
+RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(RTL_OBJDIR)/libverilated.a
+RTL_DEPS     := $(RTL_OBJS)
+VERILATOR_LDLIBS := -pthread -latomic
+
+# Rebuild the model when the sources or the parameters change.
+RTL_PARAM_STAMP := $(RTL_OBJDIR)/params.$(shell echo '$(RTL_PARAMS)' | md5sum | cut -c1-8)
+
+$(RTL_PARAM_STAMP):
+	@mkdir -p $(RTL_OBJDIR)
+	@rm -f $(RTL_OBJDIR)/params.*
+	@touch $@
+
+$(RTL_ARCHIVE) $(RTL_OBJDIR)/libverilated.a &: $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
+	$(VERILATOR) --cc --build -j 2 $(VFLAGS) --top-module $(RTL_TOP) $(RTL_PARAMS) \
+	  --Mdir $(RTL_OBJDIR) $(RTL_SRC) >$(RTL_OBJDIR)/build.log 2>&1 || \
+	  { tail -40 $(RTL_OBJDIR)/build.log; exit 1; }
+
+$(RTL_SHIM_OBJ): sim/fp3_shim.cpp sim/fp3_model.h $(RTL_ARCHIVE)
+	@mkdir -p $(dir $@)
+	$(CXX) $(VERILATOR_CXXFLAGS) -I$(RTL_OBJDIR) -c $< -o $@
+
+# rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
+$(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(CWARN) -Isw $< -o $@
+
+.PHONY: isa
+isa: $(BUILD)/gen_isa
+	$(BUILD)/gen_isa > rtl/fp3_isa.vh
+
+# ---- lint ------------------------------------------------------------------
+lint: $(SETUP_STAMP)
+	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $(RTL_SRC)
+	@echo "lint: verilator -Wall clean"
+
+# ---- synthesis -------------------------------------------------------------
+SYNTH_DIR := $(BUILD)/synth
+synth: $(SETUP_STAMP)
+	@mkdir -p $(SYNTH_DIR)
+	$(YOSYS) -q -l $(SYNTH_DIR)/xc2v.log -p 'read_verilog -Irtl $(RTL_SRC); \
+	  synth_xilinx -family xc2v -top $(RTL_TOP); \
+	  select -assert-none t:*latch* t:LD* ; check -assert; \
+	  tee -o $(SYNTH_DIR)/xc2v_stat.txt stat; write_verilog -noattr $(SYNTH_DIR)/fp3_top_xc2v.v'
+	@bash scripts/synth-report.sh $(SYNTH_DIR)/xc2v_stat.txt

@@ -1,0 +1,50 @@
+/*
+ * fp3_model.h -- the Verilated FP3 processor (rtl/fp3_top.v) as plain C.
+ *
+ * An opaque handle over the Verilator-generated C++ model; sim/fp3_shim.cpp
+ * is the only C++ in the project.  Each call of fp3_model_cycle() is one
+ * clock cycle: inputs are applied away from the rising edge, the trace
+ * outputs of the cycle are sampled before the edge, and the registered
+ * host read data (for the address given in this cycle) after it.
+ */
+#ifndef FP3_MODEL_H
+#define FP3_MODEL_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct fp3_model fp3_model;
+
+/* Host-port inputs of one cycle (rtl/fp3_top.v host_*_i). */
+typedef struct fp3_model_in {
+  int we;          /* write enable                       */
+  uint16_t addr;   /* 12-bit word address (FP3_HR_*)      */
+  uint32_t wdata;  /* write data                          */
+} fp3_model_in;
+
+/* Outputs of one cycle. */
+typedef struct fp3_model_out {
+  uint32_t rdata;       /* host read data for this cycle's addr   */
+  int running, done;    /* run status pins (before the edge)      */
+  int issue;            /* an instruction issued                  */
+  unsigned issue_unit;  /* its unit, FP3_UNIT_*                   */
+  int endi;             /* the issued instruction is an endi      */
+  int wb_valid[3];      /* write-back ports: 0 add, 1 mul, 2 move */
+  unsigned wb_reg[3];
+  uint32_t wb_data[3];
+} fp3_model_out;
+
+/* A new model, held in reset for two cycles.  trace_path: a VCD file to
+ * write, or NULL.  Returns NULL if out of memory. */
+fp3_model *fp3_model_new(const char *trace_path);
+void fp3_model_free(fp3_model *m);
+/* One clock cycle; `in` may be NULL (no host access), `out` may be NULL. */
+void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_out *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* FP3_MODEL_H */

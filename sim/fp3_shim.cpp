@@ -1,0 +1,75 @@
+// fp3_shim.cpp -- extern "C" shim over the Verilator model of rtl/fp3_top.v.
+// The only C++ of the processor harness: it owns the VerilatedContext and
+// the model, and moves values between C structs and the model's ports.
+#include "fp3_model.h"
+
+#include <new>
+
+#include "Vfp3_top.h"
+#include "verilated.h"
+
+struct fp3_model {
+  VerilatedContext ctx;
+  Vfp3_top *top;
+};
+
+static void half_cycle(fp3_model *m, int clk) {
+  m->top->clk_i = clk;
+  m->top->eval();
+  m->ctx.timeInc(1);
+}
+
+extern "C" fp3_model *fp3_model_new(const char *trace_path) {
+  (void)trace_path;  // waveform tracing is not built into this model
+  fp3_model *m = new (std::nothrow) fp3_model;
+  if (!m) return nullptr;
+  m->top = new (std::nothrow) Vfp3_top{&m->ctx};
+  if (!m->top) {
+    delete m;
+    return nullptr;
+  }
+  m->top->host_we_i = 0;
+  m->top->host_addr_i = 0;
+  m->top->host_wdata_i = 0;
+  m->top->rst_i = 1;
+  for (int i = 0; i < 2; i++) {
+    half_cycle(m, 0);
+    half_cycle(m, 1);
+  }
+  m->top->rst_i = 0;
+  half_cycle(m, 0);
+  return m;
+}
+
+extern "C" void fp3_model_free(fp3_model *m) {
+  if (!m) return;
+  m->top->final();
+  delete m->top;
+  delete m;
+}
+
+extern "C" void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_out *out) {
+  Vfp3_top *t = m->top;
+  t->host_we_i = in ? (in->we ? 1 : 0) : 0;
+  t->host_addr_i = in ? (in->addr & 0xFFFu) : 0;
+  t->host_wdata_i = in ? in->wdata : 0;
+  half_cycle(m, 0);  // inputs settle with the clock low
+  if (out) {
+    out->running = t->running_o;
+    out->done = t->done_o;
+    out->issue = t->tr_issue_o;
+    out->issue_unit = t->tr_issue_unit_o;
+    out->endi = t->tr_endi_o;
+    out->wb_valid[0] = t->tr_add_valid_o;
+    out->wb_reg[0] = t->tr_add_reg_o;
+    out->wb_data[0] = t->tr_add_data_o;
+    out->wb_valid[1] = t->tr_mul_valid_o;
+    out->wb_reg[1] = t->tr_mul_reg_o;
+    out->wb_data[1] = t->tr_mul_data_o;
+    out->wb_valid[2] = t->tr_mov_valid_o;
+    out->wb_reg[2] = t->tr_mov_reg_o;
+    out->wb_data[2] = t->tr_mov_data_o;
+  }
+  half_cycle(m, 1);  // the rising edge
+  if (out) out->rdata = t->host_rdata_o;
+}

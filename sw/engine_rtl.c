@@ -1,0 +1,202 @@
+/*
+ * engine_rtl.c -- the Verilated RTL (rtl/fp3_top.v) as an FP3 engine.
+ *
+ * Talks to the model only through its host port (sim/fp3_model.h), exactly
+ * as a driver would talk to the FPGA, and watches the trace port while the
+ * machine runs freely.  Each unit's write-backs leave in the order the unit
+ * accepted operations, so a FIFO of integration tags per unit, pushed at
+ * issue and popped at write-back, tags every result with the integration
+ * it belongs to without any help from the hardware.  A write-back with an
+ * empty FIFO, or a FIFO not empty when the run ends, is a hardware fault
+ * and fails the run.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine.h"
+#include "fp3_isa.h"
+#include "../sim/fp3_model.h"
+
+#define TAG_FIFO 64 /* > deepest unit latency + 1 */
+
+typedef struct tag_fifo {
+  uint32_t tag[TAG_FIFO];
+  unsigned head, count;
+} tag_fifo;
+
+typedef struct rtl_engine {
+  fp3_engine base;
+  fp3_model *model;
+} rtl_engine;
+
+static void host_write(fp3_model *m, unsigned addr, uint32_t value) {
+  fp3_model_in in = {1, (uint16_t)addr, value};
+  fp3_model_cycle(m, &in, NULL);
+}
+
+static uint32_t host_read(fp3_model *m, unsigned addr) {
+  fp3_model_in in = {0, (uint16_t)addr, 0};
+  fp3_model_out out;
+  fp3_model_cycle(m, &in, &out);
+  return out.rdata;
+}
+
+static uint64_t host_read64(fp3_model *m, unsigned lo_addr) {
+  uint64_t lo = host_read(m, lo_addr);
+  uint64_t hi = host_read(m, lo_addr + 1);
+  return lo | (hi << 32);
+}
+
+static int rtl_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
+  rtl_engine *r = (rtl_engine *)e;
+  if (n > e->config.imem_depth) {
+    snprintf(e->error, sizeof e->error,
+             "program of %zu instructions does not fit the instruction memory "
+             "(%u entries)", n, e->config.imem_depth);
+    return -1;
+  }
+  /* Every entry is written, so a shorter program leaves no stale words. */
+  for (size_t i = 0; i < e->config.imem_depth; i++) {
+    uint64_t w = i < n ? words[i] : 0;
+    host_write(r->model, FP3_HR_IMEM_BASE + 2 * (unsigned)i, (uint32_t)w);
+    host_write(r->model, FP3_HR_IMEM_BASE + 2 * (unsigned)i + 1, (uint32_t)(w >> 32));
+  }
+  return 0;
+}
+
+static int check_reg(fp3_engine *e, unsigned reg) {
+  if (reg >= e->config.num_regs) {
+    snprintf(e->error, sizeof e->error, "register r%u out of range (the model has %u)",
+             reg, e->config.num_regs);
+    return -1;
+  }
+  return 0;
+}
+
+static int rtl_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
+  if (check_reg(e, reg)) return -1;
+  host_write(((rtl_engine *)e)->model, FP3_HR_REG_BASE + reg, value);
+  return 0;
+}
+
+static int rtl_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
+  if (check_reg(e, reg)) return -1;
+  *value = host_read(((rtl_engine *)e)->model, FP3_HR_REG_BASE + reg);
+  return 0;
+}
+
+/* Upper bound on the cycles of a legal run: every integration passes at
+ * most the whole memory once, each instruction waiting at most the longest
+ * latency.  Exceeding it means the machine hung. */
+static uint64_t cycle_limit(const fp3_config *c, uint32_t steps) {
+  uint64_t per_insn = (uint64_t)(c->add_latency > c->mul_latency ? c->add_latency
+                                                                   : c->mul_latency) + 2;
+  return ((uint64_t)steps + 1) * c->imem_depth * per_insn + 1000;
+}
+
+static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_status *st) {
+  rtl_engine *r = (rtl_engine *)e;
+  fp3_model *m = r->model;
+  tag_fifo fifo[4];
+  memset(fifo, 0, sizeof fifo);
+  memset(st, 0, sizeof *st);
+
+  host_write(m, FP3_HR_STEPS, steps);
+  host_write(m, FP3_HR_CTRL, FP3_CTRL_START);
+
+  uint32_t endis = 0;
+  uint64_t limit = cycle_limit(&e->config, steps);
+  fp3_model_out out;
+  for (uint64_t cycle = 0;; cycle++) {
+    fp3_model_cycle(m, NULL, &out);
+    if (!out.running) break; /* START refused (STEPS = 0) or run over */
+    if (cycle > limit) {
+      snprintf(e->error, sizeof e->error, "RTL hung: no DONE after %llu cycles",
+               (unsigned long long)cycle);
+      return -1;
+    }
+    /* Write-backs of this cycle belong to instructions issued earlier. */
+    for (unsigned u = 0; u < 3; u++) {
+      if (!out.wb_valid[u]) continue;
+      tag_fifo *f = &fifo[u + 1];
+      if (f->count == 0) {
+        snprintf(e->error, sizeof e->error,
+                 "RTL fault: write-back on port %u in cycle %llu without an issue", u,
+                 (unsigned long long)cycle);
+        return -1;
+      }
+      uint32_t tag = f->tag[f->head];
+      f->head = (f->head + 1) % TAG_FIFO;
+      f->count--;
+      if (obs && obs->on_write) obs->on_write(obs->ctx, out.wb_reg[u], out.wb_data[u], tag);
+    }
+    if (out.issue && out.issue_unit != FP3_UNIT_NONE) {
+      tag_fifo *f = &fifo[out.issue_unit & 3];
+      if (f->count == TAG_FIFO) {
+        snprintf(e->error, sizeof e->error, "RTL fault: unit %u has more than %d operations in flight",
+                 out.issue_unit, TAG_FIFO);
+        return -1;
+      }
+      f->tag[(f->head + f->count) % TAG_FIFO] = endis + 1;
+      f->count++;
+    }
+    if (out.endi) {
+      endis++;
+      if (obs && obs->on_endi) obs->on_endi(obs->ctx, endis, cycle);
+    }
+  }
+  for (unsigned u = 1; u < 4; u++) {
+    if (fifo[u].count) {
+      snprintf(e->error, sizeof e->error, "RTL fault: run ended with %u results of unit %u missing",
+               fifo[u].count, u);
+      return -1;
+    }
+  }
+
+  uint32_t status = host_read(m, FP3_HR_STATUS);
+  st->done = (status & FP3_STATUS_DONE) != 0;
+  st->error = (status >> FP3_STATUS_ERROR_LSB) & 0xF;
+  st->fault_pc = host_read(m, FP3_HR_FAULT_PC);
+  st->steps_done = host_read(m, FP3_HR_STEPS_DONE);
+  st->flags = host_read(m, FP3_HR_FLAGS);
+  st->cycles = host_read64(m, FP3_HR_CYCLES_LO);
+  st->issued = host_read64(m, FP3_HR_ISSUED_LO);
+  st->stalls = host_read64(m, FP3_HR_STALLS_LO);
+  host_write(m, FP3_HR_CTRL, FP3_CTRL_CLEAR);
+  return 0;
+}
+
+static void rtl_destroy(fp3_engine *e) {
+  rtl_engine *r = (rtl_engine *)e;
+  fp3_model_free(r->model);
+  free(r);
+}
+
+static const fp3_engine_ops rtl_ops = {
+    "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_destroy,
+};
+
+fp3_engine *fp3_engine_rtl_new(const char *trace_path) {
+  rtl_engine *r = calloc(1, sizeof *r);
+  if (!r) return NULL;
+  r->model = fp3_model_new(trace_path);
+  if (!r->model) {
+    free(r);
+    return NULL;
+  }
+  r->base.ops = &rtl_ops;
+  /* The configuration the model was built with, from its INFO registers. */
+  uint32_t info0 = host_read(r->model, FP3_HR_INFO0);
+  uint32_t info1 = host_read(r->model, FP3_HR_INFO1);
+  r->base.config.num_regs = info0 & 0xFFFF;
+  r->base.config.imem_depth = info0 >> 16;
+  r->base.config.add_latency = info1 & 0xFF;
+  r->base.config.mul_latency = (info1 >> 8) & 0xFF;
+  if (host_read(r->model, FP3_HR_ID) != FP3_ID_VALUE) {
+    fprintf(stderr, "fp3: the RTL model answers with a wrong ID register\n");
+    rtl_destroy(&r->base);
+    return NULL;
+  }
+  return &r->base;
+}
