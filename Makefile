@@ -27,6 +27,10 @@ VERILATOR_ROOT_INC := $(shell $(VERILATOR) --getenv VERILATOR_ROOT 2>/dev/null)/
 VFLAGS     := -Wall -O3 --x-assign fast --x-initial fast --noassert -Irtl
 VERILATOR_CXXFLAGS := -O2 -std=c++14 -I$(VERILATOR_ROOT_INC) -I$(VERILATOR_ROOT_INC)/vltstd
 
+# The Verilator runtime, compiled once and linked by every Verilated model.
+VERILATED_OBJS := $(BUILD)/verilated/verilated.o $(BUILD)/verilated/verilated_threads.o
+VERILATOR_LDLIBS := -pthread -latomic
+
 RTL_SRC    := $(wildcard rtl/*.v)
 RTL_INC    := rtl/fp3_isa.vh
 
@@ -49,6 +53,10 @@ setup $(SETUP_STAMP):
 	  echo "setup: tools present"; \
 	else bash scripts/setup.sh; fi
 	@touch $(SETUP_STAMP)
+
+$(BUILD)/verilated/%.o: $(VERILATOR_ROOT_INC)/%.cpp | $(SETUP_STAMP)
+	@mkdir -p $(dir $@)
+	$(CXX) $(VERILATOR_CXXFLAGS) -c $< -o $@
 
 include $(wildcard mk/*.mk)
 

@@ -12,9 +12,8 @@ RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FT
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_ARCHIVE  := $(RTL_OBJDIR)/Vfp3_top__ALL.a
 RTL_SHIM_OBJ := $(BUILD)/sim/fp3_shim.o
-RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(RTL_OBJDIR)/libverilated.a
+RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(VERILATED_OBJS)
 RTL_DEPS     := $(RTL_OBJS)
-VERILATOR_LDLIBS := -pthread -latomic
 
 # Rebuild the model when the sources or the parameters change.
 RTL_PARAM_STAMP := $(RTL_OBJDIR)/params.$(shell echo '$(RTL_PARAMS)' | md5sum | cut -c1-8)
@@ -24,7 +23,7 @@ $(RTL_PARAM_STAMP):
 	@rm -f $(RTL_OBJDIR)/params.*
 	@touch $@
 
-$(RTL_ARCHIVE) $(RTL_OBJDIR)/libverilated.a &: $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
+$(RTL_ARCHIVE): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
 	$(VERILATOR) --cc --build -j 2 $(VFLAGS) --top-module $(RTL_TOP) $(RTL_PARAMS) \
 	  --Mdir $(RTL_OBJDIR) $(RTL_SRC) >$(RTL_OBJDIR)/build.log 2>&1 || \
 	  { tail -40 $(RTL_OBJDIR)/build.log; exit 1; }
@@ -56,3 +55,11 @@ synth: $(SETUP_STAMP)
 	  select -assert-none t:*latch* t:LD* ; check -assert; \
 	  tee -o $(SYNTH_DIR)/xc2v_stat.txt stat; write_verilog -noattr $(SYNTH_DIR)/fp3_top_xc2v.v'
 	@bash scripts/synth-report.sh $(SYNTH_DIR)/xc2v_stat.txt
+
+# ---- RTL against ISS and golden model (cmocka) ------------------------------
+$(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
+	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
+TEST_BINS += $(BUILD)/tests/test_engines

@@ -18,7 +18,8 @@
 // Ports (all indices IW bits wide, data 32 bits)
 //   ra_i/rb_i -> ra_data_o/rb_data_o, ra_ready_o/rb_ready_o: combinational
 //     reads with bypass; ready = not busy, or being written this cycle.
-//   rd_i -> rd_busy_o: destination busy (WAW check; no bypass).
+//   rd_i -> rd_busy_o: destination busy and not being written this cycle
+//     (WAW check): a new write lands at least one cycle after the old one.
 //   set_i/set_reg_i: mark a destination busy (issue of add/mul/move).
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path); each
 //     write clears the register's busy flag.
@@ -62,30 +63,37 @@ module fp3_regfile #(
 
   // ---- reads with bypass (indices are < NUM_REGS: the scheduler decodes
   // ---- only legal instructions, the host port checks its address) -------
-  function [32:0] read_port;  // {written this cycle, value}
+  function written;  // a write-back port writes r in this cycle
     input [IW-1:0] r;
     begin
-      if      (wb0_valid_i && wb0_reg_i == r) read_port = {1'b1, wb0_data_i};
-      else if (wb1_valid_i && wb1_reg_i == r) read_port = {1'b1, wb1_data_i};
-      else if (wb2_valid_i && wb2_reg_i == r) read_port = {1'b1, wb2_data_i};
-      else                                    read_port = {1'b0, regs_q[r]};
+      written = (wb0_valid_i && wb0_reg_i == r) || (wb1_valid_i && wb1_reg_i == r) ||
+                (wb2_valid_i && wb2_reg_i == r);
     end
   endfunction
 
-  wire [32:0] ra_rd = read_port(ra_i);
-  wire [32:0] rb_rd = read_port(rb_i);
-  assign ra_data_o    = ra_rd[31:0];
-  assign rb_data_o    = rb_rd[31:0];
-  assign ra_ready_o   = !busy_q[ra_i] || ra_rd[32];
-  assign rb_ready_o   = !busy_q[rb_i] || rb_rd[32];
-  assign rd_busy_o    = busy_q[rd_i];
+  function [31:0] read_port;  // the register's value, bypassed
+    input [IW-1:0] r;
+    begin
+      if      (wb0_valid_i && wb0_reg_i == r) read_port = wb0_data_i;
+      else if (wb1_valid_i && wb1_reg_i == r) read_port = wb1_data_i;
+      else if (wb2_valid_i && wb2_reg_i == r) read_port = wb2_data_i;
+      else                                    read_port = regs_q[r];
+    end
+  endfunction
+
+  assign ra_data_o    = read_port(ra_i);
+  assign rb_data_o    = read_port(rb_i);
+  assign ra_ready_o   = !busy_q[ra_i] || written(ra_i);
+  assign rb_ready_o   = !busy_q[rb_i] || written(rb_i);
+  assign rd_busy_o    = busy_q[rd_i] && !written(rd_i);
   assign host_rdata_o = regs_q[host_reg_i];
   assign idle_o       = (busy_q == {NUM_REGS{1'b0}});
 
   // ---- writes and busy flags, one register at a time ----------------------
-  // The WAW stall guarantees that the write ports name distinct registers
-  // and that set_reg_i is not busy, so the priority below never matters
-  // for a legal sequence.
+  // The WAW stall guarantees that the write ports name distinct registers,
+  // so the write priority below never matters for a legal sequence.  A
+  // register whose result is written back in the cycle a new instruction
+  // claims it stays busy: the set wins over the clear.
   genvar r;
   generate
     for (r = 0; r < NUM_REGS; r = r + 1) begin : g_reg
