@@ -49,12 +49,8 @@ lint: $(SETUP_STAMP)
 # ---- synthesis -------------------------------------------------------------
 SYNTH_DIR := $(BUILD)/synth
 synth: $(SETUP_STAMP)
-	@mkdir -p $(SYNTH_DIR)
-	$(YOSYS) -q -l $(SYNTH_DIR)/xc2v.log -p 'read_verilog -Irtl $(RTL_SRC); \
-	  synth_xilinx -family xc2v -top $(RTL_TOP); \
-	  select -assert-none t:*latch* t:LD* ; check -assert; \
-	  tee -o $(SYNTH_DIR)/xc2v_stat.txt stat; write_verilog -noattr $(SYNTH_DIR)/fp3_top_xc2v.v'
-	@bash scripts/synth-report.sh $(SYNTH_DIR)/xc2v_stat.txt
+	@echo "synth: Yosys synth_xilinx, $(RTL_TOP), netlists and reports in $(SYNTH_DIR)/"
+	@bash scripts/synth.sh $(SYNTH_DIR) $(RTL_TOP) xc2v $(RTL_SRC)
 
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
 $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
