@@ -59,3 +59,12 @@ $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL
 	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_engines
+
+# ---- one source of truth, tool acceptance -----------------------------------
+TEST_SCRIPTS += tests/test_isa_sync.sh tests/test_rtl_tools.sh
+test: $(BUILD)/gen_isa
+
+# ---- make sim: the default ship scene on the RTL ----------------------------
+SIM_STEPS ?= 10000
+sim: $(BUILD)/fp3
+	$(BUILD)/fp3 run --engine rtl --program programs/ship_rk4.s --steps $(SIM_STEPS)

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# test_cli.sh -- the command line build/fp3: error handling, exit codes,
+# --help, and a short run on the instruction-set simulator.
+#
+# Runs from anywhere; the CLI is $FP3_BIN (set by mk/sw.mk), else
+# build/fp3 of this checkout.  Exit status non-zero if any check fails.
+set -u
+cd "$(dirname "$0")/.."
+FP3=${FP3_BIN:-$PWD/build/fp3}
+if [ ! -x "$FP3" ]; then
+  echo "test_cli: $FP3 not built (make $FP3)"; exit 1
+fi
+T=$(mktemp -d /tmp/fp3_test_cli.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+
+# expect STATUS GREP-PATTERN -- fp3 ARGS...: exit status and a pattern in
+# stdout+stderr (an empty pattern matches anything).
+expect() {
+  local want=$1 pat=$2; shift 3
+  local out rc
+  out=$("$FP3" "$@" 2>&1); rc=$?
+  if [ "$want" = "nz" ]; then [ "$rc" -ne 0 ] || { bad "fp3 $* exited 0, want non-zero"; return; }
+  elif [ "$rc" -ne "$want" ]; then bad "fp3 $*: exit $rc, want $want; output: $(echo "$out" | head -5)"; return; fi
+  if [ -n "$pat" ] && ! grep -q -- "$pat" <<<"$out"; then
+    bad "fp3 $*: output lacks '$pat': $(echo "$out" | head -5)"; return
+  fi
+  ok
+}
+
+ISS=(run --engine iss)
+
+# ---- --help of every command ------------------------------------------------
+expect 0 "usage: fp3 COMMAND" -- --help
+expect 0 "usage: fp3 COMMAND" -- help
+expect 0 "usage: fp3 asm"     -- asm --help
+expect 0 "usage: fp3 disasm"  -- disasm --help
+expect 0 "usage: fp3 run"     -- run --help
+expect 0 ""                   -- testfloat --help
+expect 2 "usage"              --
+expect 2 "unknown command 'frobnicate'" -- frobnicate
+expect 2 "unknown option '--bogus'"     -- asm --bogus x.s
+expect 2 "unknown option '-x'"          -- disasm -x
+expect 2 "unknown argument '--bogus'"   -- run --bogus
+expect 2 "unknown engine 'gpu'"         -- run --engine gpu
+expect 2 "needs a value"                -- run --steps
+expect 2 "no input file"                -- asm
+expect 2 "no input file"                -- disasm
+
+# ---- missing files -----------------------------------------------------------
+expect 2 "$T/missing.s"   -- asm "$T/missing.s" -o "$T/missing.hex"
+[ ! -e "$T/missing.hex" ] && ok || bad "asm of a missing file left an output"
+expect 2 "$T/missing.hex" -- disasm "$T/missing.hex"
+expect 2 "$T/missing.s"   -- "${ISS[@]}" --program "$T/missing.s" --steps 10
+
+# ---- malformed assembly: FILE:LINE, every error, no output -----------------------
+cat >"$T/bad.s" <<'EOF'
+; two errors
+        li   r1, 1.0
+        frob r1, r2
+        add  r1, r2, r77
+        endi nowhere
+EOF
+expect 2 "$T/bad.s:3: unknown mnemonic 'frob'" -- asm "$T/bad.s" -o "$T/bad.hex"
+expect 2 "$T/bad.s:4: register out of range"   -- asm "$T/bad.s" -o "$T/bad.hex"
+expect 2 "$T/bad.s:5: undefined label"         -- asm "$T/bad.s" -o "$T/bad.hex"
+[ ! -e "$T/bad.hex" ] && [ ! -e "$T/bad.hex.tmp" ] && ok || bad "failed asm left $T/bad.hex"
+expect 2 "$T/bad.s:3:" -- "${ISS[@]}" --program "$T/bad.s" --steps 1
+# output into a missing directory
+expect 1 "$T/nodir/x.hex" -- asm programs/ship_rk4.s -o "$T/nodir/x.hex"
+[ ! -e "$T/nodir" ] && ok || bad "asm into a missing directory created something"
+
+# ---- bad parameters: clear message, exit 2 ---------------------------------------
+expect 2 "parameter m"                   -- "${ISS[@]}" --set m=0
+expect 2 "parameter m"                   -- "${ISS[@]}" --set m=-10000
+expect 2 "parameter h"                   -- "${ISS[@]}" --set h=0
+expect 2 "parameter h"                   -- "${ISS[@]}" --set h=-0.1
+expect 2 "parameter C"                   -- "${ISS[@]}" --set C=-1
+expect 2 "parameter T .* not a finite"   -- "${ISS[@]}" --set T=nan
+expect 2 "parameter v0 .* not a finite"  -- "${ISS[@]}" --set v0=inf
+expect 2 "parameter s0 .* not a finite"  -- "${ISS[@]}" --set s0=1e39
+expect 2 "unknown parameter 'mass'"      -- "${ISS[@]}" --set mass=3
+expect 2 "unknown parameter 'minv'"      -- "${ISS[@]}" --set minv=3
+expect 2 "wants NAME=VALUE"              -- "${ISS[@]}" --set m
+expect 2 "'ten' is not a number"         -- "${ISS[@]}" --set m=ten
+expect 2 "'' is not a number"            -- "${ISS[@]}" --set m=
+expect 2 "must be 1"                     -- "${ISS[@]}" --steps 0
+expect 2 "not a number"                  -- "${ISS[@]}" --steps abc
+expect 2 "not a number"                  -- "${ISS[@]}" --steps -5
+expect 2 "not a number"                  -- "${ISS[@]}" --steps 10x
+expect 2 "must be 1"                     -- "${ISS[@]}" --steps 4294967296
+expect 2 "needs --engine rtl"            -- "${ISS[@]}" --trace "$T/x.vcd"
+
+# ---- a program without results to check --------------------------------------------
+printf 'b: nop\n   endi b\n' >"$T/noout.s"
+expect 2 "no '.out v, rN'" -- "${ISS[@]}" --program "$T/noout.s" --steps 2
+
+# ---- a program that faults: FAIL, exit 1 ---------------------------------------------
+cat >"$T/fault.s" <<'EOF'
+.in v0, r5
+.in s0, r6
+.out v, r5
+.out s, r6
+b:      nop
+        .word 0x0900000000000000
+        endi b
+EOF
+expect 1 "FAIL: run error ILLEGAL_INSN" -- "${ISS[@]}" --program "$T/fault.s" --steps 3
+expect 1 "at pc 1"                     -- "${ISS[@]}" --program "$T/fault.s" --steps 3
+
+# ---- a program that computes something else: golden mismatches, exit 1 ----------------
+sed 's/^\( *\)add  s, s, hv/\1sub  s, s, hv/' programs/ship_rk4.s >"$T/wrong.s"
+expect 1 "FAIL: .* golden mismatches, first at integration 1" -- "${ISS[@]}" --program "$T/wrong.s" --steps 20
+
+# ---- things that work ---------------------------------------------------------------
+expect 0 "PASS: 200 integrations on iss bit-exact" -- "${ISS[@]}" --steps 200
+expect 0 "PASS" -- "${ISS[@]}" --steps 50 --set C=0 --set m=2 --set=h=0.001 --set v0=-3
+expect 0 "cycles: first integration 34 (paper 445), later 31.00" -- "${ISS[@]}" --steps 3
+expect 0 "" -- asm programs/ship_rk4.s -o "$T/ship.hex"
+[ -f "$T/ship.hex" ] && [ ! -e "$T/ship.hex.tmp" ] && ok || bad "asm wrote no $T/ship.hex"
+grep -q '^// .in minv r' "$T/ship.hex" && ok || bad "ship.hex lacks the .in comments"
+expect 0 "" -- disasm "$T/ship.hex"
+"$FP3" disasm "$T/ship.hex" >"$T/round.s" 2>&1 && ok || bad "disasm failed"
+expect 0 "" -- asm "$T/round.s" -o "$T/round.hex"
+if diff <(grep -v '^//' "$T/ship.hex" | cut -c1-16) <(grep -v '^//' "$T/round.hex" | cut -c1-16) >/dev/null; then ok
+else bad "disasm | asm does not give the same words"; fi
+# default output name
+cp programs/ship_rk4.s "$T/def.s"
+expect 0 "" -- asm "$T/def.s"
+[ -f "$T/def.hex" ] && ok || bad "asm without -o wrote no $T/def.hex"
+
+# --json: one valid JSON object with the required keys
+json=$("$FP3" "${ISS[@]}" --steps 100 --json 2>&1); rc=$?
+[ "$rc" -eq 0 ] && ok || bad "run --json exit $rc"
+if command -v python3 >/dev/null; then
+  if python3 - "$json" <<'EOF'
+import json, sys
+d = json.loads(sys.argv[1])
+for k in ("engine", "program", "steps", "cycles", "cycles_first_step",
+          "cycles_per_step", "golden_mismatches", "flags", "results"):
+    assert k in d, k
+assert d["engine"] == "iss" and d["steps"] == 100 and d["golden_mismatches"] == 0
+r = d["results"][0]
+for k in ("v", "s", "v_exact", "s_exact"):
+    assert k in r, k
+assert abs(r["v"] - r["v_exact"]) < 1e-4
+EOF
+  then ok; else bad "run --json output is not the expected JSON: $json"; fi
+fi
+
+echo "test_cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
