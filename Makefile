@@ -25,7 +25,7 @@ CMOCKA_LIB := -lcmocka
 
 VERILATOR_ROOT_INC := $(shell $(VERILATOR) --getenv VERILATOR_ROOT 2>/dev/null)/include
 VFLAGS     := -Wall -O3 --x-assign fast --x-initial fast --noassert -Irtl
-VERILATOR_CXXFLAGS := -O2 -std=c++14 -I$(VERILATOR_ROOT_INC) -I$(VERILATOR_ROOT_INC)/vltstd
+VERILATOR_CXXFLAGS := -O2 -std=c++17 -faligned-new -I$(VERILATOR_ROOT_INC) -I$(VERILATOR_ROOT_INC)/vltstd
 
 # The Verilator runtime, compiled once and linked by every Verilated model.
 VERILATED_OBJS := $(BUILD)/verilated/verilated.o $(BUILD)/verilated/verilated_threads.o

@@ -9,22 +9,24 @@
 #include "verilated.h"
 
 struct fp3_model {
-  VerilatedContext ctx;
+  VerilatedContext *ctx;
   Vfp3_top *top;
 };
 
 static void half_cycle(fp3_model *m, int clk) {
   m->top->clk_i = clk;
   m->top->eval();
-  m->ctx.timeInc(1);
+  m->ctx->timeInc(1);
 }
 
 extern "C" fp3_model *fp3_model_new(const char *trace_path) {
   (void)trace_path;  // waveform tracing is not built into this model
-  fp3_model *m = new (std::nothrow) fp3_model;
-  if (!m) return nullptr;
-  m->top = new (std::nothrow) Vfp3_top{&m->ctx};
-  if (!m->top) {
+  fp3_model *m = nullptr;
+  try {
+    m = new fp3_model{new VerilatedContext, nullptr};
+    m->top = new Vfp3_top{m->ctx};
+  } catch (const std::bad_alloc &) {
+    if (m) delete m->ctx;
     delete m;
     return nullptr;
   }
@@ -45,6 +47,7 @@ extern "C" void fp3_model_free(fp3_model *m) {
   if (!m) return;
   m->top->final();
   delete m->top;
+  delete m->ctx;
   delete m;
 }
 

@@ -437,7 +437,7 @@ static void test_random_words(void **state) {
     img.words[1] = fp3_insn_make(FP3_OP_HALT, 0, 0, 0, 0);
     img.n = 2;
     char why[128];
-    int legal = fp3_insn_check(w, rtl->config.num_regs, why, sizeof why) == 0;
+    int legal = fp3_insn_check(w, rtl->config.num_regs, rtl->config.imem_depth, why, sizeof why) == 0;
     capture a, b;
     run_on(rtl, &img, NULL, 0, 1, &a);
     run_on(iss, &img, NULL, 0, 1, &b);

@@ -1,0 +1,119 @@
+# mk/fpu.mk -- the binary32 FP cores: Verilated models, C shim, tests, bench.
+#
+# Included by the top Makefile.  Exports, for any executable that uses
+# sim/fpu_model.h (link with $(CXX)):
+#   FPU_OBJS  objects to link (shim of each configuration + dispatcher)
+#   FPU_LIBS  archives to link after them (models, Verilator runtime)
+#   FPU_DEPS  prerequisites (= FPU_OBJS FPU_LIBS)
+#   FPU_INC   -I flag for sim/fpu_model.h
+# The CLI gets the four rounding configurations at the default latencies;
+# tests/test_fpu additionally gets models at other latencies.
+#
+#   make bench-fp   10^8 random operations per operation and configuration
+
+FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v \
+           rtl/fp_mul_unpack_norm.v
+FPU_DIR := $(BUILD)/fpu
+FPU_INC := -Isim
+
+# Default latencies: fp3_isa.h FP3_CONFIG (ADD_LATENCY 4, MUL_LATENCY 3).
+FPU_ADD_LAT_DEF := $(shell sed -n 's/.*X(ADD_LATENCY, *\([0-9]*\)).*/\1/p' sw/fp3_isa.h)
+FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/fp3_isa.h)
+
+# name := ROUND FTZ ADD_LATENCY MUL_LATENCY
+FPU_CFG_rne      := 0 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
+FPU_CFG_rtz      := 1 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
+FPU_CFG_ftz      := 0 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
+FPU_CFG_rtz_ftz  := 1 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
+FPU_CFG_lat_1_2  := 0 0 1 2
+FPU_CFG_lat_2_1  := 0 0 2 1
+FPU_CFG_lat_3_8  := 0 0 3 8
+FPU_CFG_lat_8_4  := 0 0 8 4
+
+FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
+FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4
+FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
+
+fpu_model_lib  = $(FPU_DIR)/obj_$(1)/Vfpu_$(1)__ALL.a
+fpu_shim_obj   = $(FPU_DIR)/shim_$(1).o
+FPU_RUNTIME    := $(FPU_DIR)/libfpu_verilated.a
+
+# Verilated model + shim object of one configuration.
+define FPU_MODEL_RULES
+$(call fpu_model_lib,$(1)): $(FPU_RTL) sim/fpu_top.v mk/fpu.mk | $(SETUP_STAMP)
+	@mkdir -p $(FPU_DIR)
+	$(VERILATOR) --cc --build -j 2 $(VFLAGS) --top-module fpu_top \
+	  -GROUND=$(word 1,$(FPU_CFG_$(1))) -GFTZ=$(word 2,$(FPU_CFG_$(1))) \
+	  -GADD_LATENCY=$(word 3,$(FPU_CFG_$(1))) \
+	  -GMUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
+	  -MAKEFLAGS OPT_FAST=-O2 \
+	  --Mdir $(FPU_DIR)/obj_$(1) --prefix Vfpu_$(1) \
+	  sim/fpu_top.v $(FPU_RTL) > $(FPU_DIR)/obj_$(1).log 2>&1 \
+	  || { cat $(FPU_DIR)/obj_$(1).log; exit 1; }
+	@touch $$@
+
+$(call fpu_shim_obj,$(1)): sim/fpu_shim.cpp sim/fpu_model.h mk/fpu.mk $(call fpu_model_lib,$(1))
+	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(FPU_DIR)/obj_$(1) \
+	  -DFPU_NAME=$(1) -DFPU_PREFIX=Vfpu_$(1) \
+	  -DFPU_ROUND=$(word 1,$(FPU_CFG_$(1))) -DFPU_FTZ=$(word 2,$(FPU_CFG_$(1))) \
+	  -DFPU_ADD_LATENCY=$(word 3,$(FPU_CFG_$(1))) \
+	  -DFPU_MUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
+	  -c $$< -o $$@
+endef
+$(foreach m,$(FPU_MODELS_ALL),$(eval $(call FPU_MODEL_RULES,$(m))))
+
+# Dispatchers (the C functions of fpu_model.h) over a list of models.
+$(FPU_DIR)/shim_common_main.o: sim/fpu_shim.cpp sim/fpu_model.h mk/fpu.mk | $(SETUP_STAMP)
+	@mkdir -p $(FPU_DIR)
+	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -DFPU_SHIM_COMMON \
+	  '-DFPU_MODELS=$(foreach m,$(FPU_MODELS_MAIN),X($(m)))' -c $< -o $@
+$(FPU_DIR)/shim_common_all.o: sim/fpu_shim.cpp sim/fpu_model.h mk/fpu.mk | $(SETUP_STAMP)
+	@mkdir -p $(FPU_DIR)
+	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -DFPU_SHIM_COMMON \
+	  '-DFPU_MODELS=$(foreach m,$(FPU_MODELS_ALL),X($(m)))' -c $< -o $@
+
+# Verilator runtime ($(VERILATED_OBJS) of the top Makefile) as an archive:
+# an executable that also links those objects directly takes them once.
+$(FPU_RUNTIME): $(VERILATED_OBJS)
+	@mkdir -p $(FPU_DIR)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+FPU_OBJS := $(FPU_DIR)/shim_common_main.o \
+            $(foreach m,$(FPU_MODELS_MAIN),$(call fpu_shim_obj,$(m)))
+FPU_LIBS := $(foreach m,$(FPU_MODELS_MAIN),$(call fpu_model_lib,$(m))) \
+            $(FPU_RUNTIME)
+FPU_DEPS := $(FPU_OBJS) $(FPU_LIBS)
+
+FPU_TEST_OBJS := $(FPU_DIR)/shim_common_all.o \
+                 $(foreach m,$(FPU_MODELS_ALL),$(call fpu_shim_obj,$(m)))
+FPU_TEST_LIBS := $(foreach m,$(FPU_MODELS_ALL),$(call fpu_model_lib,$(m))) \
+                 $(FPU_RUNTIME)
+
+# C sources of this unit, compiled for the test program (with sanitizers)
+# and for the benchmark (without).
+FPU_TEST_SRC := tests/test_fpu.c sw/fpref.c sw/testfloat.c
+FPU_TEST_HDR := sw/fpref.h sw/fp3_isa.h sw/testfloat.h sim/fpu_model.h
+
+$(FPU_DIR)/san/%.o: %.c $(FPU_TEST_HDR) | $(SETUP_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(SAN_FLAGS) $(FPU_INC) -c $< -o $@
+$(FPU_DIR)/opt/%.o: %.c $(FPU_TEST_HDR) | $(SETUP_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(FPU_INC) -c $< -o $@
+
+$(BUILD)/tests/test_fpu: $(patsubst %.c,$(FPU_DIR)/san/%.o,$(FPU_TEST_SRC)) \
+                         $(FPU_TEST_OBJS) $(FPU_TEST_LIBS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(SAN_FLAGS) -o $@ $(filter %.o,$^) $(FPU_TEST_LIBS) \
+	  $(CMOCKA_LIB) -lz -lm $(VERILATOR_LDLIBS)
+
+$(FPU_DIR)/bench_fpu: $(patsubst %.c,$(FPU_DIR)/opt/%.o,$(FPU_TEST_SRC)) \
+                      $(FPU_TEST_OBJS) $(FPU_TEST_LIBS)
+	$(CXX) -o $@ $(filter %.o,$^) $(FPU_TEST_LIBS) $(CMOCKA_LIB) -lz -lm $(VERILATOR_LDLIBS)
+
+TEST_BINS += $(BUILD)/tests/test_fpu
+
+.PHONY: bench-fp
+bench-fp: $(FPU_DIR)/bench_fpu
+	$(FPU_DIR)/bench_fpu --bench 100000000

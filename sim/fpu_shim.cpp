@@ -1,0 +1,258 @@
+// fpu_shim.cpp -- extern "C" shim over the Verilated fpu_top (sim/fpu_model.h).
+//
+// Compiled once per built configuration with
+//   -DFPU_NAME=rne -DFPU_PREFIX=Vfpu_rne -DFPU_ROUND=0 -DFPU_FTZ=0
+//   -DFPU_ADD_LATENCY=4 -DFPU_MUL_LATENCY=3
+// giving fpu_model_new_<name>() and fpu_model_info_<name>, and once with
+//   -DFPU_SHIM_COMMON -DFPU_MODELS="X(rne) X(rtz) ..."
+// giving the C functions of fpu_model.h, which dispatch through the virtual
+// methods of struct fpu_model.  The only C++ of the FP-core unit.
+#include "fpu_model.h"
+
+#include <cstdint>
+#include <cstring>
+
+struct fpu_model {
+  fpu_model_info info;
+  uint64_t cycles = 0;
+  virtual ~fpu_model() {}
+  virtual void set_add(int valid, int sub, uint32_t a, uint32_t b) = 0;
+  virtual void set_mul(int valid, uint32_t a, uint32_t b) = 0;
+  virtual void set_rst(int rst) = 0;
+  virtual void clock() = 0;
+  virtual int add_out(uint32_t *y, unsigned *flags) const = 0;
+  virtual int mul_out(uint32_t *y, unsigned *flags) const = 0;
+  virtual int run(fpu_op op, size_t n, const uint32_t *a, const uint32_t *b,
+                  uint32_t *y, uint8_t *flags) = 0;
+};
+
+#define FPU_CAT2(a, b) a##b
+#define FPU_CAT(a, b) FPU_CAT2(a, b)
+#define FPU_STR2(x) #x
+#define FPU_STR(x) FPU_STR2(x)
+
+#ifndef FPU_SHIM_COMMON
+// ---- one configuration -----------------------------------------------------
+#include "verilated.h"
+#include FPU_STR(FPU_PREFIX.h)
+
+namespace {
+
+struct Impl final : fpu_model {
+  VerilatedContext ctx;
+  FPU_PREFIX *top;
+
+  Impl() {
+    info.name = FPU_STR(FPU_NAME);
+    info.round = FPU_ROUND;
+    info.ftz = FPU_FTZ;
+    info.add_latency = FPU_ADD_LATENCY;
+    info.mul_latency = FPU_MUL_LATENCY;
+    top = new FPU_PREFIX(&ctx, "fpu");
+    top->clk_i = 0;
+    top->rst_i = 0;
+    top->add_valid_i = 0;
+    top->add_sub_i = 0;
+    top->add_a_i = 0;
+    top->add_b_i = 0;
+    top->mul_valid_i = 0;
+    top->mul_a_i = 0;
+    top->mul_b_i = 0;
+    top->eval();
+  }
+  ~Impl() override {
+    top->final();
+    delete top;
+  }
+  void set_add(int valid, int sub, uint32_t a, uint32_t b) override {
+    top->add_valid_i = valid ? 1 : 0;
+    top->add_sub_i = sub ? 1 : 0;
+    top->add_a_i = a;
+    top->add_b_i = b;
+  }
+  void set_mul(int valid, uint32_t a, uint32_t b) override {
+    top->mul_valid_i = valid ? 1 : 0;
+    top->mul_a_i = a;
+    top->mul_b_i = b;
+  }
+  void set_rst(int rst) override { top->rst_i = rst ? 1 : 0; }
+  void clock() override {
+    top->clk_i = 1;
+    top->eval();
+    top->clk_i = 0;
+    top->eval();
+    ++cycles;
+  }
+  int add_out(uint32_t *y, unsigned *flags) const override {
+    if (y) *y = top->add_y_o;
+    if (flags) *flags = top->add_flags_o;
+    return top->add_valid_o;
+  }
+  int mul_out(uint32_t *y, unsigned *flags) const override {
+    if (y) *y = top->mul_y_o;
+    if (flags) *flags = top->mul_flags_o;
+    return top->mul_valid_o;
+  }
+  int run(fpu_op op, size_t n, const uint32_t *a, const uint32_t *b,
+          uint32_t *y, uint8_t *flags) override {
+    const bool mul = (op == FPU_OP_MUL);
+    const size_t lat = mul ? FPU_MUL_LATENCY : FPU_ADD_LATENCY;
+    int bad = 0;
+    top->add_valid_i = 0;
+    top->mul_valid_i = 0;
+    top->add_sub_i = (op == FPU_OP_SUB) ? 1 : 0;
+    for (size_t k = 0; k < n + lat; ++k) {
+      // Cycle k: issue operation k (if any), then read the outputs, which
+      // belong to operation k - lat.
+      if (k < n) {
+        if (mul) {
+          top->mul_valid_i = 1;
+          top->mul_a_i = a[k];
+          top->mul_b_i = b[k];
+        } else {
+          top->add_valid_i = 1;
+          top->add_a_i = a[k];
+          top->add_b_i = b[k];
+        }
+      } else {
+        top->mul_valid_i = 0;
+        top->add_valid_i = 0;
+      }
+      if (k >= lat) {
+        const size_t j = k - lat;
+        const int v = mul ? top->mul_valid_o : top->add_valid_o;
+        if (!v) bad = 1;
+        y[j] = mul ? top->mul_y_o : top->add_y_o;
+        if (flags) flags[j] = mul ? top->mul_flags_o : top->add_flags_o;
+      } else if ((mul ? top->mul_valid_o : top->add_valid_o) != 0) {
+        bad = 1;
+      }
+      // The edge ending cycle k (after the last read this leaves a bubble
+      // on the outputs, so the model is idle for the next call).
+      top->clk_i = 1;
+      top->eval();
+      top->clk_i = 0;
+      top->eval();
+      ++cycles;
+    }
+    top->add_sub_i = 0;
+    return bad ? -1 : 0;
+  }
+};
+
+}  // namespace
+
+extern "C" {
+fpu_model *FPU_CAT(fpu_model_new_, FPU_NAME)(void);
+extern const fpu_model_info FPU_CAT(fpu_model_info_, FPU_NAME);
+
+const fpu_model_info FPU_CAT(fpu_model_info_, FPU_NAME) = {
+    FPU_STR(FPU_NAME), FPU_ROUND, FPU_FTZ, FPU_ADD_LATENCY, FPU_MUL_LATENCY};
+
+fpu_model *FPU_CAT(fpu_model_new_, FPU_NAME)(void) {
+  try {
+    return new Impl();
+  } catch (...) {
+    return nullptr;
+  }
+}
+}
+
+#else
+// ---- the C interface -------------------------------------------------------
+extern "C" {
+#define X(name)                                      \
+  fpu_model *fpu_model_new_##name(void);              \
+  extern const fpu_model_info fpu_model_info_##name;
+FPU_MODELS
+#undef X
+}
+
+namespace {
+struct Entry {
+  const fpu_model_info *info;
+  fpu_model *(*make)(void);
+};
+const Entry kModels[] = {
+#define X(name) {&fpu_model_info_##name, fpu_model_new_##name},
+    FPU_MODELS
+#undef X
+};
+const size_t kNumModels = sizeof kModels / sizeof kModels[0];
+
+fpu_model *make_reset(const Entry &e) {
+  fpu_model *m = e.make();
+  if (m) fpu_model_reset(m);
+  return m;
+}
+}  // namespace
+
+extern "C" {
+
+size_t fpu_model_count(void) { return kNumModels; }
+
+const fpu_model_info *fpu_model_info_at(size_t i) {
+  return i < kNumModels ? kModels[i].info : nullptr;
+}
+
+fpu_model *fpu_model_new(int round, int ftz, unsigned add_latency,
+                         unsigned mul_latency) {
+  for (size_t i = 0; i < kNumModels; ++i) {
+    const fpu_model_info *in = kModels[i].info;
+    if (in->round == round && in->ftz == (ftz != 0) &&
+        (add_latency == 0 || in->add_latency == add_latency) &&
+        (mul_latency == 0 || in->mul_latency == mul_latency))
+      return make_reset(kModels[i]);
+  }
+  return nullptr;
+}
+
+fpu_model *fpu_model_new_named(const char *name) {
+  for (size_t i = 0; i < kNumModels; ++i)
+    if (std::strcmp(kModels[i].info->name, name) == 0)
+      return make_reset(kModels[i]);
+  return nullptr;
+}
+
+void fpu_model_free(fpu_model *m) { delete m; }
+
+const fpu_model_info *fpu_model_get_info(const fpu_model *m) {
+  return &m->info;
+}
+
+void fpu_model_reset(fpu_model *m) {
+  m->set_add(0, 0, 0, 0);
+  m->set_mul(0, 0, 0);
+  m->set_rst(1);
+  m->clock();
+  m->set_rst(0);
+}
+
+void fpu_model_set_add(fpu_model *m, int valid, int sub, uint32_t a,
+                       uint32_t b) {
+  m->set_add(valid, sub, a, b);
+}
+
+void fpu_model_set_mul(fpu_model *m, int valid, uint32_t a, uint32_t b) {
+  m->set_mul(valid, a, b);
+}
+
+void fpu_model_clock(fpu_model *m) { m->clock(); }
+
+int fpu_model_add_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
+  return m->add_out(y, flags);
+}
+
+int fpu_model_mul_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
+  return m->mul_out(y, flags);
+}
+
+uint64_t fpu_model_cycles(const fpu_model *m) { return m->cycles; }
+
+int fpu_model_run(fpu_model *m, fpu_op op, size_t n, const uint32_t *a,
+                  const uint32_t *b, uint32_t *y, uint8_t *flags) {
+  return m->run(op, n, a, b, y, flags);
+}
+
+}  // extern "C"
+#endif

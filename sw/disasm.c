@@ -1,0 +1,126 @@
+/*
+ * disasm.c -- FP3 disassembler (see disasm.h).
+ */
+#include "disasm.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "asm.h"
+
+/* An li operand that reads back (fp3_asm_literal) to exactly `bits`. */
+static void format_imm(uint32_t bits, char *buf, size_t n) {
+  float f;
+  memcpy(&f, &bits, sizeof f);
+  snprintf(buf, n, "%.9g", (double)f);
+  uint32_t back;
+  char why[8];
+  if (fp3_asm_literal(buf, &back, why, sizeof why) != 0 || back != bits)
+    snprintf(buf, n, "0x%08X", (unsigned)bits);
+}
+
+int fp3_disasm_word(uint64_t w, char *buf, size_t n) {
+  char why[8];
+  if (fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why))
+    return snprintf(buf, n, ".word 0x%016llX", (unsigned long long)w);
+  unsigned opc = fp3_insn_opc(w);
+  const char *mn = fp3_opc_mnemonic(opc);
+  unsigned rd = fp3_insn_rd(w), ra = fp3_insn_ra(w), rb = fp3_insn_rb(w);
+  uint32_t imm = fp3_insn_imm(w);
+  char lit[32];
+  switch ((enum fp3_opcode)opc) {
+  case FP3_OP_ADD:
+  case FP3_OP_SUB:
+  case FP3_OP_MUL:
+    return snprintf(buf, n, "%s r%u, r%u, r%u", mn, rd, ra, rb);
+  case FP3_OP_LI:
+    format_imm(imm, lit, sizeof lit);
+    return snprintf(buf, n, "%s r%u, %s", mn, rd, lit);
+  case FP3_OP_MOV:
+    return snprintf(buf, n, "%s r%u, r%u", mn, rd, ra);
+  case FP3_OP_ENDI:
+    return snprintf(buf, n, "%s %lu", mn, (unsigned long)imm);
+  case FP3_OP_NOP:
+  case FP3_OP_HALT:
+    break;
+  }
+  return snprintf(buf, n, "%s", mn);
+}
+
+typedef struct {
+  char *s;
+  size_t len, cap;
+  int oom;
+} strbuf;
+
+static void out(strbuf *b, const char *fmt, ...) {
+  if (b->oom) return;
+  char tmp[256];
+  va_list ap;
+  va_start(ap, fmt);
+  int k = vsnprintf(tmp, sizeof tmp, fmt, ap);
+  va_end(ap);
+  if (k < 0) return;
+  size_t len = (size_t)k < sizeof tmp ? (size_t)k : sizeof tmp - 1;
+  if (b->len + len + 1 > b->cap) {
+    size_t cap = b->cap ? b->cap * 2 : 4096;
+    while (cap < b->len + len + 1) cap *= 2;
+    char *p = realloc(b->s, cap);
+    if (!p) {
+      b->oom = 1;
+      return;
+    }
+    b->s = p;
+    b->cap = cap;
+  }
+  memcpy(b->s + b->len, tmp, len);
+  b->len += len;
+  b->s[b->len] = '\0';
+}
+
+/* endi instructions (legal ones) targeting `addr`, addr <= n */
+static int is_target(const fp3_image *img, size_t addr) {
+  char why[8];
+  for (size_t i = 0; i < img->n; i++) {
+    uint64_t w = img->words[i];
+    if (fp3_insn_opc(w) == FP3_OP_ENDI &&
+        fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why) == 0 &&
+        fp3_insn_imm(w) == addr)
+      return 1;
+  }
+  return 0;
+}
+
+char *fp3_disasm_image(const fp3_image *img) {
+  strbuf b = {NULL, 0, 0, 0};
+  out(&b, "; FP3 program, %zu words (disassembled)\n", img->n);
+  for (int i = 0; i < FP3_IN_COUNT; i++)
+    if (img->in_reg[i] >= 0)
+      out(&b, ".in %s, r%d\n", fp3_in_name(i), img->in_reg[i]);
+  for (int i = 0; i < FP3_OUT_COUNT; i++)
+    if (img->out_reg[i] >= 0)
+      out(&b, ".out %s, r%d\n", fp3_out_name(i), img->out_reg[i]);
+  char text[96], why[8];
+  for (size_t i = 0; i <= img->n; i++) {
+    if (is_target(img, i)) out(&b, "L%zu:\n", i);
+    if (i == img->n) break;
+    uint64_t w = img->words[i];
+    int legal = fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why) == 0;
+    if (legal && fp3_insn_opc(w) == FP3_OP_ENDI && fp3_insn_imm(w) <= img->n)
+      snprintf(text, sizeof text, "endi L%lu", (unsigned long)fp3_insn_imm(w));
+    else
+      fp3_disasm_word(w, text, sizeof text);
+    out(&b, "    %-28s ; [%3zu] %016llx", text, i, (unsigned long long)w);
+    if (legal && fp3_insn_opc(w) == FP3_OP_LI)
+      out(&b, "  imm 0x%08X", (unsigned)fp3_insn_imm(w));
+    if (img->line[i] > 0) out(&b, "  (line %d)", img->line[i]);
+    out(&b, "\n");
+  }
+  if (b.oom) {
+    free(b.s);
+    return NULL;
+  }
+  return b.s;
+}

@@ -1,0 +1,39 @@
+/*
+ * engine.c -- the engine dispatchers of engine.h and the constructor by
+ * name.  The engines themselves live in iss.c and engine_rtl.c.
+ */
+#include <string.h>
+
+#include "engine.h"
+
+fp3_engine *fp3_engine_new(const char *name) {
+  if (!name) return NULL;
+  if (strcmp(name, "iss") == 0) return fp3_engine_iss_new();
+  if (strcmp(name, "rtl") == 0) return fp3_engine_rtl_new(NULL);
+  return NULL;
+}
+
+int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n) {
+  return e->ops->load_program(e, words, n);
+}
+
+int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
+  return e->ops->write_reg(e, reg, value);
+}
+
+int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
+  return e->ops->read_reg(e, reg, value);
+}
+
+int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
+                   fp3_status *st) {
+  return e->ops->run(e, steps, obs, st);
+}
+
+void fp3_engine_free(fp3_engine *e) {
+  if (e) e->ops->destroy(e);
+}
+
+const char *fp3_engine_error(const fp3_engine *e) {
+  return e ? e->error : "no engine";
+}

@@ -1,0 +1,824 @@
+/*
+ * fp3.c -- the FP3 command line.
+ *
+ *   fp3 asm FILE.s [-o FILE.hex]     assemble to a $readmemh image
+ *   fp3 disasm FILE.hex              image to assembly text
+ *   fp3 run [options]                run a program on an engine and check
+ *                                    every integration against the golden
+ *                                    model, bit for bit
+ *   fp3 testfloat ...                FP cores against TestFloat vectors
+ *
+ * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
+ * 2 bad arguments or input (usage, parameters, assembly errors).
+ */
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "analytic.h"
+#include "asm.h"
+#include "disasm.h"
+#include "engine.h"
+#include "fp3_isa.h"
+#include "fpref.h"
+#include "golden.h"
+#include "image.h"
+#include "testfloat.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+
+#define DEFAULT_PROGRAM "programs/ship_rk4.s"
+#define DEFAULT_STEPS 10000u
+#define TABLE_ROWS 5     /* first integrations shown in the table   */
+#define PAPER_FIRST 445  /* cycles of the first integration (paper) */
+#define PAPER_LATER 418  /* cycles of each later integration        */
+
+/* ---- small helpers ------------------------------------------------------ */
+
+/* "--name VALUE" or "--name=VALUE": 1 and *val if argv[*i] is that option,
+ * -1 if the value is missing, 0 if argv[*i] is another argument. */
+static int opt_value(int argc, char **argv, int *i, const char *name,
+                     const char **val) {
+  const char *a = argv[*i];
+  size_t n = strlen(name);
+  if (strncmp(a, name, n) != 0) return 0;
+  if (a[n] == '=') {
+    *val = a + n + 1;
+    return 1;
+  }
+  if (a[n] != '\0') return 0;
+  if (*i + 1 >= argc) {
+    fprintf(stderr, "fp3: option %s needs a value\n", name);
+    return -1;
+  }
+  *val = argv[++*i];
+  return 1;
+}
+
+static int is_help(const char *a) {
+  return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
+}
+
+static void flags_text(uint32_t flags, char *buf, size_t n) {
+  static const struct {
+    const char *name;
+    unsigned bit;
+  } tab[] = {
+#define X(name, bit) {#name, bit},
+      FP3_FLAGS(X)
+#undef X
+  };
+  buf[0] = '\0';
+  for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++)
+    if (flags & tab[i].bit) {
+      size_t len = strlen(buf);
+      snprintf(buf + len, n - len, "%s%s", len ? " " : "", tab[i].name);
+    }
+  for (char *p = buf; *p; p++)
+    if (*p >= 'A' && *p <= 'Z') *p = (char)(*p - 'A' + 'a');
+  if (!buf[0]) snprintf(buf, n, "none");
+}
+
+static const char *error_text(unsigned err) {
+  switch (err) {
+#define X(name, code, desc) \
+  case code:                \
+    return desc;
+    FP3_ERRORS(X)
+#undef X
+  default:
+    return "unknown error";
+  }
+}
+
+static const char *error_name(unsigned err) {
+  switch (err) {
+#define X(name, code, desc) \
+  case code:                \
+    return #name;
+    FP3_ERRORS(X)
+#undef X
+  default:
+    return "UNKNOWN";
+  }
+}
+
+/* Distance in units in the last place between two binary32 patterns. */
+static int64_t ulp_distance(uint32_t a, uint32_t b) {
+  int64_t x = (a & 0x80000000u) ? -(int64_t)(a & 0x7fffffffu) : (int64_t)a;
+  int64_t y = (b & 0x80000000u) ? -(int64_t)(b & 0x7fffffffu) : (int64_t)b;
+  return x > y ? x - y : y - x;
+}
+
+static void json_string(FILE *f, const char *s) {
+  fputc('"', f);
+  for (; *s; s++) {
+    unsigned char c = (unsigned char)*s;
+    if (c == '"' || c == '\\')
+      fprintf(f, "\\%c", c);
+    else if (c < 0x20)
+      fprintf(f, "\\u%04x", c);
+    else
+      fputc(c, f);
+  }
+  fputc('"', f);
+}
+
+/* %.9g for a float, %.17g for a double; null when not finite (JSON). */
+static void json_float(FILE *f, float x) {
+  if (isfinite(x))
+    fprintf(f, "%.9g", (double)x);
+  else
+    fputs("null", f);
+}
+
+static void json_double(FILE *f, double x) {
+  if (isfinite(x))
+    fprintf(f, "%.17g", x);
+  else
+    fputs("null", f);
+}
+
+/* Assembler messages, one per line. */
+static void print_errors(const char *errs) {
+  if (!errs || !*errs) {
+    fprintf(stderr, "assembly failed\n");
+    return;
+  }
+  fputs(errs, stderr);
+  if (errs[strlen(errs) - 1] != '\n') fputc('\n', stderr);
+}
+
+/* ---- fp3 asm ------------------------------------------------------------ */
+
+static void usage_asm(FILE *f) {
+  fprintf(f,
+          "usage: fp3 asm FILE.s [-o FILE.hex]\n"
+          "\n"
+          "Assemble FILE.s into a program image in $readmemh format (one\n"
+          "64-bit word per line, 16 hex digits; the .in/.out bindings as\n"
+          "comments).  Without -o the output is FILE.hex next to FILE.s.\n"
+          "The output is written atomically: on any error none is left.\n"
+          "Errors are reported as FILE:LINE: reason, all of them.\n"
+          "Exit status: 0 written, 2 usage or assembly errors, 1 write error.\n");
+}
+
+static int cmd_asm(int argc, char **argv) {
+  const char *in = NULL, *outp = NULL;
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    int r;
+    if (is_help(argv[i])) {
+      usage_asm(stdout);
+      return 0;
+    }
+    if ((r = opt_value(argc, argv, &i, "-o", &v)) != 0 ||
+        (r = opt_value(argc, argv, &i, "--output", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      outp = v;
+    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+      fprintf(stderr, "fp3 asm: unknown option '%s' (see fp3 asm --help)\n",
+              argv[i]);
+      return EXIT_USAGE;
+    } else if (!in) {
+      in = argv[i];
+    } else {
+      fprintf(stderr, "fp3 asm: more than one input file ('%s')\n", argv[i]);
+      return EXIT_USAGE;
+    }
+  }
+  if (!in) {
+    fprintf(stderr, "fp3 asm: no input file (see fp3 asm --help)\n");
+    return EXIT_USAGE;
+  }
+  char *def = NULL;
+  if (!outp) {
+    size_t n = strlen(in);
+    def = malloc(n + 5);
+    if (!def) return EXIT_FAIL;
+    memcpy(def, in, n + 1);
+    char *dot = strrchr(def, '.');
+    char *slash = strrchr(def, '/');
+    if (dot && (!slash || dot > slash)) *dot = '\0';
+    strcat(def, ".hex");
+    outp = def;
+  }
+  fp3_image img;
+  char *errs = NULL;
+  int rc = 0;
+  if (fp3_asm_file(in, &img, &errs) != 0) {
+    print_errors(errs);
+    rc = EXIT_USAGE;
+  } else {
+    char msg[512];
+    if (fp3_image_write(&img, outp, in, msg, sizeof msg) != 0) {
+      fprintf(stderr, "fp3 asm: %s\n", msg);
+      rc = EXIT_FAIL;
+    }
+  }
+  free(errs);
+  free(def);
+  return rc;
+}
+
+/* ---- fp3 disasm --------------------------------------------------------- */
+
+static void usage_disasm(FILE *f) {
+  fprintf(f,
+          "usage: fp3 disasm FILE.hex\n"
+          "\n"
+          "Print the program image FILE.hex as assembly text that assembles\n"
+          "back to the same words and bindings.  li immediates are shown\n"
+          "with %%.9g and their bit pattern; illegal words as .word.\n");
+}
+
+static int cmd_disasm(int argc, char **argv) {
+  const char *in = NULL;
+  for (int i = 1; i < argc; i++) {
+    if (is_help(argv[i])) {
+      usage_disasm(stdout);
+      return 0;
+    }
+    if (argv[i][0] == '-' && argv[i][1] != '\0') {
+      fprintf(stderr, "fp3 disasm: unknown option '%s'\n", argv[i]);
+      return EXIT_USAGE;
+    }
+    if (in) {
+      fprintf(stderr, "fp3 disasm: more than one input file ('%s')\n",
+              argv[i]);
+      return EXIT_USAGE;
+    }
+    in = argv[i];
+  }
+  if (!in) {
+    fprintf(stderr, "fp3 disasm: no input file (see fp3 disasm --help)\n");
+    return EXIT_USAGE;
+  }
+  fp3_image img;
+  char msg[512];
+  if (fp3_image_read(in, &img, msg, sizeof msg) != 0) {
+    fprintf(stderr, "fp3 disasm: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  char *text = fp3_disasm_image(&img);
+  if (!text) {
+    fprintf(stderr, "fp3 disasm: out of memory\n");
+    return EXIT_FAIL;
+  }
+  fputs(text, stdout);
+  free(text);
+  return 0;
+}
+
+/* ---- fp3 run: observing and checking ------------------------------------ */
+
+enum { OV = 0, OS = 1 }; /* the two checked results */
+
+typedef struct checker {
+  uint32_t steps;         /* integrations requested            */
+  int reg[2];             /* registers of v and s              */
+  uint32_t cur[2];        /* latest value written              */
+  uint32_t next_k[2];     /* next integration to finalise      */
+  /* golden values of integrations base .. base+count-1 */
+  fp3_ship_state gst;
+  float *gv, *gs;
+  size_t cap, count;
+  uint32_t base;
+  int oom;
+  fp3_ship_params p;
+  /* comparison */
+  uint64_t mismatches;
+  uint32_t first_k;
+  int first_which;
+  uint32_t first_got, first_want;
+  int64_t max_ulp;
+  /* error against the exact solution */
+  double max_abs[2], max_rel[2];
+  double final_abs[2], final_rel[2];
+  /* table rows */
+  uint32_t row[2][TABLE_ROWS];
+  uint32_t last[2];
+  uint32_t last_k[2];
+  /* endi */
+  uint32_t endis;
+  uint64_t cyc_first, cyc_last;
+} checker;
+
+/* Golden (v, s) after integration k >= 1, computed on demand. */
+static int golden_at(checker *c, uint32_t k, float *v, float *s) {
+  uint32_t lo = c->next_k[OV] < c->next_k[OS] ? c->next_k[OV] : c->next_k[OS];
+  if (k < c->base) return -1; /* cannot happen: finalised in order */
+  while (k >= c->base + c->count) {
+    if (c->count == c->cap) {
+      /* drop integrations both results are past */
+      size_t drop = lo > c->base ? lo - c->base : 0;
+      if (drop > c->count) drop = c->count;
+      if (drop) {
+        memmove(c->gv, c->gv + drop, (c->count - drop) * sizeof *c->gv);
+        memmove(c->gs, c->gs + drop, (c->count - drop) * sizeof *c->gs);
+        c->count -= drop;
+        c->base += (uint32_t)drop;
+      }
+      if (c->count == c->cap) {
+        size_t cap = c->cap ? c->cap * 2 : 256;
+        float *nv = realloc(c->gv, cap * sizeof *nv);
+        if (!nv) return -1;
+        c->gv = nv;
+        float *ns = realloc(c->gs, cap * sizeof *ns);
+        if (!ns) return -1;
+        c->gs = ns;
+        c->cap = cap;
+      }
+    }
+    fp3_golden_step(&c->gst);
+    c->gv[c->count] = c->gst.v;
+    c->gs[c->count] = c->gst.s;
+    c->count++;
+  }
+  *v = c->gv[k - c->base];
+  *s = c->gs[k - c->base];
+  return 0;
+}
+
+static void exact_at(const checker *c, uint32_t k, double *v, double *s) {
+  fp3_ship_exact(c->p.T, c->p.C, c->p.m, c->p.v0, c->p.s0,
+                 (double)k * (double)c->p.h, v, s);
+}
+
+/* Result `which` after integration k is `bits`. */
+static void finalise(checker *c, int which, uint32_t k, uint32_t bits) {
+  float gv, gs;
+  if (golden_at(c, k, &gv, &gs)) {
+    c->oom = 1;
+    return;
+  }
+  uint32_t want = fpref_bits(which == OV ? gv : gs);
+  if (bits != want) {
+    if (c->mismatches == 0) {
+      c->first_k = k;
+      c->first_which = which;
+      c->first_got = bits;
+      c->first_want = want;
+    }
+    c->mismatches++;
+    int64_t d = ulp_distance(bits, want);
+    if (d > c->max_ulp) c->max_ulp = d;
+  }
+  double ev, es;
+  exact_at(c, k, &ev, &es);
+  double exact = which == OV ? ev : es;
+  double got = (double)fpref_float(bits);
+  double abs_err = fabs(got - exact);
+  double rel_err = exact != 0.0 ? abs_err / fabs(exact) : (abs_err == 0 ? 0 : INFINITY);
+  if (!(abs_err <= c->max_abs[which])) c->max_abs[which] = abs_err;
+  if (!(rel_err <= c->max_rel[which])) c->max_rel[which] = rel_err;
+  c->final_abs[which] = abs_err;
+  c->final_rel[which] = rel_err;
+  if (k <= TABLE_ROWS) c->row[which][k - 1] = bits;
+  c->last[which] = bits;
+  c->last_k[which] = k;
+}
+
+static void advance(checker *c, int which, uint32_t upto) {
+  while (c->next_k[which] < upto && c->next_k[which] <= c->steps) {
+    finalise(c, which, c->next_k[which], c->cur[which]);
+    c->next_k[which]++;
+  }
+}
+
+static void obs_write(void *ctx, unsigned reg, uint32_t value,
+                      uint32_t integration) {
+  checker *c = ctx;
+  for (int w = 0; w < 2; w++)
+    if ((int)reg == c->reg[w]) {
+      advance(c, w, integration); /* integrations before this one are over */
+      c->cur[w] = value;
+    }
+}
+
+static void obs_endi(void *ctx, uint32_t integration, uint64_t cycle) {
+  checker *c = ctx;
+  c->endis = integration;
+  if (integration == 1) c->cyc_first = cycle;
+  c->cyc_last = cycle;
+}
+
+/* ---- fp3 run ------------------------------------------------------------ */
+
+static void usage_run(FILE *f) {
+  fprintf(f,
+          "usage: fp3 run [--engine rtl|iss] [--program FILE.s] [--steps N]\n"
+          "               [--set NAME=VALUE ...] [--json] [--trace FILE.vcd]\n"
+          "\n"
+          "Assemble the program, write its .in registers, run N integrations\n"
+          "on the engine and compare the .out results v and s after every\n"
+          "integration with the golden model (sw/golden.c), bit for bit, and\n"
+          "with the exact solution of the ship ODE.\n"
+          "\n"
+          "  --engine E       rtl (Verilated RTL, default) or iss (simulator)\n"
+          "  --program FILE   assembly program (default %s)\n"
+          "  --steps N        integrations, 1..4294967295 (default %u)\n"
+          "  --set NAME=VALUE scene parameter, binary32 (repeatable):\n"
+          "                   T thrust [N] (default 50000), C drag [kg/s]\n"
+          "                   (5000), m mass [kg] (10000), h step [s] (1/60),\n"
+          "                   v0 [m/s] (0), s0 [m] (0).  m > 0, h > 0, C >= 0,\n"
+          "                   all finite.  minv = 1.0f/m is derived.\n"
+          "  --json           one JSON object instead of the report\n"
+          "  --trace FILE     waveform of the run (rtl engine only)\n"
+          "\n"
+          "Exit status: 0 the run finished without error and bit-exact with\n"
+          "the golden model; 1 it did not; 2 bad arguments or program.\n",
+          DEFAULT_PROGRAM, DEFAULT_STEPS);
+}
+
+static int set_param(fp3_ship_params *p, const char *arg) {
+  const char *eq = strchr(arg, '=');
+  if (!eq || eq == arg) {
+    fprintf(stderr, "fp3 run: --set wants NAME=VALUE, got '%s'\n", arg);
+    return -1;
+  }
+  size_t nl = (size_t)(eq - arg);
+  static const char *const names[] = {"T", "C", "m", "h", "v0", "s0"};
+  float *slots[] = {&p->T, &p->C, &p->m, &p->h, &p->v0, &p->s0};
+  int id = -1;
+  for (int i = 0; i < 6; i++)
+    if (strlen(names[i]) == nl && strncmp(arg, names[i], nl) == 0) id = i;
+  if (id < 0) {
+    fprintf(stderr,
+            "fp3 run: unknown parameter '%.*s' in --set (T C m h v0 s0)\n",
+            (int)nl, arg);
+    return -1;
+  }
+  const char *val = eq + 1;
+  char *end;
+  errno = 0;
+  float f = strtof(val, &end);
+  if (end == val || *end != '\0') {
+    fprintf(stderr, "fp3 run: --set %s: '%s' is not a number\n", names[id],
+            val);
+    return -1;
+  }
+  *slots[id] = f;
+  return 0;
+}
+
+/* The default program: relative to the working directory, else to the
+ * executable (build/fp3 -> programs/). */
+static int open_default(char *path, size_t n) {
+  if (access(DEFAULT_PROGRAM, R_OK) == 0) {
+    snprintf(path, n, "%s", DEFAULT_PROGRAM);
+    return 0;
+  }
+  char exe[4096];
+  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (k > 0) {
+    exe[k] = '\0';
+    char *slash = strrchr(exe, '/');
+    if (slash) {
+      *slash = '\0';
+      snprintf(path, n, "%s/../%s", exe, DEFAULT_PROGRAM);
+      if (access(path, R_OK) == 0) return 0;
+    }
+  }
+  snprintf(path, n, "%s", DEFAULT_PROGRAM);
+  return -1;
+}
+
+static void print_row(const checker *c, uint32_t k, uint32_t vb, uint32_t sb) {
+  double ev, es;
+  exact_at(c, k, &ev, &es);
+  printf("%10" PRIu32 "  %10.4f  %15.9g %15.9g  %15.9g %15.9g\n", k,
+         (double)k * (double)c->p.h, (double)fpref_float(vb), ev,
+         (double)fpref_float(sb), es);
+}
+
+static int cmd_run(int argc, char **argv) {
+  const char *engine_name = "rtl", *program = NULL, *trace = NULL;
+  uint32_t steps = DEFAULT_STEPS;
+  int json = 0;
+  fp3_ship_params p;
+  fp3_ship_default(&p);
+
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    int r;
+    if (is_help(argv[i])) {
+      usage_run(stdout);
+      return 0;
+    }
+    if ((r = opt_value(argc, argv, &i, "--engine", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
+        fprintf(stderr, "fp3 run: unknown engine '%s' (rtl or iss)\n", v);
+        return EXIT_USAGE;
+      }
+      engine_name = v;
+    } else if ((r = opt_value(argc, argv, &i, "--program", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      program = v;
+    } else if ((r = opt_value(argc, argv, &i, "--steps", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      unsigned long long n = strtoull(v, &end, 10);
+      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno) {
+        fprintf(stderr, "fp3 run: --steps '%s' is not a number\n", v);
+        return EXIT_USAGE;
+      }
+      if (n == 0 || n > UINT32_MAX) {
+        fprintf(stderr, "fp3 run: --steps %s: must be 1..%" PRIu32 "\n", v,
+                (uint32_t)UINT32_MAX);
+        return EXIT_USAGE;
+      }
+      steps = (uint32_t)n;
+    } else if ((r = opt_value(argc, argv, &i, "--set", &v)) != 0) {
+      if (r < 0 || set_param(&p, v)) return EXIT_USAGE;
+    } else if ((r = opt_value(argc, argv, &i, "--trace", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      trace = v;
+    } else if (strcmp(argv[i], "--json") == 0) {
+      json = 1;
+    } else {
+      fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n",
+              argv[i]);
+      return EXIT_USAGE;
+    }
+  }
+  char msg[512];
+  if (fp3_ship_validate(&p, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 run: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  if (trace && strcmp(engine_name, "rtl") != 0) {
+    fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
+    return EXIT_USAGE;
+  }
+  char defpath[4200];
+  if (!program) {
+    open_default(defpath, sizeof defpath);
+    program = defpath;
+  }
+
+  /* assemble */
+  fp3_image img;
+  char *errs = NULL;
+  if (fp3_asm_file(program, &img, &errs) != 0) {
+    print_errors(errs);
+    free(errs);
+    return EXIT_USAGE;
+  }
+  free(errs);
+  for (int w = 0; w < FP3_OUT_COUNT; w++)
+    if (img.out_reg[w] < 0) {
+      fprintf(stderr,
+              "fp3 run: %s has no '.out %s, rN': nothing to check against "
+              "the golden model\n",
+              program, fp3_out_name(w));
+      return EXIT_USAGE;
+    }
+
+  /* engine */
+  fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new()
+                                                  : fp3_engine_rtl_new(trace);
+  if (!e) {
+    fprintf(stderr, "fp3 run: cannot create the %s engine\n", engine_name);
+    return EXIT_FAIL;
+  }
+  if (fp3_engine_error(e)[0]) {
+    fprintf(stderr, "fp3 run: %s engine: %s\n", engine_name,
+            fp3_engine_error(e));
+    fp3_engine_free(e);
+    return EXIT_FAIL;
+  }
+  int rc = EXIT_FAIL;
+  checker c;
+  memset(&c, 0, sizeof c);
+  c.p = p;
+  c.steps = steps;
+  c.base = 1;
+  fp3_golden_init(&c.gst, &p);
+  const float minv = fp3_ship_minv(p.m);
+  const float inval[FP3_IN_COUNT] = {
+      [FP3_IN_T] = p.T,   [FP3_IN_C] = p.C,   [FP3_IN_M] = p.m,
+      [FP3_IN_MINV] = minv, [FP3_IN_H] = p.h, [FP3_IN_V0] = p.v0,
+      [FP3_IN_S0] = p.s0};
+  fp3_status st;
+  memset(&st, 0, sizeof st);
+  int erc = fp3_engine_load(e, img.words, img.n);
+  for (int i = 0; i < FP3_IN_COUNT && erc == 0; i++)
+    if (img.in_reg[i] >= 0)
+      erc = fp3_engine_write_reg(e, (unsigned)img.in_reg[i],
+                                 fpref_bits(inval[i]));
+  for (int w = 0; w < 2 && erc == 0; w++) {
+    c.reg[w] = img.out_reg[w];
+    c.next_k[w] = 1;
+    erc = fp3_engine_read_reg(e, (unsigned)c.reg[w], &c.cur[w]);
+  }
+  if (erc == 0) {
+    fp3_observer obs = {&c, obs_write, obs_endi};
+    erc = fp3_engine_run(e, steps, &obs, &st);
+  }
+  if (erc != 0) {
+    fprintf(stderr, "fp3 run: %s engine: %s\n", engine_name,
+            fp3_engine_error(e));
+    fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
+    goto out;
+  }
+  /* the results of the last integrations are the values left at the end */
+  uint32_t done = st.steps_done < steps ? st.steps_done : steps;
+  for (int w = 0; w < 2; w++) advance(&c, w, done + 1);
+  if (c.oom) {
+    fprintf(stderr, "fp3 run: out of memory\n");
+    goto out;
+  }
+
+  double cyc_first = (double)c.cyc_first + 1.0;
+  double cyc_per = c.endis >= 2 ? (double)(c.cyc_last - c.cyc_first) /
+                                      (double)(c.endis - 1)
+                                : NAN;
+  int ok = st.error == FP3_ERR_NONE && done == steps && c.mismatches == 0;
+  char flags[96];
+  flags_text(st.flags, flags, sizeof flags);
+  double fin_v = NAN, fin_s = NAN;
+  if (done > 0) exact_at(&c, done, &fin_v, &fin_s);
+  float gv = 0, gs = 0;
+  if (done > 0) golden_at(&c, done, &gv, &gs);
+
+  if (json) {
+    printf("{\"engine\": ");
+    json_string(stdout, engine_name);
+    printf(", \"program\": ");
+    json_string(stdout, program);
+    printf(", \"words\": %zu", img.n);
+    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, steps,
+           st.steps_done);
+    printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, error_name(st.error),
+           st.fault_pc);
+    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64
+           ", \"stalls\": %" PRIu64,
+           st.cycles, st.issued, st.stalls);
+    printf(", \"cycles_first_step\": ");
+    if (c.endis >= 1) printf("%.9g", cyc_first); else printf("null");
+    printf(", \"cycles_per_step\": ");
+    if (c.endis >= 2) printf("%.9g", cyc_per); else printf("null");
+    printf(", \"paper_cycles_first_step\": %d, \"paper_cycles_per_step\": %d",
+           PAPER_FIRST, PAPER_LATER);
+    printf(", \"golden_mismatches\": %" PRIu64, c.mismatches);
+    if (c.mismatches)
+      printf(", \"first_mismatch\": {\"integration\": %" PRIu32
+             ", \"result\": \"%s\", \"got\": \"0x%08" PRIX32
+             "\", \"want\": \"0x%08" PRIX32 "\", \"ulp\": %" PRId64 "}",
+             c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
+             c.first_want, ulp_distance(c.first_got, c.first_want));
+    else
+      printf(", \"first_mismatch\": null");
+    printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, st.flags);
+    printf(", \"params\": {\"T\": ");
+    json_float(stdout, p.T);
+    printf(", \"C\": ");
+    json_float(stdout, p.C);
+    printf(", \"m\": ");
+    json_float(stdout, p.m);
+    printf(", \"minv\": ");
+    json_float(stdout, minv);
+    printf(", \"h\": ");
+    json_float(stdout, p.h);
+    printf(", \"v0\": ");
+    json_float(stdout, p.v0);
+    printf(", \"s0\": ");
+    json_float(stdout, p.s0);
+    printf("}, \"results\": [{\"v\": ");
+    json_float(stdout, fpref_float(c.last[OV]));
+    printf(", \"s\": ");
+    json_float(stdout, fpref_float(c.last[OS]));
+    printf(", \"v_golden\": ");
+    json_float(stdout, gv);
+    printf(", \"s_golden\": ");
+    json_float(stdout, gs);
+    printf(", \"v_exact\": ");
+    json_double(stdout, fin_v);
+    printf(", \"s_exact\": ");
+    json_double(stdout, fin_s);
+    printf(", \"v_max_abs_err\": ");
+    json_double(stdout, c.max_abs[OV]);
+    printf(", \"s_max_abs_err\": ");
+    json_double(stdout, c.max_abs[OS]);
+    printf("}], \"pass\": %s}\n", ok ? "true" : "false");
+  } else {
+    printf("FP3 run: engine %s, program %s (%zu words), %" PRIu32
+           " integrations\n",
+           engine_name, program, img.n, steps);
+    printf("scene: T = %.9g N, C = %.9g kg/s, m = %.9g kg (1/m = %.9g), "
+           "h = %.9g s, v0 = %.9g m/s, s0 = %.9g m\n",
+           (double)p.T, (double)p.C, (double)p.m, (double)minv, (double)p.h,
+           (double)p.v0, (double)p.s0);
+    if (p.C > 0)
+      printf("       tau = m/C = %.6g s, terminal velocity T/C = %.6g m/s\n",
+             (double)p.m / (double)p.C, (double)p.T / (double)p.C);
+    if (done > 0) {
+      printf("\n%10s  %10s  %15s %15s  %15s %15s\n", "step", "t [s]",
+             "v [m/s]", "v exact", "s [m]", "s exact");
+      for (uint32_t k = 1; k <= done && k <= TABLE_ROWS; k++)
+        print_row(&c, k, c.row[OV][k - 1], c.row[OS][k - 1]);
+      if (done > TABLE_ROWS + 1) printf("%10s\n", "...");
+      if (done > TABLE_ROWS) print_row(&c, done, c.last[OV], c.last[OS]);
+      printf("\n");
+    }
+    printf("golden model: %" PRIu64 " mismatches in %" PRIu32
+           " integrations (v and s, bit for bit)\n",
+           c.mismatches, done);
+    if (c.mismatches)
+      printf("  first at integration %" PRIu32 ": %s = 0x%08" PRIX32
+             " (%.9g), golden 0x%08" PRIX32 " (%.9g), %" PRId64
+             " ulp; worst %" PRId64 " ulp\n",
+             c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
+             (double)fpref_float(c.first_got), c.first_want,
+             (double)fpref_float(c.first_want),
+             ulp_distance(c.first_got, c.first_want), c.max_ulp);
+    if (c.endis >= 1) {
+      printf("cycles: first integration %.0f (paper %d)", cyc_first,
+             PAPER_FIRST);
+      if (c.endis >= 2)
+        printf(", later %.2f per integration (paper %d)", cyc_per,
+               PAPER_LATER);
+      printf("\n");
+    }
+    printf("        total %" PRIu64 " cycles, %" PRIu64 " issued, %" PRIu64
+           " stalls\n",
+           st.cycles, st.issued, st.stalls);
+    printf("flags: %s\n", flags);
+    if (done > 0) {
+      printf("error vs exact solution:  final abs      final rel      "
+             "max abs        max rel\n");
+      for (int w = 0; w < 2; w++)
+        printf("  %s %*s %14.6g %14.6g %14.6g %14.6g\n", w == OV ? "v" : "s",
+               20, "", c.final_abs[w], c.final_rel[w], c.max_abs[w],
+               c.max_rel[w]);
+      printf("  (RK4 for v; s = s + h v1 is first order in h, as in the paper)\n");
+    }
+    if (st.error != FP3_ERR_NONE)
+      printf("run error: %s at pc %" PRIu32 ": %s\n", error_name(st.error),
+             st.fault_pc,
+             fp3_engine_error(e)[0] ? fp3_engine_error(e) : error_text(st.error));
+    if (ok)
+      printf("PASS: %" PRIu32 " integrations on %s bit-exact with the golden "
+             "model\n",
+             steps, engine_name);
+    else if (st.error != FP3_ERR_NONE)
+      printf("FAIL: run error %s after %" PRIu32 " of %" PRIu32
+             " integrations\n",
+             error_name(st.error), st.steps_done, steps);
+    else if (done != steps)
+      printf("FAIL: the run ended after %" PRIu32 " of %" PRIu32
+             " integrations\n",
+             done, steps);
+    else
+      printf("FAIL: %" PRIu64 " golden mismatches, first at integration %" PRIu32
+             "\n",
+             c.mismatches, c.first_k);
+  }
+  rc = ok ? 0 : EXIT_FAIL;
+out:
+  free(c.gv);
+  free(c.gs);
+  fp3_engine_free(e);
+  return rc;
+}
+
+/* ---- main --------------------------------------------------------------- */
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: fp3 COMMAND [ARGS]   (fp3 COMMAND --help for each)\n"
+          "\n"
+          "  asm FILE.s [-o FILE.hex]  assemble a program\n"
+          "  disasm FILE.hex           disassemble a program image\n"
+          "  run [options]             run a program on the RTL or the ISS and\n"
+          "                            check it bit for bit against the golden\n"
+          "                            model (default: ship RK4, 10000 steps)\n"
+          "  testfloat ...             FP cores against TestFloat vectors\n");
+}
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    usage(stderr);
+    return EXIT_USAGE;
+  }
+  const char *cmd = argv[1];
+  if (is_help(cmd) || strcmp(cmd, "help") == 0) {
+    usage(stdout);
+    return 0;
+  }
+  if (strcmp(cmd, "asm") == 0) return cmd_asm(argc - 1, argv + 1);
+  if (strcmp(cmd, "disasm") == 0) return cmd_disasm(argc - 1, argv + 1);
+  if (strcmp(cmd, "run") == 0) return cmd_run(argc - 1, argv + 1);
+  if (strcmp(cmd, "testfloat") == 0)
+    return fp3_cmd_testfloat(argc - 1, argv + 1);
+  fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
+  return EXIT_USAGE;
+}

@@ -1,0 +1,126 @@
+/*
+ * image.h -- an FP3 program image: instruction words plus the host
+ * bindings of the program (which register receives which scene parameter
+ * before a run, which register holds which result), validation of a word
+ * against the ISA table, and the .hex image file.
+ *
+ * The .hex file is text that Verilog's $readmemh reads: one 64-bit word
+ * per line as 16 hex digits, `//` comments.  The bindings travel in
+ * comment lines that $readmemh ignores and fp3_image_read() recovers:
+ *
+ *   // .in T r1
+ *   // .out v r5
+ *   0401000000000000  // @0 line 12
+ *
+ * The trailing `// @ADDR line N` records the source line of the word.
+ */
+#ifndef FP3_IMAGE_H
+#define FP3_IMAGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fp3_isa.h"
+
+/*
+ * Parameters the host writes into registers before a run (`.in NAME, rN`):
+ * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.
+ */
+#define FP3_IN_PARAMS(X)                                                       \
+  X(T,    "T",    "thrust [N]")                                                \
+  X(C,    "C",    "drag coefficient [kg/s]")                                   \
+  X(M,    "m",    "mass [kg]")                                                 \
+  X(MINV, "minv", "1/m [1/kg], binary32 reciprocal of m")                      \
+  X(H,    "h",    "time step [s]")                                             \
+  X(V0,   "v0",   "initial velocity [m/s]")                                    \
+  X(S0,   "s0",   "initial displacement [m]")
+
+/* Results the golden model checks (`.out NAME, rN`). */
+#define FP3_OUT_PARAMS(X)                                                      \
+  X(V, "v", "velocity [m/s]")                                                  \
+  X(S, "s", "displacement [m]")
+
+enum fp3_in_param {
+#define X(id, name, desc) FP3_IN_##id,
+  FP3_IN_PARAMS(X)
+#undef X
+  FP3_IN_COUNT
+};
+
+enum fp3_out_param {
+#define X(id, name, desc) FP3_OUT_##id,
+  FP3_OUT_PARAMS(X)
+#undef X
+  FP3_OUT_COUNT
+};
+
+/* A program image.  in_reg / out_reg: register bound to each parameter,
+ * -1 when the program does not bind it. */
+typedef struct fp3_image {
+  uint64_t words[FP3_DEFAULT_IMEM_DEPTH];
+  int line[FP3_DEFAULT_IMEM_DEPTH]; /* source line of each word, 0: unknown */
+  size_t n;                         /* words used                          */
+  int in_reg[FP3_IN_COUNT];
+  int out_reg[FP3_OUT_COUNT];
+} fp3_image;
+
+/* An empty image: no words, nothing bound. */
+void fp3_image_init(fp3_image *img);
+
+/* Names of the parameters; lookup returns the index or -1. */
+const char *fp3_in_name(int id);
+const char *fp3_out_name(int id);
+int fp3_in_lookup(const char *name);
+int fp3_out_lookup(const char *name);
+
+/* Instruction word fields. */
+static inline unsigned fp3_insn_opc(uint64_t w) {
+  return (unsigned)(w >> FP3_OPC_LSB) & ((1u << FP3_OPC_WIDTH) - 1u);
+}
+static inline unsigned fp3_insn_rd(uint64_t w) {
+  return (unsigned)(w >> FP3_RD_LSB) & ((1u << FP3_REG_WIDTH) - 1u);
+}
+static inline unsigned fp3_insn_ra(uint64_t w) {
+  return (unsigned)(w >> FP3_RA_LSB) & ((1u << FP3_REG_WIDTH) - 1u);
+}
+static inline unsigned fp3_insn_rb(uint64_t w) {
+  return (unsigned)(w >> FP3_RB_LSB) & ((1u << FP3_REG_WIDTH) - 1u);
+}
+static inline uint32_t fp3_insn_imm(uint64_t w) {
+  return (uint32_t)(w >> FP3_IMM_LSB);
+}
+/* Pack a word (unused fields must be passed as 0). */
+uint64_t fp3_insn_make(unsigned opc, unsigned rd, unsigned ra, unsigned rb,
+                       uint32_t imm);
+
+/* ISA table lookups: fields used (FP3_USES_*) or -1 for an unknown opcode;
+ * mnemonic or NULL; opcode of a mnemonic or -1. */
+int fp3_opc_uses(unsigned opc);
+const char *fp3_opc_mnemonic(unsigned opc);
+int fp3_opc_lookup(const char *mnemonic);
+
+/* Check one word against the ISA table, a register count and an
+ * instruction memory depth (pass FP3_DEFAULT_NUM_REGS and
+ * FP3_DEFAULT_IMEM_DEPTH for the default build): the same rules as the
+ * RTL decoder (rtl/fp3_scheduler.v), including an endi target inside the
+ * memory.  Returns 0 if legal, -1 if not, with the reason ("unknown opcode
+ * 0x09", "rb field 3 set but unused by add", "rd r40 >= 32 registers") in
+ * reason[0..n). */
+int fp3_insn_check(uint64_t w, unsigned num_regs, unsigned imem_depth,
+                   char *reason, size_t n);
+
+/* Check every word of an image and the bindings.  Returns 0 or -1 with
+ * "word 5: unknown opcode 0x09" in msg. */
+int fp3_image_validate(const fp3_image *img, char *msg, size_t n);
+
+/* Write the image as .hex, atomically (FILE.tmp, then rename): on any
+ * error no output file (and no FILE.tmp) remains.  source: name shown in
+ * the header comment (may be NULL).  Returns 0 or -1 with a message. */
+int fp3_image_write(const fp3_image *img, const char *path,
+                    const char *source, char *msg, size_t n);
+
+/* Read a .hex file into img.  Words are not validated (see
+ * fp3_image_validate).  Returns 0 or -1 with "FILE:LINE: reason". */
+int fp3_image_read(const char *path, fp3_image *img, char *msg, size_t n);
+
+#endif /* FP3_IMAGE_H */

@@ -1,0 +1,156 @@
+/*
+ * iss.c -- the FP3 instruction-set simulator: the architectural model of
+ * the processor, one instruction at a time, as an engine (engine.h).
+ *
+ * Registers hold binary32 bit patterns; add/sub/mul are fpref_add/sub/mul
+ * in the default configuration (RNE, subnormals), whose flags accumulate
+ * into the run's sticky FLAGS.  There is no timing: every instruction
+ * takes one "cycle", so cycles = issued = instructions executed and
+ * stalls = 0.
+ *
+ * A run of N integrations starts at PC 0.  endi counts an integration,
+ * reports it, and stops the run if it was the N-th, else jumps to its imm.
+ * halt stops the run.  Errors end the run with status.error set (the
+ * engine call itself succeeds, as on the RTL engine):
+ *   N == 0                         BAD_STEPS
+ *   a word the ISA table rejects   ILLEGAL_INSN, fault_pc = its PC
+ *   PC past the last entry         PC_OVERFLOW, fault_pc = IMEM_DEPTH - 1
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine.h"
+#include "fp3_isa.h"
+#include "fpref.h"
+#include "image.h"
+
+typedef struct iss_engine {
+  fp3_engine base;
+  uint64_t imem[FP3_DEFAULT_IMEM_DEPTH];
+  uint32_t regs[FP3_DEFAULT_NUM_REGS];
+} iss_engine;
+
+static int iss_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
+  iss_engine *s = (iss_engine *)e;
+  if (n > e->config.imem_depth) {
+    snprintf(e->error, sizeof e->error,
+             "program of %zu instructions does not fit the instruction memory "
+             "(%u entries)", n, e->config.imem_depth);
+    return -1;
+  }
+  memset(s->imem, 0, sizeof s->imem);
+  if (n) memcpy(s->imem, words, n * sizeof *words);
+  return 0;
+}
+
+static int check_reg(fp3_engine *e, unsigned reg) {
+  if (reg >= e->config.num_regs) {
+    snprintf(e->error, sizeof e->error,
+             "register r%u out of range (the ISS has %u)", reg,
+             e->config.num_regs);
+    return -1;
+  }
+  return 0;
+}
+
+static int iss_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
+  if (check_reg(e, reg)) return -1;
+  ((iss_engine *)e)->regs[reg] = value;
+  return 0;
+}
+
+static int iss_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
+  if (check_reg(e, reg)) return -1;
+  *value = ((iss_engine *)e)->regs[reg];
+  return 0;
+}
+
+static void fail(fp3_engine *e, fp3_status *st, unsigned err, uint32_t pc,
+                 const char *why) {
+  st->error = err;
+  st->fault_pc = pc;
+  snprintf(e->error, sizeof e->error, "%s", why);
+}
+
+static int iss_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
+                   fp3_status *st) {
+  iss_engine *s = (iss_engine *)e;
+  const uint32_t depth = e->config.imem_depth;
+  memset(st, 0, sizeof *st);
+  e->error[0] = '\0';
+  st->done = 1;
+  if (steps == 0) {
+    fail(e, st, FP3_ERR_BAD_STEPS, 0, "run started with STEPS = 0");
+    return 0;
+  }
+  unsigned flags = 0;
+  uint32_t pc = 0, integ = 0;
+  uint64_t n = 0; /* instructions executed */
+  char why[200];
+  for (;;) {
+    uint64_t w = s->imem[pc];
+    if (fp3_insn_check(w, e->config.num_regs, depth, why, sizeof why)) {
+      char msg[240];
+      snprintf(msg, sizeof msg, "illegal instruction at pc %u: %s", pc, why);
+      fail(e, st, FP3_ERR_ILLEGAL_INSN, pc, msg);
+      break;
+    }
+    unsigned opc = fp3_insn_opc(w), rd = fp3_insn_rd(w);
+    uint32_t a = s->regs[fp3_insn_ra(w)], b = s->regs[fp3_insn_rb(w)];
+    uint32_t imm = fp3_insn_imm(w);
+    int writes = 1, stop = 0;
+    uint32_t result = 0, next = pc + 1;
+    switch ((enum fp3_opcode)opc) {
+    case FP3_OP_ADD: result = fpref_add(a, b, FPREF_IEEE, &flags); break;
+    case FP3_OP_SUB: result = fpref_sub(a, b, FPREF_IEEE, &flags); break;
+    case FP3_OP_MUL: result = fpref_mul(a, b, FPREF_IEEE, &flags); break;
+    case FP3_OP_LI: result = imm; break;
+    case FP3_OP_MOV: result = a; break;
+    case FP3_OP_NOP: writes = 0; break;
+    case FP3_OP_HALT: writes = 0; stop = 1; break;
+    case FP3_OP_ENDI:
+      writes = 0;
+      integ++;
+      if (obs && obs->on_endi) obs->on_endi(obs->ctx, integ, n);
+      if (integ == steps) stop = 1;
+      else next = imm;
+      break;
+    }
+    if (writes) {
+      s->regs[rd] = result;
+      if (obs && obs->on_write) obs->on_write(obs->ctx, rd, result, integ + 1);
+    }
+    n++;
+    if (stop) break;
+    if (next >= depth) { /* endi targets are checked above */
+      fail(e, st, FP3_ERR_PC_OVERFLOW, depth - 1,
+           "PC ran past the end of instruction memory");
+      break;
+    }
+    pc = next;
+  }
+  st->steps_done = integ;
+  st->flags = flags;
+  st->cycles = n;
+  st->issued = n;
+  st->stalls = 0;
+  return 0;
+}
+
+static void iss_destroy(fp3_engine *e) { free(e); }
+
+static const fp3_engine_ops iss_ops = {
+    "iss", iss_load_program, iss_write_reg, iss_read_reg, iss_run, iss_destroy,
+};
+
+fp3_engine *fp3_engine_iss_new(void) {
+  iss_engine *s = calloc(1, sizeof *s);
+  if (!s) return NULL;
+  s->base.ops = &iss_ops;
+  s->base.config.num_regs = FP3_DEFAULT_NUM_REGS;
+  s->base.config.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
+  s->base.config.add_latency = 0; /* no timing model */
+  s->base.config.mul_latency = 0;
+  return &s->base;
+}

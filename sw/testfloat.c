@@ -1,0 +1,263 @@
+/*
+ * testfloat.c -- Berkeley TestFloat vector runner (see testfloat.h).
+ *
+ * Streams the file through zlib (gzopen reads gzip and plain files alike)
+ * in batches, and runs each batch back to back through the core, one
+ * operation per cycle (fpu_model_run).
+ */
+#include "testfloat.h"
+
+#include <ctype.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "../sim/fpu_model.h" /* relative: no -Isim needed */
+
+#define TF_BATCH 4096
+#define TF_LINE_MAX 256
+#define TF_MAX_PRINT 10
+
+/* Parse one hex field of 1..max_digits digits at *pp; skips leading blanks. */
+static int parse_hex(const char **pp, unsigned max_digits, uint32_t *v) {
+  const char *p = *pp;
+  while (*p == ' ' || *p == '\t') p++;
+  uint32_t x = 0;
+  unsigned n = 0;
+  while (isxdigit((unsigned char)*p)) {
+    if (++n > max_digits) return -1;
+    int c = (unsigned char)*p++;
+    x = (x << 4) | (uint32_t)(isdigit(c) ? c - '0' : tolower(c) - 'a' + 10);
+  }
+  if (n == 0) return -1;
+  if (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\n' && *p != '\r')
+    return -1;
+  *pp = p;
+  *v = x;
+  return 0;
+}
+
+/* 1: a vector, 0: blank line, -1: malformed. */
+static int parse_line(const char *line, uint32_t v[4]) {
+  const char *p = line;
+  while (*p == ' ' || *p == '\t') p++;
+  if (*p == '\n' || *p == '\r' || *p == '\0') return 0;
+  static const unsigned digits[4] = {8, 8, 8, 2};
+  for (int i = 0; i < 4; i++)
+    if (parse_hex(&p, digits[i], &v[i]) != 0) return -1;
+  while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
+  return *p == '\0' ? 1 : -1;
+}
+
+static const char *const op_names[3] = {"add", "sub", "mul"};
+
+static uint32_t ref_apply(testfloat_op op, uint32_t a, uint32_t b,
+                          fpref_mode mode, unsigned *flags) {
+  switch (op) {
+  case TESTFLOAT_ADD: return fpref_add(a, b, mode, flags);
+  case TESTFLOAT_SUB: return fpref_sub(a, b, mode, flags);
+  default:            return fpref_mul(a, b, mode, flags);
+  }
+}
+
+typedef struct tf_batch {
+  uint32_t a[TF_BATCH], b[TF_BATCH], want[TF_BATCH], y[TF_BATCH];
+  uint8_t want_flags[TF_BATCH], flags[TF_BATCH];
+  unsigned long line[TF_BATCH];
+  size_t n;
+} tf_batch;
+
+static int run_batch(tf_batch *bt, testfloat_op op, fpref_mode mode,
+                     struct fpu_model *model, FILE *out, unsigned max_print,
+                     FILE *err, const char *path, testfloat_stats *st) {
+  if (model) {
+    static const fpu_op ops[3] = {FPU_OP_ADD, FPU_OP_SUB, FPU_OP_MUL};
+    if (fpu_model_run(model, ops[op], bt->n, bt->a, bt->b, bt->y,
+                      bt->flags) != 0) {
+      if (err)
+        fprintf(err, "%s: the core's valid_o did not follow its latency\n",
+                path);
+      return -1;
+    }
+  } else {
+    for (size_t i = 0; i < bt->n; i++) {
+      unsigned fl = 0;
+      bt->y[i] = ref_apply(op, bt->a[i], bt->b[i], mode, &fl);
+      bt->flags[i] = (uint8_t)fl;
+    }
+  }
+  for (size_t i = 0; i < bt->n; i++) {
+    int same = bt->y[i] == bt->want[i] ||
+               (fpref_is_nan(bt->y[i]) && fpref_is_nan(bt->want[i]));
+    if (same && bt->flags[i] == bt->want_flags[i]) {
+      st->passed++;
+      continue;
+    }
+    if (out && st->failed < max_print)
+      fprintf(out,
+              "%s:%lu: %s %08X %08X: expected %08X flags %02X, got %08X "
+              "flags %02X\n",
+              path, bt->line[i], op_names[op], (unsigned)bt->a[i],
+              (unsigned)bt->b[i], (unsigned)bt->want[i],
+              (unsigned)bt->want_flags[i], (unsigned)bt->y[i],
+              (unsigned)bt->flags[i]);
+    st->failed++;
+  }
+  bt->n = 0;
+  return 0;
+}
+
+int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
+                  struct fpu_model *model, FILE *out, unsigned max_print,
+                  FILE *err, testfloat_stats *st) {
+  st->passed = 0;
+  st->failed = 0;
+  if ((unsigned)op > TESTFLOAT_MUL) {
+    if (err) fprintf(err, "testfloat: bad operation %d\n", (int)op);
+    return -1;
+  }
+  gzFile gz = gzopen(path, "rb");
+  if (!gz) {
+    if (err) fprintf(err, "%s: cannot open\n", path);
+    return -1;
+  }
+  tf_batch *bt = malloc(sizeof *bt);
+  if (!bt) {
+    gzclose(gz);
+    if (err) fprintf(err, "%s: out of memory\n", path);
+    return -1;
+  }
+  bt->n = 0;
+  char line[TF_LINE_MAX];
+  unsigned long lineno = 0;
+  int rc = 0;
+  while (gzgets(gz, line, sizeof line) != NULL) {
+    lineno++;
+    size_t len = strlen(line);
+    if (len == sizeof line - 1 && line[len - 1] != '\n') {
+      if (err) fprintf(err, "%s:%lu: line too long\n", path, lineno);
+      rc = -1;
+      break;
+    }
+    uint32_t v[4];
+    int k = parse_line(line, v);
+    if (k < 0) {
+      if (err)
+        fprintf(err, "%s:%lu: malformed line (want \"A B RESULT FLAGS\" in hex)\n",
+                path, lineno);
+      rc = -1;
+      break;
+    }
+    if (k == 0) continue;
+    bt->a[bt->n] = v[0];
+    bt->b[bt->n] = v[1];
+    bt->want[bt->n] = v[2];
+    bt->want_flags[bt->n] = (uint8_t)v[3];
+    bt->line[bt->n] = lineno;
+    if (++bt->n == TF_BATCH &&
+        run_batch(bt, op, mode, model, out, max_print, err, path, st) != 0) {
+      rc = -1;
+      break;
+    }
+  }
+  if (rc == 0) {
+    int errnum = 0;
+    const char *msg = gzerror(gz, &errnum);
+    if (errnum != Z_OK && errnum != Z_STREAM_END) {
+      if (err) fprintf(err, "%s:%lu: read error: %s\n", path, lineno, msg);
+      rc = -1;
+    } else if (bt->n > 0) {
+      rc = run_batch(bt, op, mode, model, out, max_print, err, path, st);
+    }
+  }
+  free(bt);
+  gzclose(gz);
+  return rc;
+}
+
+static void usage(FILE *f) {
+  fputs("usage: fp3 testfloat [--round rne|rtz] [--ftz] [--ref] OP FILE\n"
+        "  Run Berkeley TestFloat vectors (lines \"A B RESULT FLAGS\" in hex,\n"
+        "  gzip or plain) through the Verilated FP core of that configuration\n"
+        "  and compare results (any NaN matches any NaN) and flags exactly.\n"
+        "  OP               add, sub or mul\n"
+        "  --round rne|rtz  rounding of the core (default rne)\n"
+        "  --ftz            the flush-to-zero core\n"
+        "  --ref            check the C reference (sw/fpref) instead\n"
+        "  --help           this text\n"
+        "Prints the first failures and \"N passed, M failed\"; exit status 0\n"
+        "when all passed, 1 when some failed, 2 on a usage or input error.\n",
+        f);
+}
+
+int fp3_cmd_testfloat(int argc, char **argv) {
+  fpref_mode mode = FPREF_IEEE;
+  int use_ref = 0;
+  const char *pos[2] = {NULL, NULL};
+  int npos = 0;
+
+  for (int i = 1; i < argc; i++) {
+    const char *s = argv[i];
+    if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+      usage(stdout);
+      return 0;
+    } else if (strcmp(s, "--round") == 0 || strncmp(s, "--round=", 8) == 0) {
+      const char *v = s[7] == '=' ? s + 8 : (i + 1 < argc ? argv[++i] : "");
+      if (strcmp(v, "rne") == 0) {
+        mode.round = FPREF_RNE;
+      } else if (strcmp(v, "rtz") == 0) {
+        mode.round = FPREF_RTZ;
+      } else {
+        fprintf(stderr, "fp3 testfloat: bad rounding '%s'\n", v);
+        usage(stderr);
+        return 2;
+      }
+    } else if (strcmp(s, "--ftz") == 0) {
+      mode.ftz = 1;
+    } else if (strcmp(s, "--ref") == 0) {
+      use_ref = 1;
+    } else if (s[0] == '-' && s[1] != '\0') {
+      fprintf(stderr, "fp3 testfloat: unknown option '%s'\n", s);
+      usage(stderr);
+      return 2;
+    } else if (npos < 2) {
+      pos[npos++] = s;
+    } else {
+      fprintf(stderr, "fp3 testfloat: too many arguments\n");
+      usage(stderr);
+      return 2;
+    }
+  }
+  if (npos != 2) {
+    usage(stderr);
+    return 2;
+  }
+  int op = -1;
+  for (int k = 0; k < 3; k++)
+    if (strcmp(pos[0], op_names[k]) == 0) op = k;
+  if (op < 0) {
+    fprintf(stderr, "fp3 testfloat: unknown operation '%s'\n", pos[0]);
+    usage(stderr);
+    return 2;
+  }
+
+  struct fpu_model *model = NULL;
+  if (!use_ref) {
+    model = fpu_model_new((int)mode.round, mode.ftz, 0, 0);
+    if (!model) {
+      fprintf(stderr, "fp3 testfloat: no core built for --round %s%s\n",
+              mode.round == FPREF_RTZ ? "rtz" : "rne", mode.ftz ? " --ftz" : "");
+      return 2;
+    }
+  }
+  testfloat_stats st;
+  int rc = testfloat_run(pos[1], (testfloat_op)op, mode, model, stdout,
+                         TF_MAX_PRINT, stderr, &st);
+  if (model) fpu_model_free(model);
+  if (rc != 0) return 2;
+  if (st.failed > TF_MAX_PRINT)
+    printf("... %lu more failures not shown\n", st.failed - TF_MAX_PRINT);
+  printf("%lu passed, %lu failed\n", st.passed, st.failed);
+  return st.failed ? 1 : 0;
+}

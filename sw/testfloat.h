@@ -1,0 +1,47 @@
+/*
+ * testfloat.h -- Berkeley TestFloat vector runner for the FP cores.
+ *
+ * A vector file holds lines "A B RESULT FLAGS" (hex; operands and result
+ * 8 digits, flags 2 digits in SoftFloat order, see fp3_isa.h FP3_FLAGS),
+ * gzip-compressed or plain.  Each line runs through the Verilated core of
+ * the chosen configuration (sim/fpu_model.h) or through sw/fpref; a result
+ * passes when its bits equal the expected ones, or both are NaN (any
+ * payload), and the flags are equal.
+ */
+#ifndef FP3_TESTFLOAT_H
+#define FP3_TESTFLOAT_H
+
+#include <stdio.h>
+
+#include "fpref.h"
+
+struct fpu_model;
+
+typedef enum testfloat_op {
+  TESTFLOAT_ADD = 0,
+  TESTFLOAT_SUB = 1,
+  TESTFLOAT_MUL = 2
+} testfloat_op;
+
+typedef struct testfloat_stats {
+  unsigned long passed;
+  unsigned long failed;
+} testfloat_stats;
+
+/* Run every line of `path` through `model` (which must have the rounding and
+ * FTZ of `mode`), or through fpref in `mode` when model is NULL.  Prints
+ * the first `max_print` failures to `out` (may be NULL).  Returns 0 when the
+ * whole file was read (whatever the failures), -1 on an I/O error or a
+ * malformed line, with a message naming the file and line to `err` (may be
+ * NULL).  *st gets the counts. */
+int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
+                  struct fpu_model *model, FILE *out, unsigned max_print,
+                  FILE *err, testfloat_stats *st);
+
+/* CLI: fp3 testfloat [--round rne|rtz] [--ftz] [--ref] OP FILE
+ * argv[0] is the subcommand name.  Prints the first failures and a closing
+ * line "N passed, M failed".  Returns the exit status: 0 all passed, 1 some
+ * failed, 2 usage or input error (0 for --help). */
+int fp3_cmd_testfloat(int argc, char **argv);
+
+#endif /* FP3_TESTFLOAT_H */
