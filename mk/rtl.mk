@@ -12,11 +12,13 @@ RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FT
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_ARCHIVE  := $(RTL_OBJDIR)/Vfp3_top__ALL.a
 RTL_SHIM_OBJ := $(BUILD)/sim/fp3_shim.o
-RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(VERILATED_OBJS)
+RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(VERILATED_OBJS) $(BUILD)/verilated/verilated_vcd_c.o
 RTL_DEPS     := $(RTL_OBJS)
 
-# Rebuild the model when the sources or the parameters change.
-RTL_PARAM_STAMP := $(RTL_OBJDIR)/params.$(shell echo '$(RTL_PARAMS)' | md5sum | cut -c1-8)
+RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
+
+# Rebuild the model when the sources, the parameters or the flags change.
+RTL_PARAM_STAMP := $(RTL_OBJDIR)/params.$(shell echo '$(RTL_VFLAGS)' | md5sum | cut -c1-8)
 
 $(RTL_PARAM_STAMP):
 	@mkdir -p $(RTL_OBJDIR)
@@ -24,8 +26,7 @@ $(RTL_PARAM_STAMP):
 	@touch $@
 
 $(RTL_ARCHIVE): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
-	$(VERILATOR) --cc --build -j 2 $(VFLAGS) --top-module $(RTL_TOP) $(RTL_PARAMS) \
-	  --Mdir $(RTL_OBJDIR) $(RTL_SRC) >$(RTL_OBJDIR)/build.log 2>&1 || \
+	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) --Mdir $(RTL_OBJDIR) $(RTL_SRC) >$(RTL_OBJDIR)/build.log 2>&1 || \
 	  { tail -40 $(RTL_OBJDIR)/build.log; exit 1; }
 
 $(RTL_SHIM_OBJ): sim/fp3_shim.cpp sim/fp3_model.h $(RTL_ARCHIVE)

@@ -5,9 +5,8 @@
 #                           gen_isa.c), built with CFLAGS into $(BUILD)/sw/
 #   $(BUILD)/sw/libfp3.a    the same objects as an archive
 #   $(BUILD)/sw-san/libfp3.a  the same, built with $(SAN_FLAGS), for tests
-# An archive only pulls in what a program uses: a test that never calls
-# fp3_engine_rtl_new() or fp3_cmd_testfloat() links without the Verilated
-# models (tests/test_sw.c defines its own fp3_engine_rtl_new stub).
+# An archive only pulls in what a program uses: a program that never calls
+# fp3_cmd_testfloat() links without the Verilated FP-core models.
 #
 # build/fp3 links the RTL and FPU models exported by mk/rtl.mk and
 # mk/fpu.mk (RTL_OBJS/RTL_LIBS, FPU_OBJS/FPU_LIBS), with $(CXX) since they
@@ -45,9 +44,11 @@ $(BUILD)/fp3: $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_OBJS)
 	  $(RTL_LIBS) $(FPU_LIBS) $(VERILATOR_LDLIBS) $(LDLIBS_SW)
 
 # ---- tests -------------------------------------------------------------------
-$(BUILD)/tests/test_sw: tests/test_sw.c $(SW_SAN_LIB) | $(SETUP_STAMP)
+$(BUILD)/tests/test_sw: tests/test_sw.c $(SW_SAN_LIB) $(RTL_DEPS) | $(SETUP_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(SAN_FLAGS) -o $@ $< $(SW_SAN_LIB) $(LDLIBS_SW) $(CMOCKA_LIB)
+	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(SW_SAN_LIB) $(RTL_OBJS) $(LDLIBS_SW) $(CMOCKA_LIB) \
+	  $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_sw
 
 # tests/test_cli.sh runs the CLI named by $FP3_BIN.

@@ -37,8 +37,9 @@ typedef struct fp3_model_out {
   uint32_t wb_data[3];
 } fp3_model_out;
 
-/* A new model, held in reset for two cycles.  trace_path: a VCD file to
- * write, or NULL.  Returns NULL if out of memory. */
+/* A new model, held in reset for two cycles.  trace_path: a VCD waveform
+ * of every signal to write, or NULL.  Returns NULL if out of memory or if
+ * the trace file cannot be opened (with a message on stderr). */
 fp3_model *fp3_model_new(const char *trace_path);
 void fp3_model_free(fp3_model *m);
 /* One clock cycle; `in` may be NULL (no host access), `out` may be NULL. */

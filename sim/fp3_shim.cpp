@@ -1,33 +1,57 @@
 // fp3_shim.cpp -- extern "C" shim over the Verilator model of rtl/fp3_top.v.
-// The only C++ of the processor harness: it owns the VerilatedContext and
-// the model, and moves values between C structs and the model's ports.
+// The only C++ of the processor harness: it owns the VerilatedContext, the
+// model and an optional VCD writer, and moves values between C structs and
+// the model's ports.  One clock cycle is two time units in the waveform.
 #include "fp3_model.h"
 
+#include <cstdio>
 #include <new>
 
 #include "Vfp3_top.h"
 #include "verilated.h"
+#include "verilated_vcd_c.h"
 
 struct fp3_model {
   VerilatedContext *ctx;
   Vfp3_top *top;
+  VerilatedVcdC *vcd;  // nullptr: no waveform
 };
 
 static void half_cycle(fp3_model *m, int clk) {
   m->top->clk_i = clk;
   m->top->eval();
+  if (m->vcd) m->vcd->dump(m->ctx->time());
   m->ctx->timeInc(1);
 }
 
+static void destroy(fp3_model *m) {
+  if (m->vcd) {
+    m->vcd->close();
+    delete m->vcd;
+  }
+  delete m->top;
+  delete m->ctx;
+  delete m;
+}
+
 extern "C" fp3_model *fp3_model_new(const char *trace_path) {
-  (void)trace_path;  // waveform tracing is not built into this model
   fp3_model *m = nullptr;
   try {
-    m = new fp3_model{new VerilatedContext, nullptr};
+    m = new fp3_model{new VerilatedContext, nullptr, nullptr};
+    if (trace_path) m->ctx->traceEverOn(true);
     m->top = new Vfp3_top{m->ctx};
+    if (trace_path) {
+      m->vcd = new VerilatedVcdC;
+      m->top->trace(m->vcd, 99);
+      m->vcd->open(trace_path);
+      if (!m->vcd->isOpen()) {
+        std::fprintf(stderr, "fp3: cannot open trace file %s\n", trace_path);
+        destroy(m);
+        return nullptr;
+      }
+    }
   } catch (const std::bad_alloc &) {
-    if (m) delete m->ctx;
-    delete m;
+    if (m) destroy(m);
     return nullptr;
   }
   m->top->host_we_i = 0;
@@ -46,9 +70,7 @@ extern "C" fp3_model *fp3_model_new(const char *trace_path) {
 extern "C" void fp3_model_free(fp3_model *m) {
   if (!m) return;
   m->top->final();
-  delete m->top;
-  delete m->ctx;
-  delete m;
+  destroy(m);
 }
 
 extern "C" void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_out *out) {

@@ -214,6 +214,11 @@ static int parse_target(asm_state *st, const char *s, int line,
       add_error(st, line, "bad address '%s'", s);
       return -1;
     }
+    if (v >= FP3_DEFAULT_IMEM_DEPTH) {
+      add_error(st, line, "endi target %lu outside the %d-entry instruction memory",
+                v, FP3_DEFAULT_IMEM_DEPTH);
+      return -1;
+    }
     *imm = (uint32_t)v;
     return 0;
   }
