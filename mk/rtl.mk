@@ -1,37 +1,53 @@
 # rtl.mk -- the Verilated processor model, lint and synthesis.
 #
-# Exports RTL_OBJS (what an executable links to use sim/fp3_model.h) and
-# RTL_DEPS.  Model configuration: NUM_REGS, IMEM_DEPTH, ADD_LATENCY,
-# MUL_LATENCY on the make command line override the defaults of
-# sw/fp3_isa.h (e.g. `make sim ADD_LATENCY=6`); the C side reads the
-# values back from the model's INFO registers.
+# Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
+# models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
+# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY on the make command line override
+# the defaults of sw/fp3_isa.h (e.g. `make sim ADD_LATENCY=6`); the C side
+# reads the values back from the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_OBJDIR   := $(BUILD)/obj_fp3
-RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ,\
+RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY,\
                   $(if $($(p)),-G$(p)=$($(p))))
-RTL_ARCHIVE  := $(RTL_OBJDIR)/Vfp3_top__ALL.a
-RTL_SHIM_OBJ := $(BUILD)/sim/fp3_shim.o
-RTL_OBJS     := $(RTL_SHIM_OBJ) $(RTL_ARCHIVE) $(VERILATED_OBJS) $(BUILD)/verilated/verilated_vcd_c.o
-RTL_DEPS     := $(RTL_OBJS)
-
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
-# Rebuild the model when the sources, the parameters or the flags change.
-RTL_PARAM_STAMP := $(RTL_OBJDIR)/params.$(shell echo '$(RTL_VFLAGS)' | md5sum | cut -c1-8)
+# One model per FP core configuration (FP3_MODEL_CONFIGS of
+# sim/fp3_model.h): name, ROUND, FTZ.
+RTL_CONFIGS     := rne rtz ftz rtz_ftz
+RTL_CFG_rne     := 0 0
+RTL_CFG_rtz     := 1 0
+RTL_CFG_ftz     := 0 1
+RTL_CFG_rtz_ftz := 1 1
+
+rtl_objdir  = $(BUILD)/obj_fp3_$(1)
+rtl_archive = $(call rtl_objdir,$(1))/Vfp3_top_$(1)__ALL.a
+rtl_shim    = $(BUILD)/sim/fp3_shim_$(1).o
+
+RTL_OBJS := $(foreach c,$(RTL_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c))) \
+            $(VERILATED_OBJS) $(BUILD)/verilated/verilated_vcd_c.o
+RTL_DEPS := $(RTL_OBJS)
+
+# Rebuild the models when the sources, the parameters or the flags change.
+RTL_PARAM_STAMP := $(BUILD)/obj_fp3.params.$(shell echo '$(RTL_VFLAGS)' | md5sum | cut -c1-8)
 
 $(RTL_PARAM_STAMP):
-	@mkdir -p $(RTL_OBJDIR)
-	@rm -f $(RTL_OBJDIR)/params.*
+	@mkdir -p $(BUILD)
+	@rm -f $(BUILD)/obj_fp3.params.*
 	@touch $@
 
-$(RTL_ARCHIVE): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
-	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) --Mdir $(RTL_OBJDIR) $(RTL_SRC) >$(RTL_OBJDIR)/build.log 2>&1 || \
-	  { tail -40 $(RTL_OBJDIR)/build.log; exit 1; }
+define RTL_MODEL_RULES
+$(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
+	@mkdir -p $(call rtl_objdir,$(1))
+	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) \
+	  -GROUND=$(word 1,$(RTL_CFG_$(1))) -GFTZ=$(word 2,$(RTL_CFG_$(1))) \
+	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
+	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 
-$(RTL_SHIM_OBJ): sim/fp3_shim.cpp sim/fp3_model.h $(RTL_ARCHIVE)
-	@mkdir -p $(dir $@)
-	$(CXX) $(VERILATOR_CXXFLAGS) -I$(RTL_OBJDIR) -c $< -o $@
+$(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h $(call rtl_archive,$(1))
+	@mkdir -p $$(dir $$@)
+	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
+endef
+$(foreach c,$(RTL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 
 # rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
 $(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h

@@ -209,7 +209,7 @@ module fp3_top #(
       HR_STALLS_LO:  rdata_d = stalls[31:0];
       HR_STALLS_HI:  rdata_d = stalls[63:32];
       HR_INFO0:      rdata_d = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
-      HR_INFO1:      rdata_d = {16'd0, MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+      HR_INFO1:      rdata_d = {14'd0, FTZ[0], ROUND[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
       HR_ID:         rdata_d = ID_VALUE;
       default: begin
         if (win_reg && reg_ok) rdata_d = host_reg_rdata;

@@ -2,7 +2,7 @@
  * fp3_model.h -- the Verilated FP3 processor (rtl/fp3_top.v) as plain C.
  *
  * An opaque handle over the Verilator-generated C++ model; sim/fp3_shim.cpp
- * is the only C++ in the project.  Each call of fp3_model_cycle() is one
+ * is the only C++ of the processor harness.  Each call of fp3_model_cycle() is one
  * clock cycle: inputs are applied away from the rising edge, the trace
  * outputs of the cycle are sampled before the edge, and the registered
  * host read data (for the address given in this cycle) after it.
@@ -37,13 +37,31 @@ typedef struct fp3_model_out {
   uint32_t wb_data[3];
 } fp3_model_out;
 
-/* A new model, held in reset for two cycles.  trace_path: a VCD waveform
- * of every signal to write, or NULL.  Returns NULL if out of memory or if
- * the trace file cannot be opened (with a message on stderr). */
-fp3_model *fp3_model_new(const char *trace_path);
-void fp3_model_free(fp3_model *m);
-/* One clock cycle; `in` may be NULL (no host access), `out` may be NULL. */
-void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_out *out);
+/*
+ * The model is built once per FP core configuration (parameters ROUND and
+ * FTZ of rtl/fp3_top.v); X(name, ROUND, FTZ).  Each build exports its
+ * operations as `fp3_model_<name>`.
+ */
+#define FP3_MODEL_CONFIGS(X) \
+  X(rne, 0, 0)               \
+  X(rtz, 1, 0)               \
+  X(ftz, 0, 1)               \
+  X(rtz_ftz, 1, 1)
+
+typedef struct fp3_model_ops {
+  /* A new model, held in reset for two cycles.  trace_path: a VCD
+   * waveform of every signal to write, or NULL.  Returns NULL if out of
+   * memory or if the trace file cannot be opened (message on stderr). */
+  fp3_model *(*create)(const char *trace_path);
+  void (*destroy)(fp3_model *m);
+  /* One clock cycle; `in` may be NULL (no host access), `out` may be
+   * NULL. */
+  void (*cycle)(fp3_model *m, const fp3_model_in *in, fp3_model_out *out);
+} fp3_model_ops;
+
+#define FP3_MODEL_DECLARE(name, round, ftz) extern const fp3_model_ops fp3_model_##name;
+FP3_MODEL_CONFIGS(FP3_MODEL_DECLARE)
+#undef FP3_MODEL_DECLARE
 
 #ifdef __cplusplus
 }

@@ -2,29 +2,47 @@
 // The only C++ of the processor harness: it owns the VerilatedContext, the
 // model and an optional VCD writer, and moves values between C structs and
 // the model's ports.  One clock cycle is two time units in the waveform.
+//
+// Compiled once per core configuration (FP3_MODEL_CONFIGS in fp3_model.h):
+// FP3_CFG names it, the Verilated class is Vfp3_top_<FP3_CFG>, and the
+// operations are exported as fp3_model_<FP3_CFG>.
 #include "fp3_model.h"
 
 #include <cstdio>
 #include <new>
 
-#include "Vfp3_top.h"
 #include "verilated.h"
 #include "verilated_vcd_c.h"
 
-struct fp3_model {
+#define FP3_CAT_(a, b) a##b
+#define FP3_CAT(a, b) FP3_CAT_(a, b)
+#define FP3_STR_(a) #a
+#define FP3_STR(a) FP3_STR_(a)
+#define VTOP FP3_CAT(Vfp3_top_, FP3_CFG)
+#include FP3_STR(FP3_CAT(Vfp3_top_, FP3_CFG).h)
+
+namespace {
+
+// The C side's opaque fp3_model is this configuration's model: handles
+// are reinterpret_cast between the two, never dereferenced as fp3_model.
+struct model {
   VerilatedContext *ctx;
-  Vfp3_top *top;
+  VTOP *top;
   VerilatedVcdC *vcd;  // nullptr: no waveform
 };
 
-static void half_cycle(fp3_model *m, int clk) {
+model *of(fp3_model *m) { return reinterpret_cast<model *>(m); }
+
+}  // namespace
+
+static void half_cycle(model *m, int clk) {
   m->top->clk_i = clk;
   m->top->eval();
   if (m->vcd) m->vcd->dump(m->ctx->time());
   m->ctx->timeInc(1);
 }
 
-static void destroy(fp3_model *m) {
+static void destroy(model *m) {
   if (m->vcd) {
     m->vcd->close();
     delete m->vcd;
@@ -34,12 +52,12 @@ static void destroy(fp3_model *m) {
   delete m;
 }
 
-extern "C" fp3_model *fp3_model_new(const char *trace_path) {
-  fp3_model *m = nullptr;
+static fp3_model *create(const char *trace_path) {
+  model *m = nullptr;
   try {
-    m = new fp3_model{new VerilatedContext, nullptr, nullptr};
+    m = new model{new VerilatedContext, nullptr, nullptr};
     if (trace_path) m->ctx->traceEverOn(true);
-    m->top = new Vfp3_top{m->ctx};
+    m->top = new VTOP{m->ctx};
     if (trace_path) {
       m->vcd = new VerilatedVcdC;
       m->top->trace(m->vcd, 99);
@@ -64,17 +82,19 @@ extern "C" fp3_model *fp3_model_new(const char *trace_path) {
   }
   m->top->rst_i = 0;
   half_cycle(m, 0);
-  return m;
+  return reinterpret_cast<fp3_model *>(m);
 }
 
-extern "C" void fp3_model_free(fp3_model *m) {
-  if (!m) return;
+static void free_model(fp3_model *handle) {
+  if (!handle) return;
+  model *m = of(handle);
   m->top->final();
   destroy(m);
 }
 
-extern "C" void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_out *out) {
-  Vfp3_top *t = m->top;
+static void cycle(fp3_model *handle, const fp3_model_in *in, fp3_model_out *out) {
+  model *m = of(handle);
+  VTOP *t = m->top;
   t->host_we_i = in ? (in->we ? 1 : 0) : 0;
   t->host_addr_i = in ? (in->addr & 0xFFFu) : 0;
   t->host_wdata_i = in ? in->wdata : 0;
@@ -98,3 +118,5 @@ extern "C" void fp3_model_cycle(fp3_model *m, const fp3_model_in *in, fp3_model_
   half_cycle(m, 1);  // the rising edge
   if (out) out->rdata = t->host_rdata_o;
 }
+
+extern "C" const fp3_model_ops FP3_CAT(fp3_model_, FP3_CFG) = {create, free_model, cycle};

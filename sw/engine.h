@@ -21,12 +21,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "fpref.h"
+
 /* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
 typedef struct fp3_config {
   unsigned num_regs;    /* registers                                     */
   unsigned imem_depth;  /* instruction memory entries                    */
   unsigned add_latency; /* cycles, issue to dependent issue (RTL only)   */
   unsigned mul_latency; /* cycles, issue to dependent issue (RTL only)   */
+  fpref_mode mode;      /* FP core options: rounding, flush-to-zero       */
 } fp3_config;
 
 /* Status and counters after a run. */
@@ -76,8 +79,12 @@ struct fp3_engine {
 /* Constructors.  Return NULL when out of memory (or, for the RTL, when the
  * model does not answer with FP3_ID_VALUE; a message goes to stderr). */
 fp3_engine *fp3_engine_iss_new(void);
+/* An ISS whose FP operations follow core options `mode` (RTZ, FTZ). */
+fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode);
 /* trace_path: waveform file to write (NULL: none). */
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);
+/* The RTL built with core options `mode` (parameters ROUND, FTZ). */
+fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path);
 /* By name, "rtl" or "iss"; NULL for an unknown name. */
 fp3_engine *fp3_engine_new(const char *name);
 

@@ -27,22 +27,23 @@ typedef struct tag_fifo {
 
 typedef struct rtl_engine {
   fp3_engine base;
+  const fp3_model_ops *mops; /* the model of the configuration */
   fp3_model *model;
 } rtl_engine;
 
-static void host_write(fp3_model *m, unsigned addr, uint32_t value) {
+static void host_write(const rtl_engine *m, unsigned addr, uint32_t value) {
   fp3_model_in in = {1, (uint16_t)addr, value};
-  fp3_model_cycle(m, &in, NULL);
+  m->mops->cycle(m->model, &in, NULL);
 }
 
-static uint32_t host_read(fp3_model *m, unsigned addr) {
+static uint32_t host_read(const rtl_engine *m, unsigned addr) {
   fp3_model_in in = {0, (uint16_t)addr, 0};
   fp3_model_out out;
-  fp3_model_cycle(m, &in, &out);
+  m->mops->cycle(m->model, &in, &out);
   return out.rdata;
 }
 
-static uint64_t host_read64(fp3_model *m, unsigned lo_addr) {
+static uint64_t host_read64(const rtl_engine *m, unsigned lo_addr) {
   uint64_t lo = host_read(m, lo_addr);
   uint64_t hi = host_read(m, lo_addr + 1);
   return lo | (hi << 32);
@@ -59,8 +60,8 @@ static int rtl_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
   /* Every entry is written, so a shorter program leaves no stale words. */
   for (size_t i = 0; i < e->config.imem_depth; i++) {
     uint64_t w = i < n ? words[i] : 0;
-    host_write(r->model, FP3_HR_IMEM_BASE + 2 * (unsigned)i, (uint32_t)w);
-    host_write(r->model, FP3_HR_IMEM_BASE + 2 * (unsigned)i + 1, (uint32_t)(w >> 32));
+    host_write(r, FP3_HR_IMEM_BASE + 2 * (unsigned)i, (uint32_t)w);
+    host_write(r, FP3_HR_IMEM_BASE + 2 * (unsigned)i + 1, (uint32_t)(w >> 32));
   }
   return 0;
 }
@@ -76,13 +77,13 @@ static int check_reg(fp3_engine *e, unsigned reg) {
 
 static int rtl_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
   if (check_reg(e, reg)) return -1;
-  host_write(((rtl_engine *)e)->model, FP3_HR_REG_BASE + reg, value);
+  host_write((rtl_engine *)e, FP3_HR_REG_BASE + reg, value);
   return 0;
 }
 
 static int rtl_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
   if (check_reg(e, reg)) return -1;
-  *value = host_read(((rtl_engine *)e)->model, FP3_HR_REG_BASE + reg);
+  *value = host_read((rtl_engine *)e, FP3_HR_REG_BASE + reg);
   return 0;
 }
 
@@ -97,19 +98,18 @@ static uint64_t cycle_limit(const fp3_config *c, uint32_t steps) {
 
 static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_status *st) {
   rtl_engine *r = (rtl_engine *)e;
-  fp3_model *m = r->model;
   tag_fifo fifo[4];
   memset(fifo, 0, sizeof fifo);
   memset(st, 0, sizeof *st);
 
-  host_write(m, FP3_HR_STEPS, steps);
-  host_write(m, FP3_HR_CTRL, FP3_CTRL_START);
+  host_write(r, FP3_HR_STEPS, steps);
+  host_write(r, FP3_HR_CTRL, FP3_CTRL_START);
 
   uint32_t endis = 0;
   uint64_t limit = cycle_limit(&e->config, steps);
   fp3_model_out out;
   for (uint64_t cycle = 0;; cycle++) {
-    fp3_model_cycle(m, NULL, &out);
+    r->mops->cycle(r->model, NULL, &out);
     if (!out.running) break; /* START refused (STEPS = 0) or run over */
     if (cycle > limit) {
       snprintf(e->error, sizeof e->error, "RTL hung: no DONE after %llu cycles",
@@ -154,22 +154,22 @@ static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_s
     }
   }
 
-  uint32_t status = host_read(m, FP3_HR_STATUS);
+  uint32_t status = host_read(r, FP3_HR_STATUS);
   st->done = (status & FP3_STATUS_DONE) != 0;
   st->error = (status >> FP3_STATUS_ERROR_LSB) & 0xF;
-  st->fault_pc = host_read(m, FP3_HR_FAULT_PC);
-  st->steps_done = host_read(m, FP3_HR_STEPS_DONE);
-  st->flags = host_read(m, FP3_HR_FLAGS);
-  st->cycles = host_read64(m, FP3_HR_CYCLES_LO);
-  st->issued = host_read64(m, FP3_HR_ISSUED_LO);
-  st->stalls = host_read64(m, FP3_HR_STALLS_LO);
-  host_write(m, FP3_HR_CTRL, FP3_CTRL_CLEAR);
+  st->fault_pc = host_read(r, FP3_HR_FAULT_PC);
+  st->steps_done = host_read(r, FP3_HR_STEPS_DONE);
+  st->flags = host_read(r, FP3_HR_FLAGS);
+  st->cycles = host_read64(r, FP3_HR_CYCLES_LO);
+  st->issued = host_read64(r, FP3_HR_ISSUED_LO);
+  st->stalls = host_read64(r, FP3_HR_STALLS_LO);
+  host_write(r, FP3_HR_CTRL, FP3_CTRL_CLEAR);
   return 0;
 }
 
 static void rtl_destroy(fp3_engine *e) {
   rtl_engine *r = (rtl_engine *)e;
-  fp3_model_free(r->model);
+  r->mops->destroy(r->model);
   free(r);
 }
 
@@ -177,26 +177,47 @@ static const fp3_engine_ops rtl_ops = {
     "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_destroy,
 };
 
-fp3_engine *fp3_engine_rtl_new(const char *trace_path) {
+/* The Verilated builds, one per core configuration. */
+static const fp3_model_ops *model_of(fpref_mode mode) {
+#define X(name, rtz, ftz_on)                                                   \
+  if ((mode.round == FPREF_RTZ) == (rtz) && (mode.ftz != 0) == (ftz_on))       \
+    return &fp3_model_##name;
+  FP3_MODEL_CONFIGS(X)
+#undef X
+  return NULL;
+}
+
+fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path) {
   rtl_engine *r = calloc(1, sizeof *r);
   if (!r) return NULL;
-  r->model = fp3_model_new(trace_path);
+  r->mops = model_of(mode);
+  if (!r->mops) {
+    free(r);
+    return NULL;
+  }
+  r->model = r->mops->create(trace_path);
   if (!r->model) {
     free(r);
     return NULL;
   }
   r->base.ops = &rtl_ops;
   /* The configuration the model was built with, from its INFO registers. */
-  uint32_t info0 = host_read(r->model, FP3_HR_INFO0);
-  uint32_t info1 = host_read(r->model, FP3_HR_INFO1);
+  uint32_t info0 = host_read(r, FP3_HR_INFO0);
+  uint32_t info1 = host_read(r, FP3_HR_INFO1);
   r->base.config.num_regs = info0 & 0xFFFF;
   r->base.config.imem_depth = info0 >> 16;
   r->base.config.add_latency = info1 & 0xFF;
   r->base.config.mul_latency = (info1 >> 8) & 0xFF;
-  if (host_read(r->model, FP3_HR_ID) != FP3_ID_VALUE) {
+  r->base.config.mode.round = (info1 >> 16) & 1 ? FPREF_RTZ : FPREF_RNE;
+  r->base.config.mode.ftz = (info1 >> 17) & 1;
+  if (host_read(r, FP3_HR_ID) != FP3_ID_VALUE) {
     fprintf(stderr, "fp3: the RTL model answers with a wrong ID register\n");
     rtl_destroy(&r->base);
     return NULL;
   }
   return &r->base;
+}
+
+fp3_engine *fp3_engine_rtl_new(const char *trace_path) {
+  return fp3_engine_rtl_new_mode(FPREF_IEEE, trace_path);
 }

@@ -7,6 +7,7 @@
  *                                    every integration against the golden
  *                                    model, bit for bit
  *   fp3 testfloat ...                FP cores against TestFloat vectors
+ *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *
  * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
  * 2 bad arguments or input (usage, parameters, assembly errors).
@@ -21,10 +22,12 @@
 
 #include "analytic.h"
 #include "asm.h"
+#include "cmd_tbgen.h"
 #include "disasm.h"
 #include "engine.h"
 #include "fp3_isa.h"
 #include "fpref.h"
+#include "fpenv.h"
 #include "golden.h"
 #include "image.h"
 #include "testfloat.h"
@@ -291,6 +294,7 @@ typedef struct checker {
   uint32_t base;
   int oom;
   fp3_ship_params p;
+  fpref_mode mode;        /* core options the golden model follows */
   /* comparison */
   uint64_t mismatches;
   uint32_t first_k;
@@ -335,7 +339,10 @@ static int golden_at(checker *c, uint32_t k, float *v, float *s) {
         c->cap = cap;
       }
     }
+    fpenv_saved env;
+    if (fpenv_enter(c->mode, &env) != 0) return -1; /* checked before the run */
     fp3_golden_step(&c->gst);
+    fpenv_leave(&env);
     c->gv[c->count] = c->gst.v;
     c->gs[c->count] = c->gst.s;
     c->count++;
@@ -413,7 +420,8 @@ static void obs_endi(void *ctx, uint32_t integration, uint64_t cycle) {
 static void usage_run(FILE *f) {
   fprintf(f,
           "usage: fp3 run [--engine rtl|iss] [--program FILE.s] [--steps N]\n"
-          "               [--set NAME=VALUE ...] [--json] [--trace FILE.vcd]\n"
+          "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
+          "               [--json] [--trace FILE.vcd]\n"
           "\n"
           "Assemble the program, write its .in registers, run N integrations\n"
           "on the engine and compare the .out results v and s after every\n"
@@ -428,6 +436,10 @@ static void usage_run(FILE *f) {
           "                   (5000), m mass [kg] (10000), h step [s] (1/60),\n"
           "                   v0 [m/s] (0), s0 [m] (0).  m > 0, h > 0, C >= 0,\n"
           "                   all finite.  minv = 1.0f/m is derived.\n"
+          "  --round R        FP core rounding: rne (default) or rtz\n"
+          "  --ftz            FP cores flush subnormals to zero\n"
+          "                   (the ISS and the golden model follow; the RTL\n"
+          "                   model of that configuration is chosen)\n"
           "  --json           one JSON object instead of the report\n"
           "  --trace FILE     waveform of the run (rtl engine only)\n"
           "\n"
@@ -501,6 +513,7 @@ static int cmd_run(int argc, char **argv) {
   const char *engine_name = "rtl", *program = NULL, *trace = NULL;
   uint32_t steps = DEFAULT_STEPS;
   int json = 0;
+  fpref_mode mode = FPREF_IEEE;
   fp3_ship_params p;
   fp3_ship_default(&p);
 
@@ -541,6 +554,16 @@ static int cmd_run(int argc, char **argv) {
     } else if ((r = opt_value(argc, argv, &i, "--trace", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       trace = v;
+    } else if ((r = opt_value(argc, argv, &i, "--round", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (strcmp(v, "rne") == 0) mode.round = FPREF_RNE;
+      else if (strcmp(v, "rtz") == 0) mode.round = FPREF_RTZ;
+      else {
+        fprintf(stderr, "fp3 run: unknown rounding '%s' (rne or rtz)\n", v);
+        return EXIT_USAGE;
+      }
+    } else if (strcmp(argv[i], "--ftz") == 0) {
+      mode.ftz = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
     } else {
@@ -556,6 +579,11 @@ static int cmd_run(int argc, char **argv) {
   }
   if (trace && strcmp(engine_name, "rtl") != 0) {
     fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
+    return EXIT_USAGE;
+  }
+  if (!fpenv_supported(mode)) {
+    fprintf(stderr, "fp3 run: --ftz: this host cannot run the golden model with "
+                    "flush-to-zero (needs x86 SSE)\n");
     return EXIT_USAGE;
   }
   char defpath[4200];
@@ -583,8 +611,8 @@ static int cmd_run(int argc, char **argv) {
     }
 
   /* engine */
-  fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new()
-                                                  : fp3_engine_rtl_new(trace);
+  fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new_mode(mode)
+                                                  : fp3_engine_rtl_new_mode(mode, trace);
   if (!e) {
     fprintf(stderr, "fp3 run: cannot create the %s engine\n", engine_name);
     return EXIT_FAIL;
@@ -599,6 +627,7 @@ static int cmd_run(int argc, char **argv) {
   checker c;
   memset(&c, 0, sizeof c);
   c.p = p;
+  c.mode = mode;
   c.steps = steps;
   c.base = 1;
   fp3_golden_init(&c.gst, &p);
@@ -678,6 +707,8 @@ static int cmd_run(int argc, char **argv) {
     else
       printf(", \"first_mismatch\": null");
     printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, st.flags);
+    printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(mode),
+           mode.ftz ? "true" : "false");
     printf(", \"params\": {\"T\": ");
     json_float(stdout, p.T);
     printf(", \"C\": ");
@@ -801,7 +832,8 @@ static void usage(FILE *f) {
           "  run [options]             run a program on the RTL or the ISS and\n"
           "                            check it bit for bit against the golden\n"
           "                            model (default: ship RK4, 10000 steps)\n"
-          "  testfloat ...             FP cores against TestFloat vectors\n");
+          "  testfloat ...             FP cores against TestFloat vectors\n"
+          "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n");
 }
 
 int main(int argc, char **argv) {
@@ -819,6 +851,7 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "run") == 0) return cmd_run(argc - 1, argv + 1);
   if (strcmp(cmd, "testfloat") == 0)
     return fp3_cmd_testfloat(argc - 1, argv + 1);
+  if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
   fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
   return EXIT_USAGE;
 }

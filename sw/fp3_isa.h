@@ -115,7 +115,7 @@
   X(STALLS_LO,  0x00A, "R",  "cycles an instruction waited on a hazard, low") \
   X(STALLS_HI,  0x00B, "R",  "stall cycles, high word")                       \
   X(INFO0,      0x00C, "R",  "NUM_REGS[15:0], IMEM_DEPTH[31:16]")             \
-  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8]")           \
+  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]") \
   X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
   X(REG_BASE,   0x100, "RW", "register r at REG_BASE + r (stopped only)")     \
   X(IMEM_BASE,  0x800, "RW", "instruction i: low word at IMEM_BASE + 2i, "    \

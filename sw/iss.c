@@ -3,8 +3,9 @@
  * the processor, one instruction at a time, as an engine (engine.h).
  *
  * Registers hold binary32 bit patterns; add/sub/mul are fpref_add/sub/mul
- * in the default configuration (RNE, subnormals), whose flags accumulate
- * into the run's sticky FLAGS.  There is no timing: every instruction
+ * in the engine's core configuration (default RNE with subnormals; RTZ and
+ * FTZ as the RTL's ROUND and FTZ parameters), whose flags accumulate into
+ * the run's sticky FLAGS.  There is no timing: every instruction
  * takes one "cycle", so cycles = issued = instructions executed and
  * stalls = 0.
  *
@@ -77,6 +78,7 @@ static int iss_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
                    fp3_status *st) {
   iss_engine *s = (iss_engine *)e;
   const uint32_t depth = e->config.imem_depth;
+  const fpref_mode mode = e->config.mode;
   memset(st, 0, sizeof *st);
   e->error[0] = '\0';
   st->done = 1;
@@ -102,9 +104,9 @@ static int iss_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
     int writes = 1, stop = 0;
     uint32_t result = 0, next = pc + 1;
     switch ((enum fp3_opcode)opc) {
-    case FP3_OP_ADD: result = fpref_add(a, b, FPREF_IEEE, &flags); break;
-    case FP3_OP_SUB: result = fpref_sub(a, b, FPREF_IEEE, &flags); break;
-    case FP3_OP_MUL: result = fpref_mul(a, b, FPREF_IEEE, &flags); break;
+    case FP3_OP_ADD: result = fpref_add(a, b, mode, &flags); break;
+    case FP3_OP_SUB: result = fpref_sub(a, b, mode, &flags); break;
+    case FP3_OP_MUL: result = fpref_mul(a, b, mode, &flags); break;
     case FP3_OP_LI: result = imm; break;
     case FP3_OP_MOV: result = a; break;
     case FP3_OP_NOP: writes = 0; break;
@@ -144,7 +146,7 @@ static const fp3_engine_ops iss_ops = {
     "iss", iss_load_program, iss_write_reg, iss_read_reg, iss_run, iss_destroy,
 };
 
-fp3_engine *fp3_engine_iss_new(void) {
+fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   iss_engine *s = calloc(1, sizeof *s);
   if (!s) return NULL;
   s->base.ops = &iss_ops;
@@ -152,5 +154,8 @@ fp3_engine *fp3_engine_iss_new(void) {
   s->base.config.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   s->base.config.add_latency = 0; /* no timing model */
   s->base.config.mul_latency = 0;
+  s->base.config.mode = mode;
   return &s->base;
 }
+
+fp3_engine *fp3_engine_iss_new(void) { return fp3_engine_iss_new_mode(FPREF_IEEE); }

@@ -24,6 +24,7 @@
 #include "asm.h"
 #include "engine.h"
 #include "fp3_isa.h"
+#include "fpenv.h"
 #include "fpref.h"
 #include "golden.h"
 #include "image.h"
@@ -81,6 +82,10 @@ static void capture_free(capture *c) {
   free(c->endi_cycle);
   memset(c, 0, sizeof *c);
 }
+
+/* The four FP core configurations: RNE, RTZ, RNE+FTZ, RTZ+FTZ. */
+static const fpref_mode all_modes[4] = {
+    {FPREF_RNE, 0}, {FPREF_RTZ, 0}, {FPREF_RNE, 1}, {FPREF_RTZ, 1}};
 
 /* Engines are created once: building the RTL model's state is cheap, but
  * one per test keeps the output short. */
@@ -147,6 +152,8 @@ static const ship_case ship_cases[] = {
     {"dinghy reversing", -30.0f, 12.0f, 0.75f, 0.02f, 4.0f, 0.0f},
     {"coasting, no thrust", 0.0f, 300.0f, 5000.0f, 0.1f, 12.5f, 100.0f},
     {"coarse step near the RK4 bound", 1000.0f, 100.0f, 100.0f, 2.5f, 0.0f, 0.0f},
+    /* Velocities and forces in the subnormal range: FTZ changes them. */
+    {"drifting in the subnormals", 3.0e-39f, 0.5f, 1.0f, 0.25f, 1.0e-37f, 0.0f},
 };
 
 /* Value of register `reg` after integration k (1-based): the last write
@@ -157,7 +164,11 @@ static uint32_t value_after(const wseq *s, uint32_t init, uint32_t k, size_t *po
   return v;
 }
 
-static void check_ship_program(const char *path) {
+/* Run the ship program on RTL and ISS of one core configuration for every
+ * case, compare them and the golden model (run in that configuration);
+ * finals[k] gets the final v of case k. */
+static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
+                               uint32_t *finals) {
   fp3_image img;
   char *errors = NULL;
   fp3_image_init(&img);
@@ -175,8 +186,8 @@ static void check_ship_program(const char *path) {
       if (img.in_reg[p] >= 0) init[img.in_reg[p]] = fpref_bits(values[p]);
     }
     capture a, b;
-    run_on(rtl, &img, init, MAX_REGS, steps, &a);
-    run_on(iss, &img, init, MAX_REGS, steps, &b);
+    run_on(er, &img, init, MAX_REGS, steps, &a);
+    run_on(ei, &img, init, MAX_REGS, steps, &b);
     assert_int_equal(a.st.error, FP3_ERR_NONE);
     assert_int_equal(a.st.steps_done, steps);
     compare_captures(&a, &b, sc->name);
@@ -188,8 +199,11 @@ static void check_ship_program(const char *path) {
     fp3_ship_state g;
     fp3_golden_init(&g, &p);
     size_t vpos = 0, spos = 0;
+    fpenv_saved env;
     for (uint32_t i = 1; i <= steps; i++) {
+      assert_int_equal(fpenv_enter(er->config.mode, &env), 0);
       fp3_golden_step(&g);
+      fpenv_leave(&env);
       uint32_t v = value_after(&a.reg[vreg], init[vreg], i, &vpos);
       uint32_t s = value_after(&a.reg[sreg], init[sreg], i, &spos);
       if (v != fpref_bits(g.v) || s != fpref_bits(g.s)) {
@@ -197,14 +211,42 @@ static void check_ship_program(const char *path) {
                  sc->name, i, v, s, fpref_bits(g.v), fpref_bits(g.s));
       }
     }
+    finals[k] = a.final[vreg];
     capture_free(&a);
     capture_free(&b);
   }
 }
 
+#define NCASES (sizeof ship_cases / sizeof ship_cases[0])
+
 static void test_ship_rk4(void **state) {
   (void)state;
-  check_ship_program("programs/ship_rk4.s");
+  uint32_t finals[NCASES];
+  check_ship_program("programs/ship_rk4.s", rtl, iss, finals);
+}
+
+/* Every FP core configuration (the RTL built with ROUND/FTZ, the ISS and
+ * the golden model in that mode) is bit-exact, and the configurations
+ * really differ: a model of the wrong configuration would be caught. */
+static void test_ship_rk4_core_configs(void **state) {
+  (void)state;
+  const fpref_mode *modes = all_modes;
+  uint32_t finals[4][NCASES];
+  for (int m = 0; m < 4; m++) {
+    fp3_engine *er = fp3_engine_rtl_new_mode(modes[m], NULL);
+    fp3_engine *ei = fp3_engine_iss_new_mode(modes[m]);
+    assert_non_null(er);
+    assert_non_null(ei);
+    assert_int_equal(er->config.mode.round, modes[m].round);
+    assert_int_equal(er->config.mode.ftz, modes[m].ftz);
+    check_ship_program("programs/ship_rk4.s", er, ei, finals[m]);
+    fp3_engine_free(er);
+    fp3_engine_free(ei);
+  }
+  /* RTZ changes the patrol boat; FTZ changes the subnormal drift. */
+  assert_int_not_equal(finals[0][0], finals[1][0]);
+  assert_int_not_equal(finals[0][NCASES - 1], finals[2][NCASES - 1]);
+  assert_int_not_equal(finals[1][NCASES - 1], finals[3][NCASES - 1]);
 }
 
 /* The paper's figure of merit: cycles per integration after the first. */
@@ -400,9 +442,17 @@ static void random_program(fp3_image *img, unsigned nregs) {
   img->n = n;
 }
 
+/* Programs rotate over the four core configurations. */
 static void test_random_programs(void **state) {
   (void)state;
-  const int programs = 400;
+  const int programs = 10000;
+  fp3_engine *er[4], *ei[4];
+  for (int m = 0; m < 4; m++) {
+    er[m] = fp3_engine_rtl_new_mode(all_modes[m], NULL);
+    ei[m] = fp3_engine_iss_new_mode(all_modes[m]);
+    assert_non_null(er[m]);
+    assert_non_null(ei[m]);
+  }
   for (int p = 0; p < programs; p++) {
     uint64_t seed = rng_state;
     fp3_image img;
@@ -412,14 +462,19 @@ static void test_random_programs(void **state) {
     for (unsigned r = 0; r < 8; r++) init[r] = random_value();
     uint32_t steps = 1 + (uint32_t)(rnd() % 5);
     capture a, b;
-    run_on(rtl, &img, init, 8, steps, &a);
-    run_on(iss, &img, init, 8, steps, &b);
-    char what[64];
-    snprintf(what, sizeof what, "random program %d (seed 0x%016llx)", p,
-             (unsigned long long)seed);
+    run_on(er[p % 4], &img, init, 8, steps, &a);
+    run_on(ei[p % 4], &img, init, 8, steps, &b);
+    char what[96];
+    snprintf(what, sizeof what, "random program %d (seed 0x%016llx, %s%s)", p,
+             (unsigned long long)seed, fpenv_round_name(all_modes[p % 4]),
+             all_modes[p % 4].ftz ? "+ftz" : "");
     compare_captures(&a, &b, what);
     capture_free(&a);
     capture_free(&b);
+  }
+  for (int m = 0; m < 4; m++) {
+    fp3_engine_free(er[m]);
+    fp3_engine_free(ei[m]);
   }
 }
 
@@ -468,6 +523,7 @@ static int teardown(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_ship_rk4),
+      cmocka_unit_test(test_ship_rk4_core_configs),
       cmocka_unit_test(test_ship_rk4_cycles),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
