@@ -66,7 +66,7 @@ localparam [3:0] ERR_PC_OVERFLOW = 4'd2; // PC ran past the end of instruction m
 localparam [3:0] ERR_BAD_STEPS = 4'd3; // run started with STEPS = 0
 
 // Host port: 12-bit word addresses
-localparam [11:0] HR_CTRL = 12'h000; // W bit0 START a run, bit1 CLEAR status/counters
+localparam [11:0] HR_CTRL = 12'h000; // W bit0 START a run (clears counters, flags), bit1 CLEAR the DONE and ERROR status
 localparam [11:0] HR_STATUS = 12'h001; // R bit0 RUNNING, bit1 DONE, bits 11:8 ERROR
 localparam [11:0] HR_STEPS = 12'h002; // RW integrations to run
 localparam [11:0] HR_STEPS_DONE = 12'h003; // R integrations completed (endi issued)
@@ -82,7 +82,7 @@ localparam [11:0] HR_INFO0 = 12'h00C; // R NUM_REGS[15:0], IMEM_DEPTH[31:16]
 localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]
 localparam [11:0] HR_ID = 12'h00E; // R 0x46503301: 'FP3', version 1
 localparam [11:0] HR_REG_BASE = 12'h100; // RW register r at REG_BASE + r (stopped only)
-localparam [11:0] HR_IMEM_BASE = 12'h800; // RW instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
+localparam [11:0] HR_IMEM_BASE = 12'h800; // W instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
 localparam [31:0] STATUS_RUNNING = 32'h1, STATUS_DONE = 32'h2;
 localparam integer STATUS_ERROR_LSB = 8;
 localparam [31:0] CTRL_START = 32'h1, CTRL_CLEAR = 32'h2;

@@ -102,7 +102,8 @@
  * X(NAME, address, access, description)
  */
 #define FP3_HOSTREGS(X)                                                        \
-  X(CTRL,       0x000, "W",  "bit0 START a run, bit1 CLEAR status/counters")  \
+  X(CTRL,       0x000, "W",  "bit0 START a run (clears counters, flags), "     \
+                             "bit1 CLEAR the DONE and ERROR status")          \
   X(STATUS,     0x001, "R",  "bit0 RUNNING, bit1 DONE, bits 11:8 ERROR")      \
   X(STEPS,      0x002, "RW", "integrations to run")                           \
   X(STEPS_DONE, 0x003, "R",  "integrations completed (endi issued)")          \
@@ -118,7 +119,7 @@
   X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]") \
   X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
   X(REG_BASE,   0x100, "RW", "register r at REG_BASE + r (stopped only)")     \
-  X(IMEM_BASE,  0x800, "RW", "instruction i: low word at IMEM_BASE + 2i, "    \
+  X(IMEM_BASE,  0x800, "W",  "instruction i: low word at IMEM_BASE + 2i, "    \
                              "high word at IMEM_BASE + 2i + 1 (writing the "  \
                              "high word stores both halves)")
 

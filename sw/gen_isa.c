@@ -1,15 +1,55 @@
 /*
- * gen_isa.c -- print rtl/fp3_isa.vh, the Verilog view of sw/fp3_isa.h.
+ * gen_isa.c -- print rtl/fp3_isa.vh, the Verilog view of sw/fp3_isa.h, or
+ * (with --markdown) the README's instruction and host-port tables.
  *
  * Usage: gen_isa > rtl/fp3_isa.vh
- * The committed header must equal this program's output; the test
- * tests/test_isa_sync.sh checks it.
+ *        gen_isa --markdown
+ * The committed header must equal this program's output and README.md
+ * must contain the tables verbatim; tests/test_isa_sync.sh checks both.
  */
 #include <stdio.h>
+#include <string.h>
 
 #include "fp3_isa.h"
 
-int main(void) {
+static const char *unit_name(int unit) {
+  switch (unit) {
+    case FP3_UNIT_ADD: return "add";
+    case FP3_UNIT_MUL: return "mul";
+    case FP3_UNIT_MOV: return "move";
+    default: return "—";
+  }
+}
+
+/* Assembly operands from the fields an opcode uses. */
+static void operands(int uses, char *out, size_t n) {
+  out[0] = '\0';
+  const char *sep = " ";
+  if (uses & FP3_USES_RD) { strncat(out, " rd", n - strlen(out) - 1); sep = ", "; }
+  if (uses & FP3_USES_RA) { strncat(out, sep, n - strlen(out) - 1); strncat(out, "ra", n - strlen(out) - 1); sep = ", "; }
+  if (uses & FP3_USES_RB) { strncat(out, sep, n - strlen(out) - 1); strncat(out, "rb", n - strlen(out) - 1); sep = ", "; }
+  if (uses & FP3_USES_IMM) { strncat(out, sep, n - strlen(out) - 1); strncat(out, "imm", n - strlen(out) - 1); }
+}
+
+static void markdown(void) {
+  char ops[32];
+  printf("| opcode | assembly | unit | meaning |\n| --- | --- | --- | --- |\n");
+#define X(name, code, mnem, uses, unit, desc)                                  \
+  operands(uses, ops, sizeof ops);                                             \
+  printf("| 0x%02X | `%s%s` | %s | %s |\n", code, mnem, ops, unit_name(unit), desc);
+  FP3_OPCODES(X)
+#undef X
+  printf("\n| word address | name | access | meaning |\n| --- | --- | --- | --- |\n");
+#define X(name, addr, acc, desc) printf("| 0x%03X | `%s` | %s | %s |\n", addr, #name, acc, desc);
+  FP3_HOSTREGS(X)
+#undef X
+}
+
+int main(int argc, char **argv) {
+  if (argc > 1 && strcmp(argv[1], "--markdown") == 0) {
+    markdown();
+    return 0;
+  }
   printf("// fp3_isa.vh -- GENERATED from sw/fp3_isa.h by sw/gen_isa.c; do not edit.\n");
   printf("// The instruction set, flag bits, error codes and host-port map of FP3,\n");
   printf("// shared by the RTL and the C host.  `include inside a module body.\n");
