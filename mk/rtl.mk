@@ -7,17 +7,21 @@
 # reads the values back from the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY,\
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY,\
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
-# sim/fp3_model.h): name, ROUND, FTZ.
+# sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS].  The test programs
+# also get models with 1 and 3 contexts.
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
+RTL_CFG_nc1     := 0 0 1
+RTL_CFG_nc3     := 0 0 3
+RTL_TEST_CONFIGS := nc1 nc3
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
 rtl_archive = $(call rtl_objdir,$(1))/Vfp3_top_$(1)__ALL.a
@@ -40,6 +44,7 @@ $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STA
 	@mkdir -p $(call rtl_objdir,$(1))
 	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) \
 	  -GROUND=$(word 1,$(RTL_CFG_$(1))) -GFTZ=$(word 2,$(RTL_CFG_$(1))) \
+	  $(if $(word 3,$(RTL_CFG_$(1))),-GNUM_CONTEXTS=$(word 3,$(RTL_CFG_$(1)))) \
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 
@@ -47,7 +52,8 @@ $(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h $(call rtl_archive,$(1))
 	@mkdir -p $$(dir $$@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef
-$(foreach c,$(RTL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 # rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
 $(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
@@ -64,16 +70,30 @@ lint: $(SETUP_STAMP)
 	@echo "lint: verilator -Wall clean"
 
 # ---- synthesis -------------------------------------------------------------
-SYNTH_DIR := $(BUILD)/synth
+# FPGA hand-off (README "FPGA"): netlists, `stat` and a summary for each top
+# of SYNTH_TOPS in each flow of SYNTH_FLOWS (constraints/ has the clock of
+# each flow), then the area of each FP core in each ROUND/FTZ configuration
+# on xc2v and xc7 (issue 3), as a table in $(SYNTH_DIR)/fp_cores_area.{md,csv}.
+# scripts/synth.sh fails on any latch or combinational loop.
+SYNTH_DIR   := $(BUILD)/synth
+SYNTH_TOPS  ?= $(RTL_TOP) fp3_axil
+SYNTH_FLOWS ?= xc2v xc7 ecp5
 synth: $(SETUP_STAMP)
-	@echo "synth: Yosys synth_xilinx, $(RTL_TOP), netlists and reports in $(SYNTH_DIR)/"
-	@bash scripts/synth.sh $(SYNTH_DIR) $(RTL_TOP) xc2v $(RTL_SRC)
+	@echo "synth: Yosys $(SYNTH_FLOWS) for $(SYNTH_TOPS), FP cores on xc2v/xc7; results in $(SYNTH_DIR)/"
+	@set -e; for top in $(SYNTH_TOPS); do for flow in $(SYNTH_FLOWS); do \
+	  bash scripts/synth.sh $(SYNTH_DIR) $$top $$flow $(RTL_SRC); done; done
+	@set -e; for core in fp_add fp_mul; do for r in 0 1; do for f in 0 1; do \
+	  for flow in xc2v xc7; do \
+	    bash scripts/synth.sh $(SYNTH_DIR) $$core $$flow ROUND=$$r FTZ=$$f $(RTL_SRC); \
+	  done; done; done; done
+	@echo "FP core area (default latencies), $(SYNTH_DIR)/fp_cores_area.md:"
+	@bash scripts/synth-report.sh --table $(SYNTH_DIR)
 
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
-$(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
+$(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
-	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_engines
 

@@ -12,7 +12,7 @@
 //                issue distance, thanks to the register-file bypass)
 //   MUL_LATENCY  the same for fp_mul
 //   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
-//   IW           register index width
+//   XW           width of the destination tag ({context, register})
 // Ports
 //   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, rd_i,
 //   a_i, b_i: the operation issued in this cycle (for the move path a_i is
@@ -25,26 +25,26 @@ module fp3_arith #(
   parameter integer MUL_LATENCY = 3,
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
-  parameter integer IW          = 5
+  parameter integer XW          = 5
 ) (
   input  wire          clk_i,
   input  wire          rst_i,
   input  wire          valid_i,
   input  wire [1:0]    unit_i,
   input  wire          sub_i,
-  input  wire [IW-1:0] rd_i,
+  input  wire [XW-1:0] rd_i,
   input  wire [31:0]   a_i,
   input  wire [31:0]   b_i,
   output wire          add_valid_o,
-  output wire [IW-1:0] add_reg_o,
+  output wire [XW-1:0] add_reg_o,
   output wire [31:0]   add_data_o,
   output wire [4:0]    add_flags_o,
   output wire          mul_valid_o,
-  output wire [IW-1:0] mul_reg_o,
+  output wire [XW-1:0] mul_reg_o,
   output wire [31:0]   mul_data_o,
   output wire [4:0]    mul_flags_o,
   output reg           mov_valid_o,
-  output reg  [IW-1:0] mov_reg_o,
+  output reg  [XW-1:0] mov_reg_o,
   output reg  [31:0]   mov_data_o
 );
 `include "fp3_isa.vh"
@@ -66,7 +66,7 @@ module fp3_arith #(
     .y_o     (add_data_o),
     .flags_o (add_flags_o)
   );
-  fp3_delay #(.WIDTH(IW), .DEPTH(ADD_LATENCY)) u_add_tag (
+  fp3_delay #(.WIDTH(XW), .DEPTH(ADD_LATENCY)) u_add_tag (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (add_go),
@@ -87,7 +87,7 @@ module fp3_arith #(
     .y_o     (mul_data_o),
     .flags_o (mul_flags_o)
   );
-  fp3_delay #(.WIDTH(IW), .DEPTH(MUL_LATENCY)) u_mul_tag (
+  fp3_delay #(.WIDTH(XW), .DEPTH(MUL_LATENCY)) u_mul_tag (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (mul_go),

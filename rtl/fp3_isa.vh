@@ -47,6 +47,7 @@ endfunction
 localparam [1:0] UNIT_NONE = 2'd0, UNIT_ADD = 2'd1, UNIT_MUL = 2'd2, UNIT_MOV = 2'd3;
 
 // Build configuration defaults
+localparam integer DEFAULT_NUM_CONTEXTS = 8;
 localparam integer DEFAULT_NUM_REGS = 32;
 localparam integer DEFAULT_IMEM_DEPTH = 256;
 localparam integer DEFAULT_ADD_LATENCY = 4;
@@ -64,13 +65,14 @@ localparam [3:0] ERR_NONE = 4'd0; // no error
 localparam [3:0] ERR_ILLEGAL_INSN = 4'd1; // illegal instruction
 localparam [3:0] ERR_PC_OVERFLOW = 4'd2; // PC ran past the end of instruction memory
 localparam [3:0] ERR_BAD_STEPS = 4'd3; // run started with STEPS = 0
+localparam [3:0] ERR_BAD_CONTEXTS = 4'd4; // run started with CONTEXTS = 0 or > NUM_CONTEXTS
 
 // Host port: 12-bit word addresses
 localparam [11:0] HR_CTRL = 12'h000; // W bit0 START a run (clears counters, flags), bit1 CLEAR the DONE and ERROR status
-localparam [11:0] HR_STATUS = 12'h001; // R bit0 RUNNING, bit1 DONE, bits 11:8 ERROR
+localparam [11:0] HR_STATUS = 12'h001; // R bit0 RUNNING, bit1 DONE, bit2 some context has an error, bits 11:8 ERROR of context CTX
 localparam [11:0] HR_STEPS = 12'h002; // RW integrations to run
-localparam [11:0] HR_STEPS_DONE = 12'h003; // R integrations completed (endi issued)
-localparam [11:0] HR_FAULT_PC = 12'h004; // R PC of the instruction that raised ERROR
+localparam [11:0] HR_STEPS_DONE = 12'h003; // R integrations completed by context CTX
+localparam [11:0] HR_FAULT_PC = 12'h004; // R PC of the instruction that raised context CTX's ERROR
 localparam [11:0] HR_FLAGS = 12'h005; // R sticky exception flags of the run
 localparam [11:0] HR_CYCLES_LO = 12'h006; // R cycles from START to DONE, low word
 localparam [11:0] HR_CYCLES_HI = 12'h007; // R cycles, high word
@@ -81,7 +83,10 @@ localparam [11:0] HR_STALLS_HI = 12'h00B; // R stall cycles, high word
 localparam [11:0] HR_INFO0 = 12'h00C; // R NUM_REGS[15:0], IMEM_DEPTH[31:16]
 localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]
 localparam [11:0] HR_ID = 12'h00E; // R 0x46503301: 'FP3', version 1
-localparam [11:0] HR_REG_BASE = 12'h100; // RW register r at REG_BASE + r (stopped only)
+localparam [11:0] HR_CTX = 12'h00F; // RW context selected for STATUS.ERROR, STEPS_DONE, FAULT_PC and the register window
+localparam [11:0] HR_CONTEXTS = 12'h010; // RW contexts a START runs, 1 .. NUM_CONTEXTS (reset value 1)
+localparam [11:0] HR_INFO2 = 12'h011; // R NUM_CONTEXTS[15:0]
+localparam [11:0] HR_REG_BASE = 12'h100; // RW register r of context CTX at REG_BASE + r (stopped only)
 localparam [11:0] HR_IMEM_BASE = 12'h800; // W instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
 localparam [31:0] STATUS_RUNNING = 32'h1, STATUS_DONE = 32'h2;
 localparam integer STATUS_ERROR_LSB = 8;

@@ -1,11 +1,13 @@
-// fp3_regfile -- register file with one busy flag per register (the
-// scoreboard of paper §4), write-back bypass, and a host port.
+// fp3_regfile -- register banks, one per context, with one busy flag per
+// register (the scoreboard of paper §4), write-back bypass and a host port.
 //
-// Busy flags: an issued instruction marks its destination busy (set_i);
-// the unit that computes the result clears the flag when it writes back.
-// The scheduler stalls an instruction while a source is busy (RAW) or its
-// destination is busy (WAW), so at most one result per register is in
-// flight and write-backs to one register happen in program order.
+// Every index is {context, register} (XW bits).  Busy flags: an issued
+// instruction marks its destination busy (set_i); the unit that computes
+// the result clears the flag when it writes back.  The scheduler reads the
+// flags (busy_o) and stalls an instruction while a source is busy (RAW) or
+// its destination is busy (WAW), unless that register is being written
+// back in this very cycle; so at most one result per register is in flight
+// and write-backs to one register happen in program order.
 //
 // No whole-pipeline stall on write-back (the paper has one; DESIGN.md):
 // each unit has its own write port, and a result on a write-back port is
@@ -13,103 +15,84 @@
 // instruction issues in the cycle its operand is written.
 //
 // Parameters
-//   NUM_REGS  registers (2 .. 256)
-//   IW        register index width, clog2(NUM_REGS)
-// Ports (all indices IW bits wide, data 32 bits)
-//   ra_i/rb_i -> ra_data_o/rb_data_o, ra_ready_o/rb_ready_o: combinational
-//     reads with bypass; ready = not busy, or being written this cycle.
-//   rd_i -> rd_busy_o: destination busy and not being written this cycle
-//     (WAW check): a new write lands at least one cycle after the old one.
-//   set_i/set_reg_i: mark a destination busy (issue of add/mul/move).
+//   ENTRIES  registers in all, 2**XW
+//   XW       index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
+// Ports (indices XW bits wide, data 32 bits)
+//   ra_i/rb_i -> ra_data_o/rb_data_o: combinational reads with bypass.
+//   busy_o: every busy flag; idle_o: none set (nothing in flight).
+//   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path); each
-//     write clears the register's busy flag.
-//   host_we_i/host_reg_i/host_wdata_i: host write (only while stopped);
-//     host_rdata_o reads host_reg_i.
-//   idle_o: no busy flag set (nothing in flight).
+//     write clears the register's busy flag.  A register written back in
+//     the cycle a new instruction claims it stays busy: the set wins.
+//   host_we_i/host_idx_i/host_wdata_i: host write (only while stopped);
+//     host_rdata_o reads host_idx_i.
 `default_nettype none
 module fp3_regfile #(
-  parameter integer NUM_REGS = 32,
-  parameter integer IW       = 5    // index width, clog2(NUM_REGS)
+  parameter integer ENTRIES = 32,
+  parameter integer XW      = 5
 ) (
-  input  wire          clk_i,
-  input  wire          rst_i,
-  input  wire [IW-1:0] ra_i,
-  input  wire [IW-1:0] rb_i,
-  input  wire [IW-1:0] rd_i,
-  output wire [31:0]   ra_data_o,
-  output wire [31:0]   rb_data_o,
-  output wire          ra_ready_o,
-  output wire          rb_ready_o,
-  output wire          rd_busy_o,
-  input  wire          set_i,
-  input  wire [IW-1:0] set_reg_i,
-  input  wire          wb0_valid_i,
-  input  wire [IW-1:0] wb0_reg_i,
-  input  wire [31:0]   wb0_data_i,
-  input  wire          wb1_valid_i,
-  input  wire [IW-1:0] wb1_reg_i,
-  input  wire [31:0]   wb1_data_i,
-  input  wire          wb2_valid_i,
-  input  wire [IW-1:0] wb2_reg_i,
-  input  wire [31:0]   wb2_data_i,
-  input  wire          host_we_i,
-  input  wire [IW-1:0] host_reg_i,
-  input  wire [31:0]   host_wdata_i,
-  output wire [31:0]   host_rdata_o,
-  output wire          idle_o
+  input  wire               clk_i,
+  input  wire               rst_i,
+  input  wire [XW-1:0]      ra_i,
+  input  wire [XW-1:0]      rb_i,
+  output wire [31:0]        ra_data_o,
+  output wire [31:0]        rb_data_o,
+  output wire [ENTRIES-1:0] busy_o,
+  input  wire               set_i,
+  input  wire [XW-1:0]      set_idx_i,
+  input  wire               wb0_valid_i,
+  input  wire [XW-1:0]      wb0_idx_i,
+  input  wire [31:0]        wb0_data_i,
+  input  wire               wb1_valid_i,
+  input  wire [XW-1:0]      wb1_idx_i,
+  input  wire [31:0]        wb1_data_i,
+  input  wire               wb2_valid_i,
+  input  wire [XW-1:0]      wb2_idx_i,
+  input  wire [31:0]        wb2_data_i,
+  input  wire               host_we_i,
+  input  wire [XW-1:0]      host_idx_i,
+  input  wire [31:0]        host_wdata_i,
+  output wire [31:0]        host_rdata_o,
+  output wire               idle_o
 );
-  reg [31:0]         regs_q [0:NUM_REGS-1];
-  reg [NUM_REGS-1:0] busy_q;
-
-  // ---- reads with bypass (indices are < NUM_REGS: the scheduler decodes
-  // ---- only legal instructions, the host port checks its address) -------
-  function written;  // a write-back port writes r in this cycle
-    input [IW-1:0] r;
-    begin
-      written = (wb0_valid_i && wb0_reg_i == r) || (wb1_valid_i && wb1_reg_i == r) ||
-                (wb2_valid_i && wb2_reg_i == r);
-    end
-  endfunction
+  reg [31:0]        regs_q [0:ENTRIES-1];
+  reg [ENTRIES-1:0] busy_q;
 
   function [31:0] read_port;  // the register's value, bypassed
-    input [IW-1:0] r;
+    input [XW-1:0] x;
     begin
-      if      (wb0_valid_i && wb0_reg_i == r) read_port = wb0_data_i;
-      else if (wb1_valid_i && wb1_reg_i == r) read_port = wb1_data_i;
-      else if (wb2_valid_i && wb2_reg_i == r) read_port = wb2_data_i;
-      else                                    read_port = regs_q[r];
+      if      (wb0_valid_i && wb0_idx_i == x) read_port = wb0_data_i;
+      else if (wb1_valid_i && wb1_idx_i == x) read_port = wb1_data_i;
+      else if (wb2_valid_i && wb2_idx_i == x) read_port = wb2_data_i;
+      else                                    read_port = regs_q[x];
     end
   endfunction
 
   assign ra_data_o    = read_port(ra_i);
   assign rb_data_o    = read_port(rb_i);
-  assign ra_ready_o   = !busy_q[ra_i] || written(ra_i);
-  assign rb_ready_o   = !busy_q[rb_i] || written(rb_i);
-  assign rd_busy_o    = busy_q[rd_i] && !written(rd_i);
-  assign host_rdata_o = regs_q[host_reg_i];
-  assign idle_o       = (busy_q == {NUM_REGS{1'b0}});
+  assign busy_o       = busy_q;
+  assign host_rdata_o = regs_q[host_idx_i];
+  assign idle_o       = (busy_q == {ENTRIES{1'b0}});
 
   // ---- writes and busy flags, one register at a time ----------------------
   // The WAW stall guarantees that the write ports name distinct registers,
-  // so the write priority below never matters for a legal sequence.  A
-  // register whose result is written back in the cycle a new instruction
-  // claims it stays busy: the set wins over the clear.
+  // so the write priority below never matters for a legal sequence.
   genvar r;
   generate
-    for (r = 0; r < NUM_REGS; r = r + 1) begin : g_reg
-      localparam [IW-1:0] IDX = r[IW-1:0];
-      wire hit0 = wb0_valid_i && wb0_reg_i == IDX;
-      wire hit1 = wb1_valid_i && wb1_reg_i == IDX;
-      wire hit2 = wb2_valid_i && wb2_reg_i == IDX;
+    for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
+      localparam [XW-1:0] IDX = r[XW-1:0];
+      wire hit0 = wb0_valid_i && wb0_idx_i == IDX;
+      wire hit1 = wb1_valid_i && wb1_idx_i == IDX;
+      wire hit2 = wb2_valid_i && wb2_idx_i == IDX;
       always @(posedge clk_i) begin
         if      (hit0) regs_q[r] <= wb0_data_i;
         else if (hit1) regs_q[r] <= wb1_data_i;
         else if (hit2) regs_q[r] <= wb2_data_i;
-        else if (host_we_i && host_reg_i == IDX) regs_q[r] <= host_wdata_i;
+        else if (host_we_i && host_idx_i == IDX) regs_q[r] <= host_wdata_i;
       end
       always @(posedge clk_i) begin
         if (rst_i)                               busy_q[r] <= 1'b0;
-        else if (set_i && set_reg_i == IDX)      busy_q[r] <= 1'b1;
+        else if (set_i && set_idx_i == IDX)      busy_q[r] <= 1'b1;
         else if (hit0 || hit1 || hit2)           busy_q[r] <= 1'b0;
       end
     end
@@ -118,9 +101,9 @@ module fp3_regfile #(
 `ifdef FORMAL
   // Two write ports never name the same register in one cycle.
   always @(*) begin
-    if (wb0_valid_i && wb1_valid_i) assert (wb0_reg_i != wb1_reg_i);
-    if (wb0_valid_i && wb2_valid_i) assert (wb0_reg_i != wb2_reg_i);
-    if (wb1_valid_i && wb2_valid_i) assert (wb1_reg_i != wb2_reg_i);
+    if (wb0_valid_i && wb1_valid_i) assert (wb0_idx_i != wb1_idx_i);
+    if (wb0_valid_i && wb2_valid_i) assert (wb0_idx_i != wb2_idx_i);
+    if (wb1_valid_i && wb2_valid_i) assert (wb1_idx_i != wb2_idx_i);
   end
 `endif
 endmodule

@@ -1,21 +1,25 @@
-// fp3_top -- the FP3 processor: workload scheduler, register file with busy
-// flags, arithmetic unit, a host port and a write-back trace port.
+// fp3_top -- the FP3 processor: workload scheduler with NUM_CONTEXTS
+// contexts sharing one arithmetic unit (paper §6.3), register banks with
+// busy flags, a host port and a write-back trace port.
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
 // appears on host_rdata_o in the next cycle.  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
+// CTX selects the context whose status and registers the host sees;
+// CONTEXTS says how many contexts (0 .. CONTEXTS-1) a START runs.
 // Registers and instruction memory accept writes only while no run is in
 // progress; a write while running is ignored.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
-// stop"): every issue (with its unit), every endi and every write-back
-// (register, value) is visible each cycle, so a host can check every
-// result while the machine runs freely.  It adds no state.
+// stop"): every issue (with its context and unit), every endi and every
+// write-back (context, register, value) is visible each cycle, so a host
+// can check every result while the machine runs freely.  It adds no state.
 //
 // Parameters
-//   NUM_REGS     registers, 2..256              (default sw/fp3_isa.h)
+//   NUM_CONTEXTS contexts, 1..64                (defaults: sw/fp3_isa.h)
+//   NUM_REGS     registers per context, 2..256
 //   IMEM_DEPTH   instruction memory entries, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles (issue to dependent issue)
 //   MUL_LATENCY  mul core latency in cycles
@@ -23,12 +27,13 @@
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
 `default_nettype none
 module fp3_top #(
-  parameter integer NUM_REGS    = 32,
-  parameter integer IMEM_DEPTH  = 256,
-  parameter integer ADD_LATENCY = 4,
-  parameter integer MUL_LATENCY = 3,
-  parameter integer ROUND       = 0,
-  parameter integer FTZ         = 0
+  parameter integer NUM_CONTEXTS = 8,
+  parameter integer NUM_REGS     = 32,
+  parameter integer IMEM_DEPTH   = 256,
+  parameter integer ADD_LATENCY  = 4,
+  parameter integer MUL_LATENCY  = 3,
+  parameter integer ROUND        = 0,
+  parameter integer FTZ          = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -39,23 +44,29 @@ module fp3_top #(
   output reg  [31:0] host_rdata_o,
   output wire        running_o,
   output wire        done_o,
-  // trace port
+  // trace port (contexts as 6-bit numbers)
   output wire        tr_issue_o,
+  output wire [5:0]  tr_issue_ctx_o,
   output wire [1:0]  tr_issue_unit_o,
   output wire        tr_endi_o,
   output wire        tr_add_valid_o,
+  output wire [5:0]  tr_add_ctx_o,
   output wire [7:0]  tr_add_reg_o,
   output wire [31:0] tr_add_data_o,
   output wire        tr_mul_valid_o,
+  output wire [5:0]  tr_mul_ctx_o,
   output wire [7:0]  tr_mul_reg_o,
   output wire [31:0] tr_mul_data_o,
   output wire        tr_mov_valid_o,
+  output wire [5:0]  tr_mov_ctx_o,
   output wire [7:0]  tr_mov_reg_o,
   output wire [31:0] tr_mov_data_o
 );
 `include "fp3_isa.vh"
 
   localparam integer IW = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);
+  localparam integer CW = (NUM_CONTEXTS <= 2) ? 1 : $clog2(NUM_CONTEXTS);
+  localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
 
   // ---- host port decode ----------------------------------------------------
@@ -67,6 +78,8 @@ module fp3_top #(
 
   wire        running;
   reg  [31:0] steps_q;
+  reg  [31:0] contexts_q;
+  reg  [CW-1:0] ctx_q;     // context the host sees
   reg  [31:0] imem_lo_q;   // low half of an instruction being written
   reg  [4:0]  flags_q;
 
@@ -78,85 +91,103 @@ module fp3_top #(
   wire imem_we     = host_we_i && host_idle && win_imem && imem_ok && host_addr_i[0];
 
   always @(posedge clk_i) begin
-    if (rst_i) steps_q <= 32'd0;
-    else if (host_we_i && host_addr_i == HR_STEPS && host_idle) steps_q <= host_wdata_i;
+    if (rst_i) begin
+      steps_q    <= 32'd0;
+      contexts_q <= 32'd1;
+      ctx_q      <= {CW{1'b0}};
+    end else if (host_we_i && host_idle) begin
+      if (host_addr_i == HR_STEPS)    steps_q    <= host_wdata_i;
+      if (host_addr_i == HR_CONTEXTS) contexts_q <= host_wdata_i;
+      if (host_addr_i == HR_CTX && host_wdata_i < NUM_CONTEXTS)
+                                      ctx_q      <= host_wdata_i[CW-1:0];
+    end
     if (host_we_i && win_imem && !host_addr_i[0]) imem_lo_q <= host_wdata_i;
   end
 
   // ---- scheduler -----------------------------------------------------------
-  wire          done;
+  wire          done, any_error;
   wire [3:0]    error;
   wire [31:0]   fault_pc, steps_done;
   wire [63:0]   cycles, issued, stalls;
-  wire [IW-1:0] ra, rb, rd;
-  wire          ra_ready, rb_ready, rd_busy, idle;
+  wire [XW-1:0] ra, rb, rd;
+  wire [CW-1:0] issue_ctx;
+  wire          idle;
   wire          issue, issue_sub, issue_imm, endi;
   wire [1:0]    issue_unit;
   wire [31:0]   imm;
-
-  fp3_scheduler #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_sched (
-    .clk_i        (clk_i),
-    .rst_i        (rst_i),
-    .imem_we_i    (imem_we),
-    .imem_waddr_i (imem_idx[AW-1:0]),
-    .imem_wdata_i ({host_wdata_i, imem_lo_q}),
-    .start_i      (start),
-    .clear_i      (clear),
-    .steps_i      (steps_q),
-    .running_o    (running),
-    .done_o       (done),
-    .error_o      (error),
-    .fault_pc_o   (fault_pc),
-    .steps_done_o (steps_done),
-    .cycles_o     (cycles),
-    .issued_o     (issued),
-    .stalls_o     (stalls),
-    .ra_o         (ra),
-    .rb_o         (rb),
-    .rd_o         (rd),
-    .ra_ready_i   (ra_ready),
-    .rb_ready_i   (rb_ready),
-    .rd_busy_i    (rd_busy),
-    .idle_i       (idle),
-    .issue_o      (issue),
-    .issue_unit_o (issue_unit),
-    .issue_sub_o  (issue_sub),
-    .issue_imm_o  (issue_imm),
-    .imm_o        (imm),
-    .endi_o       (endi)
-  );
-
-  // ---- register file -------------------------------------------------------
-  wire [31:0]   ra_data, rb_data, host_reg_rdata;
+  wire [(1<<XW)-1:0] busy;
   wire          add_valid, mul_valid, mov_valid;
-  wire [IW-1:0] add_reg, mul_reg, mov_reg;
+  wire [XW-1:0] add_idx, mul_idx, mov_idx;
   wire [31:0]   add_data, mul_data, mov_data;
   wire [4:0]    add_flags, mul_flags;
 
-  fp3_regfile #(.NUM_REGS(NUM_REGS), .IW(IW)) u_regs (
+  fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
+                  .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_sched (
+    .clk_i            (clk_i),
+    .rst_i            (rst_i),
+    .imem_we_i        (imem_we),
+    .imem_waddr_i     (imem_idx[AW-1:0]),
+    .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
+    .start_i          (start),
+    .clear_i          (clear),
+    .steps_i          (steps_q),
+    .contexts_i       (contexts_q),
+    .sel_ctx_i        (ctx_q),
+    .running_o        (running),
+    .done_o           (done),
+    .any_error_o      (any_error),
+    .error_sel_o      (error),
+    .fault_pc_sel_o   (fault_pc),
+    .steps_done_sel_o (steps_done),
+    .cycles_o         (cycles),
+    .issued_o         (issued),
+    .stalls_o         (stalls),
+    .busy_i           (busy),
+    .wb0_valid_i      (add_valid),
+    .wb0_idx_i        (add_idx),
+    .wb1_valid_i      (mul_valid),
+    .wb1_idx_i        (mul_idx),
+    .wb2_valid_i      (mov_valid),
+    .wb2_idx_i        (mov_idx),
+    .idle_i           (idle),
+    .issue_o          (issue),
+    .issue_ctx_o      (issue_ctx),
+    .ra_o             (ra),
+    .rb_o             (rb),
+    .rd_o             (rd),
+    .issue_unit_o     (issue_unit),
+    .issue_sub_o      (issue_sub),
+    .issue_imm_o      (issue_imm),
+    .imm_o            (imm),
+    .endi_o           (endi)
+  );
+
+  // ---- register banks ------------------------------------------------------
+  wire [31:0] ra_data, rb_data, host_reg_rdata;
+
+  // Banks are indexed {context, register}: 2**XW entries; the banks of
+  // contexts >= NUM_CONTEXTS are never written and synthesize away.
+  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW)) u_regs (
     .clk_i        (clk_i),
     .rst_i        (rst_i),
     .ra_i         (ra),
     .rb_i         (rb),
-    .rd_i         (rd),
     .ra_data_o    (ra_data),
     .rb_data_o    (rb_data),
-    .ra_ready_o   (ra_ready),
-    .rb_ready_o   (rb_ready),
-    .rd_busy_o    (rd_busy),
+    .busy_o       (busy),
     .set_i        (issue && issue_unit != UNIT_NONE),
-    .set_reg_i    (rd),
+    .set_idx_i    (rd),
     .wb0_valid_i  (add_valid),
-    .wb0_reg_i    (add_reg),
+    .wb0_idx_i    (add_idx),
     .wb0_data_i   (add_data),
     .wb1_valid_i  (mul_valid),
-    .wb1_reg_i    (mul_reg),
+    .wb1_idx_i    (mul_idx),
     .wb1_data_i   (mul_data),
     .wb2_valid_i  (mov_valid),
-    .wb2_reg_i    (mov_reg),
+    .wb2_idx_i    (mov_idx),
     .wb2_data_i   (mov_data),
     .host_we_i    (host_reg_we),
-    .host_reg_i   (host_addr_i[IW-1:0]),
+    .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
     .host_rdata_o (host_reg_rdata),
     .idle_o       (idle)
@@ -164,7 +195,7 @@ module fp3_top #(
 
   // ---- arithmetic unit -----------------------------------------------------
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .IW(IW)) u_arith (
+              .XW(XW)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
     .valid_i     (issue),
@@ -174,19 +205,19 @@ module fp3_top #(
     .a_i         (issue_imm ? imm : ra_data),
     .b_i         (rb_data),
     .add_valid_o (add_valid),
-    .add_reg_o   (add_reg),
+    .add_reg_o   (add_idx),
     .add_data_o  (add_data),
     .add_flags_o (add_flags),
     .mul_valid_o (mul_valid),
-    .mul_reg_o   (mul_reg),
+    .mul_reg_o   (mul_idx),
     .mul_data_o  (mul_data),
     .mul_flags_o (mul_flags),
     .mov_valid_o (mov_valid),
-    .mov_reg_o   (mov_reg),
+    .mov_reg_o   (mov_idx),
     .mov_data_o  (mov_data)
   );
 
-  // ---- sticky exception flags of the run -----------------------------------
+  // ---- sticky exception flags of the run (all contexts) --------------------
   always @(posedge clk_i) begin
     if (rst_i || (start && host_idle)) flags_q <= 5'd0;
     else flags_q <= flags_q | (add_valid ? add_flags : 5'd0) | (mul_valid ? mul_flags : 5'd0);
@@ -197,7 +228,7 @@ module fp3_top #(
   always @(*) begin
     rdata_d = 32'd0;
     case (host_addr_i)
-      HR_STATUS:     rdata_d = {20'd0, error, 6'd0, done, running};
+      HR_STATUS:     rdata_d = {20'd0, error, 5'd0, any_error, done, running};
       HR_STEPS:      rdata_d = steps_q;
       HR_STEPS_DONE: rdata_d = steps_done;
       HR_FAULT_PC:   rdata_d = fault_pc;
@@ -211,6 +242,9 @@ module fp3_top #(
       HR_INFO0:      rdata_d = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
       HR_INFO1:      rdata_d = {14'd0, FTZ[0], ROUND[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
       HR_ID:         rdata_d = ID_VALUE;
+      HR_CTX:        rdata_d = {{(32-CW){1'b0}}, ctx_q};
+      HR_CONTEXTS:   rdata_d = contexts_q;
+      HR_INFO2:      rdata_d = {16'd0, NUM_CONTEXTS[15:0]};
       default: begin
         if (win_reg && reg_ok) rdata_d = host_reg_rdata;
       end
@@ -222,16 +256,20 @@ module fp3_top #(
   assign running_o       = running;
   assign done_o          = done;
   assign tr_issue_o      = issue;
+  assign tr_issue_ctx_o  = {{(6-CW){1'b0}}, issue_ctx};
   assign tr_issue_unit_o = issue_unit;
   assign tr_endi_o       = endi;
   assign tr_add_valid_o  = add_valid;
-  assign tr_add_reg_o    = {{(8-IW){1'b0}}, add_reg};
+  assign tr_add_ctx_o    = {{(6-CW){1'b0}}, add_idx[XW-1:IW]};
+  assign tr_add_reg_o    = {{(8-IW){1'b0}}, add_idx[IW-1:0]};
   assign tr_add_data_o   = add_data;
   assign tr_mul_valid_o  = mul_valid;
-  assign tr_mul_reg_o    = {{(8-IW){1'b0}}, mul_reg};
+  assign tr_mul_ctx_o    = {{(6-CW){1'b0}}, mul_idx[XW-1:IW]};
+  assign tr_mul_reg_o    = {{(8-IW){1'b0}}, mul_idx[IW-1:0]};
   assign tr_mul_data_o   = mul_data;
   assign tr_mov_valid_o  = mov_valid;
-  assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_reg};
+  assign tr_mov_ctx_o    = {{(6-CW){1'b0}}, mov_idx[XW-1:IW]};
+  assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_idx[IW-1:0]};
   assign tr_mov_data_o   = mov_data;
 
   // Host address bits that select windows but are not register indices.

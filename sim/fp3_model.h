@@ -30,9 +30,11 @@ typedef struct fp3_model_out {
   uint32_t rdata;       /* host read data for this cycle's addr   */
   int running, done;    /* run status pins (before the edge)      */
   int issue;            /* an instruction issued                  */
+  unsigned issue_ctx;   /* ... by this context                    */
   unsigned issue_unit;  /* its unit, FP3_UNIT_*                   */
   int endi;             /* the issued instruction is an endi      */
   int wb_valid[3];      /* write-back ports: 0 add, 1 mul, 2 move */
+  unsigned wb_ctx[3];
   unsigned wb_reg[3];
   uint32_t wb_data[3];
 } fp3_model_out;
@@ -57,6 +59,11 @@ typedef struct fp3_model_ops {
   /* One clock cycle; `in` may be NULL (no host access), `out` may be
    * NULL. */
   void (*cycle)(fp3_model *m, const fp3_model_in *in, fp3_model_out *out);
+  /* Waveform window: from now on, write only the `count` cycles that
+   * start `first` cycles after this call (first 0: the next cycle;
+   * first UINT64_MAX: none; count UINT64_MAX: no end).  Without a call,
+   * every cycle is written. */
+  void (*trace_window)(fp3_model *m, uint64_t first, uint64_t count);
 } fp3_model_ops;
 
 #define FP3_MODEL_DECLARE(name, round, ftz) extern const fp3_model_ops fp3_model_##name;

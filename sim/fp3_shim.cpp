@@ -8,6 +8,7 @@
 // operations are exported as fp3_model_<FP3_CFG>.
 #include "fp3_model.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <new>
 
@@ -29,6 +30,8 @@ struct model {
   VerilatedContext *ctx;
   VTOP *top;
   VerilatedVcdC *vcd;  // nullptr: no waveform
+  // Cycles since creation; the waveform holds cycles win_lo .. win_hi-1.
+  uint64_t cyc = 0, win_lo = 0, win_hi = UINT64_MAX;
 };
 
 model *of(fp3_model *m) { return reinterpret_cast<model *>(m); }
@@ -38,8 +41,17 @@ model *of(fp3_model *m) { return reinterpret_cast<model *>(m); }
 static void half_cycle(model *m, int clk) {
   m->top->clk_i = clk;
   m->top->eval();
-  if (m->vcd) m->vcd->dump(m->ctx->time());
+  if (m->vcd && m->cyc >= m->win_lo && m->cyc < m->win_hi) m->vcd->dump(m->ctx->time());
   m->ctx->timeInc(1);
+  if (clk) m->cyc++;
+}
+
+static uint64_t sat_add(uint64_t a, uint64_t b) { return b > UINT64_MAX - a ? UINT64_MAX : a + b; }
+
+static void trace_window(fp3_model *handle, uint64_t first, uint64_t count) {
+  model *m = of(handle);
+  m->win_lo = sat_add(m->cyc, first);
+  m->win_hi = sat_add(m->win_lo, count);
 }
 
 static void destroy(model *m) {
@@ -103,15 +115,19 @@ static void cycle(fp3_model *handle, const fp3_model_in *in, fp3_model_out *out)
     out->running = t->running_o;
     out->done = t->done_o;
     out->issue = t->tr_issue_o;
+    out->issue_ctx = t->tr_issue_ctx_o;
     out->issue_unit = t->tr_issue_unit_o;
     out->endi = t->tr_endi_o;
     out->wb_valid[0] = t->tr_add_valid_o;
+    out->wb_ctx[0] = t->tr_add_ctx_o;
     out->wb_reg[0] = t->tr_add_reg_o;
     out->wb_data[0] = t->tr_add_data_o;
     out->wb_valid[1] = t->tr_mul_valid_o;
+    out->wb_ctx[1] = t->tr_mul_ctx_o;
     out->wb_reg[1] = t->tr_mul_reg_o;
     out->wb_data[1] = t->tr_mul_data_o;
     out->wb_valid[2] = t->tr_mov_valid_o;
+    out->wb_ctx[2] = t->tr_mov_ctx_o;
     out->wb_reg[2] = t->tr_mov_reg_o;
     out->wb_data[2] = t->tr_mov_data_o;
   }
@@ -119,4 +135,5 @@ static void cycle(fp3_model *handle, const fp3_model_in *in, fp3_model_out *out)
   if (out) out->rdata = t->host_rdata_o;
 }
 
-extern "C" const fp3_model_ops FP3_CAT(fp3_model_, FP3_CFG) = {create, free_model, cycle};
+extern "C" const fp3_model_ops FP3_CAT(fp3_model_, FP3_CFG) = {create, free_model, cycle,
+                                                                 trace_window};

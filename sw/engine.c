@@ -18,16 +18,49 @@ int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n) {
 }
 
 int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
-  return e->ops->write_reg(e, reg, value);
+  return e->ops->write_reg(e, 0, reg, value);
 }
 
 int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
-  return e->ops->read_reg(e, reg, value);
+  return e->ops->read_reg(e, 0, reg, value);
 }
 
 int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
                    fp3_status *st) {
-  return e->ops->run(e, steps, obs, st);
+  return e->ops->run(e, steps, 1, obs, st);
+}
+
+int fp3_engine_write_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
+                             uint32_t value) {
+  return e->ops->write_reg(e, context, reg, value);
+}
+
+int fp3_engine_read_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
+                            uint32_t *value) {
+  return e->ops->read_reg(e, context, reg, value);
+}
+
+int fp3_engine_run_contexts(fp3_engine *e, uint32_t steps, unsigned contexts,
+                            const fp3_observer *obs, fp3_status *st) {
+  return e->ops->run(e, steps, contexts, obs, st);
+}
+
+int fp3_engine_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
+  return e->ops->ctx_status(e, context, cs);
+}
+
+void fp3_observe_write(const fp3_observer *obs, unsigned context, unsigned reg,
+                       uint32_t value, uint32_t integration) {
+  if (!obs) return;
+  if (obs->on_ctx_write) obs->on_ctx_write(obs->ctx, context, reg, value, integration);
+  if (context == 0 && obs->on_write) obs->on_write(obs->ctx, reg, value, integration);
+}
+
+void fp3_observe_endi(const fp3_observer *obs, unsigned context,
+                      uint32_t integration, uint64_t cycle) {
+  if (!obs) return;
+  if (obs->on_ctx_endi) obs->on_ctx_endi(obs->ctx, context, integration, cycle);
+  if (context == 0 && obs->on_endi) obs->on_endi(obs->ctx, integration, cycle);
 }
 
 void fp3_engine_free(fp3_engine *e) {

@@ -14,6 +14,12 @@
  * one (prologue writes belong to integration 1).  Writes to one register
  * arrive in program order on every engine; writes to different registers
  * may interleave differently on different engines.
+ *
+ * Contexts: a run may start several contexts (objects) at once, each with
+ * its own registers, all running the same program for the same number of
+ * integrations (paper §6.3).  The RTL interleaves them on one arithmetic
+ * unit; the ISS runs them one after another.  Contexts never interact, so
+ * each one's results are the same on both.
  */
 #ifndef FP3_ENGINE_H
 #define FP3_ENGINE_H
@@ -25,7 +31,8 @@
 
 /* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
 typedef struct fp3_config {
-  unsigned num_regs;    /* registers                                     */
+  unsigned num_contexts;/* contexts a run may start                      */
+  unsigned num_regs;    /* registers per context                         */
   unsigned imem_depth;  /* instruction memory entries                    */
   unsigned add_latency; /* cycles, issue to dependent issue (RTL only)   */
   unsigned mul_latency; /* cycles, issue to dependent issue (RTL only)   */
@@ -35,16 +42,26 @@ typedef struct fp3_config {
 /* Status and counters after a run. */
 typedef struct fp3_status {
   int done;              /* 1 when the run has ended                      */
-  unsigned error;        /* enum fp3_error                                */
+  unsigned error;        /* enum fp3_error, of context 0                  */
   uint32_t fault_pc;     /* PC of the faulting instruction if error != 0  */
-  uint32_t steps_done;   /* integrations completed (endi issued)          */
+  uint32_t steps_done;   /* integrations completed (endi issued), ctx 0   */
+  unsigned any_error;    /* 1 if any context ended with an error          */
   uint32_t flags;        /* sticky exception flags, enum fp3_flag bits    */
   uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
   uint64_t issued;       /* instructions issued                           */
   uint64_t stalls;       /* cycles an instruction waited on a hazard      */
 } fp3_status;
 
-/* Observer callbacks; any may be NULL. */
+/* Status of one context after a run. */
+typedef struct fp3_ctx_status {
+  unsigned error;       /* enum fp3_error                                 */
+  uint32_t fault_pc;    /* PC of the faulting instruction if error != 0   */
+  uint32_t steps_done;  /* integrations completed                         */
+} fp3_ctx_status;
+
+/* Observer callbacks; any may be NULL.  on_write and on_endi report
+ * context 0 only (one-object runs); on_ctx_write and on_ctx_endi report
+ * every context. */
 typedef struct fp3_observer {
   void *ctx;
   /* A result was written to register `reg`. */
@@ -53,7 +70,17 @@ typedef struct fp3_observer {
   /* The endi closing integration `integration` (1-based) issued in `cycle`
    * (cycles counted from 0 at START; the ISS counts instructions). */
   void (*on_endi)(void *ctx, uint32_t integration, uint64_t cycle);
+  void (*on_ctx_write)(void *ctx, unsigned context, unsigned reg,
+                       uint32_t value, uint32_t integration);
+  void (*on_ctx_endi)(void *ctx, unsigned context, uint32_t integration,
+                      uint64_t cycle);
 } fp3_observer;
+
+/* Deliver one event to an observer (engines call these). */
+void fp3_observe_write(const fp3_observer *obs, unsigned context, unsigned reg,
+                       uint32_t value, uint32_t integration);
+void fp3_observe_endi(const fp3_observer *obs, unsigned context,
+                      uint32_t integration, uint64_t cycle);
 
 typedef struct fp3_engine fp3_engine;
 
@@ -62,10 +89,14 @@ typedef struct fp3_engine fp3_engine;
 typedef struct fp3_engine_ops {
   const char *name; /* "rtl" or "iss" */
   int (*load_program)(fp3_engine *e, const uint64_t *words, size_t n);
-  int (*write_reg)(fp3_engine *e, unsigned reg, uint32_t value);
-  int (*read_reg)(fp3_engine *e, unsigned reg, uint32_t *value);
-  int (*run)(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
-             fp3_status *st);
+  int (*write_reg)(fp3_engine *e, unsigned context, unsigned reg,
+                   uint32_t value);
+  int (*read_reg)(fp3_engine *e, unsigned context, unsigned reg,
+                  uint32_t *value);
+  /* Run contexts 0 .. contexts-1 for `steps` integrations each. */
+  int (*run)(fp3_engine *e, uint32_t steps, unsigned contexts,
+             const fp3_observer *obs, fp3_status *st);
+  int (*ctx_status)(fp3_engine *e, unsigned context, fp3_ctx_status *cs);
   void (*destroy)(fp3_engine *e);
 } fp3_engine_ops;
 
@@ -85,15 +116,31 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode);
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);
 /* The RTL built with core options `mode` (parameters ROUND, FTZ). */
 fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path);
+/* The RTL of one Verilated build (model_ops: a `const fp3_model_ops *` of
+ * sim/fp3_model.h, e.g. a test build with another NUM_CONTEXTS). */
+fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_path);
+/* Waveform window of an RTL engine created with a trace path: each run
+ * writes only its cycles first .. first+count-1 (cycle 0 is the first
+ * after START; count UINT64_MAX: to the end), nothing outside runs.
+ * Returns -1 for an engine that is not the RTL. */
+int fp3_engine_rtl_trace_window(fp3_engine *e, uint64_t first, uint64_t count);
 /* By name, "rtl" or "iss"; NULL for an unknown name. */
 fp3_engine *fp3_engine_new(const char *name);
 
-/* Thin dispatchers over e->ops. */
+/* Thin dispatchers over e->ops.  The forms without a context use context
+ * 0 and run one context. */
 int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n);
 int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value);
 int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value);
 int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
                    fp3_status *st);
+int fp3_engine_write_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
+                             uint32_t value);
+int fp3_engine_read_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
+                            uint32_t *value);
+int fp3_engine_run_contexts(fp3_engine *e, uint32_t steps, unsigned contexts,
+                            const fp3_observer *obs, fp3_status *st);
+int fp3_engine_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs);
 void fp3_engine_free(fp3_engine *e);
 const char *fp3_engine_error(const fp3_engine *e);
 

@@ -4,11 +4,12 @@
  * Talks to the model only through its host port (sim/fp3_model.h), exactly
  * as a driver would talk to the FPGA, and watches the trace port while the
  * machine runs freely.  Each unit's write-backs leave in the order the unit
- * accepted operations, so a FIFO of integration tags per unit, pushed at
- * issue and popped at write-back, tags every result with the integration
- * it belongs to without any help from the hardware.  A write-back with an
- * empty FIFO, or a FIFO not empty when the run ends, is a hardware fault
- * and fails the run.
+ * accepted operations, so a FIFO of (context, integration) tags per unit,
+ * pushed at issue and popped at write-back, tags every result with the
+ * integration it belongs to without any help from the hardware.  A
+ * write-back with an empty FIFO or for another context than the FIFO
+ * says, or a FIFO not empty when the run ends, is a hardware fault and
+ * fails the run.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,7 +22,8 @@
 #define TAG_FIFO 64 /* > deepest unit latency + 1 */
 
 typedef struct tag_fifo {
-  uint32_t tag[TAG_FIFO];
+  uint32_t integ[TAG_FIFO];
+  uint8_t ctx[TAG_FIFO];
   unsigned head, count;
 } tag_fifo;
 
@@ -29,6 +31,9 @@ typedef struct rtl_engine {
   fp3_engine base;
   const fp3_model_ops *mops; /* the model of the configuration */
   fp3_model *model;
+  fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
+  int win_set;                   /* waveform window, in cycles of a run */
+  uint64_t win_first, win_count;
 } rtl_engine;
 
 static void host_write(const rtl_engine *m, unsigned addr, uint32_t value) {
@@ -66,7 +71,12 @@ static int rtl_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
   return 0;
 }
 
-static int check_reg(fp3_engine *e, unsigned reg) {
+static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
+  if (context >= e->config.num_contexts) {
+    snprintf(e->error, sizeof e->error, "context %u out of range (the model has %u)",
+             context, e->config.num_contexts);
+    return -1;
+  }
   if (reg >= e->config.num_regs) {
     snprintf(e->error, sizeof e->error, "register r%u out of range (the model has %u)",
              reg, e->config.num_regs);
@@ -75,38 +85,54 @@ static int check_reg(fp3_engine *e, unsigned reg) {
   return 0;
 }
 
-static int rtl_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
-  if (check_reg(e, reg)) return -1;
+static int rtl_write_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t value) {
+  if (check_reg(e, context, reg)) return -1;
+  host_write((rtl_engine *)e, FP3_HR_CTX, context);
   host_write((rtl_engine *)e, FP3_HR_REG_BASE + reg, value);
   return 0;
 }
 
-static int rtl_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
-  if (check_reg(e, reg)) return -1;
+static int rtl_read_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t *value) {
+  if (check_reg(e, context, reg)) return -1;
+  host_write((rtl_engine *)e, FP3_HR_CTX, context);
   *value = host_read((rtl_engine *)e, FP3_HR_REG_BASE + reg);
+  return 0;
+}
+
+static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
+  if (check_reg(e, context, 0)) return -1;
+  *cs = ((rtl_engine *)e)->cs[context];
   return 0;
 }
 
 /* Upper bound on the cycles of a legal run: every integration passes at
  * most the whole memory once, each instruction waiting at most the longest
  * latency.  Exceeding it means the machine hung. */
-static uint64_t cycle_limit(const fp3_config *c, uint32_t steps) {
+static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
   uint64_t per_insn = (uint64_t)(c->add_latency > c->mul_latency ? c->add_latency
                                                                    : c->mul_latency) + 2;
-  return ((uint64_t)steps + 1) * c->imem_depth * per_insn + 1000;
+  return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
 
-static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_status *st) {
+static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
+                   const fp3_observer *obs, fp3_status *st) {
   rtl_engine *r = (rtl_engine *)e;
   tag_fifo fifo[4];
   memset(fifo, 0, sizeof fifo);
   memset(st, 0, sizeof *st);
+  memset(r->cs, 0, sizeof r->cs);
 
   host_write(r, FP3_HR_STEPS, steps);
+  host_write(r, FP3_HR_CONTEXTS, contexts);
+  /* run cycle 0 is the one after the START write */
+  if (r->win_set)
+    r->mops->trace_window(r->model,
+                          r->win_first == UINT64_MAX ? UINT64_MAX : r->win_first + 1,
+                          r->win_count);
   host_write(r, FP3_HR_CTRL, FP3_CTRL_START);
 
-  uint32_t endis = 0;
-  uint64_t limit = cycle_limit(&e->config, steps);
+  uint32_t endis[FP3_MAX_CONTEXTS] = {0};
+  uint64_t limit = cycle_limit(&e->config, steps, contexts);
   fp3_model_out out;
   for (uint64_t cycle = 0;; cycle++) {
     r->mops->cycle(r->model, NULL, &out);
@@ -126,10 +152,17 @@ static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_s
                  (unsigned long long)cycle);
         return -1;
       }
-      uint32_t tag = f->tag[f->head];
+      unsigned ctx = f->ctx[f->head];
+      uint32_t integ = f->integ[f->head];
       f->head = (f->head + 1) % TAG_FIFO;
       f->count--;
-      if (obs && obs->on_write) obs->on_write(obs->ctx, out.wb_reg[u], out.wb_data[u], tag);
+      if (ctx != out.wb_ctx[u]) {
+        snprintf(e->error, sizeof e->error,
+                 "RTL fault: write-back on port %u in cycle %llu for context %u, "
+                 "issued by context %u", u, (unsigned long long)cycle, out.wb_ctx[u], ctx);
+        return -1;
+      }
+      fp3_observe_write(obs, ctx, out.wb_reg[u], out.wb_data[u], integ);
     }
     if (out.issue && out.issue_unit != FP3_UNIT_NONE) {
       tag_fifo *f = &fifo[out.issue_unit & 3];
@@ -138,12 +171,15 @@ static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_s
                  out.issue_unit, TAG_FIFO);
         return -1;
       }
-      f->tag[(f->head + f->count) % TAG_FIFO] = endis + 1;
+      unsigned slot = (f->head + f->count) % TAG_FIFO;
+      f->ctx[slot] = (uint8_t)out.issue_ctx;
+      f->integ[slot] = endis[out.issue_ctx % FP3_MAX_CONTEXTS] + 1;
       f->count++;
     }
     if (out.endi) {
-      endis++;
-      if (obs && obs->on_endi) obs->on_endi(obs->ctx, endis, cycle);
+      unsigned ctx = out.issue_ctx % FP3_MAX_CONTEXTS;
+      endis[ctx]++;
+      fp3_observe_endi(obs, ctx, endis[ctx], cycle);
     }
   }
   for (unsigned u = 1; u < 4; u++) {
@@ -154,11 +190,19 @@ static int rtl_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs, fp3_s
     }
   }
 
+  for (unsigned c = 0; c < e->config.num_contexts; c++) {
+    host_write(r, FP3_HR_CTX, c);
+    r->cs[c].error = (host_read(r, FP3_HR_STATUS) >> FP3_STATUS_ERROR_LSB) & 0xF;
+    r->cs[c].fault_pc = host_read(r, FP3_HR_FAULT_PC);
+    r->cs[c].steps_done = host_read(r, FP3_HR_STEPS_DONE);
+  }
+  host_write(r, FP3_HR_CTX, 0);
   uint32_t status = host_read(r, FP3_HR_STATUS);
   st->done = (status & FP3_STATUS_DONE) != 0;
-  st->error = (status >> FP3_STATUS_ERROR_LSB) & 0xF;
-  st->fault_pc = host_read(r, FP3_HR_FAULT_PC);
-  st->steps_done = host_read(r, FP3_HR_STEPS_DONE);
+  st->any_error = (status & FP3_STATUS_ANY_ERROR) != 0;
+  st->error = r->cs[0].error;
+  st->fault_pc = r->cs[0].fault_pc;
+  st->steps_done = r->cs[0].steps_done;
   st->flags = host_read(r, FP3_HR_FLAGS);
   st->cycles = host_read64(r, FP3_HR_CYCLES_LO);
   st->issued = host_read64(r, FP3_HR_ISSUED_LO);
@@ -174,7 +218,7 @@ static void rtl_destroy(fp3_engine *e) {
 }
 
 static const fp3_engine_ops rtl_ops = {
-    "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_destroy,
+    "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_ctx_status, rtl_destroy,
 };
 
 /* The Verilated builds, one per core configuration. */
@@ -188,13 +232,14 @@ static const fp3_model_ops *model_of(fpref_mode mode) {
 }
 
 fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path) {
+  return fp3_engine_rtl_new_model(model_of(mode), trace_path);
+}
+
+fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_path) {
+  if (!model_ops) return NULL;
   rtl_engine *r = calloc(1, sizeof *r);
   if (!r) return NULL;
-  r->mops = model_of(mode);
-  if (!r->mops) {
-    free(r);
-    return NULL;
-  }
+  r->mops = model_ops;
   r->model = r->mops->create(trace_path);
   if (!r->model) {
     free(r);
@@ -204,6 +249,13 @@ fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path) {
   /* The configuration the model was built with, from its INFO registers. */
   uint32_t info0 = host_read(r, FP3_HR_INFO0);
   uint32_t info1 = host_read(r, FP3_HR_INFO1);
+  r->base.config.num_contexts = host_read(r, FP3_HR_INFO2) & 0xFFFF;
+  if (r->base.config.num_contexts > FP3_MAX_CONTEXTS) {
+    fprintf(stderr, "fp3: the RTL model has %u contexts, more than %d\n",
+            r->base.config.num_contexts, FP3_MAX_CONTEXTS);
+    rtl_destroy(&r->base);
+    return NULL;
+  }
   r->base.config.num_regs = info0 & 0xFFFF;
   r->base.config.imem_depth = info0 >> 16;
   r->base.config.add_latency = info1 & 0xFF;
@@ -216,6 +268,16 @@ fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path) {
     return NULL;
   }
   return &r->base;
+}
+
+int fp3_engine_rtl_trace_window(fp3_engine *e, uint64_t first, uint64_t count) {
+  if (!e || e->ops != &rtl_ops) return -1;
+  rtl_engine *r = (rtl_engine *)e;
+  r->win_set = 1;
+  r->win_first = first;
+  r->win_count = count;
+  r->mops->trace_window(r->model, UINT64_MAX, 0); /* nothing before a run */
+  return 0;
 }
 
 fp3_engine *fp3_engine_rtl_new(const char *trace_path) {

@@ -77,10 +77,15 @@
  * built with back from the INFO host registers.
  */
 #define FP3_CONFIG(X)                                                          \
+  X(NUM_CONTEXTS, 8)   /* contexts: objects in flight (1 .. 64)        */      \
   X(NUM_REGS,    32)   /* registers per context (at most 256)          */      \
   X(IMEM_DEPTH,  256)  /* instruction memory words (at most 1024)      */      \
   X(ADD_LATENCY, 4)    /* add/sub core: issue to dependent issue       */      \
   X(MUL_LATENCY, 3)    /* mul core: issue to dependent issue           */
+
+/* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
+ * 6-bit context numbers). */
+#define FP3_MAX_CONTEXTS 64
 
 /* Exception flags, Berkeley SoftFloat / TestFloat bit order. */
 #define FP3_FLAGS(X)                                                           \
@@ -95,7 +100,8 @@
   X(NONE,         0, "no error")                                               \
   X(ILLEGAL_INSN, 1, "illegal instruction")                                    \
   X(PC_OVERFLOW,  2, "PC ran past the end of instruction memory")             \
-  X(BAD_STEPS,    3, "run started with STEPS = 0")
+  X(BAD_STEPS,    3, "run started with STEPS = 0")                              \
+  X(BAD_CONTEXTS, 4, "run started with CONTEXTS = 0 or > NUM_CONTEXTS")
 
 /*
  * Host port: 32-bit words at 12-bit word addresses.
@@ -104,10 +110,12 @@
 #define FP3_HOSTREGS(X)                                                        \
   X(CTRL,       0x000, "W",  "bit0 START a run (clears counters, flags), "     \
                              "bit1 CLEAR the DONE and ERROR status")          \
-  X(STATUS,     0x001, "R",  "bit0 RUNNING, bit1 DONE, bits 11:8 ERROR")      \
+  X(STATUS,     0x001, "R",  "bit0 RUNNING, bit1 DONE, bit2 some context "    \
+                             "has an error, bits 11:8 ERROR of context CTX")  \
   X(STEPS,      0x002, "RW", "integrations to run")                           \
-  X(STEPS_DONE, 0x003, "R",  "integrations completed (endi issued)")          \
-  X(FAULT_PC,   0x004, "R",  "PC of the instruction that raised ERROR")       \
+  X(STEPS_DONE, 0x003, "R",  "integrations completed by context CTX")         \
+  X(FAULT_PC,   0x004, "R",  "PC of the instruction that raised context "     \
+                             "CTX's ERROR")                                   \
   X(FLAGS,      0x005, "R",  "sticky exception flags of the run")             \
   X(CYCLES_LO,  0x006, "R",  "cycles from START to DONE, low word")           \
   X(CYCLES_HI,  0x007, "R",  "cycles, high word")                             \
@@ -118,13 +126,20 @@
   X(INFO0,      0x00C, "R",  "NUM_REGS[15:0], IMEM_DEPTH[31:16]")             \
   X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]") \
   X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
-  X(REG_BASE,   0x100, "RW", "register r at REG_BASE + r (stopped only)")     \
+  X(CTX,        0x00F, "RW", "context selected for STATUS.ERROR, STEPS_DONE, " \
+                             "FAULT_PC and the register window")              \
+  X(CONTEXTS,   0x010, "RW", "contexts a START runs, 1 .. NUM_CONTEXTS "       \
+                             "(reset value 1)")                               \
+  X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0]")                             \
+  X(REG_BASE,   0x100, "RW", "register r of context CTX at REG_BASE + r "     \
+                             "(stopped only)")                                \
   X(IMEM_BASE,  0x800, "W",  "instruction i: low word at IMEM_BASE + 2i, "    \
                              "high word at IMEM_BASE + 2i + 1 (writing the "  \
                              "high word stores both halves)")
 
 #define FP3_STATUS_RUNNING   0x1u
 #define FP3_STATUS_DONE      0x2u
+#define FP3_STATUS_ANY_ERROR 0x4u
 #define FP3_STATUS_ERROR_LSB 8
 #define FP3_CTRL_START       0x1u
 #define FP3_CTRL_CLEAR       0x2u

@@ -9,7 +9,9 @@
  * takes one "cycle", so cycles = issued = instructions executed and
  * stalls = 0.
  *
- * A run of N integrations starts at PC 0.  endi counts an integration,
+ * Contexts are independent (their own registers, the same program), so a
+ * run of several contexts runs them one after another; the ISS has
+ * FP3_MAX_CONTEXTS of them.  A run of N integrations starts at PC 0.  endi counts an integration,
  * reports it, and stops the run if it was the N-th, else jumps to its imm.
  * halt stops the run.  Errors end the run with status.error set (the
  * engine call itself succeeds, as on the RTL engine):
@@ -29,7 +31,8 @@
 typedef struct iss_engine {
   fp3_engine base;
   uint64_t imem[FP3_DEFAULT_IMEM_DEPTH];
-  uint32_t regs[FP3_DEFAULT_NUM_REGS];
+  uint32_t regs[FP3_MAX_CONTEXTS][FP3_DEFAULT_NUM_REGS];
+  fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
 } iss_engine;
 
 static int iss_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
@@ -45,7 +48,13 @@ static int iss_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
   return 0;
 }
 
-static int check_reg(fp3_engine *e, unsigned reg) {
+static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
+  if (context >= e->config.num_contexts) {
+    snprintf(e->error, sizeof e->error,
+             "context %u out of range (the ISS has %u)", context,
+             e->config.num_contexts);
+    return -1;
+  }
   if (reg >= e->config.num_regs) {
     snprintf(e->error, sizeof e->error,
              "register r%u out of range (the ISS has %u)", reg,
@@ -55,58 +64,54 @@ static int check_reg(fp3_engine *e, unsigned reg) {
   return 0;
 }
 
-static int iss_write_reg(fp3_engine *e, unsigned reg, uint32_t value) {
-  if (check_reg(e, reg)) return -1;
-  ((iss_engine *)e)->regs[reg] = value;
+static int iss_write_reg(fp3_engine *e, unsigned context, unsigned reg,
+                         uint32_t value) {
+  if (check_reg(e, context, reg)) return -1;
+  ((iss_engine *)e)->regs[context][reg] = value;
   return 0;
 }
 
-static int iss_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
-  if (check_reg(e, reg)) return -1;
-  *value = ((iss_engine *)e)->regs[reg];
+static int iss_read_reg(fp3_engine *e, unsigned context, unsigned reg,
+                        uint32_t *value) {
+  if (check_reg(e, context, reg)) return -1;
+  *value = ((iss_engine *)e)->regs[context][reg];
   return 0;
 }
 
-static void fail(fp3_engine *e, fp3_status *st, unsigned err, uint32_t pc,
+static void fail(fp3_engine *e, fp3_ctx_status *cs, unsigned err, uint32_t pc,
                  const char *why) {
-  st->error = err;
-  st->fault_pc = pc;
+  cs->error = err;
+  cs->fault_pc = pc;
   snprintf(e->error, sizeof e->error, "%s", why);
 }
 
-static int iss_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
-                   fp3_status *st) {
-  iss_engine *s = (iss_engine *)e;
+/* Run one context to its end; *n counts the instructions executed. */
+static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
+                        const fp3_observer *obs, fp3_ctx_status *cs,
+                        unsigned *flags, uint64_t *n) {
+  fp3_engine *e = &s->base;
   const uint32_t depth = e->config.imem_depth;
   const fpref_mode mode = e->config.mode;
-  memset(st, 0, sizeof *st);
-  e->error[0] = '\0';
-  st->done = 1;
-  if (steps == 0) {
-    fail(e, st, FP3_ERR_BAD_STEPS, 0, "run started with STEPS = 0");
-    return 0;
-  }
-  unsigned flags = 0;
+  uint32_t *regs = s->regs[ctx];
   uint32_t pc = 0, integ = 0;
-  uint64_t n = 0; /* instructions executed */
   char why[200];
   for (;;) {
     uint64_t w = s->imem[pc];
     if (fp3_insn_check(w, e->config.num_regs, depth, why, sizeof why)) {
       char msg[240];
       snprintf(msg, sizeof msg, "illegal instruction at pc %u: %s", pc, why);
-      fail(e, st, FP3_ERR_ILLEGAL_INSN, pc, msg);
+      fail(e, cs, FP3_ERR_ILLEGAL_INSN, pc, msg);
       break;
     }
     unsigned opc = fp3_insn_opc(w), rd = fp3_insn_rd(w);
-    uint32_t a = s->regs[fp3_insn_ra(w)], b = s->regs[fp3_insn_rb(w)];
+    uint32_t a = regs[fp3_insn_ra(w)], b = regs[fp3_insn_rb(w)];
     uint32_t imm = fp3_insn_imm(w);
     int writes = 1, stop = 0;
     uint32_t result = 0, next = pc + 1;
     switch ((enum fp3_opcode)opc) {
-    case FP3_OP_ADD: result = fpref_add(a, b, mode, &flags); break;
-    case FP3_OP_SUB: result = fpref_sub(a, b, mode, &flags); break;
-    case FP3_OP_MUL: result = fpref_mul(a, b, mode, &flags); break;
+    case FP3_OP_ADD: result = fpref_add(a, b, mode, flags); break;
+    case FP3_OP_SUB: result = fpref_sub(a, b, mode, flags); break;
+    case FP3_OP_MUL: result = fpref_mul(a, b, mode, flags); break;
     case FP3_OP_LI: result = imm; break;
     case FP3_OP_MOV: result = a; break;
     case FP3_OP_NOP: writes = 0; break;
@@ -114,42 +119,76 @@ static int iss_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
     case FP3_OP_ENDI:
       writes = 0;
       integ++;
-      if (obs && obs->on_endi) obs->on_endi(obs->ctx, integ, n);
+      fp3_observe_endi(obs, ctx, integ, *n);
       if (integ == steps) stop = 1;
       else next = imm;
       break;
     }
     if (writes) {
-      s->regs[rd] = result;
-      if (obs && obs->on_write) obs->on_write(obs->ctx, rd, result, integ + 1);
+      regs[rd] = result;
+      fp3_observe_write(obs, ctx, rd, result, integ + 1);
     }
-    n++;
+    (*n)++;
     if (stop) break;
     if (next >= depth) { /* endi targets are checked above */
-      fail(e, st, FP3_ERR_PC_OVERFLOW, depth - 1,
+      fail(e, cs, FP3_ERR_PC_OVERFLOW, depth - 1,
            "PC ran past the end of instruction memory");
       break;
     }
     pc = next;
   }
-  st->steps_done = integ;
-  st->flags = flags;
-  st->cycles = n;
-  st->issued = n;
+  cs->steps_done = integ;
+}
+
+static int iss_run(fp3_engine *e, uint32_t steps, unsigned contexts,
+                   const fp3_observer *obs, fp3_status *st) {
+  iss_engine *s = (iss_engine *)e;
+  memset(st, 0, sizeof *st);
+  memset(s->cs, 0, sizeof s->cs);
+  e->error[0] = '\0';
+  st->done = 1;
+  if (steps == 0 || contexts == 0 || contexts > e->config.num_contexts) {
+    unsigned err = steps == 0 ? FP3_ERR_BAD_STEPS : FP3_ERR_BAD_CONTEXTS;
+    for (unsigned c = 0; c < e->config.num_contexts; c++)
+      fail(e, &s->cs[c], err, 0,
+           steps == 0 ? "run started with STEPS = 0"
+                      : "run started with CONTEXTS = 0 or > NUM_CONTEXTS");
+  } else {
+    unsigned flags = 0;
+    uint64_t n = 0; /* instructions executed */
+    for (unsigned c = 0; c < contexts; c++)
+      run_context(s, c, steps, obs, &s->cs[c], &flags, &n);
+    st->flags = flags;
+    st->cycles = n;
+    st->issued = n;
+  }
+  for (unsigned c = 0; c < e->config.num_contexts; c++)
+    if (s->cs[c].error != FP3_ERR_NONE) st->any_error = 1;
+  st->error = s->cs[0].error;
+  st->fault_pc = s->cs[0].fault_pc;
+  st->steps_done = s->cs[0].steps_done;
   st->stalls = 0;
+  return 0;
+}
+
+static int iss_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
+  if (check_reg(e, context, 0)) return -1;
+  *cs = ((iss_engine *)e)->cs[context];
   return 0;
 }
 
 static void iss_destroy(fp3_engine *e) { free(e); }
 
 static const fp3_engine_ops iss_ops = {
-    "iss", iss_load_program, iss_write_reg, iss_read_reg, iss_run, iss_destroy,
+    "iss",   iss_load_program, iss_write_reg,  iss_read_reg,
+    iss_run, iss_ctx_status,   iss_destroy,
 };
 
 fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   iss_engine *s = calloc(1, sizeof *s);
   if (!s) return NULL;
   s->base.ops = &iss_ops;
+  s->base.config.num_contexts = FP3_MAX_CONTEXTS;
   s->base.config.num_regs = FP3_DEFAULT_NUM_REGS;
   s->base.config.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   s->base.config.add_latency = 0; /* no timing model */

@@ -28,6 +28,10 @@
 #include "fpref.h"
 #include "golden.h"
 #include "image.h"
+#include "../sim/fp3_model.h"
+
+/* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */
+extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3;
 
 #define MAX_REGS 256
 
@@ -98,7 +102,7 @@ static void run_on(fp3_engine *e, const fp3_image *img, const uint32_t *init, un
   for (unsigned r = 0; r < e->config.num_regs; r++) {
     assert_int_equal(fp3_engine_write_reg(e, r, r < ninit ? init[r] : 0), 0);
   }
-  fp3_observer obs = {c, on_write, on_endi};
+  fp3_observer obs = {.ctx = c, .on_write = on_write, .on_endi = on_endi};
   if (fp3_engine_run(e, steps, &obs, &c->st) != 0) fail_msg("%s", fp3_engine_error(e));
   for (unsigned r = 0; r < e->config.num_regs; r++) {
     assert_int_equal(fp3_engine_read_reg(e, r, &c->final[r]), 0);
@@ -506,6 +510,192 @@ static void test_random_words(void **state) {
   }
 }
 
+/* ---- many objects: contexts sharing one arithmetic unit -------------------- */
+
+typedef struct multi_capture {
+  capture c[FP3_MAX_CONTEXTS];
+  unsigned contexts;
+} multi_capture;
+
+static void on_ctx_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
+                         uint32_t integ) {
+  multi_capture *m = ctx;
+  assert_true(context < m->contexts);
+  on_write(&m->c[context], reg, value, integ);
+}
+
+static void on_ctx_endi(void *ctx, unsigned context, uint32_t integ, uint64_t cycle) {
+  multi_capture *m = ctx;
+  assert_true(context < m->contexts);
+  on_endi(&m->c[context], integ, cycle);
+}
+
+/* Run `contexts` contexts, context k starting from init[k]; per-context
+ * captures hold the context's status, the totals go to *st. */
+static void run_contexts_on(fp3_engine *e, const fp3_image *img, uint32_t (*init)[MAX_REGS],
+                            unsigned contexts, uint32_t steps, multi_capture *m,
+                            fp3_status *st) {
+  memset(m, 0, sizeof *m);
+  /* A bad count (tested) still reads back the contexts that exist. */
+  m->contexts = contexts < e->config.num_contexts ? contexts : e->config.num_contexts;
+  if (fp3_engine_load(e, img->words, img->n) != 0) fail_msg("%s", fp3_engine_error(e));
+  for (unsigned k = 0; k < m->contexts; k++)
+    for (unsigned r = 0; r < e->config.num_regs; r++)
+      assert_int_equal(fp3_engine_write_ctx_reg(e, k, r, init[k][r]), 0);
+  fp3_observer obs = {.ctx = m, .on_ctx_write = on_ctx_write, .on_ctx_endi = on_ctx_endi};
+  if (fp3_engine_run_contexts(e, steps, contexts, &obs, st) != 0)
+    fail_msg("%s", fp3_engine_error(e));
+  for (unsigned k = 0; k < m->contexts; k++) {
+    fp3_ctx_status cs;
+    assert_int_equal(fp3_engine_ctx_status(e, k, &cs), 0);
+    m->c[k].st.error = cs.error;
+    m->c[k].st.fault_pc = cs.fault_pc;
+    m->c[k].st.steps_done = cs.steps_done;
+    for (unsigned r = 0; r < e->config.num_regs; r++)
+      assert_int_equal(fp3_engine_read_ctx_reg(e, k, r, &m->c[k].final[r]), 0);
+  }
+}
+
+static void multi_free(multi_capture *m) {
+  for (unsigned k = 0; k < m->contexts; k++) capture_free(&m->c[k]);
+}
+
+/* The RTL builds with 1, 3 and the default number of contexts. */
+static fp3_engine *context_build(int which) {
+  switch (which) {
+    case 0: return fp3_engine_rtl_new_model(&fp3_model_nc1, NULL);
+    case 1: return fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
+    default: return fp3_engine_rtl_new(NULL);
+  }
+}
+
+/* Different ships in every context: each context bit-exact with the ISS
+ * and with its own golden model after every integration; no context
+ * starves; with enough contexts an object-step costs about one cycle per
+ * instruction of the loop body. */
+static void test_many_ships(void **state) {
+  (void)state;
+  fp3_image img;
+  char *errors = NULL;
+  fp3_image_init(&img);
+  assert_int_equal(fp3_asm_file("programs/ship_rk4.s", &img, &errors), 0);
+  const uint32_t steps = 200;
+  static multi_capture ma, mb;
+  static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
+  for (int which = 0; which < 3; which++) {
+    fp3_engine *er = context_build(which);
+    assert_non_null(er);
+    unsigned nctx = er->config.num_contexts;
+    assert_int_equal(nctx, which == 0 ? 1 : which == 1 ? 3 : FP3_DEFAULT_NUM_CONTEXTS);
+    memset(init, 0, sizeof init);
+    for (unsigned k = 0; k < nctx; k++) {
+      const ship_case *sc = &ship_cases[k % NCASES];
+      float values[FP3_IN_COUNT] = {sc->T, sc->C, sc->m, fp3_ship_minv(sc->m), sc->h,
+                                    sc->v0 + (float)k, sc->s0};
+      for (int p = 0; p < FP3_IN_COUNT; p++)
+        if (img.in_reg[p] >= 0) init[k][img.in_reg[p]] = fpref_bits(values[p]);
+    }
+    fp3_status sa, sb;
+    run_contexts_on(er, &img, init, nctx, steps, &ma, &sa);
+    run_contexts_on(iss, &img, init, nctx, steps, &mb, &sb);
+    assert_int_equal(sa.any_error, 0);
+    assert_int_equal(sa.flags, sb.flags);
+    assert_int_equal(sa.issued, sb.issued);
+    uint64_t first_done = UINT64_MAX, last_done = 0;
+    for (unsigned k = 0; k < nctx; k++) {
+      char what[64];
+      snprintf(what, sizeof what, "%u contexts, context %u", nctx, k);
+      assert_int_equal(ma.c[k].st.steps_done, steps);
+      compare_captures(&ma.c[k], &mb.c[k], what);
+      /* golden model of this context's ship */
+      const ship_case *sc = &ship_cases[k % NCASES];
+      fp3_ship_params p = {sc->T, sc->C, sc->m, sc->h, sc->v0 + (float)k, sc->s0};
+      fp3_ship_state g;
+      fp3_golden_init(&g, &p);
+      int vreg = img.out_reg[FP3_OUT_V], sreg = img.out_reg[FP3_OUT_S];
+      size_t vpos = 0, spos = 0;
+      for (uint32_t i = 1; i <= steps; i++) {
+        fp3_golden_step(&g);
+        uint32_t v = value_after(&ma.c[k].reg[vreg], init[k][vreg], i, &vpos);
+        uint32_t sv = value_after(&ma.c[k].reg[sreg], init[k][sreg], i, &spos);
+        if (v != fpref_bits(g.v) || sv != fpref_bits(g.s))
+          fail_msg("%s: integration %u differs from the golden model", what, i);
+      }
+      uint64_t end = ma.c[k].endi_cycle[steps - 1];
+      if (end < first_done) first_done = end;
+      if (end > last_done) last_done = end;
+    }
+    /* Fair arbitration: the contexts finish within one integration of
+     * each other (in cycles: the run's cycles per object-step times the
+     * number of contexts). */
+    double per_object_step = (double)sa.cycles / ((double)nctx * steps);
+    assert_true((double)(last_done - first_done) <= per_object_step * nctx);
+    print_message("%u contexts: %.2f cycles per object-step, %llu stalls\n", nctx,
+                  per_object_step, (unsigned long long)sa.stalls);
+    if (nctx >= 8) {
+      /* Issue bound: 31 instructions per body, one issued per cycle. */
+      double bound = (double)sa.issued / ((double)nctx * steps);
+      assert_true(per_object_step <= 1.1 * bound);
+    }
+    multi_free(&ma);
+    multi_free(&mb);
+    fp3_engine_free(er);
+  }
+}
+
+/* Hazard-dense random programs, every context with its own values. */
+static void test_random_programs_contexts(void **state) {
+  (void)state;
+  static multi_capture ma, mb;
+  static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
+  for (int which = 0; which < 3; which++) {
+    fp3_engine *er = context_build(which);
+    assert_non_null(er);
+    unsigned nctx = er->config.num_contexts;
+    for (int p = 0; p < 300; p++) {
+      uint64_t seed = rng_state;
+      fp3_image img;
+      random_program(&img, 2 + (unsigned)(rnd() % 5));
+      memset(init, 0, sizeof init);
+      for (unsigned k = 0; k < nctx; k++)
+        for (unsigned r = 0; r < 8; r++) init[k][r] = random_value();
+      unsigned contexts = 1 + (unsigned)(rnd() % nctx);
+      uint32_t steps = 1 + (uint32_t)(rnd() % 4);
+      fp3_status sa, sb;
+      run_contexts_on(er, &img, init, contexts, steps, &ma, &sa);
+      run_contexts_on(iss, &img, init, contexts, steps, &mb, &sb);
+      assert_int_equal(sa.flags, sb.flags);
+      assert_int_equal(sa.issued, sb.issued);
+      for (unsigned k = 0; k < contexts; k++) {
+        char what[96];
+        snprintf(what, sizeof what, "random program %d on %u contexts (seed 0x%016llx), context %u",
+                 p, nctx, (unsigned long long)seed, k);
+        compare_captures(&ma.c[k], &mb.c[k], what);
+      }
+      multi_free(&ma);
+      multi_free(&mb);
+    }
+    fp3_engine_free(er);
+  }
+}
+
+static void test_bad_contexts(void **state) {
+  (void)state;
+  fp3_image img;
+  assemble("halt\n", &img);
+  static multi_capture m;
+  static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
+  unsigned bad[2] = {0, rtl->config.num_contexts + 1};
+  for (int i = 0; i < 2; i++) {
+    fp3_status sa, sb;
+    run_contexts_on(rtl, &img, init, bad[i], 1, &m, &sa);
+    assert_int_equal(sa.error, FP3_ERR_BAD_CONTEXTS);
+    assert_int_equal(sa.any_error, 1);
+    run_contexts_on(iss, &img, init, bad[i] ? iss->config.num_contexts + 1 : 0, 1, &m, &sb);
+    assert_int_equal(sb.error, FP3_ERR_BAD_CONTEXTS);
+  }
+}
+
 static int setup(void **state) {
   (void)state;
   rtl = fp3_engine_rtl_new(NULL);
@@ -534,6 +724,9 @@ int main(void) {
       cmocka_unit_test(test_errors_agree),
       cmocka_unit_test(test_random_programs),
       cmocka_unit_test(test_random_words),
+      cmocka_unit_test(test_many_ships),
+      cmocka_unit_test(test_random_programs_contexts),
+      cmocka_unit_test(test_bad_contexts),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }
