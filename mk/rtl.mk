@@ -63,6 +63,7 @@ $(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
 .PHONY: isa
 isa: $(BUILD)/gen_isa
 	$(BUILD)/gen_isa > rtl/fp3_isa.vh
+	python3 scripts/readme-tables.py $(BUILD)/gen_isa
 
 # ---- lint ------------------------------------------------------------------
 lint: $(SETUP_STAMP)

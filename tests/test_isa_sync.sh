@@ -17,7 +17,7 @@ readme = open("README.md").read()
 missing = [t for t in md.split("\n\n") if t.strip() and t.strip() not in readme]
 if missing:
     print("FAIL: README.md lacks the generated table starting", missing[0].splitlines()[0])
-    print("      regenerate with: build/gen_isa --markdown")
+    print("      regenerate with: make isa")
     sys.exit(1)
 PY
 echo "PASS: rtl/fp3_isa.vh and README's tables match sw/fp3_isa.h"
