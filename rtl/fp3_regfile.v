@@ -58,18 +58,16 @@ module fp3_regfile #(
   reg [31:0]        regs_q [0:ENTRIES-1];
   reg [ENTRIES-1:0] busy_q;
 
-  function [31:0] read_port;  // the register's value, bypassed
-    input [XW-1:0] x;
-    begin
-      if      (wb0_valid_i && wb0_idx_i == x) read_port = wb0_data_i;
-      else if (wb1_valid_i && wb1_idx_i == x) read_port = wb1_data_i;
-      else if (wb2_valid_i && wb2_idx_i == x) read_port = wb2_data_i;
-      else                                    read_port = regs_q[x];
-    end
-  endfunction
-
-  assign ra_data_o    = read_port(ra_i);
-  assign rb_data_o    = read_port(rb_i);
+  // A register's value, bypassed.  A plain expression, not a function: a
+  // continuous assignment is re-evaluated only when its operands change,
+  // and a function's body is not an operand (Icarus relies on that).
+`define FP3_READ_PORT(x) \
+  ((wb0_valid_i && wb0_idx_i == (x)) ? wb0_data_i : \
+   (wb1_valid_i && wb1_idx_i == (x)) ? wb1_data_i : \
+   (wb2_valid_i && wb2_idx_i == (x)) ? wb2_data_i : regs_q[x])
+  assign ra_data_o    = `FP3_READ_PORT(ra_i);
+  assign rb_data_o    = `FP3_READ_PORT(rb_i);
+`undef FP3_READ_PORT
   assign busy_o       = busy_q;
   assign host_rdata_o = regs_q[host_idx_i];
   assign idle_o       = (busy_q == {ENTRIES{1'b0}});

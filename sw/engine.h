@@ -50,6 +50,7 @@ typedef struct fp3_status {
   uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
   uint64_t issued;       /* instructions issued                           */
   uint64_t stalls;       /* cycles an instruction waited on a hazard      */
+  uint64_t unit_issued[4]; /* instructions issued per unit, FP3_UNIT_*    */
 } fp3_status;
 
 /* Status of one context after a run. */

@@ -164,6 +164,7 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
       }
       fp3_observe_write(obs, ctx, out.wb_reg[u], out.wb_data[u], integ);
     }
+    if (out.issue) st->unit_issued[out.issue_unit & 3]++;
     if (out.issue && out.issue_unit != FP3_UNIT_NONE) {
       tag_fifo *f = &fifo[out.issue_unit & 3];
       if (f->count == TAG_FIFO) {

@@ -7,6 +7,8 @@
  *                                    every integration against the golden
  *                                    model, bit for bit
  *   fp3 testfloat ...                FP cores against TestFloat vectors
+ *   fp3 bench [options]              integrators: work-precision benchmark,
+ *                                    stability and long runs (sw/bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *
  * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
@@ -30,6 +32,10 @@
 #include "fpenv.h"
 #include "golden.h"
 #include "image.h"
+#include "integrators.h"
+#include "bench.h"
+#include "cmd_objects.h"
+#include "report.h"
 #include "testfloat.h"
 
 #define EXIT_FAIL 1
@@ -37,9 +43,11 @@
 
 #define DEFAULT_PROGRAM "programs/ship_rk4.s"
 #define DEFAULT_STEPS 10000u
+#define MAX_OBJECTS 1000000u /* --objects */
 #define TABLE_ROWS 5     /* first integrations shown in the table   */
 #define PAPER_FIRST 445  /* cycles of the first integration (paper) */
 #define PAPER_LATER 418  /* cycles of each later integration        */
+#define TRACE_WINDOW_DEFAULT 10000u /* cycles fp3 run --trace writes */
 
 /* ---- small helpers ------------------------------------------------------ */
 
@@ -65,86 +73,6 @@ static int opt_value(int argc, char **argv, int *i, const char *name,
 
 static int is_help(const char *a) {
   return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
-}
-
-static void flags_text(uint32_t flags, char *buf, size_t n) {
-  static const struct {
-    const char *name;
-    unsigned bit;
-  } tab[] = {
-#define X(name, bit) {#name, bit},
-      FP3_FLAGS(X)
-#undef X
-  };
-  buf[0] = '\0';
-  for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++)
-    if (flags & tab[i].bit) {
-      size_t len = strlen(buf);
-      snprintf(buf + len, n - len, "%s%s", len ? " " : "", tab[i].name);
-    }
-  for (char *p = buf; *p; p++)
-    if (*p >= 'A' && *p <= 'Z') *p = (char)(*p - 'A' + 'a');
-  if (!buf[0]) snprintf(buf, n, "none");
-}
-
-static const char *error_text(unsigned err) {
-  switch (err) {
-#define X(name, code, desc) \
-  case code:                \
-    return desc;
-    FP3_ERRORS(X)
-#undef X
-  default:
-    return "unknown error";
-  }
-}
-
-static const char *error_name(unsigned err) {
-  switch (err) {
-#define X(name, code, desc) \
-  case code:                \
-    return #name;
-    FP3_ERRORS(X)
-#undef X
-  default:
-    return "UNKNOWN";
-  }
-}
-
-/* Distance in units in the last place between two binary32 patterns. */
-static int64_t ulp_distance(uint32_t a, uint32_t b) {
-  int64_t x = (a & 0x80000000u) ? -(int64_t)(a & 0x7fffffffu) : (int64_t)a;
-  int64_t y = (b & 0x80000000u) ? -(int64_t)(b & 0x7fffffffu) : (int64_t)b;
-  return x > y ? x - y : y - x;
-}
-
-static void json_string(FILE *f, const char *s) {
-  fputc('"', f);
-  for (; *s; s++) {
-    unsigned char c = (unsigned char)*s;
-    if (c == '"' || c == '\\')
-      fprintf(f, "\\%c", c);
-    else if (c < 0x20)
-      fprintf(f, "\\u%04x", c);
-    else
-      fputc(c, f);
-  }
-  fputc('"', f);
-}
-
-/* %.9g for a float, %.17g for a double; null when not finite (JSON). */
-static void json_float(FILE *f, float x) {
-  if (isfinite(x))
-    fprintf(f, "%.9g", (double)x);
-  else
-    fputs("null", f);
-}
-
-static void json_double(FILE *f, double x) {
-  if (isfinite(x))
-    fprintf(f, "%.17g", x);
-  else
-    fputs("null", f);
 }
 
 /* Assembler messages, one per line. */
@@ -288,7 +216,9 @@ typedef struct checker {
   uint32_t cur[2];        /* latest value written              */
   uint32_t next_k[2];     /* next integration to finalise      */
   /* golden values of integrations base .. base+count-1 */
-  fp3_ship_state gst;
+  fp3_istate gst;                 /* golden state of the integrator */
+  const fp3_integrator *integ;    /* --integrator (default rk4)     */
+  fp3_diverge div;                /* run-time divergence watch      */
   float *gv, *gs;
   size_t cap, count;
   uint32_t base;
@@ -341,7 +271,7 @@ static int golden_at(checker *c, uint32_t k, float *v, float *s) {
     }
     fpenv_saved env;
     if (fpenv_enter(c->mode, &env) != 0) return -1; /* checked before the run */
-    fp3_golden_step(&c->gst);
+    c->integ->step(&c->gst);
     fpenv_leave(&env);
     c->gv[c->count] = c->gst.v;
     c->gs[c->count] = c->gst.s;
@@ -373,7 +303,7 @@ static void finalise(checker *c, int which, uint32_t k, uint32_t bits) {
       c->first_want = want;
     }
     c->mismatches++;
-    int64_t d = ulp_distance(bits, want);
+    int64_t d = fp3_ulp_distance(bits, want);
     if (d > c->max_ulp) c->max_ulp = d;
   }
   double ev, es;
@@ -386,6 +316,11 @@ static void finalise(checker *c, int which, uint32_t k, uint32_t bits) {
   if (!(rel_err <= c->max_rel[which])) c->max_rel[which] = rel_err;
   c->final_abs[which] = abs_err;
   c->final_rel[which] = rel_err;
+  if (which == OV)
+    fp3_diverge_update(&c->div, k, fpref_float(bits), 0.0f);
+  else if (!isfinite(fpref_float(bits)) &&
+           (!c->div.nonfinite || k < c->div.nonfinite))
+    c->div.nonfinite = k;
   if (k <= TABLE_ROWS) c->row[which][k - 1] = bits;
   c->last[which] = bits;
   c->last_k[which] = k;
@@ -419,9 +354,11 @@ static void obs_endi(void *ctx, uint32_t integration, uint64_t cycle) {
 
 static void usage_run(FILE *f) {
   fprintf(f,
-          "usage: fp3 run [--engine rtl|iss] [--program FILE.s] [--steps N]\n"
+          "usage: fp3 run [--engine rtl|iss] [--integrator NAME] [--strict]\n"
+          "               [--objects N [--seed S] | --scene FILE]\n"
+          "               [--program FILE.s] [--steps N]\n"
           "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
-          "               [--json] [--trace FILE.vcd]\n"
+          "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
           "\n"
           "Assemble the program, write its .in registers, run N integrations\n"
           "on the engine and compare the .out results v and s after every\n"
@@ -429,7 +366,18 @@ static void usage_run(FILE *f) {
           "with the exact solution of the ship ODE.\n"
           "\n"
           "  --engine E       rtl (Verilated RTL, default) or iss (simulator)\n"
-          "  --program FILE   assembly program (default %s)\n"
+          "  --integrator I   integrator: program programs/ship_I.s and its\n"
+          "                   golden model (sw/integrators.c): euler, symeuler,\n"
+          "                   verlet, rk2, rk4 (default, the paper's), rk4vs,\n"
+          "                   rk4comp, rk4vscomp.  A warning when h/tau =\n"
+          "                   h C/m exceeds its stability bound; divergence\n"
+          "                   (non-finite v or s, |v - T/C| growing past\n"
+          "                   twice its start) is reported with the\n"
+          "                   integration it began\n"
+          "  --strict         the bound warning is an error (exit 2), and a\n"
+          "                   divergence fails the run (exit 1)\n"
+          "  --program FILE   assembly program (default %s, or that of\n"
+          "                   --integrator; checked against its golden model)\n"
           "  --steps N        integrations, 1..4294967295 (default %u)\n"
           "  --set NAME=VALUE scene parameter, binary32 (repeatable):\n"
           "                   T thrust [N] (default 50000), C drag [kg/s]\n"
@@ -440,12 +388,22 @@ static void usage_run(FILE *f) {
           "  --ftz            FP cores flush subnormals to zero\n"
           "                   (the ISS and the golden model follow; the RTL\n"
           "                   model of that configuration is chosen)\n"
+          "  --objects N      many ships at once on the contexts (in batches of\n"
+          "                   NUM_CONTEXTS): a scene generated from --seed S\n"
+          "                   (default 1), or all of --scene FILE; every object\n"
+          "                   is checked against its golden model\n"
+          "  --scene FILE     scene file: 'h STEP' once, then one object per\n"
+          "                   line 'T C m v0 s0' ('#' comments; see README)\n"
           "  --json           one JSON object instead of the report\n"
-          "  --trace FILE     waveform of the run (rtl engine only)\n"
+          "  --trace FILE     waveform of the run (rtl engine only): a VCD of\n"
+          "                   every signal, cycles FIRST .. FIRST+COUNT-1 of the\n"
+          "                   run (cycle 0 is the first after START)\n"
+          "  --trace-window FIRST:COUNT  cycles to write (default 0:%u; COUNT\n"
+          "                   'all': to the end of the run)\n"
           "\n"
           "Exit status: 0 the run finished without error and bit-exact with\n"
           "the golden model; 1 it did not; 2 bad arguments or program.\n",
-          DEFAULT_PROGRAM, DEFAULT_STEPS);
+          DEFAULT_PROGRAM, DEFAULT_STEPS, TRACE_WINDOW_DEFAULT);
 }
 
 static int set_param(fp3_ship_params *p, const char *arg) {
@@ -481,9 +439,9 @@ static int set_param(fp3_ship_params *p, const char *arg) {
 
 /* The default program: relative to the working directory, else to the
  * executable (build/fp3 -> programs/). */
-static int open_default(char *path, size_t n) {
-  if (access(DEFAULT_PROGRAM, R_OK) == 0) {
-    snprintf(path, n, "%s", DEFAULT_PROGRAM);
+static int open_default(const char *rel, char *path, size_t n) {
+  if (access(rel, R_OK) == 0) {
+    snprintf(path, n, "%s", rel);
     return 0;
   }
   char exe[4096];
@@ -493,11 +451,11 @@ static int open_default(char *path, size_t n) {
     char *slash = strrchr(exe, '/');
     if (slash) {
       *slash = '\0';
-      snprintf(path, n, "%s/../%s", exe, DEFAULT_PROGRAM);
+      snprintf(path, n, "%s/../%s", exe, rel);
       if (access(path, R_OK) == 0) return 0;
     }
   }
-  snprintf(path, n, "%s", DEFAULT_PROGRAM);
+  snprintf(path, n, "%s", rel);
   return -1;
 }
 
@@ -511,8 +469,14 @@ static void print_row(const checker *c, uint32_t k, uint32_t vb, uint32_t sb) {
 
 static int cmd_run(int argc, char **argv) {
   const char *engine_name = "rtl", *program = NULL, *trace = NULL;
+  uint64_t win_first = 0, win_count = TRACE_WINDOW_DEFAULT;
   uint32_t steps = DEFAULT_STEPS;
-  int json = 0;
+  int json = 0, strict = 0;
+  size_t objects = 0;              /* --objects: many objects on contexts */
+  const char *scene = NULL;        /* --scene FILE                        */
+  uint64_t seed = 1;
+  int seeded = 0;
+  const fp3_integrator *integ = NULL;
   fpref_mode mode = FPREF_IEEE;
   fp3_ship_params p;
   fp3_ship_default(&p);
@@ -551,6 +515,26 @@ static int cmd_run(int argc, char **argv) {
       steps = (uint32_t)n;
     } else if ((r = opt_value(argc, argv, &i, "--set", &v)) != 0) {
       if (r < 0 || set_param(&p, v)) return EXIT_USAGE;
+    } else if ((r = opt_value(argc, argv, &i, "--trace-window", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      unsigned long long a = strtoull(v, &end, 10), b = 0;
+      int okw = v[0] >= '0' && v[0] <= '9' && *end == ':' && !errno;
+      if (okw && strcmp(end + 1, "all") == 0) {
+        b = UINT64_MAX;
+      } else if (okw) {
+        const char *cv = end + 1;
+        b = strtoull(cv, &end, 10);
+        okw = cv[0] >= '0' && cv[0] <= '9' && *end == '\0' && !errno && b > 0;
+      }
+      if (!okw) {
+        fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
+                        "COUNT >= 1 or 'all')\n", v);
+        return EXIT_USAGE;
+      }
+      win_first = a;
+      win_count = b;
     } else if ((r = opt_value(argc, argv, &i, "--trace", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       trace = v;
@@ -566,11 +550,53 @@ static int cmd_run(int argc, char **argv) {
       mode.ftz = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
+    } else if ((r = opt_value(argc, argv, &i, "--integrator", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      integ = fp3_integrator_find(v);
+      if (!integ) {
+        fprintf(stderr, "fp3 run: unknown integrator '%s' (%s)\n", v,
+                fp3_integrator_names());
+        return EXIT_USAGE;
+      }
+    } else if (strcmp(argv[i], "--strict") == 0) {
+      strict = 1;
+    } else if ((r = opt_value(argc, argv, &i, "--objects", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      unsigned long long k = strtoull(v, &end, 10);
+      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno || k == 0 ||
+          k > MAX_OBJECTS) {
+        fprintf(stderr, "fp3 run: --objects '%s': want 1..%u objects\n", v, MAX_OBJECTS);
+        return EXIT_USAGE;
+      }
+      objects = (size_t)k;
+    } else if ((r = opt_value(argc, argv, &i, "--scene", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      scene = v;
+    } else if ((r = opt_value(argc, argv, &i, "--seed", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      seed = strtoull(v, &end, 0);
+      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno) {
+        fprintf(stderr, "fp3 run: --seed '%s' is not a number\n", v);
+        return EXIT_USAGE;
+      }
+      seeded = 1;
     } else {
       fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n",
               argv[i]);
       return EXIT_USAGE;
     }
+  }
+  if (seeded && (!objects || scene)) {
+    fprintf(stderr, "fp3 run: --seed goes with --objects N (a generated scene)\n");
+    return EXIT_USAGE;
+  }
+  if (trace && (objects || scene)) {
+    fprintf(stderr, "fp3 run: --trace is for one object\n");
+    return EXIT_USAGE;
   }
   char msg[512];
   if (fp3_ship_validate(&p, msg, sizeof msg)) {
@@ -586,9 +612,20 @@ static int cmd_run(int argc, char **argv) {
                     "flush-to-zero (needs x86 SSE)\n");
     return EXIT_USAGE;
   }
+  if (!integ) integ = fp3_integrator_find("rk4");
+  {
+    double hot = fp3_h_over_tau(&p);
+    if (p.C > 0.0f && hot > integ->bound) {
+      fprintf(stderr,
+              "fp3 run: %s: h/tau = h C/m = %.6g exceeds the stability bound "
+              "%.6g of integrator %s: the integration will diverge\n",
+              strict ? "error" : "warning", hot, integ->bound, integ->name);
+      if (strict) return EXIT_USAGE;
+    }
+  }
   char defpath[4200];
   if (!program) {
-    open_default(defpath, sizeof defpath);
+    open_default(integ->program, defpath, sizeof defpath);
     program = defpath;
   }
 
@@ -623,6 +660,14 @@ static int cmd_run(int argc, char **argv) {
     fp3_engine_free(e);
     return EXIT_FAIL;
   }
+  if (trace) fp3_engine_rtl_trace_window(e, win_first, win_count);
+  if (objects || scene) {
+    fp3_objects_cmd oc = {e, &img, program, integ, scene, objects, seed, p.h,
+                          steps, mode, json};
+    int orc = fp3_cmd_run_objects(&oc);
+    fp3_engine_free(e);
+    return orc;
+  }
   int rc = EXIT_FAIL;
   checker c;
   memset(&c, 0, sizeof c);
@@ -630,7 +675,17 @@ static int cmd_run(int argc, char **argv) {
   c.mode = mode;
   c.steps = steps;
   c.base = 1;
-  fp3_golden_init(&c.gst, &p);
+  c.integ = integ;
+  fp3_diverge_init(&c.div, &p);
+  {
+    fpenv_saved env;
+    if (fpenv_enter(mode, &env) == 0) {
+      integ->init(&c.gst, &p); /* prologue arithmetic in the cores' mode */
+      fpenv_leave(&env);
+    } else {
+      integ->init(&c.gst, &p);
+    }
+  }
   const float minv = fp3_ship_minv(p.m);
   const float inval[FP3_IN_COUNT] = {
       [FP3_IN_T] = p.T,   [FP3_IN_C] = p.C,   [FP3_IN_M] = p.m,
@@ -649,7 +704,7 @@ static int cmd_run(int argc, char **argv) {
     erc = fp3_engine_read_reg(e, (unsigned)c.reg[w], &c.cur[w]);
   }
   if (erc == 0) {
-    fp3_observer obs = {&c, obs_write, obs_endi};
+    fp3_observer obs = {.ctx = &c, .on_write = obs_write, .on_endi = obs_endi};
     erc = fp3_engine_run(e, steps, &obs, &st);
   }
   if (erc != 0) {
@@ -657,6 +712,17 @@ static int cmd_run(int argc, char **argv) {
             fp3_engine_error(e));
     fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
     goto out;
+  }
+  if (trace) {
+    if (win_first >= st.cycles)
+      fprintf(stderr, "fp3 run: trace %s: empty, the run has %" PRIu64
+              " cycles (--trace-window FIRST:COUNT)\n", trace, st.cycles);
+    else
+      fprintf(stderr, "fp3 run: trace %s: cycles %" PRIu64 "..%" PRIu64
+              " of the run's %" PRIu64 " (--trace-window FIRST:COUNT for others)\n",
+              trace, win_first,
+              (win_count > st.cycles - win_first ? st.cycles : win_first + win_count) - 1,
+              st.cycles);
   }
   /* the results of the last integrations are the values left at the end */
   uint32_t done = st.steps_done < steps ? st.steps_done : steps;
@@ -672,7 +738,7 @@ static int cmd_run(int argc, char **argv) {
                                 : NAN;
   int ok = st.error == FP3_ERR_NONE && done == steps && c.mismatches == 0;
   char flags[96];
-  flags_text(st.flags, flags, sizeof flags);
+  fp3_flags_text(st.flags, flags, sizeof flags);
   double fin_v = NAN, fin_s = NAN;
   if (done > 0) exact_at(&c, done, &fin_v, &fin_s);
   float gv = 0, gs = 0;
@@ -680,13 +746,13 @@ static int cmd_run(int argc, char **argv) {
 
   if (json) {
     printf("{\"engine\": ");
-    json_string(stdout, engine_name);
+    fp3_json_string(stdout, engine_name);
     printf(", \"program\": ");
-    json_string(stdout, program);
+    fp3_json_string(stdout, program);
     printf(", \"words\": %zu", img.n);
     printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, steps,
            st.steps_done);
-    printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, error_name(st.error),
+    printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, fp3_error_name(st.error),
            st.fault_pc);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64
            ", \"stalls\": %" PRIu64,
@@ -703,43 +769,52 @@ static int cmd_run(int argc, char **argv) {
              ", \"result\": \"%s\", \"got\": \"0x%08" PRIX32
              "\", \"want\": \"0x%08" PRIX32 "\", \"ulp\": %" PRId64 "}",
              c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
-             c.first_want, ulp_distance(c.first_got, c.first_want));
+             c.first_want, fp3_ulp_distance(c.first_got, c.first_want));
     else
       printf(", \"first_mismatch\": null");
     printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, st.flags);
     printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(mode),
            mode.ftz ? "true" : "false");
     printf(", \"params\": {\"T\": ");
-    json_float(stdout, p.T);
+    fp3_json_float(stdout, p.T);
     printf(", \"C\": ");
-    json_float(stdout, p.C);
+    fp3_json_float(stdout, p.C);
     printf(", \"m\": ");
-    json_float(stdout, p.m);
+    fp3_json_float(stdout, p.m);
     printf(", \"minv\": ");
-    json_float(stdout, minv);
+    fp3_json_float(stdout, minv);
     printf(", \"h\": ");
-    json_float(stdout, p.h);
+    fp3_json_float(stdout, p.h);
     printf(", \"v0\": ");
-    json_float(stdout, p.v0);
+    fp3_json_float(stdout, p.v0);
     printf(", \"s0\": ");
-    json_float(stdout, p.s0);
+    fp3_json_float(stdout, p.s0);
     printf("}, \"results\": [{\"v\": ");
-    json_float(stdout, fpref_float(c.last[OV]));
+    fp3_json_float(stdout, fpref_float(c.last[OV]));
     printf(", \"s\": ");
-    json_float(stdout, fpref_float(c.last[OS]));
+    fp3_json_float(stdout, fpref_float(c.last[OS]));
     printf(", \"v_golden\": ");
-    json_float(stdout, gv);
+    fp3_json_float(stdout, gv);
     printf(", \"s_golden\": ");
-    json_float(stdout, gs);
+    fp3_json_float(stdout, gs);
     printf(", \"v_exact\": ");
-    json_double(stdout, fin_v);
+    fp3_json_double(stdout, fin_v);
     printf(", \"s_exact\": ");
-    json_double(stdout, fin_s);
+    fp3_json_double(stdout, fin_s);
     printf(", \"v_max_abs_err\": ");
-    json_double(stdout, c.max_abs[OV]);
+    fp3_json_double(stdout, c.max_abs[OV]);
     printf(", \"s_max_abs_err\": ");
-    json_double(stdout, c.max_abs[OS]);
-    printf("}], \"pass\": %s}\n", ok ? "true" : "false");
+    fp3_json_double(stdout, c.max_abs[OS]);
+    printf("}], \"integrator\": ");
+    fp3_json_string(stdout, integ->name);
+    printf(", \"h_over_tau\": ");
+    fp3_json_double(stdout, fp3_h_over_tau(&p));
+    printf(", \"stability_bound\": %.9g", integ->bound);
+    printf(", \"diverged_from\": ");
+    if (c.div.detected) printf("%" PRIu32, c.div.began); else printf("null");
+    printf(", \"nonfinite_from\": ");
+    if (c.div.nonfinite) printf("%" PRIu32, c.div.nonfinite); else printf("null");
+    printf(", \"pass\": %s}\n", ok ? "true" : "false");
   } else {
     printf("FP3 run: engine %s, program %s (%zu words), %" PRIu32
            " integrations\n",
@@ -770,7 +845,7 @@ static int cmd_run(int argc, char **argv) {
              c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
              (double)fpref_float(c.first_got), c.first_want,
              (double)fpref_float(c.first_want),
-             ulp_distance(c.first_got, c.first_want), c.max_ulp);
+             fp3_ulp_distance(c.first_got, c.first_want), c.max_ulp);
     if (c.endis >= 1) {
       printf("cycles: first integration %.0f (paper %d)", cyc_first,
              PAPER_FIRST);
@@ -790,12 +865,22 @@ static int cmd_run(int argc, char **argv) {
         printf("  %s %*s %14.6g %14.6g %14.6g %14.6g\n", w == OV ? "v" : "s",
                20, "", c.final_abs[w], c.final_rel[w], c.max_abs[w],
                c.max_rel[w]);
-      printf("  (RK4 for v; s = s + h v1 is first order in h, as in the paper)\n");
+      printf("  (integrator %s: %s)\n", integ->name, integ->desc);
     }
+    if (c.div.detected)
+      printf("DIVERGED: |v - T/C| grows from integration %" PRIu32
+             " on and reached %.6g at integration %" PRIu32
+             " (twice its start, h/tau = %.6g, bound %.6g)\n",
+             c.div.began, c.div.detected_dist, c.div.detected,
+             fp3_h_over_tau(&p), integ->bound);
+    if (c.div.nonfinite)
+      printf("DIVERGED: v or s not finite from integration %" PRIu32
+             " on (flags: %s)\n",
+             c.div.nonfinite, flags);
     if (st.error != FP3_ERR_NONE)
-      printf("run error: %s at pc %" PRIu32 ": %s\n", error_name(st.error),
+      printf("run error: %s at pc %" PRIu32 ": %s\n", fp3_error_name(st.error),
              st.fault_pc,
-             fp3_engine_error(e)[0] ? fp3_engine_error(e) : error_text(st.error));
+             fp3_engine_error(e)[0] ? fp3_engine_error(e) : fp3_error_text(st.error));
     if (ok)
       printf("PASS: %" PRIu32 " integrations on %s bit-exact with the golden "
              "model\n",
@@ -803,7 +888,7 @@ static int cmd_run(int argc, char **argv) {
     else if (st.error != FP3_ERR_NONE)
       printf("FAIL: run error %s after %" PRIu32 " of %" PRIu32
              " integrations\n",
-             error_name(st.error), st.steps_done, steps);
+             fp3_error_name(st.error), st.steps_done, steps);
     else if (done != steps)
       printf("FAIL: the run ended after %" PRIu32 " of %" PRIu32
              " integrations\n",
@@ -812,6 +897,10 @@ static int cmd_run(int argc, char **argv) {
       printf("FAIL: %" PRIu64 " golden mismatches, first at integration %" PRIu32
              "\n",
              c.mismatches, c.first_k);
+  }
+  if (ok && strict && (c.div.detected || c.div.nonfinite)) {
+    fprintf(stderr, "fp3 run: --strict: the integration diverged\n");
+    ok = 0;
   }
   rc = ok ? 0 : EXIT_FAIL;
 out:
@@ -833,6 +922,8 @@ static void usage(FILE *f) {
           "                            check it bit for bit against the golden\n"
           "                            model (default: ship RK4, 10000 steps)\n"
           "  testfloat ...             FP cores against TestFloat vectors\n"
+          "  bench [options]           integrators: work-precision benchmark,\n"
+          "                            stability bounds, long runs\n"
           "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n");
 }
 
@@ -852,6 +943,7 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "testfloat") == 0)
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
+  if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
   return EXIT_USAGE;
 }

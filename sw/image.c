@@ -69,6 +69,18 @@ int fp3_opc_uses(unsigned opc) {
   }
 }
 
+unsigned fp3_opc_unit(unsigned opc) {
+  switch (opc) {
+#define X(name, code, mnem, uses, unit, desc) \
+  case code:                                  \
+    return (unit);
+    FP3_OPCODES(X)
+#undef X
+  default:
+    return FP3_UNIT_NONE;
+  }
+}
+
 const char *fp3_opc_mnemonic(unsigned opc) {
   switch (opc) {
 #define X(name, code, mnem, uses, unit, desc) \

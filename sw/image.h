@@ -96,6 +96,8 @@ uint64_t fp3_insn_make(unsigned opc, unsigned rd, unsigned ra, unsigned rb,
 /* ISA table lookups: fields used (FP3_USES_*) or -1 for an unknown opcode;
  * mnemonic or NULL; opcode of a mnemonic or -1. */
 int fp3_opc_uses(unsigned opc);
+/* Execution unit of an opcode (FP3_UNIT_*; NONE for an unknown one). */
+unsigned fp3_opc_unit(unsigned opc);
 const char *fp3_opc_mnemonic(unsigned opc);
 int fp3_opc_lookup(const char *mnemonic);
 

@@ -88,7 +88,7 @@ static void fail(fp3_engine *e, fp3_ctx_status *cs, unsigned err, uint32_t pc,
 /* Run one context to its end; *n counts the instructions executed. */
 static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
                         const fp3_observer *obs, fp3_ctx_status *cs,
-                        unsigned *flags, uint64_t *n) {
+                        unsigned *flags, uint64_t *n, uint64_t *unit_issued) {
   fp3_engine *e = &s->base;
   const uint32_t depth = e->config.imem_depth;
   const fpref_mode mode = e->config.mode;
@@ -129,6 +129,7 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
       fp3_observe_write(obs, ctx, rd, result, integ + 1);
     }
     (*n)++;
+    unit_issued[fp3_opc_unit(opc)]++;
     if (stop) break;
     if (next >= depth) { /* endi targets are checked above */
       fail(e, cs, FP3_ERR_PC_OVERFLOW, depth - 1,
@@ -157,7 +158,7 @@ static int iss_run(fp3_engine *e, uint32_t steps, unsigned contexts,
     unsigned flags = 0;
     uint64_t n = 0; /* instructions executed */
     for (unsigned c = 0; c < contexts; c++)
-      run_context(s, c, steps, obs, &s->cs[c], &flags, &n);
+      run_context(s, c, steps, obs, &s->cs[c], &flags, &n, st->unit_issued);
     st->flags = flags;
     st->cycles = n;
     st->issued = n;

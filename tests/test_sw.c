@@ -97,7 +97,7 @@ static fp3_engine *run_iss(const fp3_image *img, uint32_t steps, capture *cap,
   fp3_engine *e = fp3_engine_iss_new();
   assert_non_null(e);
   assert_int_equal(fp3_engine_load(e, img->words, img->n), 0);
-  fp3_observer obs = {cap, cap_write, cap_endi};
+  fp3_observer obs = {.ctx = cap, .on_write = cap_write, .on_endi = cap_endi};
   if (cap) memset(cap, 0, sizeof *cap);
   assert_int_equal(fp3_engine_run(e, steps, cap ? &obs : NULL, st), 0);
   return e;
@@ -889,7 +889,7 @@ static void run_ship(const fp3_ship_params *p, uint32_t steps, const char *what)
     c.next_k[w] = 1;
     c.cur[w] = reg_of(e, (unsigned)c.reg[w]);
   }
-  fp3_observer obs = {&c, sc_write, NULL};
+  fp3_observer obs = {.ctx = &c, .on_write = sc_write};
   fp3_status st;
   assert_int_equal(fp3_engine_run(e, steps, &obs, &st), 0);
   assert_int_equal(st.error, FP3_ERR_NONE);

@@ -1,0 +1,390 @@
+/*
+ * cmd_tbgen.c -- `fp3 tbgen`: write the program image, the initial
+ * registers and the expected results for the Icarus testbench
+ * sim/tb_fp3.v (see cmd_tbgen.h for the files and their layout).
+ *
+ * The program runs on the instruction-set simulator; an observer records
+ * the value of the .out registers v and s after every integration the
+ * same way `fp3 run` does (the last value written by an instruction of
+ * that integration or an earlier one).  The Verilated RTL runs it too,
+ * for its cycle and stall counts.
+ */
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "asm.h"
+#include "cmd_tbgen.h"
+#include "engine.h"
+#include "fp3_isa.h"
+#include "fpref.h"
+#include "golden.h"
+#include "image.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+#define NO_REG 0xFFFFFFFFu
+
+static void usage_tbgen(FILE *f) {
+  fprintf(f,
+          "usage: fp3 tbgen PROGRAM.s -o DIR [--steps N] [--set NAME=VALUE ...]\n"
+          "                 [--round rne|rtz] [--ftz] [--no-rtl]\n"
+          "\n"
+          "Write the files of the Icarus Verilog testbench sim/tb_fp3.v\n"
+          "(make wave) into DIR, in $readmemh format:\n"
+          "  program.hex   the assembled program\n"
+          "  init.hex      the %d registers before the run (.in parameters)\n"
+          "  run.hex       steps, counts and the expected status of the run\n"
+          "  expected.hex  the final registers and v, s after every integration\n"
+          "Expected values come from the instruction-set simulator (bit-exact\n"
+          "with the golden model); cycle and stall counts from the Verilated\n"
+          "RTL unless --no-rtl.\n"
+          "\n"
+          "  -o DIR           output directory (created if missing)\n"
+          "  --steps N        integrations, 1..%u (default 4)\n"
+          "  --set NAME=VALUE scene parameter as in fp3 run (T C m h v0 s0)\n"
+          "  --round R, --ftz FP core options of the RTL simulated (parameters\n"
+          "                   ROUND, FTZ): rne (default) or rtz; flush to zero\n"
+          "  --no-rtl         do not run the Verilated RTL (no cycle check)\n"
+          "\n"
+          "Exit status: 0 written; 1 a run or write failed; 2 bad arguments\n"
+          "or program (assembler errors as FILE:LINE: reason).\n",
+          FP3_DEFAULT_NUM_REGS, TBGEN_MAX_CHECK);
+}
+
+/* "--name VALUE" or "--name=VALUE" (as in fp3.c). */
+static int opt_val(int argc, char **argv, int *i, const char *name,
+                   const char **val) {
+  const char *a = argv[*i];
+  size_t n = strlen(name);
+  if (strncmp(a, name, n) != 0) return 0;
+  if (a[n] == '=') {
+    *val = a + n + 1;
+    return 1;
+  }
+  if (a[n] != '\0') return 0;
+  if (*i + 1 >= argc) {
+    fprintf(stderr, "fp3 tbgen: option %s needs a value\n", name);
+    return -1;
+  }
+  *val = argv[++*i];
+  return 1;
+}
+
+static int set_scene(fp3_ship_params *p, const char *arg) {
+  static const char *const names[] = {"T", "C", "m", "h", "v0", "s0"};
+  float *slots[] = {&p->T, &p->C, &p->m, &p->h, &p->v0, &p->s0};
+  const char *eq = strchr(arg, '=');
+  if (!eq || eq == arg) {
+    fprintf(stderr, "fp3 tbgen: --set wants NAME=VALUE, got '%s'\n", arg);
+    return -1;
+  }
+  size_t nl = (size_t)(eq - arg);
+  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+    if (strlen(names[i]) != nl || strncmp(arg, names[i], nl) != 0) continue;
+    char *end;
+    float f = strtof(eq + 1, &end);
+    if (end == eq + 1 || *end != '\0') {
+      fprintf(stderr, "fp3 tbgen: --set %s: '%s' is not a number\n", names[i],
+              eq + 1);
+      return -1;
+    }
+    *slots[i] = f;
+    return 0;
+  }
+  fprintf(stderr, "fp3 tbgen: unknown parameter '%.*s' in --set (T C m h v0 s0)\n",
+          (int)nl, arg);
+  return -1;
+}
+
+/* mkdir -p */
+static int make_dirs(const char *dir) {
+  char path[4096];
+  if (snprintf(path, sizeof path, "%s", dir) >= (int)sizeof path) return -1;
+  for (char *p = path + 1; *p; p++) {
+    if (*p != '/') continue;
+    *p = '\0';
+    if (mkdir(path, 0777) != 0 && errno != EEXIST) return -1;
+    *p = '/';
+  }
+  if (mkdir(path, 0777) != 0 && errno != EEXIST) return -1;
+  return 0;
+}
+
+/* ---- recording v and s after every integration -------------------------- */
+
+typedef struct recorder {
+  int reg[2];         /* registers of v, s (-1: not bound) */
+  uint32_t cur[2];    /* latest value written               */
+  uint32_t next_k[2]; /* next integration to finalise       */
+  uint32_t n;         /* integrations recorded (array size) */
+  uint32_t *val[2];   /* val[w][k-1]: after integration k   */
+} recorder;
+
+static void rec_advance(recorder *r, int w, uint32_t upto) {
+  while (r->next_k[w] < upto && r->next_k[w] <= r->n) {
+    r->val[w][r->next_k[w] - 1] = r->cur[w];
+    r->next_k[w]++;
+  }
+}
+
+static void rec_write(void *ctx, unsigned reg, uint32_t value,
+                      uint32_t integration) {
+  recorder *r = ctx;
+  for (int w = 0; w < 2; w++)
+    if ((int)reg == r->reg[w]) {
+      rec_advance(r, w, integration);
+      r->cur[w] = value;
+    }
+}
+
+/* ---- writing the files --------------------------------------------------- */
+
+static FILE *open_out(const char *dir, const char *name, char *path, size_t n) {
+  snprintf(path, n, "%s/%s", dir, name);
+  FILE *f = fopen(path, "w");
+  if (!f) fprintf(stderr, "fp3 tbgen: cannot write %s: %s\n", path, strerror(errno));
+  return f;
+}
+
+static int close_out(FILE *f, const char *path) {
+  int bad = ferror(f);
+  if (fclose(f) != 0 || bad) {
+    fprintf(stderr, "fp3 tbgen: error writing %s\n", path);
+    return -1;
+  }
+  return 0;
+}
+
+int fp3_cmd_tbgen(int argc, char **argv) {
+  const char *in = NULL, *dir = NULL;
+  uint32_t steps = 4;
+  int use_rtl = 1;
+  fpref_mode mode = FPREF_IEEE;
+  fp3_ship_params p;
+  fp3_ship_default(&p);
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    int r;
+    if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+      usage_tbgen(stdout);
+      return 0;
+    }
+    if ((r = opt_val(argc, argv, &i, "-o", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      dir = v;
+    } else if ((r = opt_val(argc, argv, &i, "--steps", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      unsigned long long k = strtoull(v, &end, 10);
+      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno || k == 0 ||
+          k > TBGEN_MAX_CHECK) {
+        fprintf(stderr, "fp3 tbgen: --steps '%s': must be 1..%u\n", v,
+                TBGEN_MAX_CHECK);
+        return EXIT_USAGE;
+      }
+      steps = (uint32_t)k;
+    } else if ((r = opt_val(argc, argv, &i, "--set", &v)) != 0) {
+      if (r < 0 || set_scene(&p, v)) return EXIT_USAGE;
+    } else if ((r = opt_val(argc, argv, &i, "--round", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (strcmp(v, "rne") == 0) {
+        mode.round = FPREF_RNE;
+      } else if (strcmp(v, "rtz") == 0) {
+        mode.round = FPREF_RTZ;
+      } else {
+        fprintf(stderr, "fp3 tbgen: unknown rounding '%s' (rne or rtz)\n", v);
+        return EXIT_USAGE;
+      }
+    } else if (strcmp(argv[i], "--ftz") == 0) {
+      mode.ftz = 1;
+    } else if (strcmp(argv[i], "--no-rtl") == 0) {
+      use_rtl = 0;
+    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+      fprintf(stderr, "fp3 tbgen: unknown option '%s' (see fp3 tbgen --help)\n",
+              argv[i]);
+      return EXIT_USAGE;
+    } else if (!in) {
+      in = argv[i];
+    } else {
+      fprintf(stderr, "fp3 tbgen: more than one program ('%s')\n", argv[i]);
+      return EXIT_USAGE;
+    }
+  }
+  if (!in || !dir) {
+    fprintf(stderr, "fp3 tbgen: %s (see fp3 tbgen --help)\n",
+            !in ? "no program" : "no output directory (-o DIR)");
+    return EXIT_USAGE;
+  }
+  char msg[512];
+  if (fp3_ship_validate(&p, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 tbgen: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  fp3_image img;
+  char *errs = NULL;
+  if (fp3_asm_file(in, &img, &errs) != 0) {
+    fputs(errs && *errs ? errs : "assembly failed\n", stderr);
+    if (errs && *errs && errs[strlen(errs) - 1] != '\n') fputc('\n', stderr);
+    free(errs);
+    return EXIT_USAGE;
+  }
+  free(errs);
+
+  /* registers before the run: the .in parameters, 0 elsewhere */
+  uint32_t init[FP3_DEFAULT_NUM_REGS] = {0};
+  const float inval[FP3_IN_COUNT] = {
+      [FP3_IN_T] = p.T,   [FP3_IN_C] = p.C,
+      [FP3_IN_M] = p.m,   [FP3_IN_MINV] = fp3_ship_minv(p.m),
+      [FP3_IN_H] = p.h,   [FP3_IN_V0] = p.v0,
+      [FP3_IN_S0] = p.s0};
+  for (int k = 0; k < FP3_IN_COUNT; k++)
+    if (img.in_reg[k] >= 0 && img.in_reg[k] < FP3_DEFAULT_NUM_REGS)
+      init[img.in_reg[k]] = fpref_bits(inval[k]);
+
+  /* the reference run on the ISS */
+  recorder rec;
+  memset(&rec, 0, sizeof rec);
+  rec.n = steps;
+  for (int w = 0; w < 2; w++) {
+    rec.reg[w] = img.out_reg[w == 0 ? FP3_OUT_V : FP3_OUT_S];
+    rec.next_k[w] = 1;
+    if (rec.reg[w] >= 0) rec.cur[w] = init[rec.reg[w]];
+    rec.val[w] = calloc(steps, sizeof *rec.val[w]);
+    if (!rec.val[w]) {
+      fprintf(stderr, "fp3 tbgen: out of memory\n");
+      free(rec.val[0]);
+      return EXIT_FAIL;
+    }
+  }
+  int rc = EXIT_FAIL;
+  uint32_t final_regs[FP3_DEFAULT_NUM_REGS];
+  fp3_status st;
+  memset(&st, 0, sizeof st);
+  fp3_engine *iss = fp3_engine_iss_new_mode(mode);
+  int erc = iss ? fp3_engine_load(iss, img.words, img.n) : -1;
+  for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS && erc == 0; r++)
+    erc = fp3_engine_write_reg(iss, r, init[r]);
+  if (erc == 0) {
+    fp3_observer obs = {.ctx = &rec, .on_write = rec_write};
+    erc = fp3_engine_run(iss, steps, &obs, &st);
+  }
+  for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS && erc == 0; r++)
+    erc = fp3_engine_read_reg(iss, r, &final_regs[r]);
+  if (erc != 0) {
+    fprintf(stderr, "fp3 tbgen: iss engine: %s\n",
+            iss ? fp3_engine_error(iss) : "out of memory");
+    fp3_engine_free(iss);
+    goto out;
+  }
+  fp3_engine_free(iss);
+  uint32_t ncheck = st.steps_done < steps ? st.steps_done : steps;
+  if (rec.reg[0] < 0 && rec.reg[1] < 0) ncheck = 0;
+  for (int w = 0; w < 2; w++) rec_advance(&rec, w, ncheck + 1);
+
+  /* cycles and stalls on the Verilated RTL */
+  uint32_t rtl_lat = 0, rtl_cycles = 0, rtl_stalls = 0;
+  if (use_rtl) {
+    fp3_engine *rtl = fp3_engine_rtl_new_mode(mode, NULL);
+    fp3_status rst;
+    int r2 = rtl ? fp3_engine_load(rtl, img.words, img.n) : -1;
+    for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS && r2 == 0; r++)
+      r2 = fp3_engine_write_reg(rtl, r, init[r]);
+    if (r2 == 0) r2 = fp3_engine_run(rtl, steps, NULL, &rst);
+    if (r2 == 0 && rtl->config.num_regs == FP3_DEFAULT_NUM_REGS) {
+      rtl_lat = (rtl->config.mul_latency & 0xFFu) << 8 |
+                (rtl->config.add_latency & 0xFFu);
+      rtl_cycles = (uint32_t)rst.cycles;
+      rtl_stalls = (uint32_t)rst.stalls;
+    } else {
+      fprintf(stderr, "fp3 tbgen: note: no cycle counts from the Verilated RTL%s%s\n",
+              rtl ? ": " : "", rtl ? fp3_engine_error(rtl) : "");
+    }
+    fp3_engine_free(rtl);
+  }
+
+  if (make_dirs(dir) != 0) {
+    fprintf(stderr, "fp3 tbgen: cannot create %s: %s\n", dir, strerror(errno));
+    goto out;
+  }
+  char path[4200];
+  snprintf(path, sizeof path, "%s/program.hex", dir);
+  if (fp3_image_write(&img, path, in, msg, sizeof msg) != 0) {
+    fprintf(stderr, "fp3 tbgen: %s\n", msg);
+    goto out;
+  }
+
+  FILE *f = open_out(dir, "init.hex", path, sizeof path);
+  if (!f) goto out;
+  fprintf(f, "// init.hex -- registers r0..r%d before the run (fp3 tbgen %s)\n",
+          FP3_DEFAULT_NUM_REGS - 1, in);
+  fprintf(f, "// scene: T=%.9g C=%.9g m=%.9g h=%.9g v0=%.9g s0=%.9g\n",
+          (double)p.T, (double)p.C, (double)p.m, (double)p.h, (double)p.v0,
+          (double)p.s0);
+  for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++)
+    fprintf(f, "%08" PRIx32 "  // r%u\n", init[r], r);
+  if (close_out(f, path)) goto out;
+
+  uint32_t run[TBGEN_RUN_WORDS] = {0};
+  run[TBGEN_RUN_MAGIC] = FP3_ID_VALUE;
+  run[TBGEN_RUN_VERSION] = TBGEN_VERSION;
+  run[TBGEN_RUN_NWORDS] = (uint32_t)img.n;
+  run[TBGEN_RUN_NUM_REGS] = FP3_DEFAULT_NUM_REGS;
+  run[TBGEN_RUN_STEPS] = steps;
+  run[TBGEN_RUN_ERROR] = st.error;
+  run[TBGEN_RUN_FAULT_PC] = st.fault_pc;
+  run[TBGEN_RUN_STEPS_DONE] = st.steps_done;
+  run[TBGEN_RUN_ISSUED] = (uint32_t)st.issued;
+  run[TBGEN_RUN_FLAGS] = st.flags;
+  run[TBGEN_RUN_REG_V] = rec.reg[0] >= 0 ? (uint32_t)rec.reg[0] : NO_REG;
+  run[TBGEN_RUN_REG_S] = rec.reg[1] >= 0 ? (uint32_t)rec.reg[1] : NO_REG;
+  run[TBGEN_RUN_NCHECK] = ncheck;
+  run[TBGEN_RUN_RTL_LAT] = rtl_lat;
+  run[TBGEN_RUN_RTL_CYCLES] = rtl_cycles;
+  run[TBGEN_RUN_RTL_STALLS] = rtl_stalls;
+  static const char *const run_names[TBGEN_RUN_WORDS] = {
+      "magic (ID)", "format version", "program words", "registers",
+      "STEPS to run", "expected ERROR", "expected FAULT_PC",
+      "expected STEPS_DONE", "expected ISSUED (low word)", "expected FLAGS",
+      "register of v (ffffffff: none)", "register of s (ffffffff: none)",
+      "integrations with v, s in expected.hex",
+      "Verilated RTL MUL_LATENCY<<8 | ADD_LATENCY (0: not run)",
+      "Verilated RTL CYCLES (low word)", "Verilated RTL STALLS (low word)"};
+  f = open_out(dir, "run.hex", path, sizeof path);
+  if (!f) goto out;
+  fprintf(f, "// run.hex -- the run for sim/tb_fp3.v (fp3 tbgen %s)\n", in);
+  for (int k = 0; k < TBGEN_RUN_WORDS; k++)
+    fprintf(f, "%08" PRIx32 "  // %2d %s\n", run[k], k, run_names[k]);
+  if (close_out(f, path)) goto out;
+
+  f = open_out(dir, "expected.hex", path, sizeof path);
+  if (!f) goto out;
+  fprintf(f, "// expected.hex -- results of %s, %" PRIu32
+             " integrations, from the ISS (fp3 tbgen)\n", in, steps);
+  fprintf(f, "// final registers r0..r%d\n", FP3_DEFAULT_NUM_REGS - 1);
+  for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++)
+    fprintf(f, "%08" PRIx32 "  // r%u = %.9g\n", final_regs[r], r,
+            (double)fpref_float(final_regs[r]));
+  fprintf(f, "// v, s after every integration\n");
+  for (uint32_t k = 1; k <= ncheck; k++) {
+    uint32_t v = rec.val[0][k - 1], s = rec.val[1][k - 1];
+    fprintf(f, "%08" PRIx32 " %08" PRIx32 "  // %" PRIu32 ": v %.9g s %.9g\n",
+            v, s, k, (double)fpref_float(v), (double)fpref_float(s));
+  }
+  if (close_out(f, path)) goto out;
+  printf("fp3 tbgen: %s -> %s/{program,init,run,expected}.hex: %zu words, "
+         "%" PRIu32 " integrations, %" PRIu32 " checked",
+         in, dir, img.n, steps, ncheck);
+  if (rtl_lat)
+    printf(", Verilator %" PRIu32 " cycles", rtl_cycles);
+  printf("\n");
+  rc = 0;
+out:
+  free(rec.val[0]);
+  free(rec.val[1]);
+  return rc;
+}

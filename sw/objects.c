@@ -1,0 +1,332 @@
+/*
+ * objects.c -- scenes of many ships on the contexts of an engine
+ * (objects.h).
+ */
+#include "objects.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fpenv.h"
+#include "fpref.h"
+
+/* ---- scene files --------------------------------------------------------- */
+
+/* Next whitespace-separated binary32 number of *p; -1 if none or bad. */
+static int next_float(char **p, float *out) {
+  char *s = *p;
+  while (*s == ' ' || *s == '\t') s++;
+  if (*s == '\0') return -1;
+  char *end;
+  errno = 0;
+  *out = strtof(s, &end);
+  if (end == s || (*end != '\0' && *end != ' ' && *end != '\t')) return -1;
+  *p = end;
+  return 0;
+}
+
+static int rest_is_blank(const char *s) {
+  while (*s == ' ' || *s == '\t') s++;
+  return *s == '\0';
+}
+
+int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n) {
+  memset(sc, 0, sizeof *sc);
+  FILE *f = fopen(path, "r");
+  if (!f) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno));
+    return -1;
+  }
+  size_t cap = 0;
+  char line[1024];
+  int lineno = 0, rc = 0;
+  while (rc == 0 && fgets(line, sizeof line, f)) {
+    lineno++;
+    size_t len = strlen(line);
+    if (len == sizeof line - 1 && line[len - 1] != '\n') {
+      snprintf(msg, n, "%s:%d: line too long", path, lineno);
+      rc = -1;
+      break;
+    }
+    char *hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    line[strcspn(line, "\r\n")] = '\0';
+    char *p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '\0') continue;
+    if (p[0] == 'h' && (p[1] == ' ' || p[1] == '\t')) {
+      p++;
+      if (sc->n > 0) {
+        snprintf(msg, n, "%s:%d: 'h' must come before the objects", path, lineno);
+        rc = -1;
+      } else if (next_float(&p, &h) || !rest_is_blank(p)) {
+        snprintf(msg, n, "%s:%d: 'h' wants one number", path, lineno);
+        rc = -1;
+      } else if (!(h > 0.0f) || !isfinite(h)) {
+        snprintf(msg, n, "%s:%d: h = %g: the time step must be finite and > 0", path,
+                 lineno, (double)h);
+        rc = -1;
+      }
+      continue;
+    }
+    float v[5];
+    for (int i = 0; i < 5 && rc == 0; i++) {
+      if (next_float(&p, &v[i])) {
+        snprintf(msg, n, "%s:%d: expected 5 numbers 'T C m v0 s0', %s", path, lineno,
+                 i == 0 ? "found none" : "found fewer or a bad one");
+        rc = -1;
+      }
+    }
+    if (rc == 0 && !rest_is_blank(p)) {
+      snprintf(msg, n, "%s:%d: more than 5 numbers", path, lineno);
+      rc = -1;
+    }
+    if (rc) break;
+    fp3_ship_params o = {v[0], v[1], v[2], h, v[3], v[4]};
+    char why[200];
+    if (fp3_ship_validate(&o, why, sizeof why)) {
+      snprintf(msg, n, "%s:%d: %s", path, lineno, why);
+      rc = -1;
+      break;
+    }
+    if (sc->n == cap) {
+      cap = cap ? 2 * cap : 16;
+      fp3_ship_params *g = realloc(sc->objs, cap * sizeof *g);
+      if (!g) {
+        snprintf(msg, n, "%s: out of memory", path);
+        rc = -1;
+        break;
+      }
+      sc->objs = g;
+    }
+    sc->objs[sc->n++] = o;
+  }
+  if (rc == 0 && ferror(f)) {
+    snprintf(msg, n, "%s: read error", path);
+    rc = -1;
+  }
+  fclose(f);
+  if (rc == 0 && sc->n == 0) {
+    snprintf(msg, n, "%s: no objects in the scene", path);
+    rc = -1;
+  }
+  if (rc == 0) return 0;
+  fp3_scene_free(sc);
+  return -1;
+}
+
+/* ---- generated scenes -------------------------------------------------- */
+
+static uint64_t xorshift(uint64_t *s) {
+  *s ^= *s << 13;
+  *s ^= *s >> 7;
+  *s ^= *s << 17;
+  return *s;
+}
+
+/* Uniform in [lo, hi]. */
+static double uniform(uint64_t *s, double lo, double hi) {
+  return lo + (hi - lo) * (double)(xorshift(s) >> 11) / 9007199254740992.0;
+}
+
+int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
+  memset(sc, 0, sizeof *sc);
+  sc->objs = calloc(n ? n : 1, sizeof *sc->objs);
+  if (!sc->objs) return -1;
+  uint64_t s = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+  if (s == 0) s = 1;
+  for (size_t i = 0; i < n; i++) {
+    double m = pow(10.0, uniform(&s, 0.0, 6.0));
+    double tau = uniform(&s, 0.5, 50.0);
+    double vinf = uniform(&s, -5.0, 30.0);
+    double C = (xorshift(&s) % 8 == 0) ? 0.0 : m / tau;
+    double T = C > 0.0 ? vinf * C : m * uniform(&s, -0.5, 0.5);
+    fp3_ship_params *o = &sc->objs[i];
+    o->T = (float)T;
+    o->C = (float)C;
+    o->m = (float)m;
+    o->h = h;
+    o->v0 = (float)uniform(&s, -10.0, 30.0);
+    o->s0 = (float)uniform(&s, -100.0, 100.0);
+  }
+  sc->n = n;
+  return 0;
+}
+
+void fp3_scene_free(fp3_scene *sc) {
+  free(sc->objs);
+  memset(sc, 0, sizeof *sc);
+}
+
+/* ---- running a scene ------------------------------------------------------ */
+
+/* Per context and integration: the last value written to v and s. */
+typedef struct batch_rec {
+  int vreg, sreg;
+  uint32_t steps;
+  uint32_t *val[2];   /* [ctx * (steps + 1) + integration] */
+  uint8_t *seen[2];
+  int bad_tag;        /* a write tagged beyond the run: engine fault */
+} batch_rec;
+
+static void rec_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
+                      uint32_t integ) {
+  batch_rec *b = ctx;
+  for (int w = 0; w < 2; w++) {
+    if ((int)reg != (w == 0 ? b->vreg : b->sreg)) continue;
+    if (integ > b->steps + 1) {
+      b->bad_tag = 1;
+      continue;
+    }
+    /* Writes after the last endi (integration steps + 1) cannot happen in a
+     * program whose body ends in endi; they count as the last one. */
+    uint32_t k = integ > b->steps ? b->steps : integ;
+    size_t at = (size_t)context * (b->steps + 1) + k;
+    b->val[w][at] = value;
+    b->seen[w][at] = 1;
+  }
+}
+
+static void set_inputs(const fp3_image *img, const fp3_ship_params *o, uint32_t *regs) {
+  const float values[FP3_IN_COUNT] = {
+      [FP3_IN_T] = o->T, [FP3_IN_C] = o->C, [FP3_IN_M] = o->m,
+      [FP3_IN_MINV] = fp3_ship_minv(o->m), [FP3_IN_H] = o->h,
+      [FP3_IN_V0] = o->v0, [FP3_IN_S0] = o->s0};
+  for (int i = 0; i < FP3_IN_COUNT; i++)
+    if (img->in_reg[i] >= 0) regs[img->in_reg[i]] = fpref_bits(values[i]);
+}
+
+int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
+                    uint32_t steps, fpref_mode mode, const fp3_integrator *integ,
+                    fp3_objects_result *res, char *msg, size_t n) {
+  memset(res, 0, sizeof *res);
+  const unsigned nctx = e->config.num_contexts;
+  if (img->out_reg[FP3_OUT_V] < 0 || img->out_reg[FP3_OUT_S] < 0) {
+    snprintf(msg, n, "the program has no '.out v, rN' and '.out s, rN'");
+    return -1;
+  }
+  if (!fpenv_supported(mode)) {
+    snprintf(msg, n, "this host cannot run the golden model in that mode");
+    return -1;
+  }
+  /* Two values and two flags per context and integration. */
+  double bytes = 10.0 * nctx * ((double)steps + 1.0);
+  if (bytes > 2e9) {
+    snprintf(msg, n, "%u contexts x %u integrations is too much to record (%.0f MB)",
+             nctx, steps, bytes / 1e6);
+    return -1;
+  }
+  batch_rec b = {img->out_reg[FP3_OUT_V], img->out_reg[FP3_OUT_S], steps, {NULL, NULL},
+                 {NULL, NULL}, 0};
+  size_t slots = (size_t)nctx * (steps + 1);
+  res->v = calloc(sc->n, sizeof *res->v);
+  res->s = calloc(sc->n, sizeof *res->s);
+  uint32_t *regs = calloc(e->config.num_regs, sizeof *regs);
+  for (int w = 0; w < 2; w++) {
+    b.val[w] = malloc(slots * sizeof *b.val[w]);
+    b.seen[w] = malloc(slots);
+  }
+  int rc = -1;
+  if (!res->v || !res->s || !regs || !b.val[0] || !b.val[1] || !b.seen[0] || !b.seen[1]) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  if (fp3_engine_load(e, img->words, img->n)) {
+    snprintf(msg, n, "%s", fp3_engine_error(e));
+    goto out;
+  }
+  res->objects = sc->n;
+  res->contexts = nctx;
+  res->first_object = SIZE_MAX;
+  res->error_object = SIZE_MAX;
+  for (size_t first = 0; first < sc->n; first += nctx) {
+    unsigned k = (unsigned)(sc->n - first < nctx ? sc->n - first : nctx);
+    for (unsigned c = 0; c < k; c++) {
+      memset(regs, 0, e->config.num_regs * sizeof *regs);
+      set_inputs(img, &sc->objs[first + c], regs);
+      for (unsigned r = 0; r < e->config.num_regs; r++) {
+        if (fp3_engine_write_ctx_reg(e, c, r, regs[r])) {
+          snprintf(msg, n, "%s", fp3_engine_error(e));
+          goto out;
+        }
+      }
+    }
+    for (int w = 0; w < 2; w++) memset(b.seen[w], 0, slots);
+    fp3_observer obs = {.ctx = &b, .on_ctx_write = rec_write};
+    fp3_status st;
+    if (fp3_engine_run_contexts(e, steps, k, &obs, &st)) {
+      snprintf(msg, n, "%s", fp3_engine_error(e));
+      goto out;
+    }
+    if (b.bad_tag) {
+      snprintf(msg, n, "engine fault: a write tagged with an integration past the run");
+      goto out;
+    }
+    res->batches++;
+    res->cycles += st.cycles;
+    res->issued += st.issued;
+    res->stalls += st.stalls;
+    for (int u = 0; u < 4; u++) res->unit_issued[u] += st.unit_issued[u];
+    res->flags |= st.flags;
+
+    for (unsigned c = 0; c < k; c++) {
+      size_t obj = first + c;
+      fp3_ctx_status cs;
+      if (fp3_engine_ctx_status(e, c, &cs)) {
+        snprintf(msg, n, "%s", fp3_engine_error(e));
+        goto out;
+      }
+      if (cs.error != FP3_ERR_NONE && res->error == FP3_ERR_NONE) {
+        res->error = cs.error;
+        res->error_object = obj;
+        res->error_pc = cs.fault_pc;
+      }
+      /* Golden model of this object, every integration. */
+      const fp3_ship_params *o = &sc->objs[obj];
+      fp3_istate g;
+      integ->init(&g, o);
+      uint32_t cur[2] = {fpref_bits(o->v0), fpref_bits(o->s0)};
+      size_t base = (size_t)c * (steps + 1);
+      for (uint32_t i = 1; i <= steps && i <= cs.steps_done; i++) {
+        fpenv_saved env;
+        fpenv_enter(mode, &env);
+        integ->step(&g);
+        fpenv_leave(&env);
+        const uint32_t want[2] = {fpref_bits(g.v), fpref_bits(g.s)};
+        for (int w = 0; w < 2; w++) {
+          if (b.seen[w][base + i]) cur[w] = b.val[w][base + i];
+          if (cur[w] != want[w]) {
+            if (res->mismatches == 0) {
+              res->first_object = obj;
+              res->first_step = i;
+            }
+            res->mismatches++;
+          }
+        }
+      }
+      if (fp3_engine_read_ctx_reg(e, c, (unsigned)b.vreg, &res->v[obj]) ||
+          fp3_engine_read_ctx_reg(e, c, (unsigned)b.sreg, &res->s[obj])) {
+        snprintf(msg, n, "%s", fp3_engine_error(e));
+        goto out;
+      }
+    }
+  }
+  rc = 0;
+out:
+  for (int w = 0; w < 2; w++) {
+    free(b.val[w]);
+    free(b.seen[w]);
+  }
+  free(regs);
+  if (rc) fp3_objects_result_free(res);
+  return rc;
+}
+
+void fp3_objects_result_free(fp3_objects_result *res) {
+  free(res->v);
+  free(res->s);
+  res->v = res->s = NULL;
+}

@@ -1,0 +1,76 @@
+/*
+ * objects.h -- scenes of many ships, run on the contexts of an engine and
+ * checked object by object against the golden model.
+ *
+ * Scene file: text, one object per line, `#` starts a comment:
+ *
+ *   # a harbour                       (comment)
+ *   h 0.0166666675                    (time step [s], once, before objects)
+ *   # T [N]   C [kg/s]   m [kg]   v0 [m/s]   s0 [m]
+ *   50000     5000       10000    0          0
+ *   0         300        5000     12.5       100
+ *
+ * Numbers are read as binary32 (strtof).  Every object must be physical:
+ * m > 0, C >= 0, all values finite (fp3_ship_validate); h > 0.
+ */
+#ifndef FP3_OBJECTS_H
+#define FP3_OBJECTS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine.h"
+#include "golden.h"
+#include "image.h"
+#include "integrators.h"
+
+/* A scene: n objects, all with the same h (objs[i].h). */
+typedef struct fp3_scene {
+  fp3_ship_params *objs; /* malloc'd */
+  size_t n;
+} fp3_scene;
+
+/* Read a scene file.  h: the time step when the file has no `h` line.
+ * Returns 0, or -1 with "FILE:LINE: reason" in msg (nothing allocated). */
+int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n);
+
+/* A reproducible random scene of n ships (seeded xorshift): masses
+ * log-uniform in [1, 1e6] kg, time constants m/C in [0.5, 50] s (one ship
+ * in eight without drag), terminal velocities in [-5, 30] m/s, v0 in
+ * [-10, 30] m/s, s0 in [-100, 100] m.  Returns 0 or -1 (out of memory). */
+int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc);
+
+void fp3_scene_free(fp3_scene *sc);
+
+/* Outcome of a multi-object run. */
+typedef struct fp3_objects_result {
+  size_t objects;
+  unsigned contexts;       /* contexts per batch (the engine's)            */
+  size_t batches;
+  uint64_t cycles;         /* sum over batches                             */
+  uint64_t issued, stalls;
+  uint64_t unit_issued[4]; /* per unit, FP3_UNIT_*                          */
+  uint32_t flags;          /* sticky exception flags, all batches          */
+  unsigned error;          /* first context error (enum fp3_error)         */
+  size_t error_object;     /* ... of this object                           */
+  uint32_t error_pc;
+  uint64_t mismatches;     /* (object, integration, v or s) != golden      */
+  size_t first_object;     /* first mismatch                               */
+  uint32_t first_step;
+  uint32_t *v, *s;         /* final v and s of each object (malloc'd)       */
+} fp3_objects_result;
+
+/* Run every object of the scene for `steps` integrations on the engine, in
+ * batches of e->config.num_contexts contexts, writing each object's `.in`
+ * registers, and compare v and s of every object after every integration
+ * with the integrator's golden model (run in core options `mode`).
+ * Returns 0 when the runs took place (mismatches and errors are in *res),
+ * or -1 with a message (engine failure, out of memory, program without
+ * .out v/s). */
+int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
+                    uint32_t steps, fpref_mode mode, const fp3_integrator *integ,
+                    fp3_objects_result *res, char *msg, size_t n);
+
+void fp3_objects_result_free(fp3_objects_result *res);
+
+#endif /* FP3_OBJECTS_H */

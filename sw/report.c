@@ -1,0 +1,90 @@
+/*
+ * report.c -- formatting helpers shared by the CLI reports (report.h).
+ */
+#include "report.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "fp3_isa.h"
+
+void fp3_flags_text(uint32_t flags, char *buf, size_t n) {
+  static const struct {
+    const char *name;
+    unsigned bit;
+  } tab[] = {
+#define X(name, bit) {#name, bit},
+      FP3_FLAGS(X)
+#undef X
+  };
+  buf[0] = '\0';
+  for (size_t i = 0; i < sizeof tab / sizeof tab[0]; i++)
+    if (flags & tab[i].bit) {
+      size_t len = strlen(buf);
+      snprintf(buf + len, n - len, "%s%s", len ? " " : "", tab[i].name);
+    }
+  for (char *p = buf; *p; p++)
+    if (*p >= 'A' && *p <= 'Z') *p = (char)(*p - 'A' + 'a');
+  if (!buf[0]) snprintf(buf, n, "none");
+}
+
+const char *fp3_error_text(unsigned err) {
+  switch (err) {
+#define X(name, code, desc) \
+  case code:                \
+    return desc;
+    FP3_ERRORS(X)
+#undef X
+  default:
+    return "unknown error";
+  }
+}
+
+const char *fp3_error_name(unsigned err) {
+  switch (err) {
+#define X(name, code, desc) \
+  case code:                \
+    return #name;
+    FP3_ERRORS(X)
+#undef X
+  default:
+    return "UNKNOWN";
+  }
+}
+
+/* Distance in units in the last place between two binary32 patterns. */
+int64_t fp3_ulp_distance(uint32_t a, uint32_t b) {
+  int64_t x = (a & 0x80000000u) ? -(int64_t)(a & 0x7fffffffu) : (int64_t)a;
+  int64_t y = (b & 0x80000000u) ? -(int64_t)(b & 0x7fffffffu) : (int64_t)b;
+  return x > y ? x - y : y - x;
+}
+
+void fp3_json_string(FILE *f, const char *s) {
+  fputc('"', f);
+  for (; *s; s++) {
+    unsigned char c = (unsigned char)*s;
+    if (c == '"' || c == '\\')
+      fprintf(f, "\\%c", c);
+    else if (c < 0x20)
+      fprintf(f, "\\u%04x", c);
+    else
+      fputc(c, f);
+  }
+  fputc('"', f);
+}
+
+/* %.9g for a float, %.17g for a double; null when not finite (JSON). */
+void fp3_json_float(FILE *f, float x) {
+  if (isfinite(x))
+    fprintf(f, "%.9g", (double)x);
+  else
+    fputs("null", f);
+}
+
+void fp3_json_double(FILE *f, double x) {
+  if (isfinite(x))
+    fprintf(f, "%.17g", x);
+  else
+    fputs("null", f);
+}
+

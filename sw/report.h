@@ -1,0 +1,28 @@
+/*
+ * report.h -- small formatting helpers shared by the CLI's reports.
+ */
+#ifndef FP3_REPORT_H
+#define FP3_REPORT_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+/* Names of the set exception flags ("inexact underflow"), or "none". */
+void fp3_flags_text(uint32_t flags, char *buf, size_t n);
+
+/* Description ("illegal instruction") and name ("ILLEGAL_INSN") of a run
+ * error code (enum fp3_error). */
+const char *fp3_error_text(unsigned err);
+const char *fp3_error_name(unsigned err);
+
+/* Distance in units in the last place between two binary32 patterns
+ * (signed-magnitude order, so -0 and +0 are 0 apart). */
+int64_t fp3_ulp_distance(uint32_t a, uint32_t b);
+
+/* JSON values: a string with escapes; a float (%.9g, round-trips to the
+ * same binary32) or a double (%.17g), null when not finite. */
+void fp3_json_string(FILE *f, const char *s);
+void fp3_json_float(FILE *f, float x);
+void fp3_json_double(FILE *f, double x);
+
+#endif /* FP3_REPORT_H */

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# test_wave.sh -- make wave: the RTL under Icarus Verilog, self-checked
+# against the ISS (values) and the Verilated RTL (cycles), and the ways it
+# must fail: a corrupted expected value, a hung run (watchdog), a missing
+# or malformed program.  Also: every signal of sim/fp3.gtkw is in the
+# waveform, several contexts, FST output, Verilator accepts the testbench,
+# and the Verilator waveform window of fp3 run --trace/--trace-window.
+#
+# Runs from anywhere; uses $FP3_BIN (set by mk/sw.mk) or build/fp3.
+set -u
+cd "$(dirname "$0")/.."
+FP3=${FP3_BIN:-$PWD/build/fp3}
+if [ ! -x "$FP3" ]; then echo "test_wave: $FP3 not built"; exit 1; fi
+T=$(mktemp -d /tmp/fp3_test_wave.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+W=$T/wave
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+has() { grep -q -- "$2" "$1" || { bad "$3: output lacks '$2'"; sed 's/^/    /' "$1" | tail -15; return 1; }; }
+
+# ---- make wave on the ship program: PASS, Verilator's cycle count --------
+start=$(date +%s)
+make -s --no-print-directory wave STEPS=3 WAVE_DIR="$W" >"$T/make.log" 2>&1; rc=$?
+secs=$(( $(date +%s) - start ))
+if [ $rc -eq 0 ]; then ok; else bad "make wave exited $rc"; tail -30 "$T/make.log"; fi
+has "$T/make.log" "^PASS: tb_fp3: 1 context(s) x 3 integrations" "make wave" && ok
+# the cycle comparison with Verilator took place (run.hex had its counts)
+has "$T/make.log" "^tb_fp3: Verilator: [1-9][0-9]* cycles" "make wave" && ok
+echo "make wave STEPS=3: ${secs}s, $(grep -c . "$W/expected.hex") expected lines," \
+     "$(du -k "$W/fp3.vcd" 2>/dev/null | cut -f1) KiB VCD"
+
+# ---- the waveform holds every signal of the GTKWave view ----------------
+if [ -s "$W/fp3.vcd" ] && grep -q '^\$enddefinitions' "$W/fp3.vcd"; then ok; else bad "no VCD"; fi
+awk '
+  /^\$scope/ { scope[++d] = $3 }
+  /^\$upscope/ { d-- }
+  /^\$var/ { n = ""; for (i = 1; i <= d; i++) n = n scope[i] "."; print n $5 }
+  /^\$enddefinitions/ { exit }' "$W/fp3.vcd" | sort -u >"$T/vcd.names"
+missing=0
+while read -r sig; do
+  base=${sig%%\[*}
+  grep -qx -- "$base" "$T/vcd.names" || { echo "  gtkw signal not in the VCD: $sig"; missing=1; }
+done < <(grep -E '^tb_fp3\.' sim/fp3.gtkw)
+[ $missing -eq 0 ] && ok || bad "sim/fp3.gtkw names signals the waveform lacks"
+[ "$(grep -cE '^-' sim/fp3.gtkw)" -ge 14 ] && ok || bad "sim/fp3.gtkw: groups missing"
+
+VVP=(vvp -n "$W/tb_fp3.vvp")
+
+# ---- negative: a corrupted expected value makes it FAIL ------------------
+# corrupt FILE PATTERN: flip the lowest bit of the first word on the first
+# line matching PATTERN.
+corrupt() {
+  local line n word
+  line=$(grep -n -- "$2" "$1" | head -1)
+  n=${line%%:*}; line=${line#*:}; word=${line%% *}
+  sed "${n}s/^$word/$(printf '%08x' $(( 16#$word ^ 1 )))/" "$1"
+}
+cp -r "$W" "$T/bad_v"
+corrupt "$W/expected.hex" '// 2: v' >"$T/bad_v/expected.hex"   # v after integration 2
+cmp -s "$W/expected.hex" "$T/bad_v/expected.hex" && bad "could not corrupt expected.hex"
+"${VVP[@]}" +dir="$T/bad_v" >"$T/bad_v.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "corrupted v: vvp exited 0"
+has "$T/bad_v.log" "MISMATCH: context 0, integration 2: v = " "corrupted v" && ok
+has "$T/bad_v.log" "^FAIL: tb_fp3" "corrupted v" && ok
+
+cp -r "$W" "$T/bad_r"                                           # final s (r6)
+corrupt "$W/expected.hex" '// r6 = ' >"$T/bad_r/expected.hex"
+"${VVP[@]}" +dir="$T/bad_r" >"$T/bad_r.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "corrupted r6: vvp exited 0"
+has "$T/bad_r.log" "ERROR: context 0: r6 = " "corrupted r6" && ok
+
+cp -r "$W" "$T/bad_c"                               # Verilator's cycle count
+corrupt "$W/run.hex" 'Verilated RTL CYCLES' >"$T/bad_c/run.hex"
+"${VVP[@]}" +dir="$T/bad_c" >"$T/bad_c.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "corrupted cycle count: vvp exited 0"
+has "$T/bad_c.log" "ERROR: CYCLES vs Verilator" "corrupted cycle count" && ok
+
+# ---- negative: a run that never ends trips the watchdog ------------------
+start=$(date +%s)
+"${VVP[@]}" +dir="$W" +steps=4000000000 >"$T/hang.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "endless run: vvp exited 0"
+has "$T/hang.log" "^WATCHDOG: run not done within the cycle budget at cycle [0-9]* .*: pc [0-9]" "endless run" && ok
+has "$T/hang.log" "^FAIL: tb_fp3: the run hung" "endless run" && ok
+[ $(( $(date +%s) - start )) -le 10 ] && ok || bad "the watchdog took too long"
+
+# ---- missing input files -------------------------------------------------
+"${VVP[@]}" +dir="$T/nowhere" >"$T/nodir.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "missing files: vvp exited 0"
+has "$T/nodir.log" "FAIL: tb_fp3: cannot open $T/nowhere/run.hex" "missing files" && ok
+
+# ---- several contexts share the arithmetic unit, every result checked ---
+"${VVP[@]}" +dir="$W" +contexts=4 >"$T/ctx.log" 2>&1; rc=$?
+[ $rc -eq 0 ] && ok || bad "+contexts=4: vvp exited $rc"
+has "$T/ctx.log" "^PASS: tb_fp3: 4 context(s) x 3 integrations, v and s bit-exact after each (24 values)" "+contexts=4" && ok
+
+# ---- FST -----------------------------------------------------------------
+vvp -n "$W/tb_fp3.vvp" -fst +dir="$W" +wave="$T/fp3.fst" >"$T/fst.log" 2>&1; rc=$?
+[ $rc -eq 0 ] && [ -s "$T/fst.log" ] && [ -s "$T/fp3.fst" ] && ok || bad "vvp -fst: exit $rc, no FST"
+
+# ---- bad input: the assembler's error, make fails ------------------------
+make -s --no-print-directory wave PROGRAM="$T/missing.s" WAVE_DIR="$T/w2" >"$T/miss.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "make wave with a missing program exited 0"
+has "$T/miss.log" "$T/missing.s" "missing program" && ok
+printf 'body:\n  mul r1, r2\n  endi body\n' >"$T/bad.s"
+make -s --no-print-directory wave PROGRAM="$T/bad.s" WAVE_DIR="$T/w3" >"$T/bad.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "make wave with a malformed program exited 0"
+has "$T/bad.log" "bad.s:2:" "malformed program" && ok
+[ ! -e "$T/w3/tb_fp3.vvp" ] && ok || bad "make wave went on after the assembler error"
+
+# ---- Verilator accepts the testbench (lint, -Wall, its waivers) ---------
+out=$(verilator --lint-only -Wall --timing -Irtl -y rtl --top-module tb_fp3 sim/tb_fp3.vlt \
+      sim/tb_fp3.v 2>&1); rc=$?
+[ $rc -eq 0 ] && [ -z "$out" ] && ok || { bad "verilator lint of the testbench"; echo "$out" | head -20; }
+
+# ---- Verilator: fp3 run --trace writes a window of cycles ----------------
+# timestamps of a VCD: two per cycle, plus the reset and the INFO reads
+# before the first run (13)
+stamps() { grep -c '^#' "$1"; }
+"$FP3" run --steps 300 --trace "$T/def.vcd" >/dev/null 2>"$T/def.err"; rc=$?
+[ $rc -eq 0 ] && ok || bad "fp3 run --trace exited $rc"
+has "$T/def.err" "trace $T/def.vcd: cycles 0..9999 of the run's [0-9]* " "default window" && ok
+n=$(stamps "$T/def.vcd"); [ "$n" -ge 20000 ] && [ "$n" -le 20020 ] && ok || bad "default window: $n timestamps"
+"$FP3" run --steps 300 --trace "$T/win.vcd" --trace-window 1000:50 >/dev/null 2>"$T/win.err"; rc=$?
+[ $rc -eq 0 ] && ok || bad "fp3 run --trace-window exited $rc"
+has "$T/win.err" "cycles 1000..1049 of the run" "--trace-window 1000:50" && ok
+n=$(stamps "$T/win.vcd"); [ "$n" -ge 100 ] && [ "$n" -le 120 ] && ok || bad "window 1000:50: $n timestamps"
+"$FP3" run --steps 2 --trace "$T/all.vcd" --trace-window 0:all >/dev/null 2>"$T/all.err"
+has "$T/all.err" "cycles 0\.\.178 of the run's 179" "--trace-window 0:all" && ok
+for arg in 5 5:0 x:3 3:y -1:5; do
+  "$FP3" run --steps 2 --trace "$T/x.vcd" --trace-window "$arg" >/dev/null 2>&1
+  [ $? -eq 2 ] && ok || bad "--trace-window $arg accepted"
+done
+
+echo "test_wave: $pass passed, $fail failed"
+[ $fail -eq 0 ]
