@@ -151,5 +151,52 @@ EOF
   then ok; else bad "run --json output is not the expected JSON: $json"; fi
 fi
 
+# ---- many objects: scenes ---------------------------------------------------
+cat > "$T/harbour.scene" <<'EOF'
+# a small harbour
+h 0.0166666675
+# T       C      m        v0    s0
+50000     5000   10000    0     0
+0         300    5000     12.5  100    # coasting
+2000      0      1000     1     -5     # no drag
+-30       12     0.75     4     0
+0         0      2e6      0     0      # moored
+EOF
+expect 0 "PASS: 5 objects" -- run --scene "$T/harbour.scene" --steps 300
+expect 0 "PASS: 5 objects" -- "${ISS[@]}" --scene "$T/harbour.scene" --steps 300
+expect 0 "PASS: 40 objects" -- run --objects 40 --seed 7 --steps 100
+printf '1 2 3 4\n' > "$T/short.scene"
+expect 2 "short.scene:1: expected 5 numbers" -- run --scene "$T/short.scene"
+printf '# ok\n1 2 3 4 5\n1 2 0 4 5\n' > "$T/mass.scene"
+expect 2 "mass.scene:3: parameter m = 0" -- run --scene "$T/mass.scene"
+printf '1 -2 3 4 5\n' > "$T/drag.scene"
+expect 2 "drag.scene:1: parameter C = -2" -- run --scene "$T/drag.scene"
+printf '1 2 3 nan 5\n' > "$T/nan.scene"
+expect 2 "nan.scene:1: parameter v0" -- run --scene "$T/nan.scene"
+printf '1 2 3 4 5 6\n' > "$T/long.scene"
+expect 2 "long.scene:1: more than 5 numbers" -- run --scene "$T/long.scene"
+printf '1 2 3 4 5\nh 0.1\n' > "$T/lateh.scene"
+expect 2 "lateh.scene:2: 'h' must come before" -- run --scene "$T/lateh.scene"
+printf '# nothing\n' > "$T/empty.scene"
+expect 2 "no objects" -- run --scene "$T/empty.scene"
+expect 2 "No such file" -- run --scene "$T/missing.scene"
+expect 2 "want 1..1000000 objects" -- run --objects 0
+expect 2 "want 1..1000000 objects" -- run --objects 1000001
+expect 2 "seed goes with" -- run --seed 3
+expect 2 "has 5 objects" -- run --scene "$T/harbour.scene" --objects 4
+json=$("$FP3" run --scene "$T/harbour.scene" --steps 50 --json 2>&1); rc=$?
+[ "$rc" -eq 0 ] && ok || bad "run --scene --json exit $rc"
+if python3 - "$json" <<'EOF'
+import json, sys
+d = json.loads(sys.argv[1])
+assert d["objects"] == 5 and len(d["results"]) == 5, d
+assert d["golden_mismatches"] == 0 and d["error"] == "NONE"
+assert d["cycles_per_object_step"] > 0 and "utilization" in d
+moored = d["results"][4]
+assert moored["v"] == 0 and moored["s"] == 0          # at rest stays at rest
+assert abs(d["results"][0]["v"] - d["results"][0]["v_exact"]) < 1e-3
+EOF
+then ok; else bad "run --scene --json output: $json"; fi
+
 echo "test_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -446,10 +446,15 @@ static void random_program(fp3_image *img, unsigned nregs) {
   img->n = n;
 }
 
-/* Programs rotate over the four core configurations. */
+/* How many random programs (FP3_RANDOM_PROGRAMS, default 10^4: make
+ * bench-cosim runs 10^6). */
+static long random_programs = 10000;
+
+/* Every program draws its core configuration from its own seed, so a
+ * failure replays alone: FP3_RANDOM_SEED=<seed> FP3_RANDOM_PROGRAMS=1. */
 static void test_random_programs(void **state) {
   (void)state;
-  const int programs = 10000;
+  const long programs = random_programs;
   fp3_engine *er[4], *ei[4];
   for (int m = 0; m < 4; m++) {
     er[m] = fp3_engine_rtl_new_mode(all_modes[m], NULL);
@@ -457,8 +462,10 @@ static void test_random_programs(void **state) {
     assert_non_null(er[m]);
     assert_non_null(ei[m]);
   }
-  for (int p = 0; p < programs; p++) {
+  for (long p = 0; p < programs; p++) {
     uint64_t seed = rng_state;
+    int mi = (int)(rnd() % 4);
+    if (p && p % 100000 == 0) print_message("%ld random programs\n", p);
     fp3_image img;
     unsigned nregs = 2 + (unsigned)(rnd() % 5);
     random_program(&img, nregs);
@@ -466,12 +473,12 @@ static void test_random_programs(void **state) {
     for (unsigned r = 0; r < 8; r++) init[r] = random_value();
     uint32_t steps = 1 + (uint32_t)(rnd() % 5);
     capture a, b;
-    run_on(er[p % 4], &img, init, 8, steps, &a);
-    run_on(ei[p % 4], &img, init, 8, steps, &b);
-    char what[96];
-    snprintf(what, sizeof what, "random program %d (seed 0x%016llx, %s%s)", p,
-             (unsigned long long)seed, fpenv_round_name(all_modes[p % 4]),
-             all_modes[p % 4].ftz ? "+ftz" : "");
+    run_on(er[mi], &img, init, 8, steps, &a);
+    run_on(ei[mi], &img, init, 8, steps, &b);
+    char what[128];
+    snprintf(what, sizeof what, "random program %ld (%s%s; replay: FP3_RANDOM_SEED=0x%016llx)",
+             p, fpenv_round_name(all_modes[mi]), all_modes[mi].ftz ? "+ftz" : "",
+             (unsigned long long)seed);
     compare_captures(&a, &b, what);
     capture_free(&a);
     capture_free(&b);
@@ -711,6 +718,15 @@ static int teardown(void **state) {
 }
 
 int main(void) {
+  const char *count = getenv("FP3_RANDOM_PROGRAMS");
+  const char *seed = getenv("FP3_RANDOM_SEED");
+  if (count) random_programs = strtol(count, NULL, 0);
+  if (seed) {
+    /* Replay: only the random programs, from that seed. */
+    rng_state = strtoull(seed, NULL, 0);
+    const struct CMUnitTest replay[] = {cmocka_unit_test(test_random_programs)};
+    return cmocka_run_group_tests(replay, setup, teardown);
+  }
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_ship_rk4),
       cmocka_unit_test(test_ship_rk4_core_configs),
