@@ -22,6 +22,11 @@ RTL_CFG_rtz_ftz := 1 1
 RTL_CFG_nc1     := 0 0 1
 RTL_CFG_nc3     := 0 0 3
 RTL_TEST_CONFIGS := nc1 nc3
+# ... and the throughput benchmark with 16, 32 and 64.
+RTL_CFG_nc16    := 0 0 16
+RTL_CFG_nc32    := 0 0 32
+RTL_CFG_nc64    := 0 0 64
+RTL_BENCH_CONFIGS := nc16 nc32 nc64
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
 rtl_archive = $(call rtl_objdir,$(1))/Vfp3_top_$(1)__ALL.a
@@ -52,7 +57,7 @@ $(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h $(call rtl_archive,$(1))
 	@mkdir -p $$(dir $$@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef
-$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 # rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
@@ -77,13 +82,17 @@ lint: $(SETUP_STAMP)
 # (constraints/ has the clock of each flow); then the area of each FP core
 # in each ROUND/FTZ configuration on xc2v and xc7 (issue 3), as a table in
 # $(SYNTH_DIR)/fp_cores_area.{md,csv}.  scripts/synth.sh fails on any latch
-# or combinational loop.  `make synth SYNTH_FLOWS=ecp5` for one flow.
-SYNTH_DIR   := $(BUILD)/synth
-SYNTH_FLOWS ?= xc2v xc7 ecp5
+# or combinational loop.  `make synth SYNTH_FLOWS=ecp5` for one flow;
+# SYNTH_PARAMS="NUM_CONTEXTS=1" overrides parameters of fp3_axil (the
+# default build's 8-context register file takes Yosys tens of minutes).
+SYNTH_DIR    := $(BUILD)/synth
+SYNTH_FLOWS  ?= xc2v xc7 ecp5
+SYNTH_PARAMS ?=
 synth: $(SETUP_STAMP)
-	@echo "synth: Yosys $(SYNTH_FLOWS) for fp3_axil/$(RTL_TOP), FP cores on xc2v/xc7; results in $(SYNTH_DIR)/"
+	@echo "synth: Yosys $(SYNTH_FLOWS) for fp3_axil/$(RTL_TOP) $(SYNTH_PARAMS), FP cores on xc2v/xc7; results in $(SYNTH_DIR)/"
 	@set -e; for flow in $(SYNTH_FLOWS); do \
-	  bash scripts/synth.sh $(SYNTH_DIR) fp3_axil $$flow -keep $(RTL_TOP) $(RTL_SRC); done
+	  bash scripts/synth.sh $(SYNTH_DIR) fp3_axil $$flow $(SYNTH_PARAMS) -keep $(RTL_TOP) \
+	    $(RTL_SRC); done
 	@set -e; for core in fp_add fp_mul; do for r in 0 1; do for f in 0 1; do \
 	  for flow in xc2v xc7; do \
 	    bash scripts/synth.sh $(SYNTH_DIR) $$core $$flow ROUND=$$r FTZ=$$f $(RTL_SRC); \
@@ -112,3 +121,15 @@ sim: $(BUILD)/fp3
 .PHONY: bench-cosim
 bench-cosim: $(BUILD)/tests/test_engines
 	FP3_RANDOM_PROGRAMS=1000000 $(BUILD)/tests/test_engines
+
+# ---- throughput of many objects (make bench-parallel) -------------------------
+RTL_BENCH_OBJS := $(foreach c,$(RTL_BENCH_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+$(BUILD)/bench_parallel: sw/bench_parallel.c $(BUILD)/sw/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS) $(RTL_BENCH_OBJS)
+	$(CC) $(CFLAGS) -c $< -o $@.o
+	$(CXX) -o $@ $@.o $(BUILD)/sw/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) $(RTL_BENCH_OBJS) \
+	  $(LDLIBS_SW) $(VERILATOR_LDLIBS)
+
+.PHONY: bench-parallel
+bench-parallel: $(BUILD)/bench_parallel
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/bench_parallel --steps 200 --csv $(BUILD)/bench/parallel.csv

@@ -12,7 +12,7 @@
 # mk/fpu.mk (RTL_OBJS/RTL_LIBS, FPU_OBJS/FPU_LIBS), with $(CXX) since they
 # are C++.
 
-SW_LIB_SRCS  := $(filter-out sw/fp3.c sw/gen_isa.c,$(wildcard sw/*.c))
+SW_LIB_SRCS  := $(filter-out sw/fp3.c sw/gen_isa.c sw/bench_parallel.c,$(wildcard sw/*.c))
 SW_LIB_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw/%.o,$(SW_LIB_SRCS))
 SW_SAN_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw-san/%.o,$(SW_LIB_SRCS))
 SW_LIB       := $(BUILD)/sw/libfp3.a
