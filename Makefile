@@ -58,7 +58,11 @@ $(BUILD)/verilated/%.o: $(VERILATOR_ROOT_INC)/%.cpp | $(SETUP_STAMP)
 	@mkdir -p $(dir $@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -c $< -o $@
 
-include $(wildcard mk/*.mk)
+# The fragments that define the models and the library come first: the
+# others name their variables in prerequisites, expanded when read.
+MK_BASE := mk/rtl.mk mk/fpu.mk mk/sw.mk
+include $(MK_BASE)
+include $(filter-out $(MK_BASE),$(sort $(wildcard mk/*.mk)))
 
 clean:
 	rm -rf $(BUILD)

@@ -13,6 +13,8 @@
  */
 #include "bench.h"
 
+#include "cliopt.h"
+
 #include <errno.h>
 #include <float.h>
 #include <inttypes.h>
@@ -334,23 +336,6 @@ static void usage_bench(FILE *f) {
           "failed; 2 bad arguments.\n");
 }
 
-static int bopt(int argc, char **argv, int *i, const char *name,
-                const char **val) {
-  const char *a = argv[*i];
-  size_t n = strlen(name);
-  if (strncmp(a, name, n) != 0) return 0;
-  if (a[n] == '=') {
-    *val = a + n + 1;
-    return 1;
-  }
-  if (a[n] != '\0') return 0;
-  if (*i + 1 >= argc) {
-    fprintf(stderr, "fp3 bench: option %s needs a value\n", name);
-    return -1;
-  }
-  *val = argv[++*i];
-  return 1;
-}
 
 static int parse_pos(const char *opt, const char *s, double *x) {
   char *end;
@@ -711,31 +696,31 @@ int fp3_cmd_bench(int argc, char **argv) {
       usage_bench(stdout);
       return 0;
     }
-    if ((r = bopt(argc, argv, &i, "--out", &v)) != 0) {
+    if ((r = fp3_opt_value(argc, argv, &i, "bench", "--out", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       dir = v;
-    } else if ((r = bopt(argc, argv, &i, "--from", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--from", &v)) != 0) {
       if (r < 0 || parse_pos("--from", v, &from)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--to", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--to", &v)) != 0) {
       if (r < 0 || parse_pos("--to", v, &to)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--per-decade", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--per-decade", &v)) != 0) {
       if (r < 0 || parse_pos("--per-decade", v, &perdec)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--t-end", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--t-end", &v)) != 0) {
       if (r < 0 || parse_pos("--t-end", v, &t_end)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--h-over-tau", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--h-over-tau", &v)) != 0) {
       if (r < 0 || parse_pos("--h-over-tau", v, &single)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--only", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--only", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       if (strcmp(v, "sweep") && strcmp(v, "stability") && strcmp(v, "long")) {
         fprintf(stderr, "fp3 bench: --only '%s': sweep, stability or long\n", v);
         return EXIT_USAGE;
       }
       only = v;
-    } else if ((r = bopt(argc, argv, &i, "--long-steps", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--long-steps", &v)) != 0) {
       if (r < 0 || parse_count("--long-steps", v, &nlong, 1)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--rtl-long-steps", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--rtl-long-steps", &v)) != 0) {
       if (r < 0 || parse_count("--rtl-long-steps", v, &nrtl, 1)) return EXIT_USAGE;
-    } else if ((r = bopt(argc, argv, &i, "--repeats", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--repeats", &v)) != 0) {
       if (r < 0 || parse_count("--repeats", v, &reps, 0)) return EXIT_USAGE;
       if (reps < 1 || reps > 64) {
         fprintf(stderr, "fp3 bench: --repeats %s: 1..64\n", v);

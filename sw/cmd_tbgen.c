@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "asm.h"
+#include "cliopt.h"
 #include "cmd_tbgen.h"
 #include "engine.h"
 #include "fp3_isa.h"
@@ -55,24 +56,6 @@ static void usage_tbgen(FILE *f) {
           FP3_DEFAULT_NUM_REGS, TBGEN_MAX_CHECK);
 }
 
-/* "--name VALUE" or "--name=VALUE" (as in fp3.c). */
-static int opt_val(int argc, char **argv, int *i, const char *name,
-                   const char **val) {
-  const char *a = argv[*i];
-  size_t n = strlen(name);
-  if (strncmp(a, name, n) != 0) return 0;
-  if (a[n] == '=') {
-    *val = a + n + 1;
-    return 1;
-  }
-  if (a[n] != '\0') return 0;
-  if (*i + 1 >= argc) {
-    fprintf(stderr, "fp3 tbgen: option %s needs a value\n", name);
-    return -1;
-  }
-  *val = argv[++*i];
-  return 1;
-}
 
 static int set_scene(fp3_ship_params *p, const char *arg) {
   static const char *const names[] = {"T", "C", "m", "h", "v0", "s0"};
@@ -173,10 +156,10 @@ int fp3_cmd_tbgen(int argc, char **argv) {
       usage_tbgen(stdout);
       return 0;
     }
-    if ((r = opt_val(argc, argv, &i, "-o", &v)) != 0) {
+    if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "-o", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       dir = v;
-    } else if ((r = opt_val(argc, argv, &i, "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--steps", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
       errno = 0;
@@ -188,9 +171,9 @@ int fp3_cmd_tbgen(int argc, char **argv) {
         return EXIT_USAGE;
       }
       steps = (uint32_t)k;
-    } else if ((r = opt_val(argc, argv, &i, "--set", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--set", &v)) != 0) {
       if (r < 0 || set_scene(&p, v)) return EXIT_USAGE;
-    } else if ((r = opt_val(argc, argv, &i, "--round", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--round", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       if (strcmp(v, "rne") == 0) {
         mode.round = FPREF_RNE;

@@ -34,6 +34,7 @@
 #include "image.h"
 #include "integrators.h"
 #include "bench.h"
+#include "cliopt.h"
 #include "cmd_objects.h"
 #include "report.h"
 #include "testfloat.h"
@@ -50,30 +51,6 @@
 #define TRACE_WINDOW_DEFAULT 10000u /* cycles fp3 run --trace writes */
 
 /* ---- small helpers ------------------------------------------------------ */
-
-/* "--name VALUE" or "--name=VALUE": 1 and *val if argv[*i] is that option,
- * -1 if the value is missing, 0 if argv[*i] is another argument. */
-static int opt_value(int argc, char **argv, int *i, const char *name,
-                     const char **val) {
-  const char *a = argv[*i];
-  size_t n = strlen(name);
-  if (strncmp(a, name, n) != 0) return 0;
-  if (a[n] == '=') {
-    *val = a + n + 1;
-    return 1;
-  }
-  if (a[n] != '\0') return 0;
-  if (*i + 1 >= argc) {
-    fprintf(stderr, "fp3: option %s needs a value\n", name);
-    return -1;
-  }
-  *val = argv[++*i];
-  return 1;
-}
-
-static int is_help(const char *a) {
-  return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
-}
 
 /* Assembler messages, one per line. */
 static void print_errors(const char *errs) {
@@ -104,12 +81,12 @@ static int cmd_asm(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
     const char *v;
     int r;
-    if (is_help(argv[i])) {
+    if (fp3_is_help(argv[i])) {
       usage_asm(stdout);
       return 0;
     }
-    if ((r = opt_value(argc, argv, &i, "-o", &v)) != 0 ||
-        (r = opt_value(argc, argv, &i, "--output", &v)) != 0) {
+    if ((r = fp3_opt_value(argc, argv, &i, "asm", "-o", &v)) != 0 ||
+        (r = fp3_opt_value(argc, argv, &i, "asm", "--output", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       outp = v;
     } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
@@ -171,7 +148,7 @@ static void usage_disasm(FILE *f) {
 static int cmd_disasm(int argc, char **argv) {
   const char *in = NULL;
   for (int i = 1; i < argc; i++) {
-    if (is_help(argv[i])) {
+    if (fp3_is_help(argv[i])) {
       usage_disasm(stdout);
       return 0;
     }
@@ -484,21 +461,21 @@ static int cmd_run(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
     const char *v;
     int r;
-    if (is_help(argv[i])) {
+    if (fp3_is_help(argv[i])) {
       usage_run(stdout);
       return 0;
     }
-    if ((r = opt_value(argc, argv, &i, "--engine", &v)) != 0) {
+    if ((r = fp3_opt_value(argc, argv, &i, "run", "--engine", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
         fprintf(stderr, "fp3 run: unknown engine '%s' (rtl or iss)\n", v);
         return EXIT_USAGE;
       }
       engine_name = v;
-    } else if ((r = opt_value(argc, argv, &i, "--program", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--program", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       program = v;
-    } else if ((r = opt_value(argc, argv, &i, "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--steps", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
       errno = 0;
@@ -513,9 +490,9 @@ static int cmd_run(int argc, char **argv) {
         return EXIT_USAGE;
       }
       steps = (uint32_t)n;
-    } else if ((r = opt_value(argc, argv, &i, "--set", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--set", &v)) != 0) {
       if (r < 0 || set_param(&p, v)) return EXIT_USAGE;
-    } else if ((r = opt_value(argc, argv, &i, "--trace-window", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace-window", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
       errno = 0;
@@ -535,10 +512,10 @@ static int cmd_run(int argc, char **argv) {
       }
       win_first = a;
       win_count = b;
-    } else if ((r = opt_value(argc, argv, &i, "--trace", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       trace = v;
-    } else if ((r = opt_value(argc, argv, &i, "--round", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--round", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       if (strcmp(v, "rne") == 0) mode.round = FPREF_RNE;
       else if (strcmp(v, "rtz") == 0) mode.round = FPREF_RTZ;
@@ -550,7 +527,7 @@ static int cmd_run(int argc, char **argv) {
       mode.ftz = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
-    } else if ((r = opt_value(argc, argv, &i, "--integrator", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--integrator", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       integ = fp3_integrator_find(v);
       if (!integ) {
@@ -560,7 +537,7 @@ static int cmd_run(int argc, char **argv) {
       }
     } else if (strcmp(argv[i], "--strict") == 0) {
       strict = 1;
-    } else if ((r = opt_value(argc, argv, &i, "--objects", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--objects", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
       errno = 0;
@@ -571,10 +548,10 @@ static int cmd_run(int argc, char **argv) {
         return EXIT_USAGE;
       }
       objects = (size_t)k;
-    } else if ((r = opt_value(argc, argv, &i, "--scene", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--scene", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       scene = v;
-    } else if ((r = opt_value(argc, argv, &i, "--seed", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--seed", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
       errno = 0;
@@ -933,7 +910,7 @@ int main(int argc, char **argv) {
     return EXIT_USAGE;
   }
   const char *cmd = argv[1];
-  if (is_help(cmd) || strcmp(cmd, "help") == 0) {
+  if (fp3_is_help(cmd) || strcmp(cmd, "help") == 0) {
     usage(stdout);
     return 0;
   }

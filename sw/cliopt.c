@@ -1,0 +1,27 @@
+/*
+ * cliopt.c -- option parsing shared by the fp3 subcommands (cliopt.h).
+ */
+#include "cliopt.h"
+
+#include <stdio.h>
+#include <string.h>
+
+int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *name,
+                  const char **val) {
+  const char *a = argv[*i];
+  size_t n = strlen(name);
+  if (strncmp(a, name, n) != 0) return 0;
+  if (a[n] == '=') {
+    *val = a + n + 1;
+    return 1;
+  }
+  if (a[n] != '\0') return 0;
+  if (*i + 1 >= argc) {
+    fprintf(stderr, "fp3 %s: option %s needs a value\n", cmd, name);
+    return -1;
+  }
+  *val = argv[++*i];
+  return 1;
+}
+
+int fp3_is_help(const char *a) { return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0; }

@@ -1,0 +1,17 @@
+/*
+ * cliopt.h -- option parsing shared by the fp3 subcommands.
+ */
+#ifndef FP3_CLIOPT_H
+#define FP3_CLIOPT_H
+
+/* "--name VALUE" or "--name=VALUE": returns 1 and sets *val (advancing *i
+ * past a separate value) if argv[*i] is that option, -1 with a message on
+ * stderr ("fp3 CMD: option --name needs a value") if the value is
+ * missing, 0 if argv[*i] is another argument. */
+int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *name,
+                  const char **val);
+
+/* 1 if a is --help or -h. */
+int fp3_is_help(const char *a);
+
+#endif /* FP3_CLIOPT_H */
