@@ -81,7 +81,7 @@ module fp3_top #(
   reg  [31:0] contexts_q;
   reg  [CW-1:0] ctx_q;     // context the host sees
   reg  [31:0] imem_lo_q;   // low half of an instruction being written
-  reg  [4:0]  flags_q;
+  reg  [4:0]  flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags per context
 
   wire host_idle   = !running;
   wire wr_ctrl     = host_we_i && host_addr_i == HR_CTRL;
@@ -217,11 +217,21 @@ module fp3_top #(
     .mov_data_o  (mov_data)
   );
 
-  // ---- sticky exception flags of the run (all contexts) --------------------
-  always @(posedge clk_i) begin
-    if (rst_i || (start && host_idle)) flags_q <= 5'd0;
-    else flags_q <= flags_q | (add_valid ? add_flags : 5'd0) | (mul_valid ? mul_flags : 5'd0);
-  end
+  // ---- sticky exception flags of the run, per context ----------------------
+  genvar fc;
+  generate
+    for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
+      localparam [CW-1:0] FCTX = fc[CW-1:0];
+      wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
+      wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
+      always @(posedge clk_i) begin
+        if (rst_i || (start && host_idle)) flags_q[fc] <= 5'd0;
+        else flags_q[fc] <= flags_q[fc] | (add_here ? add_flags : 5'd0) |
+                            (mul_here ? mul_flags : 5'd0);
+      end
+    end
+  endgenerate
+  wire [4:0] flags_sel = flags_q[ctx_q];
 
   // ---- host read mux (registered) ------------------------------------------
   reg [31:0] rdata_d;
@@ -232,7 +242,7 @@ module fp3_top #(
       HR_STEPS:      rdata_d = steps_q;
       HR_STEPS_DONE: rdata_d = steps_done;
       HR_FAULT_PC:   rdata_d = fault_pc;
-      HR_FLAGS:      rdata_d = {27'd0, flags_q};
+      HR_FLAGS:      rdata_d = {27'd0, flags_sel};
       HR_CYCLES_LO:  rdata_d = cycles[31:0];
       HR_CYCLES_HI:  rdata_d = cycles[63:32];
       HR_ISSUED_LO:  rdata_d = issued[31:0];

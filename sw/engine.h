@@ -46,7 +46,7 @@ typedef struct fp3_status {
   uint32_t fault_pc;     /* PC of the faulting instruction if error != 0  */
   uint32_t steps_done;   /* integrations completed (endi issued), ctx 0   */
   unsigned any_error;    /* 1 if any context ended with an error          */
-  uint32_t flags;        /* sticky exception flags, enum fp3_flag bits    */
+  uint32_t flags;        /* sticky exception flags of all contexts (OR)   */
   uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
   uint64_t issued;       /* instructions issued                           */
   uint64_t stalls;       /* cycles an instruction waited on a hazard      */
@@ -58,6 +58,7 @@ typedef struct fp3_ctx_status {
   unsigned error;       /* enum fp3_error                                 */
   uint32_t fault_pc;    /* PC of the faulting instruction if error != 0   */
   uint32_t steps_done;  /* integrations completed                         */
+  uint32_t flags;       /* sticky exception flags of this context         */
 } fp3_ctx_status;
 
 /* Observer callbacks; any may be NULL.  on_write and on_endi report

@@ -196,6 +196,8 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
     r->cs[c].error = (host_read(r, FP3_HR_STATUS) >> FP3_STATUS_ERROR_LSB) & 0xF;
     r->cs[c].fault_pc = host_read(r, FP3_HR_FAULT_PC);
     r->cs[c].steps_done = host_read(r, FP3_HR_STEPS_DONE);
+    r->cs[c].flags = host_read(r, FP3_HR_FLAGS);
+    st->flags |= r->cs[c].flags;
   }
   host_write(r, FP3_HR_CTX, 0);
   uint32_t status = host_read(r, FP3_HR_STATUS);
@@ -204,7 +206,6 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
   st->error = r->cs[0].error;
   st->fault_pc = r->cs[0].fault_pc;
   st->steps_done = r->cs[0].steps_done;
-  st->flags = host_read(r, FP3_HR_FLAGS);
   st->cycles = host_read64(r, FP3_HR_CYCLES_LO);
   st->issued = host_read64(r, FP3_HR_ISSUED_LO);
   st->stalls = host_read64(r, FP3_HR_STALLS_LO);

@@ -116,7 +116,7 @@
   X(STEPS_DONE, 0x003, "R",  "integrations completed by context CTX")         \
   X(FAULT_PC,   0x004, "R",  "PC of the instruction that raised context "     \
                              "CTX's ERROR")                                   \
-  X(FLAGS,      0x005, "R",  "sticky exception flags of the run")             \
+  X(FLAGS,      0x005, "R",  "sticky exception flags of context CTX's run")   \
   X(CYCLES_LO,  0x006, "R",  "cycles from START to DONE, low word")           \
   X(CYCLES_HI,  0x007, "R",  "cycles, high word")                             \
   X(ISSUED_LO,  0x008, "R",  "instructions issued, low word")                 \

@@ -155,11 +155,13 @@ static int iss_run(fp3_engine *e, uint32_t steps, unsigned contexts,
            steps == 0 ? "run started with STEPS = 0"
                       : "run started with CONTEXTS = 0 or > NUM_CONTEXTS");
   } else {
-    unsigned flags = 0;
     uint64_t n = 0; /* instructions executed */
-    for (unsigned c = 0; c < contexts; c++)
+    for (unsigned c = 0; c < contexts; c++) {
+      unsigned flags = 0;
       run_context(s, c, steps, obs, &s->cs[c], &flags, &n, st->unit_issued);
-    st->flags = flags;
+      s->cs[c].flags = flags;
+      st->flags |= flags;
+    }
     st->cycles = n;
     st->issued = n;
   }

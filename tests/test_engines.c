@@ -558,6 +558,7 @@ static void run_contexts_on(fp3_engine *e, const fp3_image *img, uint32_t (*init
     m->c[k].st.error = cs.error;
     m->c[k].st.fault_pc = cs.fault_pc;
     m->c[k].st.steps_done = cs.steps_done;
+    m->c[k].st.flags = cs.flags; /* sticky per context */
     for (unsigned r = 0; r < e->config.num_regs; r++)
       assert_int_equal(fp3_engine_read_ctx_reg(e, k, r, &m->c[k].final[r]), 0);
   }
