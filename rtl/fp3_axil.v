@@ -1,0 +1,306 @@
+// fp3_axil -- AXI4-Lite slave wrapper of the FP3 processor (fp3_top).
+//
+// Register map: the host-port map of sw/fp3_isa.h (FP3_HOSTREGS, HR_* in
+// the generated rtl/fp3_isa.vh) at byte address = word address x 4.  Data
+// is 32 bits wide; address bits [1:0] and bits above 13 are not decoded
+// (an interconnect decodes the base address).
+//
+// Channels: AW and W are accepted independently, in either order, into a
+// one-entry holding register each; the write reaches the host port once
+// both are held and the B channel is free (or being emptied this cycle).
+// AR is held likewise; the read address goes to the host port for one
+// cycle, the core's registered read data is captured one cycle later and
+// held on R until RREADY.  B and R stay valid, with stable payload, until
+// accepted.  Each channel takes a new transfer every second cycle.  The
+// host port has one address, so a write and a read that are both ready in
+// the same cycle take turns (round robin).  All outputs are registered;
+// no READY depends combinationally on a VALID.
+//
+// Responses: OKAY (2'b00) for an access the core performs, SLVERR (2'b10)
+// with no effect on the core for
+//   - a write to an unmapped or read-only address (STATUS .. ID, INFO2, a
+//     register or instruction index beyond NUM_REGS / IMEM_DEPTH);
+//   - a write to STEPS, CONTEXTS, CTX, the register window or the program
+//     window while a run is in progress (the core ignores those), and a
+//     write of a context number >= NUM_CONTEXTS to CTX (ignored too);
+//   - a write whose WSTRB is not 4'b1111 (the host port has no byte lanes);
+//   - a read of an unmapped address, of the write-only CTRL register or of
+//     the program window (the core has no read path there); RDATA is 0.
+// CTRL is always writable (START while running is ignored by the core).
+// The access of each address follows the table in sw/fp3_isa.h (R, W,
+// RW); fp3_isa.vh carries only the addresses, so the list of readable
+// and writable scalar registers is spelled out below (reg_readable,
+// wr_ok) and test_axil checks every one.
+//
+// Parameters
+//   ADDR_WIDTH   AXI address bits, at least 14 (12-bit word address x 4)
+//   NUM_CONTEXTS contexts of fp3_top, 1..64
+//   NUM_REGS     registers per context of fp3_top, 2..256
+//   IMEM_DEPTH   instruction memory entries of fp3_top, 2..1024
+//   ADD_LATENCY  add/sub core latency in cycles
+//   MUL_LATENCY  mul core latency in cycles
+//   ROUND        0 round to nearest even, 1 round toward zero
+//   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
+// Reset: rst_i, synchronous, active high (invert ARESETn outside).
+`default_nettype none
+module fp3_axil #(
+  parameter integer ADDR_WIDTH   = 14,
+  parameter integer NUM_CONTEXTS = 8,
+  parameter integer NUM_REGS     = 32,
+  parameter integer IMEM_DEPTH   = 256,
+  parameter integer ADD_LATENCY  = 4,
+  parameter integer MUL_LATENCY  = 3,
+  parameter integer ROUND        = 0,
+  parameter integer FTZ          = 0
+) (
+  input  wire                  clk_i,
+  input  wire                  rst_i,
+  // write address channel
+  input  wire [ADDR_WIDTH-1:0] s_axil_awaddr_i,
+  input  wire [2:0]            s_axil_awprot_i,
+  input  wire                  s_axil_awvalid_i,
+  output wire                  s_axil_awready_o,
+  // write data channel
+  input  wire [31:0]           s_axil_wdata_i,
+  input  wire [3:0]            s_axil_wstrb_i,
+  input  wire                  s_axil_wvalid_i,
+  output wire                  s_axil_wready_o,
+  // write response channel
+  output wire [1:0]            s_axil_bresp_o,
+  output wire                  s_axil_bvalid_o,
+  input  wire                  s_axil_bready_i,
+  // read address channel
+  input  wire [ADDR_WIDTH-1:0] s_axil_araddr_i,
+  input  wire [2:0]            s_axil_arprot_i,
+  input  wire                  s_axil_arvalid_i,
+  output wire                  s_axil_arready_o,
+  // read data channel
+  output wire [31:0]           s_axil_rdata_o,
+  output wire [1:0]            s_axil_rresp_o,
+  output wire                  s_axil_rvalid_o,
+  input  wire                  s_axil_rready_i,
+  // side band: a run is in progress / the last run has ended (interrupt)
+  output wire                  running_o,
+  output wire                  done_o
+);
+`include "fp3_isa.vh"
+
+  localparam [1:0] RESP_OKAY   = 2'b00;
+  localparam [1:0] RESP_SLVERR = 2'b10;
+  localparam [3:0] STRB_ALL    = 4'b1111;
+  localparam integer WA_LSB    = 2;   // byte address -> word address
+  localparam integer WA_BITS   = 12;  // host-port word address width
+
+  // ---- state ---------------------------------------------------------------
+  reg                aw_valid_q, aw_valid_d;
+  reg  [WA_BITS-1:0] aw_addr_q,  aw_addr_d;
+  reg                w_valid_q,  w_valid_d;
+  reg  [31:0]        w_data_q,   w_data_d;
+  reg  [3:0]         w_strb_q,   w_strb_d;
+  reg                b_valid_q,  b_valid_d;
+  reg  [1:0]         b_resp_q,   b_resp_d;
+  reg                ar_valid_q, ar_valid_d;
+  reg  [WA_BITS-1:0] ar_addr_q,  ar_addr_d;
+  reg                rd_pend_q,  rd_pend_d;   // read data arrives this cycle
+  reg                rd_err_q,   rd_err_d;    // ... for an address answered SLVERR
+  reg                r_valid_q,  r_valid_d;
+  reg  [31:0]        r_data_q,   r_data_d;
+  reg  [1:0]         r_resp_q,   r_resp_d;
+  reg                prio_q,     prio_d;      // 1: a read wins the next tie
+
+  wire        running;
+  wire [31:0] host_rdata;
+
+  // ---- address decode --------------------------------------------------------
+  // Register window: REG_BASE + r, r < NUM_REGS (as fp3_top decodes it).
+  function reg_hit;
+    input [WA_BITS-1:0] a;
+    begin
+      reg_hit = a[11:8] == HR_REG_BASE[11:8] && {24'd0, a[7:0]} < NUM_REGS;
+    end
+  endfunction
+  // Program window: IMEM_BASE + 2i (+1), i < IMEM_DEPTH.
+  // Bit 0 selects the half of the instruction word.
+  function imem_hit;
+    input [WA_BITS-1:1] a;
+    begin
+      imem_hit = a[11] == HR_IMEM_BASE[11] && {22'd0, a[10:1]} < IMEM_DEPTH;
+    end
+  endfunction
+
+  // Scalar registers the host may read (access R or RW in the table).
+  function reg_readable;
+    input [WA_BITS-1:0] a;
+    begin
+      case (a)
+        HR_STATUS, HR_STEPS, HR_STEPS_DONE, HR_FAULT_PC, HR_FLAGS,
+        HR_CYCLES_LO, HR_CYCLES_HI, HR_ISSUED_LO, HR_ISSUED_HI,
+        HR_STALLS_LO, HR_STALLS_HI, HR_INFO0, HR_INFO1, HR_ID,
+        HR_CTX, HR_CONTEXTS, HR_INFO2: reg_readable = 1'b1;
+        default:                       reg_readable = reg_hit(a);
+      endcase
+    end
+  endfunction
+
+  // A write the core performs now (access W or RW; all but CTRL only
+  // while stopped).
+  wire wr_ok = w_strb_q == STRB_ALL &&
+               (aw_addr_q == HR_CTRL ||
+                (!running && (aw_addr_q == HR_STEPS || aw_addr_q == HR_CONTEXTS ||
+                              (aw_addr_q == HR_CTX && w_data_q < NUM_CONTEXTS) ||
+                              reg_hit(aw_addr_q) || imem_hit(aw_addr_q[WA_BITS-1:1]))));
+  wire rd_ok = reg_readable(ar_addr_q);
+
+  // ---- host-port arbitration -----------------------------------------------
+  wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
+  wire rd_cand  = ar_valid_q && !rd_pend_q && (!r_valid_q || s_axil_rready_i);
+  wire do_write = wr_cand && (!rd_cand || !prio_q);
+  wire do_read  = rd_cand && (!wr_cand || prio_q);
+
+  wire               host_we    = do_write && wr_ok;
+  wire [WA_BITS-1:0] host_addr  = do_write ? aw_addr_q : ar_addr_q;
+
+  // ---- next state --------------------------------------------------------------
+  always @(*) begin
+    aw_valid_d = aw_valid_q;
+    aw_addr_d  = aw_addr_q;
+    w_valid_d  = w_valid_q;
+    w_data_d   = w_data_q;
+    w_strb_d   = w_strb_q;
+    b_valid_d  = b_valid_q;
+    b_resp_d   = b_resp_q;
+    ar_valid_d = ar_valid_q;
+    ar_addr_d  = ar_addr_q;
+    rd_pend_d  = do_read;
+    rd_err_d   = rd_err_q;
+    r_valid_d  = r_valid_q;
+    r_data_d   = r_data_q;
+    r_resp_d   = r_resp_q;
+    prio_d     = (wr_cand && rd_cand) ? !prio_q : prio_q;
+
+    // write: hold AW and W, then perform and respond
+    if (s_axil_awvalid_i && !aw_valid_q) begin
+      aw_valid_d = 1'b1;
+      aw_addr_d  = s_axil_awaddr_i[WA_LSB +: WA_BITS];
+    end
+    if (s_axil_wvalid_i && !w_valid_q) begin
+      w_valid_d = 1'b1;
+      w_data_d  = s_axil_wdata_i;
+      w_strb_d  = s_axil_wstrb_i;
+    end
+    if (s_axil_bready_i) b_valid_d = 1'b0;
+    if (do_write) begin
+      aw_valid_d = 1'b0;
+      w_valid_d  = 1'b0;
+      b_valid_d  = 1'b1;
+      b_resp_d   = wr_ok ? RESP_OKAY : RESP_SLVERR;
+    end
+
+    // read: hold AR, address the host port, capture its registered data
+    if (s_axil_arvalid_i && !ar_valid_q) begin
+      ar_valid_d = 1'b1;
+      ar_addr_d  = s_axil_araddr_i[WA_LSB +: WA_BITS];
+    end
+    if (do_read) begin
+      ar_valid_d = 1'b0;
+      rd_err_d   = !rd_ok;
+    end
+    if (s_axil_rready_i) r_valid_d = 1'b0;
+    if (rd_pend_q) begin
+      r_valid_d = 1'b1;
+      r_data_d  = rd_err_q ? 32'd0 : host_rdata;
+      r_resp_d  = rd_err_q ? RESP_SLVERR : RESP_OKAY;
+    end
+  end
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      aw_valid_q <= 1'b0;
+      w_valid_q  <= 1'b0;
+      b_valid_q  <= 1'b0;
+      ar_valid_q <= 1'b0;
+      rd_pend_q  <= 1'b0;
+      r_valid_q  <= 1'b0;
+      prio_q     <= 1'b0;
+    end else begin
+      aw_valid_q <= aw_valid_d;
+      w_valid_q  <= w_valid_d;
+      b_valid_q  <= b_valid_d;
+      ar_valid_q <= ar_valid_d;
+      rd_pend_q  <= rd_pend_d;
+      r_valid_q  <= r_valid_d;
+      prio_q     <= prio_d;
+    end
+    aw_addr_q <= aw_addr_d;
+    w_data_q  <= w_data_d;
+    w_strb_q  <= w_strb_d;
+    b_resp_q  <= b_resp_d;
+    ar_addr_q <= ar_addr_d;
+    rd_err_q  <= rd_err_d;
+    r_data_q  <= r_data_d;
+    r_resp_q  <= r_resp_d;
+  end
+
+  // ---- the processor -----------------------------------------------------------
+  wire       tr_issue, tr_endi, tr_add_valid, tr_mul_valid, tr_mov_valid;
+  wire [1:0] tr_issue_unit;
+  wire [5:0] tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx;
+  wire [7:0] tr_add_reg, tr_mul_reg, tr_mov_reg;
+  wire [31:0] tr_add_data, tr_mul_data, tr_mov_data;
+
+  fp3_top #(
+    .NUM_CONTEXTS (NUM_CONTEXTS),
+    .NUM_REGS     (NUM_REGS),
+    .IMEM_DEPTH   (IMEM_DEPTH),
+    .ADD_LATENCY  (ADD_LATENCY),
+    .MUL_LATENCY  (MUL_LATENCY),
+    .ROUND        (ROUND),
+    .FTZ          (FTZ)
+  ) u_fp3 (
+    .clk_i           (clk_i),
+    .rst_i           (rst_i),
+    .host_we_i       (host_we),
+    .host_addr_i     (host_addr),
+    .host_wdata_i    (w_data_q),
+    .host_rdata_o    (host_rdata),
+    .running_o       (running),
+    .done_o          (done_o),
+    .tr_issue_o      (tr_issue),
+    .tr_issue_ctx_o  (tr_issue_ctx),
+    .tr_issue_unit_o (tr_issue_unit),
+    .tr_endi_o       (tr_endi),
+    .tr_add_valid_o  (tr_add_valid),
+    .tr_add_ctx_o    (tr_add_ctx),
+    .tr_add_reg_o    (tr_add_reg),
+    .tr_add_data_o   (tr_add_data),
+    .tr_mul_valid_o  (tr_mul_valid),
+    .tr_mul_ctx_o    (tr_mul_ctx),
+    .tr_mul_reg_o    (tr_mul_reg),
+    .tr_mul_data_o   (tr_mul_data),
+    .tr_mov_valid_o  (tr_mov_valid),
+    .tr_mov_ctx_o    (tr_mov_ctx),
+    .tr_mov_reg_o    (tr_mov_reg),
+    .tr_mov_data_o   (tr_mov_data)
+  );
+
+  // ---- outputs -------------------------------------------------------------------
+  assign s_axil_awready_o = !aw_valid_q;
+  assign s_axil_wready_o  = !w_valid_q;
+  assign s_axil_bvalid_o  = b_valid_q;
+  assign s_axil_bresp_o   = b_resp_q;
+  assign s_axil_arready_o = !ar_valid_q;
+  assign s_axil_rvalid_o  = r_valid_q;
+  assign s_axil_rdata_o   = r_data_q;
+  assign s_axil_rresp_o   = r_resp_q;
+  assign running_o        = running;
+
+  // Not decoded: protection bits, byte offsets and address bits above the
+  // map (see the header), and the trace port, which a bus cannot carry.
+  wire unused = &{1'b0, s_axil_awprot_i, s_axil_arprot_i, s_axil_awaddr_i,
+                  s_axil_araddr_i, tr_issue, tr_issue_unit, tr_endi,
+                  tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx,
+                  tr_add_valid, tr_add_reg, tr_add_data, tr_mul_valid,
+                  tr_mul_reg, tr_mul_data, tr_mov_valid, tr_mov_reg,
+                  tr_mov_data};
+endmodule
+`default_nettype wire
