@@ -3,10 +3,13 @@
 #   make sim      build the Verilated RTL and run the default ship scene
 #   make test     the whole test suite (installs what is missing first)
 #   make lint     verilator --lint-only -Wall on the RTL
-#   make synth    Yosys synthesis of the top (xc2v), area report
+#   make synth    Yosys synthesis (xc2v, xc7, ECP5), area reports
+#   make pnr      nextpnr place and route, Fmax (ECP5, iCE40)
+#   make wave     Icarus testbench and waveform
+#   make bench    benchmarks (also bench-fp, bench-parallel, bench-cosim)
 #   make help     all targets
 #
-# Missing tools are installed by scripts/setup.sh (Debian packages).
+# Missing tools are installed by scripts/setup.sh (Debian and PyPI packages).
 
 BUILD      ?= build
 CC         ?= cc
@@ -41,17 +44,15 @@ TEST_SCRIPTS :=
 all: $(BUILD)/fp3
 
 help:
-	@sed -n '3,9p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '3,13p' Makefile | sed 's/^# \{0,1\}//'
 
 # ---- one set-up script installs what is missing ----------------------------
 SETUP_STAMP := $(BUILD)/.setup-ok
-setup $(SETUP_STAMP):
+# The script checks each package and installs only the missing ones; it
+# runs again whenever it changes (a new package).
+setup $(SETUP_STAMP): scripts/setup.sh
 	@mkdir -p $(BUILD)
-	@if command -v $(VERILATOR) >/dev/null && command -v iverilog >/dev/null && \
-	    command -v $(YOSYS) >/dev/null && [ -f /usr/include/gsl/gsl_errno.h ] && \
-	    [ -f /usr/include/cmocka.h ] && [ -f /usr/include/zlib.h ]; then \
-	  echo "setup: tools present"; \
-	else bash scripts/setup.sh; fi
+	bash scripts/setup.sh
 	@touch $(SETUP_STAMP)
 
 $(BUILD)/verilated/%.o: $(VERILATOR_ROOT_INC)/%.cpp | $(SETUP_STAMP)
