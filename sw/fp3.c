@@ -180,7 +180,19 @@ static int cmd_disasm(int argc, char **argv) {
   }
   fputs(text, stdout);
   free(text);
-  return 0;
+  /* Illegal words are listed as .word (the listing re-assembles to the
+   * same image) and reported: the image would fault on the processor. */
+  int illegal = 0;
+  for (size_t w = 0; w < img.n; w++) {
+    char why[200];
+    if (fp3_insn_check(img.words[w], FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why,
+                       sizeof why)) {
+      fprintf(stderr, "fp3 disasm: %s: word %zu (0x%016llx): illegal instruction: %s\n", in,
+              w, (unsigned long long)img.words[w], why);
+      illegal++;
+    }
+  }
+  return illegal ? EXIT_FAIL : 0;
 }
 
 /* ---- fp3 run: observing and checking ------------------------------------ */

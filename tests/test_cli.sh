@@ -127,6 +127,10 @@ expect 0 "" -- disasm "$T/ship.hex"
 expect 0 "" -- asm "$T/round.s" -o "$T/round.hex"
 if diff <(grep -v '^//' "$T/ship.hex" | cut -c1-16) <(grep -v '^//' "$T/round.hex" | cut -c1-16) >/dev/null; then ok
 else bad "disasm | asm does not give the same words"; fi
+# an image with unknown opcode bits and a nonzero unused field: listed, reported, exit 1
+printf '0900000000000000\n0100000000000001\n0700000000000000\n' > "$T/bad.hex"
+expect 1 "bad.hex: word 0 (0x0900000000000000): illegal instruction: unknown opcode" -- disasm "$T/bad.hex"
+expect 1 "word 1 (0x0100000000000001): illegal instruction: imm field" -- disasm "$T/bad.hex"
 # default output name
 cp programs/ship_rk4.s "$T/def.s"
 expect 0 "" -- asm "$T/def.s"
