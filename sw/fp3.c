@@ -142,7 +142,11 @@ static void usage_disasm(FILE *f) {
           "\n"
           "Print the program image FILE.hex as assembly text that assembles\n"
           "back to the same words and bindings.  li immediates are shown\n"
-          "with %%.9g and their bit pattern; illegal words as .word.\n");
+          "with %%.9g and their bit pattern; illegal words as .word, each\n"
+          "also reported on stderr (word, reason).\n"
+          "\n"
+          "Exit status: 0 every word legal; 1 illegal words; 2 bad arguments\n"
+          "or an unreadable image.\n");
 }
 
 static int cmd_disasm(int argc, char **argv) {
