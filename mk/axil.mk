@@ -19,7 +19,7 @@ $(AXIL_ARCHIVE): $(RTL_SRC) $(RTL_INC) mk/axil.mk | $(SETUP_STAMP)
 	  >$(AXIL_OBJDIR)/build.log 2>&1 || { tail -40 $(AXIL_OBJDIR)/build.log; exit 1; }
 	@touch $@
 
-$(AXIL_SHIM_OBJ): sim/fp3_axil_shim.cpp sim/fp3_axil_model.h $(AXIL_ARCHIVE)
+$(AXIL_SHIM_OBJ): sim/fp3_axil_shim.cpp sim/fp3_axil_model.h sim/vmodel.h $(AXIL_ARCHIVE)
 	@mkdir -p $(dir $@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -I$(AXIL_OBJDIR) -c $< -o $@
 

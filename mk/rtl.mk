@@ -53,7 +53,7 @@ $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STA
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 
-$(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h $(call rtl_archive,$(1))
+$(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h sim/vmodel.h $(call rtl_archive,$(1))
 	@mkdir -p $$(dir $$@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef

@@ -1,38 +1,17 @@
 // fp3_axil_shim.cpp -- extern "C" shim over the Verilator model of
-// rtl/fp3_axil.v (sim/fp3_axil_model.h).  It owns the VerilatedContext, the
-// model and an optional VCD writer and moves values between the C structs
-// and the ports; it has no AXI logic (that is the C test's master).
+// rtl/fp3_axil.v (sim/fp3_axil_model.h): moves values between the C structs
+// and the ports (the model's lifecycle is sim/vmodel.h); it has no AXI
+// logic (that is the C test's master).
 #include "fp3_axil_model.h"
 
-#include <cstdio>
-#include <new>
-
 #include "Vfp3_axil.h"
-#include "verilated.h"
-#include "verilated_vcd_c.h"
+#include "vmodel.h"
 
-struct fp3_axil_model {
-  VerilatedContext *ctx;
-  Vfp3_axil *top;
-  VerilatedVcdC *vcd;  // nullptr: no waveform
-};
+// The C side's opaque handle is the model: handles are reinterpret_cast
+// between the two, never dereferenced as fp3_axil_model.
+using model = vmodel<Vfp3_axil>;
 
-static void half_cycle(fp3_axil_model *m, int clk) {
-  m->top->clk_i = clk;
-  m->top->eval();
-  if (m->vcd) m->vcd->dump(m->ctx->time());
-  m->ctx->timeInc(1);
-}
-
-static void destroy(fp3_axil_model *m) {
-  if (m->vcd) {
-    m->vcd->close();
-    delete m->vcd;
-  }
-  delete m->top;
-  delete m->ctx;
-  delete m;
-}
+static model *of(fp3_axil_model *m) { return reinterpret_cast<model *>(m); }
 
 static void apply(Vfp3_axil *t, const fp3_axil_in *in) {
   static const fp3_axil_in idle = {};
@@ -51,47 +30,23 @@ static void apply(Vfp3_axil *t, const fp3_axil_in *in) {
 }
 
 extern "C" fp3_axil_model *fp3_axil_model_new(const char *trace_path) {
-  fp3_axil_model *m = nullptr;
-  try {
-    m = new fp3_axil_model{new VerilatedContext, nullptr, nullptr};
-    if (trace_path) m->ctx->traceEverOn(true);
-    m->top = new Vfp3_axil{m->ctx};
-    if (trace_path) {
-      m->vcd = new VerilatedVcdC;
-      m->top->trace(m->vcd, 99);
-      m->vcd->open(trace_path);
-      if (!m->vcd->isOpen()) {
-        std::fprintf(stderr, "fp3: cannot open trace file %s\n", trace_path);
-        destroy(m);
-        return nullptr;
-      }
-    }
-  } catch (const std::bad_alloc &) {
-    if (m) destroy(m);
-    return nullptr;
-  }
+  model *m = model::create(trace_path);
+  if (!m) return nullptr;
   apply(m->top, nullptr);
-  m->top->rst_i = 1;
-  for (int i = 0; i < 2; i++) {
-    half_cycle(m, 0);
-    half_cycle(m, 1);
-  }
-  m->top->rst_i = 0;
-  half_cycle(m, 0);
-  return m;
+  m->reset();
+  return reinterpret_cast<fp3_axil_model *>(m);
 }
 
 extern "C" void fp3_axil_model_free(fp3_axil_model *m) {
-  if (!m) return;
-  m->top->final();
-  destroy(m);
+  if (m) of(m)->finish();
 }
 
-extern "C" void fp3_axil_model_cycle(fp3_axil_model *m, const fp3_axil_in *in,
+extern "C" void fp3_axil_model_cycle(fp3_axil_model *handle, const fp3_axil_in *in,
                                      fp3_axil_out *out) {
+  model *m = of(handle);
   Vfp3_axil *t = m->top;
   apply(t, in);
-  half_cycle(m, 0);  // inputs settle with the clock low
+  m->half_cycle(0);  // inputs settle with the clock low
   if (out) {
     out->awready = t->s_axil_awready_o;
     out->wready = t->s_axil_wready_o;
@@ -104,5 +59,5 @@ extern "C" void fp3_axil_model_cycle(fp3_axil_model *m, const fp3_axil_in *in,
     out->running = t->running_o;
     out->done = t->done_o;
   }
-  half_cycle(m, 1);  // the rising edge
+  m->half_cycle(1);  // the rising edge
 }
