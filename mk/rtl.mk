@@ -100,6 +100,15 @@ synth: $(SETUP_STAMP)
 	@echo "FP core area (default latencies), $(SYNTH_DIR)/fp_cores_area.md:"
 	@bash scripts/synth-report.sh --table $(SYNTH_DIR)
 
+# Area of the processor against NUM_CONTEXTS (issue 4): xc2v, 1, 8 and 32
+# contexts.  Slow: the register banks are flip-flops (tens of minutes).
+SYNTH_CONTEXTS ?= 1 8 32
+.PHONY: synth-contexts
+synth-contexts: $(SETUP_STAMP)
+	@set -e; for n in $(SYNTH_CONTEXTS); do \
+	  bash scripts/synth.sh $(SYNTH_DIR)/contexts_$$n $(RTL_TOP) xc2v NUM_CONTEXTS=$$n $(RTL_SRC); \
+	done
+
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
 $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS)
 	@mkdir -p $(dir $@)
