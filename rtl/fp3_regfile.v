@@ -1,5 +1,6 @@
-// fp3_regfile -- register banks, one per context, with one busy flag per
-// register (the scoreboard of paper §4), write-back bypass and a host port.
+// fp3_regfile -- register banks, one per context, in block RAM, with one
+// busy flag per register (the scoreboard of paper §4), write-back bypass
+// and a host port.
 //
 // Every index is {context, register} (XW bits).  Busy flags: an issued
 // instruction marks its destination busy (set_i); the unit that computes
@@ -9,23 +10,36 @@
 // back in this very cycle; so at most one result per register is in flight
 // and write-backs to one register happen in program order.
 //
-// No whole-pipeline stall on write-back (the paper has one; DESIGN.md):
-// each unit has its own write port, and a result on a write-back port is
-// forwarded to the read ports in the same cycle (bypass), so a dependent
-// instruction issues in the cycle its operand is written.
+// Storage: RAM with a registered read, so that the banks of many contexts
+// map to FPGA block RAM (one write port per RAM).  The three write-back
+// ports (add core, mul core, move path) each write a RAM of their own,
+// replicated once per read port, and a live value table (LVT, 2 bits per
+// register, in flip-flops) records which port wrote each register last
+// (LaForest & Steffan, "Efficient Multi-Ported Memories for FPGAs", FPGA
+// 2010).  A read presented in cycle t (the issue cycle) returns its data
+// in cycle t + 1 (the operand-read stage).
+//
+// Bypass: the scheduler issues a consumer in the cycle its operand is
+// written back (DESIGN.md: no whole-pipeline stall on write-back).  That
+// write lands in the RAM at the same clock edge the read samples, so the
+// write-back value is captured beside the read and replaces the RAM data in
+// cycle t + 1.  Writes in later cycles are never needed by a read of cycle
+// t (the operand was not busy, or was written back in cycle t).
 //
 // Parameters
 //   ENTRIES  registers in all, 2**XW
 //   XW       index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
 // Ports (indices XW bits wide, data 32 bits)
-//   ra_i/rb_i -> ra_data_o/rb_data_o: combinational reads with bypass.
+//   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + 1), bypassed.
+//     Port A reads host_idx_i instead while host_sel_i is set (no run in
+//     progress): the host's register read data is ra_data_o a cycle later.
 //   busy_o: every busy flag; idle_o: none set (nothing in flight).
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path); each
 //     write clears the register's busy flag.  A register written back in
 //     the cycle a new instruction claims it stays busy: the set wins.
-//   host_we_i/host_idx_i/host_wdata_i: host write (only while stopped);
-//     host_rdata_o reads host_idx_i.
+//   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
+//     (only while stopped: the move path is idle then).
 `default_nettype none
 module fp3_regfile #(
   parameter integer ENTRIES = 32,
@@ -49,60 +63,91 @@ module fp3_regfile #(
   input  wire               wb2_valid_i,
   input  wire [XW-1:0]      wb2_idx_i,
   input  wire [31:0]        wb2_data_i,
+  input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
-  output wire [31:0]        host_rdata_o,
   output wire               idle_o
 );
-  reg [31:0]        regs_q [0:ENTRIES-1];
   reg [ENTRIES-1:0] busy_q;
+  reg [1:0]         lvt_q [0:ENTRIES-1];  // write port that wrote last
 
-  // A register's value, bypassed.  A plain expression, not a function: a
-  // continuous assignment is re-evaluated only when its operands change,
-  // and a function's body is not an operand (Icarus relies on that).
-`define FP3_READ_PORT(x) \
-  ((wb0_valid_i && wb0_idx_i == (x)) ? wb0_data_i : \
-   (wb1_valid_i && wb1_idx_i == (x)) ? wb1_data_i : \
-   (wb2_valid_i && wb2_idx_i == (x)) ? wb2_data_i : regs_q[x])
-  assign ra_data_o    = `FP3_READ_PORT(ra_i);
-  assign rb_data_o    = `FP3_READ_PORT(rb_i);
-`undef FP3_READ_PORT
-  assign busy_o       = busy_q;
-  assign host_rdata_o = regs_q[host_idx_i];
-  assign idle_o       = (busy_q == {ENTRIES{1'b0}});
+  // Port 2 carries the move path, or the host's write while stopped.
+  wire          w2_valid = wb2_valid_i || host_we_i;
+  wire [XW-1:0] w2_idx   = wb2_valid_i ? wb2_idx_i  : host_idx_i;
+  wire [31:0]   w2_data  = wb2_valid_i ? wb2_data_i : host_wdata_i;
+  wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
-  // ---- writes and busy flags, one register at a time ----------------------
+  // ---- the RAMs: [write port][read port] -----------------------------------
+  wire [31:0] q00, q01, q10, q11, q20, q21;
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram00 (
+    .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
+    .raddr_i(a_idx), .rdata_o(q00));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram01 (
+    .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
+    .raddr_i(rb_i), .rdata_o(q01));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram10 (
+    .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
+    .raddr_i(a_idx), .rdata_o(q10));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram11 (
+    .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
+    .raddr_i(rb_i), .rdata_o(q11));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram20 (
+    .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
+    .raddr_i(a_idx), .rdata_o(q20));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram21 (
+    .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
+    .raddr_i(rb_i), .rdata_o(q21));
+
+  // ---- read stage: LVT choice and bypass, registered beside the RAMs ------
+  // A plain expression, not a function: a continuous assignment is
+  // re-evaluated only when its operands change, and a function's body is
+  // not an operand (Icarus relies on that).
+`define FP3_BYPASS(x) \
+  ((wb0_valid_i && wb0_idx_i == (x)) ? {1'b1, wb0_data_i} : \
+   (wb1_valid_i && wb1_idx_i == (x)) ? {1'b1, wb1_data_i} : \
+   (w2_valid    && w2_idx    == (x)) ? {1'b1, w2_data}    : 33'd0)
+  wire [32:0] a_bypass = `FP3_BYPASS(a_idx);
+  wire [32:0] b_bypass = `FP3_BYPASS(rb_i);
+`undef FP3_BYPASS
+  reg  [32:0] a_bp_q, b_bp_q;   // {taken, value}
+  reg  [1:0]  a_lvt_q, b_lvt_q;
+  always @(posedge clk_i) begin
+    a_bp_q  <= a_bypass;
+    b_bp_q  <= b_bypass;
+    a_lvt_q <= lvt_q[a_idx];
+    b_lvt_q <= lvt_q[rb_i];
+  end
+  assign ra_data_o = a_bp_q[32] ? a_bp_q[31:0] :
+                     (a_lvt_q == 2'd0) ? q00 : (a_lvt_q == 2'd1) ? q10 : q20;
+  assign rb_data_o = b_bp_q[32] ? b_bp_q[31:0] :
+                     (b_lvt_q == 2'd0) ? q01 : (b_lvt_q == 2'd1) ? q11 : q21;
+
+  assign busy_o = busy_q;
+  assign idle_o = (busy_q == {ENTRIES{1'b0}});
+
+  // ---- LVT and busy flags, one register at a time --------------------------
   // The WAW stall guarantees that the write ports name distinct registers,
-  // so the write priority below never matters for a legal sequence.
+  // so the priority below never matters for a legal sequence.
   genvar r;
   generate
     for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
       localparam [XW-1:0] IDX = r[XW-1:0];
       wire hit0 = wb0_valid_i && wb0_idx_i == IDX;
       wire hit1 = wb1_valid_i && wb1_idx_i == IDX;
-      wire hit2 = wb2_valid_i && wb2_idx_i == IDX;
+      wire hit2 = w2_valid    && w2_idx    == IDX;
       always @(posedge clk_i) begin
-        if      (hit0) regs_q[r] <= wb0_data_i;
-        else if (hit1) regs_q[r] <= wb1_data_i;
-        else if (hit2) regs_q[r] <= wb2_data_i;
-        else if (host_we_i && host_idx_i == IDX) regs_q[r] <= host_wdata_i;
+        if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
+        else if (hit0) lvt_q[r] <= 2'd0;
+        else if (hit1) lvt_q[r] <= 2'd1;
+        else if (hit2) lvt_q[r] <= 2'd2;
       end
       always @(posedge clk_i) begin
         if (rst_i)                               busy_q[r] <= 1'b0;
         else if (set_i && set_idx_i == IDX)      busy_q[r] <= 1'b1;
-        else if (hit0 || hit1 || hit2)           busy_q[r] <= 1'b0;
+        else if (hit0 || hit1 || hit2)     busy_q[r] <= 1'b0;
       end
     end
   endgenerate
-
-`ifdef FORMAL
-  // Two write ports never name the same register in one cycle.
-  always @(*) begin
-    if (wb0_valid_i && wb1_valid_i) assert (wb0_idx_i != wb1_idx_i);
-    if (wb0_valid_i && wb2_valid_i) assert (wb0_idx_i != wb2_idx_i);
-    if (wb1_valid_i && wb2_valid_i) assert (wb1_idx_i != wb2_idx_i);
-  end
-`endif
 endmodule
 `default_nettype wire

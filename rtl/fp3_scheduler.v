@@ -112,13 +112,16 @@ module fp3_scheduler #(
   // ---- fetch ---------------------------------------------------------------
   wire [63:0]   imem_word;
   reg  [AW-1:0] fetch_addr;
-  fp3_imem #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(64)) u_imem (
+  // The instruction memory (a block RAM): the address presented in cycle
+  // t is read at the edge ending cycle t, the word is here in cycle t + 1.
+  // Entries never written read as zero, the nop.
+  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(64)) u_imem (
     .clk_i   (clk_i),
     .we_i    (imem_we_i),
     .waddr_i (imem_waddr_i),
     .wdata_i (imem_wdata_i),
     .raddr_i (fetch_addr),
-    .insn_o  (imem_word)
+    .rdata_o (imem_word)
   );
 
   // ---- decode and hazards, every context -----------------------------------

@@ -10,7 +10,15 @@
 // CTX selects the context whose status and registers the host sees;
 // CONTEXTS says how many contexts (0 .. CONTEXTS-1) a START runs.
 // Registers and instruction memory accept writes only while no run is in
-// progress; a write while running is ignored.
+// progress; a write while running is ignored, and the register window
+// reads as zero while running (the register file's read ports belong to
+// the issue pipeline then).
+//
+// Pipeline of one operation: issue (cycle t: the scheduler picks it, the
+// register file reads its operands), operand read (t + 1: the data leave
+// the register-file RAMs, bypassed), then the unit: the FP cores take
+// ADD_LATENCY / MUL_LATENCY cycles and the move path one, so a dependent
+// instruction issues 1 + latency cycles after its producer.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -41,7 +49,7 @@ module fp3_top #(
   input  wire        host_we_i,
   input  wire [11:0] host_addr_i,
   input  wire [31:0] host_wdata_i,
-  output reg  [31:0] host_rdata_o,
+  output wire [31:0] host_rdata_o,
   output wire        running_o,
   output wire        done_o,
   // trace port (contexts as 6-bit numbers)
@@ -163,7 +171,7 @@ module fp3_top #(
   );
 
   // ---- register banks ------------------------------------------------------
-  wire [31:0] ra_data, rb_data, host_reg_rdata;
+  wire [31:0] ra_data, rb_data;
 
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
@@ -186,23 +194,40 @@ module fp3_top #(
     .wb2_valid_i  (mov_valid),
     .wb2_idx_i    (mov_idx),
     .wb2_data_i   (mov_data),
+    .host_sel_i   (host_idle),
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
-    .host_rdata_o (host_reg_rdata),
     .idle_o       (idle)
   );
+
+  // ---- operand-read stage --------------------------------------------------
+  // The register file answers a read of the issue cycle t in cycle t + 1;
+  // the rest of the issued operation waits beside it for one cycle.
+  reg          rd_valid_q, rd_sub_q, rd_imm_q;
+  reg [1:0]    rd_unit_q;
+  reg [XW-1:0] rd_idx_q;
+  reg [31:0]   rd_immval_q;
+  always @(posedge clk_i) begin
+    if (rst_i) rd_valid_q <= 1'b0;
+    else       rd_valid_q <= issue && issue_unit != UNIT_NONE;
+    rd_unit_q   <= issue_unit;
+    rd_sub_q    <= issue_sub;
+    rd_imm_q    <= issue_imm;
+    rd_immval_q <= imm;
+    rd_idx_q    <= rd;
+  end
 
   // ---- arithmetic unit -----------------------------------------------------
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
               .XW(XW)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
-    .valid_i     (issue),
-    .unit_i      (issue_unit),
-    .sub_i       (issue_sub),
-    .rd_i        (rd),
-    .a_i         (issue_imm ? imm : ra_data),
+    .valid_i     (rd_valid_q),
+    .unit_i      (rd_unit_q),
+    .sub_i       (rd_sub_q),
+    .rd_i        (rd_idx_q),
+    .a_i         (rd_imm_q ? rd_immval_q : ra_data),
     .b_i         (rb_data),
     .add_valid_o (add_valid),
     .add_reg_o   (add_idx),
@@ -255,12 +280,18 @@ module fp3_top #(
       HR_CTX:        rdata_d = {{(32-CW){1'b0}}, ctx_q};
       HR_CONTEXTS:   rdata_d = contexts_q;
       HR_INFO2:      rdata_d = {16'd0, NUM_CONTEXTS[15:0]};
-      default: begin
-        if (win_reg && reg_ok) rdata_d = host_reg_rdata;
-      end
+      default: rdata_d = 32'd0;
     endcase
   end
-  always @(posedge clk_i) host_rdata_o <= rdata_d;
+  // A register of the window comes straight from the register file's read
+  // port A, which answers one cycle after the address, like rdata_q.
+  reg [31:0] rdata_q;
+  reg        reg_read_q;
+  always @(posedge clk_i) begin
+    rdata_q    <= rdata_d;
+    reg_read_q <= win_reg && reg_ok && host_idle;
+  end
+  assign host_rdata_o = reg_read_q ? ra_data : rdata_q;
 
   // ---- outputs -------------------------------------------------------------
   assign running_o       = running;
