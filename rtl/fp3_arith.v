@@ -8,14 +8,16 @@
 // register because the scheduler stalls WAW hazards.
 //
 // Parameters
-//   ADD_LATENCY  cycles from issue to result of fp_add (= issue-to-dependent-
-//                issue distance, thanks to the register-file bypass)
+//   ADD_LATENCY  cycles from operands to result of fp_add (a dependent
+//                instruction issues one read-stage cycle more after its
+//                producer, thanks to the register-file bypass)
 //   MUL_LATENCY  the same for fp_mul
 //   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
 //   XW           width of the destination tag ({context, register})
 // Ports
 //   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, rd_i,
-//   a_i, b_i: the operation issued in this cycle (for the move path a_i is
+//   a_i, b_i: the operation issued in the previous cycle, with its operands
+//   from the register file's read stage (for the move path a_i is
 //   the value to write: the source register or the immediate).
 //   {add,mul,mov}_{valid,reg,data}_o: write-back ports; add/mul flags_o are
 //   the IEEE exception flags of the result on the same port.

@@ -29,7 +29,7 @@
 //   NUM_CONTEXTS contexts, 1..64                (defaults: sw/fp3_isa.h)
 //   NUM_REGS     registers per context, 2..256
 //   IMEM_DEPTH   instruction memory entries, 2..1024
-//   ADD_LATENCY  add/sub core latency in cycles (issue to dependent issue)
+//   ADD_LATENCY  add/sub core latency in cycles (operands to result)
 //   MUL_LATENCY  mul core latency in cycles
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero

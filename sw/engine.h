@@ -34,8 +34,8 @@ typedef struct fp3_config {
   unsigned num_contexts;/* contexts a run may start                      */
   unsigned num_regs;    /* registers per context                         */
   unsigned imem_depth;  /* instruction memory entries                    */
-  unsigned add_latency; /* cycles, issue to dependent issue (RTL only)   */
-  unsigned mul_latency; /* cycles, issue to dependent issue (RTL only)   */
+  unsigned add_latency; /* add core, cycles (RTL only); a dependent     */
+  unsigned mul_latency; /* issues FP3_READ_CYCLES + latency after it    */
   fpref_mode mode;      /* FP core options: rounding, flush-to-zero       */
 } fp3_config;
 

@@ -43,7 +43,13 @@
 #define FP3_UNIT_NONE 0   /* no register result: nop, endi, halt          */
 #define FP3_UNIT_ADD  1   /* FP add/sub core, ADD_LATENCY cycles          */
 #define FP3_UNIT_MUL  2   /* FP mul core, MUL_LATENCY cycles              */
-#define FP3_UNIT_MOV  3   /* move/immediate path, result the next cycle   */
+#define FP3_UNIT_MOV  3   /* move/immediate path, latency 1               */
+
+/* Cycles from issue to the operands leaving the register file (the
+ * block-RAM read stage).  A dependent instruction issues FP3_READ_CYCLES +
+ * latency cycles after its producer: the unit's latency (ADD_LATENCY,
+ * MUL_LATENCY, 1 for the move path) plus this. */
+#define FP3_READ_CYCLES 1
 
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
@@ -80,8 +86,8 @@
   X(NUM_CONTEXTS, 8)   /* contexts: objects in flight (1 .. 64)        */      \
   X(NUM_REGS,    32)   /* registers per context (at most 256)          */      \
   X(IMEM_DEPTH,  256)  /* instruction memory words (at most 1024)      */      \
-  X(ADD_LATENCY, 4)    /* add/sub core: issue to dependent issue       */      \
-  X(MUL_LATENCY, 3)    /* mul core: issue to dependent issue           */
+  X(ADD_LATENCY, 4)    /* add/sub core: operands to result, cycles     */      \
+  X(MUL_LATENCY, 3)    /* mul core: operands to result, cycles         */
 
 /* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
  * 6-bit context numbers). */
