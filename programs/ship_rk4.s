@@ -11,17 +11,17 @@
 ; (sw/golden.c), so every engine must match it bit for bit.  Only the
 ; order of independent instructions differs: the processor issues in
 ; order, one instruction per cycle, and stalls an instruction until its
-; operands are written (add/sub: 4 cycles issue to dependent issue, mul:
-; 3).  The one chain k1 -> k2 -> k3 -> k4 -> v1 -> s fixes almost the whole
+; operands are written (add/sub: 5 cycles issue to dependent issue, mul:
+; 4; the register-file read stage plus the core latency).  The one chain k1 -> k2 -> k3 -> k4 -> v1 -> s fixes almost the whole
 ; order; the off-chain work 2*k2, k1 + 2*k2, 2*k3 and (k1 + 2k2) + 2k3 is
 ; placed in cycles where the chain would stall anyway.  Each destination
 ; is written again only long after its previous write has retired.
 ;
-; Timing with ADD_LATENCY 4, MUL_LATENCY 3 (measured on the RTL): 89
-; cycles for the first integration, 86 for each later one.  The chain from
-; v0 to v1 alone is 81 cycles (13 for k1, 20 each for k2 and k3, 17 for
-; k4, 11 for v1); h*v1 and s + h*v1 must precede the endi and delay the
-; next integration's C*v1 by 5.  Every instruction issues inside the
+; Timing with ADD_LATENCY 4, MUL_LATENCY 3 (measured on the RTL): 114
+; cycles for the first integration, 111 for each later one.  The chain
+; from v0 to v1 alone is 105 cycles (17 for k1, 26 each for k2 and k3, 22
+; for k4, 14 for v1); h*v1 and s + h*v1 must precede the endi and delay
+; the next integration's C*v1 by 6.  Every instruction issues inside the
 ; chain's latency, so only more objects in flight would go faster.
 ;
 ; Registers: 9 hold the scene and the constants, 14 are temporaries.
