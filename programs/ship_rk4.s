@@ -17,11 +17,12 @@
 ; placed in cycles where the chain would stall anyway.  Each destination
 ; is written again only long after its previous write has retired.
 ;
-; Timing with ADD_LATENCY 4, MUL_LATENCY 3 (measured on the RTL): 114
-; cycles for the first integration, 111 for each later one.  The chain
+; Timing with ADD_LATENCY 4, MUL_LATENCY 3 (measured on the RTL): 121
+; cycles for the first integration, 113 for each later one.  The chain
 ; from v0 to v1 alone is 105 cycles (17 for k1, 26 each for k2 and k3, 22
 ; for k4, 14 for v1); h*v1 and s + h*v1 must precede the endi and delay
-; the next integration's C*v1 by 6.  Every instruction issues inside the
+; the next integration's C*v1 by 6; one context issues at most every
+; other cycle, which costs 2 more.  Every instruction issues inside the
 ; chain's latency, so only more objects in flight would go faster.
 ;
 ; Registers: 9 hold the scene and the constants, 14 are temporaries.

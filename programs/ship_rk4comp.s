@@ -11,7 +11,7 @@
 ; Only v and s are results, so the compensation terms c of integration k
 ; are computed at the top of integration k+1 (from the saved x and y),
 ; where they fill stalls; the prologue makes the first ones 0.  Costs 8
-; more cycles than the plain program (121 against 111 per integration,
+; more cycles than the plain program (128 against 113 per integration,
 ; ADD_LATENCY 4, MUL_LATENCY 3): y = d - c lies on the chain, twice.
 
 .reg T     r1

@@ -10,7 +10,7 @@
 ; s; stable for h/tau < 2.785.  Golden model: rk4vs_init / rk4vs_step in
 ; sw/integrators.c.  The s work does not wait for v1, so it fills stalls
 ; of the velocity chain and the integration is shorter than the paper's:
-; the endi issues right after v1 (105 cycles per integration measured,
+; the endi issues right after v1 (107 cycles per integration measured,
 ; ADD_LATENCY 4, MUL_LATENCY 3).
 
 .reg T     r1

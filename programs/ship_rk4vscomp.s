@@ -8,8 +8,8 @@
 ; rk4vscomp_step in sw/integrators.c.  As in ship_rk4comp.s the
 ; compensations c of integration k are computed at the top of integration
 ; k+1 from the saved x and y (they are no results); the prologue makes the
-; first ones 0.  The dv and y = dv - c of v lie on the chain: 110 cycles
-; per integration against rk4vs's 105 (ADD_LATENCY 4, MUL_LATENCY 3).
+; first ones 0.  The dv and y = dv - c of v lie on the chain: 117 cycles
+; per integration against rk4vs's 107 (ADD_LATENCY 4, MUL_LATENCY 3).
 
 .reg T     r1
 .reg C     r2

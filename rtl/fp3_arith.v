@@ -3,7 +3,7 @@
 // own write-back port.
 //
 // One operation may enter per cycle (single issue).  Each unit carries the
-// destination register index in a delay line beside its data path, so the
+// destination register index in a tag line (fp_pipe) beside its data path, so the
 // index leaves with the result.  Write-back ports never collide on one
 // register because the scheduler stalls WAW hazards.
 //
@@ -21,6 +21,7 @@
 //   the value to write: the source register or the immediate).
 //   {add,mul,mov}_{valid,reg,data}_o: write-back ports; add/mul flags_o are
 //   the IEEE exception flags of the result on the same port.
+//   {add,mul,mov}_next_{valid,reg}_o: the write-backs of the next cycle.
 `default_nettype none
 module fp3_arith #(
   parameter integer ADD_LATENCY = 4,
@@ -46,6 +47,12 @@ module fp3_arith #(
   output wire [31:0]   mul_data_o,
   output wire [4:0]    mul_flags_o,
   output reg           mov_valid_o,
+  output wire          add_next_valid_o,  // tags written back next cycle
+  output wire [XW-1:0] add_next_reg_o,
+  output wire          mul_next_valid_o,
+  output wire [XW-1:0] mul_next_reg_o,
+  output wire          mov_next_valid_o,
+  output wire [XW-1:0] mov_next_reg_o,
   output reg  [XW-1:0] mov_reg_o,
   output reg  [31:0]   mov_data_o
 );
@@ -68,11 +75,22 @@ module fp3_arith #(
     .y_o     (add_data_o),
     .flags_o (add_flags_o)
   );
-  fp3_delay #(.WIDTH(XW), .DEPTH(ADD_LATENCY)) u_add_tag (
+  // The tag line is split one stage before its end: the tag there is the
+  // register written back in the next cycle (add_next_*), which lets the
+  // scheduler decide one cycle ahead.
+  fp_pipe #(.WIDTH(XW), .DEPTH(ADD_LATENCY - 1)) u_add_tag_pre (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (add_go),
     .data_i  (rd_i),
+    .valid_o (add_next_valid_o),
+    .data_o  (add_next_reg_o)
+  );
+  fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_add_tag (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (add_next_valid_o),
+    .data_i  (add_next_reg_o),
     .valid_o (add_valid_o),
     .data_o  (add_reg_o)
   );
@@ -89,11 +107,19 @@ module fp3_arith #(
     .y_o     (mul_data_o),
     .flags_o (mul_flags_o)
   );
-  fp3_delay #(.WIDTH(XW), .DEPTH(MUL_LATENCY)) u_mul_tag (
+  fp_pipe #(.WIDTH(XW), .DEPTH(MUL_LATENCY - 1)) u_mul_tag_pre (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (mul_go),
     .data_i  (rd_i),
+    .valid_o (mul_next_valid_o),
+    .data_o  (mul_next_reg_o)
+  );
+  fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_mul_tag (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (mul_next_valid_o),
+    .data_i  (mul_next_reg_o),
     .valid_o (mul_valid_o),
     .data_o  (mul_reg_o)
   );
@@ -109,6 +135,8 @@ module fp3_arith #(
 `endif
 
   // ---- move path: one register stage ---------------------------------------
+  assign mov_next_valid_o = mov_go;
+  assign mov_next_reg_o   = rd_i;
   always @(posedge clk_i) begin
     if (rst_i) mov_valid_o <= 1'b0;
     else       mov_valid_o <= mov_go;

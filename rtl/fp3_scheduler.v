@@ -1,6 +1,6 @@
 // fp3_scheduler -- the workload scheduler (paper §4, and the many schedulers
 // sharing one arithmetic unit of §6.3): instruction memory, one context per
-// object (PC, instruction buffer, integration counter, status), decode,
+// object (PC, instruction queue, integration counter, status), decode,
 // hazard check against the register file's busy flags, and an arbiter that
 // issues one ready instruction per cycle from one context.
 //
@@ -9,28 +9,37 @@
 // the STEPS requested, the context stops issuing; otherwise its PC jumps to
 // L.  All contexts run the same program on their own register bank.
 //
-// Issue: a context's instruction is a candidate when it is legal and ready:
-// its sources are not busy or are being written back this cycle (RAW, with
-// bypass) and its destination is not busy or is being written back (WAW).
-// WAR needs no check: operands are read at issue, in order.  Among the
-// candidates a round-robin arbiter grants one per cycle (a context that
-// issued has the lowest priority next cycle), so no context with ready
-// work starves.  A cycle without issue while some context waits on a
-// hazard is a stall.
+// The front end is three pipelined steps, each ending in registers, so
+// that no path runs from the instruction memory through the hazard check
+// to the arbiter (the long path of a one-cycle design):
 //
-// Fetch: the instruction memory has one synchronous read port.  Each cycle
-// it reads for one context that needs an instruction -- the one that issues
-// (at its next PC, computed in the same cycle, so a taken endi costs no
-// bubble) or one whose buffer is empty -- chosen round-robin.  The word
-// arrives the next cycle and can issue at once; if it does not, the
-// context's buffer keeps it.  With one context this is exactly an in-order
-// pipeline with no fetch bubbles.
+//   fetch   One instruction-memory read per cycle, for one context chosen
+//           round-robin among those with room in their two-entry queue
+//           and no read in flight.  The fetch PC follows the words as they
+//           arrive: after an endi it is the loop target (the last endi's
+//           extra words are dropped when the context stops).
+//   ready   For the instruction at the head of each queue: legal, sources
+//           not busy (RAW) and destination not busy (WAW), where a busy
+//           register that is written back in this cycle or the next counts
+//           as free (the next cycle's write-backs come from the units' tag
+//           lines).  Registered: valid for issue in the next cycle.
+//   issue   Among the contexts whose head was ready, a round-robin arbiter
+//           grants one per cycle (the granted context has the lowest
+//           priority next), so no context with ready work starves.  A
+//           context that issued in the previous cycle is not a candidate:
+//           its ready bit belonged to the instruction it just issued.  So
+//           one context issues at most every other cycle, and two or more
+//           contexts keep the arithmetic unit busy every cycle.
+//
+// WAR needs no check: operands are read at issue, in order.  A cycle
+// without issue while some active context holds an instruction is a stall.
 //
 // A run ends (DONE) when every started context has stopped -- last endi,
 // halt or an error -- and no result is in flight.  Errors, per context: an
 // illegal instruction (unknown opcode, a nonzero unused field, a register
-// >= NUM_REGS, an endi target outside the memory) or a PC running off the
-// end of the memory stop that context and record its faulting PC.
+// >= NUM_REGS, an endi target outside the memory) at the head of its queue,
+// or a PC running off the end of the memory, stop that context and record
+// its faulting PC.
 //
 // Parameters
 //   NUM_CONTEXTS  contexts (objects in flight), >= 1; CW = clog2, >= 1
@@ -68,14 +77,12 @@ module fp3_scheduler #(
   output reg  [63:0]                  cycles_o,
   output reg  [63:0]                  issued_o,
   output reg  [63:0]                  stalls_o,
-  // register file: busy flags and write-back ports (for readiness)
-  input  wire [(1<<(CW+IW))-1:0]     busy_i,
-  input  wire                         wb0_valid_i,
-  input  wire [CW+IW-1:0]             wb0_idx_i,
-  input  wire                         wb1_valid_i,
-  input  wire [CW+IW-1:0]             wb1_idx_i,
-  input  wire                         wb2_valid_i,
-  input  wire [CW+IW-1:0]             wb2_idx_i,
+  // register file: busy flags; write-backs of this cycle and of the next
+  input  wire [(1<<(CW+IW))-1:0]      busy_i,
+  input  wire [2:0]                   wb_valid_i,    // add, mul, move ports
+  input  wire [3*(CW+IW)-1:0]         wb_idx_i,
+  input  wire [2:0]                   wbn_valid_i,   // ... in the next cycle
+  input  wire [3*(CW+IW)-1:0]         wbn_idx_i,
   input  wire                         idle_i,
   // issue to the register file and the arithmetic unit
   output wire                         issue_o,
@@ -96,25 +103,33 @@ module fp3_scheduler #(
 
   // ---- per-context state ---------------------------------------------------
   reg [NC-1:0] active_q;            // fetching and issuing
-  reg [NC-1:0] ibv_q;               // buffer holds the instruction at pc
-  reg [63:0]   ib_q   [0:NC-1];     // instruction buffer
-  reg [AW-1:0] pc_q   [0:NC-1];     // PC of the buffered / arriving instruction
+  reg [NC-1:0] v0_q, v1_q;          // queue entries 0 (head) and 1 valid
+  reg [63:0]   w0_q [0:NC-1];       // queue words
+  reg [63:0]   w1_q [0:NC-1];
+  reg [AW-1:0] p0_q [0:NC-1];       // ... and their PCs
+  reg [AW-1:0] p1_q [0:NC-1];
+  reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
+  reg [NC-1:0] fend_q;              // fetched the last word of the memory
+  reg [NC-1:0] ready_q;             // head was ready (computed last cycle)
   reg [31:0]   sdone_q[0:NC-1];     // integrations completed
   reg [3:0]    err_q  [0:NC-1];
-  reg [AW-1:0] fpc_q  [0:NC-1];     // faulting PC
+  reg [AW-1:0] epc_q  [0:NC-1];     // faulting PC
   // ---- shared state --------------------------------------------------------
   reg [31:0]   steps_q;
   reg [CW-1:0] grr_q;               // issue arbiter: highest priority
   reg [CW-1:0] frr_q;               // fetch arbiter: highest priority
   reg          fvalid_q;            // a fetched word arrives this cycle
   reg [CW-1:0] fctx_q;              // ... for this context
+  reg [AW-1:0] fpcq_q;              // ... from this address
+  reg          lastv_q;             // a context issued last cycle
+  reg [CW-1:0] last_q;              // ... this one
 
-  // ---- fetch ---------------------------------------------------------------
+  // ---- instruction memory --------------------------------------------------
+  // A block RAM: the address presented in cycle t is read at the edge
+  // ending cycle t, the word is here in cycle t + 1.  Entries never
+  // written read as zero, the nop.
   wire [63:0]   imem_word;
-  reg  [AW-1:0] fetch_addr;
-  // The instruction memory (a block RAM): the address presented in cycle
-  // t is read at the edge ending cycle t, the word is here in cycle t + 1.
-  // Entries never written read as zero, the nop.
+  wire [AW-1:0] fetch_addr;
   fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(64)) u_imem (
     .clk_i   (clk_i),
     .we_i    (imem_we_i),
@@ -124,7 +139,7 @@ module fp3_scheduler #(
     .rdata_o (imem_word)
   );
 
-  // ---- decode and hazards, every context -----------------------------------
+  // ---- decode helpers ------------------------------------------------------
   function reg_ok;  // a used field names a register, an unused one is zero
     input       used;
     input [7:0] r;
@@ -133,31 +148,30 @@ module fp3_scheduler #(
     end
   endfunction
 
-  // A write-back port writes index x in this cycle.  A plain expression,
+  // Index x is written back in this cycle or the next.  A plain expression,
   // not a function: a continuous assignment is re-evaluated only when its
-  // operands change, and a function's body is not an operand.
-`define FP3_WRITTEN(x) \
-  ((wb0_valid_i && wb0_idx_i == (x)) || (wb1_valid_i && wb1_idx_i == (x)) || \
-   (wb2_valid_i && wb2_idx_i == (x)))
+  // operands change, and a function's body is not an operand (Icarus).
+`define FP3_FREED(x) \
+  ((wb_valid_i[0]  && wb_idx_i[0*XW +: XW]  == (x)) || \
+   (wb_valid_i[1]  && wb_idx_i[1*XW +: XW]  == (x)) || \
+   (wb_valid_i[2]  && wb_idx_i[2*XW +: XW]  == (x)) || \
+   (wbn_valid_i[0] && wbn_idx_i[0*XW +: XW] == (x)) || \
+   (wbn_valid_i[1] && wbn_idx_i[1*XW +: XW] == (x)) || \
+   (wbn_valid_i[2] && wbn_idx_i[2*XW +: XW] == (x)))
 
-  wire [NC-1:0] have;     // an instruction is available (buffered or arriving)
+  // ---- ready step: the head of every queue ---------------------------------
   wire [NC-1:0] legal;
-  wire [NC-1:0] ready;
-  wire [63:0]   insn [0:NC-1];
-
+  wire [NC-1:0] ready_d;
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
-      wire        arriving = fvalid_q && fctx_q == CTX;
-      assign insn[c] = arriving ? imem_word : ib_q[c];
-      assign have[c] = ibv_q[c] || arriving;
-
-      wire [7:0]  opc = insn[c][ISA_OPC_LSB +: ISA_OPC_WIDTH];
-      wire [7:0]  rd8 = insn[c][ISA_RD_LSB  +: ISA_REG_WIDTH];
-      wire [7:0]  ra8 = insn[c][ISA_RA_LSB  +: ISA_REG_WIDTH];
-      wire [7:0]  rb8 = insn[c][ISA_RB_LSB  +: ISA_REG_WIDTH];
-      wire [31:0] imm = insn[c][0 +: ISA_IMM_WIDTH];
+      wire [63:0] insn = w0_q[c];
+      wire [7:0]  opc = insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+      wire [7:0]  rd8 = insn[ISA_RD_LSB  +: ISA_REG_WIDTH];
+      wire [7:0]  ra8 = insn[ISA_RA_LSB  +: ISA_REG_WIDTH];
+      wire [7:0]  rb8 = insn[ISA_RB_LSB  +: ISA_REG_WIDTH];
+      wire [31:0] imm = insn[0 +: ISA_IMM_WIDTH];
       wire [6:0]  dec = isa_decode(opc);
       wire use_rd = dec[0], use_ra = dec[1], use_rb = dec[2], use_imm = dec[3];
 
@@ -170,17 +184,13 @@ module fp3_scheduler #(
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
       // The unit is decoded again for the granted context only.
       wire unused_unit = &{1'b0, dec[5:4]};
-      assign ready[c] = (!use_ra || !busy_i[xa] || `FP3_WRITTEN(xa)) &&
-                        (!use_rb || !busy_i[xb] || `FP3_WRITTEN(xb)) &&
-                        (!use_rd || !busy_i[xd] || `FP3_WRITTEN(xd));
+      assign ready_d[c] = v0_q[c] && legal[c] &&
+                          (!use_ra || !busy_i[xa] || `FP3_FREED(xa)) &&
+                          (!use_rb || !busy_i[xb] || `FP3_FREED(xb)) &&
+                          (!use_rd || !busy_i[xd] || `FP3_FREED(xd));
     end
   endgenerate
-
-`undef FP3_WRITTEN
-
-  wire [NC-1:0] waiting = active_q & have & legal;   // legal work to issue
-  wire [NC-1:0] cand    = waiting & ready;
-  wire [NC-1:0] illegal = active_q & have & ~legal;
+`undef FP3_FREED
 
   // ---- round-robin pick: the first set bit at or after `from` --------------
   function [CW:0] rr_pick;  // {found, index}
@@ -213,11 +223,21 @@ module fp3_scheduler #(
     end
   endfunction
 
-  // ---- issue ---------------------------------------------------------------
+  function [NC-1:0] onehot;
+    input          valid;
+    input [CW-1:0] x;
+    integer p;
+    begin
+      for (p = 0; p < NC; p = p + 1) onehot[p] = valid && x == p[CW-1:0];
+    end
+  endfunction
+
+  // ---- issue step ----------------------------------------------------------
+  wire [NC-1:0] cand  = ready_q & active_q & ~onehot(lastv_q, last_q);
   wire [CW:0]   gpick = rr_pick(cand, grr_q);
   wire          grant = gpick[CW];
   wire [CW-1:0] g     = gpick[CW-1:0];
-  wire [63:0]   gi    = insn[g];
+  wire [63:0]   gi    = w0_q[g];
 
   wire [7:0]  g_opc  = gi[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire [7:0]  g_rd8  = gi[ISA_RD_LSB  +: ISA_REG_WIDTH];
@@ -227,12 +247,10 @@ module fp3_scheduler #(
   wire [6:0]  g_dec  = isa_decode(g_opc);
   wire        g_endi = g_opc == OP_ENDI;
   wire        g_last = g_endi && (sdone_q[g] + 32'd1 == steps_q);
-  wire        g_jump = g_endi && !g_last;
   wire        g_stop = (g_opc == OP_HALT) || g_last;
-  wire [AW-1:0] g_pc = pc_q[g];
-  wire        g_at_end = {{(32-AW){1'b0}}, g_pc} == IMEM_DEPTH - 1;
-  wire        g_overflow = grant && !g_stop && !g_jump && g_at_end;
-  wire [AW-1:0] g_next = g_jump ? g_imm[AW-1:0] : g_pc + {{(AW-1){1'b0}}, 1'b1};
+  wire [AW-1:0] g_pc = p0_q[g];
+  wire        g_overflow = grant && !g_stop && !g_endi &&
+                           {{(32-AW){1'b0}}, g_pc} == IMEM_DEPTH - 1;
 
   assign issue_o      = grant;
   assign issue_ctx_o  = g;
@@ -245,30 +263,25 @@ module fp3_scheduler #(
   assign imm_o        = g_imm;
   assign endi_o       = grant && g_endi;
 
-  // ---- fetch arbitration ---------------------------------------------------
-  // A context needs a word when it is active and has none, or when it
-  // issues now and goes on.  Contexts stopping or faulting this cycle do not.
-  reg  [NC-1:0] need;
-  integer n;
-  always @(*) begin
-    for (n = 0; n < NC; n = n + 1) begin
-      if (grant && g == n[CW-1:0])
-        need[n] = !g_stop && !g_overflow;
-      else
-        need[n] = active_q[n] && !have[n];
-    end
-  end
-  wire [CW:0]   fpick   = rr_pick(need, frr_q);
-  wire          fetch   = fpick[CW] && running_o;
-  wire [CW-1:0] f       = fpick[CW-1:0];
-  wire          start_ok = start_i && !running_o && steps_i != 32'd0 &&
-                           contexts_i != 32'd0 && contexts_i <= NC;
-  wire [AW-1:0] f_pc = pc_q[f];
-  always @(*) begin
-    if (start_ok)                   fetch_addr = {AW{1'b0}};
-    else if (grant && f == g)       fetch_addr = g_next;
-    else                            fetch_addr = f_pc;
-  end
+  // ---- fetch step ----------------------------------------------------------
+  // A context may fetch when it has room for the word (an entry free, not
+  // counting one it may issue now: that would put the arbiter in front of
+  // the memory address) and no read in flight.
+  wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
+  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving;
+  wire [CW:0]   fpick = rr_pick(fetch_req, frr_q);
+  wire          fetch = fpick[CW] && running_o;
+  wire [CW-1:0] f     = fpick[CW-1:0];
+  assign fetch_addr = fpc_q[f];
+
+  // The arriving word decides where its context fetches next.
+  wire [7:0]    a_opc   = imem_word[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire          a_endi  = a_opc == OP_ENDI;
+  wire          a_atend = {{(32-AW){1'b0}}, fpcq_q} == IMEM_DEPTH - 1;
+  wire [AW-1:0] a_next  = a_endi ? imem_word[AW-1:0] : fpcq_q + {{(AW-1){1'b0}}, 1'b1};
+
+  wire start_ok = start_i && !running_o && steps_i != 32'd0 &&
+                  contexts_i != 32'd0 && contexts_i <= NC;
 
   // ---- selected-context status ---------------------------------------------
   wire [NC-1:0] err_any;
@@ -279,23 +292,31 @@ module fp3_scheduler #(
   endgenerate
   assign any_error_o      = |err_any;
   assign error_sel_o      = err_q[sel_ctx_i];
-  assign fault_pc_sel_o   = {{(32-AW){1'b0}}, fpc_q[sel_ctx_i]};
+  assign fault_pc_sel_o   = {{(32-AW){1'b0}}, epc_q[sel_ctx_i]};
   assign steps_done_sel_o = sdone_q[sel_ctx_i];
 
   // Upper bits of wide fields are checked by `legal`, not used as indices.
-  wire unused_ok = &{1'b0, g_rd8, g_ra8, g_rb8, g_dec[6], g_dec[3:0]};
+  wire unused_ok = &{1'b0, g_rd8, g_ra8, g_rb8, g_dec[6], g_dec[3:0], imem_word[31:AW]};
 
   // ---- control, status and counters ----------------------------------------
-  wire bad_start = start_i && !running_o && !start_ok;
+  wire          bad_start = start_i && !running_o && !start_ok;
+  wire [NC-1:0] illegal   = active_q & v0_q & ~legal;
+  wire [NC-1:0] gone      = onehot(grant, g);   // the head leaves its queue
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
       running_o <= 1'b0;
       done_o    <= 1'b0;
       active_q  <= {NC{1'b0}};
-      ibv_q     <= {NC{1'b0}};
+      v0_q      <= {NC{1'b0}};
+      v1_q      <= {NC{1'b0}};
+      fend_q    <= {NC{1'b0}};
+      ready_q   <= {NC{1'b0}};
       fvalid_q  <= 1'b0;
       fctx_q    <= {CW{1'b0}};
+      fpcq_q    <= {AW{1'b0}};
+      lastv_q   <= 1'b0;
+      last_q    <= {CW{1'b0}};
       grr_q     <= {CW{1'b0}};
       frr_q     <= {CW{1'b0}};
       steps_q   <= 32'd0;
@@ -303,10 +324,10 @@ module fp3_scheduler #(
       issued_o  <= 64'd0;
       stalls_o  <= 64'd0;
       for (k = 0; k < NC; k = k + 1) begin
-        pc_q[k]    <= {AW{1'b0}};
+        fpc_q[k]   <= {AW{1'b0}};
         sdone_q[k] <= 32'd0;
         err_q[k]   <= ERR_NONE;
-        fpc_q[k]   <= {AW{1'b0}};
+        epc_q[k]   <= {AW{1'b0}};
       end
     end else if (!running_o) begin
       if (bad_start) begin
@@ -322,17 +343,20 @@ module fp3_scheduler #(
         cycles_o  <= 64'd0;
         issued_o  <= 64'd0;
         stalls_o  <= 64'd0;
-        ibv_q     <= {NC{1'b0}};
-        fvalid_q  <= 1'b1;          // context 0's first word is read now
-        fctx_q    <= {CW{1'b0}};
+        v0_q      <= {NC{1'b0}};
+        v1_q      <= {NC{1'b0}};
+        fend_q    <= {NC{1'b0}};
+        ready_q   <= {NC{1'b0}};
+        fvalid_q  <= 1'b0;
+        lastv_q   <= 1'b0;
         grr_q     <= {CW{1'b0}};
-        frr_q     <= (NC > 1) ? {{(CW-1){1'b0}}, 1'b1} : {CW{1'b0}};
+        frr_q     <= {CW{1'b0}};
         for (k = 0; k < NC; k = k + 1) begin
           active_q[k] <= k < contexts_i;
-          pc_q[k]     <= {AW{1'b0}};
+          fpc_q[k]    <= {AW{1'b0}};
           sdone_q[k]  <= 32'd0;
           err_q[k]    <= ERR_NONE;
-          fpc_q[k]    <= {AW{1'b0}};
+          epc_q[k]    <= {AW{1'b0}};
         end
       end else if (clear_i) begin
         done_o <= 1'b0;
@@ -341,44 +365,62 @@ module fp3_scheduler #(
     end else begin
       cycles_o <= cycles_o + 64'd1;
       if (grant) issued_o <= issued_o + 64'd1;
-      if (!grant && |waiting) stalls_o <= stalls_o + 64'd1;
+      if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
 
-      // Words arriving for a context that does not issue them are kept.
+      ready_q <= ready_d & ~gone;
+      lastv_q <= grant;
+      last_q  <= g;
+
+      // Queues: the granted head leaves, an arriving word joins at the end.
       for (k = 0; k < NC; k = k + 1) begin
-        if (fvalid_q && fctx_q == k[CW-1:0]) begin
-          ib_q[k]  <= imem_word;
-          ibv_q[k] <= 1'b1;
+        if (gone[k]) begin
+          w0_q[k] <= w1_q[k];
+          p0_q[k] <= p1_q[k];
+          v0_q[k] <= v1_q[k];
+          v1_q[k] <= 1'b0;
+        end
+        if (arriving[k] && active_q[k]) begin
+          if (gone[k] ? !v1_q[k] : !v0_q[k]) begin
+            w0_q[k] <= imem_word;
+            p0_q[k] <= fpcq_q;
+            v0_q[k] <= 1'b1;
+          end else begin
+            w1_q[k] <= imem_word;
+            p1_q[k] <= fpcq_q;
+            v1_q[k] <= 1'b1;
+          end
+          fpc_q[k] <= a_next;
+          if (!a_endi && a_atend) fend_q[k] <= 1'b1;
         end
       end
-      // The issuing context consumed its word and moves to its next PC.
+
       if (grant) begin
-        ibv_q[g] <= 1'b0;
-        pc_q[g]  <= g_next;
-        grr_q    <= next_ctx(g);
+        grr_q <= next_ctx(g);
         if (g_endi) sdone_q[g] <= sdone_q[g] + 32'd1;
         if (g_stop) active_q[g] <= 1'b0;
         if (g_overflow) begin
           active_q[g] <= 1'b0;
           err_q[g]    <= ERR_PC_OVERFLOW;
-          fpc_q[g]    <= g_pc;
+          epc_q[g]    <= g_pc;
         end
       end
       for (k = 0; k < NC; k = k + 1) begin
         if (illegal[k]) begin
           active_q[k] <= 1'b0;
           err_q[k]    <= ERR_ILLEGAL_INSN;
-          fpc_q[k]    <= pc_q[k];
+          epc_q[k]    <= p0_q[k];
         end
       end
+
       // The word read now arrives next cycle.
       fvalid_q <= fetch;
       fctx_q   <= f;
+      fpcq_q   <= fetch_addr;
       if (fetch) frr_q <= next_ctx(f);
 
       if (active_q == {NC{1'b0}} && idle_i) begin
         running_o <= 1'b0;
         done_o    <= 1'b1;
-        fvalid_q  <= 1'b0;
       end
     end
   end

@@ -128,6 +128,8 @@ module fp3_top #(
   wire [XW-1:0] add_idx, mul_idx, mov_idx;
   wire [31:0]   add_data, mul_data, mov_data;
   wire [4:0]    add_flags, mul_flags;
+  wire          addn_valid, muln_valid, movn_valid;   // write-backs next cycle
+  wire [XW-1:0] addn_idx, muln_idx, movn_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_sched (
@@ -151,12 +153,10 @@ module fp3_top #(
     .issued_o         (issued),
     .stalls_o         (stalls),
     .busy_i           (busy),
-    .wb0_valid_i      (add_valid),
-    .wb0_idx_i        (add_idx),
-    .wb1_valid_i      (mul_valid),
-    .wb1_idx_i        (mul_idx),
-    .wb2_valid_i      (mov_valid),
-    .wb2_idx_i        (mov_idx),
+    .wb_valid_i       ({mov_valid, mul_valid, add_valid}),
+    .wb_idx_i         ({mov_idx, mul_idx, add_idx}),
+    .wbn_valid_i      ({movn_valid, muln_valid, addn_valid}),
+    .wbn_idx_i        ({movn_idx, muln_idx, addn_idx}),
     .idle_i           (idle),
     .issue_o          (issue),
     .issue_ctx_o      (issue_ctx),
@@ -238,6 +238,12 @@ module fp3_top #(
     .mul_data_o  (mul_data),
     .mul_flags_o (mul_flags),
     .mov_valid_o (mov_valid),
+    .add_next_valid_o (addn_valid),
+    .add_next_reg_o   (addn_idx),
+    .mul_next_valid_o (muln_valid),
+    .mul_next_reg_o   (muln_idx),
+    .mov_next_valid_o (movn_valid),
+    .mov_next_reg_o   (movn_idx),
     .mov_reg_o   (mov_idx),
     .mov_data_o  (mov_data)
   );

@@ -51,6 +51,11 @@
  * MUL_LATENCY, 1 for the move path) plus this. */
 #define FP3_READ_CYCLES 1
 
+/* A context issues at most once every FP3_ISSUE_SPACING cycles (its
+ * readiness is decided a cycle ahead, for the instruction at the head of
+ * its queue); two or more contexts issue every cycle between them. */
+#define FP3_ISSUE_SPACING 2
+
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
  *
