@@ -174,10 +174,10 @@ module tb_fp3 #(
   wire [AW-1:0]  dbg_pc        = dut.u_sched.g_pc;       // PC of the issuing instruction
   wire [63:0]    dbg_insn      = dut.u_sched.gi;         // its word
   wire [7:0]     dbg_opc       = dut.u_sched.g_opc;
-  wire [AW-1:0]  dbg_pc0       = dut.u_sched.pc_q[0];    // context 0: its PC
+  wire [AW-1:0]  dbg_pc0       = dut.u_sched.p0_q[0];    // context 0: PC of its queue's head
   wire [NC-1:0]  dbg_active    = dut.u_sched.active_q;   // contexts fetching and issuing
-  wire [NC-1:0]  dbg_waiting   = dut.u_sched.waiting;    // have legal work to issue
-  wire [NC-1:0]  dbg_ready     = dut.u_sched.ready;      // ... and its operands are ready
+  wire [NC-1:0]  dbg_waiting   = dut.u_sched.active_q & dut.u_sched.v0_q;  // hold an instruction
+  wire [NC-1:0]  dbg_ready     = dut.u_sched.ready_q;    // ... found ready last cycle
   wire [NC-1:0]  dbg_raw;                                // waits for a source (RAW)
   wire [NC-1:0]  dbg_waw;                                // waits for its destination (WAW)
   wire [31:0]    dbg_steps_done = dut.u_sched.sdone_q[0];
@@ -185,33 +185,46 @@ module tb_fp3 #(
   wire [63:0]    dbg_issued    = dut.u_sched.issued_o;
   wire [63:0]    dbg_stalls    = dut.u_sched.stalls_o;
   wire [NUM_REGS-1:0] dbg_busy = dut.u_regs.busy_q[NUM_REGS-1:0];  // context 0
-  wire           wb0_v = dut.u_sched.wb0_valid_i;     // write-back ports, {ctx, reg}
-  wire           wb1_v = dut.u_sched.wb1_valid_i;
-  wire           wb2_v = dut.u_sched.wb2_valid_i;
-  wire [31:0]    wb0_x = dut.u_sched.wb0_idx_i;
-  wire [31:0]    wb1_x = dut.u_sched.wb1_idx_i;
-  wire [31:0]    wb2_x = dut.u_sched.wb2_idx_i;
+  wire           wb0_v = dut.add_valid;     // write-back ports, {ctx, reg}
+  wire           wb1_v = dut.mul_valid;
+  wire           wb2_v = dut.mov_valid;
+  wire [31:0]    wb0_x = dut.add_idx;
+  wire [31:0]    wb1_x = dut.mul_idx;
+  wire [31:0]    wb2_x = dut.mov_idx;
+  wire           wbn0_v = dut.addn_valid;   // ... and those of the next cycle
+  wire           wbn1_v = dut.muln_valid;
+  wire           wbn2_v = dut.movn_valid;
+  wire [31:0]    wbn0_x = dut.addn_idx;
+  wire [31:0]    wbn1_x = dut.muln_idx;
+  wire [31:0]    wbn2_x = dut.movn_idx;
   wire [ADD_LATENCY-1:0] dbg_add_pipe;  // bit s: an add/sub in stage s
   wire [MUL_LATENCY-1:0] dbg_mul_pipe;  // bit s: a mul in stage s
   genvar gs;
   generate
-    for (gs = 0; gs < ADD_LATENCY; gs = gs + 1) begin : g_add_pipe
-      assign dbg_add_pipe[gs] = dut.u_arith.u_add_tag.valid_q[gs];
+    // The tag lines: LATENCY - 1 stages, then the write-back stage.
+    if (ADD_LATENCY > 1) begin : g_add_pipe
+      assign dbg_add_pipe[ADD_LATENCY-2:0] = dut.u_arith.u_add_tag_pre.g_regs.valid_q;
     end
-    for (gs = 0; gs < MUL_LATENCY; gs = gs + 1) begin : g_mul_pipe
-      assign dbg_mul_pipe[gs] = dut.u_arith.u_mul_tag.valid_q[gs];
+    if (MUL_LATENCY > 1) begin : g_mul_pipe
+      assign dbg_mul_pipe[MUL_LATENCY-2:0] = dut.u_arith.u_mul_tag_pre.g_regs.valid_q;
     end
-    // A waiting context's hazard: a used source busy and not written back
-    // this cycle (RAW), or its destination so (WAW).
+    assign dbg_add_pipe[ADD_LATENCY-1] = wb0_v;
+    assign dbg_mul_pipe[MUL_LATENCY-1] = wb1_v;
+    // A waiting context's hazard, as the scheduler's ready step sees it: a
+    // used source busy and not written back in this cycle or the next
+    // (RAW), or its destination so (WAW).
     // (No function here: Icarus re-evaluates a continuous assignment only
     // when a function's arguments change, not the signals it reads.)
     for (gs = 0; gs < NC; gs = gs + 1) begin : g_hazard
       wire [31:0] xa = dut.u_sched.g_ctx[gs].xa;
       wire [31:0] xb = dut.u_sched.g_ctx[gs].xb;
       wire [31:0] xd = dut.u_sched.g_ctx[gs].xd;
-      wire wa = (wb0_v && wb0_x == xa) || (wb1_v && wb1_x == xa) || (wb2_v && wb2_x == xa);
-      wire wb = (wb0_v && wb0_x == xb) || (wb1_v && wb1_x == xb) || (wb2_v && wb2_x == xb);
-      wire wd = (wb0_v && wb0_x == xd) || (wb1_v && wb1_x == xd) || (wb2_v && wb2_x == xd);
+      wire wa = (wb0_v && wb0_x == xa) || (wb1_v && wb1_x == xa) || (wb2_v && wb2_x == xa) ||
+                (wbn0_v && wbn0_x == xa) || (wbn1_v && wbn1_x == xa) || (wbn2_v && wbn2_x == xa);
+      wire wb = (wb0_v && wb0_x == xb) || (wb1_v && wb1_x == xb) || (wb2_v && wb2_x == xb) ||
+                (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
+      wire wd = (wb0_v && wb0_x == xd) || (wb1_v && wb1_x == xd) || (wb2_v && wb2_x == xd) ||
+                (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
       assign dbg_raw[gs] = dbg_waiting[gs] &&
         ((dut.u_sched.g_ctx[gs].use_ra && dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xa] && !wa) ||
          (dut.u_sched.g_ctx[gs].use_rb && dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xb] && !wb));
@@ -222,19 +235,35 @@ module tb_fp3 #(
   function [31:0] dbg_reg;  // register r of context c (after the clock edge)
     input integer c;
     input [31:0]  r;
+    integer x;
     begin
-      dbg_reg = r < NUM_REGS ? dut.u_regs.regs_q[c*(1 << IW) + r] : 32'd0;
+      // The RAM of the write-back port that wrote it last (the LVT).
+      x = c*(1 << IW) + r;
+      if (r >= NUM_REGS)                       dbg_reg = 32'd0;
+      else if (dut.u_regs.lvt_q[x] == 2'd0)   dbg_reg = dut.u_regs.u_ram00.mem[x];
+      else if (dut.u_regs.lvt_q[x] == 2'd1)   dbg_reg = dut.u_regs.u_ram10.mem[x];
+      else                                     dbg_reg = dut.u_regs.u_ram20.mem[x];
     end
   endfunction
 
   // ---- derived debug signals -------------------------------------------------
-  // A stall is a cycle without issue while some context waits (the STALLS
-  // counter); its cause as text, for the contexts that wait.
+  // A stall is a cycle without issue while some context holds an
+  // instruction (the STALLS counter); its cause as text: RAW, WAW, or
+  // FRONT when no waiting context has a hazard (the front end: a context
+  // that issued last cycle, or whose word arrived last cycle, is decided
+  // in this one).  dbg_free_q: contexts that, by this testbench's own
+  // hazard view, were free to issue at the previous edge and did not.
   wire           dbg_stall     = running && !tr_issue && (|dbg_waiting);
   wire           dbg_stall_raw = dbg_stall && (|dbg_raw);
   wire           dbg_stall_waw = dbg_stall && (|dbg_waw);
   wire [8*7-1:0] dbg_stall_why = dbg_stall_raw && dbg_stall_waw ? "RAW+WAW" :
-                                 dbg_stall_raw ? "RAW" : dbg_stall_waw ? "WAW" : "";
+                                 dbg_stall_raw ? "RAW" : dbg_stall_waw ? "WAW" :
+                                 dbg_stall ? "FRONT" : "";
+  reg  [NC-1:0]  dbg_free_q;
+  always @(posedge clk) begin
+    dbg_free_q <= dbg_waiting & ~dbg_raw & ~dbg_waw &
+                  ~((tr_issue ? {{(NC-1){1'b0}}, 1'b1} : {NC{1'b0}}) << tr_issue_ctx);
+  end
   wire [8*4-1:0] dbg_op        = tr_issue ? mnemonic(dbg_opc) : "";
   real       dbg_add_real, dbg_mul_real, dbg_mov_real, dbg_v_real, dbg_s_real;
   reg [31:0] dbg_v, dbg_s;         // the .out registers v and s of context 0
@@ -335,7 +364,7 @@ module tb_fp3 #(
     input [8*80-1:0] why;
     begin
       $display("WATCHDOG: %0s at cycle %0d of the run (clock edge %0d, t = %0t ns): pc %0d (context 0), insn %h, %0d of %0d integrations done (context 0), active contexts %b, busy %h",
-               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.insn[0], dbg_steps_done,
+               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.w0_q[0], dbg_steps_done,
                steps_run, dbg_active, dbg_busy);
       $display("FAIL: tb_fp3: the run hung (watchdog)");
       finish(2);
@@ -364,10 +393,11 @@ module tb_fp3 #(
         if (endis_total == 1) cyc_first = run_cycle;
         cyc_last = run_cycle;
       end
-      // the waveform's stall probes agree with the STALLS counter, and
-      // every stall has a cause
+      // the waveform's stall probes agree with the STALLS counter, and no
+      // stall leaves out a context that was free to issue (the scheduler
+      // is work-conserving)
       if (dbg_stall) probe_stalls = probe_stalls + 1;
-      if (dbg_stall && !dbg_stall_raw && !dbg_stall_waw) fail_msg("a stall without RAW or WAW");
+      if (dbg_stall && |(dbg_free_q & dbg_waiting)) fail_msg("a stall while a context was free to issue");
       if (tr_issue || tr_add_valid || tr_mul_valid || tr_mov_valid) quiet = 0;
       else quiet = quiet + 1;
       if (quiet >= STALL_LIMIT) hang("no issue and no write-back for STALL_LIMIT cycles");
