@@ -29,9 +29,10 @@ FPU_CFG_lat_1_2  := 0 0 1 2
 FPU_CFG_lat_2_1  := 0 0 2 1
 FPU_CFG_lat_3_8  := 0 0 3 8
 FPU_CFG_lat_8_4  := 0 0 8 4
+FPU_CFG_lat_5_6  := 0 0 5 6
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
-FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4
+FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6
 FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
 
 fpu_model_lib  = $(FPU_DIR)/obj_$(1)/Vfpu_$(1)__ALL.a

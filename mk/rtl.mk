@@ -12,15 +12,16 @@ RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LAT
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
-# sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS].  The test programs
-# also get models with 1 and 3 contexts.
+# sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
+# MUL_LATENCY]].  The test programs also get models with 1 and 3 contexts,
+# with other core latencies (shortest add; deeper pipelines).
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
-RTL_CFG_nc1     := 0 0 1
-RTL_CFG_nc3     := 0 0 3
+RTL_CFG_nc1     := 0 0 1 1 2
+RTL_CFG_nc3     := 0 0 3 6 5
 RTL_TEST_CONFIGS := nc1 nc3
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
@@ -50,6 +51,8 @@ $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STA
 	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) \
 	  -GROUND=$(word 1,$(RTL_CFG_$(1))) -GFTZ=$(word 2,$(RTL_CFG_$(1))) \
 	  $(if $(word 3,$(RTL_CFG_$(1))),-GNUM_CONTEXTS=$(word 3,$(RTL_CFG_$(1)))) \
+	  $(if $(word 4,$(RTL_CFG_$(1))),-GADD_LATENCY=$(word 4,$(RTL_CFG_$(1)))) \
+	  $(if $(word 5,$(RTL_CFG_$(1))),-GMUL_LATENCY=$(word 5,$(RTL_CFG_$(1)))) \
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 

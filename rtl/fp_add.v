@@ -9,7 +9,11 @@
 //              L = 1: c1 c2 c3 c4 | out
 //              L = 2: c1 c2 | c3 c4 | out
 //              L = 3: c1 c2 | c3 | c4 | out
-//              L >= 4: c1 | c2 | c3 | c4 | out, plus L-4 delay stages
+//              L = 4: c1 | c2 | c3 | c4 | out
+//              L = 5: in | c1 | c2 | c3 | c4 | out
+//              L >= 6: in | c1 | c2a | c2b | c3 | c4 | out, plus L-6
+//              delay stages (in = operand registers; c2a = alignment
+//              shift, c2b = add/subtract)
 //            where c1 = unpack, special cases, compare and swap, exponent
 //            difference; c2 = alignment shift with sticky, add/subtract;
 //            c3 = leading-zero count and normalisation; c4 = rounding and
@@ -74,10 +78,12 @@ module fp_add #(
   localparam [4:0]  ALIGN_MAX   = 5'd27; // shifts >= 27 leave only sticky
 
   // Stage boundaries (register stages after c1, c2, c3, and at the output).
+  localparam integer DEPTH_I  = (LATENCY >= 5) ? 1 : 0;
   localparam integer DEPTH1   = (LATENCY >= 4) ? 1 : 0;
+  localparam integer DEPTH2A  = (LATENCY >= 6) ? 1 : 0;
   localparam integer DEPTH2   = (LATENCY >= 2) ? 1 : 0;
   localparam integer DEPTH3   = (LATENCY >= 3) ? 1 : 0;
-  localparam integer DEPTH_O  = (LATENCY >= 4) ? LATENCY - 3 : 1;
+  localparam integer DEPTH_O  = (LATENCY >= 6) ? LATENCY - 5 : 1;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -87,22 +93,37 @@ module fp_add #(
   endgenerate
 
   // ---------------------------------------------------------------------
+  // operand registers (LATENCY >= 5)
+  // ---------------------------------------------------------------------
+  wire        s0_valid;
+  wire        sub_in;
+  wire [31:0] a_in, b_in;
+  fp_pipe #(.WIDTH(65), .DEPTH(DEPTH_I)) u_pipe_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({sub_i, a_i, b_i}),
+    .valid_o (s0_valid),
+    .data_o  ({sub_in, a_in, b_in})
+  );
+
+  // ---------------------------------------------------------------------
   // c1: unpack, special cases, compare and swap, exponent difference
   // ---------------------------------------------------------------------
-  wire       a_sign = a_i[31];
-  wire       b_sign = b_i[31] ^ sub_i; // effective sign of the addend
-  wire [7:0] a_exp  = a_i[30:23];
-  wire [7:0] b_exp  = b_i[30:23];
-  wire       a_nan  = (a_exp == EXP_MAX) & (|a_i[22:0]);
-  wire       b_nan  = (b_exp == EXP_MAX) & (|b_i[22:0]);
-  wire       a_snan = a_nan & ~a_i[22];
-  wire       b_snan = b_nan & ~b_i[22];
-  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_i[22:0]);
-  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_i[22:0]);
+  wire       a_sign = a_in[31];
+  wire       b_sign = b_in[31] ^ sub_in; // effective sign of the addend
+  wire [7:0] a_exp  = a_in[30:23];
+  wire [7:0] b_exp  = b_in[30:23];
+  wire       a_nan  = (a_exp == EXP_MAX) & (|a_in[22:0]);
+  wire       b_nan  = (b_exp == EXP_MAX) & (|b_in[22:0]);
+  wire       a_snan = a_nan & ~a_in[22];
+  wire       b_snan = b_nan & ~b_in[22];
+  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_in[22:0]);
+  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_in[22:0]);
 
   // Magnitudes, subnormals read as zero under FTZ (DAZ).
-  wire [30:0] a_mag = ((FTZ != 0) && (a_exp == 8'd0)) ? 31'd0 : a_i[30:0];
-  wire [30:0] b_mag = ((FTZ != 0) && (b_exp == 8'd0)) ? 31'd0 : b_i[30:0];
+  wire [30:0] a_mag = ((FTZ != 0) && (a_exp == 8'd0)) ? 31'd0 : a_in[30:0];
+  wire [30:0] b_mag = ((FTZ != 0) && (b_exp == 8'd0)) ? 31'd0 : b_in[30:0];
 
   reg        c1_spec;
   reg [31:0] c1_spec_y;
@@ -111,10 +132,10 @@ module fp_add #(
     c1_spec    = a_nan | b_nan | a_inf | b_inf;
     c1_spec_nv = 1'b0;
     if (a_nan) begin
-      c1_spec_y  = a_i | QNAN_BIT;
+      c1_spec_y  = a_in | QNAN_BIT;
       c1_spec_nv = a_snan | b_snan;
     end else if (b_nan) begin
-      c1_spec_y  = b_i | QNAN_BIT;
+      c1_spec_y  = b_in | QNAN_BIT;
       c1_spec_nv = b_snan;
     end else if (a_inf & b_inf & (a_sign ^ b_sign)) begin
       c1_spec_y  = DEFAULT_NAN;
@@ -149,7 +170,7 @@ module fp_add #(
   fp_pipe #(.WIDTH(W1), .DEPTH(DEPTH1)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (valid_i),
+    .valid_i (s0_valid),
     .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_sub, c1_zsign,
                c1_exp, c1_xman, c1_yman, c1_shift}),
     .valid_o (s1_valid),
@@ -175,8 +196,34 @@ module fp_add #(
   wire [53:0] y_wide   = {s1_yman, 3'd0, 27'd0} >> s1_shift;
   wire [26:0] y_align  = {y_wide[53:28], y_wide[27] | (|y_wide[26:0])};
   wire [26:0] x_align  = {s1_xman, 3'd0};
-  wire [27:0] c2_sum   = s1_sub ? ({1'b0, x_align} - {1'b0, y_align})
-                                : ({1'b0, x_align} + {1'b0, y_align});
+
+  // LATENCY >= 6: a register stage between the shift and the adder.
+  localparam integer W2A = 1 + 32 + 1 + 1 + 1 + 1 + 8 + 27 + 27;
+  wire          s2a_valid;
+  wire [W2A-1:0] s2a_data;
+  fp_pipe #(.WIDTH(W2A), .DEPTH(DEPTH2A)) u_pipe2a (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s1_valid),
+    .data_i  ({s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_sub, s1_zsign, s1_exp,
+               x_align, y_align}),
+    .valid_o (s2a_valid),
+    .data_o  (s2a_data)
+  );
+  wire        s2a_spec;
+  wire [31:0] s2a_spec_y;
+  wire        s2a_spec_nv;
+  wire        s2a_sign;
+  wire        s2a_sub;
+  wire        s2a_zsign;
+  wire [7:0]  s2a_exp;
+  wire [26:0] s2a_x;
+  wire [26:0] s2a_y;
+  assign {s2a_spec, s2a_spec_y, s2a_spec_nv, s2a_sign, s2a_sub, s2a_zsign, s2a_exp,
+          s2a_x, s2a_y} = s2a_data;
+
+  wire [27:0] c2_sum   = s2a_sub ? ({1'b0, s2a_x} - {1'b0, s2a_y})
+                                 : ({1'b0, s2a_x} + {1'b0, s2a_y});
 
   localparam integer W2 = 1 + 32 + 1 + 1 + 1 + 8 + 28;
   wire          s2_valid;
@@ -184,8 +231,8 @@ module fp_add #(
   fp_pipe #(.WIDTH(W2), .DEPTH(DEPTH2)) u_pipe2 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (s1_valid),
-    .data_i  ({s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_zsign, s1_exp,
+    .valid_i (s2a_valid),
+    .data_i  ({s2a_spec, s2a_spec_y, s2a_spec_nv, s2a_sign, s2a_zsign, s2a_exp,
                c2_sum}),
     .valid_o (s2_valid),
     .data_o  (s2_data)

@@ -8,7 +8,11 @@
 //            result on the outputs; >= 1 (default 3).  Stage boundaries:
 //              L = 1: m1 m2 m3 | out
 //              L = 2: m1 m2 | m3 | out
-//              L >= 3: m1 | m2 | m3 | out, plus L-3 delay stages
+//              L = 3: m1 | m2 | m3 | out
+//              L = 4: in | m1 | m2 | m3 | out
+//              L >= 5: in | m1 | m2 | m3a | m3b | out, plus L-5 delay
+//              stages (in = operand registers; m3a = normalisation and
+//              denormalisation, m3b = rounding)
 //            where m1 = unpack, special cases, normalisation of subnormal
 //            significands, exponent sum; m2 = 24 x 24 bit product (the
 //            registers around it map to the DSP input/output registers);
@@ -69,10 +73,13 @@ module fp_mul #(
   localparam [4:0]  FLAG_NV     = 5'b10000;
   localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 26 leave sticky
 
-  // Stage boundaries (register stages after m1, m2, and at the output).
+  // Stage boundaries: register stages at the inputs, after m1, after m2,
+  // inside m3 (before rounding) and at the output.
+  localparam integer DEPTH_I = (LATENCY >= 4) ? 1 : 0;
   localparam integer DEPTH1  = (LATENCY >= 3) ? 1 : 0;
   localparam integer DEPTH2  = (LATENCY >= 2) ? 1 : 0;
-  localparam integer DEPTH_O = (LATENCY >= 3) ? LATENCY - 2 : 1;
+  localparam integer DEPTH3  = (LATENCY >= 5) ? 1 : 0;
+  localparam integer DEPTH_O = (LATENCY >= 5) ? LATENCY - 4 : 1;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -82,21 +89,35 @@ module fp_mul #(
   endgenerate
 
   // ---------------------------------------------------------------------
+  // operand registers (LATENCY >= 4)
+  // ---------------------------------------------------------------------
+  wire        s0_valid;
+  wire [31:0] a_in, b_in;
+  fp_pipe #(.WIDTH(64), .DEPTH(DEPTH_I)) u_pipe_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({a_i, b_i}),
+    .valid_o (s0_valid),
+    .data_o  ({a_in, b_in})
+  );
+
+  // ---------------------------------------------------------------------
   // m1: unpack, special cases, normalise subnormal significands
   // ---------------------------------------------------------------------
-  wire       a_sign = a_i[31];
-  wire       b_sign = b_i[31];
-  wire [7:0] a_exp  = a_i[30:23];
-  wire [7:0] b_exp  = b_i[30:23];
-  wire       a_nan  = (a_exp == EXP_MAX) & (|a_i[22:0]);
-  wire       b_nan  = (b_exp == EXP_MAX) & (|b_i[22:0]);
-  wire       a_snan = a_nan & ~a_i[22];
-  wire       b_snan = b_nan & ~b_i[22];
-  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_i[22:0]);
-  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_i[22:0]);
+  wire       a_sign = a_in[31];
+  wire       b_sign = b_in[31];
+  wire [7:0] a_exp  = a_in[30:23];
+  wire [7:0] b_exp  = b_in[30:23];
+  wire       a_nan  = (a_exp == EXP_MAX) & (|a_in[22:0]);
+  wire       b_nan  = (b_exp == EXP_MAX) & (|b_in[22:0]);
+  wire       a_snan = a_nan & ~a_in[22];
+  wire       b_snan = b_nan & ~b_in[22];
+  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_in[22:0]);
+  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_in[22:0]);
   // Zero, or subnormal read as zero under FTZ (DAZ).
-  wire       a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~(|a_i[22:0]));
-  wire       b_zero = (b_exp == 8'd0) & ((FTZ != 0) | ~(|b_i[22:0]));
+  wire       a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~(|a_in[22:0]));
+  wire       b_zero = (b_exp == 8'd0) & ((FTZ != 0) | ~(|b_in[22:0]));
   wire       c1_sign = a_sign ^ b_sign;
 
   reg        c1_spec;
@@ -106,10 +127,10 @@ module fp_mul #(
     c1_spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
     c1_spec_nv = 1'b0;
     if (a_nan) begin
-      c1_spec_y  = a_i | QNAN_BIT;
+      c1_spec_y  = a_in | QNAN_BIT;
       c1_spec_nv = a_snan | b_snan;
     end else if (b_nan) begin
-      c1_spec_y  = b_i | QNAN_BIT;
+      c1_spec_y  = b_in | QNAN_BIT;
       c1_spec_nv = b_snan;
     end else if ((a_inf & b_zero) | (a_zero & b_inf)) begin
       c1_spec_y  = DEFAULT_NAN;
@@ -129,13 +150,13 @@ module fp_mul #(
   wire [9:0]  b_expn;
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_norm_a (
     .exp_i  (a_exp),
-    .frac_i (a_i[22:0]),
+    .frac_i (a_in[22:0]),
     .man_o  (a_man),
     .exp_o  (a_expn)
   );
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_norm_b (
     .exp_i  (b_exp),
-    .frac_i (b_i[22:0]),
+    .frac_i (b_in[22:0]),
     .man_o  (b_man),
     .exp_o  (b_expn)
   );
@@ -150,7 +171,7 @@ module fp_mul #(
   fp_pipe #(.WIDTH(W1), .DEPTH(DEPTH1)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (valid_i),
+    .valid_i (s0_valid),
     .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_exp, a_man, b_man}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
@@ -205,27 +226,50 @@ module fp_mul #(
   wire [47:0] den_p    = norm_p >> rs;
   wire [47:0] lost     = norm_p & ~({48{1'b1}} << rs);
   wire [9:0]  c3_exp   = is_low ? 10'd1 : norm_e;
+  wire        c3_sticky = (|den_p[21:0]) | (|lost);
+
+  // LATENCY >= 5: a register stage between the shifts and the rounding.
+  localparam integer W3 = 1 + 32 + 1 + 1 + 10 + 26 + 1;
+  wire          s3_valid;
+  wire [W3-1:0] s3_data;
+  fp_pipe #(.WIDTH(W3), .DEPTH(DEPTH3)) u_pipe3 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s2_valid),
+    .data_i  ({s2_spec, s2_spec_y, s2_spec_nv, s2_sign, c3_exp, den_p[47:22], c3_sticky}),
+    .valid_o (s3_valid),
+    .data_o  (s3_data)
+  );
+
+  wire        s3_spec;
+  wire [31:0] s3_spec_y;
+  wire        s3_spec_nv;
+  wire        s3_sign;
+  wire [9:0]  s3_exp;
+  wire [25:0] s3_man;    // significand, guard and round bits
+  wire        s3_sticky;
+  assign {s3_spec, s3_spec_y, s3_spec_nv, s3_sign, s3_exp, s3_man, s3_sticky} = s3_data;
 
   wire [31:0] rnd_y;
   wire [4:0]  rnd_flags;
   fp_round #(.ROUND(ROUND), .FTZ(FTZ)) u_round (
-    .sign_i   (s2_sign),
-    .exp_i    (c3_exp),
-    .mant_i   (den_p[47:24]),
-    .guard_i  (den_p[23]),
-    .round_i  (den_p[22]),
-    .sticky_i ((|den_p[21:0]) | (|lost)),
+    .sign_i   (s3_sign),
+    .exp_i    (s3_exp),
+    .mant_i   (s3_man[25:2]),
+    .guard_i  (s3_man[1]),
+    .round_i  (s3_man[0]),
+    .sticky_i (s3_sticky),
     .y_o      (rnd_y),
     .flags_o  (rnd_flags)
   );
 
-  wire [31:0] c3_y     = s2_spec ? s2_spec_y : rnd_y;
-  wire [4:0]  c3_flags = s2_spec ? (s2_spec_nv ? FLAG_NV : 5'd0) : rnd_flags;
+  wire [31:0] c3_y     = s3_spec ? s3_spec_y : rnd_y;
+  wire [4:0]  c3_flags = s3_spec ? (s3_spec_nv ? FLAG_NV : 5'd0) : rnd_flags;
 
   fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (s2_valid),
+    .valid_i (s3_valid),
     .data_i  ({c3_y, c3_flags}),
     .valid_o (valid_o),
     .data_o  ({y_o, flags_o})

@@ -583,7 +583,9 @@ static void multi_free(multi_capture *m) {
   for (unsigned k = 0; k < m->contexts; k++) capture_free(&m->c[k]);
 }
 
-/* The RTL builds with 1, 3 and the default number of contexts. */
+/* The RTL builds with 1 context (ADD_LATENCY 1, MUL_LATENCY 2), 3 contexts
+ * (ADD_LATENCY 6, MUL_LATENCY 5: every real pipeline stage of the cores)
+ * and the default build (mk/rtl.mk). */
 static fp3_engine *context_build(int which) {
   switch (which) {
     case 0: return fp3_engine_rtl_new_model(&fp3_model_nc1, NULL);
