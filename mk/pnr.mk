@@ -22,7 +22,9 @@ PNR_DIR         := $(BUILD)/pnr
 PNR_SYNTH_DIR   := $(BUILD)/synth
 PNR_PARAMS      ?= NUM_CONTEXTS=1
 # scripts/synth.sh names a netlist TOP_NAME-VALUE..._FLOW
-PNR_TAG         := $(subst =,-,$(foreach p,$(PNR_PARAMS),_$(p)))
+PNR_EMPTY       :=
+PNR_SPACE       := $(PNR_EMPTY) $(PNR_EMPTY)
+PNR_TAG         := $(subst $(PNR_SPACE),,$(subst =,-,$(foreach p,$(PNR_PARAMS),_$(p))))
 PNR_ECP5_BASE   := $(PNR_SYNTH_DIR)/fp3_axil$(PNR_TAG)_ecp5
 PNR_ICE40_UNITS ?= fp_add fp_mul
 PNR_ICE40_LCS   := 7680
