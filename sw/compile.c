@@ -19,6 +19,7 @@
 #include "fp3_isa.h"
 #include "fpref.h"
 #include "golden.h"
+#include "report.h"
 
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "the IR golden model needs float expressions evaluated in float"
@@ -392,34 +393,6 @@ static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int n
 
 /* ---- text ------------------------------------------------------------------- */
 
-typedef struct sbuf {
-  char *s;
-  size_t len, cap;
-  int oom;
-} sbuf;
-
-static void out(sbuf *b, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  int k = vsnprintf(NULL, 0, fmt, ap);
-  va_end(ap);
-  if (k < 0 || b->oom) return;
-  if (b->len + (size_t)k + 1 > b->cap) {
-    size_t cap = (b->cap ? b->cap * 2 : 4096) + (size_t)k;
-    char *g = realloc(b->s, cap);
-    if (!g) {
-      b->oom = 1;
-      return;
-    }
-    b->s = g;
-    b->cap = cap;
-  }
-  va_start(ap, fmt);
-  vsnprintf(b->s + b->len, b->cap - b->len, fmt, ap);
-  va_end(ap);
-  b->len += (size_t)k;
-}
-
 /* "name = a op b" for a comment. */
 static void describe(const builder *b, int i, char *s, size_t n) {
   const node *x = &b->nd[i];
@@ -509,7 +482,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   }
   builder *b = &c->b;
   int rc = -1;
-  sbuf t = {0};
+  fp3_strbuf t = {0};
   insn *code = calloc(MAX_INSNS, sizeof *code);
   bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
   int *order = calloc(MAX_NODES + 2, sizeof *order);
@@ -697,44 +670,44 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
 
   /* ---- text ---- */
   const char *integ_desc = o->fold ? "folded" : "literal (the paper's operations)";
-  out(&t, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
+  fp3_strbuf_printf(&t, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
       scene_name ? scene_name : "scene", integrator, integ_desc,
       o->drop_zero ? ", terms zero in the scene removed" : "");
-  out(&t, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
+  fp3_strbuf_printf(&t, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
       (double)sc->objs[0].h);
   if (o->fold)
-    out(&t, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
+    fp3_strbuf_printf(&t, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
             ";   computed by the host in binary32 (RNE) once per object\n");
   if (o->drop_zero && b->no_drag)
-    out(&t, "; removed: the drag terms (C = 0 in every object)\n");
+    fp3_strbuf_printf(&t, "; removed: the drag terms (C = 0 in every object)\n");
   if (o->drop_zero && b->no_thrust)
-    out(&t, "; removed: the thrust terms (T = 0 in every object)\n");
-  out(&t, "; loop invariants moved to the prologue: %u; dead operations removed: %u\n",
+    fp3_strbuf_printf(&t, "; removed: the thrust terms (T = 0 in every object)\n");
+  fp3_strbuf_printf(&t, "; loop invariants moved to the prologue: %u; dead operations removed: %u\n",
       c->stats.hoisted, c->stats.dead_removed);
-  out(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
+  fp3_strbuf_printf(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
       c->stats.body_insns, c->stats.body_arith, c->stats.literal_body_insns);
-  out(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
-  out(&t, "; estimated cycles (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
+  fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
+  fp3_strbuf_printf(&t, "; estimated cycles (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
           ";   first integration %u, each later one %u\n",
       o->add_latency, o->mul_latency, o->mov_latency, c->stats.est_cycles_first,
       c->stats.est_cycles_later);
-  out(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
+  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
   for (int k = 0; k < FP3_IN_COUNT; k++)
     if (in_reg[k] >= 0) {
       char nm_[16];
       snprintf(nm_, sizeof nm_, "%s,", fp3_in_name(k));
-      out(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
+      fp3_strbuf_printf(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
     }
-  out(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
+  fp3_strbuf_printf(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
   for (size_t k = 0; k < ni; k++) {
     const insn *x = &code[k];
     char ops[48];
-    if (k == body_at) out(&t, "body:\n");
+    if (k == body_at) fp3_strbuf_printf(&t, "body:\n");
     if (x->opc == FP3_OP_LI) snprintf(ops, sizeof ops, "r%u, 0x%08X", x->rd, (unsigned)x->imm);
     else if (x->opc == FP3_OP_MOV) snprintf(ops, sizeof ops, "r%u, r%u", x->rd, x->ra);
     else if (x->opc == FP3_OP_ENDI) snprintf(ops, sizeof ops, "body");
     else snprintf(ops, sizeof ops, "r%u, r%u, r%u", x->rd, x->ra, x->rb);
-    out(&t, "        %-4s %-16s ; %s\n", fp3_opc_mnemonic(x->opc), ops, x->note);
+    fp3_strbuf_printf(&t, "        %-4s %-16s ; %s\n", fp3_opc_mnemonic(x->opc), ops, x->note);
   }
   if (t.oom) {
     snprintf(msg, n, "out of memory");
