@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "asm.h"
@@ -805,6 +806,9 @@ int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_
     free(tmp);
     return -1;
   }
+  mode_t um = umask(0); /* mkstemp makes 0600: give the file the usual mode */
+  umask(um);
+  fchmod(fd, 0666 & ~um);
   FILE *f = fdopen(fd, "w");
   int bad = !f || fputs(c->text, f) < 0;
   if (f) bad |= fclose(f) != 0;
