@@ -39,7 +39,7 @@ $(SW_SAN_LIB): $(SW_SAN_OBJS)
 -include $(SW_LIB_OBJS:.o=.d) $(SW_SAN_OBJS:.o=.d) $(BUILD)/sw/fp3.d
 
 # ---- the CLI -----------------------------------------------------------------
-$(BUILD)/fp3: $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_OBJS)
+$(BUILD)/fp3: $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_DEPS)
 	$(CXX) -o $@ $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_OBJS) \
 	  $(RTL_LIBS) $(FPU_LIBS) $(VERILATOR_LDLIBS) $(LDLIBS_SW)
 

@@ -330,7 +330,7 @@ static void do_binding(asm_state *st, int is_in, char **ops, int nops,
   int id = is_in ? fp3_in_lookup(ops[0]) : fp3_out_lookup(ops[0]);
   if (id < 0) {
     add_error(st, line, "unknown %s name '%s' (expected %s)", dir, ops[0],
-              is_in ? "T C m minv h v0 s0" : "v s");
+              is_in ? FP3_IN_NAMES_TEXT : "v s");
     return;
   }
   unsigned reg;

@@ -13,7 +13,8 @@
  *   halt / nop
  *   .reg NAME rN               register alias (`.reg NAME, rN` too)
  *   .in NAME, rN               host writes parameter NAME (T C m minv h
- *                              v0 s0) into rN before the run
+ *                              v0 s0, and the folded inputs hm hmT hmC
+ *                              of image.h) into rN before the run
  *   .out NAME, rN              rN holds result NAME (v s)
  *   .word 0xHHHHHHHHHHHHHHHH   a raw 64-bit word, not checked (tests)
  *

@@ -30,6 +30,7 @@
 #include "asm.h"
 #include "fpref.h"
 #include "gslref.h"
+#include "objects.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -116,10 +117,8 @@ int fp3_irun_program(fp3_engine *e, const fp3_integrator *ig,
   ig->init(&c.g[RV], p);
   ig->init(&c.g[RS], p);
   fp3_diverge_init(&r->div, p);
-  const float inval[FP3_IN_COUNT] = {
-      [FP3_IN_T] = p->T,  [FP3_IN_C] = p->C,   [FP3_IN_M] = p->m,
-      [FP3_IN_MINV] = fp3_ship_minv(p->m),     [FP3_IN_H] = p->h,
-      [FP3_IN_V0] = p->v0, [FP3_IN_S0] = p->s0};
+  float inval[FP3_IN_COUNT];
+  fp3_in_values(p, inval);
   int erc = fp3_engine_load(e, img->words, img->n);
   for (int i = 0; i < FP3_IN_COUNT && erc == 0; i++)
     if (img->in_reg[i] >= 0)

@@ -57,7 +57,8 @@ int main(int argc, char **argv) {
     free(errs);
     return 2;
   }
-  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
+  fp3_integ_golden rk4_store;
+  const fp3_golden_ref rk4 = fp3_golden_of_integrator(&rk4_store, fp3_integrator_find("rk4"));
   /* Written whole to a temporary name, renamed at the end. */
   char tmp[4200];
   snprintf(tmp, sizeof tmp, "%s.tmp", csv_path);
@@ -84,7 +85,7 @@ int main(int argc, char **argv) {
       fp3_objects_result res;
       char msg[512];
       if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc) ||
-          fp3_run_objects(e, &img, &sc, steps, FPREF_IEEE, rk4, &res, msg, sizeof msg)) {
+          fp3_run_objects(e, &img, &sc, steps, FPREF_IEEE, &rk4, &res, msg, sizeof msg)) {
         fprintf(stderr, "bench_parallel: %s, %zu objects: %s\n", builds[b].name, n, msg);
         rc = 1;
         fp3_scene_free(&sc);

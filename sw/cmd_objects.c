@@ -42,12 +42,44 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
     return 1;
   }
 
+  /* the scene compiler's program, compiled for this engine's latencies */
+  const fp3_image *img = c->img;
+  const fp3_golden_ref *golden = c->golden;
+  const char *program = c->program;
+  fp3_compiled *comp = NULL;
+  fp3_golden_ref comp_golden;
+  char comp_name[64];
+  if (c->compile) {
+    fp3_compile_opts o;
+    if (c->copts) {
+      o = *c->copts;
+    } else {
+      fp3_compile_defaults(&o);
+      o.add_latency = c->engine->config.add_latency ? c->engine->config.add_latency : o.add_latency;
+      o.mul_latency = c->engine->config.mul_latency ? c->engine->config.mul_latency : o.mul_latency;
+      o.num_regs = c->engine->config.num_regs ? c->engine->config.num_regs : o.num_regs;
+    }
+    if (fp3_compile(&sc, c->integ_name, &o, c->scene_path, &comp, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 run: compiling the scene: %s\n", msg);
+      fp3_scene_free(&sc);
+      return 2;
+    }
+    img = fp3_compiled_image(comp);
+    comp_golden = fp3_compiled_golden(comp);
+    golden = &comp_golden;
+    snprintf(comp_name, sizeof comp_name, "compiled (%s%s)", o.fold ? "folded" : "literal",
+             o.drop_zero ? ", zero terms removed" : "");
+    program = comp_name;
+  }
+  const unsigned insns = fp3_image_body_insns(img);
+
   fp3_objects_result res;
-  if (fp3_run_objects(c->engine, c->img, &sc, c->steps, c->mode, c->integ, &res, msg,
+  if (fp3_run_objects(c->engine, img, &sc, c->steps, c->mode, golden, &res, msg,
                       sizeof msg)) {
     fprintf(stderr, "fp3 run: %s engine: %s\n", c->engine->ops->name, msg);
     fprintf(stderr, "FAIL: the %s engine failed\n", c->engine->ops->name);
     fp3_scene_free(&sc);
+    fp3_compiled_free(comp);
     return 1;
   }
   const double object_steps = (double)res.objects * (double)c->steps;
@@ -63,9 +95,14 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
     printf("{\"engine\": ");
     fp3_json_string(stdout, c->engine->ops->name);
     printf(", \"program\": ");
-    fp3_json_string(stdout, c->program);
+    fp3_json_string(stdout, program);
+    printf(", \"compiled\": %s, \"insns_per_step\": %u", comp ? "true" : "false", insns);
+    if (comp)
+      printf(", \"literal_insns_per_step\": %u, \"est_cycles_per_step\": %u",
+             fp3_compiled_stats(comp)->literal_body_insns,
+             fp3_compiled_stats(comp)->est_cycles_later);
     printf(", \"integrator\": ");
-    fp3_json_string(stdout, c->integ->name);
+    fp3_json_string(stdout, c->integ_name);
     printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
            c->steps, res.objects, res.contexts, res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
@@ -101,7 +138,13 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
     printf("]}\n");
   } else {
     printf("FP3 run: engine %s, program %s (%s), %zu objects, %" PRIu32 " integrations each\n",
-           c->engine->ops->name, c->program, c->integ->name, res.objects, c->steps);
+           c->engine->ops->name, program, c->integ_name, res.objects, c->steps);
+    printf("program: %u instructions per integration", insns);
+    if (comp)
+      printf(" (literal program %u); scheduler estimate %u cycles per integration of one object",
+             fp3_compiled_stats(comp)->literal_body_insns,
+             fp3_compiled_stats(comp)->est_cycles_later);
+    printf("\n");
     printf("scene: %s; %u contexts per batch, %zu batch%s\n\n",
            c->scene_path ? c->scene_path : "generated (--seed)", res.contexts, res.batches,
            res.batches == 1 ? "" : "es");
@@ -137,5 +180,6 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
   }
   fp3_objects_result_free(&res);
   fp3_scene_free(&sc);
+  fp3_compiled_free(comp);
   return ok ? 0 : 1;
 }

@@ -10,6 +10,7 @@
 #include "engine.h"
 #include "image.h"
 #include "integrators.h"
+#include "compile.h"
 #include "objects.h"
 
 /* Everything `fp3 run` parsed for a multi-object run. */
@@ -17,7 +18,13 @@ typedef struct fp3_objects_cmd {
   fp3_engine *engine;
   const fp3_image *img;
   const char *program;           /* path, for the report               */
-  const fp3_integrator *integ;   /* golden model of the program         */
+  const char *integ_name;        /* integrator                          */
+  const fp3_golden_ref *golden;  /* golden model of img                 */
+  int compile;                   /* 1: run the scene compiler's program
+                                    for integ_name (compile.h) and its
+                                    golden model instead of img, golden */
+  const fp3_compile_opts *copts; /* its options (NULL: defaults with the
+                                    engine's latencies and registers)  */
   const char *scene_path;        /* scene file, or NULL: generate        */
   size_t objects;                /* --objects (0: all of the scene)      */
   uint64_t seed;                 /* generator seed                       */

@@ -24,6 +24,7 @@
 #include "fpref.h"
 #include "golden.h"
 #include "image.h"
+#include "objects.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -220,11 +221,8 @@ int fp3_cmd_tbgen(int argc, char **argv) {
 
   /* registers before the run: the .in parameters, 0 elsewhere */
   uint32_t init[FP3_DEFAULT_NUM_REGS] = {0};
-  const float inval[FP3_IN_COUNT] = {
-      [FP3_IN_T] = p.T,   [FP3_IN_C] = p.C,
-      [FP3_IN_M] = p.m,   [FP3_IN_MINV] = fp3_ship_minv(p.m),
-      [FP3_IN_H] = p.h,   [FP3_IN_V0] = p.v0,
-      [FP3_IN_S0] = p.s0};
+  float inval[FP3_IN_COUNT];
+  fp3_in_values(&p, inval);
   for (int k = 0; k < FP3_IN_COUNT; k++)
     if (img.in_reg[k] >= 0 && img.in_reg[k] < FP3_DEFAULT_NUM_REGS)
       init[img.in_reg[k]] = fpref_bits(inval[k]);

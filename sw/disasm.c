@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "asm.h"
+#include "report.h"
 
 /* An li operand that reads back (fp3_asm_literal) to exactly `bits`. */
 static void format_imm(uint32_t bits, char *buf, size_t n) {
@@ -49,37 +50,6 @@ int fp3_disasm_word(uint64_t w, char *buf, size_t n) {
   return snprintf(buf, n, "%s", mn);
 }
 
-typedef struct {
-  char *s;
-  size_t len, cap;
-  int oom;
-} strbuf;
-
-static void out(strbuf *b, const char *fmt, ...) {
-  if (b->oom) return;
-  char tmp[256];
-  va_list ap;
-  va_start(ap, fmt);
-  int k = vsnprintf(tmp, sizeof tmp, fmt, ap);
-  va_end(ap);
-  if (k < 0) return;
-  size_t len = (size_t)k < sizeof tmp ? (size_t)k : sizeof tmp - 1;
-  if (b->len + len + 1 > b->cap) {
-    size_t cap = b->cap ? b->cap * 2 : 4096;
-    while (cap < b->len + len + 1) cap *= 2;
-    char *p = realloc(b->s, cap);
-    if (!p) {
-      b->oom = 1;
-      return;
-    }
-    b->s = p;
-    b->cap = cap;
-  }
-  memcpy(b->s + b->len, tmp, len);
-  b->len += len;
-  b->s[b->len] = '\0';
-}
-
 /* endi instructions (legal ones) targeting `addr`, addr <= n */
 static int is_target(const fp3_image *img, size_t addr) {
   char why[8];
@@ -94,17 +64,17 @@ static int is_target(const fp3_image *img, size_t addr) {
 }
 
 char *fp3_disasm_image(const fp3_image *img) {
-  strbuf b = {NULL, 0, 0, 0};
-  out(&b, "; FP3 program, %zu words (disassembled)\n", img->n);
+  fp3_strbuf b = {NULL, 0, 0, 0};
+  fp3_strbuf_printf(&b, "; FP3 program, %zu words (disassembled)\n", img->n);
   for (int i = 0; i < FP3_IN_COUNT; i++)
     if (img->in_reg[i] >= 0)
-      out(&b, ".in %s, r%d\n", fp3_in_name(i), img->in_reg[i]);
+      fp3_strbuf_printf(&b, ".in %s, r%d\n", fp3_in_name(i), img->in_reg[i]);
   for (int i = 0; i < FP3_OUT_COUNT; i++)
     if (img->out_reg[i] >= 0)
-      out(&b, ".out %s, r%d\n", fp3_out_name(i), img->out_reg[i]);
+      fp3_strbuf_printf(&b, ".out %s, r%d\n", fp3_out_name(i), img->out_reg[i]);
   char text[96], why[8];
   for (size_t i = 0; i <= img->n; i++) {
-    if (is_target(img, i)) out(&b, "L%zu:\n", i);
+    if (is_target(img, i)) fp3_strbuf_printf(&b, "L%zu:\n", i);
     if (i == img->n) break;
     uint64_t w = img->words[i];
     int legal = fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why) == 0;
@@ -112,11 +82,11 @@ char *fp3_disasm_image(const fp3_image *img) {
       snprintf(text, sizeof text, "endi L%lu", (unsigned long)fp3_insn_imm(w));
     else
       fp3_disasm_word(w, text, sizeof text);
-    out(&b, "    %-28s ; [%3zu] %016llx", text, i, (unsigned long long)w);
+    fp3_strbuf_printf(&b, "    %-28s ; [%3zu] %016llx", text, i, (unsigned long long)w);
     if (legal && fp3_insn_opc(w) == FP3_OP_LI)
-      out(&b, "  imm 0x%08X", (unsigned)fp3_insn_imm(w));
-    if (img->line[i] > 0) out(&b, "  (line %d)", img->line[i]);
-    out(&b, "\n");
+      fp3_strbuf_printf(&b, "  imm 0x%08X", (unsigned)fp3_insn_imm(w));
+    if (img->line[i] > 0) fp3_strbuf_printf(&b, "  (line %d)", img->line[i]);
+    fp3_strbuf_printf(&b, "\n");
   }
   if (b.oom) {
     free(b.s);

@@ -10,6 +10,7 @@
  *   fp3 bench [options]              integrators: work-precision benchmark,
  *                                    stability and long runs (sw/bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
+ *   fp3 compile SCENE [-o FILE.s]    the scene compiler (sw/compile.h)
  *
  * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
  * 2 bad arguments or input (usage, parameters, assembly errors).
@@ -35,6 +36,8 @@
 #include "integrators.h"
 #include "bench.h"
 #include "cliopt.h"
+#include "cmd_compile.h"
+#include "compile.h"
 #include "cmd_objects.h"
 #include "report.h"
 #include "testfloat.h"
@@ -349,6 +352,7 @@ static void usage_run(FILE *f) {
   fprintf(f,
           "usage: fp3 run [--engine rtl|iss] [--integrator NAME] [--strict]\n"
           "               [--objects N [--seed S] | --scene FILE]\n"
+          "               [--literal | --compile]\n"
           "               [--program FILE.s] [--steps N]\n"
           "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
           "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
@@ -386,7 +390,13 @@ static void usage_run(FILE *f) {
           "                   (default 1), or all of --scene FILE; every object\n"
           "                   is checked against its golden model\n"
           "  --scene FILE     scene file: 'h STEP' once, then one object per\n"
-          "                   line 'T C m v0 s0' ('#' comments; see README)\n"
+          "                   line 'T C m v0 s0' ('#' comments; see README);\n"
+          "                   runs the scene compiler's program for the scene\n"
+          "                   (fp3 compile --help; integrators euler, symeuler,\n"
+          "                   rk2, rk4), checked against the IR's golden model\n"
+          "  --literal        with --scene: the integrator's literal program\n"
+          "                   programs/ship_I.s and its golden model instead\n"
+          "  --compile        with --objects N: the compiled program too\n"
           "  --json           one JSON object instead of the report\n"
           "  --trace FILE     waveform of the run (rtl engine only): a VCD of\n"
           "                   every signal, cycles FIRST .. FIRST+COUNT-1 of the\n"
@@ -469,6 +479,7 @@ static int cmd_run(int argc, char **argv) {
   const char *scene = NULL;        /* --scene FILE                        */
   uint64_t seed = 1;
   int seeded = 0;
+  int literal = 0, compile = 0;    /* --literal, --compile               */
   const fp3_integrator *integ = NULL;
   fpref_mode mode = FPREF_IEEE;
   fp3_ship_params p;
@@ -553,6 +564,10 @@ static int cmd_run(int argc, char **argv) {
       }
     } else if (strcmp(argv[i], "--strict") == 0) {
       strict = 1;
+    } else if (strcmp(argv[i], "--literal") == 0) {
+      literal = 1;
+    } else if (strcmp(argv[i], "--compile") == 0) {
+      compile = 1;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--objects", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
@@ -587,6 +602,17 @@ static int cmd_run(int argc, char **argv) {
     fprintf(stderr, "fp3 run: --seed goes with --objects N (a generated scene)\n");
     return EXIT_USAGE;
   }
+  if (literal && compile) {
+    fprintf(stderr, "fp3 run: --literal or --compile, not both\n");
+    return EXIT_USAGE;
+  }
+  if (compile && (program || !(objects || scene))) {
+    fprintf(stderr, "fp3 run: --compile goes with --scene FILE or --objects N, "
+                    "without --program\n");
+    return EXIT_USAGE;
+  }
+  /* a scene file runs the scene compiler's program unless told otherwise */
+  if (scene && !literal && !program) compile = 1;
   if (trace && (objects || scene)) {
     fprintf(stderr, "fp3 run: --trace is for one object\n");
     return EXIT_USAGE;
@@ -606,6 +632,12 @@ static int cmd_run(int argc, char **argv) {
     return EXIT_USAGE;
   }
   if (!integ) integ = fp3_integrator_find("rk4");
+  if (compile && !fp3_compile_knows(integ->name)) {
+    fprintf(stderr, "fp3 run: the scene compiler does not know integrator '%s' (%s); "
+                    "--literal runs programs/ship_%s.s\n",
+            integ->name, fp3_compile_integrators(), integ->name);
+    return EXIT_USAGE;
+  }
   {
     double hot = fp3_h_over_tau(&p);
     if (p.C > 0.0f && hot > integ->bound) {
@@ -655,8 +687,10 @@ static int cmd_run(int argc, char **argv) {
   }
   if (trace) fp3_engine_rtl_trace_window(e, win_first, win_count);
   if (objects || scene) {
-    fp3_objects_cmd oc = {e, &img, program, integ, scene, objects, seed, p.h,
-                          steps, mode, json};
+    fp3_integ_golden gstore;
+    const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, integ);
+    fp3_objects_cmd oc = {e, &img, program, integ->name, &golden, compile, NULL, scene,
+                          objects, seed, p.h, steps, mode, json};
     int orc = fp3_cmd_run_objects(&oc);
     fp3_engine_free(e);
     return orc;
@@ -680,10 +714,8 @@ static int cmd_run(int argc, char **argv) {
     }
   }
   const float minv = fp3_ship_minv(p.m);
-  const float inval[FP3_IN_COUNT] = {
-      [FP3_IN_T] = p.T,   [FP3_IN_C] = p.C,   [FP3_IN_M] = p.m,
-      [FP3_IN_MINV] = minv, [FP3_IN_H] = p.h, [FP3_IN_V0] = p.v0,
-      [FP3_IN_S0] = p.s0};
+  float inval[FP3_IN_COUNT];
+  fp3_in_values(&p, inval);
   fp3_status st;
   memset(&st, 0, sizeof st);
   int erc = fp3_engine_load(e, img.words, img.n);
@@ -917,7 +949,9 @@ static void usage(FILE *f) {
           "  testfloat ...             FP cores against TestFloat vectors\n"
           "  bench [options]           integrators: work-precision benchmark,\n"
           "                            stability bounds, long runs\n"
-          "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n");
+          "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n"
+          "  compile SCENE [-o FILE.s] the scene compiler: a program folded for\n"
+          "                            the scene (fp3 run --scene uses it)\n");
 }
 
 int main(int argc, char **argv) {
@@ -936,6 +970,7 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "testfloat") == 0)
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
+  if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
   return EXIT_USAGE;

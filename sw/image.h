@@ -24,7 +24,10 @@
 
 /*
  * Parameters the host writes into registers before a run (`.in NAME, rN`):
- * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.
+ * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.  The
+ * last three are the folded inputs of compiled programs (sw/compile.h),
+ * products the host computes once per object, each one binary32 RNE
+ * operation in the order shown (fp3_in_values in objects.h).
  */
 #define FP3_IN_PARAMS(X)                                                       \
   X(T,    "T",    "thrust [N]")                                                \
@@ -33,12 +36,19 @@
   X(MINV, "minv", "1/m [1/kg], binary32 reciprocal of m")                      \
   X(H,    "h",    "time step [s]")                                             \
   X(V0,   "v0",   "initial velocity [m/s]")                                    \
-  X(S0,   "s0",   "initial displacement [m]")
+  X(S0,   "s0",   "initial displacement [m]")                                 \
+  X(HM,   "hm",   "h/m [s/kg]: h * minv")                                      \
+  X(HMT,  "hmT",  "h T/m [m/s]: hm * T, the velocity increment of thrust")     \
+  X(HMC,  "hmC",  "h C/m = h/tau [1]: hm * C")
 
 /* Results the golden model checks (`.out NAME, rN`). */
 #define FP3_OUT_PARAMS(X)                                                      \
   X(V, "v", "velocity [m/s]")                                                  \
   X(S, "s", "displacement [m]")
+
+/* The names, space-separated, for messages: "T C m minv h v0 s0 hm ...". */
+#define FP3_IN_NAME_TEXT_(id, name, desc) " " name
+#define FP3_IN_NAMES_TEXT (FP3_IN_PARAMS(FP3_IN_NAME_TEXT_) + 1)
 
 enum fp3_in_param {
 #define X(id, name, desc) FP3_IN_##id,

@@ -190,17 +190,53 @@ static void rec_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
   }
 }
 
-static void set_inputs(const fp3_image *img, const fp3_ship_params *o, uint32_t *regs) {
-  const float values[FP3_IN_COUNT] = {
-      [FP3_IN_T] = o->T, [FP3_IN_C] = o->C, [FP3_IN_M] = o->m,
-      [FP3_IN_MINV] = fp3_ship_minv(o->m), [FP3_IN_H] = o->h,
-      [FP3_IN_V0] = o->v0, [FP3_IN_S0] = o->s0};
+void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]) {
+  fpenv_saved env;
+  int entered = fpenv_enter(FPREF_IEEE, &env) == 0; /* RNE, subnormals */
+  const float minv = fp3_ship_minv(p->m);
+  const float hm = p->h * minv;
+  val[FP3_IN_T] = p->T;
+  val[FP3_IN_C] = p->C;
+  val[FP3_IN_M] = p->m;
+  val[FP3_IN_MINV] = minv;
+  val[FP3_IN_H] = p->h;
+  val[FP3_IN_V0] = p->v0;
+  val[FP3_IN_S0] = p->s0;
+  val[FP3_IN_HM] = hm;
+  val[FP3_IN_HMT] = hm * p->T;
+  val[FP3_IN_HMC] = hm * p->C;
+  if (entered) fpenv_leave(&env);
+}
+
+void fp3_in_registers(const fp3_image *img, const fp3_ship_params *p, uint32_t *regs) {
+  float values[FP3_IN_COUNT];
+  fp3_in_values(p, values);
   for (int i = 0; i < FP3_IN_COUNT; i++)
     if (img->in_reg[i] >= 0) regs[img->in_reg[i]] = fpref_bits(values[i]);
 }
 
+static void integ_start(void *ctx, const fp3_ship_params *p) {
+  fp3_integ_golden *g = ctx;
+  g->integ->init(&g->st, p);
+}
+
+static void integ_step(void *ctx, float *v, float *s) {
+  fp3_integ_golden *g = ctx;
+  g->integ->step(&g->st);
+  *v = g->st.v;
+  *s = g->st.s;
+}
+
+fp3_golden_ref fp3_golden_of_integrator(fp3_integ_golden *storage,
+                                        const fp3_integrator *ig) {
+  memset(storage, 0, sizeof *storage);
+  storage->integ = ig;
+  fp3_golden_ref r = {storage, integ_start, integ_step};
+  return r;
+}
+
 int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
-                    uint32_t steps, fpref_mode mode, const fp3_integrator *integ,
+                    uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
                     fp3_objects_result *res, char *msg, size_t n) {
   memset(res, 0, sizeof *res);
   const unsigned nctx = e->config.num_contexts;
@@ -246,7 +282,7 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     unsigned k = (unsigned)(sc->n - first < nctx ? sc->n - first : nctx);
     for (unsigned c = 0; c < k; c++) {
       memset(regs, 0, e->config.num_regs * sizeof *regs);
-      set_inputs(img, &sc->objs[first + c], regs);
+      fp3_in_registers(img, &sc->objs[first + c], regs);
       for (unsigned r = 0; r < e->config.num_regs; r++) {
         if (fp3_engine_write_ctx_reg(e, c, r, regs[r])) {
           snprintf(msg, n, "%s", fp3_engine_error(e));
@@ -286,16 +322,18 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
       }
       /* Golden model of this object, every integration. */
       const fp3_ship_params *o = &sc->objs[obj];
-      fp3_istate g;
-      integ->init(&g, o);
+      fpenv_saved env;
+      fpenv_enter(mode, &env); /* prologue arithmetic in the cores' mode */
+      golden->start(golden->ctx, o);
+      fpenv_leave(&env);
       uint32_t cur[2] = {fpref_bits(o->v0), fpref_bits(o->s0)};
       size_t base = (size_t)c * (steps + 1);
       for (uint32_t i = 1; i <= steps && i <= cs.steps_done; i++) {
-        fpenv_saved env;
+        float gv, gs;
         fpenv_enter(mode, &env);
-        integ->step(&g);
+        golden->step(golden->ctx, &gv, &gs);
         fpenv_leave(&env);
-        const uint32_t want[2] = {fpref_bits(g.v), fpref_bits(g.s)};
+        const uint32_t want[2] = {fpref_bits(gv), fpref_bits(gs)};
         for (int w = 0; w < 2; w++) {
           if (b.seen[w][base + i]) cur[w] = b.val[w][base + i];
           if (cur[w] != want[w]) {

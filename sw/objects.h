@@ -42,6 +42,39 @@ int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc);
 
 void fp3_scene_free(fp3_scene *sc);
 
+/* The value of every `.in` parameter (enum fp3_in_param) for object p:
+ * the scene values, minv = 1.0f/m, and the folded inputs hm = h*minv,
+ * hmT = hm*T, hmC = hm*C.  Each derived value is one binary32 operation in
+ * round-to-nearest-even with subnormals, whatever the caller's FP
+ * environment (fpenv.h): the values the host writes, and the values the
+ * golden models must start from. */
+void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]);
+
+/* Write the `.in` registers of img for object p into regs[] (registers the
+ * image does not bind are left alone). */
+void fp3_in_registers(const fp3_image *img, const fp3_ship_params *p, uint32_t *regs);
+
+/* A golden model of one object, as fp3_run_objects() uses it: start() sets
+ * the object (v = v0, s = s0, and any prologue arithmetic), step() runs
+ * one integration and returns v and s.  Both run inside the cores' FP mode
+ * (fpenv_enter).  The state lives in *ctx: one object at a time. */
+typedef struct fp3_golden_ref {
+  void *ctx;
+  void (*start)(void *ctx, const fp3_ship_params *p);
+  void (*step)(void *ctx, float *v, float *s);
+} fp3_golden_ref;
+
+/* Storage of the golden model of an integrator (integrators.h). */
+typedef struct fp3_integ_golden {
+  const fp3_integrator *integ;
+  fp3_istate st;
+} fp3_integ_golden;
+
+/* The golden model of integrator ig, its state in *storage (which must
+ * outlive the returned reference). */
+fp3_golden_ref fp3_golden_of_integrator(fp3_integ_golden *storage,
+                                        const fp3_integrator *ig);
+
 /* Outcome of a multi-object run. */
 typedef struct fp3_objects_result {
   size_t objects;
@@ -62,13 +95,13 @@ typedef struct fp3_objects_result {
 
 /* Run every object of the scene for `steps` integrations on the engine, in
  * batches of e->config.num_contexts contexts, writing each object's `.in`
- * registers, and compare v and s of every object after every integration
- * with the integrator's golden model (run in core options `mode`).
+ * registers (fp3_in_registers), and compare v and s of every object after
+ * every integration with the golden model (run in core options `mode`).
  * Returns 0 when the runs took place (mismatches and errors are in *res),
  * or -1 with a message (engine failure, out of memory, program without
  * .out v/s). */
 int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
-                    uint32_t steps, fpref_mode mode, const fp3_integrator *integ,
+                    uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
                     fp3_objects_result *res, char *msg, size_t n);
 
 void fp3_objects_result_free(fp3_objects_result *res);

@@ -4,6 +4,8 @@
 #include "report.h"
 
 #include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "fp3_isa.h"
@@ -88,3 +90,26 @@ void fp3_json_double(FILE *f, double x) {
     fputs("null", f);
 }
 
+
+void fp3_strbuf_printf(fp3_strbuf *b, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  int k = vsnprintf(NULL, 0, fmt, ap);
+  va_end(ap);
+  if (k < 0 || b->oom) return;
+  if (b->len + (size_t)k + 1 > b->cap) {
+    size_t cap = b->cap ? b->cap * 2 : 4096;
+    while (cap < b->len + (size_t)k + 1) cap *= 2;
+    char *g = realloc(b->s, cap);
+    if (!g) {
+      b->oom = 1;
+      return;
+    }
+    b->s = g;
+    b->cap = cap;
+  }
+  va_start(ap, fmt);
+  vsnprintf(b->s + b->len, b->cap - b->len, fmt, ap);
+  va_end(ap);
+  b->len += (size_t)k;
+}

@@ -25,4 +25,17 @@ void fp3_json_string(FILE *f, const char *s);
 void fp3_json_float(FILE *f, float x);
 void fp3_json_double(FILE *f, double x);
 
+/* A growing NUL-terminated string: start with {0}; s is malloc'd (the
+ * caller frees it), NULL until the first append.  After a failed
+ * allocation oom is 1 and later appends do nothing. */
+typedef struct fp3_strbuf {
+  char *s;
+  size_t len, cap;
+  int oom;
+} fp3_strbuf;
+
+/* Append printf-formatted text (any length). */
+void fp3_strbuf_printf(fp3_strbuf *b, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
 #endif /* FP3_REPORT_H */

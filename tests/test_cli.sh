@@ -202,5 +202,54 @@ assert abs(d["results"][0]["v"] - d["results"][0]["v_exact"]) < 1e-3
 EOF
 then ok; else bad "run --scene --json output: $json"; fi
 
+# ---- the scene compiler: fp3 compile, fp3 run --scene compiles ------------------------
+expect 0 "usage: fp3 compile" -- compile --help
+expect 0 "rk4: 22 instructions per integration (literal program 31)" -- compile "$T/harbour.scene" -o "$T/harbour.s"
+[ -f "$T/harbour.s" ] && ! ls "$T"/harbour.s.tmp* >/dev/null 2>&1 && ok || bad "compile -o wrote no $T/harbour.s"
+grep -q '^\.in  hmT, *r' "$T/harbour.s" && grep -q '^; instructions per integration: 22' "$T/harbour.s" \
+  && ok || bad "the compiled program lacks its .in hmT or its header"
+expect 0 "" -- asm "$T/harbour.s" -o "$T/harbour.hex"
+expect 0 "instructions per integration: 31" -- compile "$T/harbour.scene" --literal
+printf 'h 0.01\n2000 0 1000 1 -5\n50 0 10 0 0\n' > "$T/nodrag.scene"
+expect 0 "4 instructions per integration .*no drag" -- compile "$T/nodrag.scene"
+json=$("$FP3" compile "$T/nodrag.scene" --integrator euler -o "$T/nodrag.s" --json 2>&1)
+python3 -c 'import json,sys; d=json.loads(sys.argv[1]); assert d["no_drag"] and d["insns_per_step"] <= d["literal_insns_per_step"], d' "$json" \
+  && ok || bad "compile --json: $json"
+expect 2 "unknown integrator 'leapfrog'" -- compile "$T/harbour.scene" --integrator leapfrog -o "$T/x.s"
+expect 2 "short.scene:1: expected 5 numbers" -- compile "$T/short.scene" -o "$T/x.s"
+expect 2 "mass.scene:3: parameter m = 0" -- compile "$T/mass.scene"
+expect 2 "No such file" -- compile "$T/missing.scene"
+expect 2 "no scene file" -- compile
+expect 2 "unknown option '--bogus'" -- compile "$T/harbour.scene" --bogus
+expect 2 "want 1..64 cycles" -- compile "$T/harbour.scene" --add-latency 0
+expect 2 "needs -o" -- compile "$T/harbour.scene" --json
+[ ! -e "$T/x.s" ] && ok || bad "a failed compile left $T/x.s"
+expect 1 "$T/nodir/p.s" -- compile "$T/harbour.scene" -o "$T/nodir/p.s"
+[ ! -e "$T/nodir" ] && ok || bad "compile into a missing directory created something"
+mkdir "$T/ro" && chmod 555 "$T/ro"
+if [ ! -w "$T/ro" ]; then   # (root writes anyway)
+  expect 1 "$T/ro/p.s" -- compile "$T/harbour.scene" -o "$T/ro/p.s"
+  [ -z "$(ls -A "$T/ro")" ] && ok || bad "compile into a read-only directory left a file"
+fi
+chmod 755 "$T/ro"
+# run --scene: compiled by default, checked against the IR golden model
+expect 0 "PASS: 5 objects x 300 integrations on iss bit-exact" -- "${ISS[@]}" --scene "$T/harbour.scene" --steps 300
+expect 0 "program: 22 instructions per integration (literal program 31)" -- "${ISS[@]}" --scene "$T/harbour.scene" --steps 10
+expect 0 "program: 31 instructions per integration" -- "${ISS[@]}" --scene "$T/harbour.scene" --steps 10 --literal
+expect 0 "PASS: 2 objects x 500 integrations on iss" -- "${ISS[@]}" --scene "$T/nodrag.scene" --steps 500 --integrator rk2
+expect 0 "PASS: 24 objects" -- "${ISS[@]}" --objects 24 --seed 3 --steps 100 --compile --integrator symeuler
+expect 2 "does not know integrator 'verlet'" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verlet
+expect 0 "PASS" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verlet --literal --steps 20
+expect 2 "not both" -- "${ISS[@]}" --scene "$T/harbour.scene" --literal --compile
+expect 2 "compile goes with" -- "${ISS[@]}" --compile
+json=$("$FP3" run --scene "$T/harbour.scene" --steps 100 --json 2>&1); rc=$?
+[ "$rc" -eq 0 ] && ok || bad "run --scene (rtl, compiled) exit $rc"
+python3 - "$json" <<'EOF2' && ok || bad "run --scene (rtl, compiled) --json: $json"
+import json, sys
+d = json.loads(sys.argv[1])
+assert d["engine"] == "rtl" and d["compiled"] and d["golden_mismatches"] == 0, d
+assert d["insns_per_step"] < d["literal_insns_per_step"] and d["cycles_per_object_step"] > 0, d
+EOF2
+
 echo "test_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

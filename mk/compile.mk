@@ -1,0 +1,28 @@
+# compile.mk -- the scene compiler (issue 7 part 1): its test and its
+# benchmark.
+#
+#   make bench-compile   scenes (all terms, no drag, no thrust, mixed) of
+#                        BENCH_COMPILE_OBJECTS objects, BENCH_COMPILE_STEPS
+#                        integrations each, on the RTL: literal vs compiled
+#                        program; instructions per integration, cycles per
+#                        object-step (measured), error of v and s against the
+#                        exact solution -> build/bench/compile.{csv,md}
+#
+# sw/compile.c and sw/cmd_compile.c reach libfp3.a through mk/sw.mk's
+# wildcard.
+
+$(BUILD)/tests/test_compile: tests/test_compile.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
+	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
+TEST_BINS += $(BUILD)/tests/test_compile
+
+BENCH_COMPILE_OBJECTS ?= 256
+BENCH_COMPILE_STEPS   ?= 2000
+
+.PHONY: bench-compile
+bench-compile: $(BUILD)/fp3
+	@mkdir -p $(BUILD)/bench
+	bash scripts/bench-compile.sh $(BUILD)/fp3 $(BUILD)/bench $(BENCH_COMPILE_OBJECTS) \
+	  $(BENCH_COMPILE_STEPS)

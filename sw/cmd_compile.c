@@ -1,0 +1,169 @@
+/*
+ * cmd_compile.c -- `fp3 compile SCENE`: the scene compiler on the command
+ * line (cmd_compile.h, compile.h).
+ */
+#include "cmd_compile.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cliopt.h"
+#include "compile.h"
+#include "objects.h"
+#include "report.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: fp3 compile SCENE [--integrator NAME] [-o PROGRAM.s]\n"
+          "                   [--literal | --no-fold] [--keep-zero]\n"
+          "                   [--add-latency N] [--mul-latency N] [--json]\n"
+          "\n"
+          "Compile the scene file SCENE ('h STEP', then 'T C m v0 s0' per object,\n"
+          "see fp3 run --help) and an integrator into an FP3 program that computes\n"
+          "only what the scene needs: constants folded on the host (hmT =\n"
+          "(h*minv)*T, hmC = (h*minv)*C: new .in inputs), terms that are zero in\n"
+          "every object removed (no drag when every C = 0, no thrust when every\n"
+          "T = 0), loop invariants moved to the prologue, dead operations removed,\n"
+          "the loop body list-scheduled for the latencies and registers allocated.\n"
+          "fp3 run --scene runs the compiled program by default and checks every\n"
+          "object after every integration against the IR's golden model.\n"
+          "\n"
+          "  --integrator I   %s (default rk4)\n"
+          "  -o FILE          write the assembly to FILE (atomically: on any error\n"
+          "                   no file is left); default: standard output\n"
+          "  --no-fold        no folded inputs: the integrator's literal operations\n"
+          "  --keep-zero      keep terms that are zero in the whole scene\n"
+          "  --literal        both: the operations of programs/ship_I.s\n"
+          "  --add-latency N, --mul-latency N   scheduler distances in cycles\n"
+          "                   (default %u and %u, sw/fp3_isa.h)\n"
+          "  --json           the report as one JSON object on standard output\n"
+          "                   (with -o only)\n"
+          "\n"
+          "The report (standard error, or --json): instructions per integration\n"
+          "of the literal program and of the compiled one, and the scheduler's\n"
+          "estimate of cycles per integration.\n"
+          "Exit status: 0 written; 2 bad arguments, scene or integrator; 1 the\n"
+          "output could not be written.\n",
+          fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
+          (unsigned)FP3_DEFAULT_MUL_LATENCY);
+}
+
+/* A latency option value 1..64. */
+static int latency_arg(const char *opt, const char *v, unsigned *out) {
+  char *end;
+  errno = 0;
+  unsigned long k = strtoul(v, &end, 10);
+  if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > 64) {
+    fprintf(stderr, "fp3 compile: %s '%s': want 1..64 cycles\n", opt, v);
+    return -1;
+  }
+  *out = (unsigned)k;
+  return 0;
+}
+
+int fp3_cmd_compile(int argc, char **argv) {
+  const char *scene = NULL, *outp = NULL, *integ = "rk4";
+  int json = 0;
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    int r;
+    if (fp3_is_help(argv[i])) {
+      usage(stdout);
+      return 0;
+    }
+    if ((r = fp3_opt_value(argc, argv, &i, "compile", "-o", &v)) != 0 ||
+        (r = fp3_opt_value(argc, argv, &i, "compile", "--output", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      outp = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--integrator", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      integ = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--add-latency", &v)) != 0) {
+      if (r < 0 || latency_arg("--add-latency", v, &o.add_latency)) return EXIT_USAGE;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--mul-latency", &v)) != 0) {
+      if (r < 0 || latency_arg("--mul-latency", v, &o.mul_latency)) return EXIT_USAGE;
+    } else if (strcmp(argv[i], "--literal") == 0) {
+      o.fold = o.drop_zero = 0;
+    } else if (strcmp(argv[i], "--no-fold") == 0) {
+      o.fold = 0;
+    } else if (strcmp(argv[i], "--keep-zero") == 0) {
+      o.drop_zero = 0;
+    } else if (strcmp(argv[i], "--json") == 0) {
+      json = 1;
+    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+      fprintf(stderr, "fp3 compile: unknown option '%s' (see fp3 compile --help)\n", argv[i]);
+      return EXIT_USAGE;
+    } else if (!scene) {
+      scene = argv[i];
+    } else {
+      fprintf(stderr, "fp3 compile: more than one scene ('%s')\n", argv[i]);
+      return EXIT_USAGE;
+    }
+  }
+  if (!scene) {
+    fprintf(stderr, "fp3 compile: no scene file (see fp3 compile --help)\n");
+    return EXIT_USAGE;
+  }
+  if (json && !outp) {
+    fprintf(stderr, "fp3 compile: --json needs -o FILE (the program and the report would "
+                    "share standard output)\n");
+    return EXIT_USAGE;
+  }
+  char msg[512];
+  fp3_scene sc;
+  if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 compile: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  fp3_compiled *c;
+  if (fp3_compile(&sc, integ, &o, scene, &c, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 compile: %s: %s\n", scene, msg);
+    fp3_scene_free(&sc);
+    return EXIT_USAGE;
+  }
+  int rc = 0;
+  if (outp) {
+    if (fp3_compiled_write(c, outp, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      rc = EXIT_FAIL;
+    }
+  } else {
+    fputs(fp3_compiled_text(c), stdout);
+  }
+  const fp3_compile_stats *st = fp3_compiled_stats(c);
+  if (rc == 0 && json) {
+    printf("{\"scene\": ");
+    fp3_json_string(stdout, scene);
+    printf(", \"objects\": %zu, \"integrator\": ", sc.n);
+    fp3_json_string(stdout, integ);
+    printf(", \"fold\": %s, \"drop_zero\": %s, \"no_drag\": %s, \"no_thrust\": %s",
+           o.fold ? "true" : "false", o.drop_zero ? "true" : "false",
+           st->no_drag ? "true" : "false", st->no_thrust ? "true" : "false");
+    printf(", \"insns_per_step\": %u, \"arith_per_step\": %u, \"literal_insns_per_step\": %u",
+           st->body_insns, st->body_arith, st->literal_body_insns);
+    printf(", \"prologue_insns\": %u, \"hoisted\": %u, \"dead_removed\": %u, \"registers\": %u",
+           st->prologue_insns, st->hoisted, st->dead_removed, st->regs);
+    printf(", \"add_latency\": %u, \"mul_latency\": %u", o.add_latency, o.mul_latency);
+    printf(", \"est_cycles_first_step\": %u, \"est_cycles_per_step\": %u}\n",
+           st->est_cycles_first, st->est_cycles_later);
+  } else if (rc == 0) {
+    fprintf(stderr,
+            "fp3 compile: %s (%zu objects), %s: %u instructions per integration "
+            "(literal program %u), prologue %u; estimated %u cycles per later "
+            "integration (first %u)%s%s\n",
+            scene, sc.n, integ, st->body_insns, st->literal_body_insns, st->prologue_insns,
+            st->est_cycles_later, st->est_cycles_first,
+            o.drop_zero && st->no_drag ? "; no drag" : "",
+            o.drop_zero && st->no_thrust ? "; no thrust" : "");
+  }
+  fp3_compiled_free(c);
+  fp3_scene_free(&sc);
+  return rc;
+}

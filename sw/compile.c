@@ -1,0 +1,870 @@
+/*
+ * compile.c -- the scene compiler (compile.h): IR, folding, scheduling,
+ * register allocation, assembly text, and the IR golden model.
+ *
+ * The golden model evaluates the IR nodes in C binary32, one operation per
+ * node, compiled with -ffp-contract=off like sw/integrators.c.
+ */
+#include "compile.h"
+
+#include <errno.h>
+#include <float.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "asm.h"
+#include "fp3_isa.h"
+#include "fpref.h"
+#include "golden.h"
+#include "report.h"
+
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "the IR golden model needs float expressions evaluated in float"
+#endif
+
+#define MAX_NODES 256
+#define MAX_INSNS FP3_DEFAULT_IMEM_DEPTH
+#define NOTE_LEN 72
+
+/* ---- the IR ------------------------------------------------------------- */
+
+enum node_kind { NK_IN, NK_CONST, NK_STATE, NK_ADD, NK_SUB, NK_MUL };
+enum { ST_V = 0, ST_S = 1 }; /* loop-carried state */
+
+typedef struct node {
+  int kind;
+  int a, b;        /* operands (ops)                               */
+  int id;          /* NK_IN: enum fp3_in_param; NK_STATE: ST_*       */
+  uint32_t bits;   /* NK_CONST                                     */
+  int inv;         /* loop invariant: inputs and constants only     */
+  int live;        /* read by an output, directly or not            */
+  char name[16];   /* for comments ("k1", "vt2", ...)             */
+} node;
+
+/* A reference to a node, possibly negated (zero-term removal). */
+typedef struct ref {
+  int n;
+  int neg;
+} ref;
+
+typedef struct builder {
+  node nd[MAX_NODES];
+  int nn;
+  int fold, drop_zero, no_drag, no_thrust;
+  int zero;        /* the +0 constant standing for a removed term, or -1 */
+  ref out[2];      /* next v, next s                                   */
+  int err;
+} builder;
+
+static int op_kind(int k) { return k == NK_ADD || k == NK_SUB || k == NK_MUL; }
+
+static int new_node(builder *b, node x) {
+  for (int i = 0; i < b->nn; i++) { /* hash-consing: common subexpressions */
+    const node *y = &b->nd[i];
+    if (y->kind == x.kind && y->a == x.a && y->b == x.b && y->id == x.id && y->bits == x.bits)
+      return i;
+  }
+  if (b->nn == MAX_NODES) {
+    b->err = 1;
+    return 0;
+  }
+  b->nd[b->nn] = x;
+  return b->nn++;
+}
+
+static ref leaf(builder *b, int kind, int id, uint32_t bits, const char *name) {
+  node x = {kind, -1, -1, id, bits, kind != NK_STATE, 0, ""};
+  int i = new_node(b, x);
+  if (!b->nd[i].name[0]) snprintf(b->nd[i].name, sizeof b->nd[i].name, "%s", name);
+  return (ref){i, 0};
+}
+
+static ref konst(builder *b, float f, const char *name) {
+  return leaf(b, NK_CONST, -1, fpref_bits(f), name);
+}
+
+static int is_zero(const builder *b, ref r) { return b->zero >= 0 && r.n == b->zero; }
+
+static int is_one(const builder *b, ref r) {
+  return b->nd[r.n].kind == NK_CONST && b->nd[r.n].bits == 0x3F800000u;
+}
+
+/* A scene input; a removed term when it is zero in every object. */
+static ref input(builder *b, int id) {
+  int zero = b->drop_zero && (((id == FP3_IN_C || id == FP3_IN_HMC) && b->no_drag) ||
+                              ((id == FP3_IN_T || id == FP3_IN_HMT) && b->no_thrust));
+  if (zero) {
+    ref z = konst(b, 0.0f, "zero");
+    b->zero = z.n;
+    return z;
+  }
+  return leaf(b, NK_IN, id, 0, fp3_in_name(id));
+}
+
+static ref state(builder *b, int which) {
+  return leaf(b, NK_STATE, which, 0, which == ST_V ? "v" : "s");
+}
+
+static ref op(builder *b, int kind, ref x, ref y) {
+  node z = {kind, x.n, y.n, -1, 0, b->nd[x.n].inv && b->nd[y.n].inv, 0, ""};
+  return (ref){new_node(b, z), 0};
+}
+
+static ref mul(builder *b, ref x, ref y) {
+  if (is_zero(b, x)) return x;
+  if (is_zero(b, y)) return y;
+  if (is_one(b, x)) return y;
+  if (is_one(b, y)) return x;
+  ref r = op(b, NK_MUL, (ref){x.n, 0}, (ref){y.n, 0});
+  r.neg = x.neg ^ y.neg; /* (-a) b = -(a b): symmetric rounding */
+  return r;
+}
+
+static ref add(builder *b, ref x, ref y) {
+  if (is_zero(b, y)) return x;
+  if (is_zero(b, x)) return y;
+  if (!x.neg && !y.neg) return op(b, NK_ADD, x, y);
+  if (!x.neg) return op(b, NK_SUB, x, (ref){y.n, 0});   /* a + (-b) = a - b */
+  if (!y.neg) return op(b, NK_SUB, y, (ref){x.n, 0});   /* -a + b = b - a  */
+  ref r = op(b, NK_ADD, (ref){x.n, 0}, (ref){y.n, 0}); /* -a - b = -(a + b) */
+  r.neg = 1;
+  return r;
+}
+
+static ref sub(builder *b, ref x, ref y) {
+  y.neg ^= 1;
+  return add(b, x, y);
+}
+
+/* Name a node for the comments (the first name sticks). */
+static ref nm(builder *b, ref r, const char *name) {
+  node *x = &b->nd[r.n];
+  if (op_kind(x->kind) && !x->name[0]) snprintf(x->name, sizeof x->name, "%s", name);
+  return r;
+}
+
+/* ---- the integrators -------------------------------------------------------- */
+
+/* The paper's f(v): (T - C x) * minv (integrators.c accel). */
+static ref lit_accel(builder *b, ref x, const char *tag) {
+  char s[16];
+  snprintf(s, sizeof s, "cv%s", tag);
+  ref cv = nm(b, mul(b, input(b, FP3_IN_C), x), s);
+  snprintf(s, sizeof s, "F%s", tag);
+  ref F = nm(b, sub(b, input(b, FP3_IN_T), cv), s);
+  snprintf(s, sizeof s, "a%s", tag);
+  return nm(b, mul(b, F, input(b, FP3_IN_MINV)), s);
+}
+
+/* Folded h f(x) = hmT - hmC x. */
+static ref fold_k(builder *b, ref x, const char *tag) {
+  char s[16];
+  snprintf(s, sizeof s, "p%s", tag);
+  ref p = nm(b, mul(b, input(b, FP3_IN_HMC), x), s);
+  snprintf(s, sizeof s, "k%s", tag);
+  return nm(b, sub(b, input(b, FP3_IN_HMT), p), s);
+}
+
+/* h f(x): literal h * a, or folded. */
+static ref hf(builder *b, ref x, const char *tag) {
+  if (b->fold) return fold_k(b, x, tag);
+  char s[16];
+  snprintf(s, sizeof s, "k%s", tag);
+  return nm(b, mul(b, input(b, FP3_IN_H), lit_accel(b, x, tag)), s);
+}
+
+static void build_euler(builder *b, int sym) {
+  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
+  ref k = hf(b, v, "");
+  if (b->fold) k = nm(b, k, "dv");
+  ref v1 = nm(b, add(b, v, k), "v1");
+  ref hv = nm(b, mul(b, h, sym ? v1 : v), "hv");
+  b->out[ST_V] = v1;
+  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
+}
+
+static void build_rk2(builder *b) {
+  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
+  ref half = konst(b, FP3_GOLDEN_HALF, "half");
+  ref hk;
+  if (b->fold) { /* h/2 f(v) = (hmT/2) - (hmC/2) v, the halves invariant */
+    ref t = nm(b, mul(b, half, input(b, FP3_IN_HMT)), "hmT2");
+    ref c = nm(b, mul(b, half, input(b, FP3_IN_HMC)), "hmC2");
+    hk = sub(b, t, nm(b, mul(b, c, v), "p1"));
+  } else {
+    ref hh = nm(b, mul(b, half, h), "hh");
+    hk = mul(b, hh, lit_accel(b, v, "1"));
+  }
+  ref vm = nm(b, add(b, v, nm(b, hk, "hk")), "vm");
+  ref hv = nm(b, mul(b, h, vm), "hv");
+  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
+  b->out[ST_V] = nm(b, add(b, v, hf(b, vm, "2")), "v1");
+}
+
+static void build_rk4(builder *b) {
+  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
+  ref half = konst(b, FP3_GOLDEN_HALF, "half");
+  ref two = konst(b, FP3_GOLDEN_TWO, "two");
+  ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
+  ref k1 = hf(b, v, "1");
+  ref vt2 = nm(b, add(b, v, nm(b, mul(b, half, k1), "hk1")), "vt2");
+  ref k2 = hf(b, vt2, "2");
+  ref vt3 = nm(b, add(b, v, nm(b, mul(b, half, k2), "hk2")), "vt3");
+  ref k3 = hf(b, vt3, "3");
+  ref vt4 = nm(b, add(b, v, k3), "vt4");
+  ref k4 = hf(b, vt4, "4");
+  ref sum;
+  if (b->fold) { /* (k1 + k4) + 2 (k2 + k3) */
+    ref w = nm(b, mul(b, two, nm(b, add(b, k2, k3), "k23")), "w");
+    sum = add(b, nm(b, add(b, k1, k4), "k14"), w);
+  } else { /* ((k1 + 2 k2) + 2 k3) + k4, as sw/golden.c */
+    sum = nm(b, add(b, k1, nm(b, mul(b, two, k2), "t2")), "sum12");
+    sum = nm(b, add(b, sum, nm(b, mul(b, two, k3), "t3")), "sum123");
+    sum = add(b, sum, k4);
+  }
+  ref dv = nm(b, mul(b, sixth, nm(b, sum, "sum")), "dv");
+  ref v1 = nm(b, add(b, v, dv), "v1");
+  ref hv = nm(b, mul(b, h, v1), "hv");
+  b->out[ST_V] = v1;
+  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
+}
+
+static void build_explicit_euler(builder *b) { build_euler(b, 0); }
+static void build_symplectic_euler(builder *b) { build_euler(b, 1); }
+
+static const struct {
+  const char *name;
+  void (*build)(builder *b);
+} recipes[] = {
+    {"euler", build_explicit_euler},
+    {"symeuler", build_symplectic_euler},
+    {"rk2", build_rk2},
+    {"rk4", build_rk4},
+};
+
+static int build(builder *b, const char *integrator) {
+  for (size_t i = 0; i < sizeof recipes / sizeof recipes[0]; i++)
+    if (strcmp(recipes[i].name, integrator) == 0) {
+      recipes[i].build(b);
+      return 0;
+    }
+  return -1;
+}
+
+const char *fp3_compile_integrators(void) { return "euler symeuler rk2 rk4"; }
+
+int fp3_compile_knows(const char *name) {
+  for (size_t i = 0; i < sizeof recipes / sizeof recipes[0]; i++)
+    if (strcmp(recipes[i].name, name) == 0) return 1;
+  return 0;
+}
+
+static void mark_live(builder *b, int i) {
+  node *x = &b->nd[i];
+  if (x->live) return;
+  x->live = 1;
+  if (op_kind(x->kind)) {
+    mark_live(b, x->a);
+    mark_live(b, x->b);
+  }
+}
+
+/* ---- instructions ------------------------------------------------------------ */
+
+typedef struct insn {
+  unsigned opc, rd, ra, rb;
+  uint32_t imm;
+  char note[NOTE_LEN];
+} insn;
+
+/* Body instructions before register allocation: an op node, or a mov of a
+ * value into a state register. */
+typedef struct bins {
+  int node;       /* IR node computed (op) or moved (mov)             */
+  int is_mov;
+  int dest_state; /* ST_* when it writes a state register, else -1     */
+  int srcs[2];    /* operand nodes                                   */
+  int issue;      /* scheduled issue cycle                           */
+  int placed, height, visiting;
+} bins;
+
+struct fp3_compiled {
+  builder b;
+  char *text;
+  fp3_image img;
+  fp3_compile_stats stats;
+  float val[MAX_NODES];    /* golden model: node values               */
+  float in[FP3_IN_COUNT];
+};
+
+static unsigned unit_latency(const fp3_compile_opts *o, unsigned unit) {
+  switch (unit) {
+  case FP3_UNIT_ADD: return o->add_latency;
+  case FP3_UNIT_MUL: return o->mul_latency;
+  case FP3_UNIT_MOV: return o->mov_latency;
+  default: return 1;
+  }
+}
+
+static unsigned node_opc(int kind) {
+  return kind == NK_ADD ? FP3_OP_ADD : kind == NK_SUB ? FP3_OP_SUB : FP3_OP_MUL;
+}
+
+static unsigned bins_latency(const builder *b, const fp3_compile_opts *o, const bins *x) {
+  if (x->is_mov) return o->mov_latency;
+  return unit_latency(o, fp3_opc_unit(node_opc(b->nd[x->node].kind)));
+}
+
+/* Body instruction producing node i (-1: none, a prologue value). */
+static int producer(const bins *bi, int nb, int ni) {
+  for (int j = 0; j < nb; j++)
+    if (!bi[j].is_mov && bi[j].node == ni) return j;
+  return -1;
+}
+
+/* Must j issue before k?  Data: k reads j's value.  Order: j reads a
+ * state register that k overwrites. */
+static int data_edge(const bins *bi, int j, int k) {
+  return !bi[j].is_mov && (bi[k].srcs[0] == bi[j].node || bi[k].srcs[1] == bi[j].node);
+}
+
+static int order_edge(const builder *b, const bins *bi, int j, int k) {
+  if (j == k || bi[k].dest_state < 0) return 0;
+  for (int q = 0; q < 2; q++) {
+    int s = bi[j].srcs[q];
+    if (s >= 0 && b->nd[s].kind == NK_STATE && b->nd[s].id == bi[k].dest_state) return 1;
+  }
+  return 0;
+}
+
+/* Longest latency path from j to the end of the integration; -1 on a
+ * dependence cycle. */
+static int height(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int j) {
+  if (bi[j].height) return bi[j].height;
+  if (bi[j].visiting) return -1;
+  bi[j].visiting = 1;
+  int lat = (int)bins_latency(b, o, &bi[j]), h = lat;
+  for (int k = 0; k < nb; k++) {
+    int d = data_edge(bi, j, k) ? lat : order_edge(b, bi, j, k) ? 1 : 0;
+    if (!d) continue;
+    int hk = height(b, o, bi, nb, k);
+    if (hk < 0) return -1;
+    if (d + hk > h) h = d + hk;
+  }
+  bi[j].visiting = 0;
+  bi[j].height = h;
+  return h;
+}
+
+/* List scheduling, in-order single issue: order[] gets the body. */
+static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int *order) {
+  for (int j = 0; j < nb; j++)
+    if (height(b, o, bi, nb, j) < 0) return -1;
+  int cycle = 0;
+  for (int placed = 0; placed < nb; placed++) {
+    int best = -1, best_at = 0;
+    for (int k = 0; k < nb; k++) {
+      if (bi[k].placed) continue;
+      int at = cycle, ready = 1;
+      for (int j = 0; j < nb && ready; j++) {
+        int d = data_edge(bi, j, k), ord = order_edge(b, bi, j, k);
+        if (!d && !ord) continue;
+        if (!bi[j].placed) ready = 0;
+        else if (d && bi[j].issue + (int)bins_latency(b, o, &bi[j]) > at)
+          at = bi[j].issue + (int)bins_latency(b, o, &bi[j]);
+      }
+      if (!ready) continue;
+      if (best < 0 || at < best_at || (at == best_at && bi[k].height > bi[best].height)) {
+        best = k;
+        best_at = at;
+      }
+    }
+    if (best < 0) return -1;
+    bi[best].placed = 1;
+    bi[best].issue = best_at;
+    order[placed] = best;
+    cycle = best_at + 1;
+  }
+  return 0;
+}
+
+/* ---- text ------------------------------------------------------------------- */
+
+/* "name = a op b" for a comment. */
+static void describe(const builder *b, int i, char *s, size_t n) {
+  const node *x = &b->nd[i];
+  static const char sym[] = {'?', '?', '?', '+', '-', '*'};
+  snprintf(s, n, "%s = %s %c %s", x->name[0] ? x->name : "t", b->nd[x->a].name,
+           sym[x->kind], b->nd[x->b].name);
+}
+
+/* ---- compile ---------------------------------------------------------------- */
+
+void fp3_compile_defaults(fp3_compile_opts *o) {
+  o->fold = 1;
+  o->drop_zero = 1;
+  o->add_latency = FP3_DEFAULT_ADD_LATENCY;
+  o->mul_latency = FP3_DEFAULT_MUL_LATENCY;
+  o->mov_latency = 1;
+  o->num_regs = FP3_DEFAULT_NUM_REGS;
+}
+
+typedef struct regalloc {
+  int reg[MAX_NODES];   /* register of each node's value, -1: none   */
+  int used[256];
+  int last_write[256];  /* cycle the latest write lands, for LRU     */
+  unsigned nregs, count;
+} regalloc;
+
+/* A free register, least recently written first; -1 if none. */
+static int take_reg(regalloc *ra) {
+  int best = -1;
+  for (unsigned r = 1; r <= ra->nregs; r++) {
+    unsigned q = r % ra->nregs; /* r1 .. r(N-1), then r0 */
+    if (ra->used[q]) continue;
+    if (best < 0 || ra->last_write[q] < ra->last_write[best]) best = (int)q;
+  }
+  if (best >= 0) {
+    ra->used[best] = 1;
+    ra->count++;
+  }
+  return best;
+}
+
+static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
+                      const fp3_compile_opts *o, char *msg, size_t n) {
+  memset(b, 0, sizeof *b);
+  b->fold = o->fold;
+  b->drop_zero = o->drop_zero;
+  b->zero = -1;
+  b->no_drag = b->no_thrust = 1;
+  for (size_t i = 0; i < sc->n; i++) {
+    if (sc->objs[i].C != 0.0f) b->no_drag = 0;
+    if (sc->objs[i].T != 0.0f) b->no_thrust = 0;
+  }
+  if (build(b, integrator)) {
+    snprintf(msg, n, "unknown integrator '%s' (the compiler knows: %s)", integrator,
+             fp3_compile_integrators());
+    return -1;
+  }
+  if (b->err) {
+    snprintf(msg, n, "the IR has more than %d nodes", MAX_NODES);
+    return -1;
+  }
+  if (b->out[ST_V].neg || b->out[ST_S].neg) {
+    snprintf(msg, n, "internal: a negated result");
+    return -1;
+  }
+  mark_live(b, b->out[ST_V].n);
+  mark_live(b, b->out[ST_S].n);
+  return 0;
+}
+
+int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_opts *o,
+                const char *scene_name, fp3_compiled **outp, char *msg, size_t n) {
+  *outp = NULL;
+  if (sc->n == 0) {
+    snprintf(msg, n, "the scene has no objects");
+    return -1;
+  }
+  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
+      !o->mov_latency) {
+    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1)");
+    return -1;
+  }
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  builder *b = &c->b;
+  int rc = -1;
+  fp3_strbuf t = {0};
+  insn *code = calloc(MAX_INSNS, sizeof *code);
+  bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
+  int *order = calloc(MAX_NODES + 2, sizeof *order);
+  regalloc *ra = calloc(1, sizeof *ra);
+  if (!code || !bi || !order || !ra) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  /* the literal program, for the report */
+  fp3_compile_opts lit = *o;
+  lit.fold = lit.drop_zero = 0;
+  if (compile_ir(b, sc, integrator, &lit, msg, n)) goto out;
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].live && op_kind(b->nd[i].kind) && !b->nd[i].inv) c->stats.literal_body_insns++;
+  c->stats.literal_body_insns++; /* endi */
+  if (compile_ir(b, sc, integrator, o, msg, n)) goto out;
+  c->stats.no_drag = b->no_drag;
+  c->stats.no_thrust = b->no_thrust;
+
+  /* ---- body instructions: live non-invariant ops, then moves ---- */
+  int nb = 0;
+  for (int i = 0; i < b->nn; i++) {
+    node *x = &b->nd[i];
+    if (!op_kind(x->kind)) continue;
+    if (!x->live) {
+      c->stats.dead_removed++;
+      continue;
+    }
+    if (x->inv) {
+      c->stats.hoisted++;
+      continue;
+    }
+    bi[nb] = (bins){i, 0, -1, {x->a, x->b}, 0, 0, 0, 0};
+    nb++;
+  }
+  for (int w = 0; w < 2; w++) {
+    int src = b->out[w].n;
+    if (b->nd[src].kind == NK_STATE && b->nd[src].id == w) continue; /* unchanged */
+    int p = producer(bi, nb, src);
+    int taken = p >= 0 && bi[p].dest_state >= 0;
+    if (p >= 0 && !taken) {
+      bi[p].dest_state = w;
+    } else {
+      bi[nb] = (bins){src, 1, w, {src, -1}, 0, 0, 0, 0};
+      nb++;
+    }
+  }
+  if (schedule(b, o, bi, nb, order)) {
+    snprintf(msg, n, "internal: the loop body cannot be ordered (a value of the "
+                     "old state is needed after the new one)");
+    goto out;
+  }
+
+  /* ---- registers ---- */
+  ra->nregs = o->num_regs;
+  for (int i = 0; i < MAX_NODES; i++) ra->reg[i] = -1;
+  for (unsigned r = 0; r < ra->nregs; r++) ra->last_write[r] = -1000000;
+  int in_reg[FP3_IN_COUNT];
+  for (int k = 0; k < FP3_IN_COUNT; k++) in_reg[k] = -1;
+  int state_reg[2] = {-1, -1};
+  /* inputs in .in order, the state with v0 and s0 */
+  for (int k = 0; k < FP3_IN_COUNT; k++) {
+    int node_i = -1;
+    if (k == FP3_IN_V0 || k == FP3_IN_S0) {
+      state_reg[k == FP3_IN_V0 ? ST_V : ST_S] = in_reg[k] = take_reg(ra);
+      continue;
+    }
+    for (int i = 0; i < b->nn; i++)
+      if (b->nd[i].live && b->nd[i].kind == NK_IN && b->nd[i].id == k) node_i = i;
+    if (node_i >= 0) ra->reg[node_i] = in_reg[k] = take_reg(ra);
+  }
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].kind == NK_STATE) ra->reg[i] = state_reg[b->nd[i].id];
+  /* constants, then loop invariants: live for the whole run */
+  for (int pass = 0; pass < 2; pass++)
+    for (int i = 0; i < b->nn; i++) {
+      node *x = &b->nd[i];
+      if (x->live && x->inv && (pass == 0 ? x->kind == NK_CONST : op_kind(x->kind)))
+        if ((ra->reg[i] = take_reg(ra)) < 0) break;
+    }
+  /* temporaries of the body, in schedule order */
+  int last_use[MAX_NODES + 2];
+  for (int q = 0; q < nb; q++) {
+    last_use[q] = -1;
+    for (int p = 0; p < nb; p++)
+      if (data_edge(bi, order[q], order[p]) && p > last_use[q]) last_use[q] = p;
+  }
+  int ok = 1;
+  for (int q = 0; q < nb && ok; q++) {
+    bins *x = &bi[order[q]];
+    /* operands whose last reader this is free their registers first */
+    for (int p = 0; p < q; p++) {
+      bins *y = &bi[order[p]];
+      if (last_use[p] == q && y->dest_state < 0 && !y->is_mov) ra->used[ra->reg[y->node]] = 0;
+    }
+    int r;
+    if (x->dest_state >= 0) r = state_reg[x->dest_state];
+    else r = take_reg(ra);
+    if (r < 0) ok = 0;
+    else {
+      if (!x->is_mov) ra->reg[x->node] = r;
+      ra->last_write[r] = x->issue + (int)bins_latency(b, o, x);
+      if (last_use[q] < 0 && x->dest_state < 0) ra->used[r] = 0; /* never read */
+    }
+  }
+  for (int i = 0; i < b->nn && ok; i++)
+    if (b->nd[i].live && ra->reg[i] < 0) ok = 0;
+  if (!ok || state_reg[ST_V] < 0 || state_reg[ST_S] < 0) {
+    snprintf(msg, n, "the program needs more than the %u registers of a context", o->num_regs);
+    goto out;
+  }
+  unsigned regs_used = 0;
+  {
+    int seen[256] = {0};
+    for (int i = 0; i < b->nn; i++)
+      if (b->nd[i].live && ra->reg[i] >= 0 && !seen[ra->reg[i]]) {
+        seen[ra->reg[i]] = 1;
+        regs_used++;
+      }
+  }
+  c->stats.regs = regs_used;
+
+  /* ---- instructions ---- */
+  size_t ni = 0;
+  unsigned prologue = 0;
+  for (int pass = 0; pass < 2; pass++)
+    for (int i = 0; i < b->nn; i++) {
+      node *x = &b->nd[i];
+      if (!x->live || !x->inv) continue;
+      insn *in = &code[ni];
+      if (pass == 0 && x->kind == NK_CONST) {
+        *in = (insn){FP3_OP_LI, (unsigned)ra->reg[i], 0, 0, x->bits, ""};
+        snprintf(in->note, NOTE_LEN, "%s = %.9g", x->name, (double)fpref_float(x->bits));
+      } else if (pass == 1 && op_kind(x->kind)) {
+        *in = (insn){node_opc(x->kind), (unsigned)ra->reg[i], (unsigned)ra->reg[x->a],
+                     (unsigned)ra->reg[x->b], 0, ""};
+        describe(b, i, in->note, NOTE_LEN);
+        strncat(in->note, " (loop invariant)", NOTE_LEN - strlen(in->note) - 1);
+      } else {
+        continue;
+      }
+      ni++;
+      prologue++;
+    }
+  size_t body_at = ni;
+  for (int q = 0; q < nb; q++) {
+    bins *x = &bi[order[q]];
+    insn *in = &code[ni++];
+    unsigned rd = x->dest_state >= 0 ? (unsigned)state_reg[x->dest_state]
+                                     : (unsigned)ra->reg[x->node];
+    if (x->is_mov) {
+      *in = (insn){FP3_OP_MOV, rd, (unsigned)ra->reg[x->node], 0, 0, ""};
+      snprintf(in->note, NOTE_LEN, "%s = %s", x->dest_state == ST_V ? "v" : "s",
+               b->nd[x->node].name);
+    } else {
+      const node *y = &b->nd[x->node];
+      *in = (insn){node_opc(y->kind), rd, (unsigned)ra->reg[y->a], (unsigned)ra->reg[y->b], 0,
+                   ""};
+      describe(b, x->node, in->note, NOTE_LEN);
+    }
+    if (x->dest_state >= 0)
+      strncat(in->note, x->dest_state == ST_V ? " -> v" : " -> s",
+              NOTE_LEN - strlen(in->note) - 1);
+  }
+  code[ni++] = (insn){FP3_OP_ENDI, 0, 0, 0, (uint32_t)body_at, "next integration"};
+  if (ni > MAX_INSNS) {
+    snprintf(msg, n, "the program has %zu words, more than the %d of the instruction memory",
+             ni, MAX_INSNS);
+    goto out;
+  }
+  c->stats.prologue_insns = prologue;
+  c->stats.body_insns = (unsigned)(ni - body_at);
+  c->stats.body_arith = 0;
+  for (size_t k = body_at; k < ni; k++)
+    if (code[k].opc == FP3_OP_ADD || code[k].opc == FP3_OP_SUB || code[k].opc == FP3_OP_MUL)
+      c->stats.body_arith++;
+
+  /* ---- estimate, on the words ---- */
+  fp3_image est;
+  fp3_image_init(&est);
+  for (size_t k = 0; k < ni; k++)
+    est.words[k] = fp3_insn_make(code[k].opc, code[k].rd, code[k].ra, code[k].rb, code[k].imm);
+  est.n = ni;
+  fp3_estimate_cycles(&est, o, 8, &c->stats.est_cycles_first, &c->stats.est_cycles_later);
+
+  /* ---- text ---- */
+  const char *integ_desc = o->fold ? "folded" : "literal (the paper's operations)";
+  fp3_strbuf_printf(&t, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
+      scene_name ? scene_name : "scene", integrator, integ_desc,
+      o->drop_zero ? ", terms zero in the scene removed" : "");
+  fp3_strbuf_printf(&t, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
+      (double)sc->objs[0].h);
+  if (o->fold)
+    fp3_strbuf_printf(&t, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
+            ";   computed by the host in binary32 (RNE) once per object\n");
+  if (o->drop_zero && b->no_drag)
+    fp3_strbuf_printf(&t, "; removed: the drag terms (C = 0 in every object)\n");
+  if (o->drop_zero && b->no_thrust)
+    fp3_strbuf_printf(&t, "; removed: the thrust terms (T = 0 in every object)\n");
+  fp3_strbuf_printf(&t, "; loop invariants moved to the prologue: %u; dead operations removed: %u\n",
+      c->stats.hoisted, c->stats.dead_removed);
+  fp3_strbuf_printf(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
+      c->stats.body_insns, c->stats.body_arith, c->stats.literal_body_insns);
+  fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
+  fp3_strbuf_printf(&t, "; estimated cycles (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
+          ";   first integration %u, each later one %u\n",
+      o->add_latency, o->mul_latency, o->mov_latency, c->stats.est_cycles_first,
+      c->stats.est_cycles_later);
+  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
+  for (int k = 0; k < FP3_IN_COUNT; k++)
+    if (in_reg[k] >= 0) {
+      char nm_[16];
+      snprintf(nm_, sizeof nm_, "%s,", fp3_in_name(k));
+      fp3_strbuf_printf(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
+    }
+  fp3_strbuf_printf(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
+  for (size_t k = 0; k < ni; k++) {
+    const insn *x = &code[k];
+    char ops[48];
+    if (k == body_at) fp3_strbuf_printf(&t, "body:\n");
+    if (x->opc == FP3_OP_LI) snprintf(ops, sizeof ops, "r%u, 0x%08X", x->rd, (unsigned)x->imm);
+    else if (x->opc == FP3_OP_MOV) snprintf(ops, sizeof ops, "r%u, r%u", x->rd, x->ra);
+    else if (x->opc == FP3_OP_ENDI) snprintf(ops, sizeof ops, "body");
+    else snprintf(ops, sizeof ops, "r%u, r%u, r%u", x->rd, x->ra, x->rb);
+    fp3_strbuf_printf(&t, "        %-4s %-16s ; %s\n", fp3_opc_mnemonic(x->opc), ops, x->note);
+  }
+  if (t.oom) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  c->text = t.s;
+  t.s = NULL;
+  char *errs = NULL;
+  if (fp3_asm_string(c->text, "(compiled program)", &c->img, &errs)) {
+    snprintf(msg, n, "internal: the emitted program does not assemble: %s", errs ? errs : "");
+    free(errs);
+    goto out;
+  }
+  free(errs);
+  rc = 0;
+out:
+  free(t.s);
+  free(code);
+  free(bi);
+  free(order);
+  free(ra);
+  if (rc) fp3_compiled_free(c);
+  else *outp = c;
+  return rc;
+}
+
+void fp3_compiled_free(fp3_compiled *c) {
+  if (!c) return;
+  free(c->text);
+  free(c);
+}
+
+const char *fp3_compiled_text(const fp3_compiled *c) { return c->text; }
+const fp3_image *fp3_compiled_image(const fp3_compiled *c) { return &c->img; }
+const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c) { return &c->stats; }
+
+/* ---- golden model -------------------------------------------------------- */
+
+static float eval(const builder *b, const float *val, int i) {
+  const node *x = &b->nd[i];
+  const float p = val[x->a], q = val[x->b];
+  float r;
+  switch (x->kind) {
+  case NK_ADD: r = p + q; break;
+  case NK_SUB: r = p - q; break;
+  default: r = p * q; break;
+  }
+  return r;
+}
+
+static void golden_start(void *ctx, const fp3_ship_params *p) {
+  fp3_compiled *c = ctx;
+  const builder *b = &c->b;
+  fp3_in_values(p, c->in);
+  for (int i = 0; i < b->nn; i++) {
+    const node *x = &b->nd[i];
+    if (x->kind == NK_IN) c->val[i] = c->in[x->id];
+    else if (x->kind == NK_CONST) c->val[i] = fpref_float(x->bits);
+    else if (x->kind == NK_STATE) c->val[i] = x->id == ST_V ? p->v0 : p->s0;
+    else if (x->inv && x->live) c->val[i] = eval(b, c->val, i); /* the prologue */
+  }
+}
+
+static void golden_step(void *ctx, float *v, float *s) {
+  fp3_compiled *c = ctx;
+  const builder *b = &c->b;
+  for (int i = 0; i < b->nn; i++)
+    if (op_kind(b->nd[i].kind) && b->nd[i].live && !b->nd[i].inv)
+      c->val[i] = eval(b, c->val, i);
+  const float nv = c->val[b->out[ST_V].n], ns = c->val[b->out[ST_S].n];
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].kind == NK_STATE) c->val[i] = b->nd[i].id == ST_V ? nv : ns;
+  *v = nv;
+  *s = ns;
+}
+
+fp3_golden_ref fp3_compiled_golden(fp3_compiled *c) {
+  fp3_golden_ref g = {c, golden_start, golden_step};
+  return g;
+}
+
+/* ---- output file ----------------------------------------------------------- */
+
+int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n) {
+  size_t len = strlen(path);
+  char *tmp = malloc(len + 16);
+  if (!tmp) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  snprintf(tmp, len + 16, "%s.tmpXXXXXX", path);
+  int fd = mkstemp(tmp);
+  if (fd < 0) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno));
+    free(tmp);
+    return -1;
+  }
+  mode_t um = umask(0); /* mkstemp makes 0600: give the file the usual mode */
+  umask(um);
+  fchmod(fd, 0666 & ~um);
+  FILE *f = fdopen(fd, "w");
+  int bad = !f || fputs(c->text, f) < 0;
+  if (f) bad |= fclose(f) != 0;
+  else close(fd);
+  if (!bad && rename(tmp, path) != 0) bad = 1;
+  if (bad) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno ? errno : EIO));
+    unlink(tmp);
+    free(tmp);
+    return -1;
+  }
+  free(tmp);
+  return 0;
+}
+
+/* ---- cycle estimate ----------------------------------------------------------- */
+
+unsigned fp3_image_body_insns(const fp3_image *img) {
+  for (size_t k = img->n; k-- > 0;)
+    if (fp3_insn_opc(img->words[k]) == FP3_OP_ENDI) {
+      size_t loop = fp3_insn_imm(img->words[k]);
+      return loop <= k ? (unsigned)(k - loop + 1) : 0;
+    }
+  return 0;
+}
+
+int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
+                        unsigned iterations, unsigned *first, unsigned *later) {
+  size_t endi_at = img->n;
+  for (size_t k = 0; k < img->n; k++)
+    if (fp3_insn_opc(img->words[k]) == FP3_OP_ENDI) endi_at = k;
+  if (endi_at == img->n || iterations < 2) return -1;
+  size_t loop = fp3_insn_imm(img->words[endi_at]);
+  long ready[256] = {0};
+  long t = 0, prev_endi = -1;
+  unsigned it = 0;
+  for (size_t pc = 0; it < iterations && pc < img->n;) {
+    uint64_t w = img->words[pc];
+    unsigned opc = fp3_insn_opc(w), unit = fp3_opc_unit(opc);
+    int uses = fp3_opc_uses(opc);
+    long at = t;
+    if (uses < 0) return -1;
+    if ((uses & FP3_USES_RA) && ready[fp3_insn_ra(w)] > at) at = ready[fp3_insn_ra(w)];
+    if ((uses & FP3_USES_RB) && ready[fp3_insn_rb(w)] > at) at = ready[fp3_insn_rb(w)];
+    if ((uses & FP3_USES_RD) && ready[fp3_insn_rd(w)] > at) at = ready[fp3_insn_rd(w)];
+    if (uses & FP3_USES_RD) ready[fp3_insn_rd(w)] = at + (long)unit_latency(lat, unit);
+    t = at + 1;
+    if (opc == FP3_OP_ENDI) {
+      it++;
+      if (it == 1) *first = (unsigned)(at + 1);
+      else *later = (unsigned)(at - prev_endi);
+      prev_endi = at;
+      pc = loop;
+    } else {
+      pc++;
+    }
+  }
+  return 0;
+}

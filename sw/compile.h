@@ -1,0 +1,129 @@
+/*
+ * compile.h -- the scene compiler (`fp3 compile`): from a scene (objects.h)
+ * and an integrator, an FP3 program that computes only what the scene
+ * needs, and its golden model.
+ *
+ * The compiler builds a small expression IR: a DAG of binary32 add, sub
+ * and mul over per-object host inputs (`.in`, image.h), constants (`li`)
+ * and the loop-carried state v, s.  Then:
+ *
+ *  - folding (opts.fold): the integrator is written with the folded host
+ *    inputs hmT = (h*minv)*T and hmC = (h*minv)*C, so h f(x) = hmT - hmC*x
+ *    costs 2 operations instead of 4, and RK4's weighted sum is summed as
+ *    (k1 + k4) + 2 (k2 + k3).  A folded program is a different rounding
+ *    sequence from the literal one: its own golden model is its reference;
+ *  - zero terms (opts.drop_zero): when C == 0 in every object the drag
+ *    products and subtractions go, when T == 0 in every object the thrust
+ *    terms go (T - x becomes -x, and the negation is carried into the
+ *    consumers: a + (-b) = a - b, (-a) b = -(a b), exact in RNE and RTZ).
+ *    For finite values this is the same rounding sequence except for the
+ *    sign of an exactly zero intermediate (T = -0, or a sum of two
+ *    negated terms that cancels to zero);
+ *  - common subexpressions are shared, operations on inputs and constants
+ *    alone (loop invariants) move to the prologue (run once per run, in
+ *    the cores' rounding), and operations nothing reads are removed (dead
+ *    code elimination) -- all three exact;
+ *  - the loop body is list-scheduled for in-order single issue (a
+ *    dependent instruction issues `latency` cycles after its producer;
+ *    priority: the longest latency path to the end of the integration),
+ *    registers are allocated within num_regs, least recently written
+ *    first (a register written again soon after its previous write would
+ *    stall on WAW), and assembly text is emitted.
+ *
+ * Integrators: euler, symeuler, rk2, rk4 (integrators.h).  With fold = 0
+ * and drop_zero = 0 the compiled program performs exactly the operations
+ * of programs/ship_<name>.s, so its golden model equals the integrator's
+ * (sw/integrators.c) bit for bit.
+ */
+#ifndef FP3_COMPILE_H
+#define FP3_COMPILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "image.h"
+#include "objects.h"
+
+/* Compiler options. */
+typedef struct fp3_compile_opts {
+  int fold;              /* 1: folded host inputs, reassociated sums      */
+  int drop_zero;         /* 1: remove terms zero in every object           */
+  unsigned add_latency;  /* cycles, add/sub issue to dependent issue       */
+  unsigned mul_latency;  /* cycles, mul issue to dependent issue           */
+  unsigned mov_latency;  /* cycles, li/mov issue to dependent issue        */
+  unsigned num_regs;     /* registers per context                         */
+} fp3_compile_opts;
+
+/* fold = drop_zero = 1, latencies FP3_DEFAULT_ADD_LATENCY and
+ * FP3_DEFAULT_MUL_LATENCY (fp3_isa.h), moves 1, FP3_DEFAULT_NUM_REGS. */
+void fp3_compile_defaults(fp3_compile_opts *o);
+
+/* What a compilation produced (instruction counts are static: words of
+ * the program; cycles are the scheduler's estimate, an in-order issue
+ * model with RAW and WAW interlocks and the option latencies). */
+typedef struct fp3_compile_stats {
+  unsigned body_insns;       /* per integration, endi included            */
+  unsigned body_arith;       /* add/sub/mul per integration               */
+  unsigned prologue_insns;   /* li and loop invariants, run once          */
+  unsigned literal_body_insns; /* the same integrator with fold = 0 and
+                                  drop_zero = 0 (the paper's program)     */
+  unsigned dead_removed;     /* operations built but read by nothing      */
+  unsigned hoisted;          /* loop-invariant operations in the prologue */
+  unsigned regs;             /* registers used                            */
+  unsigned est_cycles_first; /* first integration, prologue included      */
+  unsigned est_cycles_later; /* each later integration (steady state)     */
+  int no_drag;               /* C == 0 in every object                    */
+  int no_thrust;             /* T == 0 in every object                    */
+} fp3_compile_stats;
+
+typedef struct fp3_compiled fp3_compiled;
+
+/* Space-separated names of the integrators the compiler knows. */
+const char *fp3_compile_integrators(void);
+
+/* 1 if the compiler knows integrator `name`, else 0. */
+int fp3_compile_knows(const char *name);
+
+/* Compile scene sc for integrator `integrator`; scene_name names the scene
+ * in the program's header comment.  Returns 0 and *out (free with
+ * fp3_compiled_free), or -1 with a message: unknown integrator, empty
+ * scene, more registers than num_regs, a body longer than the instruction
+ * memory. */
+int fp3_compile(const fp3_scene *sc, const char *integrator,
+                const fp3_compile_opts *opts, const char *scene_name,
+                fp3_compiled **out, char *msg, size_t n);
+
+void fp3_compiled_free(fp3_compiled *c);
+
+/* The assembly text (NUL-terminated, owned by c). */
+const char *fp3_compiled_text(const fp3_compiled *c);
+
+/* The assembled program (the text through fp3_asm_string). */
+const fp3_image *fp3_compiled_image(const fp3_compiled *c);
+
+const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c);
+
+/* The golden model of the compiled program: the IR evaluated in C
+ * binary32, one operation per node, independent of the schedule, the
+ * registers and the engines.  Its state lives in c (one object at a time). */
+fp3_golden_ref fp3_compiled_golden(fp3_compiled *c);
+
+/* Write the text to path atomically (a temporary file in the same
+ * directory, then rename): on error no file is left.  0 or -1 with a
+ * message. */
+int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n);
+
+/* Estimated cycles of an image on an in-order single-issue FP3: the
+ * prologue, then the loop body (from the target of the last endi) for
+ * `iterations` >= 2 integrations; dependent issue `latency` cycles after
+ * the producer, a destination written again only when its previous write
+ * has landed.  *first: cycles to the end of the first integration, *later:
+ * of the last one.  Returns 0, or -1 for an image without endi. */
+int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
+                        unsigned iterations, unsigned *first, unsigned *later);
+
+/* Instructions per integration of an image: the words from the target of
+ * its last endi through that endi (0 without endi). */
+unsigned fp3_image_body_insns(const fp3_image *img);
+
+#endif /* FP3_COMPILE_H */

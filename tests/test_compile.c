@@ -1,0 +1,372 @@
+/*
+ * test_compile.c -- the scene compiler (sw/compile.c):
+ *
+ *  - exact instruction counts: rk4 literal = the paper's program, folded,
+ *    no drag, no thrust; folding never adds instructions;
+ *  - dead code elimination removes what nothing reads;
+ *  - the literal IR (no folding, no zero removal) is the integrator's
+ *    golden model (sw/integrators.c) bit for bit, and removing zero terms
+ *    keeps it so on scenes without exact zeros;
+ *  - the IR golden model equals the ISS bit for bit, every object after
+ *    every integration, for random scenes and every integrator and option;
+ *    and the RTL for a small scene, whose measured cycles per integration
+ *    equal the scheduler's estimate for the engine's latencies;
+ *  - the folded inputs are the host's binary32 products;
+ *  - the emitted text assembles to the compiled image; bad input fails.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "asm.h"
+#include "compile.h"
+#include "engine.h"
+#include "fpref.h"
+#include "integrators.h"
+#include "objects.h"
+
+static const char *const integrators[] = {"euler", "symeuler", "rk2", "rk4"};
+#define N_INTEG (sizeof integrators / sizeof integrators[0])
+
+/* Random scene `seed` of n objects; drag 0: every C = 0, thrust 0: every
+ * T = 0. */
+static void scene(uint64_t seed, size_t n, int drag, int thrust, fp3_scene *sc) {
+  assert_int_equal(fp3_scene_generate(seed, n, 1.0f / 60.0f, sc), 0);
+  for (size_t i = 0; i < n; i++) {
+    if (!drag) sc->objs[i].C = 0.0f;
+    if (!thrust) sc->objs[i].T = 0.0f;
+    if (sc->objs[i].T == 0.0f && thrust) sc->objs[i].T = 1.0f;
+  }
+}
+
+static fp3_compiled *compile(const fp3_scene *sc, const char *ig, int fold, int drop_zero) {
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  o.fold = fold;
+  o.drop_zero = drop_zero;
+  fp3_compiled *c = NULL;
+  char msg[300];
+  if (fp3_compile(sc, ig, &o, "test", &c, msg, sizeof msg)) fail_msg("%s: %s", ig, msg);
+  return c;
+}
+
+static unsigned body_insns(const fp3_scene *sc, const char *ig, int fold, int drop_zero) {
+  fp3_compiled *c = compile(sc, ig, fold, drop_zero);
+  unsigned k = fp3_compiled_stats(c)->body_insns;
+  assert_int_equal(k, fp3_image_body_insns(fp3_compiled_image(c)));
+  fp3_compiled_free(c);
+  return k;
+}
+
+/* ---- instruction counts ------------------------------------------------------ */
+
+static void test_counts_rk4(void **state) {
+  (void)state;
+  fp3_scene all, nodrag, nothrust;
+  scene(1, 16, 1, 1, &all);
+  scene(2, 16, 0, 1, &nodrag);
+  scene(3, 16, 1, 0, &nothrust);
+  /* the literal program is the paper's: the body of programs/ship_rk4.s */
+  fp3_image ship;
+  char *errs = NULL;
+  assert_int_equal(fp3_asm_file("programs/ship_rk4.s", &ship, &errs), 0);
+  free(errs);
+  assert_int_equal(body_insns(&all, "rk4", 0, 0), fp3_image_body_insns(&ship));
+  assert_int_equal(body_insns(&all, "rk4", 0, 0), 31);
+  /* folded: h f(x) = hmT - hmC x (2 instead of 4 per stage), the sum as
+   * (k1 + k4) + 2 (k2 + k3): 21 arithmetic + endi */
+  assert_int_equal(body_insns(&all, "rk4", 1, 1), 22);
+  assert_int_equal(body_insns(&all, "rk4", 1, 0), 22); /* nothing zero */
+  /* no drag: every k = hmT, the sum is loop invariant: v += dv; s += h v */
+  assert_int_equal(body_insns(&nodrag, "rk4", 1, 1), 4);
+  assert_int_equal(body_insns(&nodrag, "rk4", 0, 1), 4);
+  /* no thrust: the four subtractions go, negations fold into consumers */
+  assert_int_equal(body_insns(&nothrust, "rk4", 1, 1), 18);
+  assert_int_equal(body_insns(&nothrust, "rk4", 0, 1), 27);
+  /* the same scenes keeping zero terms: as the general program */
+  assert_int_equal(body_insns(&nodrag, "rk4", 1, 0), 22);
+  assert_int_equal(body_insns(&nothrust, "rk4", 0, 0), 31);
+  fp3_scene_free(&all);
+  fp3_scene_free(&nodrag);
+  fp3_scene_free(&nothrust);
+}
+
+/* Folding and zero removal never cost instructions or estimated cycles,
+ * for any integrator. */
+static void test_folding_never_worse(void **state) {
+  (void)state;
+  for (int kind = 0; kind < 3; kind++) {
+    fp3_scene sc;
+    scene(10 + (uint64_t)kind, 8, kind != 1, kind != 2, &sc);
+    for (size_t i = 0; i < N_INTEG; i++) {
+      fp3_compiled *lit = compile(&sc, integrators[i], 0, 0);
+      fp3_compiled *fold = compile(&sc, integrators[i], 1, 1);
+      const fp3_compile_stats *a = fp3_compiled_stats(lit), *b = fp3_compiled_stats(fold);
+      assert_true(b->body_insns <= a->body_insns);
+      assert_true(b->est_cycles_later <= a->est_cycles_later);
+      assert_int_equal(a->literal_body_insns, a->body_insns);
+      assert_int_equal(b->literal_body_insns, a->body_insns);
+      fp3_compiled_free(lit);
+      fp3_compiled_free(fold);
+    }
+    fp3_scene_free(&sc);
+  }
+}
+
+/* ---- dead code elimination ------------------------------------------------------- */
+
+static void test_dce(void **state) {
+  (void)state;
+  fp3_scene nodrag;
+  scene(4, 4, 0, 1, &nodrag);
+  /* rk4 builds the trial velocities vt2..vt4; without drag no force reads
+   * them: removed */
+  fp3_compiled *c = compile(&nodrag, "rk4", 1, 1);
+  assert_true(fp3_compiled_stats(c)->dead_removed > 0);
+  assert_null(strstr(fp3_compiled_text(c), "vt2"));
+  assert_null(strstr(fp3_compiled_text(c), "vt4"));
+  fp3_compiled_free(c);
+  /* with drag everything is read */
+  fp3_scene all;
+  scene(5, 4, 1, 1, &all);
+  c = compile(&all, "rk4", 1, 1);
+  assert_int_equal(fp3_compiled_stats(c)->dead_removed, 0);
+  assert_non_null(strstr(fp3_compiled_text(c), "vt4"));
+  fp3_compiled_free(c);
+  fp3_scene_free(&nodrag);
+  fp3_scene_free(&all);
+}
+
+/* ---- golden models ------------------------------------------------------------- */
+
+/* The IR golden model of (fold, drop_zero) against the integrator's own,
+ * object by object, `steps` integrations. */
+static void expect_ir_is_integrator(const fp3_scene *sc, const char *ig, int drop_zero,
+                                    uint32_t steps) {
+  fp3_compiled *c = compile(sc, ig, 0, drop_zero);
+  fp3_golden_ref ir = fp3_compiled_golden(c);
+  fp3_integ_golden store;
+  fp3_golden_ref ref = fp3_golden_of_integrator(&store, fp3_integrator_find(ig));
+  for (size_t i = 0; i < sc->n; i++) {
+    ir.start(ir.ctx, &sc->objs[i]);
+    ref.start(ref.ctx, &sc->objs[i]);
+    for (uint32_t k = 1; k <= steps; k++) {
+      float v1, s1, v2, s2;
+      ir.step(ir.ctx, &v1, &s1);
+      ref.step(ref.ctx, &v2, &s2);
+      if (fpref_bits(v1) != fpref_bits(v2) || fpref_bits(s1) != fpref_bits(s2))
+        fail_msg("%s, object %zu, integration %u: IR v %a s %a, integrator v %a s %a", ig, i,
+                 k, (double)v1, (double)s1, (double)v2, (double)s2);
+    }
+  }
+  fp3_compiled_free(c);
+}
+
+static void test_literal_ir_is_integrator(void **state) {
+  (void)state;
+  fp3_scene all, nodrag;
+  scene(6, 12, 1, 1, &all);
+  scene(7, 12, 0, 1, &nodrag);
+  for (size_t i = 0; i < N_INTEG; i++) {
+    expect_ir_is_integrator(&all, integrators[i], 0, 2000);
+    expect_ir_is_integrator(&all, integrators[i], 1, 2000);
+    /* the drag terms removed: the same values (T != -0, v finite) */
+    expect_ir_is_integrator(&nodrag, integrators[i], 1, 2000);
+  }
+  fp3_scene_free(&all);
+  fp3_scene_free(&nodrag);
+}
+
+/* A folded program is a different rounding sequence: it must differ from
+ * the literal one somewhere (else the test above proves nothing about
+ * folding), yet stay close. */
+static void test_folded_differs(void **state) {
+  (void)state;
+  fp3_scene sc;
+  scene(8, 16, 1, 1, &sc);
+  fp3_compiled *lit = compile(&sc, "rk4", 0, 0), *fold = compile(&sc, "rk4", 1, 1);
+  fp3_golden_ref a = fp3_compiled_golden(lit), b = fp3_compiled_golden(fold);
+  int differ = 0;
+  for (size_t i = 0; i < sc.n; i++) {
+    a.start(a.ctx, &sc.objs[i]);
+    b.start(b.ctx, &sc.objs[i]);
+    float v1 = 0, s1 = 0, v2 = 0, s2 = 0;
+    for (int k = 0; k < 500; k++) {
+      a.step(a.ctx, &v1, &s1);
+      b.step(b.ctx, &v2, &s2);
+      differ |= fpref_bits(v1) != fpref_bits(v2);
+    }
+    assert_true(fabsf(v1 - v2) <= 1e-4f * (1.0f + fabsf(v1)));
+  }
+  assert_true(differ);
+  fp3_compiled_free(lit);
+  fp3_compiled_free(fold);
+  fp3_scene_free(&sc);
+}
+
+/* ---- engines --------------------------------------------------------------------- */
+
+static void run_on(fp3_engine *e, fp3_compiled *c, const fp3_scene *sc, uint32_t steps,
+                   fp3_objects_result *res) {
+  fp3_golden_ref g = fp3_compiled_golden(c);
+  char msg[300];
+  if (fp3_run_objects(e, fp3_compiled_image(c), sc, steps, FPREF_IEEE, &g, res, msg,
+                      sizeof msg))
+    fail_msg("%s", msg);
+  if (res->mismatches)
+    fail_msg("%s: %llu mismatches, first object %zu integration %u", e->ops->name,
+             (unsigned long long)res->mismatches, res->first_object, res->first_step);
+  assert_int_equal(res->error, FP3_ERR_NONE);
+}
+
+static void test_ir_equals_iss(void **state) {
+  (void)state;
+  fp3_engine *iss = fp3_engine_iss_new();
+  assert_non_null(iss);
+  for (int kind = 0; kind < 4; kind++) { /* all, no drag, no thrust, neither */
+    fp3_scene sc;
+    scene(20 + (uint64_t)kind, 10, kind != 1 && kind != 3, kind != 2 && kind != 3, &sc);
+    for (size_t i = 0; i < N_INTEG; i++)
+      for (int opt = 0; opt < 3; opt++) {
+        fp3_compiled *c = compile(&sc, integrators[i], opt != 0, opt == 2);
+        fp3_objects_result res;
+        run_on(iss, c, &sc, 1000, &res);
+        fp3_objects_result_free(&res);
+        fp3_compiled_free(c);
+      }
+    fp3_scene_free(&sc);
+  }
+  fp3_engine_free(iss);
+}
+
+/* On the RTL, compiled for the engine's own latencies: bit-exact, and one
+ * object's cycles per later integration are the scheduler's estimate. */
+static void test_rtl(void **state) {
+  (void)state;
+  fp3_engine *rtl = fp3_engine_rtl_new(NULL);
+  assert_non_null(rtl);
+  fp3_scene sc, one;
+  scene(30, 12, 1, 1, &sc);
+  scene(31, 1, 1, 1, &one);
+  for (size_t i = 0; i < N_INTEG; i++)
+    for (int fold = 0; fold < 2; fold++) {
+      fp3_compile_opts o;
+      fp3_compile_defaults(&o);
+      o.fold = o.drop_zero = fold;
+      o.add_latency = rtl->config.add_latency;
+      o.mul_latency = rtl->config.mul_latency;
+      fp3_compiled *c = NULL;
+      char msg[300];
+      if (fp3_compile(&sc, integrators[i], &o, "t", &c, msg, sizeof msg)) fail_msg("%s", msg);
+      fp3_objects_result res, r1, r2;
+      run_on(rtl, c, &sc, 300, &res);
+      run_on(rtl, c, &one, 20, &r1);
+      run_on(rtl, c, &one, 40, &r2);
+      assert_int_equal((r2.cycles - r1.cycles) / 20, fp3_compiled_stats(c)->est_cycles_later);
+      assert_int_equal((r2.cycles - r1.cycles) % 20, 0);
+      fp3_objects_result_free(&res);
+      fp3_objects_result_free(&r1);
+      fp3_objects_result_free(&r2);
+      fp3_compiled_free(c);
+    }
+  fp3_scene_free(&sc);
+  fp3_scene_free(&one);
+  fp3_engine_free(rtl);
+}
+
+/* ---- inputs, text, errors -------------------------------------------------------- */
+
+static void test_folded_inputs(void **state) {
+  (void)state;
+  fp3_scene sc;
+  scene(40, 50, 1, 1, &sc);
+  fp3_compiled *c = compile(&sc, "rk4", 1, 1);
+  const fp3_image *img = fp3_compiled_image(c);
+  assert_true(img->in_reg[FP3_IN_HMT] >= 0 && img->in_reg[FP3_IN_HMC] >= 0);
+  assert_int_equal(img->in_reg[FP3_IN_MINV], -1); /* folded away */
+  for (size_t i = 0; i < sc.n; i++) {
+    const fp3_ship_params *p = &sc.objs[i];
+    volatile float minv = 1.0f / p->m;
+    volatile float hm = p->h * minv;
+    volatile float hmT = hm * p->T, hmC = hm * p->C;
+    float val[FP3_IN_COUNT];
+    fp3_in_values(p, val);
+    assert_int_equal(fpref_bits(val[FP3_IN_HM]), fpref_bits(hm));
+    assert_int_equal(fpref_bits(val[FP3_IN_HMT]), fpref_bits(hmT));
+    assert_int_equal(fpref_bits(val[FP3_IN_HMC]), fpref_bits(hmC));
+    uint32_t regs[FP3_DEFAULT_NUM_REGS] = {0};
+    fp3_in_registers(img, p, regs);
+    assert_int_equal(regs[img->in_reg[FP3_IN_HMT]], fpref_bits(hmT));
+    assert_int_equal(regs[img->in_reg[FP3_IN_HMC]], fpref_bits(hmC));
+    assert_int_equal(regs[img->in_reg[FP3_IN_V0]], fpref_bits(p->v0));
+  }
+  fp3_compiled_free(c);
+  fp3_scene_free(&sc);
+}
+
+static void test_text_assembles(void **state) {
+  (void)state;
+  fp3_scene sc;
+  scene(41, 3, 1, 1, &sc);
+  for (size_t i = 0; i < N_INTEG; i++) {
+    fp3_compiled *c = compile(&sc, integrators[i], 1, 1);
+    fp3_image img;
+    char *errs = NULL;
+    assert_int_equal(fp3_asm_string(fp3_compiled_text(c), "t.s", &img, &errs), 0);
+    free(errs);
+    const fp3_image *ci = fp3_compiled_image(c);
+    assert_int_equal(img.n, ci->n);
+    assert_memory_equal(img.words, ci->words, img.n * sizeof img.words[0]);
+    assert_memory_equal(img.in_reg, ci->in_reg, sizeof img.in_reg);
+    char msg[200];
+    assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), 0);
+    assert_non_null(strstr(fp3_compiled_text(c), "instructions per integration"));
+    fp3_compiled_free(c);
+  }
+  fp3_scene_free(&sc);
+}
+
+static void test_errors(void **state) {
+  (void)state;
+  fp3_scene sc;
+  scene(42, 3, 1, 1, &sc);
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  fp3_compiled *c = NULL;
+  char msg[300];
+  assert_int_equal(fp3_compile(&sc, "leapfrog", &o, "t", &c, msg, sizeof msg), -1);
+  assert_null(c);
+  assert_non_null(strstr(msg, "unknown integrator 'leapfrog'"));
+  assert_false(fp3_compile_knows("verlet"));
+  assert_true(fp3_compile_knows("rk4"));
+  o.num_regs = 8; /* rk4 needs more */
+  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "registers"));
+  fp3_compile_defaults(&o);
+  fp3_scene empty = {NULL, 0};
+  assert_int_equal(fp3_compile(&empty, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  fp3_scene_free(&sc);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_counts_rk4),
+      cmocka_unit_test(test_folding_never_worse),
+      cmocka_unit_test(test_dce),
+      cmocka_unit_test(test_literal_ir_is_integrator),
+      cmocka_unit_test(test_folded_differs),
+      cmocka_unit_test(test_folded_inputs),
+      cmocka_unit_test(test_text_assembles),
+      cmocka_unit_test(test_errors),
+      cmocka_unit_test(test_ir_equals_iss),
+      cmocka_unit_test(test_rtl),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
