@@ -39,7 +39,7 @@ static void usage(FILE *f) {
           "  --no-fold        no folded inputs: the integrator's literal operations\n"
           "  --keep-zero      keep terms that are zero in the whole scene\n"
           "  --literal        both: the operations of programs/ship_I.s\n"
-          "  --add-latency N, --mul-latency N   scheduler distances in cycles\n"
+          "  --add-latency N, --mul-latency N   core latencies (ADD_LATENCY, MUL_LATENCY) to schedule for\n"
           "                   (default %u and %u, sw/fp3_isa.h)\n"
           "  --json           the report as one JSON object on standard output\n"
           "                   (with -o only)\n"

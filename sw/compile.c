@@ -301,11 +301,14 @@ struct fp3_compiled {
   float in[FP3_IN_COUNT];
 };
 
+/* Cycles from the issue of an instruction of `unit` to the issue of a
+ * dependent one: the register file's read stage plus the unit's latency
+ * (fp3_isa.h FP3_READ_CYCLES). */
 static unsigned unit_latency(const fp3_compile_opts *o, unsigned unit) {
   switch (unit) {
-  case FP3_UNIT_ADD: return o->add_latency;
-  case FP3_UNIT_MUL: return o->mul_latency;
-  case FP3_UNIT_MOV: return o->mov_latency;
+  case FP3_UNIT_ADD: return FP3_READ_CYCLES + o->add_latency;
+  case FP3_UNIT_MUL: return FP3_READ_CYCLES + o->mul_latency;
+  case FP3_UNIT_MOV: return FP3_READ_CYCLES + o->mov_latency;
   default: return 1;
   }
 }
@@ -315,7 +318,7 @@ static unsigned node_opc(int kind) {
 }
 
 static unsigned bins_latency(const builder *b, const fp3_compile_opts *o, const bins *x) {
-  if (x->is_mov) return o->mov_latency;
+  if (x->is_mov) return unit_latency(o, FP3_UNIT_MOV);
   return unit_latency(o, fp3_opc_unit(node_opc(b->nd[x->node].kind)));
 }
 
@@ -387,7 +390,7 @@ static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int n
     bi[best].placed = 1;
     bi[best].issue = best_at;
     order[placed] = best;
-    cycle = best_at + 1;
+    cycle = best_at + FP3_ISSUE_SPACING;
   }
   return 0;
 }
@@ -690,8 +693,8 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
   fp3_strbuf_printf(&t, "; estimated cycles (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
           ";   first integration %u, each later one %u\n",
-      o->add_latency, o->mul_latency, o->mov_latency, c->stats.est_cycles_first,
-      c->stats.est_cycles_later);
+      unit_latency(o, FP3_UNIT_ADD), unit_latency(o, FP3_UNIT_MUL), unit_latency(o, FP3_UNIT_MOV),
+      c->stats.est_cycles_first, c->stats.est_cycles_later);
   fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
   for (int k = 0; k < FP3_IN_COUNT; k++)
     if (in_reg[k] >= 0) {
@@ -843,7 +846,7 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
   if (endi_at == img->n || iterations < 2) return -1;
   size_t loop = fp3_insn_imm(img->words[endi_at]);
   long ready[256] = {0};
-  long t = 0, prev_endi = -1;
+  long t = FP3_START_CYCLES, prev_endi = -1;
   unsigned it = 0;
   for (size_t pc = 0; it < iterations && pc < img->n;) {
     uint64_t w = img->words[pc];
@@ -855,7 +858,7 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
     if ((uses & FP3_USES_RB) && ready[fp3_insn_rb(w)] > at) at = ready[fp3_insn_rb(w)];
     if ((uses & FP3_USES_RD) && ready[fp3_insn_rd(w)] > at) at = ready[fp3_insn_rd(w)];
     if (uses & FP3_USES_RD) ready[fp3_insn_rd(w)] = at + (long)unit_latency(lat, unit);
-    t = at + 1;
+    t = at + FP3_ISSUE_SPACING;
     if (opc == FP3_OP_ENDI) {
       it++;
       if (it == 1) *first = (unsigned)(at + 1);

@@ -24,7 +24,8 @@
  *    the cores' rounding), and operations nothing reads are removed (dead
  *    code elimination) -- all three exact;
  *  - the loop body is list-scheduled for in-order single issue (a
- *    dependent instruction issues `latency` cycles after its producer;
+ *    dependent instruction issues FP3_READ_CYCLES + `latency` cycles
+ *    after its producer, one context every FP3_ISSUE_SPACING cycles;
  *    priority: the longest latency path to the end of the integration),
  *    registers are allocated within num_regs, least recently written
  *    first (a register written again soon after its previous write would
@@ -48,9 +49,9 @@
 typedef struct fp3_compile_opts {
   int fold;              /* 1: folded host inputs, reassociated sums      */
   int drop_zero;         /* 1: remove terms zero in every object           */
-  unsigned add_latency;  /* cycles, add/sub issue to dependent issue       */
-  unsigned mul_latency;  /* cycles, mul issue to dependent issue           */
-  unsigned mov_latency;  /* cycles, li/mov issue to dependent issue        */
+  unsigned add_latency;  /* add/sub core latency, cycles (ADD_LATENCY)     */
+  unsigned mul_latency;  /* mul core latency, cycles (MUL_LATENCY)         */
+  unsigned mov_latency;  /* move path latency, cycles (1)                  */
   unsigned num_regs;     /* registers per context                         */
 } fp3_compile_opts;
 
@@ -115,8 +116,9 @@ int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_
 
 /* Estimated cycles of an image on an in-order single-issue FP3: the
  * prologue, then the loop body (from the target of the last endi) for
- * `iterations` >= 2 integrations; dependent issue `latency` cycles after
- * the producer, a destination written again only when its previous write
+ * `iterations` >= 2 integrations; the first issue FP3_START_CYCLES after
+ * START, one issue every FP3_ISSUE_SPACING cycles at most, dependent issue
+ * FP3_READ_CYCLES + `latency` cycles after the producer, a destination written again only when its previous write
  * has landed.  *first: cycles to the end of the first integration, *later:
  * of the last one.  Returns 0, or -1 for an image without endi. */
 int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,

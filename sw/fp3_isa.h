@@ -56,6 +56,10 @@
  * its queue); two or more contexts issue every cycle between them. */
 #define FP3_ISSUE_SPACING 2
 
+/* Cycles from START to the first issue: the first instruction is
+ * fetched, lands in its context's queue, and is found ready. */
+#define FP3_START_CYCLES 3
+
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
  *
