@@ -13,6 +13,9 @@
 //                producer, thanks to the register-file bypass)
 //   MUL_LATENCY  the same for fp_mul
 //   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
+//   HAS_ADD, HAS_MUL  0: that core is not built (its port never writes);
+//   HAS_SUB      0: the adder's subtract input is tied off (the scheduler
+//                rejects the instructions these leave without a unit)
 //   XW           width of the destination tag ({context, register})
 // Ports
 //   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, rd_i,
@@ -28,6 +31,9 @@ module fp3_arith #(
   parameter integer MUL_LATENCY = 3,
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
+  parameter integer HAS_ADD     = 1,
+  parameter integer HAS_SUB     = 1,
+  parameter integer HAS_MUL     = 1,
   parameter integer XW          = 5
 ) (
   input  wire          clk_i,
@@ -58,23 +64,31 @@ module fp3_arith #(
 );
 `include "fp3_isa.vh"
 
-  wire add_go = valid_i && unit_i == UNIT_ADD;
-  wire mul_go = valid_i && unit_i == UNIT_MUL;
+  wire add_go = valid_i && unit_i == UNIT_ADD && HAS_ADD != 0;
+  wire mul_go = valid_i && unit_i == UNIT_MUL && HAS_MUL != 0;
   wire mov_go = valid_i && unit_i == UNIT_MOV;
 
   // ---- add/sub core and its tag line ---------------------------------------
   wire add_core_valid;
-  fp_add #(.LATENCY(ADD_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_add (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (add_go),
-    .sub_i   (sub_i),
-    .a_i     (a_i),
-    .b_i     (b_i),
-    .valid_o (add_core_valid),
-    .y_o     (add_data_o),
-    .flags_o (add_flags_o)
-  );
+  generate
+    if (HAS_ADD != 0) begin : g_add
+      fp_add #(.LATENCY(ADD_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_add (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (add_go),
+        .sub_i   (HAS_SUB != 0 && sub_i),
+        .a_i     (a_i),
+        .b_i     (b_i),
+        .valid_o (add_core_valid),
+        .y_o     (add_data_o),
+        .flags_o (add_flags_o)
+      );
+    end else begin : g_no_add
+      assign add_core_valid = 1'b0;
+      assign add_data_o     = 32'd0;
+      assign add_flags_o    = 5'd0;
+    end
+  endgenerate
   // The tag line is split one stage before its end: the tag there is the
   // register written back in the next cycle (add_next_*), which lets the
   // scheduler decide one cycle ahead.
@@ -97,16 +111,24 @@ module fp3_arith #(
 
   // ---- mul core and its tag line -------------------------------------------
   wire mul_core_valid;
-  fp_mul #(.LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_mul (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (mul_go),
-    .a_i     (a_i),
-    .b_i     (b_i),
-    .valid_o (mul_core_valid),
-    .y_o     (mul_data_o),
-    .flags_o (mul_flags_o)
-  );
+  generate
+    if (HAS_MUL != 0) begin : g_mul
+      fp_mul #(.LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_mul (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (mul_go),
+        .a_i     (a_i),
+        .b_i     (b_i),
+        .valid_o (mul_core_valid),
+        .y_o     (mul_data_o),
+        .flags_o (mul_flags_o)
+      );
+    end else begin : g_no_mul
+      assign mul_core_valid = 1'b0;
+      assign mul_data_o     = 32'd0;
+      assign mul_flags_o    = 5'd0;
+    end
+  endgenerate
   fp_pipe #(.WIDTH(XW), .DEPTH(MUL_LATENCY - 1)) u_mul_tag_pre (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
@@ -126,7 +148,7 @@ module fp3_arith #(
 
   // The cores' own valid bits equal the tag lines' (same depth, same input);
   // the tag lines' are used, the cores' are checked under FORMAL only.
-  wire unused_core_valid = add_core_valid ^ mul_core_valid;
+  wire unused_core_valid = add_core_valid ^ mul_core_valid ^ sub_i;
 `ifdef FORMAL
   always @(*) begin
     assert (add_core_valid == add_valid_o);

@@ -41,6 +41,7 @@
 //   MUL_LATENCY  mul core latency in cycles
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
+//   HAS_ADD, HAS_SUB, HAS_MUL  units built (see fp3_top)
 // Reset: rst_i, synchronous, active high (invert ARESETn outside).
 `default_nettype none
 module fp3_axil #(
@@ -51,7 +52,10 @@ module fp3_axil #(
   parameter integer ADD_LATENCY  = 4,
   parameter integer MUL_LATENCY  = 3,
   parameter integer ROUND        = 0,
-  parameter integer FTZ          = 0
+  parameter integer FTZ          = 0,
+  parameter integer HAS_ADD      = 1,
+  parameter integer HAS_SUB      = 1,
+  parameter integer HAS_MUL      = 1
 ) (
   input  wire                  clk_i,
   input  wire                  rst_i,
@@ -255,7 +259,10 @@ module fp3_axil #(
     .ADD_LATENCY  (ADD_LATENCY),
     .MUL_LATENCY  (MUL_LATENCY),
     .ROUND        (ROUND),
-    .FTZ          (FTZ)
+    .FTZ          (FTZ),
+    .HAS_ADD      (HAS_ADD),
+    .HAS_SUB      (HAS_SUB),
+    .HAS_MUL      (HAS_MUL)
   ) u_fp3 (
     .clk_i           (clk_i),
     .rst_i           (rst_i),

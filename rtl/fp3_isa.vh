@@ -52,6 +52,9 @@ localparam integer DEFAULT_NUM_REGS = 32;
 localparam integer DEFAULT_IMEM_DEPTH = 256;
 localparam integer DEFAULT_ADD_LATENCY = 4;
 localparam integer DEFAULT_MUL_LATENCY = 3;
+localparam integer DEFAULT_HAS_ADD = 1;
+localparam integer DEFAULT_HAS_SUB = 1;
+localparam integer DEFAULT_HAS_MUL = 1;
 
 // Exception flags (Berkeley SoftFloat bit order)
 localparam [4:0] FLAG_INEXACT = 5'h01;
@@ -85,7 +88,7 @@ localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8], 
 localparam [11:0] HR_ID = 12'h00E; // R 0x46503301: 'FP3', version 1
 localparam [11:0] HR_CTX = 12'h00F; // RW context selected for STATUS.ERROR, STEPS_DONE, FAULT_PC and the register window
 localparam [11:0] HR_CONTEXTS = 12'h010; // RW contexts a START runs, 1 .. NUM_CONTEXTS (reset value 1)
-localparam [11:0] HR_INFO2 = 12'h011; // R NUM_CONTEXTS[15:0]
+localparam [11:0] HR_INFO2 = 12'h011; // R NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18]
 localparam [11:0] HR_REG_BASE = 12'h100; // RW register r of context CTX at REG_BASE + r (stopped only)
 localparam [11:0] HR_IMEM_BASE = 12'h800; // W instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
 localparam [31:0] STATUS_RUNNING = 32'h1, STATUS_DONE = 32'h2;

@@ -45,6 +45,8 @@
 //   NUM_CONTEXTS  contexts (objects in flight), >= 1; CW = clog2, >= 1
 //   NUM_REGS      registers per context; IW = clog2(NUM_REGS) index width
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
+//   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
+//                 missing one is illegal
 // Ports: see the groups below; counters are 64 bits, cleared by START.
 // Register indices towards the register file are {context, register}.
 `default_nettype none
@@ -54,7 +56,10 @@ module fp3_scheduler #(
   parameter integer NUM_REGS     = 32,
   parameter integer IW           = 5,
   parameter integer IMEM_DEPTH   = 256,
-  parameter integer AW           = 8
+  parameter integer AW           = 8,
+  parameter integer HAS_ADD      = 1,
+  parameter integer HAS_SUB      = 1,
+  parameter integer HAS_MUL      = 1
 ) (
   input  wire                         clk_i,
   input  wire                         rst_i,
@@ -175,15 +180,16 @@ module fp3_scheduler #(
       wire [6:0]  dec = isa_decode(opc);
       wire use_rd = dec[0], use_ra = dec[1], use_rb = dec[2], use_imm = dec[3];
 
-      assign legal[c] = dec[6] && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
+      wire built = (dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
+                   (opc != OP_SUB || HAS_SUB != 0) &&
+                   (dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+      assign legal[c] = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
                         reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
                         (opc != OP_ENDI || imm < IMEM_DEPTH);
 
       wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
       wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
-      // The unit is decoded again for the granted context only.
-      wire unused_unit = &{1'b0, dec[5:4]};
       assign ready_d[c] = v0_q[c] && legal[c] &&
                           (!use_ra || !busy_i[xa] || `FP3_FREED(xa)) &&
                           (!use_rb || !busy_i[xb] || `FP3_FREED(xb)) &&

@@ -33,6 +33,10 @@
 //   MUL_LATENCY  mul core latency in cycles
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
+//   HAS_ADD      0: no add/sub core; add and sub are illegal instructions
+//   HAS_SUB      0: the adder only adds; sub is an illegal instruction
+//   HAS_MUL      0: no mul core; mul is an illegal instruction
+//                (hardware sized to a scene: `fp3 configure`)
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -41,7 +45,10 @@ module fp3_top #(
   parameter integer ADD_LATENCY  = 4,
   parameter integer MUL_LATENCY  = 3,
   parameter integer ROUND        = 0,
-  parameter integer FTZ          = 0
+  parameter integer FTZ          = 0,
+  parameter integer HAS_ADD      = 1,
+  parameter integer HAS_SUB      = 1,
+  parameter integer HAS_MUL      = 1
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -132,7 +139,8 @@ module fp3_top #(
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
-                  .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_sched (
+                  .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
+                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
@@ -220,7 +228,7 @@ module fp3_top #(
 
   // ---- arithmetic unit -----------------------------------------------------
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .XW(XW)) u_arith (
+              .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .XW(XW)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
     .valid_i     (rd_valid_q),
@@ -285,7 +293,7 @@ module fp3_top #(
       HR_ID:         rdata_d = ID_VALUE;
       HR_CTX:        rdata_d = {{(32-CW){1'b0}}, ctx_q};
       HR_CONTEXTS:   rdata_d = contexts_q;
-      HR_INFO2:      rdata_d = {16'd0, NUM_CONTEXTS[15:0]};
+      HR_INFO2:      rdata_d = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
       default: rdata_d = 32'd0;
     endcase
   end

@@ -96,7 +96,10 @@
   X(NUM_REGS,    32)   /* registers per context (at most 256)          */      \
   X(IMEM_DEPTH,  256)  /* instruction memory words (at most 1024)      */      \
   X(ADD_LATENCY, 4)    /* add/sub core: operands to result, cycles     */      \
-  X(MUL_LATENCY, 3)    /* mul core: operands to result, cycles         */
+  X(MUL_LATENCY, 3)    /* mul core: operands to result, cycles         */      \
+  X(HAS_ADD,     1)    /* 0: no add/sub core (add, sub are illegal)    */      \
+  X(HAS_SUB,     1)    /* 0: the adder only adds (sub is illegal)      */      \
+  X(HAS_MUL,     1)    /* 0: no mul core (mul is illegal)              */
 
 /* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
  * 6-bit context numbers). */
@@ -145,7 +148,7 @@
                              "FAULT_PC and the register window")              \
   X(CONTEXTS,   0x010, "RW", "contexts a START runs, 1 .. NUM_CONTEXTS "       \
                              "(reset value 1)")                               \
-  X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0]")                             \
+  X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18]") \
   X(REG_BASE,   0x100, "RW", "register r of context CTX at REG_BASE + r "     \
                              "(stopped only)")                                \
   X(IMEM_BASE,  0x800, "W",  "instruction i: low word at IMEM_BASE + 2i, "    \
