@@ -99,29 +99,38 @@ module fp3_regfile #(
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
 
-  // ---- read stage: LVT choice and bypass, registered beside the RAMs ------
+  // ---- read stage: LVT choice and bypass, in cycle t + 1 -----------------
+  // The read addresses and the write-backs of cycle t are registered; in
+  // cycle t + 1 the LVT (which by then includes the writes of cycle t)
+  // picks the RAM, and a write-back of cycle t to the same register (which
+  // the RAM read at the same edge missed) replaces the RAM data.  Nothing
+  // of this sits behind the issue arbiter in cycle t.
+  reg [XW-1:0] a_idx_q, b_idx_q;
+  reg [2:0]    wv_q;
+  reg [XW-1:0] wi0_q, wi1_q, wi2_q;
+  reg [31:0]   wd0_q, wd1_q, wd2_q;
+  always @(posedge clk_i) begin
+    a_idx_q <= a_idx;
+    b_idx_q <= rb_i;
+    wv_q    <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
+    wi0_q   <= wb0_idx_i;
+    wi1_q   <= wb1_idx_i;
+    wi2_q   <= w2_idx;
+    wd0_q   <= wb0_data_i;
+    wd1_q   <= wb1_data_i;
+    wd2_q   <= w2_data;
+  end
   // A plain expression, not a function: a continuous assignment is
   // re-evaluated only when its operands change, and a function's body is
   // not an operand (Icarus relies on that).
-`define FP3_BYPASS(x) \
-  ((wb0_valid_i && wb0_idx_i == (x)) ? {1'b1, wb0_data_i} : \
-   (wb1_valid_i && wb1_idx_i == (x)) ? {1'b1, wb1_data_i} : \
-   (w2_valid    && w2_idx    == (x)) ? {1'b1, w2_data}    : 33'd0)
-  wire [32:0] a_bypass = `FP3_BYPASS(a_idx);
-  wire [32:0] b_bypass = `FP3_BYPASS(rb_i);
-`undef FP3_BYPASS
-  reg  [32:0] a_bp_q, b_bp_q;   // {taken, value}
-  reg  [1:0]  a_lvt_q, b_lvt_q;
-  always @(posedge clk_i) begin
-    a_bp_q  <= a_bypass;
-    b_bp_q  <= b_bypass;
-    a_lvt_q <= lvt_q[a_idx];
-    b_lvt_q <= lvt_q[rb_i];
-  end
-  assign ra_data_o = a_bp_q[32] ? a_bp_q[31:0] :
-                     (a_lvt_q == 2'd0) ? q00 : (a_lvt_q == 2'd1) ? q10 : q20;
-  assign rb_data_o = b_bp_q[32] ? b_bp_q[31:0] :
-                     (b_lvt_q == 2'd0) ? q01 : (b_lvt_q == 2'd1) ? q11 : q21;
+`define FP3_READ(x, q0, q1, q2) \
+  ((wv_q[0] && wi0_q == (x)) ? wd0_q : \
+   (wv_q[1] && wi1_q == (x)) ? wd1_q : \
+   (wv_q[2] && wi2_q == (x)) ? wd2_q : \
+   (lvt_q[x] == 2'd0) ? (q0) : (lvt_q[x] == 2'd1) ? (q1) : (q2))
+  assign ra_data_o = `FP3_READ(a_idx_q, q00, q10, q20);
+  assign rb_data_o = `FP3_READ(b_idx_q, q01, q11, q21);
+`undef FP3_READ
 
   assign busy_o = busy_q;
   assign idle_o = (busy_q == {ENTRIES{1'b0}});

@@ -117,6 +117,7 @@ module fp3_scheduler #(
   reg [NC-1:0] fend_q;              // fetched the last word of the memory
   reg [NC-1:0] ready_q;             // head was ready (computed last cycle)
   reg [31:0]   sdone_q[0:NC-1];     // integrations completed
+  reg [NC-1:0] final_q;             // the next endi is the last of the run
   reg [3:0]    err_q  [0:NC-1];
   reg [AW-1:0] epc_q  [0:NC-1];     // faulting PC
   // ---- shared state --------------------------------------------------------
@@ -252,7 +253,7 @@ module fp3_scheduler #(
   wire [31:0] g_imm  = gi[0 +: ISA_IMM_WIDTH];
   wire [6:0]  g_dec  = isa_decode(g_opc);
   wire        g_endi = g_opc == OP_ENDI;
-  wire        g_last = g_endi && (sdone_q[g] + 32'd1 == steps_q);
+  wire        g_last = g_endi && final_q[g];
   wire        g_stop = (g_opc == OP_HALT) || g_last;
   wire [AW-1:0] g_pc = p0_q[g];
   wire        g_overflow = grant && !g_stop && !g_endi &&
@@ -318,6 +319,7 @@ module fp3_scheduler #(
       v1_q      <= {NC{1'b0}};
       fend_q    <= {NC{1'b0}};
       ready_q   <= {NC{1'b0}};
+      final_q   <= {NC{1'b0}};
       fvalid_q  <= 1'b0;
       fctx_q    <= {CW{1'b0}};
       fpcq_q    <= {AW{1'b0}};
@@ -353,6 +355,7 @@ module fp3_scheduler #(
         v1_q      <= {NC{1'b0}};
         fend_q    <= {NC{1'b0}};
         ready_q   <= {NC{1'b0}};
+        final_q   <= {NC{steps_i == 32'd1}};
         fvalid_q  <= 1'b0;
         lastv_q   <= 1'b0;
         grr_q     <= {CW{1'b0}};
@@ -402,7 +405,10 @@ module fp3_scheduler #(
 
       if (grant) begin
         grr_q <= next_ctx(g);
-        if (g_endi) sdone_q[g] <= sdone_q[g] + 32'd1;
+        if (g_endi) begin
+          sdone_q[g] <= sdone_q[g] + 32'd1;
+          final_q[g] <= sdone_q[g] + 32'd2 == steps_q;
+        end
         if (g_stop) active_q[g] <= 1'b0;
         if (g_overflow) begin
           active_q[g] <= 1'b0;
