@@ -67,10 +67,10 @@ int main(int argc, char **argv) {
     perror(tmp);
     return 1;
   }
-  fprintf(csv, "num_contexts,objects,steps,cycles,cycles_per_object_step,"
+  fprintf(csv, "num_contexts,add_latency,mul_latency,objects,steps,cycles,cycles_per_object_step,"
                "issued_per_object_step,add_utilization,mul_utilization,golden_mismatches\n");
-  printf("%12s %8s %14s %12s %8s %8s\n", "NUM_CONTEXTS", "objects", "cycles/obj-step",
-         "issue bound", "adder", "mult");
+  printf("%12s %9s %8s %14s %12s %8s %8s\n", "NUM_CONTEXTS", "latencies", "objects",
+         "cycles/obj-step", "issue bound", "adder", "mult");
   int rc = 0;
   for (size_t b = 0; b < sizeof builds / sizeof builds[0]; b++) {
     fp3_engine *e = builds[b].ops ? fp3_engine_rtl_new_model(builds[b].ops, NULL)
@@ -95,11 +95,12 @@ int main(int argc, char **argv) {
       double cpos = (double)res.cycles / os, bound = (double)res.issued / os;
       double au = (double)res.unit_issued[FP3_UNIT_ADD] / (double)res.cycles;
       double mu = (double)res.unit_issued[FP3_UNIT_MUL] / (double)res.cycles;
-      printf("%12u %8zu %14.2f %12.2f %7.1f%% %7.1f%%%s\n", e->config.num_contexts, n, cpos,
-             bound, 100 * au, 100 * mu, res.mismatches ? "  GOLDEN MISMATCH" : "");
-      fprintf(csv, "%u,%zu,%" PRIu32 ",%" PRIu64 ",%.4f,%.4f,%.4f,%.4f,%" PRIu64 "\n",
-              e->config.num_contexts, n, steps, res.cycles, cpos, bound, au, mu,
-              res.mismatches);
+      printf("%12u %6u/%-2u %8zu %14.2f %12.2f %7.1f%% %7.1f%%%s\n", e->config.num_contexts,
+             e->config.add_latency, e->config.mul_latency, n, cpos, bound, 100 * au, 100 * mu,
+             res.mismatches ? "  GOLDEN MISMATCH" : "");
+      fprintf(csv, "%u,%u,%u,%zu,%" PRIu32 ",%" PRIu64 ",%.4f,%.4f,%.4f,%.4f,%" PRIu64 "\n",
+              e->config.num_contexts, e->config.add_latency, e->config.mul_latency, n, steps,
+              res.cycles, cpos, bound, au, mu, res.mismatches);
       if (res.mismatches || res.error) rc = 1;
       fp3_objects_result_free(&res);
       fp3_scene_free(&sc);
