@@ -87,8 +87,8 @@ lint: $(SETUP_STAMP)
 # in each ROUND/FTZ configuration on xc2v and xc7 (issue 3), as a table in
 # $(SYNTH_DIR)/fp_cores_area.{md,csv}.  scripts/synth.sh fails on any latch
 # or combinational loop.  `make synth SYNTH_FLOWS=ecp5` for one flow;
-# SYNTH_PARAMS="NUM_CONTEXTS=1" overrides parameters of fp3_axil (the
-# default build's 8-context register file takes Yosys tens of minutes).
+# SYNTH_PARAMS="NUM_CONTEXTS=1" overrides parameters of fp3_axil.  Last,
+# the processor's area for 1, 8 and 32 contexts (synth-contexts).
 SYNTH_DIR    := $(BUILD)/synth
 SYNTH_FLOWS  ?= xc2v xc7 ecp5
 SYNTH_PARAMS ?=
@@ -103,15 +103,28 @@ synth: $(SETUP_STAMP)
 	  done; done; done; done
 	@echo "FP core area (default latencies), $(SYNTH_DIR)/fp_cores_area.md:"
 	@bash scripts/synth-report.sh --table $(SYNTH_DIR)
+	@$(MAKE) --no-print-directory synth-contexts
 
 # Area of the processor against NUM_CONTEXTS (issue 4): xc2v, 1, 8 and 32
-# contexts.  Slow: the register banks are flip-flops (tens of minutes).
+# contexts, as a table in $(SYNTH_DIR)/contexts_area.{md,csv}.  About 1, 2
+# and 7 CPU minutes of Yosys.  `make synth` runs it last.
 SYNTH_CONTEXTS ?= 1 8 32
 .PHONY: synth-contexts
 synth-contexts: $(SETUP_STAMP)
 	@set -e; for n in $(SYNTH_CONTEXTS); do \
 	  bash scripts/synth.sh $(SYNTH_DIR)/contexts_$$n $(RTL_TOP) xc2v NUM_CONTEXTS=$$n $(RTL_SRC); \
 	done
+	@set -e; md=$(SYNTH_DIR)/contexts_area.md; csv=$(SYNTH_DIR)/contexts_area.csv; \
+	  echo "num_contexts,luts,ffs,mult18x18,brams" > $$csv.tmp; \
+	  { echo "| NUM_CONTEXTS | LUTs | flip-flops | MULT18X18 | block RAMs |"; \
+	    echo "| ---: | ---: | ---: | ---: | ---: |"; } > $$md.tmp; \
+	  for n in $(SYNTH_CONTEXTS); do \
+	    set -- $$(bash scripts/synth-report.sh --fields --module $(RTL_TOP) \
+	      $(SYNTH_DIR)/contexts_$$n/$(RTL_TOP)_NUM_CONTEXTS-$${n}_xc2v_stat.txt); \
+	    echo "$$n,$$1,$$2,$$3,$$5" >> $$csv.tmp; \
+	    echo "| $$n | $$1 | $$2 | $$3 | $$5 |" >> $$md.tmp; \
+	  done; mv $$csv.tmp $$csv; mv $$md.tmp $$md; \
+	  echo "synth-contexts: $(RTL_TOP) on xc2v against NUM_CONTEXTS ($$md):"; cat $$md
 
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
 $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS)
