@@ -403,12 +403,16 @@ module fp3_scheduler #(
         end
       end
 
+      // Integration counters: each context's own adder and comparison, so
+      // that nothing wide sits behind the arbiter.
+      for (k = 0; k < NC; k = k + 1) begin
+        if (gone[k] && g_endi) begin
+          sdone_q[k] <= sdone_q[k] + 32'd1;
+          final_q[k] <= sdone_q[k] + 32'd2 == steps_q;
+        end
+      end
       if (grant) begin
         grr_q <= next_ctx(g);
-        if (g_endi) begin
-          sdone_q[g] <= sdone_q[g] + 32'd1;
-          final_q[g] <= sdone_q[g] + 32'd2 == steps_q;
-        end
         if (g_stop) active_q[g] <= 1'b0;
         if (g_overflow) begin
           active_q[g] <= 1'b0;
