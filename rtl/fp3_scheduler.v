@@ -168,6 +168,9 @@ module fp3_scheduler #(
   // ---- ready step: the head of every queue ---------------------------------
   wire [NC-1:0] legal;
   wire [NC-1:0] ready_d;
+  wire [NC-1:0] h_endi;     // the head is an endi
+  wire [NC-1:0] h_stop;     // ... a halt or the run's last endi
+  wire [NC-1:0] h_ovf;      // ... would run off the end of the memory
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -187,6 +190,13 @@ module fp3_scheduler #(
       assign legal[c] = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
                         reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
                         (opc != OP_ENDI || imm < IMEM_DEPTH);
+
+      // What issuing the head does to its context, decided per context so
+      // that the state updates need no multiplexer behind the arbiter.
+      assign h_endi[c] = opc == OP_ENDI;
+      assign h_stop[c] = opc == OP_HALT || (h_endi[c] && final_q[c]);
+      assign h_ovf[c]  = !h_stop[c] && !h_endi[c] &&
+                         {{(32-AW){1'b0}}, p0_q[c]} == IMEM_DEPTH - 1;
 
       wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
       wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
@@ -253,11 +263,6 @@ module fp3_scheduler #(
   wire [31:0] g_imm  = gi[0 +: ISA_IMM_WIDTH];
   wire [6:0]  g_dec  = isa_decode(g_opc);
   wire        g_endi = g_opc == OP_ENDI;
-  wire        g_last = g_endi && final_q[g];
-  wire        g_stop = (g_opc == OP_HALT) || g_last;
-  wire [AW-1:0] g_pc = p0_q[g];
-  wire        g_overflow = grant && !g_stop && !g_endi &&
-                           {{(32-AW){1'b0}}, g_pc} == IMEM_DEPTH - 1;
 
   assign issue_o      = grant;
   assign issue_ctx_o  = g;
@@ -406,20 +411,18 @@ module fp3_scheduler #(
       // Integration counters: each context's own adder and comparison, so
       // that nothing wide sits behind the arbiter.
       for (k = 0; k < NC; k = k + 1) begin
-        if (gone[k] && g_endi) begin
+        if (gone[k] && h_endi[k]) begin
           sdone_q[k] <= sdone_q[k] + 32'd1;
           final_q[k] <= sdone_q[k] + 32'd2 == steps_q;
         end
-      end
-      if (grant) begin
-        grr_q <= next_ctx(g);
-        if (g_stop) active_q[g] <= 1'b0;
-        if (g_overflow) begin
-          active_q[g] <= 1'b0;
-          err_q[g]    <= ERR_PC_OVERFLOW;
-          epc_q[g]    <= g_pc;
+        if (gone[k] && h_stop[k]) active_q[k] <= 1'b0;
+        if (gone[k] && h_ovf[k]) begin
+          active_q[k] <= 1'b0;
+          err_q[k]    <= ERR_PC_OVERFLOW;
+          epc_q[k]    <= p0_q[k];
         end
       end
+      if (grant) grr_q <= next_ctx(g);
       for (k = 0; k < NC; k = k + 1) begin
         if (illegal[k]) begin
           active_q[k] <= 1'b0;

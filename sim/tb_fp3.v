@@ -177,7 +177,7 @@ module tb_fp3 #(
   // signal of the .gtkw file is in the waveform).  Per-context vectors have
   // bit c for context c; registers and busy flags are shown for context 0.
   wire           dbg_issue     = dut.u_sched.grant;      // = tr_issue
-  wire [AW-1:0]  dbg_pc        = dut.u_sched.g_pc;       // PC of the issuing instruction
+  wire [AW-1:0]  dbg_pc        = dut.u_sched.p0_q[dut.u_sched.g];  // PC of the issuing instruction
   wire [63:0]    dbg_insn      = dut.u_sched.gi;         // its word
   wire [7:0]     dbg_opc       = dut.u_sched.g_opc;
   wire [AW-1:0]  dbg_pc0       = dut.u_sched.p0_q[0];    // context 0: PC of its queue's head
