@@ -210,16 +210,26 @@ module fp3_scheduler #(
 `undef FP3_FREED
 
   // ---- round-robin pick: the first set bit at or after `from` --------------
+  // `from` enters as a thermometer mask (bits from..NC-1 set), decoded from
+  // a register, so the pick itself is two priority chains and no compare.
+  function [NC-1:0] at_or_after;
+    input [CW-1:0] from;
+    integer p;
+    begin
+      for (p = 0; p < NC; p = p + 1) at_or_after[p] = p[CW-1:0] >= from;
+    end
+  endfunction
+
   function [CW:0] rr_pick;  // {found, index}
     input [NC-1:0] req;
-    input [CW-1:0] from;
+    input [NC-1:0] high;    // at_or_after(from)
     integer p;
     reg found;
     begin
       rr_pick = {1'b0, {CW{1'b0}}};
       found   = 1'b0;
       for (p = 0; p < NC; p = p + 1) begin   // from, from+1, ..., NC-1
-        if (!found && req[p] && p >= {{(32-CW){1'b0}}, from}) begin
+        if (!found && req[p] && high[p]) begin
           rr_pick = {1'b1, p[CW-1:0]};
           found   = 1'b1;
         end
@@ -251,7 +261,7 @@ module fp3_scheduler #(
 
   // ---- issue step ----------------------------------------------------------
   wire [NC-1:0] cand  = ready_q & active_q & ~onehot(lastv_q, last_q);
-  wire [CW:0]   gpick = rr_pick(cand, grr_q);
+  wire [CW:0]   gpick = rr_pick(cand, at_or_after(grr_q));
   wire          grant = gpick[CW];
   wire [CW-1:0] g     = gpick[CW-1:0];
   wire [63:0]   gi    = w0_q[g];
@@ -281,7 +291,7 @@ module fp3_scheduler #(
   // the memory address) and no read in flight.
   wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving;
-  wire [CW:0]   fpick = rr_pick(fetch_req, frr_q);
+  wire [CW:0]   fpick = rr_pick(fetch_req, at_or_after(frr_q));
   wire          fetch = fpick[CW] && running_o;
   wire [CW-1:0] f     = fpick[CW-1:0];
   assign fetch_addr = fpc_q[f];
