@@ -39,7 +39,7 @@
 //     write clears the register's busy flag.  A register written back in
 //     the cycle a new instruction claims it stays busy: the set wins.
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
-//     (only while stopped: the move path is idle then).
+//     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
 module fp3_regfile #(
   parameter integer ENTRIES = 32,
@@ -72,10 +72,21 @@ module fp3_regfile #(
   reg [ENTRIES-1:0] busy_q;
   reg [1:0]         lvt_q [0:ENTRIES-1];  // write port that wrote last
 
-  // Port 2 carries the move path, or the host's write while stopped.
-  wire          w2_valid = wb2_valid_i || host_we_i;
-  wire [XW-1:0] w2_idx   = wb2_valid_i ? wb2_idx_i  : host_idx_i;
-  wire [31:0]   w2_data  = wb2_valid_i ? wb2_data_i : host_wdata_i;
+  // Port 2 carries the move path, or the host's write while stopped.  The
+  // host's write is registered first (it lands a cycle later; a read in
+  // between gets it through the bypass), which keeps the bus interface's
+  // decode out of the register file's write paths.
+  reg           hwe_q;
+  reg  [XW-1:0] hidx_q;
+  reg  [31:0]   hdata_q;
+  always @(posedge clk_i) begin
+    hwe_q   <= !rst_i && host_we_i;
+    hidx_q  <= host_idx_i;
+    hdata_q <= host_wdata_i;
+  end
+  wire          w2_valid = wb2_valid_i || hwe_q;
+  wire [XW-1:0] w2_idx   = wb2_valid_i ? wb2_idx_i  : hidx_q;
+  wire [31:0]   w2_data  = wb2_valid_i ? wb2_data_i : hdata_q;
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
