@@ -23,7 +23,8 @@
 static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 configure SCENE [--integrator NAME] [--literal]\n"
-          "                     [--error-budget REL] [--steps N] [-o FILE] [--json]\n"
+          "                     [--error-budget REL] [--steps N] [--context-per-object]\n"
+          "                     [-o FILE] [--json]\n"
           "\n"
           "Derive the RTL parameters of a processor sized to the scene: compile the\n"
           "scene as fp3 run --scene does, then\n"
@@ -31,7 +32,10 @@ static void usage(FILE *f) {
           "                   sub, a mul (a missing unit is an illegal instruction)\n"
           "  NUM_REGS         the fewest registers the compiler fits the program\n"
           "                   into without losing a cycle (at least 4)\n"
-          "  NUM_CONTEXTS     one per object, at most 64 (more objects: batches)\n"
+          "  NUM_CONTEXTS     the fewest that keep the issue slot busy: ceil(cycles\n"
+          "                   of one object's integration / its instructions), at\n"
+          "                   most the objects (more objects run in batches);\n"
+          "                   --context-per-object: min(objects, 64)\n"
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
@@ -46,6 +50,7 @@ static void usage(FILE *f) {
           "  --literal        no folding, no zero-term removal (fp3 compile --literal)\n"
           "  --error-budget R relative error a mode may add to RNE's (default 1e-4)\n"
           "  --steps N        integrations of the accuracy check (default 1000)\n"
+          "  --context-per-object  NUM_CONTEXTS = min(objects, 64)\n"
           "  -o FILE          write the line to FILE (atomically) instead of stdout\n"
           "  --json           the parameters and the reasons as JSON on stdout\n"
           "\n"
@@ -72,6 +77,8 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
   fp3_json_string(stdout, integ);
   printf(", \"literal\": %s, \"error_budget\": %.17g, \"steps\": %u", o->literal ? "true" : "false",
          o->budget, o->steps);
+  printf(", \"context_per_object\": %s, \"contexts_issue\": %u",
+         o->context_per_object ? "true" : "false", r->contexts_issue);
   printf(", \"make\": ");
   fp3_json_string(stdout, line);
   printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_REGS\": %u, \"HAS_ADD\": %u, "
@@ -116,9 +123,15 @@ static void print_reasons(const char *scene, const char *integ, const fp3_config
           "fp3 configure: %s (%zu objects), %s%s: %u instructions per integration, "
           "estimated %u cycles per later integration of one object\n",
           scene, r->objects, integ, o->literal ? " (literal)" : "", r->body_insns, r->est_later);
-  fprintf(stderr, "  %-16s one context per object (%zu object%s; at most %d, more run "
-                  "in batches)\n", param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0), r->objects, r->objects == 1 ? "" : "s",
-          FP3_MAX_CONTEXTS);
+  if (o->context_per_object)
+    fprintf(stderr, "  %-16s one context per object (%zu object%s; at most %d, more run in "
+                    "batches)\n", param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0),
+            r->objects, r->objects == 1 ? "" : "s", FP3_MAX_CONTEXTS);
+  else
+    fprintf(stderr, "  %-16s the fewest contexts that keep the issue slot busy: ceil(%u cycles "
+                    "/ %u instructions) = %u, at most the %zu object%s\n",
+            param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0), r->est_later,
+            r->body_insns, r->contexts_issue, r->objects, r->objects == 1 ? "" : "s");
   fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
                   "(it names %u; compiled for the default %u it names %u)\n",
           param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
@@ -196,6 +209,8 @@ int fp3_cmd_configure(int argc, char **argv) {
       o.steps = (uint32_t)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
       o.literal = 1;
+    } else if (strcmp(argv[i], "--context-per-object") == 0) {
+      o.context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
     } else if (argv[i][0] == '-' && argv[i][1] != '\0') {

@@ -23,6 +23,7 @@ void fp3_configure_defaults(fp3_configure_opts *o) {
   o->literal = 0;
   o->budget = 1e-4;
   o->steps = 1000;
+  o->context_per_object = 0;
 }
 
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
@@ -129,6 +130,7 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   r->regs_default = regs_named(fp3_compiled_image(c));
   r->est_first = fp3_compiled_stats(c)->est_cycles_first;
   r->est_later = fp3_compiled_stats(c)->est_cycles_later;
+  r->body_insns = fp3_compiled_stats(c)->body_insns;
 
   /* the fewest registers that lose no cycle; the build compiles for them */
   r->cfg.num_regs = co.num_regs;
@@ -149,7 +151,6 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   }
   const fp3_image *img = fp3_compiled_image(c);
   r->regs_used = regs_named(img);
-  r->body_insns = fp3_compiled_stats(c)->body_insns;
 
   /* units */
   r->unit_pc[0] = r->unit_pc[1] = r->unit_pc[2] = -1;
@@ -163,7 +164,14 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   r->cfg.has_mul = r->unit_pc[2] >= 0;
 
   r->objects = sc->n;
-  r->cfg.num_contexts = sc->n < FP3_MAX_CONTEXTS ? (unsigned)sc->n : FP3_MAX_CONTEXTS;
+  /* contexts that keep the issue slot busy: one object's integration
+   * takes est_later cycles for body_insns issues */
+  r->contexts_issue = (r->est_later + r->body_insns - 1) / r->body_insns;
+  if (r->contexts_issue < 1) r->contexts_issue = 1;
+  size_t nc = o->context_per_object ? FP3_MAX_CONTEXTS : r->contexts_issue;
+  if (nc > FP3_MAX_CONTEXTS) nc = FP3_MAX_CONTEXTS;
+  if (nc > sc->n) nc = sc->n;
+  r->cfg.num_contexts = (unsigned)nc;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;
   r->cfg.mul_latency = FP3_DEFAULT_MUL_LATENCY;

@@ -17,9 +17,15 @@
  *    and the program names registers below k only.  (The compiler takes
  *    the least recently written free register, so with the default 32 it
  *    spreads a long body over more registers than it needs.)
- *  - NUM_CONTEXTS: min(objects, FP3_MAX_CONTEXTS): one context per object,
- *    so the whole scene is in flight at once; a larger scene runs in
- *    batches of 64 (more contexts are not buildable);
+ *  - NUM_CONTEXTS: the fewest contexts that keep the single issue slot
+ *    busy, ceil(E / I) for E the estimated cycles of a later integration
+ *    of one object and I its instructions (contexts interleave: with that
+ *    many objects in flight one instruction issues every cycle; README
+ *    "Many objects": more contexts add area, not speed), at most the
+ *    objects and FP3_MAX_CONTEXTS; a larger scene runs in batches.  With
+ *    opts.context_per_object: one context per object, min(objects, 64),
+ *    the whole scene in flight at once (64 contexts are several times the
+ *    area of the default 8);
  *  - ROUND, FTZ: the cheapest FP core mode whose results stay within the
  *    error budget.  Each candidate mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ) runs
  *    the program's golden model (fp3_compiled_golden, in that mode through
@@ -59,9 +65,11 @@ typedef struct fp3_configure_opts {
                           /* paper's operations, fp3 compile --literal)    */
   double budget;          /* error budget, relative (> 0)                  */
   uint32_t steps;         /* integrations of the accuracy check (>= 1)     */
+  int context_per_object; /* 1: NUM_CONTEXTS = min(objects, 64)            */
 } fp3_configure_opts;
 
-/* integrator "rk4", literal 0, budget 1e-4, steps 1000. */
+/* integrator "rk4", literal 0, budget 1e-4, steps 1000, contexts by the
+ * issue rule. */
 void fp3_configure_defaults(fp3_configure_opts *o);
 
 /* What fp3_configure derived, and why. */
@@ -76,6 +84,7 @@ typedef struct fp3_configure_result {
   unsigned est_first;      /* estimated cycles, first integration          */
   unsigned est_later;      /* ... each later one (one object)              */
   unsigned body_insns;     /* instructions per integration                 */
+  unsigned contexts_issue; /* contexts that fill the issue slot, ceil(E/I) */
   fpref_mode mode[FP3_CONFIGURE_MODES]; /* RNE, RTZ, RNE+FTZ, RTZ+FTZ       */
   double err[FP3_CONFIGURE_MODES];  /* relative error (max over objects);  */
                                     /* NAN: the host cannot run the mode   */
