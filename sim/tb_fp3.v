@@ -54,6 +54,9 @@ module tb_fp3 #(
   parameter integer MUL_LATENCY = 3,
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
+  parameter integer HAS_ADD     = 1,
+  parameter integer HAS_SUB     = 1,
+  parameter integer HAS_MUL     = 1,
   parameter integer HALF_PERIOD = 5,       // ns: a 100 MHz clock
   parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cmd_tbgen.h)
   parameter integer STALL_LIMIT = 1000     // cycles without progress = hang
@@ -96,7 +99,10 @@ module tb_fp3 #(
     .ADD_LATENCY (ADD_LATENCY),
     .MUL_LATENCY (MUL_LATENCY),
     .ROUND       (ROUND),
-    .FTZ         (FTZ)
+    .FTZ         (FTZ),
+    .HAS_ADD     (HAS_ADD),
+    .HAS_SUB     (HAS_SUB),
+    .HAS_MUL     (HAS_MUL)
   ) dut (
     .clk_i           (clk),
     .rst_i           (rst),
@@ -532,7 +538,7 @@ module tb_fp3 #(
     host_read(HR_INFO0, rd);
     expect_eq("INFO0", rd, {IMEM_DEPTH[15:0], NUM_REGS[15:0]});
     host_read(HR_INFO2, rd);
-    expect_eq("INFO2", rd, NC);
+    expect_eq("INFO2", rd, {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
 
     // program (every entry), registers of each context, steps, start
     for (i = 0; i < IMEM_DEPTH; i = i + 1) begin
