@@ -14,8 +14,9 @@ RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
-# MUL_LATENCY]].  The test programs also get models with 1 and 3 contexts,
-# with other core latencies (shortest add; deeper pipelines).
+# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL]]].  The test programs
+# also get models with 1 and 3 contexts, with other core latencies
+# (shortest add; deeper pipelines).
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
@@ -29,6 +30,11 @@ RTL_CFG_nc16    := 0 0 16
 RTL_CFG_nc32    := 0 0 32
 RTL_CFG_nc64    := 0 0 64
 RTL_BENCH_CONFIGS := nc16 nc32 nc64
+# ... and one build sized to a scene (issue 7 part 3, tests/test_configure.c):
+# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL.  `build/fp3 configure
+# scenes/drift.scene` derives exactly these parameters (the test checks it).
+RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
+RTL_SCENE_CONFIGS := drift
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
 rtl_archive = $(call rtl_objdir,$(1))/Vfp3_top_$(1)__ALL.a
@@ -54,6 +60,10 @@ $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STA
 	  $(if $(word 3,$(RTL_CFG_$(1))),-GNUM_CONTEXTS=$(word 3,$(RTL_CFG_$(1)))) \
 	  $(if $(word 4,$(RTL_CFG_$(1))),-GADD_LATENCY=$(word 4,$(RTL_CFG_$(1)))) \
 	  $(if $(word 5,$(RTL_CFG_$(1))),-GMUL_LATENCY=$(word 5,$(RTL_CFG_$(1)))) \
+	  $(if $(word 6,$(RTL_CFG_$(1))),-GNUM_REGS=$(word 6,$(RTL_CFG_$(1)))) \
+	  $(if $(word 7,$(RTL_CFG_$(1))),-GHAS_ADD=$(word 7,$(RTL_CFG_$(1)))) \
+	  $(if $(word 8,$(RTL_CFG_$(1))),-GHAS_SUB=$(word 8,$(RTL_CFG_$(1)))) \
+	  $(if $(word 9,$(RTL_CFG_$(1))),-GHAS_MUL=$(word 9,$(RTL_CFG_$(1)))) \
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 
@@ -61,7 +71,7 @@ $(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h sim/vmodel.h $(call rtl_
 	@mkdir -p $$(dir $$@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef
-$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 # rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).

@@ -7,14 +7,11 @@
  */
 #include "compile.h"
 
-#include <errno.h>
 #include <float.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "asm.h"
 #include "fp3_isa.h"
@@ -796,35 +793,7 @@ fp3_golden_ref fp3_compiled_golden(fp3_compiled *c) {
 /* ---- output file ----------------------------------------------------------- */
 
 int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n) {
-  size_t len = strlen(path);
-  char *tmp = malloc(len + 16);
-  if (!tmp) {
-    snprintf(msg, n, "out of memory");
-    return -1;
-  }
-  snprintf(tmp, len + 16, "%s.tmpXXXXXX", path);
-  int fd = mkstemp(tmp);
-  if (fd < 0) {
-    snprintf(msg, n, "%s: %s", path, strerror(errno));
-    free(tmp);
-    return -1;
-  }
-  mode_t um = umask(0); /* mkstemp makes 0600: give the file the usual mode */
-  umask(um);
-  fchmod(fd, 0666 & ~um);
-  FILE *f = fdopen(fd, "w");
-  int bad = !f || fputs(c->text, f) < 0;
-  if (f) bad |= fclose(f) != 0;
-  else close(fd);
-  if (!bad && rename(tmp, path) != 0) bad = 1;
-  if (bad) {
-    snprintf(msg, n, "%s: %s", path, strerror(errno ? errno : EIO));
-    unlink(tmp);
-    free(tmp);
-    return -1;
-  }
-  free(tmp);
-  return 0;
+  return fp3_write_text_atomic(path, c->text, msg, n);
 }
 
 /* ---- cycle estimate ----------------------------------------------------------- */

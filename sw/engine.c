@@ -2,9 +2,12 @@
  * engine.c -- the engine dispatchers of engine.h and the constructor by
  * name.  The engines themselves live in iss.c and engine_rtl.c.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include "engine.h"
+#include "fp3_isa.h"
+#include "image.h"
 
 fp3_engine *fp3_engine_new(const char *name) {
   if (!name) return NULL;
@@ -13,7 +16,32 @@ fp3_engine *fp3_engine_new(const char *name) {
   return NULL;
 }
 
+int fp3_config_check_program(const fp3_config *c, const uint64_t *words, size_t n,
+                             char *msg, size_t len) {
+  for (size_t pc = 0; pc < n; pc++) {
+    const unsigned opc = fp3_insn_opc(words[pc]);
+    const char *missing = NULL, *param = NULL;
+    if ((opc == FP3_OP_ADD || opc == FP3_OP_SUB) && !c->has_add) {
+      missing = "no adder";
+      param = "HAS_ADD";
+    } else if (opc == FP3_OP_SUB && !c->has_sub) {
+      missing = "an adder that cannot subtract";
+      param = "HAS_SUB";
+    } else if (opc == FP3_OP_MUL && !c->has_mul) {
+      missing = "no multiplier";
+      param = "HAS_MUL";
+    }
+    if (missing) {
+      snprintf(msg, len, "the program uses %s (pc %zu), but this hardware has %s "
+               "(built with %s=0)", fp3_opc_mnemonic(opc), pc, missing, param);
+      return -1;
+    }
+  }
+  return 0;
+}
+
 int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n) {
+  if (fp3_config_check_program(&e->config, words, n, e->error, sizeof e->error)) return -1;
   return e->ops->load_program(e, words, n);
 }
 

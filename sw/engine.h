@@ -37,7 +37,21 @@ typedef struct fp3_config {
   unsigned add_latency; /* add core, cycles (RTL only); a dependent     */
   unsigned mul_latency; /* issues FP3_READ_CYCLES + latency after it    */
   fpref_mode mode;      /* FP core options: rounding, flush-to-zero       */
+  unsigned has_add;     /* 1: an add/sub core (HAS_ADD); 0: add, sub illegal */
+  unsigned has_sub;     /* 1: the adder subtracts (HAS_SUB); 0: sub illegal */
+  unsigned has_mul;     /* 1: a mul core (HAS_MUL); 0: mul illegal        */
 } fp3_config;
+
+/* Check that a program only needs the units a build has: every add, sub
+ * and mul in words[0..n) has its unit (has_add, has_sub, has_mul of c;
+ * sub needs has_add and has_sub).  Register fields are not checked here:
+ * an out-of-range one stays an illegal instruction of the run.  The RTL raises
+ * ILLEGAL_INSN on an instruction for a missing unit; the host refuses
+ * before running instead.  Returns 0, or -1 with the first offence in msg,
+ * naming the unit and the parameter: "the program uses mul (pc 12), but
+ * this hardware has no multiplier (built with HAS_MUL=0)". */
+int fp3_config_check_program(const fp3_config *c, const uint64_t *words, size_t n,
+                             char *msg, size_t len);
 
 /* Status and counters after a run. */
 typedef struct fp3_status {
@@ -130,7 +144,10 @@ int fp3_engine_rtl_trace_window(fp3_engine *e, uint64_t first, uint64_t count);
 fp3_engine *fp3_engine_new(const char *name);
 
 /* Thin dispatchers over e->ops.  The forms without a context use context
- * 0 and run one context. */
+ * 0 and run one context.  fp3_engine_load first checks the program against
+ * the engine's build (fp3_config_check_program) and refuses, -1 with that
+ * message in fp3_engine_error(), a program that needs a unit the build
+ * lacks: every path that runs a program refuses before running. */
 int fp3_engine_load(fp3_engine *e, const uint64_t *words, size_t n);
 int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value);
 int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value);

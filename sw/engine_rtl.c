@@ -251,7 +251,11 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   /* The configuration the model was built with, from its INFO registers. */
   uint32_t info0 = host_read(r, FP3_HR_INFO0);
   uint32_t info1 = host_read(r, FP3_HR_INFO1);
-  r->base.config.num_contexts = host_read(r, FP3_HR_INFO2) & 0xFFFF;
+  const uint32_t info2 = host_read(r, FP3_HR_INFO2);
+  r->base.config.num_contexts = info2 & 0xFFFF;
+  r->base.config.has_add = (info2 >> 16) & 1;
+  r->base.config.has_sub = (info2 >> 17) & 1;
+  r->base.config.has_mul = (info2 >> 18) & 1;
   if (r->base.config.num_contexts > FP3_MAX_CONTEXTS) {
     fprintf(stderr, "fp3: the RTL model has %u contexts, more than %d\n",
             r->base.config.num_contexts, FP3_MAX_CONTEXTS);

@@ -11,6 +11,8 @@
  *                                    stability and long runs (sw/bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *   fp3 compile SCENE [-o FILE.s]    the scene compiler (sw/compile.h)
+ *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
+ *                                    (sw/configure.h)
  *
  * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
  * 2 bad arguments or input (usage, parameters, assembly errors).
@@ -37,6 +39,7 @@
 #include "bench.h"
 #include "cliopt.h"
 #include "cmd_compile.h"
+#include "cmd_configure.h"
 #include "compile.h"
 #include "cmd_objects.h"
 #include "report.h"
@@ -951,7 +954,9 @@ static void usage(FILE *f) {
           "                            stability bounds, long runs\n"
           "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n"
           "  compile SCENE [-o FILE.s] the scene compiler: a program folded for\n"
-          "                            the scene (fp3 run --scene uses it)\n");
+          "                            the scene (fp3 run --scene uses it)\n"
+          "  configure SCENE [-o FILE] RTL parameters sized to the scene\n"
+          "                            (make variables; make synth-scene)\n");
 }
 
 int main(int argc, char **argv) {
@@ -971,6 +976,7 @@ int main(int argc, char **argv) {
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
   if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
+  if (strcmp(cmd, "configure") == 0) return fp3_cmd_configure(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
   return EXIT_USAGE;

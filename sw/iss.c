@@ -197,6 +197,7 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   s->base.config.add_latency = 0; /* no timing model */
   s->base.config.mul_latency = 0;
   s->base.config.mode = mode;
+  s->base.config.has_add = s->base.config.has_sub = s->base.config.has_mul = 1; /* every unit */
   return &s->base;
 }
 

@@ -248,6 +248,13 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     snprintf(msg, n, "this host cannot run the golden model in that mode");
     return -1;
   }
+  for (int i = 0; i < FP3_IN_COUNT; i++)
+    if (img->in_reg[i] >= (int)e->config.num_regs) {
+      snprintf(msg, n, "the program binds .in %s to r%d, but this hardware has %u registers "
+               "per context (built with NUM_REGS=%u)", fp3_in_name(i), img->in_reg[i],
+               e->config.num_regs, e->config.num_regs);
+      return -1;
+    }
   /* Two values and two flags per context and integration. */
   double bytes = 10.0 * nctx * ((double)steps + 1.0);
   if (bytes > 2e9) {

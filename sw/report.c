@@ -3,10 +3,13 @@
  */
 #include "report.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "fp3_isa.h"
 
@@ -112,4 +115,36 @@ void fp3_strbuf_printf(fp3_strbuf *b, const char *fmt, ...) {
   vsnprintf(b->s + b->len, b->cap - b->len, fmt, ap);
   va_end(ap);
   b->len += (size_t)k;
+}
+
+int fp3_write_text_atomic(const char *path, const char *text, char *msg, size_t n) {
+  size_t len = strlen(path);
+  char *tmp = malloc(len + 16);
+  if (!tmp) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  snprintf(tmp, len + 16, "%s.tmpXXXXXX", path);
+  int fd = mkstemp(tmp);
+  if (fd < 0) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno));
+    free(tmp);
+    return -1;
+  }
+  mode_t um = umask(0); /* mkstemp makes 0600: give the file the usual mode */
+  umask(um);
+  fchmod(fd, 0666 & ~um);
+  FILE *f = fdopen(fd, "w");
+  int bad = !f || fputs(text, f) < 0;
+  if (f) bad |= fclose(f) != 0;
+  else close(fd);
+  if (!bad && rename(tmp, path) != 0) bad = 1;
+  if (bad) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno ? errno : EIO));
+    unlink(tmp);
+    free(tmp);
+    return -1;
+  }
+  free(tmp);
+  return 0;
 }

@@ -38,4 +38,9 @@ typedef struct fp3_strbuf {
 void fp3_strbuf_printf(fp3_strbuf *b, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 
+/* Write text to path atomically: a temporary file in the same directory
+ * (the usual mode, umask applied), then rename.  On any error no file is
+ * left and path is untouched.  Returns 0, or -1 with "PATH: reason". */
+int fp3_write_text_atomic(const char *path, const char *text, char *msg, size_t n);
+
 #endif /* FP3_REPORT_H */

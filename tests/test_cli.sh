@@ -251,5 +251,49 @@ assert d["engine"] == "rtl" and d["compiled"] and d["golden_mismatches"] == 0, d
 assert d["insns_per_step"] < d["literal_insns_per_step"] and d["cycles_per_object_step"] > 0, d
 EOF2
 
+# ---- fp3 configure: RTL parameters sized to the scene ------------------------------
+expect 0 "usage: fp3 configure" -- configure --help
+expect 0 "^NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1$" -- configure scenes/drift.scene
+expect 0 "HAS_SUB=0 *the program has no sub" -- configure scenes/drift.scene
+expect 0 "^NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1$" -- configure scenes/harbour.scene
+expect 0 "^NUM_CONTEXTS=32 NUM_REGS=12 " -- configure scenes/harbour.scene --context-per-object
+expect 0 "^NUM_CONTEXTS=3 NUM_REGS=7 " -- configure scenes/harbour.scene --integrator euler
+expect 0 "ROUND=0 FTZ=1$" -- configure scenes/harbour.scene --error-budget 1e-9
+expect 0 "<- chosen" -- configure "$T/harbour.scene" --literal --steps 50
+out=$("$FP3" configure scenes/drift.scene -o "$T/drift.params" 2>/dev/null); rc=$?
+[ "$rc" -eq 0 ] && [ -z "$out" ] && [ "$(cat "$T/drift.params")" = \
+  "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1" ] \
+  && ! ls "$T"/drift.params.tmp* >/dev/null 2>&1 && ok || bad "configure -o: rc $rc, '$out', $(cat "$T/drift.params")"
+json=$("$FP3" configure scenes/drift.scene --json 2>/dev/null)
+python3 - "$json" <<'EOF2' && ok || bad "configure --json: $json"
+import json, sys
+d = json.loads(sys.argv[1])
+assert d["params"] == {"NUM_CONTEXTS": 4, "NUM_REGS": 11, "HAS_ADD": 1, "HAS_SUB": 0,
+                       "HAS_MUL": 1, "ROUND": 1, "FTZ": 1}, d
+assert d["unit_pc"]["sub"] is None and d["chosen_mode"] == "RTZ+FTZ" and len(d["modes"]) == 4, d
+assert d["modes"][0]["allowed"] and d["modes"][0]["added_error"] == 0, d
+EOF2
+# bad input: nothing written, an existing output untouched
+echo keep > "$T/keep.params"
+expect 2 "unknown integrator 'leapfrog'" -- configure scenes/drift.scene --integrator leapfrog -o "$T/keep.params"
+expect 2 "short.scene:1: expected 5 numbers" -- configure "$T/short.scene" -o "$T/keep.params"
+expect 2 "mass.scene:3: parameter m = 0" -- configure "$T/mass.scene"
+expect 2 "no objects" -- configure "$T/empty.scene"
+expect 2 "No such file" -- configure "$T/missing.scene"
+expect 2 "error-budget '0'" -- configure scenes/drift.scene --error-budget 0
+expect 2 "error-budget '-1e-4'" -- configure scenes/drift.scene --error-budget -1e-4
+expect 2 "error-budget 'nan'" -- configure scenes/drift.scene --error-budget nan
+expect 2 "error-budget 'x'" -- configure scenes/drift.scene --error-budget x -o "$T/keep.params"
+expect 2 "want 1..10000000 integrations" -- configure scenes/drift.scene --steps 0
+expect 2 "no scene file" -- configure
+expect 2 "unknown option '--bogus'" -- configure scenes/drift.scene --bogus
+[ "$(cat "$T/keep.params")" = keep ] && ok || bad "a failed configure changed its -o file"
+expect 1 "$T/nodir/p.params" -- configure scenes/drift.scene -o "$T/nodir/p.params"
+[ ! -e "$T/nodir" ] && ok || bad "configure into a missing directory created something"
+mkdir "$T/adir"
+expect 1 "$T/adir" -- configure scenes/drift.scene -o "$T/adir"
+[ -z "$(ls -A "$T/adir")" ] && ! ls "$T"/adir.tmp* >/dev/null 2>&1 && ok \
+  || bad "configure -o onto a directory left a temporary file"
+
 echo "test_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

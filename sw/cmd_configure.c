@@ -1,0 +1,259 @@
+/*
+ * cmd_configure.c -- `fp3 configure SCENE`: the RTL parameters sized to a
+ * scene (cmd_configure.h, configure.h).
+ */
+#include "cmd_configure.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cliopt.h"
+#include "configure.h"
+#include "fpenv.h"
+#include "objects.h"
+#include "report.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+#define MAX_STEPS 10000000u
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: fp3 configure SCENE [--integrator NAME] [--literal]\n"
+          "                     [--error-budget REL] [--steps N] [--context-per-object]\n"
+          "                     [-o FILE] [--json]\n"
+          "\n"
+          "Derive the RTL parameters of a processor sized to the scene: compile the\n"
+          "scene as fp3 run --scene does, then\n"
+          "  HAS_ADD, HAS_SUB, HAS_MUL  1 when the program has an add (or sub), a\n"
+          "                   sub, a mul (a missing unit is an illegal instruction)\n"
+          "  NUM_REGS         the fewest registers the compiler fits the program\n"
+          "                   into without losing a cycle (at least 4)\n"
+          "  NUM_CONTEXTS     the fewest that keep the issue slot busy: ceil(cycles\n"
+          "                   of one object's integration / its instructions), at\n"
+          "                   most the objects (more objects run in batches);\n"
+          "                   --context-per-object: min(objects, 64)\n"
+          "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
+          "                   program needs) whose error stays within the budget:\n"
+          "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
+          "                   RTZ+FTZ against the exact solution, every object, N\n"
+          "                   integrations; error = max over objects of\n"
+          "                   max|x - exact| / max(max|exact|, 1), x = v and s.\n"
+          "                   RNE (the default build) is always allowed, another\n"
+          "                   mode when it adds at most REL to each object's RNE\n"
+          "                   error (the integrator's own error is not the mode's).\n"
+          "\n"
+          "  --integrator I   %s (default rk4)\n"
+          "  --literal        no folding, no zero-term removal (fp3 compile --literal)\n"
+          "  --error-budget R relative error a mode may add to RNE's (default 1e-4)\n"
+          "  --steps N        integrations of the accuracy check (default 1000)\n"
+          "  --context-per-object  NUM_CONTEXTS = min(objects, 64)\n"
+          "  -o FILE          write the line to FILE (atomically) instead of stdout\n"
+          "  --json           the parameters and the reasons as JSON on stdout\n"
+          "\n"
+          "Output: one line of make variables, e.g.\n"
+          "  NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=0 FTZ=1\n"
+          "and the reason for each parameter on standard error.  `make synth-scene\n"
+          "SCENE=FILE` synthesizes the full and the sized build and compares.\n"
+          "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget;\n"
+          "1 the output could not be written.\n",
+          fp3_compile_integrators());
+}
+
+static const char *const unit_name[3] = {"add", "sub", "mul"};
+
+static void mode_name(fpref_mode m, char *buf, size_t n) {
+  snprintf(buf, n, "%s%s", m.round == FPREF_RTZ ? "RTZ" : "RNE", m.ftz ? "+FTZ" : "");
+}
+
+static void print_json(const char *scene, const char *integ, const fp3_configure_opts *o,
+                       const fp3_configure_result *r, const char *line) {
+  printf("{\"scene\": ");
+  fp3_json_string(stdout, scene);
+  printf(", \"objects\": %zu, \"integrator\": ", r->objects);
+  fp3_json_string(stdout, integ);
+  printf(", \"literal\": %s, \"error_budget\": %.17g, \"steps\": %u", o->literal ? "true" : "false",
+         o->budget, o->steps);
+  printf(", \"context_per_object\": %s, \"contexts_issue\": %u",
+         o->context_per_object ? "true" : "false", r->contexts_issue);
+  printf(", \"make\": ");
+  fp3_json_string(stdout, line);
+  printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_REGS\": %u, \"HAS_ADD\": %u, "
+         "\"HAS_SUB\": %u, \"HAS_MUL\": %u, \"ROUND\": %d, \"FTZ\": %d}",
+         r->cfg.num_contexts, r->cfg.num_regs, r->cfg.has_add, r->cfg.has_sub, r->cfg.has_mul,
+         r->cfg.mode.round == FPREF_RTZ, r->cfg.mode.ftz ? 1 : 0);
+  printf(", \"unit_pc\": {");
+  for (int u = 0; u < 3; u++) {
+    printf("%s\"%s\": ", u ? ", " : "", unit_name[u]);
+    if (r->unit_pc[u] >= 0) printf("%d", r->unit_pc[u]);
+    else printf("null");
+  }
+  printf("}, \"insns_per_step\": %u, \"est_cycles_first_step\": %u, \"est_cycles_per_step\": %u",
+         r->body_insns, r->est_first, r->est_later);
+  printf(", \"regs_default\": %u, \"regs_used\": %u", r->regs_default, r->regs_used);
+  printf(", \"modes\": [");
+  for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
+    char name[16];
+    mode_name(r->mode[m], name, sizeof name);
+    printf("%s{\"mode\": \"%s\", \"error\": ", m ? ", " : "", name);
+    fp3_json_double(stdout, r->err[m]);
+    printf(", \"added_error\": ");
+    fp3_json_double(stdout, r->added[m]);
+    printf(", \"allowed\": %s, \"fp_core_luts_xc2v\": %u}", r->allowed[m] ? "true" : "false",
+           r->luts[m]);
+  }
+  char chosen[16];
+  mode_name(r->cfg.mode, chosen, sizeof chosen);
+  printf("], \"chosen_mode\": \"%s\"}\n", chosen);
+}
+
+static const char *param_text(const char *name, unsigned v, char *buf, size_t n) {
+  snprintf(buf, n, "%s=%u", name, v);
+  return buf;
+}
+
+static void print_reasons(const char *scene, const char *integ, const fp3_configure_opts *o,
+                          const fp3_configure_result *r) {
+  const fp3_config *c = &r->cfg;
+  char p0[32];
+  fprintf(stderr,
+          "fp3 configure: %s (%zu objects), %s%s: %u instructions per integration, "
+          "estimated %u cycles per later integration of one object\n",
+          scene, r->objects, integ, o->literal ? " (literal)" : "", r->body_insns, r->est_later);
+  if (o->context_per_object)
+    fprintf(stderr, "  %-16s one context per object (%zu object%s; at most %d, more run in "
+                    "batches)\n", param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0),
+            r->objects, r->objects == 1 ? "" : "s", FP3_MAX_CONTEXTS);
+  else
+    fprintf(stderr, "  %-16s the fewest contexts that keep the issue slot busy: ceil(%u cycles "
+                    "/ %u instructions) = %u, at most the %zu object%s\n",
+            param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0), r->est_later,
+            r->body_insns, r->contexts_issue, r->objects, r->objects == 1 ? "" : "s");
+  fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
+                  "(it names %u; compiled for the default %u it names %u)\n",
+          param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
+  const unsigned has[3] = {c->has_add, c->has_sub, c->has_mul};
+  const char *const param[3] = {"HAS_ADD", "HAS_SUB", "HAS_MUL"};
+  for (int u = 0; u < 3; u++) {
+    if (r->unit_pc[u] >= 0)
+      fprintf(stderr, "  %-16s the program has %s (first at pc %d)\n",
+              param_text(param[u], has[u], p0, sizeof p0), unit_name[u], r->unit_pc[u]);
+    else if (u == 0 && has[u])
+      fprintf(stderr, "  %-16s the program has sub (the adder subtracts)\n",
+              param_text(param[u], 1, p0, sizeof p0));
+    else
+      fprintf(stderr, "  %-16s the program has no %s\n", param_text(param[u], 0, p0, sizeof p0),
+              unit_name[u]);
+  }
+  char chosen[16];
+  mode_name(c->mode, chosen, sizeof chosen);
+  fprintf(stderr, "  ROUND=%d FTZ=%d    %s: the cheapest mode that adds at most %g to each object's "
+                  "RNE error (v and s against the exact solution, %u integrations):\n",
+          c->mode.round == FPREF_RTZ, c->mode.ftz ? 1 : 0, chosen, o->budget, o->steps);
+  for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
+    char name[16];
+    mode_name(r->mode[m], name, sizeof name);
+    fprintf(stderr, "                     %-8s error %-10.4g added %-10.3g %-12s FP cores %4u xc2v LUTs%s\n",
+            name, r->err[m], r->added[m], isnan(r->err[m]) ? "(host: no)" : r->allowed[m] ? "allowed" : "over budget",
+            r->luts[m], m == r->chosen ? "  <- chosen (fewest LUTs allowed)" : "");
+  }
+}
+
+int fp3_cmd_configure(int argc, char **argv) {
+  const char *scene = NULL, *outp = NULL;
+  int json = 0;
+  fp3_configure_opts o;
+  fp3_configure_defaults(&o);
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    int r;
+    if (fp3_is_help(argv[i])) {
+      usage(stdout);
+      return 0;
+    }
+    if ((r = fp3_opt_value(argc, argv, &i, "configure", "-o", &v)) != 0 ||
+        (r = fp3_opt_value(argc, argv, &i, "configure", "--output", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      outp = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--integrator", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (!fp3_compile_knows(v)) {
+        fprintf(stderr, "fp3 configure: unknown integrator '%s' (the compiler knows: %s)\n", v,
+                fp3_compile_integrators());
+        return EXIT_USAGE;
+      }
+      o.integrator = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--error-budget", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      double b = strtod(v, &end);
+      if (end == v || *end || errno || !(b > 0.0) || !isfinite(b)) {
+        fprintf(stderr, "fp3 configure: --error-budget '%s': want a positive relative error, "
+                        "e.g. 1e-4\n", v);
+        return EXIT_USAGE;
+      }
+      o.budget = b;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--steps", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      char *end;
+      errno = 0;
+      unsigned long k = strtoul(v, &end, 10);
+      if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > MAX_STEPS) {
+        fprintf(stderr, "fp3 configure: --steps '%s': want 1..%u integrations\n", v, MAX_STEPS);
+        return EXIT_USAGE;
+      }
+      o.steps = (uint32_t)k;
+    } else if (strcmp(argv[i], "--literal") == 0) {
+      o.literal = 1;
+    } else if (strcmp(argv[i], "--context-per-object") == 0) {
+      o.context_per_object = 1;
+    } else if (strcmp(argv[i], "--json") == 0) {
+      json = 1;
+    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+      fprintf(stderr, "fp3 configure: unknown option '%s' (see fp3 configure --help)\n", argv[i]);
+      return EXIT_USAGE;
+    } else if (!scene) {
+      scene = argv[i];
+    } else {
+      fprintf(stderr, "fp3 configure: more than one scene ('%s')\n", argv[i]);
+      return EXIT_USAGE;
+    }
+  }
+  if (!scene) {
+    fprintf(stderr, "fp3 configure: no scene file (see fp3 configure --help)\n");
+    return EXIT_USAGE;
+  }
+  char msg[512];
+  fp3_scene sc;
+  if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 configure: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  fp3_configure_result res;
+  if (fp3_configure(&sc, scene, &o, &res, NULL, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
+    fp3_scene_free(&sc);
+    return EXIT_USAGE;
+  }
+  fp3_scene_free(&sc);
+  char line[256];
+  fp3_configure_line(&res.cfg, line, sizeof line);
+  if (outp) {
+    char text[260];
+    snprintf(text, sizeof text, "%s\n", line);
+    if (fp3_write_text_atomic(outp, text, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 configure: %s\n", msg);
+      return EXIT_FAIL;
+    }
+  }
+  if (json) print_json(scene, o.integrator, &o, &res, line);
+  else {
+    if (!outp) printf("%s\n", line);
+    print_reasons(scene, o.integrator, &o, &res);
+  }
+  return 0;
+}

@@ -1,0 +1,198 @@
+/*
+ * configure.c -- hardware sized to the scene (configure.h).
+ */
+#include "configure.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "analytic.h"
+#include "fp3_isa.h"
+#include "fpenv.h"
+#include "image.h"
+
+/* xc2v LUTs of fp_add and fp_mul at the default latencies, per candidate
+ * mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ): README "FP cores", `make synth`. */
+static const unsigned add_luts[FP3_CONFIGURE_MODES] = {914, 764, 951, 818};
+static const unsigned mul_luts[FP3_CONFIGURE_MODES] = {1356, 1337, 779, 813};
+
+void fp3_configure_defaults(fp3_configure_opts *o) {
+  o->integrator = "rk4";
+  o->literal = 0;
+  o->budget = 1e-4;
+  o->steps = 1000;
+  o->context_per_object = 0;
+}
+
+int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
+  return snprintf(buf, n,
+                  "NUM_CONTEXTS=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u ROUND=%d FTZ=%d",
+                  c->num_contexts, c->num_regs, c->has_add, c->has_sub, c->has_mul,
+                  c->mode.round == FPREF_RTZ ? 1 : 0, c->mode.ftz ? 1 : 0);
+}
+
+/* Highest register a word of img names, or a binding names, plus one. */
+static unsigned regs_named(const fp3_image *img) {
+  unsigned top = 0;
+  for (size_t pc = 0; pc < img->n; pc++) {
+    const int uses = fp3_opc_uses(fp3_insn_opc(img->words[pc]));
+    if (uses <= 0) continue;
+    const unsigned reg[3] = {fp3_insn_rd(img->words[pc]), fp3_insn_ra(img->words[pc]),
+                             fp3_insn_rb(img->words[pc])};
+    const int bit[3] = {FP3_USES_RD, FP3_USES_RA, FP3_USES_RB};
+    for (int f = 0; f < 3; f++)
+      if ((uses & bit[f]) && reg[f] + 1 > top) top = reg[f] + 1;
+  }
+  for (int i = 0; i < FP3_IN_COUNT; i++)
+    if (img->in_reg[i] >= 0 && (unsigned)img->in_reg[i] + 1 > top) top = (unsigned)img->in_reg[i] + 1;
+  for (int i = 0; i < FP3_OUT_COUNT; i++)
+    if (img->out_reg[i] >= 0 && (unsigned)img->out_reg[i] + 1 > top) top = (unsigned)img->out_reg[i] + 1;
+  return top;
+}
+
+/* max_k |x_k - e_k| / max(max_k |e_k|, 1) */
+static double rel_error(double maxdiff, double maxabs) {
+  return maxdiff / (maxabs > 1.0 ? maxabs : 1.0);
+}
+
+/* The error of every candidate mode over all objects (r->err). */
+static int measure_modes(fp3_compiled *c, const fp3_scene *sc, uint32_t steps,
+                         fp3_configure_result *r, char *msg, size_t n) {
+  double *vex = malloc(steps * sizeof *vex), *sex = malloc(steps * sizeof *sex);
+  if (!vex || !sex) {
+    free(vex);
+    free(sex);
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_golden_ref g = fp3_compiled_golden(c);
+  for (int m = 0; m < FP3_CONFIGURE_MODES; m++)
+    r->err[m] = r->added[m] = fpenv_supported(r->mode[m]) ? 0.0 : NAN;
+  for (size_t i = 0; i < sc->n; i++) {
+    const fp3_ship_params *p = &sc->objs[i];
+    double vmax = 0, smax = 0;
+    for (uint32_t k = 1; k <= steps; k++) { /* in the host's default mode */
+      fp3_ship_exact(p->T, p->C, p->m, p->v0, p->s0, (double)k * (double)p->h, &vex[k - 1],
+                     &sex[k - 1]);
+      vmax = fmax(vmax, fabs(vex[k - 1]));
+      smax = fmax(smax, fabs(sex[k - 1]));
+    }
+    double e_rne = 0;
+    for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
+      if (isnan(r->err[m])) continue;
+      fpenv_saved env;
+      if (fpenv_enter(r->mode[m], &env)) continue;
+      double dv = 0, ds = 0;
+      g.start(g.ctx, p);
+      for (uint32_t k = 1; k <= steps; k++) {
+        float v, s;
+        g.step(g.ctx, &v, &s);
+        /* non-finite results count as infinitely wrong */
+        double ev = isfinite(v) ? fabs((double)v - vex[k - 1]) : INFINITY;
+        double es = isfinite(s) ? fabs((double)s - sex[k - 1]) : INFINITY;
+        if (ev > dv) dv = ev;
+        if (es > ds) ds = es;
+      }
+      fpenv_leave(&env);
+      double e = fmax(rel_error(dv, vmax), rel_error(ds, smax));
+      if (m == 0) e_rne = e;
+      if (e > r->err[m]) r->err[m] = e;
+      if (m > 0 && e - e_rne > r->added[m]) r->added[m] = e - e_rne;
+    }
+  }
+  free(vex);
+  free(sex);
+  return 0;
+}
+
+int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
+                  fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n) {
+  memset(r, 0, sizeof *r);
+  if (compiled) *compiled = NULL;
+  if (!(o->budget > 0.0) || !isfinite(o->budget)) {
+    snprintf(msg, n, "the error budget must be a positive number");
+    return -1;
+  }
+  if (o->steps == 0) {
+    snprintf(msg, n, "the accuracy check needs at least one integration");
+    return -1;
+  }
+  const char *integ = o->integrator ? o->integrator : "rk4";
+  fp3_compile_opts co;
+  fp3_compile_defaults(&co);
+  if (o->literal) co.fold = co.drop_zero = 0;
+
+  /* the program as fp3 run --scene compiles it for the default build */
+  fp3_compiled *c = NULL;
+  if (fp3_compile(sc, integ, &co, scene_name, &c, msg, n)) return -1;
+  r->regs_default = regs_named(fp3_compiled_image(c));
+  r->est_first = fp3_compiled_stats(c)->est_cycles_first;
+  r->est_later = fp3_compiled_stats(c)->est_cycles_later;
+  r->body_insns = fp3_compiled_stats(c)->body_insns;
+
+  /* the fewest registers that lose no cycle; the build compiles for them */
+  r->cfg.num_regs = co.num_regs;
+  for (unsigned k = 4; k <= r->regs_default && k < co.num_regs; k++) {
+    fp3_compile_opts ko = co;
+    ko.num_regs = k;
+    fp3_compiled *ck = NULL;
+    char kmsg[256];
+    if (fp3_compile(sc, integ, &ko, scene_name, &ck, kmsg, sizeof kmsg)) continue;
+    const fp3_compile_stats *st = fp3_compiled_stats(ck);
+    if (st->est_cycles_first == r->est_first && st->est_cycles_later == r->est_later) {
+      fp3_compiled_free(c);
+      c = ck;
+      r->cfg.num_regs = k;
+      break;
+    }
+    fp3_compiled_free(ck);
+  }
+  const fp3_image *img = fp3_compiled_image(c);
+  r->regs_used = regs_named(img);
+
+  /* units */
+  r->unit_pc[0] = r->unit_pc[1] = r->unit_pc[2] = -1;
+  for (size_t pc = 0; pc < img->n; pc++) {
+    const unsigned opc = fp3_insn_opc(img->words[pc]);
+    const int u = opc == FP3_OP_ADD ? 0 : opc == FP3_OP_SUB ? 1 : opc == FP3_OP_MUL ? 2 : -1;
+    if (u >= 0 && r->unit_pc[u] < 0) r->unit_pc[u] = (int)pc;
+  }
+  r->cfg.has_add = r->unit_pc[0] >= 0 || r->unit_pc[1] >= 0;
+  r->cfg.has_sub = r->unit_pc[1] >= 0;
+  r->cfg.has_mul = r->unit_pc[2] >= 0;
+
+  r->objects = sc->n;
+  /* contexts that keep the issue slot busy: one object's integration
+   * takes est_later cycles for body_insns issues */
+  r->contexts_issue = (r->est_later + r->body_insns - 1) / r->body_insns;
+  if (r->contexts_issue < 1) r->contexts_issue = 1;
+  size_t nc = o->context_per_object ? FP3_MAX_CONTEXTS : r->contexts_issue;
+  if (nc > FP3_MAX_CONTEXTS) nc = FP3_MAX_CONTEXTS;
+  if (nc > sc->n) nc = sc->n;
+  r->cfg.num_contexts = (unsigned)nc;
+  r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
+  r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;
+  r->cfg.mul_latency = FP3_DEFAULT_MUL_LATENCY;
+
+  /* rounding and subnormals */
+  for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
+    r->mode[m].round = (m & 1) ? FPREF_RTZ : FPREF_RNE;
+    r->mode[m].ftz = (m & 2) ? 1 : 0;
+    r->luts[m] = (r->cfg.has_add ? add_luts[m] : 0) + (r->cfg.has_mul ? mul_luts[m] : 0);
+  }
+  if (measure_modes(c, sc, o->steps, r, msg, n)) {
+    fp3_compiled_free(c);
+    return -1;
+  }
+  r->chosen = 0;
+  for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
+    r->allowed[m] = m == 0 || (!isnan(r->err[m]) && r->added[m] <= o->budget);
+    if (r->allowed[m] && r->luts[m] < r->luts[r->chosen]) r->chosen = m;
+  }
+  r->cfg.mode = r->mode[r->chosen];
+  if (compiled) *compiled = c;
+  else fp3_compiled_free(c);
+  return 0;
+}

@@ -1,0 +1,111 @@
+/*
+ * configure.h -- hardware sized to the scene (`fp3 configure`, issue 7
+ * part 3): from a scene and an integrator, the RTL parameters of a build
+ * that runs the scene's compiled program and nothing more.
+ *
+ * The scene is compiled as `fp3 run --scene` compiles it (compile.h), and
+ * each parameter follows from the compiled program or the scene:
+ *
+ *  - HAS_ADD, HAS_SUB, HAS_MUL: 1 when the program has an add (or sub), a
+ *    sub, a mul instruction (the prologue included);
+ *  - NUM_REGS: the fewest registers k (at least 4, the compiler's minimum)
+ *    into which the compiler schedules the program without losing a cycle:
+ *    its estimated cycles of the first and of each later integration of one
+ *    object equal those of the compilation with the default NUM_REGS.  A
+ *    build with NUM_REGS = k compiles exactly that program (`fp3 run
+ *    --scene` compiles for the NUM_REGS it reads back from the hardware),
+ *    and the program names registers below k only.  (The compiler takes
+ *    the least recently written free register, so with the default 32 it
+ *    spreads a long body over more registers than it needs.)
+ *  - NUM_CONTEXTS: the fewest contexts that keep the single issue slot
+ *    busy, ceil(E / I) for E the estimated cycles of a later integration
+ *    of one object and I its instructions (contexts interleave: with that
+ *    many objects in flight one instruction issues every cycle; README
+ *    "Many objects": more contexts add area, not speed), at most the
+ *    objects and FP3_MAX_CONTEXTS; a larger scene runs in batches.  With
+ *    opts.context_per_object: one context per object, min(objects, 64),
+ *    the whole scene in flight at once (64 contexts are several times the
+ *    area of the default 8);
+ *  - ROUND, FTZ: the cheapest FP core mode whose results stay within the
+ *    error budget.  Each candidate mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ) runs
+ *    the program's golden model (fp3_compiled_golden, in that mode through
+ *    fpenv.h) for every object and `steps` integrations; its error is the
+ *    largest, over objects and over v and s, of
+ *        max_k |x_k - exact(t_k)| / max(max_k |exact(t_k)|, 1)
+ *    (analytic.h, k = 1 .. steps).  RNE with subnormals (the default build)
+ *    is always allowed; its error is the integrator's and binary32's own
+ *    (the paper's s = s + h v1 is first order: about 1e-3 after 1000 steps
+ *    of 1/60 s).  The budget is what a cheaper mode may add to it: a mode
+ *    is allowed when, for every object, its error is at most that
+ *    object's RNE error + budget.  Of the allowed modes the one with the
+ *    fewest LUTs of the units the program needs wins (fp_add and fp_mul on
+ *    xc2v, README "FP cores": FTZ saves about 40 % of the multiplier, RTZ
+ *    little); a tie goes to the earlier mode in the order above.
+ *
+ * IMEM_DEPTH and the latencies stay at their defaults (the compiler
+ * schedules for the default latencies).
+ */
+#ifndef FP3_CONFIGURE_H
+#define FP3_CONFIGURE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "compile.h"
+#include "engine.h"
+#include "objects.h"
+
+/* The candidate FP core modes, in tie-break order. */
+#define FP3_CONFIGURE_MODES 4
+
+/* Options of fp3_configure. */
+typedef struct fp3_configure_opts {
+  const char *integrator; /* compile.h integrator name (default "rk4")     */
+  int literal;            /* 1: no folding, no zero-term removal (the      */
+                          /* paper's operations, fp3 compile --literal)    */
+  double budget;          /* error budget, relative (> 0)                  */
+  uint32_t steps;         /* integrations of the accuracy check (>= 1)     */
+  int context_per_object; /* 1: NUM_CONTEXTS = min(objects, 64)            */
+} fp3_configure_opts;
+
+/* integrator "rk4", literal 0, budget 1e-4, steps 1000, contexts by the
+ * issue rule. */
+void fp3_configure_defaults(fp3_configure_opts *o);
+
+/* What fp3_configure derived, and why. */
+typedef struct fp3_configure_result {
+  fp3_config cfg;          /* the parameters; imem_depth and latencies at  */
+                           /* their defaults                               */
+  size_t objects;          /* objects in the scene                         */
+  int unit_pc[3];          /* first pc of an add, sub, mul; -1: none        */
+  unsigned regs_default;   /* registers named (highest + 1) when compiled  */
+                           /* for the default NUM_REGS                     */
+  unsigned regs_used;      /* ... when compiled for cfg.num_regs           */
+  unsigned est_first;      /* estimated cycles, first integration          */
+  unsigned est_later;      /* ... each later one (one object)              */
+  unsigned body_insns;     /* instructions per integration                 */
+  unsigned contexts_issue; /* contexts that fill the issue slot, ceil(E/I) */
+  fpref_mode mode[FP3_CONFIGURE_MODES]; /* RNE, RTZ, RNE+FTZ, RTZ+FTZ       */
+  double err[FP3_CONFIGURE_MODES];  /* relative error (max over objects);  */
+                                    /* NAN: the host cannot run the mode   */
+  double added[FP3_CONFIGURE_MODES]; /* max over objects of the error minus */
+                                     /* the object's RNE error (0 for RNE) */
+  int allowed[FP3_CONFIGURE_MODES]; /* 1: added <= budget (RNE always)     */
+  unsigned luts[FP3_CONFIGURE_MODES]; /* xc2v LUTs of the needed FP cores   */
+  int chosen;              /* index of the mode in cfg.mode                */
+} fp3_configure_result;
+
+/* Derive the parameters for scene sc (scene_name: for the program's
+ * header).  Returns 0 and *r, or -1 with a message: unknown integrator,
+ * empty scene, bad options (budget not a positive finite number, steps 0),
+ * out of memory.  *compiled (if not NULL) receives the program compiled
+ * for the derived NUM_REGS (free with fp3_compiled_free). */
+int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
+                  fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n);
+
+/* The parameters as one line of make variables, no newline:
+ * "NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=0 FTZ=1".
+ * Returns the length (as snprintf). */
+int fp3_configure_line(const fp3_config *c, char *buf, size_t n);
+
+#endif /* FP3_CONFIGURE_H */

@@ -1,0 +1,316 @@
+/*
+ * test_configure.c -- hardware sized to the scene (sw/configure.c) and the
+ * missing-unit check (fp3_config_check_program, sw/engine.c):
+ *
+ *  - the check names the unit, the pc and the parameter, for each unit and
+ *    for sub on an adder without HAS_SUB; a complete build accepts all;
+ *    fp3_engine_load refuses; the ISS reports every unit;
+ *  - fp3_configure derives exact parameters for the example scenes
+ *    (scenes/drift.scene: no sub; coast, harbour) and synthetic ones
+ *    (one object, 100 objects one context each, euler), the ROUND/FTZ rule
+ *    follows the budget, bad options fail;
+ *  - the scene-sized Verilated build `drift` (mk/rtl.mk RTL_CFG_drift:
+ *    NUM_CONTEXTS=4 NUM_REGS=11 HAS_SUB=0 ROUND=1 FTZ=1) reports exactly
+ *    the parameters fp3 configure derives for scenes/drift.scene, runs that
+ *    scene's compiled program bit-exact with its golden model, refuses a
+ *    program with sub naming HAS_SUB, and -- loaded past the host's check
+ *    -- stops such a program with ILLEGAL_INSN at the sub's pc.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "compile.h"
+#include "configure.h"
+#include "engine.h"
+#include "fp3_isa.h"
+#include "image.h"
+#include "objects.h"
+#include "../sim/fp3_model.h"
+
+extern const fp3_model_ops fp3_model_drift;
+
+static fp3_config full_config(void) {
+  fp3_config c;
+  memset(&c, 0, sizeof c);
+  c.num_contexts = 1;
+  c.num_regs = 32;
+  c.imem_depth = 256;
+  c.has_add = c.has_sub = c.has_mul = 1;
+  return c;
+}
+
+static void test_check_units(void **state) {
+  (void)state;
+  const uint64_t prog[] = {
+      fp3_insn_make(FP3_OP_LI, 1, 0, 0, 0x3F800000u), fp3_insn_make(FP3_OP_ADD, 2, 1, 1, 0),
+      fp3_insn_make(FP3_OP_MUL, 3, 2, 1, 0),          fp3_insn_make(FP3_OP_SUB, 4, 3, 1, 0),
+      fp3_insn_make(FP3_OP_ENDI, 0, 0, 0, 1),
+  };
+  const size_t n = sizeof prog / sizeof prog[0];
+  char msg[256];
+  fp3_config c = full_config();
+  assert_int_equal(fp3_config_check_program(&c, prog, n, msg, sizeof msg), 0);
+  assert_int_equal(fp3_config_check_program(&c, prog, 0, msg, sizeof msg), 0);
+
+  c.has_mul = 0;
+  assert_int_equal(fp3_config_check_program(&c, prog, n, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses mul (pc 2), but this hardware has no multiplier "
+                           "(built with HAS_MUL=0)");
+  /* only the words given count */
+  assert_int_equal(fp3_config_check_program(&c, prog, 2, msg, sizeof msg), 0);
+
+  c = full_config();
+  c.has_sub = 0;
+  assert_int_equal(fp3_config_check_program(&c, prog, n, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses sub (pc 3), but this hardware has an adder that "
+                           "cannot subtract (built with HAS_SUB=0)");
+  assert_int_equal(fp3_config_check_program(&c, prog, 3, msg, sizeof msg), 0);
+
+  c = full_config();
+  c.has_add = 0;
+  assert_int_equal(fp3_config_check_program(&c, prog, n, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses add (pc 1), but this hardware has no adder "
+                           "(built with HAS_ADD=0)");
+  /* sub needs the adder too */
+  const uint64_t sub_only[] = {fp3_insn_make(FP3_OP_NOP, 0, 0, 0, 0),
+                               fp3_insn_make(FP3_OP_SUB, 1, 2, 3, 0)};
+  c.has_sub = 1;
+  assert_int_equal(fp3_config_check_program(&c, sub_only, 2, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "uses sub (pc 1)"));
+  assert_non_null(strstr(msg, "HAS_ADD=0"));
+}
+
+static void test_engine_load_refuses(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_iss_new();
+  assert_non_null(e);
+  assert_int_equal(e->config.has_add, 1);
+  assert_int_equal(e->config.has_sub, 1);
+  assert_int_equal(e->config.has_mul, 1);
+  const uint64_t prog[] = {fp3_insn_make(FP3_OP_MUL, 1, 2, 3, 0),
+                           fp3_insn_make(FP3_OP_HALT, 0, 0, 0, 0)};
+  assert_int_equal(fp3_engine_load(e, prog, 2), 0);
+  e->config.has_mul = 0; /* as if the build had no multiplier */
+  assert_int_equal(fp3_engine_load(e, prog, 2), -1);
+  assert_non_null(strstr(fp3_engine_error(e), "uses mul (pc 0)"));
+  assert_non_null(strstr(fp3_engine_error(e), "HAS_MUL=0"));
+  fp3_engine_free(e);
+}
+
+static void read_scene(const char *path, fp3_scene *sc) {
+  char msg[300];
+  if (fp3_scene_read(path, 1.0f / 60.0f, sc, msg, sizeof msg)) fail_msg("%s", msg);
+}
+
+static fp3_configure_result configure(const fp3_scene *sc, const fp3_configure_opts *o) {
+  fp3_configure_result r;
+  char msg[300];
+  if (fp3_configure(sc, "test", o, &r, NULL, msg, sizeof msg)) fail_msg("%s", msg);
+  return r;
+}
+
+static void expect_line(const fp3_configure_result *r, const char *want) {
+  char line[256];
+  fp3_configure_line(&r->cfg, line, sizeof line);
+  assert_string_equal(line, want);
+}
+
+static void test_derive_scenes(void **state) {
+  (void)state;
+  fp3_configure_opts o;
+  fp3_configure_defaults(&o);
+  static const struct {
+    const char *path, *line;
+  } cases[] = {
+      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1"},
+      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1"},
+      {"scenes/harbour.scene",
+       "NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1"},
+  };
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    fp3_scene sc;
+    read_scene(cases[i].path, &sc);
+    fp3_configure_result r = configure(&sc, &o);
+    expect_line(&r, cases[i].line);
+    /* RNE is the reference: allowed, nothing added */
+    assert_true(r.allowed[0]);
+    assert_true(r.added[0] == 0.0);
+    assert_true(r.err[0] > 0.0 && r.err[0] < 1e-2);
+    fp3_scene_free(&sc);
+  }
+
+  /* drift: where the units are (pcs of the compiled program) */
+  fp3_scene sc;
+  read_scene("scenes/drift.scene", &sc);
+  fp3_configure_result r = configure(&sc, &o);
+  assert_int_equal(r.unit_pc[1], -1);
+  assert_true(r.unit_pc[0] >= 0 && r.unit_pc[2] >= 0);
+  assert_int_equal(r.body_insns, 4);
+  assert_int_equal(r.contexts_issue, 4);
+
+  /* a budget no mode meets but RNE's own: only FTZ, which adds nothing
+   * here (no subnormals), is allowed besides RNE */
+  o.budget = 1e-15;
+  r = configure(&sc, &o);
+  assert_false(r.allowed[1]);
+  assert_true(r.allowed[2]);
+  assert_int_equal(r.cfg.mode.round, FPREF_RNE);
+  assert_int_equal(r.cfg.mode.ftz, 1);
+
+  /* one object: one context */
+  fp3_scene one = {sc.objs, 1};
+  fp3_configure_defaults(&o);
+  r = configure(&one, &o);
+  assert_int_equal(r.cfg.num_contexts, 1);
+  fp3_scene_free(&sc);
+
+  /* 100 objects, one context each: 64 */
+  assert_int_equal(fp3_scene_generate(5, 100, 1.0f / 60.0f, &sc), 0);
+  o.context_per_object = 1;
+  r = configure(&sc, &o);
+  assert_int_equal(r.cfg.num_contexts, 64);
+  o.context_per_object = 0;
+  r = configure(&sc, &o);
+  assert_int_equal(r.cfg.num_contexts, 4);
+  /* euler: 6 instructions, 14 cycles: 3 contexts; 7 registers */
+  o.integrator = "euler";
+  r = configure(&sc, &o);
+  expect_line(&r, "NUM_CONTEXTS=3 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1");
+
+  /* bad options and input */
+  char msg[300];
+  fp3_configure_result bad;
+  o.integrator = "leapfrog";
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "leapfrog"));
+  fp3_configure_defaults(&o);
+  o.budget = 0.0;
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  o.budget = NAN;
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  fp3_configure_defaults(&o);
+  o.steps = 0;
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  fp3_scene empty = {sc.objs, 0};
+  fp3_configure_defaults(&o);
+  assert_int_equal(fp3_configure(&empty, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  fp3_scene_free(&sc);
+}
+
+/* The compiled program registers: the one the derived NUM_REGS makes
+ * fp3 run --scene compile must name registers below it. */
+static void test_registers_fit(void **state) {
+  (void)state;
+  fp3_configure_opts o;
+  fp3_configure_defaults(&o);
+  const char *ig[] = {"euler", "symeuler", "rk2", "rk4"};
+  fp3_scene sc;
+  assert_int_equal(fp3_scene_generate(11, 16, 1.0f / 60.0f, &sc), 0);
+  for (size_t i = 0; i < 4; i++) {
+    o.integrator = ig[i];
+    fp3_configure_result r;
+    fp3_compiled *c = NULL;
+    char msg[300];
+    assert_int_equal(fp3_configure(&sc, "t", &o, &r, &c, msg, sizeof msg), 0);
+    assert_true(r.regs_used <= r.cfg.num_regs);
+    assert_true(r.cfg.num_regs <= r.regs_default);
+    /* the program compiled for cfg.num_regs, as on such a build */
+    fp3_compile_opts co;
+    fp3_compile_defaults(&co);
+    co.num_regs = r.cfg.num_regs;
+    fp3_compiled *c2 = NULL;
+    assert_int_equal(fp3_compile(&sc, ig[i], &co, "t", &c2, msg, sizeof msg), 0);
+    assert_string_equal(fp3_compiled_text(c), fp3_compiled_text(c2));
+    assert_int_equal(fp3_compiled_stats(c2)->est_cycles_later, r.est_later);
+    fp3_compiled_free(c);
+    fp3_compiled_free(c2);
+  }
+  fp3_scene_free(&sc);
+}
+
+/* The scene-sized build runs its scene bit-exact and refuses the rest. */
+static void test_sized_rtl(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_drift, NULL);
+  assert_non_null(e);
+  fp3_scene sc;
+  read_scene("scenes/drift.scene", &sc);
+  fp3_configure_opts o;
+  fp3_configure_defaults(&o);
+  fp3_configure_result r;
+  fp3_compiled *c = NULL;
+  char msg[300];
+  assert_int_equal(fp3_configure(&sc, "scenes/drift.scene", &o, &r, &c, msg, sizeof msg), 0);
+  /* the model reports the derived parameters */
+  assert_int_equal(e->config.num_contexts, r.cfg.num_contexts);
+  assert_int_equal(e->config.num_regs, r.cfg.num_regs);
+  assert_int_equal(e->config.has_add, r.cfg.has_add);
+  assert_int_equal(e->config.has_sub, 0);
+  assert_int_equal(e->config.has_sub, r.cfg.has_sub);
+  assert_int_equal(e->config.has_mul, r.cfg.has_mul);
+  assert_int_equal(e->config.mode.round, r.cfg.mode.round);
+  assert_int_equal(e->config.mode.ftz, r.cfg.mode.ftz);
+
+  /* the scene's program, bit-exact, every object, every integration */
+  fp3_golden_ref g = fp3_compiled_golden(c);
+  fp3_objects_result res;
+  if (fp3_run_objects(e, fp3_compiled_image(c), &sc, 300, e->config.mode, &g, &res, msg,
+                      sizeof msg))
+    fail_msg("%s", msg);
+  assert_int_equal(res.objects, 8);
+  assert_int_equal(res.batches, 2);
+  assert_int_equal(res.error, FP3_ERR_NONE);
+  assert_int_equal(res.mismatches, 0);
+  fp3_objects_result_free(&res);
+  fp3_compiled_free(c);
+
+  /* a scene with drag needs sub: refused before running, naming it */
+  fp3_scene coast;
+  read_scene("scenes/coast.scene", &coast);
+  fp3_compile_opts co;
+  fp3_compile_defaults(&co);
+  co.num_regs = e->config.num_regs;
+  assert_int_equal(fp3_compile(&coast, "rk4", &co, "coast", &c, msg, sizeof msg), 0);
+  fp3_golden_ref gc = fp3_compiled_golden(c);
+  assert_int_equal(fp3_run_objects(e, fp3_compiled_image(c), &coast, 10, e->config.mode, &gc,
+                                   &res, msg, sizeof msg),
+                   -1);
+  assert_non_null(strstr(msg, "uses sub (pc "));
+  assert_non_null(strstr(msg, "built with HAS_SUB=0"));
+  fp3_objects_result_free(&res);
+
+  /* past the host's check the RTL itself stops at the sub */
+  const fp3_image *img = fp3_compiled_image(c);
+  uint32_t sub_pc = UINT32_MAX;
+  for (size_t pc = 0; pc < img->n && sub_pc == UINT32_MAX; pc++)
+    if (fp3_insn_opc(img->words[pc]) == FP3_OP_SUB) sub_pc = (uint32_t)pc;
+  assert_true(sub_pc != UINT32_MAX);
+  assert_int_equal(e->ops->load_program(e, img->words, img->n), 0);
+  fp3_status st;
+  assert_int_equal(fp3_engine_run(e, 5, NULL, &st), 0);
+  assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
+  assert_int_equal(st.fault_pc, sub_pc);
+  fp3_compiled_free(c);
+  fp3_scene_free(&coast);
+  fp3_scene_free(&sc);
+  fp3_engine_free(e);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+      cmocka_unit_test(test_check_units),
+      cmocka_unit_test(test_engine_load_refuses),
+      cmocka_unit_test(test_derive_scenes),
+      cmocka_unit_test(test_registers_fit),
+      cmocka_unit_test(test_sized_rtl),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
