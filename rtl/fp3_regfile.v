@@ -134,13 +134,15 @@ module fp3_regfile #(
   // A plain expression, not a function: a continuous assignment is
   // re-evaluated only when its operands change, and a function's body is
   // not an operand (Icarus relies on that).
-`define FP3_READ(x, q0, q1, q2) \
+  wire [1:0] a_lvt = lvt_q[a_idx_q];   // one LVT read per port
+  wire [1:0] b_lvt = lvt_q[b_idx_q];
+`define FP3_READ(x, sel, q0, q1, q2) \
   ((wv_q[0] && wi0_q == (x)) ? wd0_q : \
    (wv_q[1] && wi1_q == (x)) ? wd1_q : \
    (wv_q[2] && wi2_q == (x)) ? wd2_q : \
-   (lvt_q[x] == 2'd0) ? (q0) : (lvt_q[x] == 2'd1) ? (q1) : (q2))
-  assign ra_data_o = `FP3_READ(a_idx_q, q00, q10, q20);
-  assign rb_data_o = `FP3_READ(b_idx_q, q01, q11, q21);
+   ((sel) == 2'd0) ? (q0) : ((sel) == 2'd1) ? (q1) : (q2))
+  assign ra_data_o = `FP3_READ(a_idx_q, a_lvt, q00, q10, q20);
+  assign rb_data_o = `FP3_READ(b_idx_q, b_lvt, q01, q11, q21);
 `undef FP3_READ
 
   assign busy_o = busy_q;
