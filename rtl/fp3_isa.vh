@@ -26,6 +26,7 @@ localparam [7:0] OP_LI   = 8'h04; localparam [3:0] OPUSES_LI   = 4'h9; localpara
 localparam [7:0] OP_MOV  = 8'h05; localparam [3:0] OPUSES_MOV  = 4'h3; localparam [1:0] OPUNIT_MOV  = 2'd3; // mov: rd = ra (bit copy)
 localparam [7:0] OP_ENDI = 8'h06; localparam [3:0] OPUSES_ENDI = 4'h8; localparam [1:0] OPUNIT_ENDI = 2'd0; // endi: end of integration; loop to imm unless the last
 localparam [7:0] OP_HALT = 8'h07; localparam [3:0] OPUSES_HALT = 4'h0; localparam [1:0] OPUNIT_HALT = 2'd0; // halt: stop issuing; the run ends when results drain
+localparam [7:0] OP_BEQ  = 8'h08; localparam [3:0] OPUSES_BEQ  = 4'hE; localparam [1:0] OPUNIT_BEQ  = 2'd0; // beq: continue at imm (ahead) if ra, rb are bit-identical
 
 // Decode an opcode: {known, unit[1:0], uses[3:0]}; 0 for an unknown one.
 function [6:0] isa_decode;
@@ -40,6 +41,7 @@ function [6:0] isa_decode;
       OP_MOV : isa_decode = {1'b1, OPUNIT_MOV , OPUSES_MOV };
       OP_ENDI: isa_decode = {1'b1, OPUNIT_ENDI, OPUSES_ENDI};
       OP_HALT: isa_decode = {1'b1, OPUNIT_HALT, OPUSES_HALT};
+      OP_BEQ : isa_decode = {1'b1, OPUNIT_BEQ , OPUSES_BEQ };
       default: isa_decode = 7'd0;
     endcase
   end

@@ -17,7 +17,11 @@
 //           round-robin among those with room in their two-entry queue
 //           and no read in flight.  The fetch PC follows the words as they
 //           arrive: after an endi it is the loop target (the last endi's
-//           extra words are dropped when the context stops).
+//           extra words are dropped when the context stops).  Behind a
+//           beq its context fetches nothing until the branch is resolved:
+//           the operands are compared in the read stage (fp3_top) and the
+//           outcome, registered, comes back on br_*_i two cycles after the
+//           issue; a taken beq moves the fetch PC to its target.
 //   ready   For the instruction at the head of each queue: legal, sources
 //           not busy (RAW) and destination not busy (WAW), where a busy
 //           register that is written back in this cycle or the next counts
@@ -37,7 +41,8 @@
 // A run ends (DONE) when every started context has stopped -- last endi,
 // halt or an error -- and no result is in flight.  Errors, per context: an
 // illegal instruction (unknown opcode, a nonzero unused field, a register
-// >= NUM_REGS, an endi target outside the memory) at the head of its queue,
+// >= NUM_REGS, an endi target outside the memory, a beq target not ahead of
+// it or outside the memory) at the head of its queue,
 // or a PC running off the end of the memory, stop that context and record
 // its faulting PC.
 //
@@ -89,6 +94,11 @@ module fp3_scheduler #(
   input  wire [2:0]                   wbn_valid_i,   // ... in the next cycle
   input  wire [3*(CW+IW)-1:0]         wbn_idx_i,
   input  wire                         idle_i,
+  // a beq issued two cycles ago, resolved: its context and outcome
+  input  wire                         br_valid_i,
+  input  wire [CW-1:0]                br_ctx_i,
+  input  wire                         br_taken_i,
+  input  wire [AW-1:0]                br_target_i,
   // issue to the register file and the arithmetic unit
   output wire                         issue_o,
   output wire [CW-1:0]                issue_ctx_o,
@@ -99,7 +109,8 @@ module fp3_scheduler #(
   output wire                         issue_sub_o,
   output wire                         issue_imm_o,   // the move path takes the immediate
   output wire [31:0]                  imm_o,
-  output wire                         endi_o         // the issued instruction is an endi
+  output wire                         endi_o,        // the issued instruction is an endi
+  output wire                         beq_o          // ... a beq
 );
 `include "fp3_isa.vh"
 
@@ -115,6 +126,7 @@ module fp3_scheduler #(
   reg [AW-1:0] p1_q [0:NC-1];
   reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
   reg [NC-1:0] fend_q;              // fetched the last word of the memory
+  reg [NC-1:0] bwait_q;             // fetched a beq, not yet resolved
   reg [NC-1:0] ready_q;             // head was ready (computed last cycle)
   reg [31:0]   sdone_q[0:NC-1];     // integrations completed
   reg [NC-1:0] final_q;             // the next endi is the last of the run
@@ -189,7 +201,9 @@ module fp3_scheduler #(
                    (dec[5:4] != UNIT_MUL || HAS_MUL != 0);
       assign legal[c] = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
                         reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
-                        (opc != OP_ENDI || imm < IMEM_DEPTH);
+                        (opc != OP_ENDI || imm < IMEM_DEPTH) &&
+                        (opc != OP_BEQ || (imm < IMEM_DEPTH &&
+                                           imm > {{(32-AW){1'b0}}, p0_q[c]}));
 
       // What issuing the head does to its context, decided per context so
       // that the state updates need no multiplexer behind the arbiter.
@@ -284,13 +298,14 @@ module fp3_scheduler #(
   assign issue_imm_o  = g_opc == OP_LI;
   assign imm_o        = g_imm;
   assign endi_o       = grant && g_endi;
+  assign beq_o        = grant && g_opc == OP_BEQ;
 
   // ---- fetch step ----------------------------------------------------------
   // A context may fetch when it has room for the word (an entry free, not
   // counting one it may issue now: that would put the arbiter in front of
   // the memory address) and no read in flight.
   wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
-  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving;
+  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving & ~bwait_q;
   wire [CW:0]   fpick = rr_pick(fetch_req, at_or_after(frr_q));
   wire          fetch = fpick[CW] && running_o;
   wire [CW-1:0] f     = fpick[CW-1:0];
@@ -299,6 +314,7 @@ module fp3_scheduler #(
   // The arriving word decides where its context fetches next.
   wire [7:0]    a_opc   = imem_word[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          a_endi  = a_opc == OP_ENDI;
+  wire          a_beq   = a_opc == OP_BEQ;
   wire          a_atend = {{(32-AW){1'b0}}, fpcq_q} == IMEM_DEPTH - 1;
   wire [AW-1:0] a_next  = a_endi ? imem_word[AW-1:0] : fpcq_q + {{(AW-1){1'b0}}, 1'b1};
 
@@ -333,6 +349,7 @@ module fp3_scheduler #(
       v0_q      <= {NC{1'b0}};
       v1_q      <= {NC{1'b0}};
       fend_q    <= {NC{1'b0}};
+      bwait_q   <= {NC{1'b0}};
       ready_q   <= {NC{1'b0}};
       final_q   <= {NC{1'b0}};
       fvalid_q  <= 1'b0;
@@ -369,6 +386,7 @@ module fp3_scheduler #(
         v0_q      <= {NC{1'b0}};
         v1_q      <= {NC{1'b0}};
         fend_q    <= {NC{1'b0}};
+        bwait_q   <= {NC{1'b0}};
         ready_q   <= {NC{1'b0}};
         final_q   <= {NC{steps_i == 32'd1}};
         fvalid_q  <= 1'b0;
@@ -415,6 +433,17 @@ module fp3_scheduler #(
           end
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
+          if (a_beq) bwait_q[k] <= 1'b1;
+        end
+        // A resolved beq releases its context's fetch, at its target if
+        // taken (inside the memory: legal targets are).  Its word arrived
+        // at least three cycles ago, so no arriving word competes here.
+        if (br_valid_i && br_ctx_i == k[CW-1:0]) begin
+          bwait_q[k] <= 1'b0;
+          if (br_taken_i) begin
+            fpc_q[k]  <= br_target_i;
+            fend_q[k] <= 1'b0;
+          end
         end
       end
 

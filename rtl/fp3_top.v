@@ -127,7 +127,10 @@ module fp3_top #(
   wire [XW-1:0] ra, rb, rd;
   wire [CW-1:0] issue_ctx;
   wire          idle;
-  wire          issue, issue_sub, issue_imm, endi;
+  wire          issue, issue_sub, issue_imm, endi, beq;
+  reg           br_valid_q, br_taken_q;   // beq resolution (read stage)
+  reg [CW-1:0]  br_ctx_q;
+  reg [AW-1:0]  br_target_q;
   wire [1:0]    issue_unit;
   wire [31:0]   imm;
   wire [(1<<XW)-1:0] busy;
@@ -166,6 +169,10 @@ module fp3_top #(
     .wbn_valid_i      ({movn_valid, muln_valid, addn_valid}),
     .wbn_idx_i        ({movn_idx, muln_idx, addn_idx}),
     .idle_i           (idle),
+    .br_valid_i       (br_valid_q),
+    .br_ctx_i         (br_ctx_q),
+    .br_taken_i       (br_taken_q),
+    .br_target_i      (br_target_q),
     .issue_o          (issue),
     .issue_ctx_o      (issue_ctx),
     .ra_o             (ra),
@@ -175,7 +182,8 @@ module fp3_top #(
     .issue_sub_o      (issue_sub),
     .issue_imm_o      (issue_imm),
     .imm_o            (imm),
-    .endi_o           (endi)
+    .endi_o           (endi),
+    .beq_o            (beq)
   );
 
   // ---- register banks ------------------------------------------------------
@@ -216,14 +224,34 @@ module fp3_top #(
   reg [1:0]    rd_unit_q;
   reg [XW-1:0] rd_idx_q;
   reg [31:0]   rd_immval_q;
+  reg          rd_beq_q;
+  reg [CW-1:0] rd_ctx_q;
   always @(posedge clk_i) begin
-    if (rst_i) rd_valid_q <= 1'b0;
-    else       rd_valid_q <= issue && issue_unit != UNIT_NONE;
+    if (rst_i) begin
+      rd_valid_q <= 1'b0;
+      rd_beq_q   <= 1'b0;
+    end else begin
+      rd_valid_q <= issue && issue_unit != UNIT_NONE;
+      rd_beq_q   <= beq;
+    end
+    rd_ctx_q    <= issue_ctx;
     rd_unit_q   <= issue_unit;
     rd_sub_q    <= issue_sub;
     rd_imm_q    <= issue_imm;
     rd_immval_q <= imm;
     rd_idx_q    <= rd;
+  end
+
+  // ---- branch resolution -------------------------------------------------
+  // A beq's operands, read like any others, are compared here (a 32-bit
+  // equality of bit patterns) and the outcome registered: the scheduler
+  // sees it two cycles after the issue.
+  always @(posedge clk_i) begin
+    if (rst_i) br_valid_q <= 1'b0;
+    else       br_valid_q <= rd_beq_q;
+    br_taken_q  <= ra_data == rb_data;
+    br_ctx_q    <= rd_ctx_q;
+    br_target_q <= rd_immval_q[AW-1:0];
   end
 
   // ---- arithmetic unit -----------------------------------------------------

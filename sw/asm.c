@@ -1,7 +1,8 @@
 /*
  * asm.c -- the FP3 assembler (syntax in asm.h).
  *
- * One pass over the lines builds the words; `endi LABEL` records a fixup
+ * One pass over the lines builds the words; `endi LABEL` and `beq ra, rb,
+ * LABEL` record a fixup
  * that is resolved at the end, so labels may be used before they are
  * defined.  Register aliases must be defined before they are used.  Every
  * error is collected with its line and the whole assembly fails if any.
@@ -202,9 +203,11 @@ int fp3_asm_literal(const char *text, uint32_t *bits, char *why, size_t n) {
   return 0;
 }
 
-/* endi operand: a label (fixup) or a number. */
-static int parse_target(asm_state *st, const char *s, int line,
+/* endi or beq target operand: a label (fixup) or a number.  A beq's
+ * target must lie ahead of it. */
+static int parse_target(asm_state *st, unsigned opc, const char *s, int line,
                         uint32_t *imm, int *need_fixup) {
+  const char *mn = fp3_opc_mnemonic(opc);
   *need_fixup = 0;
   if (isdigit((unsigned char)s[0])) {
     char *end;
@@ -215,8 +218,12 @@ static int parse_target(asm_state *st, const char *s, int line,
       return -1;
     }
     if (v >= FP3_DEFAULT_IMEM_DEPTH) {
-      add_error(st, line, "endi target %lu outside the %d-entry instruction memory",
-                v, FP3_DEFAULT_IMEM_DEPTH);
+      add_error(st, line, "%s target %lu outside the %d-entry instruction memory",
+                mn, v, FP3_DEFAULT_IMEM_DEPTH);
+      return -1;
+    }
+    if (opc == FP3_OP_BEQ && v <= st->count) {
+      add_error(st, line, "beq target %lu is not ahead of the beq (at %zu)", v, st->count);
       return -1;
     }
     *imm = (uint32_t)v;
@@ -305,8 +312,8 @@ static void do_insn(asm_state *st, const char *mnem, char **ops, int nops,
       if (parse_reg(st, ops[k++], line, &r[i])) bad = 1;
   if (uses & FP3_USES_IMM) {
     const char *text = ops[k];
-    if (opc == FP3_OP_ENDI) {
-      if (parse_target(st, text, line, &imm, &fix)) bad = 1;
+    if (fp3_opc_has_target((unsigned)opc)) {
+      if (parse_target(st, (unsigned)opc, text, line, &imm, &fix)) bad = 1;
     } else {
       char why[160];
       if (fp3_asm_literal(text, &imm, why, sizeof why)) {
@@ -524,6 +531,11 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
     symbol *l = sym_find(&st.labels, st.fix[i].label);
     if (!l)
       add_error(&st, st.fix[i].line, "undefined label '%s'", st.fix[i].label);
+    else if (st.fix[i].word < FP3_DEFAULT_IMEM_DEPTH &&
+             fp3_insn_opc(img->words[st.fix[i].word]) == FP3_OP_BEQ &&
+             (size_t)l->value <= st.fix[i].word)
+      add_error(&st, st.fix[i].line, "beq target '%s' (address %d) is not ahead of the beq (at %zu)",
+                st.fix[i].label, l->value, st.fix[i].word);
     else if (st.fix[i].word < FP3_DEFAULT_IMEM_DEPTH)
       img->words[st.fix[i].word] |= (uint64_t)(uint32_t)l->value << FP3_IMM_LSB;
     free(st.fix[i].label);

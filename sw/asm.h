@@ -10,6 +10,7 @@
  *                              pattern 0x3E2AAAAB (at most 8 hex digits)
  *   mov rd, ra
  *   endi LABEL                 imm = address of LABEL (or a number)
+ *   beq ra, rb, LABEL          LABEL must lie ahead of the beq
  *   halt / nop
  *   .reg NAME rN               register alias (`.reg NAME, rN` too)
  *   .in NAME, rN               host writes parameter NAME (T C m minv h

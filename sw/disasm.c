@@ -43,6 +43,8 @@ int fp3_disasm_word(uint64_t w, char *buf, size_t n) {
     return snprintf(buf, n, "%s r%u, r%u", mn, rd, ra);
   case FP3_OP_ENDI:
     return snprintf(buf, n, "%s %lu", mn, (unsigned long)imm);
+  case FP3_OP_BEQ:
+    return snprintf(buf, n, "%s r%u, r%u, %lu", mn, ra, rb, (unsigned long)imm);
   case FP3_OP_NOP:
   case FP3_OP_HALT:
     break;
@@ -50,12 +52,12 @@ int fp3_disasm_word(uint64_t w, char *buf, size_t n) {
   return snprintf(buf, n, "%s", mn);
 }
 
-/* endi instructions (legal ones) targeting `addr`, addr <= n */
+/* endi and beq instructions (legal ones) targeting `addr`, addr <= n */
 static int is_target(const fp3_image *img, size_t addr) {
   char why[8];
   for (size_t i = 0; i < img->n; i++) {
     uint64_t w = img->words[i];
-    if (fp3_insn_opc(w) == FP3_OP_ENDI &&
+    if (fp3_opc_has_target(fp3_insn_opc(w)) &&
         fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why) == 0 &&
         fp3_insn_imm(w) == addr)
       return 1;
@@ -80,6 +82,9 @@ char *fp3_disasm_image(const fp3_image *img) {
     int legal = fp3_insn_check(w, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why) == 0;
     if (legal && fp3_insn_opc(w) == FP3_OP_ENDI && fp3_insn_imm(w) <= img->n)
       snprintf(text, sizeof text, "endi L%lu", (unsigned long)fp3_insn_imm(w));
+    else if (legal && fp3_insn_opc(w) == FP3_OP_BEQ && fp3_insn_imm(w) <= img->n)
+      snprintf(text, sizeof text, "beq r%u, r%u, L%lu", fp3_insn_ra(w), fp3_insn_rb(w),
+               (unsigned long)fp3_insn_imm(w));
     else
       fp3_disasm_word(w, text, sizeof text);
     fp3_strbuf_printf(&b, "    %-28s ; [%3zu] %016llx", text, i, (unsigned long long)w);

@@ -195,8 +195,8 @@ static int cmd_disasm(int argc, char **argv) {
   int illegal = 0;
   for (size_t w = 0; w < img.n; w++) {
     char why[200];
-    if (fp3_insn_check(img.words[w], FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why,
-                       sizeof why)) {
+    if (fp3_insn_check_at(img.words[w], (uint32_t)w, FP3_DEFAULT_NUM_REGS,
+                          FP3_DEFAULT_IMEM_DEPTH, why, sizeof why)) {
       fprintf(stderr, "fp3 disasm: %s: word %zu (0x%016llx): illegal instruction: %s\n", in,
               w, (unsigned long long)img.words[w], why);
       illegal++;

@@ -60,6 +60,12 @@
  * fetched, lands in its context's queue, and is found ready. */
 #define FP3_START_CYCLES 3
 
+/* Cycles from a beq's issue to the next issue of its context: operands
+ * read (1), compared and the outcome registered (1), the next word's
+ * address presented (1), the word read (1), queued (1) and found ready
+ * (1). */
+#define FP3_BEQ_CYCLES 6
+
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
  *
@@ -84,7 +90,9 @@
   X(ENDI, 0x06, "endi", FP3_USES_IMM,                                          \
     FP3_UNIT_NONE, "end of integration; loop to imm unless the last")          \
   X(HALT, 0x07, "halt", 0,                                                     \
-    FP3_UNIT_NONE, "stop issuing; the run ends when results drain")
+    FP3_UNIT_NONE, "stop issuing; the run ends when results drain")         \
+  X(BEQ,  0x08, "beq",  FP3_USES_RA | FP3_USES_RB | FP3_USES_IMM,              \
+    FP3_UNIT_NONE, "continue at imm (ahead) if ra, rb are bit-identical")
 
 /*
  * Build configuration: X(NAME, default).  The RTL top takes these as

@@ -135,13 +135,26 @@ int fp3_insn_check(uint64_t w, unsigned num_regs, unsigned imem_depth,
              (unsigned)fp3_insn_imm(w), mn);
     return -1;
   }
-  if (opc == FP3_OP_ENDI && fp3_insn_imm(w) >= imem_depth) {
-    snprintf(reason, n, "endi target %u outside the %u-entry instruction memory",
+  if (fp3_opc_has_target(opc) && fp3_insn_imm(w) >= imem_depth) {
+    snprintf(reason, n, "%s target %u outside the %u-entry instruction memory", mn,
              (unsigned)fp3_insn_imm(w), imem_depth);
     return -1;
   }
   return 0;
 }
+
+int fp3_insn_check_at(uint64_t w, uint32_t pc, unsigned num_regs, unsigned imem_depth,
+                      char *reason, size_t n) {
+  if (fp3_insn_check(w, num_regs, imem_depth, reason, n)) return -1;
+  if (fp3_insn_opc(w) == FP3_OP_BEQ && fp3_insn_imm(w) <= pc) {
+    snprintf(reason, n, "beq target %u is not ahead of the beq (at %u)",
+             (unsigned)fp3_insn_imm(w), (unsigned)pc);
+    return -1;
+  }
+  return 0;
+}
+
+int fp3_opc_has_target(unsigned opc) { return opc == FP3_OP_ENDI || opc == FP3_OP_BEQ; }
 
 int fp3_image_validate(const fp3_image *img, char *msg, size_t n) {
   char why[160];
@@ -151,7 +164,8 @@ int fp3_image_validate(const fp3_image *img, char *msg, size_t n) {
     return -1;
   }
   for (size_t i = 0; i < img->n; i++) {
-    if (fp3_insn_check(img->words[i], FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why)) {
+    if (fp3_insn_check_at(img->words[i], (uint32_t)i, FP3_DEFAULT_NUM_REGS, FP3_DEFAULT_IMEM_DEPTH,
+                          why, sizeof why)) {
       snprintf(msg, n, "word %zu: %s", i, why);
       return -1;
     }

@@ -27,7 +27,9 @@
  * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.  The
  * last three are the folded inputs of compiled programs (sw/compile.h),
  * products the host computes once per object, each one binary32 RNE
- * operation in the order shown (fp3_in_values in objects.h).
+ * operation in the order shown (fp3_in_values in objects.h).  nv0 wakes an
+ * object: the velocity stages run until a `beq v, vp` finds v unchanged
+ * (README "Sleeping objects").
  */
 #define FP3_IN_PARAMS(X)                                                       \
   X(T,    "T",    "thrust [N]")                                                \
@@ -39,7 +41,9 @@
   X(S0,   "s0",   "initial displacement [m]")                                 \
   X(HM,   "hm",   "h/m [s/kg]: h * minv")                                      \
   X(HMT,  "hmT",  "h T/m [m/s]: hm * T, the velocity increment of thrust")     \
-  X(HMC,  "hmC",  "h C/m = h/tau [1]: hm * C")
+  X(HMC,  "hmC",  "h C/m = h/tau [1]: hm * C")                                \
+  X(NV0,  "nv0",  "-v0: v0 with its sign bit flipped, never bit-identical "    \
+                  "to v0 (a sleeping program's previous velocity at start)")
 
 /* Results the golden model checks (`.out NAME, rN`). */
 #define FP3_OUT_PARAMS(X)                                                      \
@@ -120,6 +124,12 @@ int fp3_opc_lookup(const char *mnemonic);
  * reason[0..n). */
 int fp3_insn_check(uint64_t w, unsigned num_regs, unsigned imem_depth,
                    char *reason, size_t n);
+/* fp3_insn_check for the word at address pc, with the one rule that
+ * depends on where a word sits: a beq must branch ahead (imm > pc). */
+int fp3_insn_check_at(uint64_t w, uint32_t pc, unsigned num_regs, unsigned imem_depth,
+                      char *reason, size_t n);
+/* 1 if opcode opc's imm is an instruction address (endi, beq), else 0. */
+int fp3_opc_has_target(unsigned opc);
 
 /* Check every word of an image and the bindings.  Returns 0 or -1 with
  * "word 5: unknown opcode 0x09" in msg. */

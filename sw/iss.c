@@ -13,7 +13,8 @@
  * run of several contexts runs them one after another; the ISS has
  * FP3_MAX_CONTEXTS of them.  A run of N integrations starts at PC 0.  endi counts an integration,
  * reports it, and stops the run if it was the N-th, else jumps to its imm.
- * halt stops the run.  Errors end the run with status.error set (the
+ * halt stops the run.  beq continues at its imm if ra and rb hold the same
+ * bit pattern.  Errors end the run with status.error set (the
  * engine call itself succeeds, as on the RTL engine):
  *   N == 0                         BAD_STEPS
  *   a word the ISA table rejects   ILLEGAL_INSN, fault_pc = its PC
@@ -97,7 +98,7 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
   char why[200];
   for (;;) {
     uint64_t w = s->imem[pc];
-    if (fp3_insn_check(w, e->config.num_regs, depth, why, sizeof why)) {
+    if (fp3_insn_check_at(w, pc, e->config.num_regs, depth, why, sizeof why)) {
       char msg[240];
       snprintf(msg, sizeof msg, "illegal instruction at pc %u: %s", pc, why);
       fail(e, cs, FP3_ERR_ILLEGAL_INSN, pc, msg);
@@ -115,6 +116,10 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
     case FP3_OP_LI: result = imm; break;
     case FP3_OP_MOV: result = a; break;
     case FP3_OP_NOP: writes = 0; break;
+    case FP3_OP_BEQ: /* the target is checked above: ahead, inside memory */
+      writes = 0;
+      if (a == b) next = imm;
+      break;
     case FP3_OP_HALT: writes = 0; stop = 1; break;
     case FP3_OP_ENDI:
       writes = 0;
@@ -131,7 +136,7 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
     (*n)++;
     unit_issued[fp3_opc_unit(opc)]++;
     if (stop) break;
-    if (next >= depth) { /* endi targets are checked above */
+    if (next >= depth) { /* endi and beq targets are checked above */
       fail(e, cs, FP3_ERR_PC_OVERFLOW, depth - 1,
            "PC ran past the end of instruction memory");
       break;

@@ -205,6 +205,7 @@ void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]) {
   val[FP3_IN_HM] = hm;
   val[FP3_IN_HMT] = hm * p->T;
   val[FP3_IN_HMC] = hm * p->C;
+  val[FP3_IN_NV0] = -p->v0; /* a sign flip, exact */
   if (entered) fpenv_leave(&env);
 }
 

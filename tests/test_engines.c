@@ -28,6 +28,7 @@
 #include "fpref.h"
 #include "golden.h"
 #include "image.h"
+#include "objects.h"
 #include "../sim/fp3_model.h"
 
 /* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */
@@ -169,10 +170,10 @@ static uint32_t value_after(const wseq *s, uint32_t init, uint32_t k, size_t *po
 }
 
 /* Run the ship program on RTL and ISS of one core configuration for every
- * case, compare them and the golden model (run in that configuration);
- * finals[k] gets the final v of case k. */
+ * case, `steps` integrations, compare them and the golden model (run in
+ * that configuration); finals[k] gets the final v of case k. */
 static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
-                               uint32_t *finals) {
+                               uint32_t steps, uint32_t *finals) {
   fp3_image img;
   char *errors = NULL;
   fp3_image_init(&img);
@@ -181,14 +182,11 @@ static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
     free(errors);
     fail_msg("%s does not assemble", path);
   }
-  const uint32_t steps = 300;
   for (size_t k = 0; k < sizeof ship_cases / sizeof ship_cases[0]; k++) {
     const ship_case *sc = &ship_cases[k];
     uint32_t init[MAX_REGS] = {0};
-    float values[FP3_IN_COUNT] = {sc->T, sc->C, sc->m, fp3_ship_minv(sc->m), sc->h, sc->v0, sc->s0};
-    for (int p = 0; p < FP3_IN_COUNT; p++) {
-      if (img.in_reg[p] >= 0) init[img.in_reg[p]] = fpref_bits(values[p]);
-    }
+    fp3_ship_params p = {sc->T, sc->C, sc->m, sc->h, sc->v0, sc->s0};
+    fp3_in_registers(&img, &p, init);
     capture a, b;
     run_on(er, &img, init, MAX_REGS, steps, &a);
     run_on(ei, &img, init, MAX_REGS, steps, &b);
@@ -199,7 +197,6 @@ static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
     /* Golden model, every integration. */
     int vreg = img.out_reg[FP3_OUT_V], sreg = img.out_reg[FP3_OUT_S];
     assert_true(vreg >= 0 && sreg >= 0);
-    fp3_ship_params p = {sc->T, sc->C, sc->m, sc->h, sc->v0, sc->s0};
     fp3_ship_state g;
     fp3_golden_init(&g, &p);
     size_t vpos = 0, spos = 0;
@@ -226,7 +223,54 @@ static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
 static void test_ship_rk4(void **state) {
   (void)state;
   uint32_t finals[NCASES];
-  check_ship_program("programs/ship_rk4.s", rtl, iss, finals);
+  check_ship_program("programs/ship_rk4.s", rtl, iss, 300, finals);
+}
+
+/* Sleeping (programs/ship_rk4_sleep.s): bit-identical to the paper's RK4
+ * in every integration of long runs, in which the ships settle. */
+static void test_ship_rk4_sleep(void **state) {
+  (void)state;
+  uint32_t finals[NCASES];
+  check_ship_program("programs/ship_rk4_sleep.s", rtl, iss, 4000, finals);
+}
+
+/* An object at rest sleeps from its second integration: 4 instructions
+ * (beq, mul, add, endi) instead of 33, each costing exact cycles; a woken
+ * one (vp = -v0 after its thrust changed) runs every stage again. */
+static void test_sleep_at_rest(void **state) {
+  (void)state;
+  fp3_image img;
+  char *errors = NULL;
+  fp3_image_init(&img);
+  assert_int_equal(fp3_asm_file("programs/ship_rk4_sleep.s", &img, &errors), 0);
+  size_t body = 0, awake = 0;
+  while (fp3_insn_opc(img.words[body]) == FP3_OP_LI) body++;
+  awake = img.n - body;
+  const uint32_t steps = 40;
+  fp3_ship_params p = {0.0f, 5000.0f, 10000.0f, 1.0f / 60.0f, 0.0f, 42.0f};
+  for (int woken = 0; woken < 2; woken++) {
+    uint32_t init[MAX_REGS] = {0};
+    fp3_in_registers(&img, &p, init);
+    capture a, b;
+    run_on(rtl, &img, init, MAX_REGS, steps, &a);
+    run_on(iss, &img, init, MAX_REGS, steps, &b);
+    compare_captures(&a, &b, woken ? "woken" : "at rest");
+    if (!woken) {
+      assert_int_equal(a.st.issued, body + awake + 4 * (steps - 1));
+      /* Asleep: beq, then mul h v (FP3_BEQ_CYCLES later), add s (after
+       * the product), endi (the issue spacing), the next beq (likewise). */
+      uint64_t per = a.endi_cycle[steps - 1] - a.endi_cycle[steps - 2];
+      assert_int_equal(per, FP3_BEQ_CYCLES + FP3_READ_CYCLES + rtl->config.mul_latency +
+                                2 * FP3_ISSUE_SPACING);
+      assert_int_equal(a.final[img.out_reg[FP3_OUT_S]], fpref_bits(42.0f));
+      p.T = 5000.0f; /* wake it */
+    } else {
+      assert_true(a.st.issued > body + awake * (steps - 1)); /* not asleep within 40 */
+      assert_true(a.final[img.out_reg[FP3_OUT_V]] != 0);
+    }
+    capture_free(&a);
+    capture_free(&b);
+  }
 }
 
 /* Every FP core configuration (the RTL built with ROUND/FTZ, the ISS and
@@ -243,7 +287,7 @@ static void test_ship_rk4_core_configs(void **state) {
     assert_non_null(ei);
     assert_int_equal(er->config.mode.round, modes[m].round);
     assert_int_equal(er->config.mode.ftz, modes[m].ftz);
-    check_ship_program("programs/ship_rk4.s", er, ei, finals[m]);
+    check_ship_program("programs/ship_rk4.s", er, ei, 300, finals[m]);
     fp3_engine_free(er);
     fp3_engine_free(ei);
   }
@@ -448,7 +492,11 @@ static void random_program(fp3_image *img, unsigned nregs) {
   for (size_t i = 0; i < len; i++) {
     unsigned rd = (unsigned)(rnd() % nregs), ra = (unsigned)(rnd() % nregs),
              rb = (unsigned)(rnd() % nregs);
-    switch (rnd() % 8) {
+    /* beq: ahead to any later word up to the endi (body + len); few
+     * registers, copies and repeated constants make it taken often. */
+    uint32_t target = (uint32_t)(n + 1 + rnd() % (body + len - n));
+    switch (rnd() % 9) {
+      case 7: img->words[n++] = fp3_insn_make(FP3_OP_BEQ, 0, ra, rb, target); break;
       case 0: case 1: img->words[n++] = fp3_insn_make(FP3_OP_ADD, rd, ra, rb, 0); break;
       case 2: img->words[n++] = fp3_insn_make(FP3_OP_SUB, rd, ra, rb, 0); break;
       case 3: case 4: img->words[n++] = fp3_insn_make(FP3_OP_MUL, rd, ra, rb, 0); break;
@@ -512,13 +560,15 @@ static void test_random_words(void **state) {
     fp3_image_init(&img);
     uint64_t w = rnd();
     /* Bias towards known opcodes so legal words are exercised too. */
-    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 9) << FP3_OPC_LSB);
+    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 10) << FP3_OPC_LSB);
+    /* ... and a beq sometimes to its legal target, the halt */
+    if (i % 8 == 3) w = fp3_insn_make(FP3_OP_BEQ, 0, (unsigned)(rnd() % 4), (unsigned)(rnd() % 4), 1);
     if (i % 4 == 1) w &= 0xFF1F1F1F00000000ull | (rnd() & 0xFFFFFFFFull);
     img.words[0] = w;
     img.words[1] = fp3_insn_make(FP3_OP_HALT, 0, 0, 0, 0);
     img.n = 2;
     char why[128];
-    int legal = fp3_insn_check(w, rtl->config.num_regs, rtl->config.imem_depth, why, sizeof why) == 0;
+    int legal = fp3_insn_check_at(w, 0, rtl->config.num_regs, rtl->config.imem_depth, why, sizeof why) == 0;
     capture a, b;
     run_on(rtl, &img, NULL, 0, 1, &a);
     run_on(iss, &img, NULL, 0, 1, &b);
@@ -749,6 +799,8 @@ int main(void) {
       cmocka_unit_test(test_ship_rk4),
       cmocka_unit_test(test_ship_rk4_core_configs),
       cmocka_unit_test(test_ship_rk4_cycles),
+      cmocka_unit_test(test_ship_rk4_sleep),
+      cmocka_unit_test(test_sleep_at_rest),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
       cmocka_unit_test(test_independent_ops_spacing),
