@@ -41,6 +41,7 @@
 #include "cmd_compile.h"
 #include "cmd_configure.h"
 #include "compile.h"
+#include "cmd_frames.h"
 #include "cmd_objects.h"
 #include "report.h"
 #include "testfloat.h"
@@ -956,7 +957,9 @@ static void usage(FILE *f) {
           "  compile SCENE [-o FILE.s] the scene compiler: a program folded for\n"
           "                            the scene (fp3 run --scene uses it)\n"
           "  configure SCENE [-o FILE] RTL parameters sized to the scene\n"
-          "                            (make variables; make synth-scene)\n");
+          "                            (make variables; make synth-scene)\n"
+          "  frames [options]          a scene frame by frame with sleeping\n"
+          "                            objects (make bench-sleep)\n");
 }
 
 int main(int argc, char **argv) {
@@ -978,6 +981,7 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
   if (strcmp(cmd, "configure") == 0) return fp3_cmd_configure(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
+  if (strcmp(cmd, "frames") == 0) return fp3_cmd_frames(argc - 1, argv + 1);
   fprintf(stderr, "fp3: unknown command '%s' (see fp3 --help)\n", cmd);
   return EXIT_USAGE;
 }

@@ -156,6 +156,29 @@ int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
   return 0;
 }
 
+int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc) {
+  memset(sc, 0, sizeof *sc);
+  sc->objs = calloc(n ? n : 1, sizeof *sc->objs);
+  if (!sc->objs) return -1;
+  uint64_t s = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+  if (s == 0) s = 1;
+  for (size_t i = 0; i < n; i++) {
+    double m = pow(10.0, uniform(&s, 4.0, 6.5));
+    double C = m / uniform(&s, 2.0, 20.0);
+    double vinf = uniform(&s, 2.0, 12.0);
+    unsigned kind = (unsigned)(xorshift(&s) % 100); /* 60 / 35 / 5 */
+    fp3_ship_params *o = &sc->objs[i];
+    o->C = (float)C;
+    o->m = (float)m;
+    o->h = h;
+    o->T = kind < 60 ? 0.0f : (float)(vinf * C);
+    o->v0 = (kind < 60 || kind >= 95) ? 0.0f : o->T / o->C; /* cruising: T/C */
+    o->s0 = (float)uniform(&s, -2000.0, 2000.0);
+  }
+  sc->n = n;
+  return 0;
+}
+
 void fp3_scene_free(fp3_scene *sc) {
   free(sc->objs);
   memset(sc, 0, sizeof *sc);

@@ -40,11 +40,19 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
  * [-10, 30] m/s, s0 in [-100, 100] m.  Returns 0 or -1 (out of memory). */
 int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc);
 
+/* A reproducible harbour of n ships (seeded xorshift), the scene of the
+ * sleeping benchmark (README "Sleeping objects"): masses log-uniform in
+ * [1e4, 3.2e6] kg, time constants m/C in [2, 20] s, terminal velocities
+ * T/C in [2, 12] m/s, s0 in [-2000, 2000] m; 60 % moored (T = 0, v0 = 0),
+ * 35 % cruising (v0 = T/C in binary32), 5 % accelerating from rest.
+ * Returns 0 or -1 (out of memory). */
+int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc);
+
 void fp3_scene_free(fp3_scene *sc);
 
 /* The value of every `.in` parameter (enum fp3_in_param) for object p:
  * the scene values, minv = 1.0f/m, and the folded inputs hm = h*minv,
- * hmT = hm*T, hmC = hm*C.  Each derived value is one binary32 operation in
+ * hmT = hm*T, hmC = hm*C, and nv0 = -v0.  Each derived value is one binary32 operation in
  * round-to-nearest-even with subnormals, whatever the caller's FP
  * environment (fpenv.h): the values the host writes, and the values the
  * golden models must start from. */

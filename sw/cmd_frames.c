@@ -1,0 +1,245 @@
+/*
+ * cmd_frames.c -- `fp3 frames` (cmd_frames.h): the sleeping-objects
+ * benchmark's command line.
+ */
+#include "cmd_frames.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "asm.h"
+#include "cliopt.h"
+#include "frames.h"
+#include "report.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+#define DEFAULT_PROGRAM "programs/ship_rk4_sleep.s"
+#define DEFAULT_FMAX 32.0 /* MHz: README, make pnr, default build on LFE5U-85F-6 */
+#define MAX_FRAMES 10000000u
+#define MAX_SHIPS 1000000u
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: fp3 frames [--scene FILE | --harbour N [--seed S]] [--frames F]\n"
+          "                  [--program FILE.s] [--integrator NAME] [--no-rest-skip]\n"
+          "                  [--wake FRAME:COUNT [--wake-vinf V]] [--engine rtl|iss]\n"
+          "                  [--fmax MHZ] [--json]\n"
+          "\n"
+          "Run a scene frame by frame, as a game engine does: each frame is one\n"
+          "integration of every object that is awake, in batches of NUM_CONTEXTS\n"
+          "(one START each); the host keeps every object's register bank between\n"
+          "frames.  An object whose frame left its whole bank bit-identical is at\n"
+          "rest and is not run again until woken.  Every object is compared after\n"
+          "every frame, bit for bit, with its golden model, which runs every stage.\n"
+          "\n"
+          "  --scene FILE     scene file (fp3 run --help); or\n"
+          "  --harbour N      a generated harbour of N ships (default 1000): 60 %%\n"
+          "                   moored, 35 %% cruising at terminal velocity, 5 %%\n"
+          "                   accelerating; h = 1/60 s\n"
+          "  --seed S         harbour seed (default 1)\n"
+          "  --frames F       frames, 1..%u (default 600: 10 s)\n"
+          "  --program FILE   program (default %s, which also\n"
+          "                   skips the velocity stages of settled objects)\n"
+          "  --integrator I   golden model (default rk4): %s\n"
+          "  --no-rest-skip   run objects at rest too (to measure what skipping saves)\n"
+          "  --wake F:K       before frame F, give K moored ships (T = 0, C > 0)\n"
+          "                   thrust T = V * C (--wake-vinf V, default 4 m/s)\n"
+          "  --engine E       rtl (default) or iss (no timing: cycles = instructions)\n"
+          "  --fmax MHZ       clock for frames per second (default %.1f, the default\n"
+          "                   build's Fmax on LFE5U-85F-6, README)\n"
+          "  --json           the report as JSON\n"
+          "\n"
+          "Exit status: 0 all bit-identical, 1 a mismatch or error, 2 bad usage.\n",
+          MAX_FRAMES, DEFAULT_PROGRAM, fp3_integrator_names(), DEFAULT_FMAX);
+}
+
+static int parse_count(const char *v, unsigned long max, unsigned long *out) {
+  char *end;
+  errno = 0;
+  unsigned long long x = strtoull(v, &end, 10);
+  if (*v < '0' || *v > '9' || *end || errno || x == 0 || x > max) return -1;
+  *out = (unsigned long)x;
+  return 0;
+}
+
+int fp3_cmd_frames(int argc, char **argv) {
+  const char *scene_path = NULL, *program = DEFAULT_PROGRAM, *engine_name = "rtl";
+  unsigned long ships = 1000, frames = 600;
+  uint64_t seed = 1;
+  double fmax = DEFAULT_FMAX;
+  int json = 0;
+  const fp3_integrator *ig = fp3_integrator_find("rk4");
+  fp3_frames_opts o = {0, 1, 0, 0, 4.0f, 0};
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i], *v = NULL;
+    int r;
+    char *end;
+    if (fp3_is_help(a)) {
+      usage(stdout);
+      return 0;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--scene", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      scene_path = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--harbour", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (parse_count(v, MAX_SHIPS, &ships)) {
+        fprintf(stderr, "fp3 frames: --harbour '%s': a ship count 1..%u\n", v, MAX_SHIPS);
+        return EXIT_USAGE;
+      }
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--seed", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      errno = 0;
+      seed = strtoull(v, &end, 0);
+      if (*end || errno || *v == '-') {
+        fprintf(stderr, "fp3 frames: --seed '%s': not an unsigned integer\n", v);
+        return EXIT_USAGE;
+      }
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--frames", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (parse_count(v, MAX_FRAMES, &frames)) {
+        fprintf(stderr, "fp3 frames: --frames '%s': a count 1..%u\n", v, MAX_FRAMES);
+        return EXIT_USAGE;
+      }
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--program", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      program = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--integrator", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (!(ig = fp3_integrator_find(v))) {
+        fprintf(stderr, "fp3 frames: unknown integrator '%s' (%s)\n", v, fp3_integrator_names());
+        return EXIT_USAGE;
+      }
+    } else if (strcmp(a, "--no-rest-skip") == 0) {
+      o.rest_skip = 0;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      const char *colon = strchr(v, ':');
+      unsigned long wf, wk;
+      char first[32];
+      size_t len = colon ? (size_t)(colon - v) : 0;
+      if (!colon || len == 0 || len >= sizeof first) {
+        fprintf(stderr, "fp3 frames: --wake '%s': expected FRAME:COUNT\n", v);
+        return EXIT_USAGE;
+      }
+      memcpy(first, v, len);
+      first[len] = '\0';
+      if (parse_count(first, MAX_FRAMES, &wf) || parse_count(colon + 1, MAX_SHIPS, &wk)) {
+        fprintf(stderr, "fp3 frames: --wake '%s': FRAME and COUNT must be positive\n", v);
+        return EXIT_USAGE;
+      }
+      o.wake_frame = (uint32_t)wf;
+      o.wake_count = wk;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake-vinf", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      o.wake_vinf = strtof(v, &end);
+      if (*end || !isfinite(o.wake_vinf)) {
+        fprintf(stderr, "fp3 frames: --wake-vinf '%s': not a finite number\n", v);
+        return EXIT_USAGE;
+      }
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--engine", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      if (strcmp(v, "rtl") && strcmp(v, "iss")) {
+        fprintf(stderr, "fp3 frames: --engine '%s': rtl or iss\n", v);
+        return EXIT_USAGE;
+      }
+      engine_name = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--fmax", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      fmax = strtod(v, &end);
+      if (*end || !(fmax > 0.0) || !isfinite(fmax)) {
+        fprintf(stderr, "fp3 frames: --fmax '%s': a positive clock in MHz\n", v);
+        return EXIT_USAGE;
+      }
+    } else if (strcmp(a, "--json") == 0) {
+      json = 1;
+    } else {
+      fprintf(stderr, "fp3 frames: unknown argument '%s' (see --help)\n", a);
+      return EXIT_USAGE;
+    }
+  }
+  o.frames = (uint32_t)frames;
+  o.progress = !json && frames >= 100;
+
+  fp3_scene sc;
+  char msg[512];
+  if (scene_path) {
+    if (fp3_scene_read(scene_path, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 frames: %s\n", msg);
+      return EXIT_USAGE;
+    }
+  } else if (fp3_scene_harbour(seed, ships, 1.0f / 60.0f, &sc)) {
+    fprintf(stderr, "fp3 frames: out of memory for %lu ships\n", ships);
+    return EXIT_FAIL;
+  }
+  fp3_image img;
+  char *errors = NULL;
+  fp3_image_init(&img);
+  if (fp3_asm_file(program, &img, &errors)) {
+    fprintf(stderr, "%s", errors ? errors : "fp3 frames: assembly failed\n");
+    free(errors);
+    fp3_scene_free(&sc);
+    return EXIT_USAGE;
+  }
+  fp3_engine *e = fp3_engine_new(engine_name);
+  if (!e) {
+    fprintf(stderr, "fp3 frames: cannot create the %s engine\n", engine_name);
+    fp3_scene_free(&sc);
+    return EXIT_FAIL;
+  }
+  fp3_frames_result res;
+  int rc = fp3_run_frames(e, &img, &sc, ig, (fpref_mode){FPREF_RNE, 0}, &o, &res, msg, sizeof msg);
+  fp3_engine_free(e);
+  fp3_scene_free(&sc);
+  if (rc) {
+    fprintf(stderr, "fp3 frames: %s\n", msg);
+    return EXIT_FAIL;
+  }
+  const double per = (double)res.cycles / res.frames;
+  const double fps = fmax * 1e6 / per;
+  const uint64_t all = (uint64_t)res.objects * res.frames;
+  const int pass = res.mismatches == 0 && res.error == FP3_ERR_NONE;
+  if (json) {
+    printf("{\"program\": ");
+    fp3_json_string(stdout, program);
+    printf(", \"scene\": ");
+    fp3_json_string(stdout, scene_path ? scene_path : "harbour");
+    printf(", \"seed\": %" PRIu64 ", \"objects\": %zu, \"frames\": %u, \"contexts\": %u, "
+           "\"rest_skip\": %s, \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", "
+           "\"cycles_per_frame\": %.2f, \"issued_per_frame\": %.2f, "
+           "\"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64 ", "
+           "\"asleep_at_end\": %zu, \"woken\": %zu, \"host_words_per_frame\": %.1f, "
+           "\"fmax_mhz\": %.1f, \"frames_per_second\": %.1f, \"golden_mismatches\": %" PRIu64
+           ", \"error\": \"%s\", \"pass\": %s}\n",
+           seed, res.objects, res.frames, res.contexts, o.rest_skip ? "true" : "false",
+           res.batches, res.cycles, per, (double)res.issued / res.frames, res.object_frames,
+           res.skipped, res.asleep_last, res.woken, (double)res.host_words / res.frames, fmax,
+           fps, res.mismatches, fp3_error_name(res.error), pass ? "true" : "false");
+  } else {
+    printf("fp3 frames: %zu objects (%s), %u frames, %s, %s engine, %u contexts%s\n",
+           res.objects, scene_path ? scene_path : "harbour", res.frames, program, engine_name,
+           res.contexts, o.rest_skip ? "" : ", no rest skip");
+    printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
+           res.batches);
+    printf("  instructions per frame    %.2f\n", (double)res.issued / res.frames);
+    printf("  object-frames run         %" PRIu64 " of %" PRIu64 " (%" PRIu64
+           " skipped at rest); %zu at rest at the end, %zu woken\n",
+           res.object_frames, all, res.skipped, res.asleep_last, res.woken);
+    printf("  host words per frame      %.1f (register banks written and read)\n",
+           (double)res.host_words / res.frames);
+    printf("  frames per second         %.0f at %.1f MHz\n", fps, fmax);
+    if (res.error != FP3_ERR_NONE)
+      printf("  ERROR %s in object %zu at pc %u\n", fp3_error_name(res.error), res.error_object,
+             res.error_pc);
+    if (res.mismatches)
+      printf("  FAIL: %" PRIu64 " mismatches against the golden model, first object %zu "
+             "frame %u\n", res.mismatches, res.first_object, res.first_frame);
+    else
+      printf("  golden model: bit-identical, v and s of every object after every frame\n");
+  }
+  return pass ? 0 : EXIT_FAIL;
+}
