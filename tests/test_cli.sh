@@ -295,5 +295,20 @@ expect 1 "$T/adir" -- configure scenes/drift.scene -o "$T/adir"
 [ -z "$(ls -A "$T/adir")" ] && ! ls "$T"/adir.tmp* >/dev/null 2>&1 && ok \
   || bad "configure -o onto a directory left a temporary file"
 
+# ---- fp3 frames: sleeping objects -------------------------------------------------
+expect 0 "usage: fp3 frames" -- frames --help
+expect 0 "golden model: bit-identical" -- frames --engine iss --harbour 20 --frames 30 --wake 10:2
+expect 0 '"pass": true' -- frames --engine iss --scene scenes/harbour.scene --frames 20 --json
+expect 2 "frames '0'" -- frames --frames 0
+expect 2 "harbour '-3'" -- frames --harbour -3
+expect 2 "expected FRAME:COUNT" -- frames --wake 5
+expect 2 "FRAME and COUNT must be positive" -- frames --wake 0:2
+expect 2 "fmax 'x'" -- frames --fmax x
+expect 2 "unknown integrator 'leapfrog'" -- frames --integrator leapfrog
+expect 2 "engine 'gpu'" -- frames --engine gpu
+expect 2 "mass.scene:3: parameter m = 0" -- frames --scene "$T/mass.scene"
+expect 2 "No such file" -- frames --program "$T/missing.s"
+expect 2 "unknown argument '--bogus'" -- frames --bogus
+
 echo "test_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

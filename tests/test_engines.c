@@ -26,7 +26,9 @@
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "fpref.h"
+#include "frames.h"
 #include "golden.h"
+#include "integrators.h"
 #include "image.h"
 #include "objects.h"
 #include "../sim/fp3_model.h"
@@ -317,6 +319,51 @@ static void test_ship_rk4_cycles(void **state) {
                 (unsigned long long)(a.endi_cycle[0] + 1), (unsigned long long)per);
   assert_true(per <= 130); /* issue #2 target; the paper: 418 */
   capture_free(&a);
+}
+
+/* A harbour frame by frame (frames.h): awake, sleeping in the program,
+ * and sleeping with the host skipping objects at rest, with a wake; every
+ * object equals the RK4 golden model after every frame in each. */
+static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
+                        uint32_t wake_frame, fp3_frames_result *res) {
+  fp3_image img;
+  char *errors = NULL, msg[256];
+  fp3_image_init(&img);
+  assert_int_equal(fp3_asm_file(program, &img, &errors), 0);
+  fp3_scene sc;
+  assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &sc), 0);
+  fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f, 0};
+  if (fp3_run_frames(rtl, &img, &sc, ig, rtl->config.mode, &o, res, msg, sizeof msg))
+    fail_msg("%s", msg);
+  fp3_scene_free(&sc);
+  assert_int_equal(res->error, FP3_ERR_NONE);
+  assert_int_equal(res->object_frames + res->skipped, 48 * 40);
+}
+
+static void test_frames_sleeping(void **state) {
+  (void)state;
+  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
+  fp3_frames_result awake, beq, rest, woken, wrong;
+  run_harbour("programs/ship_rk4.s", rk4, 0, 0, &awake);
+  run_harbour("programs/ship_rk4_sleep.s", rk4, 0, 0, &beq);
+  run_harbour("programs/ship_rk4_sleep.s", rk4, 1, 0, &rest);
+  run_harbour("programs/ship_rk4_sleep.s", rk4, 1, 20, &woken);
+  assert_int_equal(awake.mismatches, 0);
+  assert_int_equal(beq.mismatches, 0);
+  assert_int_equal(rest.mismatches, 0);
+  assert_int_equal(woken.mismatches, 0);
+  /* each kind of sleeping saves issue cycles; the moored ships rest */
+  assert_int_equal(awake.skipped, 0);
+  assert_true(beq.issued < awake.issued / 2);
+  assert_true(rest.issued < beq.issued && rest.skipped > 0);
+  assert_true(rest.asleep_last >= 48 / 3);
+  assert_int_equal(woken.woken, 3);
+  assert_int_equal(woken.asleep_last, rest.asleep_last - 3); /* still accelerating */
+  print_message("harbour of 48, 40 frames: %.1f, %.1f, %.1f cycles per frame (awake, beq, "
+                "beq + rest)\n", awake.cycles / 40.0, beq.cycles / 40.0, rest.cycles / 40.0);
+  /* the check can fail: another integrator's golden model differs */
+  run_harbour("programs/ship_rk4_sleep.s", fp3_integrator_find("rk2"), 1, 0, &wrong);
+  assert_true(wrong.mismatches > 0);
 }
 
 /* ---- hazards with exact cycle accounting ---------------------------------- */
@@ -801,6 +848,7 @@ int main(void) {
       cmocka_unit_test(test_ship_rk4_cycles),
       cmocka_unit_test(test_ship_rk4_sleep),
       cmocka_unit_test(test_sleep_at_rest),
+      cmocka_unit_test(test_frames_sleeping),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
       cmocka_unit_test(test_independent_ops_spacing),

@@ -276,6 +276,10 @@ static void test_asm_errors(void **state) {
   expect_error("endi 1x\n", "t.s:1: bad address '1x'");
   expect_error("endi 300\n", "t.s:1: endi target 300 outside the 256-entry instruction memory");
   expect_error(": nop\n", "t.s:1: bad label");
+  expect_error("nop\nbeq r1, r2, 1\n", "t.s:2: beq target 1 is not ahead of the beq (at 1)");
+  expect_error("back: nop\nbeq r1, r2, back\n", "t.s:2: beq target 'back' (address 0) is not ahead");
+  expect_error("beq r1, r2, 300\n", "t.s:1: beq target 300 outside the 256-entry");
+  expect_error("beq r1, end\nend: halt\n", "t.s:1: wrong operand count: beq takes 3 (ra, rb, imm)");
 
   /* every error is collected, each with its line */
   char *err = assemble_fails("foo\nadd r1, r2\nnop\nli r1, zz\nendi none\n");
@@ -400,6 +404,8 @@ static void test_disasm_word(void **state) {
   assert_string_equal(buf, "endi 3");
   fp3_disasm_word(W(FP3_OP_HALT, 0, 0, 0, 0), buf, sizeof buf);
   assert_string_equal(buf, "halt");
+  fp3_disasm_word(W(FP3_OP_BEQ, 0, 5, 24, 9), buf, sizeof buf);
+  assert_string_equal(buf, "beq r5, r24, 9");
   fp3_disasm_word(0x0900000000000000ull, buf, sizeof buf);
   assert_string_equal(buf, ".word 0x0900000000000000");
   /* the whole image: labels, bindings, hex comments */
@@ -413,6 +419,13 @@ static void test_disasm_word(void **state) {
   assert_non_null(strstr(t, "li r2, 2"));
   assert_non_null(strstr(t, "imm 0x40000000"));
   assert_non_null(strstr(t, "0402000040000000"));
+  free(t);
+  assemble("beq r1, r2, skip\nli r3, 1.0\nskip: halt\n", &img);
+  assert_true(img.words[0] == W(FP3_OP_BEQ, 0, 1, 2, 2));
+  t = fp3_disasm_image(&img);
+  assert_non_null(t);
+  assert_non_null(strstr(t, "L2:\n"));
+  assert_non_null(strstr(t, "beq r1, r2, L2"));
   free(t);
 }
 
@@ -429,7 +442,9 @@ static void test_insn_check(void **state) {
     uint64_t w;
     const char *why;
   } bad[] = {
-      {0x0800000000000000ull, "unknown opcode 0x08"},
+      {0x0900000000000000ull, "unknown opcode 0x09"},
+      {0x0800010200000300ull, "beq target 768 outside the 256-entry"},
+      {0x0801010200000003ull, "rd field is 1 but beq does not use it"},
       {0xFF00000000000000ull, "unknown opcode 0xff"},
       {0x0000000000000001ull, "imm field is 0x00000001 but nop does not use it"},
       {0x0001000000000000ull, "rd field is 1 but nop does not use it"},
@@ -449,6 +464,11 @@ static void test_insn_check(void **state) {
       fail_msg("word %016llx: '%s', want '%s'", (unsigned long long)bad[i].w,
                why, bad[i].why);
   }
+  /* beq: only ahead of itself */
+  assert_int_equal(fp3_insn_check_at(W(FP3_OP_BEQ, 0, 1, 2, 6), 5, R, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why), 0);
+  assert_int_not_equal(fp3_insn_check_at(W(FP3_OP_BEQ, 0, 1, 2, 5), 5, R, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why), 0);
+  assert_non_null(strstr(why, "beq target 5 is not ahead of the beq (at 5)"));
+  assert_int_equal(fp3_insn_check_at(W(FP3_OP_ENDI, 0, 0, 0, 0), 5, R, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why), 0);
   /* a smaller register file */
   assert_int_not_equal(fp3_insn_check(W(FP3_OP_MOV, 8, 0, 0, 0), 8, FP3_DEFAULT_IMEM_DEPTH, why, sizeof why), 0);
   /* every opcode of the table is known, in both directions */
