@@ -2,7 +2,9 @@
 # testbench (sim/tb_fp3.v) and a waveform for GTKWave (sim/fp3.gtkw).
 #
 #   make wave [PROGRAM=programs/ship_rk4.s] [STEPS=10] [WAVE_FORMAT=vcd|fst]
-#             [WAVE_ARGS='+dump_load +watchdog=N ...']
+#             [SET='T=0 v0=0'] [WAVE_ARGS='+dump_load +watchdog=N ...']
+#
+# SET: scene parameters NAME=VALUE (fp3 run --set), e.g. a ship at rest.
 #
 # 1. build/fp3 tbgen assembles PROGRAM and writes program.hex, init.hex,
 #    run.hex and expected.hex (ISS results, Verilator cycle counts) into
@@ -36,6 +38,7 @@ WAVE_VVPFMT  := $(if $(filter fst,$(WAVE_FORMAT)),-fst,)
 wave: $(BUILD)/fp3 | $(SETUP_STAMP)
 	@mkdir -p $(WAVE_DIR)
 	$(BUILD)/fp3 tbgen $(WAVE_PROGRAM) -o $(WAVE_DIR) --steps $(WAVE_STEPS) \
+	  $(foreach s,$(SET),--set $(s)) \
 	  $(if $(filter 1,$(ROUND)),--round rtz) $(if $(filter 1,$(FTZ)),--ftz)
 	@printf '+timescale+1ns/1ns\n' > $(WAVE_DIR)/iverilog.cmd
 	$(IVERILOG) $(WAVE_IVFLAGS) -c $(WAVE_DIR)/iverilog.cmd -o $(WAVE_DIR)/tb_fp3.vvp \

@@ -30,6 +30,14 @@ has "$T/make.log" "^tb_fp3: Verilator: [1-9][0-9]* cycles" "make wave" && ok
 echo "make wave STEPS=3: ${secs}s, $(grep -c . "$W/expected.hex") expected lines," \
      "$(du -k "$W/fp3.vcd" 2>/dev/null | cut -f1) KiB VCD"
 
+# ---- the sleeping program (beq) under Icarus: asleep from integration 2 --
+# (a ship at rest: the beq falls through once, then is taken)
+make -s --no-print-directory wave PROGRAM=programs/ship_rk4_sleep.s STEPS=6 SET="T=0 v0=0" \
+  WAVE_DIR="$T/wsleep" >"$T/sleep.log" 2>&1 || bad "make wave (sleeping program) failed"
+has "$T/sleep.log" "^tb_fp3: first integration 129 cycles, later 14.00 per integration" \
+  "make wave (sleeping)" && ok
+has "$T/sleep.log" "^PASS: tb_fp3: 1 context(s) x 6 integrations" "make wave (sleeping)" && ok
+
 # ---- the waveform holds every signal of the GTKWave view ----------------
 if [ -s "$W/fp3.vcd" ] && grep -q '^\$enddefinitions' "$W/fp3.vcd"; then ok; else bad "no VCD"; fi
 awk '
