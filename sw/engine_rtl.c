@@ -11,6 +11,7 @@
  * says, or a FIFO not empty when the run ends, is a hardware fault and
  * fails the run.
  */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +33,7 @@ typedef struct rtl_engine {
   const fp3_model_ops *mops; /* the model of the configuration */
   fp3_model *model;
   fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
+  unsigned ctx_sel;              /* CTX as last written (UINT_MAX: unknown) */
   int win_set;                   /* waveform window, in cycles of a run */
   uint64_t win_first, win_count;
 } rtl_engine;
@@ -46,6 +48,14 @@ static uint32_t host_read(const rtl_engine *m, unsigned addr) {
   fp3_model_out out;
   m->mops->cycle(m->model, &in, &out);
   return out.rdata;
+}
+
+/* Select context c for the per-context host registers; CTX is written only
+ * when it changes (a register bank is moved in a cycle per word). */
+static void select_ctx(rtl_engine *m, unsigned c) {
+  if (m->ctx_sel == c) return;
+  host_write(m, FP3_HR_CTX, c);
+  m->ctx_sel = c;
 }
 
 static uint64_t host_read64(const rtl_engine *m, unsigned lo_addr) {
@@ -87,14 +97,14 @@ static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
 
 static int rtl_write_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t value) {
   if (check_reg(e, context, reg)) return -1;
-  host_write((rtl_engine *)e, FP3_HR_CTX, context);
+  select_ctx((rtl_engine *)e, context);
   host_write((rtl_engine *)e, FP3_HR_REG_BASE + reg, value);
   return 0;
 }
 
 static int rtl_read_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t *value) {
   if (check_reg(e, context, reg)) return -1;
-  host_write((rtl_engine *)e, FP3_HR_CTX, context);
+  select_ctx((rtl_engine *)e, context);
   *value = host_read((rtl_engine *)e, FP3_HR_REG_BASE + reg);
   return 0;
 }
@@ -192,14 +202,14 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
   }
 
   for (unsigned c = 0; c < e->config.num_contexts; c++) {
-    host_write(r, FP3_HR_CTX, c);
+    select_ctx(r, c);
     r->cs[c].error = (host_read(r, FP3_HR_STATUS) >> FP3_STATUS_ERROR_LSB) & 0xF;
     r->cs[c].fault_pc = host_read(r, FP3_HR_FAULT_PC);
     r->cs[c].steps_done = host_read(r, FP3_HR_STEPS_DONE);
     r->cs[c].flags = host_read(r, FP3_HR_FLAGS);
     st->flags |= r->cs[c].flags;
   }
-  host_write(r, FP3_HR_CTX, 0);
+  select_ctx(r, 0);
   uint32_t status = host_read(r, FP3_HR_STATUS);
   st->done = (status & FP3_STATUS_DONE) != 0;
   st->any_error = (status & FP3_STATUS_ANY_ERROR) != 0;
@@ -242,6 +252,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   rtl_engine *r = calloc(1, sizeof *r);
   if (!r) return NULL;
   r->mops = model_ops;
+  r->ctx_sel = UINT_MAX;
   r->model = r->mops->create(trace_path);
   if (!r->model) {
     free(r);
