@@ -4,7 +4,9 @@
  * One pass over the lines builds the words; `endi LABEL` and `beq ra, rb,
  * LABEL` record a fixup
  * that is resolved at the end, so labels may be used before they are
- * defined.  Register aliases must be defined before they are used.  Every
+ * defined.  Register aliases must be defined before they are used.
+ * `.include "FILE"` assembles FILE in place (messages name FILE and its
+ * line).  Every
  * error is collected with its line and the whole assembly fails if any.
  */
 #include "asm.h"
@@ -35,7 +37,10 @@ typedef struct {
   size_t word;
   char *label;
   int line;
+  const char *fname; /* the file of `line` (an included one, or the top) */
 } fixup;
+
+#define MAX_INCLUDE_DEPTH 8
 
 typedef struct {
   const char *fname;
@@ -49,6 +54,10 @@ typedef struct {
   int oom;
   int size_reported;
   size_t count; /* words emitted, may exceed the image (error) */
+  int depth;    /* .include nesting */
+  int top_line; /* line of the top file's .include being assembled */
+  char **names; /* included files' paths, kept for messages to the end */
+  size_t nnames;
 } asm_state;
 
 static void add_error(asm_state *st, int line, const char *fmt, ...) {
@@ -241,7 +250,7 @@ static int parse_target(asm_state *st, unsigned opc, const char *s, int line,
 static void emit(asm_state *st, uint64_t w, int line) {
   if (st->count < FP3_DEFAULT_IMEM_DEPTH) {
     st->img->words[st->count] = w;
-    st->img->line[st->count] = line;
+    st->img->line[st->count] = st->depth ? st->top_line : line;
   } else if (!st->size_reported) {
     st->size_reported = 1;
     add_error(st, line,
@@ -270,6 +279,7 @@ static void add_fixup(asm_state *st, const char *label, int line) {
   st->fix[st->nfix].word = st->count;
   st->fix[st->nfix].label = copy;
   st->fix[st->nfix].line = line;
+  st->fix[st->nfix].fname = st->fname;
   st->nfix++;
 }
 
@@ -357,6 +367,8 @@ static void do_binding(asm_state *st, int is_in, char **ops, int nops,
   slots[id] = (int)reg;
 }
 
+static void do_include(asm_state *st, char **ops, int nops, int line);
+
 static void do_directive(asm_state *st, const char *dir, char **ops, int nops,
                          int line) {
   if (strcasecmp(dir, ".reg") == 0) {
@@ -397,6 +409,8 @@ static void do_directive(asm_state *st, const char *dir, char **ops, int nops,
     do_binding(st, 1, ops, nops, line);
   } else if (strcasecmp(dir, ".out") == 0) {
     do_binding(st, 0, ops, nops, line);
+  } else if (strcasecmp(dir, ".include") == 0) {
+    do_include(st, ops, nops, line);
   } else if (strcasecmp(dir, ".word") == 0) {
     if (nops != 1) {
       add_error(st, line, "wrong operand count: .word takes 1, got %d", nops);
@@ -492,15 +506,49 @@ static void do_line(asm_state *st, char *text, int line) {
     do_insn(st, word, ops, nops, line);
 }
 
-int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
-                   char **errors) {
-  asm_state st;
-  memset(&st, 0, sizeof st);
-  st.fname = fname ? fname : "<input>";
-  st.img = img;
-  fp3_image_init(img);
-  if (errors) *errors = NULL;
+/* The text of file `path` (malloc'd, NUL-terminated), or NULL with
+ * "reason" in msg. */
+static char *read_text(const char *path, char *msg, size_t n) {
+  FILE *f = fopen(path, "r");
+  if (!f) {
+    snprintf(msg, n, "%s", strerror(errno));
+    return NULL;
+  }
+  size_t cap = 4096, len = 0;
+  char *text = malloc(cap);
+  int bad = !text;
+  while (!bad) {
+    if (len + 1 >= cap) {
+      char *nt = realloc(text, cap * 2);
+      if (!nt) {
+        bad = 1;
+        break;
+      }
+      text = nt;
+      cap *= 2;
+    }
+    size_t got = fread(text + len, 1, cap - len - 1, f);
+    len += got;
+    if (got == 0) break;
+  }
+  if (!bad && ferror(f)) bad = 2;
+  fclose(f);
+  if (bad) {
+    snprintf(msg, n, "%s", bad == 2 ? "read error" : "out of memory");
+    free(text);
+    return NULL;
+  }
+  text[len] = '\0';
+  if (memchr(text, '\0', len)) {
+    snprintf(msg, n, "not a text file (contains NUL bytes)");
+    free(text);
+    return NULL;
+  }
+  return text;
+}
 
+/* Assemble every line of src, as file st->fname. */
+static void assemble_lines(asm_state *st, const char *src) {
   size_t cap = 256;
   char *buf = malloc(cap);
   int line = 0;
@@ -521,14 +569,71 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
     memcpy(buf, p, len);
     buf[len] = '\0';
     line++;
-    do_line(&st, buf, line);
+    do_line(st, buf, line);
     p = nl ? nl + 1 : p + len;
   }
-  if (!buf) st.oom = 1;
+  if (!buf) st->oom = 1;
   free(buf);
+}
 
+/* `.include "FILE"`: assemble FILE here, as if its lines stood in place of
+ * the directive.  A relative FILE is found beside the including file. */
+static void do_include(asm_state *st, char **ops, int nops, int line) {
+  size_t len = nops == 1 ? strlen(ops[0]) : 0;
+  if (nops != 1 || len < 3 || ops[0][0] != '"' || ops[0][len - 1] != '"') {
+    add_error(st, line, ".include takes one file name in double quotes");
+    return;
+  }
+  if (st->depth >= MAX_INCLUDE_DEPTH) {
+    add_error(st, line, ".include nested more than %d deep (does a file include itself?)",
+              MAX_INCLUDE_DEPTH);
+    return;
+  }
+  const char *name = ops[0] + 1;
+  int nlen = (int)len - 2;
+  const char *slash = strrchr(st->fname, '/');
+  int dlen = (name[0] != '/' && slash) ? (int)(slash - st->fname) + 1 : 0;
+  char **names = realloc(st->names, (st->nnames + 1) * sizeof *names);
+  char *path = malloc((size_t)dlen + (size_t)nlen + 1);
+  if (names) st->names = names;
+  if (!names || !path) {
+    free(path);
+    st->oom = 1;
+    return;
+  }
+  snprintf(path, (size_t)dlen + (size_t)nlen + 1, "%.*s%.*s", dlen, st->fname, nlen, name);
+  st->names[st->nnames++] = path;
+  char why[160];
+  char *text = read_text(path, why, sizeof why);
+  if (!text) {
+    add_error(st, line, "cannot include '%s': %s", path, why);
+    return;
+  }
+  const char *outer = st->fname;
+  if (st->depth == 0) st->top_line = line;
+  st->fname = path;
+  st->depth++;
+  assemble_lines(st, text);
+  st->depth--;
+  st->fname = outer;
+  free(text);
+}
+
+int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
+                   char **errors) {
+  asm_state st;
+  memset(&st, 0, sizeof st);
+  st.fname = fname ? fname : "<input>";
+  st.img = img;
+  fp3_image_init(img);
+  if (errors) *errors = NULL;
+
+  assemble_lines(&st, src);
+
+  const char *top = st.fname;
   for (size_t i = 0; i < st.nfix; i++) {
     symbol *l = sym_find(&st.labels, st.fix[i].label);
+    st.fname = st.fix[i].fname;
     if (!l)
       add_error(&st, st.fix[i].line, "undefined label '%s'", st.fix[i].label);
     else if (st.fix[i].word < FP3_DEFAULT_IMEM_DEPTH &&
@@ -540,9 +645,12 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
       img->words[st.fix[i].word] |= (uint64_t)(uint32_t)l->value << FP3_IMM_LSB;
     free(st.fix[i].label);
   }
+  st.fname = top;
   free(st.fix);
   sym_free(&st.labels);
   sym_free(&st.aliases);
+  for (size_t i = 0; i < st.nnames; i++) free(st.names[i]);
+  free(st.names);
   img->n = st.count < FP3_DEFAULT_IMEM_DEPTH ? st.count : FP3_DEFAULT_IMEM_DEPTH;
 
   if (st.oom && st.nerr == 0) st.nerr = 1;
@@ -566,43 +674,10 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
 int fp3_asm_file(const char *path, fp3_image *img, char **errors) {
   if (errors) *errors = NULL;
   fp3_image_init(img);
-  FILE *f = fopen(path, "r");
-  char msg[512];
-  if (!f) {
-    snprintf(msg, sizeof msg, "%s: %s", path, strerror(errno));
-    if (errors) *errors = dupstr(msg);
-    return 1;
-  }
-  size_t cap = 4096, len = 0;
-  char *text = malloc(cap);
-  int bad = !text;
-  while (!bad) {
-    if (len + 1 >= cap) {
-      char *nt = realloc(text, cap * 2);
-      if (!nt) {
-        bad = 1;
-        break;
-      }
-      text = nt;
-      cap *= 2;
-    }
-    size_t got = fread(text + len, 1, cap - len - 1, f);
-    len += got;
-    if (got == 0) break;
-  }
-  if (!bad && ferror(f)) bad = 2;
-  fclose(f);
-  if (bad) {
-    snprintf(msg, sizeof msg, "%s: %s", path,
-             bad == 2 ? "read error" : "out of memory");
-    free(text);
-    if (errors) *errors = dupstr(msg);
-    return 1;
-  }
-  text[len] = '\0';
-  if (memchr(text, '\0', len)) {
-    snprintf(msg, sizeof msg, "%s: not a text file (contains NUL bytes)", path);
-    free(text);
+  char why[160], msg[512];
+  char *text = read_text(path, why, sizeof why);
+  if (!text) {
+    snprintf(msg, sizeof msg, "%s: %s", path, why);
     if (errors) *errors = dupstr(msg);
     return 1;
   }

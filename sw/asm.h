@@ -18,6 +18,12 @@
  *                              of image.h) into rN before the run
  *   .out NAME, rN              rN holds result NAME (v s)
  *   .word 0xHHHHHHHHHHHHHHHH   a raw 64-bit word, not checked (tests)
+ *   .include "FILE"            FILE's lines in place (a relative FILE is
+ *                              found beside the including file; at most 8
+ *                              deep); errors name FILE:LINE.  An image's
+ *                              line numbers are the top file's: a word
+ *                              from an included file has the line of the
+ *                              .include
  *
  * Registers are r0 .. r31 or aliases; mnemonics and directives are case
  * insensitive, labels and aliases are not.

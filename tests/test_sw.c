@@ -520,6 +520,48 @@ static int file_exists(const char *p) {
   return stat(p, &sb) == 0;
 }
 
+static void write_file(const char *name, const char *text) {
+  char path[160];
+  snprintf(path, sizeof path, "%s/%s", tmpdir, name);
+  FILE *f = fopen(path, "w");
+  assert_non_null(f);
+  fputs(text, f);
+  fclose(f);
+}
+
+/* .include: in place, beside the including file, errors naming the file. */
+static void test_asm_include(void **state) {
+  (void)state;
+  char top[160], *err = NULL;
+  fp3_image img;
+  mkdir(strcat(strcpy(top, tmpdir), "/sub"), 0700);
+  write_file("sub/regs.inc", ".reg x r3\n.include \"consts.inc\"\n");
+  write_file("sub/consts.inc", "li x, 2.0\n");
+  write_file("sub/top.s", "nop\n.include \"regs.inc\" ; registers\nb: add x, x, x\nendi b\n");
+  snprintf(top, sizeof top, "%s/sub/top.s", tmpdir);
+  assert_int_equal(fp3_asm_file(top, &img, &err), 0);
+  assert_int_equal(img.n, 4);
+  assert_true(img.words[1] == W(FP3_OP_LI, 3, 0, 0, 0x40000000u));
+  assert_true(img.words[3] == W(FP3_OP_ENDI, 0, 0, 0, 2));
+  assert_int_equal(img.line[1], 2); /* the top file's .include line */
+  /* an error inside an included file names it and its line */
+  write_file("sub/bad.inc", "nop\nmul x, x\nendi nowhere\n");
+  write_file("sub/bad.s", ".reg x r1\n.include \"bad.inc\"\n");
+  snprintf(top, sizeof top, "%s/sub/bad.s", tmpdir);
+  assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
+  assert_non_null(strstr(err, "sub/bad.inc:2: wrong operand count"));
+  assert_non_null(strstr(err, "sub/bad.inc:3: undefined label 'nowhere'"));
+  free(err);
+  /* a missing file, a bad operand, a file including itself */
+  expect_error(".include \"no/such.inc\"\n", "t.s:1: cannot include 'no/such.inc'");
+  expect_error(".include regs.inc\n", "t.s:1: .include takes one file name in double quotes");
+  write_file("loop.inc", ".include \"loop.inc\"\n");
+  snprintf(top, sizeof top, "%s/loop.inc", tmpdir);
+  assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
+  assert_non_null(strstr(err, "nested more than 8 deep"));
+  free(err);
+}
+
 static void test_hex_roundtrip(void **state) {
   (void)state;
   fp3_image img, back;
@@ -1104,6 +1146,7 @@ int main(void) {
       cmocka_unit_test(test_asm_errors),
       cmocka_unit_test(test_asm_too_large),
       cmocka_unit_test(test_asm_file),
+      cmocka_unit_test(test_asm_include),
       cmocka_unit_test(test_disasm_roundtrip),
       cmocka_unit_test(test_disasm_word),
       cmocka_unit_test(test_insn_check),
