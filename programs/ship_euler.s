@@ -9,20 +9,7 @@
 ; per result.  Independent work (h v, s + h v) fills the stalls of the
 ; chain C v -> F -> a -> h a -> v.
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg cv    r10      ; C v
 .reg F     r11      ; T - C v [N]

@@ -8,20 +8,7 @@
 ; Second order in v and s; stable for h/tau < 2.  Golden model:
 ; rk2_init / rk2_step in sw/integrators.c.
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg half  r7       ; 0.5
 .reg hh    r8       ; h/2

@@ -14,20 +14,7 @@
 ; more cycles than the plain program (128 against 113 per integration,
 ; ADD_LATENCY 4, MUL_LATENCY 3): y = d - c lies on the chain, twice.
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg half  r7
 .reg two   r8

@@ -13,20 +13,7 @@
 ; the endi issues right after v1 (107 cycles per integration measured,
 ; ADD_LATENCY 4, MUL_LATENCY 3).
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg half  r7       ; 0.5
 .reg two   r8       ; 2.0

@@ -11,20 +11,7 @@
 ; first ones 0.  The dv and y = dv - c of v lie on the chain: 117 cycles
 ; per integration against rk4vs's 107 (ADD_LATENCY 4, MUL_LATENCY 3).
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg half  r7       ; 0.5
 .reg two   r8       ; 2.0

@@ -8,20 +8,7 @@
 ; Golden model: symeuler_step in sw/integrators.c.  One dependent chain:
 ; nothing to fill the stalls with.
 
-.reg T     r1
-.reg C     r2
-.reg minv  r3
-.reg h     r4
-.reg v     r5
-.reg s     r6
-.in  T,    T
-.in  C,    C
-.in  minv, minv
-.in  h,    h
-.in  v0,   v
-.in  s0,   s
-.out v,    v
-.out s,    s
+.include "ship_scene.inc"        ; T C minv h v s and their bindings
 
 .reg cv    r10      ; C v
 .reg F     r11      ; T - C v [N]
