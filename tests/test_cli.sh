@@ -112,6 +112,7 @@ expect 1 "FAIL: run error ILLEGAL_INSN" -- "${ISS[@]}" --program "$T/fault.s" --
 expect 1 "at pc 1"                     -- "${ISS[@]}" --program "$T/fault.s" --steps 3
 
 # ---- a program that computes something else: golden mismatches, exit 1 ----------------
+cp programs/*.inc "$T/"   # the files the ship programs include
 sed 's/^\( *\)add  s, s, hv/\1sub  s, s, hv/' programs/ship_rk4.s >"$T/wrong.s"
 expect 1 "FAIL: .* golden mismatches, first at integration 1" -- "${ISS[@]}" --program "$T/wrong.s" --steps 20
 
