@@ -4,8 +4,8 @@
 #       scripts/bench-sleep.sh: a harbour of SLEEP_SHIPS ships for
 #       SLEEP_FRAMES frames of h = 1/60 s on the RTL, awake against
 #       sleeping, every object checked against the golden model every
-#       frame -> build/bench/sleep.{csv,md}.  About 15 minutes for the
-#       default size on a 2-core machine.
+#       frame -> build/bench/sleep.{csv,md}.  About 25 minutes for the
+#       default size on a loaded 2-core machine (the awake run is half).
 # The library sources (sw/frames.c, sw/cmd_frames.c) reach libfp3.a and
 # build/fp3 through mk/sw.mk's wildcard; tests/test_engines checks them.
 
