@@ -17,7 +17,7 @@ set -eu
 FP3=$1; OUT=$2; N=$3; F=$4
 mkdir -p "$OUT"
 csv="$OUT/sleep.csv"; md="$OUT/sleep.md"
-fields="cycles_per_frame issued_per_frame object_frames_run object_frames_skipped asleep_at_end woken host_words_per_frame frames_per_second golden_mismatches pass"
+fields="cycles_per_frame issued_per_frame object_frames_run object_frames_skipped asleep_at_end woken host_words_per_frame fmax_mhz frames_per_second golden_mismatches pass"
 echo "config,objects,frames,$(echo $fields | tr ' ' ',')" >"$csv.tmp"
 rc=0
 run() {  # NAME ARGS...
@@ -44,7 +44,7 @@ base = float(rows[0]['cycles_per_frame'])
 with open(sys.argv[2] + '.tmp', 'w') as o:
     o.write('| configuration | cycles per frame | vs awake | instructions per frame | '
             'object-frames run | skipped at rest | at rest at the end | woken | '
-            'frames/s at 32 MHz | golden mismatches |\n')
+            f"frames/s at {rows[0]['fmax_mhz']} MHz | golden mismatches |\n")
     o.write('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n')
     for r in rows:
         c = float(r['cycles_per_frame'])
