@@ -132,12 +132,20 @@ static double uniform(uint64_t *s, double lo, double hi) {
   return lo + (hi - lo) * (double)(xorshift(s) >> 11) / 9007199254740992.0;
 }
 
-int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
+/* An empty scene with room for n objects, and the generator state of seed
+ * in *s.  Returns 0 or -1 (out of memory). */
+static int scene_start(uint64_t seed, size_t n, fp3_scene *sc, uint64_t *s) {
   memset(sc, 0, sizeof *sc);
   sc->objs = calloc(n ? n : 1, sizeof *sc->objs);
   if (!sc->objs) return -1;
-  uint64_t s = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
-  if (s == 0) s = 1;
+  *s = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+  if (*s == 0) *s = 1;
+  return 0;
+}
+
+int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
+  uint64_t s;
+  if (scene_start(seed, n, sc, &s)) return -1;
   for (size_t i = 0; i < n; i++) {
     double m = pow(10.0, uniform(&s, 0.0, 6.0));
     double tau = uniform(&s, 0.5, 50.0);
@@ -157,11 +165,8 @@ int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
 }
 
 int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc) {
-  memset(sc, 0, sizeof *sc);
-  sc->objs = calloc(n ? n : 1, sizeof *sc->objs);
-  if (!sc->objs) return -1;
-  uint64_t s = seed * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
-  if (s == 0) s = 1;
+  uint64_t s;
+  if (scene_start(seed, n, sc, &s)) return -1;
   for (size_t i = 0; i < n; i++) {
     double m = pow(10.0, uniform(&s, 4.0, 6.5));
     double C = m / uniform(&s, 2.0, 20.0);
