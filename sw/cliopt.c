@@ -24,4 +24,17 @@ int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *na
   return 1;
 }
 
+int fp3_opt_positional(const char *cmd, const char *what, const char *arg, const char **one) {
+  if (arg[0] == '-' && arg[1] != '\0') {
+    fprintf(stderr, "fp3 %s: unknown option '%s' (see fp3 %s --help)\n", cmd, arg, cmd);
+    return -1;
+  }
+  if (*one) {
+    fprintf(stderr, "fp3 %s: more than one %s ('%s')\n", cmd, what, arg);
+    return -1;
+  }
+  *one = arg;
+  return 0;
+}
+
 int fp3_is_help(const char *a) { return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0; }

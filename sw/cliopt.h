@@ -11,6 +11,13 @@
 int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *name,
                   const char **val);
 
+/* argv[i] = arg, which no option of command cmd matched: an unknown option
+ * ("-x", "--x"; "-" alone is a file name), else a positional argument,
+ * stored in *one if it is the first.  Returns 0, or -1 with a message on
+ * stderr: "fp3 CMD: unknown option '--x' (see fp3 CMD --help)" or "fp3
+ * CMD: more than one WHAT ('arg')". */
+int fp3_opt_positional(const char *cmd, const char *what, const char *arg, const char **one);
+
 /* 1 if a is --help or -h. */
 int fp3_is_help(const char *a);
 

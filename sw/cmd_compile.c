@@ -97,13 +97,7 @@ int fp3_cmd_compile(int argc, char **argv) {
       o.drop_zero = 0;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
-    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-      fprintf(stderr, "fp3 compile: unknown option '%s' (see fp3 compile --help)\n", argv[i]);
-      return EXIT_USAGE;
-    } else if (!scene) {
-      scene = argv[i];
-    } else {
-      fprintf(stderr, "fp3 compile: more than one scene ('%s')\n", argv[i]);
+    } else if (fp3_opt_positional("compile", "scene", argv[i], &scene)) {
       return EXIT_USAGE;
     }
   }

@@ -213,13 +213,7 @@ int fp3_cmd_configure(int argc, char **argv) {
       o.context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       json = 1;
-    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-      fprintf(stderr, "fp3 configure: unknown option '%s' (see fp3 configure --help)\n", argv[i]);
-      return EXIT_USAGE;
-    } else if (!scene) {
-      scene = argv[i];
-    } else {
-      fprintf(stderr, "fp3 configure: more than one scene ('%s')\n", argv[i]);
+    } else if (fp3_opt_positional("configure", "scene", argv[i], &scene)) {
       return EXIT_USAGE;
     }
   }

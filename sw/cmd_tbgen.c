@@ -188,14 +188,7 @@ int fp3_cmd_tbgen(int argc, char **argv) {
       mode.ftz = 1;
     } else if (strcmp(argv[i], "--no-rtl") == 0) {
       use_rtl = 0;
-    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-      fprintf(stderr, "fp3 tbgen: unknown option '%s' (see fp3 tbgen --help)\n",
-              argv[i]);
-      return EXIT_USAGE;
-    } else if (!in) {
-      in = argv[i];
-    } else {
-      fprintf(stderr, "fp3 tbgen: more than one program ('%s')\n", argv[i]);
+    } else if (fp3_opt_positional("tbgen", "program", argv[i], &in)) {
       return EXIT_USAGE;
     }
   }

@@ -96,14 +96,7 @@ static int cmd_asm(int argc, char **argv) {
         (r = fp3_opt_value(argc, argv, &i, "asm", "--output", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       outp = v;
-    } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-      fprintf(stderr, "fp3 asm: unknown option '%s' (see fp3 asm --help)\n",
-              argv[i]);
-      return EXIT_USAGE;
-    } else if (!in) {
-      in = argv[i];
-    } else {
-      fprintf(stderr, "fp3 asm: more than one input file ('%s')\n", argv[i]);
+    } else if (fp3_opt_positional("asm", "input file", argv[i], &in)) {
       return EXIT_USAGE;
     }
   }
@@ -163,16 +156,7 @@ static int cmd_disasm(int argc, char **argv) {
       usage_disasm(stdout);
       return 0;
     }
-    if (argv[i][0] == '-' && argv[i][1] != '\0') {
-      fprintf(stderr, "fp3 disasm: unknown option '%s'\n", argv[i]);
-      return EXIT_USAGE;
-    }
-    if (in) {
-      fprintf(stderr, "fp3 disasm: more than one input file ('%s')\n",
-              argv[i]);
-      return EXIT_USAGE;
-    }
-    in = argv[i];
+    if (fp3_opt_positional("disasm", "input file", argv[i], &in)) return EXIT_USAGE;
   }
   if (!in) {
     fprintf(stderr, "fp3 disasm: no input file (see fp3 disasm --help)\n");

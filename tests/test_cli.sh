@@ -44,6 +44,9 @@ expect 2 "usage"              --
 expect 2 "unknown command 'frobnicate'" -- frobnicate
 expect 2 "unknown option '--bogus'"     -- asm --bogus x.s
 expect 2 "unknown option '-x'"          -- disasm -x
+expect 2 "more than one input file ('b.s')" -- asm a.s b.s
+expect 2 "more than one scene ('b.scene')"  -- configure a.scene b.scene
+expect 2 "more than one program ('b.s')"    -- tbgen a.s b.s -o x
 expect 2 "unknown argument '--bogus'"   -- run --bogus
 expect 2 "unknown engine 'gpu'"         -- run --engine gpu
 expect 2 "needs a value"                -- run --steps
