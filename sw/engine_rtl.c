@@ -116,11 +116,13 @@ static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
 }
 
 /* Upper bound on the cycles of a legal run: every integration passes at
- * most the whole memory once, each instruction waiting at most the longest
- * latency.  Exceeding it means the machine hung. */
+ * most the whole memory once (beq branches only ahead), each instruction
+ * waiting at most the longest latency or a beq's resolution.  Exceeding it
+ * means the machine hung. */
 static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
   uint64_t per_insn = (uint64_t)(c->add_latency > c->mul_latency ? c->add_latency
                                                                    : c->mul_latency) + 2;
+  if (per_insn < FP3_BEQ_CYCLES) per_insn = FP3_BEQ_CYCLES;
   return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
 
