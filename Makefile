@@ -6,7 +6,8 @@
 #   make synth    Yosys synthesis (xc2v, xc7, ECP5), area reports
 #   make pnr      nextpnr place and route, Fmax (ECP5, iCE40)
 #   make wave     Icarus testbench and waveform
-#   make bench    benchmarks (also bench-fp, bench-parallel, bench-cosim)
+#   make bench    benchmarks (also bench-fp, bench-parallel, bench-cosim,
+#                 bench-compile, bench-sleep)
 #   make help     all targets
 #
 # Missing tools are installed by scripts/setup.sh (Debian and PyPI packages).
