@@ -10,6 +10,7 @@
  * error is collected with its line and the whole assembly fails if any.
  */
 #include "asm.h"
+#include "report.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -48,8 +49,7 @@ typedef struct {
   symtab labels, aliases;
   fixup *fix;
   size_t nfix, capfix;
-  char *err; /* collected messages */
-  size_t errlen, errcap;
+  fp3_strbuf err; /* collected messages, one per line */
   int nerr;
   int oom;
   int size_reported;
@@ -75,22 +75,8 @@ static void add_error(asm_state *st, int line, const char *fmt, ...) {
   if (st->nerr == MAX_ERRORS)
     snprintf(msg + strlen(msg), sizeof msg - strlen(msg),
              "\n%s: too many errors, later ones not shown", st->fname);
-  size_t len = strlen(msg);
-  if (st->errlen + len + 2 > st->errcap) {
-    size_t cap = st->errcap ? st->errcap * 2 : 1024;
-    while (cap < st->errlen + len + 2) cap *= 2;
-    char *p = realloc(st->err, cap);
-    if (!p) {
-      st->oom = 1;
-      return;
-    }
-    st->err = p;
-    st->errcap = cap;
-  }
-  memcpy(st->err + st->errlen, msg, len);
-  st->errlen += len;
-  st->err[st->errlen++] = '\n';
-  st->err[st->errlen] = '\0';
+  fp3_strbuf_printf(&st->err, "%s\n", msg);
+  if (st->err.oom) st->oom = 1;
 }
 
 static char *dupstr(const char *s) {
@@ -655,19 +641,18 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
 
   if (st.oom && st.nerr == 0) st.nerr = 1;
   if (st.nerr == 0) {
-    free(st.err);
+    free(st.err.s);
     return 0;
   }
   if (errors) {
-    if (st.oom || !st.err) {
-      free(st.err);
+    if (st.oom || !st.err.s) {
       *errors = dupstr("out of memory");
     } else {
-      *errors = st.err;
-      st.err = NULL;
+      *errors = st.err.s;
+      st.err.s = NULL;
     }
   }
-  free(st.err);
+  free(st.err.s);
   return st.nerr;
 }
 
