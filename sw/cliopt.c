@@ -3,7 +3,9 @@
  */
 #include "cliopt.h"
 
+#include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *name,
@@ -34,6 +36,16 @@ int fp3_opt_positional(const char *cmd, const char *what, const char *arg, const
     return -1;
   }
   *one = arg;
+  return 0;
+}
+
+int fp3_parse_count(const char *v, unsigned long long lo, unsigned long long hi,
+                    unsigned long long *out) {
+  char *end;
+  errno = 0;
+  unsigned long long x = strtoull(v, &end, 10);
+  if (v[0] < '0' || v[0] > '9' || *end || errno || x < lo || x > hi) return -1;
+  *out = x;
   return 0;
 }
 

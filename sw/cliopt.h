@@ -18,6 +18,11 @@ int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *na
  * CMD: more than one WHAT ('arg')". */
 int fp3_opt_positional(const char *cmd, const char *what, const char *arg, const char **one);
 
+/* A count option's value: 0 and *out if v is a decimal integer (digits
+ * only) in lo..hi, else -1 (the caller names the option in its message). */
+int fp3_parse_count(const char *v, unsigned long long lo, unsigned long long hi,
+                    unsigned long long *out);
+
 /* 1 if a is --help or -h. */
 int fp3_is_help(const char *a);
 

@@ -4,7 +4,6 @@
  */
 #include "cmd_compile.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,10 +54,8 @@ static void usage(FILE *f) {
 
 /* A latency option value 1..64. */
 static int latency_arg(const char *opt, const char *v, unsigned *out) {
-  char *end;
-  errno = 0;
-  unsigned long k = strtoul(v, &end, 10);
-  if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > 64) {
+  unsigned long long k;
+  if (fp3_parse_count(v, 1, 64, &k)) {
     fprintf(stderr, "fp3 compile: %s '%s': want 1..64 cycles\n", opt, v);
     return -1;
   }

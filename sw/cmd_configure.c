@@ -199,10 +199,8 @@ int fp3_cmd_configure(int argc, char **argv) {
       o.budget = b;
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--steps", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      unsigned long k = strtoul(v, &end, 10);
-      if (v[0] < '0' || v[0] > '9' || *end || errno || k < 1 || k > MAX_STEPS) {
+      unsigned long long k;
+      if (fp3_parse_count(v, 1, MAX_STEPS, &k)) {
         fprintf(stderr, "fp3 configure: --steps '%s': want 1..%u integrations\n", v, MAX_STEPS);
         return EXIT_USAGE;
       }

@@ -58,18 +58,9 @@ static void usage(FILE *f) {
           MAX_FRAMES, DEFAULT_PROGRAM, fp3_integrator_names(), DEFAULT_FMAX);
 }
 
-static int parse_count(const char *v, unsigned long max, unsigned long *out) {
-  char *end;
-  errno = 0;
-  unsigned long long x = strtoull(v, &end, 10);
-  if (*v < '0' || *v > '9' || *end || errno || x == 0 || x > max) return -1;
-  *out = (unsigned long)x;
-  return 0;
-}
-
 int fp3_cmd_frames(int argc, char **argv) {
   const char *scene_path = NULL, *program = DEFAULT_PROGRAM, *engine_name = "rtl";
-  unsigned long ships = 1000, frames = 600;
+  unsigned long long ships = 1000, frames = 600;
   uint64_t seed = 1;
   double fmax = DEFAULT_FMAX;
   int json = 0;
@@ -87,7 +78,7 @@ int fp3_cmd_frames(int argc, char **argv) {
       scene_path = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--harbour", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (parse_count(v, MAX_SHIPS, &ships)) {
+      if (fp3_parse_count(v, 1, MAX_SHIPS, &ships)) {
         fprintf(stderr, "fp3 frames: --harbour '%s': a ship count 1..%u\n", v, MAX_SHIPS);
         return EXIT_USAGE;
       }
@@ -101,7 +92,7 @@ int fp3_cmd_frames(int argc, char **argv) {
       }
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--frames", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (parse_count(v, MAX_FRAMES, &frames)) {
+      if (fp3_parse_count(v, 1, MAX_FRAMES, &frames)) {
         fprintf(stderr, "fp3 frames: --frames '%s': a count 1..%u\n", v, MAX_FRAMES);
         return EXIT_USAGE;
       }
@@ -119,7 +110,7 @@ int fp3_cmd_frames(int argc, char **argv) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       const char *colon = strchr(v, ':');
-      unsigned long wf, wk;
+      unsigned long long wf, wk;
       char first[32];
       size_t len = colon ? (size_t)(colon - v) : 0;
       if (!colon || len == 0 || len >= sizeof first) {
@@ -128,7 +119,8 @@ int fp3_cmd_frames(int argc, char **argv) {
       }
       memcpy(first, v, len);
       first[len] = '\0';
-      if (parse_count(first, MAX_FRAMES, &wf) || parse_count(colon + 1, MAX_SHIPS, &wk)) {
+      if (fp3_parse_count(first, 1, MAX_FRAMES, &wf) ||
+          fp3_parse_count(colon + 1, 1, MAX_SHIPS, &wk)) {
         fprintf(stderr, "fp3 frames: --wake '%s': FRAME and COUNT must be positive\n", v);
         return EXIT_USAGE;
       }
@@ -173,7 +165,7 @@ int fp3_cmd_frames(int argc, char **argv) {
       return EXIT_USAGE;
     }
   } else if (fp3_scene_harbour(seed, ships, 1.0f / 60.0f, &sc)) {
-    fprintf(stderr, "fp3 frames: out of memory for %lu ships\n", ships);
+    fprintf(stderr, "fp3 frames: out of memory for %llu ships\n", ships);
     return EXIT_FAIL;
   }
   fp3_image img;
