@@ -117,26 +117,13 @@ int fp3_run_frames(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
                    const fp3_integrator *ig, fpref_mode mode, const fp3_frames_opts *o,
                    fp3_frames_result *res, char *msg, size_t n) {
   memset(res, 0, sizeof *res);
-  if (img->out_reg[FP3_OUT_V] < 0 || img->out_reg[FP3_OUT_S] < 0) {
-    snprintf(msg, n, "the program has no '.out v, rN' and '.out s, rN'");
-    return -1;
-  }
+  if (fp3_objects_check(e, img, mode, msg, n)) return -1;
   if (o->frames == 0 || sc->n == 0) {
     snprintf(msg, n, "nothing to run: %u frames of %zu objects", o->frames, sc->n);
     return -1;
   }
-  if (!fpenv_supported(mode)) {
-    snprintf(msg, n, "this host cannot run the golden model in that mode");
-    return -1;
-  }
   frames_run r = {e, img, sc, ig, mode, e->config.num_regs, NULL, NULL, NULL, NULL, NULL, NULL};
   const unsigned nctx = e->config.num_contexts;
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (img->in_reg[i] >= (int)r.nregs) {
-      snprintf(msg, n, "the program binds .in %s to r%d, but this hardware has %u registers "
-               "per context", fp3_in_name(i), img->in_reg[i], r.nregs);
-      return -1;
-    }
   r.bank = calloc(sc->n * r.nregs, sizeof *r.bank);
   r.fresh = calloc((size_t)nctx * r.nregs, sizeof *r.fresh);
   r.asleep = calloc(sc->n, 1);

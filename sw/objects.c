@@ -264,11 +264,8 @@ fp3_golden_ref fp3_golden_of_integrator(fp3_integ_golden *storage,
   return r;
 }
 
-int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
-                    uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
-                    fp3_objects_result *res, char *msg, size_t n) {
-  memset(res, 0, sizeof *res);
-  const unsigned nctx = e->config.num_contexts;
+int fp3_objects_check(const fp3_engine *e, const fp3_image *img, fpref_mode mode, char *msg,
+                      size_t n) {
   if (img->out_reg[FP3_OUT_V] < 0 || img->out_reg[FP3_OUT_S] < 0) {
     snprintf(msg, n, "the program has no '.out v, rN' and '.out s, rN'");
     return -1;
@@ -284,6 +281,15 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
                e->config.num_regs, e->config.num_regs);
       return -1;
     }
+  return 0;
+}
+
+int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
+                    uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
+                    fp3_objects_result *res, char *msg, size_t n) {
+  memset(res, 0, sizeof *res);
+  const unsigned nctx = e->config.num_contexts;
+  if (fp3_objects_check(e, img, mode, msg, n)) return -1;
   /* Two values and two flags per context and integration. */
   double bytes = 10.0 * nctx * ((double)steps + 1.0);
   if (bytes > 2e9) {

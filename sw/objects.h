@@ -101,6 +101,13 @@ typedef struct fp3_objects_result {
   uint32_t *v, *s;         /* final v and s of each object (malloc'd)       */
 } fp3_objects_result;
 
+/* What running objects of program img on engine e needs: `.out v` and
+ * `.out s`, every `.in` register inside the engine's NUM_REGS, and a host
+ * that can run the golden model in core options `mode`.  Returns 0, or -1
+ * with the reason in msg. */
+int fp3_objects_check(const fp3_engine *e, const fp3_image *img, fpref_mode mode, char *msg,
+                      size_t n);
+
 /* Run every object of the scene for `steps` integrations on the engine, in
  * batches of e->config.num_contexts contexts, writing each object's `.in`
  * registers (fp3_in_registers), and compare v and s of every object after
