@@ -213,12 +213,8 @@ int fp3_cmd_tbgen(int argc, char **argv) {
   free(errs);
 
   /* registers before the run: the .in parameters, 0 elsewhere */
-  uint32_t init[FP3_DEFAULT_NUM_REGS] = {0};
-  float inval[FP3_IN_COUNT];
-  fp3_in_values(&p, inval);
-  for (int k = 0; k < FP3_IN_COUNT; k++)
-    if (img.in_reg[k] >= 0 && img.in_reg[k] < FP3_DEFAULT_NUM_REGS)
-      init[img.in_reg[k]] = fpref_bits(inval[k]);
+  uint32_t init[FP3_DEFAULT_NUM_REGS] = {0}; /* the assembler keeps .in below r32 */
+  fp3_in_registers(&img, &p, init);
 
   /* the reference run on the ISS */
   recorder rec;
