@@ -2,28 +2,28 @@
 #
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
-# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL on the make
-# command line override the defaults of sw/fp3_isa.h (e.g. `make sim
-# ADD_LATENCY=6`); the C side reads the values back from the model's INFO
-# registers.
+# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL and
+# FMAX_PIPE on the make command line override the defaults of sw/fp3_isa.h
+# (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
+# the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL,\
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
-# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL]]].  The test programs
-# also get models with 1 and 3 contexts, with other core latencies
-# (shortest add; deeper pipelines).
+# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE]]]].  The test
+# programs also get models with 1 and 3 contexts, with other core latencies
+# (shortest add; deeper pipelines and FMAX_PIPE, the build for clock rate).
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
 RTL_CFG_nc1     := 0 0 1 1 2
-RTL_CFG_nc3     := 0 0 3 6 5
+RTL_CFG_nc3     := 0 0 3 6 5 32 1 1 1 1
 RTL_TEST_CONFIGS := nc1 nc3
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
@@ -64,6 +64,7 @@ $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STA
 	  $(if $(word 7,$(RTL_CFG_$(1))),-GHAS_ADD=$(word 7,$(RTL_CFG_$(1)))) \
 	  $(if $(word 8,$(RTL_CFG_$(1))),-GHAS_SUB=$(word 8,$(RTL_CFG_$(1)))) \
 	  $(if $(word 9,$(RTL_CFG_$(1))),-GHAS_MUL=$(word 9,$(RTL_CFG_$(1)))) \
+	  $(if $(word 10,$(RTL_CFG_$(1))),-GFMAX_PIPE=$(word 10,$(RTL_CFG_$(1)))) \
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 

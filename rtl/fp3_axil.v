@@ -9,9 +9,10 @@
 // one-entry holding register each; the write reaches the host port once
 // both are held and the B channel is free (or being emptied this cycle).
 // AR is held likewise; the read address goes to the host port for one
-// cycle, the core's registered read data is captured one cycle later and
-// held on R until RREADY.  B and R stay valid, with stable payload, until
-// accepted.  Each channel takes a new transfer every second cycle.  The
+// cycle, the core's registered read data is captured 1 + FMAX_PIPE cycles
+// later and held on R until RREADY.  B and R stay valid, with stable
+// payload, until accepted.  Each channel takes a new transfer every second
+// cycle (reads every third with FMAX_PIPE).  The
 // host port has one address, so a write and a read that are both ready in
 // the same cycle take turns (round robin).  All outputs are registered;
 // no READY depends combinationally on a VALID.
@@ -42,6 +43,8 @@
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (see fp3_top)
+//   FMAX_PIPE    pipeline for clock rate (see fp3_top); 1: a read's data
+//                are captured two cycles after its address
 // Reset: rst_i, synchronous, active high (invert ARESETn outside).
 `default_nettype none
 module fp3_axil #(
@@ -55,7 +58,8 @@ module fp3_axil #(
   parameter integer FTZ          = 0,
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
-  parameter integer HAS_MUL      = 1
+  parameter integer HAS_MUL      = 1,
+  parameter integer FMAX_PIPE    = 0
 ) (
   input  wire                  clk_i,
   input  wire                  rst_i,
@@ -105,7 +109,7 @@ module fp3_axil #(
   reg  [1:0]         b_resp_q,   b_resp_d;
   reg                ar_valid_q, ar_valid_d;
   reg  [WA_BITS-1:0] ar_addr_q,  ar_addr_d;
-  reg                rd_pend_q,  rd_pend_d;   // read data arrives this cycle
+  reg  [1:0]         rd_pend_q,  rd_pend_d;   // a host-port read 1, 2 cycles ago
   reg                rd_err_q,   rd_err_d;    // ... for an address answered SLVERR
   reg                r_valid_q,  r_valid_d;
   reg  [31:0]        r_data_q,   r_data_d;
@@ -157,7 +161,9 @@ module fp3_axil #(
 
   // ---- host-port arbitration -----------------------------------------------
   wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
-  wire rd_cand  = ar_valid_q && !rd_pend_q && (!r_valid_q || s_axil_rready_i);
+  // The host port's read data arrive 1 + FMAX_PIPE cycles after the address.
+  wire rd_arrive = FMAX_PIPE != 0 ? rd_pend_q[1] : rd_pend_q[0];
+  wire rd_cand  = ar_valid_q && rd_pend_q == 2'd0 && (!r_valid_q || s_axil_rready_i);
   wire do_write = wr_cand && (!rd_cand || !prio_q);
   wire do_read  = rd_cand && (!wr_cand || prio_q);
 
@@ -175,7 +181,7 @@ module fp3_axil #(
     b_resp_d   = b_resp_q;
     ar_valid_d = ar_valid_q;
     ar_addr_d  = ar_addr_q;
-    rd_pend_d  = do_read;
+    rd_pend_d  = {FMAX_PIPE != 0 && rd_pend_q[0], do_read};
     rd_err_d   = rd_err_q;
     r_valid_d  = r_valid_q;
     r_data_d   = r_data_q;
@@ -210,7 +216,7 @@ module fp3_axil #(
       rd_err_d   = !rd_ok;
     end
     if (s_axil_rready_i) r_valid_d = 1'b0;
-    if (rd_pend_q) begin
+    if (rd_arrive) begin
       r_valid_d = 1'b1;
       r_data_d  = rd_err_q ? 32'd0 : host_rdata;
       r_resp_d  = rd_err_q ? RESP_SLVERR : RESP_OKAY;
@@ -223,7 +229,7 @@ module fp3_axil #(
       w_valid_q  <= 1'b0;
       b_valid_q  <= 1'b0;
       ar_valid_q <= 1'b0;
-      rd_pend_q  <= 1'b0;
+      rd_pend_q  <= 2'd0;
       r_valid_q  <= 1'b0;
       prio_q     <= 1'b0;
     end else begin
@@ -262,7 +268,8 @@ module fp3_axil #(
     .FTZ          (FTZ),
     .HAS_ADD      (HAS_ADD),
     .HAS_SUB      (HAS_SUB),
-    .HAS_MUL      (HAS_MUL)
+    .HAS_MUL      (HAS_MUL),
+    .FMAX_PIPE    (FMAX_PIPE)
   ) u_fp3 (
     .clk_i           (clk_i),
     .rst_i           (rst_i),

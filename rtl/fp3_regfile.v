@@ -3,12 +3,14 @@
 // and a host port.
 //
 // Every index is {context, register} (XW bits).  Busy flags: an issued
-// instruction marks its destination busy (set_i); the unit that computes
-// the result clears the flag when it writes back.  The scheduler reads the
-// flags (busy_o) and stalls an instruction while a source is busy (RAW) or
-// its destination is busy (WAW), unless that register is being written
-// back in this very cycle; so at most one result per register is in flight
-// and write-backs to one register happen in program order.
+// instruction marks its destination busy (set_i); the flag clears when the
+// unit that computes the result announces its write-back, READ_STAGES +
+// (fp3_top's pick stage) cycles ahead of it (clr*_i, from the tag lines,
+// fp3_wb_tag).  The scheduler reads the flags (busy_o) and stalls an
+// instruction while a source is busy (RAW) or its destination is busy
+// (WAW), unless it is announced in this very cycle; so at most one result
+// per register is in flight and write-backs to one register happen in
+// program order.
 //
 // Storage: RAM with a registered read, so that the banks of many contexts
 // map to FPGA block RAM (one write port per RAM).  The three write-back
@@ -17,33 +19,47 @@
 // register, in flip-flops) records which port wrote each register last
 // (LaForest & Steffan, "Efficient Multi-Ported Memories for FPGAs", FPGA
 // 2010).  A read presented in cycle t (the issue cycle) returns its data
-// in cycle t + 1 (the operand-read stage).
+// in cycle t + READ_STAGES (the last operand-read stage).
 //
-// Bypass: the scheduler issues a consumer in the cycle its operand is
-// written back (DESIGN.md: no whole-pipeline stall on write-back).  That
-// write lands in the RAM at the same clock edge the read samples, so the
-// write-back value is captured beside the read and replaces the RAM data in
-// cycle t + 1.  Writes in later cycles are never needed by a read of cycle
-// t (the operand was not busy, or was written back in cycle t).
+// Bypass: the scheduler issues a consumer up to READ_STAGES - 1 cycles
+// before its operand is written back (DESIGN.md: no whole-pipeline stall
+// on write-back).  A write in cycle t lands in the RAM at the clock edge
+// the read samples, and writes in cycles t + 1 .. t + READ_STAGES - 1
+// after it, so those write-back values are captured beside the read and
+// replace the RAM data (the newest wins).  Writes in later cycles are never
+// needed by a read of cycle t (the scoreboard did not count the operand as
+// free).
+//
+//   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
+//                    of the three RAMs' data (one stage; the default)
+//   READ_STAGES = 2  cycle t + 1: the RAMs' data registered, the LVT read
+//                    and the bypass compare against the writes of cycles
+//                    t and t + 1, registered; cycle t + 2: one select
+//                    (for clock rate: no RAM output, LVT read or compare
+//                    sits in front of the select)
 //
 // Parameters
-//   ENTRIES  registers in all, 2**XW
-//   XW       index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
+//   ENTRIES      registers in all, 2**XW
+//   XW           index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
+//   READ_STAGES  1 or 2, see above
 // Ports (indices XW bits wide, data 32 bits)
-//   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + 1), bypassed.
-//     Port A reads host_idx_i instead while host_sel_i is set (no run in
-//     progress): the host's register read data is ra_data_o a cycle later.
-//   busy_o: every busy flag; idle_o: none set (nothing in flight).
+//   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
+//     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
+//     (no run in progress): the host's register read data is ra_data_o
+//     READ_STAGES cycles later.
+//   busy_o: every busy flag; idle_o: none set.
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
-//   wb{0,1,2}_*: write-back ports (add core, mul core, move path); each
-//     write clears the register's busy flag.  A register written back in
-//     the cycle a new instruction claims it stays busy: the set wins.
+//   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
+//     clears the register's busy flag.  A register announced in the cycle
+//     a new instruction claims it stays busy: the set wins.
+//   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
 module fp3_regfile #(
-  parameter integer ENTRIES = 32,
-  parameter integer XW      = 5
+  parameter integer ENTRIES     = 32,
+  parameter integer XW          = 5,
+  parameter integer READ_STAGES = 1
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -54,6 +70,12 @@ module fp3_regfile #(
   output wire [ENTRIES-1:0] busy_o,
   input  wire               set_i,
   input  wire [XW-1:0]      set_idx_i,
+  input  wire               clr0_valid_i,
+  input  wire [XW-1:0]      clr0_idx_i,
+  input  wire               clr1_valid_i,
+  input  wire [XW-1:0]      clr1_idx_i,
+  input  wire               clr2_valid_i,
+  input  wire [XW-1:0]      clr2_idx_i,
   input  wire               wb0_valid_i,
   input  wire [XW-1:0]      wb0_idx_i,
   input  wire [31:0]        wb0_data_i,
@@ -116,6 +138,8 @@ module fp3_regfile #(
   // picks the RAM, and a write-back of cycle t to the same register (which
   // the RAM read at the same edge missed) replaces the RAM data.  Nothing
   // of this sits behind the issue arbiter in cycle t.
+  // Cycle t + 1: the index read, the writes of cycle t (they missed the
+  // RAMs' read), and the LVT entry of the index (it includes them).
   reg [XW-1:0] a_idx_q, b_idx_q;
   reg [2:0]    wv_q;
   reg [XW-1:0] wi0_q, wi1_q, wi2_q;
@@ -131,19 +155,55 @@ module fp3_regfile #(
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
   end
-  // A plain expression, not a function: a continuous assignment is
-  // re-evaluated only when its operands change, and a function's body is
-  // not an operand (Icarus relies on that).
   wire [1:0] a_lvt = lvt_q[a_idx_q];   // one LVT read per port
   wire [1:0] b_lvt = lvt_q[b_idx_q];
-`define FP3_READ(x, sel, q0, q1, q2) \
-  ((wv_q[0] && wi0_q == (x)) ? wd0_q : \
-   (wv_q[1] && wi1_q == (x)) ? wd1_q : \
-   (wv_q[2] && wi2_q == (x)) ? wd2_q : \
-   ((sel) == 2'd0) ? (q0) : ((sel) == 2'd1) ? (q1) : (q2))
-  assign ra_data_o = `FP3_READ(a_idx_q, a_lvt, q00, q10, q20);
-  assign rb_data_o = `FP3_READ(b_idx_q, b_lvt, q01, q11, q21);
-`undef FP3_READ
+
+  // Bypass of one write-back cycle: {hit, data} for index x.
+`define FP3_BYPASS(x, v, ia, ib, ic, da, db, dc) \
+  ((v[0] && (ia) == (x)) ? {1'b1, da} : \
+   (v[1] && (ib) == (x)) ? {1'b1, db} : \
+   (v[2] && (ic) == (x)) ? {1'b1, dc} : {33{1'b0}})
+  wire [32:0] a_byp1 = `FP3_BYPASS(a_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
+  wire [32:0] b_byp1 = `FP3_BYPASS(b_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
+
+  generate
+    if (READ_STAGES == 1) begin : g_read1
+      assign ra_data_o = a_byp1[32] ? a_byp1[31:0] :
+                         (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
+      assign rb_data_o = b_byp1[32] ? b_byp1[31:0] :
+                         (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
+    end else if (READ_STAGES == 2) begin : g_read2
+      // Cycle t + 1 also sees the writes of cycle t + 1 (newer: they win).
+      wire [2:0]  wv1 = {w2_valid, wb1_valid_i, wb0_valid_i};
+      wire [32:0] a_byp2 = `FP3_BYPASS(a_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
+                                       wb0_data_i, wb1_data_i, w2_data);
+      wire [32:0] b_byp2 = `FP3_BYPASS(b_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
+                                       wb0_data_i, wb1_data_i, w2_data);
+      reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
+      reg  [1:0]  a_lvt_q, b_lvt_q;
+      reg  [32:0] a_byp_q, b_byp_q;
+      always @(posedge clk_i) begin
+        qa0_q   <= q00;
+        qa1_q   <= q10;
+        qa2_q   <= q20;
+        qb0_q   <= q01;
+        qb1_q   <= q11;
+        qb2_q   <= q21;
+        a_lvt_q <= a_lvt;
+        b_lvt_q <= b_lvt;
+        a_byp_q <= a_byp2[32] ? a_byp2 : a_byp1;
+        b_byp_q <= b_byp2[32] ? b_byp2 : b_byp1;
+      end
+      assign ra_data_o = a_byp_q[32] ? a_byp_q[31:0] :
+                         (a_lvt_q == 2'd0) ? qa0_q : (a_lvt_q == 2'd1) ? qa1_q : qa2_q;
+      assign rb_data_o = b_byp_q[32] ? b_byp_q[31:0] :
+                         (b_lvt_q == 2'd0) ? qb0_q : (b_lvt_q == 2'd1) ? qb1_q : qb2_q;
+    end else begin : g_bad_read_stages
+      // Elaboration error on purpose: READ_STAGES must be 1 or 2.
+      fp3_regfile_error_READ_STAGES_must_be_1_or_2 u_error ();
+    end
+  endgenerate
+`undef FP3_BYPASS
 
   assign busy_o = busy_q;
   assign idle_o = (busy_q == {ENTRIES{1'b0}});
@@ -158,6 +218,9 @@ module fp3_regfile #(
       wire hit0 = wb0_valid_i && wb0_idx_i == IDX;
       wire hit1 = wb1_valid_i && wb1_idx_i == IDX;
       wire hit2 = w2_valid    && w2_idx    == IDX;
+      wire clr  = (clr0_valid_i && clr0_idx_i == IDX) ||
+                  (clr1_valid_i && clr1_idx_i == IDX) ||
+                  (clr2_valid_i && clr2_idx_i == IDX);
       always @(posedge clk_i) begin
         if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
         else if (hit0) lvt_q[r] <= 2'd0;
@@ -167,7 +230,7 @@ module fp3_regfile #(
       always @(posedge clk_i) begin
         if (rst_i)                               busy_q[r] <= 1'b0;
         else if (set_i && set_idx_i == IDX)      busy_q[r] <= 1'b1;
-        else if (hit0 || hit1 || hit2)     busy_q[r] <= 1'b0;
+        else if (clr)                            busy_q[r] <= 1'b0;
       end
     end
   endgenerate

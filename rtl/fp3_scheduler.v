@@ -24,22 +24,32 @@
 //           issue; a taken beq moves the fetch PC to its target.
 //   ready   For the instruction at the head of each queue: legal, sources
 //           not busy (RAW) and destination not busy (WAW), where a busy
-//           register that is written back in this cycle or the next counts
-//           as free (the next cycle's write-backs come from the units' tag
-//           lines).  Registered: valid for issue in the next cycle.
+//           register whose write-back is announced in this cycle counts as
+//           free (the announcements come from the units' tag lines,
+//           fp3_wb_tag, early enough for the operand read to take the
+//           value from the bypass).  With PICK_STAGE, also not the
+//           destination of its context's instruction in the issue register
+//           (its busy flag is set at the end of this cycle).  Registered:
+//           valid for the pick in the next cycle.
 //   issue   Among the contexts whose head was ready, a round-robin arbiter
 //           grants one per cycle (the granted context has the lowest
 //           priority next), so no context with ready work starves.  A
-//           context that issued in the previous cycle is not a candidate:
-//           its ready bit belonged to the instruction it just issued.  So
-//           one context issues at most every other cycle, and two or more
-//           contexts keep the arithmetic unit busy every cycle.
+//           context that was granted in the previous cycle is not a
+//           candidate: its ready bit belonged to the instruction it just
+//           issued.  So one context issues at most every other cycle, and
+//           two or more contexts keep the arithmetic unit busy every cycle.
+//           PICK_STAGE = 0: the granted instruction issues (its register
+//           addresses go to the register file) in the cycle of the grant;
+//           PICK_STAGE = 1: it is registered and issues in the next cycle
+//           (for clock rate: no arbiter in front of the register file).
 //
 // WAR needs no check: operands are read at issue, in order.  A cycle
 // without issue while some active context holds an instruction is a stall.
 //
 // A run ends (DONE) when every started context has stopped -- last endi,
-// halt or an error -- and no result is in flight.  Errors, per context: an
+// halt or an error -- and no result is in flight: no busy flag, nothing in
+// the issue register, and DRAIN cycles passed since the last announced
+// write-back.  Errors, per context: an
 // illegal instruction (unknown opcode, a nonzero unused field, a register
 // >= NUM_REGS, an endi target outside the memory, a beq target not ahead of
 // it or outside the memory) at the head of its queue,
@@ -52,6 +62,9 @@
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
 //                 missing one is illegal
+//   PICK_STAGE    0 or 1: a register between the grant and the issue
+//   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
+//                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
 // Register indices towards the register file are {context, register}.
 `default_nettype none
@@ -64,7 +77,9 @@ module fp3_scheduler #(
   parameter integer AW           = 8,
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
-  parameter integer HAS_MUL      = 1
+  parameter integer HAS_MUL      = 1,
+  parameter integer PICK_STAGE   = 0,
+  parameter integer DRAIN        = 1
 ) (
   input  wire                         clk_i,
   input  wire                         rst_i,
@@ -87,12 +102,10 @@ module fp3_scheduler #(
   output reg  [63:0]                  cycles_o,
   output reg  [63:0]                  issued_o,
   output reg  [63:0]                  stalls_o,
-  // register file: busy flags; write-backs of this cycle and of the next
+  // register file: busy flags; write-backs announced this cycle
   input  wire [(1<<(CW+IW))-1:0]      busy_i,
-  input  wire [2:0]                   wb_valid_i,    // add, mul, move ports
-  input  wire [3*(CW+IW)-1:0]         wb_idx_i,
-  input  wire [2:0]                   wbn_valid_i,   // ... in the next cycle
-  input  wire [3*(CW+IW)-1:0]         wbn_idx_i,
+  input  wire [2:0]                   ahead_valid_i, // add, mul, move ports
+  input  wire [3*(CW+IW)-1:0]         ahead_idx_i,
   input  wire                         idle_i,
   // a beq issued two cycles ago, resolved: its context and outcome
   input  wire                         br_valid_i,
@@ -116,6 +129,7 @@ module fp3_scheduler #(
 
   localparam integer NC = NUM_CONTEXTS;
   localparam integer XW = CW + IW;
+  localparam [7:0]   DRAIN8 = DRAIN[7:0];
 
   // ---- per-context state ---------------------------------------------------
   reg [NC-1:0] active_q;            // fetching and issuing
@@ -141,6 +155,7 @@ module fp3_scheduler #(
   reg [AW-1:0] fpcq_q;              // ... from this address
   reg          lastv_q;             // a context issued last cycle
   reg [CW-1:0] last_q;              // ... this one
+  reg [7:0]    quiet_q;             // cycles without busy flag or issue, to DRAIN
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
@@ -166,18 +181,20 @@ module fp3_scheduler #(
     end
   endfunction
 
-  // Index x is written back in this cycle or the next.  A plain expression,
+  // Index x's write-back is announced in this cycle.  A plain expression,
   // not a function: a continuous assignment is re-evaluated only when its
   // operands change, and a function's body is not an operand (Icarus).
 `define FP3_FREED(x) \
-  ((wb_valid_i[0]  && wb_idx_i[0*XW +: XW]  == (x)) || \
-   (wb_valid_i[1]  && wb_idx_i[1*XW +: XW]  == (x)) || \
-   (wb_valid_i[2]  && wb_idx_i[2*XW +: XW]  == (x)) || \
-   (wbn_valid_i[0] && wbn_idx_i[0*XW +: XW] == (x)) || \
-   (wbn_valid_i[1] && wbn_idx_i[1*XW +: XW] == (x)) || \
-   (wbn_valid_i[2] && wbn_idx_i[2*XW +: XW] == (x)))
+  ((ahead_valid_i[0] && ahead_idx_i[0*XW +: XW] == (x)) || \
+   (ahead_valid_i[1] && ahead_idx_i[1*XW +: XW] == (x)) || \
+   (ahead_valid_i[2] && ahead_idx_i[2*XW +: XW] == (x)))
 
   // ---- ready step: the head of every queue ---------------------------------
+  // The instruction in the issue register (PICK_STAGE = 1) if it writes a
+  // register: the ready step of its context checks against it.
+  wire          iss_dst_q;
+  wire [CW-1:0] iss_ctx_q;
+  wire [XW-1:0] iss_rd_q;
   wire [NC-1:0] legal;
   wire [NC-1:0] ready_d;
   wire [NC-1:0] h_endi;     // the head is an endi
@@ -215,10 +232,16 @@ module fp3_scheduler #(
       wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
       wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
+      // PICK_STAGE: the destination of this context's instruction in the
+      // issue register is not busy yet.
+      wire pend = iss_dst_q && iss_ctx_q == CTX;
       assign ready_d[c] = v0_q[c] && legal[c] &&
-                          (!use_ra || !busy_i[xa] || `FP3_FREED(xa)) &&
-                          (!use_rb || !busy_i[xb] || `FP3_FREED(xb)) &&
-                          (!use_rd || !busy_i[xd] || `FP3_FREED(xd));
+                          (!use_ra || ((!busy_i[xa] || `FP3_FREED(xa)) &&
+                                       !(pend && iss_rd_q == xa))) &&
+                          (!use_rb || ((!busy_i[xb] || `FP3_FREED(xb)) &&
+                                       !(pend && iss_rd_q == xb))) &&
+                          (!use_rd || ((!busy_i[xd] || `FP3_FREED(xd)) &&
+                                       !(pend && iss_rd_q == xd)));
     end
   endgenerate
 `undef FP3_FREED
@@ -288,17 +311,30 @@ module fp3_scheduler #(
   wire [6:0]  g_dec  = isa_decode(g_opc);
   wire        g_endi = g_opc == OP_ENDI;
 
-  assign issue_o      = grant;
-  assign issue_ctx_o  = g;
-  assign ra_o         = {g, g_ra8[IW-1:0]};
-  assign rb_o         = {g, g_rb8[IW-1:0]};
-  assign rd_o         = {g, g_rd8[IW-1:0]};
-  assign issue_unit_o = g_dec[5:4];
-  assign issue_sub_o  = g_opc == OP_SUB;
-  assign issue_imm_o  = g_opc == OP_LI;
-  assign imm_o        = g_imm;
-  assign endi_o       = grant && g_endi;
-  assign beq_o        = grant && g_opc == OP_BEQ;
+  // The granted instruction, as it issues: {valid, ctx, ra, rb, rd, unit,
+  // sub, imm (li), immediate, endi, beq}.
+  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 1 + 32 + 1 + 1;
+  wire [IS_W-1:0] is_d = {grant, g, g, g_ra8[IW-1:0], g, g_rb8[IW-1:0], g, g_rd8[IW-1:0],
+                          g_dec[5:4], g_opc == OP_SUB, g_opc == OP_LI, g_imm,
+                          grant && g_endi, grant && g_opc == OP_BEQ};
+  wire [IS_W-1:0] is_w;
+  generate
+    if (PICK_STAGE == 0) begin : g_pick0
+      assign is_w = is_d;
+    end else begin : g_pick1
+      reg [IS_W-1:0] is_q;
+      always @(posedge clk_i) begin
+        if (rst_i || !running_o) is_q <= {IS_W{1'b0}};
+        else                     is_q <= is_d;
+      end
+      assign is_w = is_q;
+    end
+  endgenerate
+  assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
+          imm_o, endi_o, beq_o} = is_w;
+  assign iss_dst_q = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
+  assign iss_ctx_q = issue_ctx_o;
+  assign iss_rd_q  = rd_o;
 
   // ---- fetch step ----------------------------------------------------------
   // A context may fetch when it has room for the word (an entry free, not
@@ -357,6 +393,7 @@ module fp3_scheduler #(
       fpcq_q    <= {AW{1'b0}};
       lastv_q   <= 1'b0;
       last_q    <= {CW{1'b0}};
+      quiet_q   <= 8'd0;
       grr_q     <= {CW{1'b0}};
       frr_q     <= {CW{1'b0}};
       steps_q   <= 32'd0;
@@ -391,6 +428,7 @@ module fp3_scheduler #(
         final_q   <= {NC{steps_i == 32'd1}};
         fvalid_q  <= 1'b0;
         lastv_q   <= 1'b0;
+        quiet_q   <= 8'd0;
         grr_q     <= {CW{1'b0}};
         frr_q     <= {CW{1'b0}};
         for (k = 0; k < NC; k = k + 1) begin
@@ -476,7 +514,10 @@ module fp3_scheduler #(
       fpcq_q   <= fetch_addr;
       if (fetch) frr_q <= next_ctx(f);
 
-      if (active_q == {NC{1'b0}} && idle_i) begin
+      // Nothing in flight once DRAIN cycles passed without a busy flag.
+      if (!idle_i || issue_o)      quiet_q <= 8'd0;
+      else if (quiet_q != DRAIN8)  quiet_q <= quiet_q + 8'd1;
+      if (active_q == {NC{1'b0}} && idle_i && !issue_o && quiet_q == DRAIN8) begin
         running_o <= 1'b0;
         done_o    <= 1'b1;
       end

@@ -4,7 +4,9 @@
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
-// appears on host_rdata_o in the next cycle.  The map (HR_* in
+// appears on host_rdata_o 1 + FMAX_PIPE cycles later (HOST_READ_CYCLES:
+// the register window's read stages; INFO1 reports FMAX_PIPE, and reading
+// it with the address held for two cycles works for both).  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
 // CTX selects the context whose status and registers the host sees;
@@ -14,11 +16,20 @@
 // reads as zero while running (the register file's read ports belong to
 // the issue pipeline then).
 //
-// Pipeline of one operation: issue (cycle t: the scheduler picks it, the
-// register file reads its operands), operand read (t + 1: the data leave
-// the register-file RAMs, bypassed), then the unit: the FP cores take
-// ADD_LATENCY / MUL_LATENCY cycles and the move path one, so a dependent
-// instruction issues 1 + latency cycles after its producer.
+// Pipeline of one operation (P = FMAX_PIPE, R = 1 + FMAX_PIPE):
+//   pick     (P = 1 only) the scheduler grants it; registered
+//   issue    cycle t: its register addresses go to the register file
+//   read     cycles t + 1 .. t + R: the data leave the register-file RAMs,
+//            bypassed (fp3_regfile READ_STAGES = R)
+//   unit     the FP cores take ADD_LATENCY / MUL_LATENCY cycles and the
+//            move path 1 + P: write-back in cycle W = t + R + latency.
+// The scoreboard hears of a write-back P + R cycles ahead (fp3_wb_tag), so
+// that a dependent instruction can issue R - 1 cycles before it and take
+// the value from the bypass: it issues 1 + latency cycles after its
+// producer for either FMAX_PIPE.  What FMAX_PIPE = 1 costs: a move's
+// consumer waits a cycle more, a beq resolves 2 cycles later
+// (FP3_BEQ_CYCLES + 2), a run takes 2 cycles more, and host reads take
+// 2 cycles; it needs ADD_LATENCY and MUL_LATENCY of at least 2.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -37,6 +48,9 @@
 //   HAS_SUB      0: the adder only adds; sub is an illegal instruction
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
+//   FMAX_PIPE    0: the default pipeline; 1: for clock rate, a register
+//                between the scheduler's grant and the issue, and a second
+//                operand-read stage (see "Pipeline" above)
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -48,7 +62,8 @@ module fp3_top #(
   parameter integer FTZ          = 0,
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
-  parameter integer HAS_MUL      = 1
+  parameter integer HAS_MUL      = 1,
+  parameter integer FMAX_PIPE    = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -83,6 +98,20 @@ module fp3_top #(
   localparam integer CW = (NUM_CONTEXTS <= 2) ? 1 : $clog2(NUM_CONTEXTS);
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
+  localparam integer PICK  = FMAX_PIPE;      // pick stage
+  localparam integer READ  = 1 + FMAX_PIPE;  // operand-read stages
+  localparam integer AHEAD = PICK + READ;    // write-back announcement
+  // The move path's latency: with the pick stage, one more, so that its
+  // announcement comes after its issue (the issue sets the busy flag).
+  localparam integer MOV_LATENCY = 1 + PICK;
+
+  generate
+    if (FMAX_PIPE != 0 && (ADD_LATENCY < 2 || MUL_LATENCY < 2)) begin : g_bad_latency
+      // Elaboration error on purpose: the announcement of a write-back
+      // must come after the issue that sets its busy flag.
+      fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_2 u_error ();
+    end
+  endgenerate
 
   // ---- host port decode ----------------------------------------------------
   wire        win_reg  = host_addr_i[11:8] == HR_REG_BASE[11:8];
@@ -138,12 +167,13 @@ module fp3_top #(
   wire [XW-1:0] add_idx, mul_idx, mov_idx;
   wire [31:0]   add_data, mul_data, mov_data;
   wire [4:0]    add_flags, mul_flags;
-  wire          addn_valid, muln_valid, movn_valid;   // write-backs next cycle
-  wire [XW-1:0] addn_idx, muln_idx, movn_idx;
+  wire          adda_valid, mula_valid, mova_valid;   // write-backs AHEAD cycles on
+  wire [XW-1:0] adda_idx, mula_idx, mova_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
-                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL)) u_sched (
+                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .PICK_STAGE(PICK),
+                  .DRAIN(AHEAD)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
@@ -164,10 +194,8 @@ module fp3_top #(
     .issued_o         (issued),
     .stalls_o         (stalls),
     .busy_i           (busy),
-    .wb_valid_i       ({mov_valid, mul_valid, add_valid}),
-    .wb_idx_i         ({mov_idx, mul_idx, add_idx}),
-    .wbn_valid_i      ({movn_valid, muln_valid, addn_valid}),
-    .wbn_idx_i        ({movn_idx, muln_idx, addn_idx}),
+    .ahead_valid_i    ({mova_valid, mula_valid, adda_valid}),
+    .ahead_idx_i      ({mova_idx, mula_idx, adda_idx}),
     .idle_i           (idle),
     .br_valid_i       (br_valid_q),
     .br_ctx_i         (br_ctx_q),
@@ -191,7 +219,7 @@ module fp3_top #(
 
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
-  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW)) u_regs (
+  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ)) u_regs (
     .clk_i        (clk_i),
     .rst_i        (rst_i),
     .ra_i         (ra),
@@ -201,6 +229,12 @@ module fp3_top #(
     .busy_o       (busy),
     .set_i        (issue && issue_unit != UNIT_NONE),
     .set_idx_i    (rd),
+    .clr0_valid_i (adda_valid),
+    .clr0_idx_i   (adda_idx),
+    .clr1_valid_i (mula_valid),
+    .clr1_idx_i   (mula_idx),
+    .clr2_valid_i (mova_valid),
+    .clr2_idx_i   (mova_idx),
     .wb0_valid_i  (add_valid),
     .wb0_idx_i    (add_idx),
     .wb0_data_i   (add_data),
@@ -217,72 +251,90 @@ module fp3_top #(
     .idle_o       (idle)
   );
 
-  // ---- operand-read stage --------------------------------------------------
-  // The register file answers a read of the issue cycle t in cycle t + 1;
-  // the rest of the issued operation waits beside it for one cycle.
-  reg          rd_valid_q, rd_sub_q, rd_imm_q;
-  reg [1:0]    rd_unit_q;
-  reg [XW-1:0] rd_idx_q;
-  reg [31:0]   rd_immval_q;
-  reg          rd_beq_q;
-  reg [CW-1:0] rd_ctx_q;
-  always @(posedge clk_i) begin
-    if (rst_i) begin
-      rd_valid_q <= 1'b0;
-      rd_beq_q   <= 1'b0;
-    end else begin
-      rd_valid_q <= issue && issue_unit != UNIT_NONE;
-      rd_beq_q   <= beq;
-    end
-    rd_ctx_q    <= issue_ctx;
-    rd_unit_q   <= issue_unit;
-    rd_sub_q    <= issue_sub;
-    rd_imm_q    <= issue_imm;
-    rd_immval_q <= imm;
-    rd_idx_q    <= rd;
-  end
+  // ---- operand-read stages ------------------------------------------------
+  // The register file answers a read of the issue cycle t in cycle t + READ;
+  // the rest of the issued operation waits beside it.
+  wire          rd_valid, rd_sub, rd_imm, rd_beq;
+  wire [1:0]    rd_unit;
+  wire [31:0]   rd_immval;
+  wire [CW-1:0] rd_ctx;
+  fp_pipe #(.WIDTH(1 + 2 + 1 + 1 + 32 + CW), .DEPTH(READ)) u_read (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (issue && issue_unit != UNIT_NONE),
+    .data_i  ({beq, issue_unit, issue_sub, issue_imm, imm, issue_ctx}),
+    .valid_o (rd_valid),
+    .data_o  ({rd_beq, rd_unit, rd_sub, rd_imm, rd_immval, rd_ctx})
+  );
+
+  // ---- write-back tag lines ------------------------------------------------
+  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + ADD_LATENCY), .AHEAD(AHEAD)) u_add_tag (
+    .clk_i         (clk_i),
+    .rst_i         (rst_i),
+    .valid_i       (issue && issue_unit == UNIT_ADD),
+    .idx_i         (rd),
+    .ahead_valid_o (adda_valid),
+    .ahead_idx_o   (adda_idx),
+    .wb_valid_o    (add_valid),
+    .wb_idx_o      (add_idx)
+  );
+  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + MUL_LATENCY), .AHEAD(AHEAD)) u_mul_tag (
+    .clk_i         (clk_i),
+    .rst_i         (rst_i),
+    .valid_i       (issue && issue_unit == UNIT_MUL),
+    .idx_i         (rd),
+    .ahead_valid_o (mula_valid),
+    .ahead_idx_o   (mula_idx),
+    .wb_valid_o    (mul_valid),
+    .wb_idx_o      (mul_idx)
+  );
+  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + MOV_LATENCY), .AHEAD(AHEAD)) u_mov_tag (
+    .clk_i         (clk_i),
+    .rst_i         (rst_i),
+    .valid_i       (issue && issue_unit == UNIT_MOV),
+    .idx_i         (rd),
+    .ahead_valid_o (mova_valid),
+    .ahead_idx_o   (mova_idx),
+    .wb_valid_o    (mov_valid),
+    .wb_idx_o      (mov_idx)
+  );
 
   // ---- branch resolution -------------------------------------------------
   // A beq's operands, read like any others, are compared here (a 32-bit
   // equality of bit patterns) and the outcome registered: the scheduler
-  // sees it two cycles after the issue.
+  // sees it READ + 1 cycles after the issue.
   always @(posedge clk_i) begin
     if (rst_i) br_valid_q <= 1'b0;
-    else       br_valid_q <= rd_beq_q;
+    else       br_valid_q <= rd_beq;
     br_taken_q  <= ra_data == rb_data;
-    br_ctx_q    <= rd_ctx_q;
-    br_target_q <= rd_immval_q[AW-1:0];
+    br_ctx_q    <= rd_ctx;
+    br_target_q <= rd_immval[AW-1:0];
   end
 
   // ---- arithmetic unit -----------------------------------------------------
+  // The units' own valid bits equal their tag lines' (same depth from the
+  // same issue); the tag lines' are used.
+  wire add_core_valid, mul_core_valid, mov_path_valid;
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .XW(XW)) u_arith (
+              .MOV_LATENCY(MOV_LATENCY), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
+              .HAS_MUL(HAS_MUL)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
-    .valid_i     (rd_valid_q),
-    .unit_i      (rd_unit_q),
-    .sub_i       (rd_sub_q),
-    .rd_i        (rd_idx_q),
-    .a_i         (rd_imm_q ? rd_immval_q : ra_data),
+    .valid_i     (rd_valid),
+    .unit_i      (rd_unit),
+    .sub_i       (rd_sub),
+    .a_i         (rd_imm ? rd_immval : ra_data),
     .b_i         (rb_data),
-    .add_valid_o (add_valid),
-    .add_reg_o   (add_idx),
+    .add_valid_o (add_core_valid),
     .add_data_o  (add_data),
     .add_flags_o (add_flags),
-    .mul_valid_o (mul_valid),
-    .mul_reg_o   (mul_idx),
+    .mul_valid_o (mul_core_valid),
     .mul_data_o  (mul_data),
     .mul_flags_o (mul_flags),
-    .mov_valid_o (mov_valid),
-    .add_next_valid_o (addn_valid),
-    .add_next_reg_o   (addn_idx),
-    .mul_next_valid_o (muln_valid),
-    .mul_next_reg_o   (muln_idx),
-    .mov_next_valid_o (movn_valid),
-    .mov_next_reg_o   (movn_idx),
-    .mov_reg_o   (mov_idx),
+    .mov_valid_o (mov_path_valid),
     .mov_data_o  (mov_data)
   );
+  wire unused_valid = add_core_valid ^ mul_core_valid ^ mov_path_valid;
 
   // ---- sticky exception flags of the run, per context ----------------------
   genvar fc;
@@ -317,7 +369,8 @@ module fp3_top #(
       HR_STALLS_LO:  rdata_d = stalls[31:0];
       HR_STALLS_HI:  rdata_d = stalls[63:32];
       HR_INFO0:      rdata_d = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
-      HR_INFO1:      rdata_d = {14'd0, FTZ[0], ROUND[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+      HR_INFO1:      rdata_d = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0], MUL_LATENCY[7:0],
+                                ADD_LATENCY[7:0]};
       HR_ID:         rdata_d = ID_VALUE;
       HR_CTX:        rdata_d = {{(32-CW){1'b0}}, ctx_q};
       HR_CONTEXTS:   rdata_d = contexts_q;
@@ -326,13 +379,18 @@ module fp3_top #(
     endcase
   end
   // A register of the window comes straight from the register file's read
-  // port A, which answers one cycle after the address, like rdata_q.
-  reg [31:0] rdata_q;
-  reg        reg_read_q;
-  always @(posedge clk_i) begin
-    rdata_q    <= rdata_d;
-    reg_read_q <= win_reg && reg_ok && host_idle;
-  end
+  // port A, which answers READ cycles after the address; the other
+  // registers are delayed to match.
+  wire [31:0] rdata_q;
+  wire        reg_read_q;
+  fp_pipe #(.WIDTH(32), .DEPTH(READ)) u_host_read (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (win_reg && reg_ok && host_idle),
+    .data_i  (rdata_d),
+    .valid_o (reg_read_q),
+    .data_o  (rdata_q)
+  );
   assign host_rdata_o = reg_read_q ? ra_data : rdata_q;
 
   // ---- outputs -------------------------------------------------------------

@@ -57,6 +57,7 @@ module tb_fp3 #(
   parameter integer HAS_ADD     = 1,
   parameter integer HAS_SUB     = 1,
   parameter integer HAS_MUL     = 1,
+  parameter integer FMAX_PIPE   = 0,
   parameter integer HALF_PERIOD = 5,       // ns: a 100 MHz clock
   parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cmd_tbgen.h)
   parameter integer STALL_LIMIT = 1000     // cycles without progress = hang
@@ -67,6 +68,7 @@ module tb_fp3 #(
   localparam integer NC       = NUM_CONTEXTS;
   localparam integer IW       = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);  // as fp3_top
   localparam integer MAX_LAT  = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
+  localparam integer READ     = 1 + FMAX_PIPE;   // host read cycles, operand-read stages
   localparam integer RUN_WORDS = 16;                 // run.hex layout
   localparam integer R_MAGIC = 0, R_VERSION = 1, R_NWORDS = 2, R_NUM_REGS = 3,
                      R_STEPS = 4, R_ERROR = 5, R_FAULT_PC = 6, R_STEPS_DONE = 7,
@@ -102,7 +104,8 @@ module tb_fp3 #(
     .FTZ         (FTZ),
     .HAS_ADD     (HAS_ADD),
     .HAS_SUB     (HAS_SUB),
-    .HAS_MUL     (HAS_MUL)
+    .HAS_MUL     (HAS_MUL),
+    .FMAX_PIPE   (FMAX_PIPE)
   ) dut (
     .clk_i           (clk),
     .rst_i           (rst),
@@ -176,7 +179,7 @@ module tb_fp3 #(
   // block is what follows them (tests/test_wave.sh checks that every
   // signal of the .gtkw file is in the waveform).  Per-context vectors have
   // bit c for context c; registers and busy flags are shown for context 0.
-  wire           dbg_issue     = dut.u_sched.grant;      // = tr_issue
+  wire           dbg_issue     = dut.u_sched.grant;      // granted (issues now; next cycle with FMAX_PIPE)
   wire [AW-1:0]  dbg_pc        = dut.u_sched.p0_q[dut.u_sched.g];  // PC of the issuing instruction
   wire [63:0]    dbg_insn      = dut.u_sched.gi;         // its word
   wire [7:0]     dbg_opc       = dut.u_sched.g_opc;
@@ -191,33 +194,27 @@ module tb_fp3 #(
   wire [63:0]    dbg_issued    = dut.u_sched.issued_o;
   wire [63:0]    dbg_stalls    = dut.u_sched.stalls_o;
   wire [NUM_REGS-1:0] dbg_busy = dut.u_regs.busy_q[NUM_REGS-1:0];  // context 0
-  wire           wb0_v = dut.add_valid;     // write-back ports, {ctx, reg}
-  wire           wb1_v = dut.mul_valid;
-  wire           wb2_v = dut.mov_valid;
-  wire [31:0]    wb0_x = dut.add_idx;
-  wire [31:0]    wb1_x = dut.mul_idx;
-  wire [31:0]    wb2_x = dut.mov_idx;
-  wire           wbn0_v = dut.addn_valid;   // ... and those of the next cycle
-  wire           wbn1_v = dut.muln_valid;
-  wire           wbn2_v = dut.movn_valid;
-  wire [31:0]    wbn0_x = dut.addn_idx;
-  wire [31:0]    wbn1_x = dut.muln_idx;
-  wire [31:0]    wbn2_x = dut.movn_idx;
-  wire [ADD_LATENCY-1:0] dbg_add_pipe;  // bit s: an add/sub in stage s
-  wire [MUL_LATENCY-1:0] dbg_mul_pipe;  // bit s: a mul in stage s
+  wire           wbn0_v = dut.adda_valid;   // write-backs announced (fp3_wb_tag)
+  wire           wbn1_v = dut.mula_valid;
+  wire           wbn2_v = dut.mova_valid;
+  wire [31:0]    wbn0_x = dut.adda_idx;
+  wire [31:0]    wbn1_x = dut.mula_idx;
+  wire [31:0]    wbn2_x = dut.mova_idx;
+  // Issued add/sub and mul operations, bit k: issued k + 1 cycles ago; an
+  // operation is in core stage s READ + s + 1 cycles after its issue.
+  reg [READ+ADD_LATENCY-1:0] add_line = {(READ+ADD_LATENCY){1'b0}};
+  reg [READ+MUL_LATENCY-1:0] mul_line = {(READ+MUL_LATENCY){1'b0}};
+  always @(posedge clk) begin
+    add_line <= {add_line[READ+ADD_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_ADD};
+    mul_line <= {mul_line[READ+MUL_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_MUL};
+  end
+  wire [ADD_LATENCY-1:0] dbg_add_pipe = add_line[READ+ADD_LATENCY-1:READ];  // bit s: stage s
+  wire [MUL_LATENCY-1:0] dbg_mul_pipe = mul_line[READ+MUL_LATENCY-1:READ];
   genvar gs;
   generate
-    // The tag lines: LATENCY - 1 stages, then the write-back stage.
-    if (ADD_LATENCY > 1) begin : g_add_pipe
-      assign dbg_add_pipe[ADD_LATENCY-2:0] = dut.u_arith.u_add_tag_pre.g_regs.valid_q;
-    end
-    if (MUL_LATENCY > 1) begin : g_mul_pipe
-      assign dbg_mul_pipe[MUL_LATENCY-2:0] = dut.u_arith.u_mul_tag_pre.g_regs.valid_q;
-    end
-    assign dbg_add_pipe[ADD_LATENCY-1] = wb0_v;
-    assign dbg_mul_pipe[MUL_LATENCY-1] = wb1_v;
     // A waiting context's hazard, as the scheduler's ready step sees it: a
-    // used source busy and not written back in this cycle or the next
+    // used source busy and its write-back not announced in this cycle, or
+    // the destination of its instruction in the issue register (FMAX_PIPE)
     // (RAW), or its destination so (WAW).
     // (No function here: Icarus re-evaluates a continuous assignment only
     // when a function's arguments change, not the signals it reads.)
@@ -225,17 +222,18 @@ module tb_fp3 #(
       wire [31:0] xa = dut.u_sched.g_ctx[gs].xa;
       wire [31:0] xb = dut.u_sched.g_ctx[gs].xb;
       wire [31:0] xd = dut.u_sched.g_ctx[gs].xd;
-      wire wa = (wb0_v && wb0_x == xa) || (wb1_v && wb1_x == xa) || (wb2_v && wb2_x == xa) ||
-                (wbn0_v && wbn0_x == xa) || (wbn1_v && wbn1_x == xa) || (wbn2_v && wbn2_x == xa);
-      wire wb = (wb0_v && wb0_x == xb) || (wb1_v && wb1_x == xb) || (wb2_v && wb2_x == xb) ||
-                (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
-      wire wd = (wb0_v && wb0_x == xd) || (wb1_v && wb1_x == xd) || (wb2_v && wb2_x == xd) ||
-                (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
+      wire wa = (wbn0_v && wbn0_x == xa) || (wbn1_v && wbn1_x == xa) || (wbn2_v && wbn2_x == xa);
+      wire wb = (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
+      wire wd = (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
+      wire pend = dut.u_sched.g_ctx[gs].pend;
+      wire [31:0] pend_x = dut.u_sched.iss_rd_q;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
-        ((dut.u_sched.g_ctx[gs].use_ra && dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xa] && !wa) ||
-         (dut.u_sched.g_ctx[gs].use_rb && dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xb] && !wb));
-      assign dbg_waw[gs] = dbg_waiting[gs] &&
-        dut.u_sched.g_ctx[gs].use_rd && dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xd] && !wd;
+        ((dut.u_sched.g_ctx[gs].use_ra &&
+          ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xa] && !wa) || (pend && pend_x == xa))) ||
+         (dut.u_sched.g_ctx[gs].use_rb &&
+          ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xb] && !wb) || (pend && pend_x == xb))));
+      assign dbg_waw[gs] = dbg_waiting[gs] && dut.u_sched.g_ctx[gs].use_rd &&
+        ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xd] && !wd) || (pend && pend_x == xd));
     end
   endgenerate
   function [31:0] dbg_reg;  // register r of context c (after the clock edge)
@@ -259,7 +257,8 @@ module tb_fp3 #(
   // that issued last cycle, or whose word arrived last cycle, is decided
   // in this one).  dbg_free_q: contexts that, by this testbench's own
   // hazard view, were free to issue at the previous edge and did not.
-  wire           dbg_stall     = running && !tr_issue && (|dbg_waiting);
+  wire [NC-1:0]  dbg_gone      = dut.u_sched.gone;
+  wire           dbg_stall     = running && !dbg_issue && (|dbg_waiting);
   wire           dbg_stall_raw = dbg_stall && (|dbg_raw);
   wire           dbg_stall_waw = dbg_stall && (|dbg_waw);
   wire [8*7-1:0] dbg_stall_why = dbg_stall_raw && dbg_stall_waw ? "RAW+WAW" :
@@ -267,10 +266,9 @@ module tb_fp3 #(
                                  dbg_stall ? "FRONT" : "";
   reg  [NC-1:0]  dbg_free_q;
   always @(posedge clk) begin
-    dbg_free_q <= dbg_waiting & ~dbg_raw & ~dbg_waw &
-                  ~((tr_issue ? {{(NC-1){1'b0}}, 1'b1} : {NC{1'b0}}) << tr_issue_ctx);
+    dbg_free_q <= dbg_waiting & ~dbg_raw & ~dbg_waw & ~dbg_gone;
   end
-  wire [8*4-1:0] dbg_op        = tr_issue ? mnemonic(dbg_opc) : "";
+  wire [8*4-1:0] dbg_op        = dbg_issue ? mnemonic(dbg_opc) : "";
   real       dbg_add_real, dbg_mul_real, dbg_mov_real, dbg_v_real, dbg_s_real;
   reg [31:0] dbg_v, dbg_s;         // the .out registers v and s of context 0
   always @(*) begin
@@ -426,14 +424,14 @@ module tb_fp3 #(
     end
   endtask
 
-  task host_read;  // data for addr is registered: valid after the next edge
+  task host_read;  // data for addr is registered: valid READ edges later
     input  [11:0] addr;
     output [31:0] data;
     begin
       @(negedge clk);
       host_we = 1'b0;
       host_addr = addr;
-      @(posedge clk);
+      repeat (READ) @(posedge clk);
       #1 data = host_rdata;
     end
   endtask
@@ -581,7 +579,7 @@ module tb_fp3 #(
     host_read(HR_STALLS_LO, stalls_lo);
     expect_eq("CYCLES vs the trace", cycles_lo, run_cycle);
     expect_eq("STALLS vs the probes", stalls_lo, probe_stalls);
-    if (contexts == 1 && run[R_RTL_LAT] == {16'd0, MUL_LATENCY[7:0], ADD_LATENCY[7:0]}) begin
+    if (contexts == 1 && run[R_RTL_LAT] == {15'd0, FMAX_PIPE[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]}) begin
       expect_eq("CYCLES vs Verilator", cycles_lo, run[R_RTL_CYCLES]);
       expect_eq("STALLS vs Verilator", stalls_lo, run[R_RTL_STALLS]);
     end
@@ -615,7 +613,7 @@ module tb_fp3 #(
     if (endis_total >= 1)
       $display("tb_fp3: %0d.%02d cycles per object-step over the whole run",
                cycles_lo / endis_total, (cycles_lo * 100 / endis_total) % 100);
-    if (contexts == 1 && run[R_RTL_LAT] == {16'd0, MUL_LATENCY[7:0], ADD_LATENCY[7:0]})
+    if (contexts == 1 && run[R_RTL_LAT] == {15'd0, FMAX_PIPE[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]})
       $display("tb_fp3: Verilator: %0d cycles, %0d stalls", run[R_RTL_CYCLES], run[R_RTL_STALLS]);
     else
       $display("tb_fp3: no Verilator cycle count for this configuration: cycles not compared");

@@ -266,7 +266,7 @@ int fp3_cmd_tbgen(int argc, char **argv) {
       r2 = fp3_engine_write_reg(rtl, r, init[r]);
     if (r2 == 0) r2 = fp3_engine_run(rtl, steps, NULL, &rst);
     if (r2 == 0 && rtl->config.num_regs == FP3_DEFAULT_NUM_REGS) {
-      rtl_lat = (rtl->config.mul_latency & 0xFFu) << 8 |
+      rtl_lat = (rtl->config.fmax_pipe & 1u) << 16 | (rtl->config.mul_latency & 0xFFu) << 8 |
                 (rtl->config.add_latency & 0xFFu);
       rtl_cycles = (uint32_t)rst.cycles;
       rtl_stalls = (uint32_t)rst.stalls;
@@ -322,7 +322,7 @@ int fp3_cmd_tbgen(int argc, char **argv) {
       "expected STEPS_DONE", "expected ISSUED (low word)", "expected FLAGS",
       "register of v (ffffffff: none)", "register of s (ffffffff: none)",
       "integrations with v, s in expected.hex",
-      "Verilated RTL MUL_LATENCY<<8 | ADD_LATENCY (0: not run)",
+      "Verilated RTL FMAX_PIPE<<16 | MUL_LATENCY<<8 | ADD_LATENCY (0: not run)",
       "Verilated RTL CYCLES (low word)", "Verilated RTL STALLS (low word)"};
   f = open_out(dir, "run.hex", path, sizeof path);
   if (!f) goto out;

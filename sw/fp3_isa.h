@@ -150,7 +150,7 @@
   X(STALLS_LO,  0x00A, "R",  "cycles an instruction waited on a hazard, low") \
   X(STALLS_HI,  0x00B, "R",  "stall cycles, high word")                       \
   X(INFO0,      0x00C, "R",  "NUM_REGS[15:0], IMEM_DEPTH[31:16]")             \
-  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17]") \
+  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17], FMAX_PIPE[18]") \
   X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
   X(CTX,        0x00F, "RW", "context selected for STATUS.ERROR, STEPS_DONE, " \
                              "FAULT_PC and the register window")              \

@@ -1,0 +1,55 @@
+// fp3_wb_tag -- the write-back tag line of one unit: the destination index
+// of each operation, from its issue to its write-back, announced AHEAD
+// cycles before the write-back for the scoreboard.
+//
+// An operation issued in cycle t (the cycle its operands' addresses go to
+// the register file) is written back in cycle W = t + ISSUE_TO_WB.  The
+// line delivers its index twice: on ahead_*_o in cycle W - AHEAD, when the
+// scheduler may already count the register as free (its consumer, issued
+// in cycle W - READ_STAGES + 1 at the earliest, reads it from the
+// register file's bypass; fp3_top "Pipeline"), and
+// on wb_*_o in cycle W, with the result, as the register file's write
+// index and the trace.
+//
+// Parameters
+//   XW           index width ({context, register})
+//   ISSUE_TO_WB  cycles from issue to write-back (read stages + unit
+//                latency), >= AHEAD
+//   AHEAD        cycles the announcement precedes the write-back, >= 1
+// Ports
+//   valid_i, idx_i  an operation for this unit issues this cycle
+//   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
+//   wb_valid_o, wb_idx_o        ... is written back this cycle
+`default_nettype none
+module fp3_wb_tag #(
+  parameter integer XW          = 5,
+  parameter integer ISSUE_TO_WB = 2,
+  parameter integer AHEAD       = 1
+) (
+  input  wire          clk_i,
+  input  wire          rst_i,
+  input  wire          valid_i,
+  input  wire [XW-1:0] idx_i,
+  output wire          ahead_valid_o,
+  output wire [XW-1:0] ahead_idx_o,
+  output wire          wb_valid_o,
+  output wire [XW-1:0] wb_idx_o
+);
+  fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD)) u_to_ahead (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  (idx_i),
+    .valid_o (ahead_valid_o),
+    .data_o  (ahead_idx_o)
+  );
+  fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD)) u_to_wb (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (ahead_valid_o),
+    .data_i  (ahead_idx_o),
+    .valid_o (wb_valid_o),
+    .data_o  (wb_idx_o)
+  );
+endmodule
+`default_nettype wire
