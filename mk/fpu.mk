@@ -12,6 +12,7 @@
 #   make bench-fp   10^8 random operations per operation and configuration
 
 FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v \
+           rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
            rtl/fp_mul_unpack_norm.v
 FPU_DIR := $(BUILD)/fpu
 FPU_INC := -Isim
