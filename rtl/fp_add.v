@@ -13,25 +13,25 @@
 //              L = 3:  c1a c1b c2a c2b | c3a c3b | c4a c4b | out
 //              L = 4:  c1a c1b | c2a c2b | c3a c3b | c4a c4b | out
 //              L = 5:  in | c1a c1b | c2a c2b | c3a c3b | c4a c4b | out
-//              L = 6:  in | c1a c1b | c2a | c2b | c3a c3b | c4a c4b | out
-//              L = 7:  in | c1a c1b | c2a | c2b | c3a c3b | c4a | c4b
-//                      | out
-//              L = 8:  in | c1a c1b | c2a | c2b | c3a | c3b | c4a | c4b
+//              L = 6:  in | c1a c1b | c2a c2b | c3a | c3b | c4a c4b | out
+//              L = 7:  in | c1a c1b | c2a | c2b | c3a | c3b | c4a c4b | out
+//              L = 8:  in | c1a | c1b | c2a | c2b | c3a | c3b | c4a c4b
 //                      | out
 //              L >= 9: in | c1a | c1b | c2a | c2b | c3a | c3b | c4a | c4b
 //                      | out, plus L-9 delay stages
 //            where in = operand registers;
-//              c1a = unpack, special cases, magnitude compare, exponent
-//                    differences both ways (saturated);
-//              c1b = swap (x = the operand of larger magnitude);
+//              c1a = unpack, special cases, magnitude compare;
+//              c1b = swap (x = the operand of larger magnitude), exponent
+//                    difference (alignment shift, saturated);
 //              c2a = alignment shift of y with sticky (fp_shr_sticky), the
 //                    normalisation limit from the exponent;
-//              c2b = add/subtract (one carry chain);
+//              c2b = add/subtract (one carry chain), ORed with the
+//                    normalisation limit for c3a;
 //              c3a = leading-zero count (fp_lzc), limited so that the
 //                    exponent stays >= 1;
 //              c3b = normalising shift and exponent;
-//              c4a = rounding increment (fp_round);
-//              c4b = overflow, flush to zero, flags, special result
+//              c4a = rounding increment and overflow (fp_round);
+//              c4b = flush to zero, flags, special result
 //                    (fp_round_pack).
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
@@ -88,7 +88,6 @@ module fp_add #(
   localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
-  localparam [7:0]  ALIGN_MAX   = 8'd27; // shifts >= 27 leave only sticky
 
   // Register places, in datapath order (bit k of BND: place k holds one).
   localparam integer B_IN  = 0; // in  | c1a : operand registers
@@ -110,9 +109,9 @@ module fp_add #(
         3:       bounds = 8'b0101_0000;
         4:       bounds = 8'b0101_0100;
         5:       bounds = 8'b0101_0101;
-        6:       bounds = 8'b0101_1101;
-        7:       bounds = 8'b1101_1101;
-        8:       bounds = 8'b1111_1101;
+        6:       bounds = 8'b0111_0101;
+        7:       bounds = 8'b0111_1101;
+        8:       bounds = 8'b0111_1111;
         default: bounds = 8'b1111_1111;
       endcase
     end
@@ -183,8 +182,7 @@ module fp_add #(
     end
   end
 
-  // Significands and exponents (1 for subnormals), the compare, and the
-  // alignment shift for either outcome: swap picks one in c1b.
+  // Significands, exponents (1 for subnormals) and the compare.
   wire        a_norm   = (a_mag[30:23] != 8'd0);
   wire        b_norm   = (b_mag[30:23] != 8'd0);
   wire [7:0]  a_e      = {a_mag[30:24], a_mag[23] | ~a_norm};
@@ -195,15 +193,11 @@ module fp_add #(
   wire        c1_sub   = a_sign ^ b_sign;
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
   wire        c1_zsign = c1_sub ? 1'b0 : a_sign;
-  wire [7:0]  d_ab     = a_e - b_e;  // used when a_e >= b_e
-  wire [7:0]  d_ba     = b_e - a_e;  // used when b_e >= a_e
-  wire [4:0]  c1_sh_ab = (d_ab > ALIGN_MAX) ? ALIGN_MAX[4:0] : d_ab[4:0];
-  wire [4:0]  c1_sh_ba = (d_ba > ALIGN_MAX) ? ALIGN_MAX[4:0] : d_ba[4:0];
 
   // The special result, carried to c4b.
   localparam integer WS = 1 + 32 + 1; // spec, spec_y, spec_nv
 
-  localparam integer W1 = WS + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24 + 5 + 5;
+  localparam integer W1 = WS + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_C1B] ? 1 : 0)) u_pipe1 (
@@ -211,8 +205,7 @@ module fp_add #(
     .rst_i   (rst_i),
     .valid_i (s0_valid),
     .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, a_sign, b_sign, c1_swap,
-               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman, c1_sh_ab,
-               c1_sh_ba}),
+               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
@@ -221,18 +214,24 @@ module fp_add #(
   wire          s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign;
   wire [7:0]    s1_ae, s1_be;
   wire [23:0]   s1_aman, s1_bman;
-  wire [4:0]    s1_sh_ab, s1_sh_ba;
   assign {s1_spec, s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign, s1_ae,
-          s1_be, s1_aman, s1_bman, s1_sh_ab, s1_sh_ba} = s1_data;
+          s1_be, s1_aman, s1_bman} = s1_data;
 
   // ---------------------------------------------------------------------
-  // c1b: swap: x is the operand of larger magnitude, y the other one
+  // c1b: swap: x is the operand of larger magnitude, y the other one; the
+  // alignment shift x_e - y_e, from both differences (each a short carry
+  // chain) saturated at 31 (any shift >= 26 leaves only the sticky bit)
+  // and picked by swap.
   // ---------------------------------------------------------------------
+  wire [7:0]  d_ab      = s1_ae - s1_be;  // used when a_e >= b_e
+  wire [7:0]  d_ba      = s1_be - s1_ae;  // used when b_e >= a_e
+  wire [4:0]  sh_ab     = d_ab[4:0] | {5{|d_ab[7:5]}};
+  wire [4:0]  sh_ba     = d_ba[4:0] | {5{|d_ba[7:5]}};
   wire        c1b_sign  = s1_swap ? s1_bsign : s1_asign;
   wire [7:0]  c1b_exp   = s1_swap ? s1_be    : s1_ae;
   wire [23:0] c1b_xman  = s1_swap ? s1_bman  : s1_aman;
   wire [23:0] c1b_yman  = s1_swap ? s1_aman  : s1_bman;
-  wire [4:0]  c1b_shift = s1_swap ? s1_sh_ba : s1_sh_ab;
+  wire [4:0]  c1b_shift = s1_swap ? sh_ba    : sh_ab;
 
   localparam integer W2 = WS + 1 + 1 + 1 + 8 + 24 + 24 + 5;
   wire          s2_valid;
@@ -304,6 +303,8 @@ module fp_add #(
   wire [28:0] c2b_full = {1'b0, s3_x, s3_sub} + c2b_y;
   wire [27:0] c2b_sum  = c2b_full[28:1];
   wire unused_sum0 = &{1'b0, c2b_full[0], 1'b0};
+  // What c3a counts the leading zeros of: the sum with the stopper.
+  wire [27:0] c2b_lzv  = c2b_sum | s3_stopper;
 
   localparam integer W4 = WS + 1 + 1 + 8 + 28 + 28;
   wire          s4_valid;
@@ -312,7 +313,7 @@ module fp_add #(
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s3_valid),
-    .data_i  ({s3_spec, s3_sign, s3_zsign, s3_exp, s3_stopper, c2b_sum}),
+    .data_i  ({s3_spec, s3_sign, s3_zsign, s3_exp, c2b_lzv, c2b_sum}),
     .valid_o (s4_valid),
     .data_o  (s4_data)
   );
@@ -320,9 +321,9 @@ module fp_add #(
   wire [WS-1:0] s4_spec;
   wire          s4_sign, s4_zsign;
   wire [7:0]    s4_exp;
-  wire [27:0]   s4_stopper;
+  wire [27:0]   s4_lzv;
   wire [27:0]   s4_sum;
-  assign {s4_spec, s4_sign, s4_zsign, s4_exp, s4_stopper, s4_sum} = s4_data;
+  assign {s4_spec, s4_sign, s4_zsign, s4_exp, s4_lzv, s4_sum} = s4_data;
 
   // ---------------------------------------------------------------------
   // c3a: leading zeros of the sum (0 on a carry out: a right shift by one
@@ -331,7 +332,7 @@ module fp_add #(
   // ---------------------------------------------------------------------
   wire [4:0] c3_lz;
   fp_lzc #(.WIDTH(28)) u_lzc (
-    .v_i (s4_sum | s4_stopper),
+    .v_i (s4_lzv),
     .n_o (c3_lz)
   );
   wire c3_sign = (s4_sum == 28'd0) ? s4_zsign : s4_sign;
@@ -385,7 +386,8 @@ module fp_add #(
   // ---------------------------------------------------------------------
   // c4a: rounding increment; c4b: overflow, flush, flags, special result
   // ---------------------------------------------------------------------
-  wire [32:0] c4_pack;
+  wire [30:0] c4_pack;
+  wire        c4_overflow;
   wire        c4_inexact;
   wire        c4_tiny;
   fp_round #(.ROUND(ROUND)) u_round (
@@ -395,18 +397,19 @@ module fp_add #(
     .round_i   (s6_r),
     .sticky_i  (s6_s),
     .pack_o    (c4_pack),
+    .overflow_o(c4_overflow),
     .inexact_o (c4_inexact),
     .tiny_o    (c4_tiny)
   );
 
-  localparam integer W7 = WS + 1 + 33 + 1 + 1;
+  localparam integer W7 = WS + 1 + 31 + 1 + 1 + 1;
   wire          s7_valid;
   wire [W7-1:0] s7_data;
   fp_pipe #(.WIDTH(W7), .DEPTH(BND[B_C4B] ? 1 : 0)) u_pipe7 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s6_valid),
-    .data_i  ({s6_spec, s6_sign, c4_pack, c4_inexact, c4_tiny}),
+    .data_i  ({s6_spec, s6_sign, c4_pack, c4_overflow, c4_inexact, c4_tiny}),
     .valid_o (s7_valid),
     .data_o  (s7_data)
   );
@@ -415,10 +418,11 @@ module fp_add #(
   wire [31:0] s7_spec_y;
   wire        s7_spec_nv;
   wire        s7_sign;
-  wire [32:0] s7_pack;
+  wire [30:0] s7_pack;
+  wire        s7_overflow;
   wire        s7_inexact;
   wire        s7_tiny;
-  assign {s7_spec, s7_spec_y, s7_spec_nv, s7_sign, s7_pack, s7_inexact,
+  assign {s7_spec, s7_spec_y, s7_spec_nv, s7_sign, s7_pack, s7_overflow, s7_inexact,
           s7_tiny} = s7_data;
 
   wire [31:0] c4_y;
@@ -426,6 +430,7 @@ module fp_add #(
   fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
     .sign_i    (s7_sign),
     .pack_i    (s7_pack),
+    .overflow_i(s7_overflow),
     .inexact_i (s7_inexact),
     .tiny_i    (s7_tiny),
     .spec_i    (s7_spec),

@@ -37,8 +37,8 @@
 //                    tiny results, shifts of 2 to 30 places with sticky
 //                    (fp_shr_sticky);
 //              m3b = the remaining one-place shift with sticky;
-//              m4a = rounding increment (fp_round);
-//              m4b = overflow, flush to zero, flags, special result
+//              m4a = rounding increment and overflow (fp_round);
+//              m4b = flush to zero, flags, special result
 //                    (fp_round_pack).
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
@@ -302,8 +302,9 @@ module fp_mul #(
   wire [9:0]  c2b_exp_a  = c2b_ge1 ? s3_exp : 10'd1;
   wire [9:0]  c2b_exp_b  = c2b_ge2 ? c2b_exp_m1 : 10'd1;
   wire [9:0]  c2b_rs     = 10'd2 - s3_exp;
+  // (rs > SHIFT_MAX written as bits: no comparator chain)
   wire [4:0]  c2b_shift  = c2b_ge2 ? 5'd0
-                         : ((c2b_rs > SHIFT_MAX) ? SHIFT_MAX[4:0] : c2b_rs[4:0]);
+                         : ((|c2b_rs[9:5]) ? SHIFT_MAX[4:0] : c2b_rs[4:0]);
 
   localparam integer W4 = WS + 10 + 10 + 1 + 5 + 24 + 12 + 25 + 1;
   wire          s4_valid;
@@ -426,7 +427,8 @@ module fp_mul #(
   // ---------------------------------------------------------------------
   // m4a: rounding increment; m4b: overflow, flush, flags, special result
   // ---------------------------------------------------------------------
-  wire [32:0] c4_pack;
+  wire [30:0] c4_pack;
+  wire        c4_overflow;
   wire        c4_inexact;
   wire        c4_tiny;
   fp_round #(.ROUND(ROUND)) u_round (
@@ -436,18 +438,19 @@ module fp_mul #(
     .round_i   (s7_man[0]),
     .sticky_i  (s7_st),
     .pack_o    (c4_pack),
+    .overflow_o(c4_overflow),
     .inexact_o (c4_inexact),
     .tiny_o    (c4_tiny)
   );
 
-  localparam integer W8 = WS + 33 + 1 + 1;
+  localparam integer W8 = WS + 31 + 1 + 1 + 1;
   wire          s8_valid;
   wire [W8-1:0] s8_data;
   fp_pipe #(.WIDTH(W8), .DEPTH(BND[B_M4B] ? 1 : 0)) u_pipe8 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s7_valid),
-    .data_i  ({s7_spec, c4_pack, c4_inexact, c4_tiny}),
+    .data_i  ({s7_spec, c4_pack, c4_overflow, c4_inexact, c4_tiny}),
     .valid_o (s8_valid),
     .data_o  (s8_data)
   );
@@ -456,10 +459,11 @@ module fp_mul #(
   wire [31:0] s8_spec_y;
   wire        s8_spec_nv;
   wire        s8_sign;
-  wire [32:0] s8_pack;
+  wire [30:0] s8_pack;
+  wire        s8_overflow;
   wire        s8_inexact;
   wire        s8_tiny;
-  assign {s8_spec, s8_spec_y, s8_spec_nv, s8_sign, s8_pack, s8_inexact,
+  assign {s8_spec, s8_spec_y, s8_spec_nv, s8_sign, s8_pack, s8_overflow, s8_inexact,
           s8_tiny} = s8_data;
 
   wire [31:0] c4_y;
@@ -467,6 +471,7 @@ module fp_mul #(
   fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
     .sign_i    (s8_sign),
     .pack_i    (s8_pack),
+    .overflow_i(s8_overflow),
     .inexact_i (s8_inexact),
     .tiny_i    (s8_tiny),
     .spec_i    (s8_spec),

@@ -16,8 +16,10 @@
 //   guard_i    first bit below mant_i[0]
 //   round_i    second bit below mant_i[0]
 //   sticky_i   OR of all lower bits
-//   pack_o     exponent and fraction fields of the rounded magnitude,
-//              {exponent (10 bits, >= 255 on overflow), fraction (23)}
+//   pack_o     exponent and fraction fields of the rounded magnitude
+//              (meaningless on overflow)
+//   overflow_o the rounded exponent is >= 255 (found from the inputs,
+//              beside the increment's carry chain)
 //   inexact_o  the result is inexact (guard, round or sticky set)
 //   tiny_o     the result is tiny (below 2^-126) after rounding
 //
@@ -25,7 +27,7 @@
 // significand, 0 for a subnormal one, since then exp_i == 1), and the
 // round-up adds into the whole word, so a subnormal that rounds up to
 // 2^-126 and a significand that rounds up to 2^24 both come out right:
-// one 33-bit increment.
+// one 31-bit increment.
 //
 // Standards: IEEE 754-2008 §4.3 (roundTiesToEven, roundTowardZero); §7.5
 // tininess detected after rounding (as x86 and TestFloat -tininessafter):
@@ -41,7 +43,8 @@ module fp_round #(
   input  wire        guard_i,
   input  wire        round_i,
   input  wire        sticky_i,
-  output wire [32:0] pack_o,
+  output wire [30:0] pack_o,
+  output wire        overflow_o,
   output wire        inexact_o,
   output wire        tiny_o
 );
@@ -56,7 +59,12 @@ module fp_round #(
                                        : 1'b0;
 
   wire [9:0] exp_field = exp_i & {10{mant_i[23]}};
-  assign pack_o = {exp_field, mant_i[22:0]} + {32'd0, round_up};
+  assign pack_o = {exp_field[7:0], mant_i[22:0]} + {30'd0, round_up};
+
+  // Overflow: the exponent field is >= 255 already, or 254 with a carry
+  // out of the fraction (all ones, rounded up).
+  assign overflow_o = exp_field[9] | exp_field[8] | (&exp_field[7:0])
+                    | ((exp_field == 10'd254) & (&mant_i[22:0]) & round_up);
 
   // Tiny after rounding: below 2^-126 before rounding (a subnormal
   // significand), and not rounding up to 2^-126 with an unbounded

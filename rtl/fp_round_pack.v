@@ -9,7 +9,8 @@
 //
 // Ports:
 //   sign_i     sign of the result
-//   pack_i     fp_round pack_o: {exponent (10 bits), fraction (23 bits)}
+//   pack_i     fp_round pack_o: {exponent, fraction} fields
+//   overflow_i fp_round overflow_o
 //   inexact_i  fp_round inexact_o
 //   tiny_i     fp_round tiny_o
 //   spec_i     the operation has a special result: spec_y_i, no rounding
@@ -29,7 +30,8 @@ module fp_round_pack #(
   parameter integer FTZ   = 0  // 1: flush tiny results to zero
 ) (
   input  wire        sign_i,
-  input  wire [32:0] pack_i,
+  input  wire [30:0] pack_i,
+  input  wire        overflow_i,
   input  wire        inexact_i,
   input  wire        tiny_i,
   input  wire        spec_i,
@@ -40,7 +42,6 @@ module fp_round_pack #(
 );
 
   localparam integer ROUND_RNE = 0;
-  localparam [9:0]   EXP_INF   = 10'd255;
   localparam [30:0]  MAG_INF   = 31'h7F80_0000;
   localparam [30:0]  MAG_MAX   = 31'h7F7F_FFFF;
   localparam [4:0]   FLAG_NX   = 5'b00001;
@@ -48,13 +49,11 @@ module fp_round_pack #(
   localparam [4:0]   FLAG_OF   = 5'b00100;
   localparam [4:0]   FLAG_NV   = 5'b10000;
 
-  wire overflow = (pack_i[32:23] >= EXP_INF);
-
   always @* begin
     if (spec_i) begin
       y_o     = spec_y_i;
       flags_o = spec_nv_i ? FLAG_NV : 5'd0;
-    end else if (overflow) begin
+    end else if (overflow_i) begin
       y_o     = {sign_i, (ROUND == ROUND_RNE) ? MAG_INF : MAG_MAX};
       flags_o = FLAG_OF | FLAG_NX;
     end else if ((FTZ != 0) && tiny_i) begin
