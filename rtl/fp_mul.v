@@ -14,7 +14,7 @@
 //              L = 4:  in | m1a m1b | m2a m2b m2c | m3a m3b m4a m4b | out
 //              L = 5:  in | m1a m1b | m2a m2b m2c | m3a m3b | m4a m4b | out
 //              L = 6:  in | m1a m1b | m2a | m2b m2c | m3a m3b | m4a m4b | out
-//              L = 7:  in | m1a m1b | m2a | m2b m2c | m3a m3b | m4a | m4b
+//              L = 7:  in | m1a | m1b | m2a | m2b m2c | m3a m3b | m4a m4b
 //                      | out
 //              L = 8:  in | m1a | m1b | m2a | m2b m2c | m3a m3b | m4a
 //                      | m4b | out
@@ -116,7 +116,7 @@ module fp_mul #(
         4:       bounds = 9'b0_0010_0101;
         5:       bounds = 9'b0_1010_0101;
         6:       bounds = 9'b0_1010_1101;
-        7:       bounds = 9'b1_1010_1101;
+        7:       bounds = 9'b0_1010_1111;
         8:       bounds = 9'b1_1010_1111;
         9:       bounds = 9'b1_1011_1111;
         default: bounds = 9'b1_1111_1111;
