@@ -5,19 +5,34 @@
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the
-//            result on the outputs; >= 1 (default 4).  Stage boundaries:
-//              L = 1: c1 c2 c3 c4 | out
-//              L = 2: c1 c2 | c3 c4 | out
-//              L = 3: c1 c2 | c3 | c4 | out
-//              L = 4: c1 | c2 | c3 | c4 | out
-//              L = 5: in | c1 | c2 | c3 | c4 | out
-//              L >= 6: in | c1 | c2a | c2b | c3 | c4 | out, plus L-6
-//              delay stages (in = operand registers; c2a = alignment
-//              shift, c2b = add/subtract)
-//            where c1 = unpack, special cases, compare and swap, exponent
-//            difference; c2 = alignment shift with sticky, add/subtract;
-//            c3 = leading-zero count and normalisation; c4 = rounding and
-//            packing (fp_round).
+//            result on the outputs; >= 1 (default 4).  The datapath has
+//            eight places for a register (| below) besides the output
+//            register; LATENCY picks which hold one:
+//              L = 1:  c1a c1b c2a c2b c3a c3b c4a c4b | out
+//              L = 2:  c1a c1b c2a c2b | c3a c3b c4a c4b | out
+//              L = 3:  c1a c1b c2a c2b | c3a c3b | c4a c4b | out
+//              L = 4:  c1a c1b | c2a c2b | c3a c3b | c4a c4b | out
+//              L = 5:  in | c1a c1b | c2a c2b | c3a c3b | c4a c4b | out
+//              L = 6:  in | c1a c1b | c2a c2b | c3a | c3b | c4a c4b | out
+//              L = 7:  in | c1a c1b | c2a | c2b | c3a | c3b | c4a c4b | out
+//              L = 8:  in | c1a | c1b | c2a | c2b | c3a | c3b | c4a c4b
+//                      | out
+//              L >= 9: in | c1a | c1b | c2a | c2b | c3a | c3b | c4a | c4b
+//                      | out, plus L-9 delay stages
+//            where in = operand registers;
+//              c1a = unpack, special cases, magnitude compare;
+//              c1b = swap (x = the operand of larger magnitude), exponent
+//                    difference (alignment shift, saturated);
+//              c2a = alignment shift of y with sticky (fp_shr_sticky), the
+//                    normalisation limit from the exponent;
+//              c2b = add/subtract (one carry chain), ORed with the
+//                    normalisation limit for c3a;
+//              c3a = leading-zero count (fp_lzc), limited so that the
+//                    exponent stays >= 1;
+//              c3b = normalising shift and exponent;
+//              c4a = rounding increment and overflow (fp_round);
+//              c4b = flush to zero, flags, special result
+//                    (fp_round_pack).
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
 //            kept, no flag: x86 DAZ) and tiny results flushed to +-0 with
@@ -70,20 +85,40 @@ module fp_add #(
 );
 
   localparam [7:0]  EXP_MAX     = 8'hFF;
-  localparam [7:0]  EXP_ONE     = 8'd1;
   localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
-  localparam [4:0]  FLAG_NV     = 5'b10000;
-  localparam [4:0]  ALIGN_MAX   = 5'd27; // shifts >= 27 leave only sticky
 
-  // Stage boundaries (register stages after c1, c2, c3, and at the output).
-  localparam integer DEPTH_I  = (LATENCY >= 5) ? 1 : 0;
-  localparam integer DEPTH1   = (LATENCY >= 4) ? 1 : 0;
-  localparam integer DEPTH2A  = (LATENCY >= 6) ? 1 : 0;
-  localparam integer DEPTH2   = (LATENCY >= 2) ? 1 : 0;
-  localparam integer DEPTH3   = (LATENCY >= 3) ? 1 : 0;
-  localparam integer DEPTH_O  = (LATENCY >= 6) ? LATENCY - 5 : 1;
+  // Register places, in datapath order (bit k of BND: place k holds one).
+  localparam integer B_IN  = 0; // in  | c1a : operand registers
+  localparam integer B_C1B = 1; // c1a | c1b
+  localparam integer B_C2  = 2; // c1b | c2a
+  localparam integer B_C2B = 3; // c2a | c2b
+  localparam integer B_C3  = 4; // c2b | c3a : the sum
+  localparam integer B_C3B = 5; // c3a | c3b
+  localparam integer B_C4  = 6; // c3b | c4a : before rounding
+  localparam integer B_C4B = 7; // c4a | c4b
+  localparam integer N_FULL = 9; // LATENCY with every place registered
+
+  // The header's table; LATENCY >= N_FULL adds output delay stages.
+  function [7:0] bounds(input integer lat);
+    begin
+      case (lat)
+        1:       bounds = 8'b0000_0000;
+        2:       bounds = 8'b0001_0000;
+        3:       bounds = 8'b0101_0000;
+        4:       bounds = 8'b0101_0100;
+        5:       bounds = 8'b0101_0101;
+        6:       bounds = 8'b0111_0101;
+        7:       bounds = 8'b0111_1101;
+        8:       bounds = 8'b0111_1111;
+        default: bounds = 8'b1111_1111;
+      endcase
+    end
+  endfunction
+
+  localparam [7:0]   BND     = bounds(LATENCY);
+  localparam integer DEPTH_O = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -93,12 +128,12 @@ module fp_add #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // operand registers (LATENCY >= 5)
+  // in: operand registers
   // ---------------------------------------------------------------------
   wire        s0_valid;
   wire        sub_in;
   wire [31:0] a_in, b_in;
-  fp_pipe #(.WIDTH(65), .DEPTH(DEPTH_I)) u_pipe_in (
+  fp_pipe #(.WIDTH(65), .DEPTH(BND[B_IN] ? 1 : 0)) u_pipe_in (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (valid_i),
@@ -108,7 +143,7 @@ module fp_add #(
   );
 
   // ---------------------------------------------------------------------
-  // c1: unpack, special cases, compare and swap, exponent difference
+  // c1a: unpack, special cases, compare, exponent differences
   // ---------------------------------------------------------------------
   wire       a_sign = a_in[31];
   wire       b_sign = b_in[31] ^ sub_in; // effective sign of the addend
@@ -147,209 +182,268 @@ module fp_add #(
     end
   end
 
-  // x: the operand of larger magnitude, y: the other one.
-  wire        swap      = (b_mag > a_mag);
-  wire [30:0] x_mag     = swap ? b_mag : a_mag;
-  wire [30:0] y_mag     = swap ? a_mag : b_mag;
-  wire        c1_sign   = swap ? b_sign : a_sign;
-  wire        c1_sub    = a_sign ^ b_sign;
+  // Significands, exponents (1 for subnormals) and the compare.
+  wire        a_norm   = (a_mag[30:23] != 8'd0);
+  wire        b_norm   = (b_mag[30:23] != 8'd0);
+  wire [7:0]  a_e      = {a_mag[30:24], a_mag[23] | ~a_norm};
+  wire [7:0]  b_e      = {b_mag[30:24], b_mag[23] | ~b_norm};
+  wire [23:0] c1_aman  = {a_norm, a_mag[22:0]};
+  wire [23:0] c1_bman  = {b_norm, b_mag[22:0]};
+  wire        c1_swap  = (b_mag > a_mag);
+  wire        c1_sub   = a_sign ^ b_sign;
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
-  wire        c1_zsign  = c1_sub ? 1'b0 : a_sign;
-  wire        x_norm    = (x_mag[30:23] != 8'd0);
-  wire        y_norm    = (y_mag[30:23] != 8'd0);
-  wire [7:0]  c1_exp    = x_norm ? x_mag[30:23] : EXP_ONE;
-  wire [7:0]  y_exp     = y_norm ? y_mag[30:23] : EXP_ONE;
-  wire [23:0] c1_xman   = {x_norm, x_mag[22:0]};
-  wire [23:0] c1_yman   = {y_norm, y_mag[22:0]};
-  wire [7:0]  exp_diff  = c1_exp - y_exp;
-  wire [4:0]  c1_shift  = (exp_diff > {3'd0, ALIGN_MAX}) ? ALIGN_MAX : exp_diff[4:0];
+  wire        c1_zsign = c1_sub ? 1'b0 : a_sign;
 
-  localparam integer W1 = 1 + 32 + 1 + 1 + 1 + 1 + 8 + 24 + 24 + 5;
+  // The special result, carried to c4b.
+  localparam integer WS = 1 + 32 + 1; // spec, spec_y, spec_nv
+
+  localparam integer W1 = WS + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
-  fp_pipe #(.WIDTH(W1), .DEPTH(DEPTH1)) u_pipe1 (
+  fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_C1B] ? 1 : 0)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s0_valid),
-    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_sub, c1_zsign,
-               c1_exp, c1_xman, c1_yman, c1_shift}),
+    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, a_sign, b_sign, c1_swap,
+               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
 
-  wire        s1_spec;
-  wire [31:0] s1_spec_y;
-  wire        s1_spec_nv;
-  wire        s1_sign;
-  wire        s1_sub;
-  wire        s1_zsign;
-  wire [7:0]  s1_exp;
-  wire [23:0] s1_xman;
-  wire [23:0] s1_yman;
-  wire [4:0]  s1_shift;
-  assign {s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_sub, s1_zsign,
-          s1_exp, s1_xman, s1_yman, s1_shift} = s1_data;
+  wire [WS-1:0] s1_spec;  // spec, spec_y, spec_nv
+  wire          s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign;
+  wire [7:0]    s1_ae, s1_be;
+  wire [23:0]   s1_aman, s1_bman;
+  assign {s1_spec, s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign, s1_ae,
+          s1_be, s1_aman, s1_bman} = s1_data;
 
   // ---------------------------------------------------------------------
-  // c2: align y to x (3 extra bits: guard, round, sticky), add or subtract
+  // c1b: swap: x is the operand of larger magnitude, y the other one; the
+  // alignment shift x_e - y_e, from both differences (each a short carry
+  // chain) saturated at 31 (any shift >= 26 leaves only the sticky bit)
+  // and picked by swap.
   // ---------------------------------------------------------------------
-  wire [53:0] y_wide   = {s1_yman, 3'd0, 27'd0} >> s1_shift;
-  wire [26:0] y_align  = {y_wide[53:28], y_wide[27] | (|y_wide[26:0])};
-  wire [26:0] x_align  = {s1_xman, 3'd0};
+  wire [7:0]  d_ab      = s1_ae - s1_be;  // used when a_e >= b_e
+  wire [7:0]  d_ba      = s1_be - s1_ae;  // used when b_e >= a_e
+  wire [4:0]  sh_ab     = d_ab[4:0] | {5{|d_ab[7:5]}};
+  wire [4:0]  sh_ba     = d_ba[4:0] | {5{|d_ba[7:5]}};
+  wire        c1b_sign  = s1_swap ? s1_bsign : s1_asign;
+  wire [7:0]  c1b_exp   = s1_swap ? s1_be    : s1_ae;
+  wire [23:0] c1b_xman  = s1_swap ? s1_bman  : s1_aman;
+  wire [23:0] c1b_yman  = s1_swap ? s1_aman  : s1_bman;
+  wire [4:0]  c1b_shift = s1_swap ? sh_ba    : sh_ab;
 
-  // LATENCY >= 6: a register stage between the shift and the adder.
-  localparam integer W2A = 1 + 32 + 1 + 1 + 1 + 1 + 8 + 27 + 27;
-  wire          s2a_valid;
-  wire [W2A-1:0] s2a_data;
-  fp_pipe #(.WIDTH(W2A), .DEPTH(DEPTH2A)) u_pipe2a (
+  localparam integer W2 = WS + 1 + 1 + 1 + 8 + 24 + 24 + 5;
+  wire          s2_valid;
+  wire [W2-1:0] s2_data;
+  fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_C2] ? 1 : 0)) u_pipe2 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s1_valid),
-    .data_i  ({s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_sub, s1_zsign, s1_exp,
-               x_align, y_align}),
-    .valid_o (s2a_valid),
-    .data_o  (s2a_data)
-  );
-  wire        s2a_spec;
-  wire [31:0] s2a_spec_y;
-  wire        s2a_spec_nv;
-  wire        s2a_sign;
-  wire        s2a_sub;
-  wire        s2a_zsign;
-  wire [7:0]  s2a_exp;
-  wire [26:0] s2a_x;
-  wire [26:0] s2a_y;
-  assign {s2a_spec, s2a_spec_y, s2a_spec_nv, s2a_sign, s2a_sub, s2a_zsign, s2a_exp,
-          s2a_x, s2a_y} = s2a_data;
-
-  wire [27:0] c2_sum   = s2a_sub ? ({1'b0, s2a_x} - {1'b0, s2a_y})
-                                 : ({1'b0, s2a_x} + {1'b0, s2a_y});
-
-  localparam integer W2 = 1 + 32 + 1 + 1 + 1 + 8 + 28;
-  wire          s2_valid;
-  wire [W2-1:0] s2_data;
-  fp_pipe #(.WIDTH(W2), .DEPTH(DEPTH2)) u_pipe2 (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s2a_valid),
-    .data_i  ({s2a_spec, s2a_spec_y, s2a_spec_nv, s2a_sign, s2a_zsign, s2a_exp,
-               c2_sum}),
+    .data_i  ({s1_spec, c1b_sign, s1_sub, s1_zsign, c1b_exp, c1b_xman,
+               c1b_yman, c1b_shift}),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
 
-  wire        s2_spec;
-  wire [31:0] s2_spec_y;
-  wire        s2_spec_nv;
-  wire        s2_sign;
-  wire        s2_zsign;
-  wire [7:0]  s2_exp;
-  wire [27:0] s2_sum;
-  assign {s2_spec, s2_spec_y, s2_spec_nv, s2_sign, s2_zsign, s2_exp,
-          s2_sum} = s2_data;
+  wire [WS-1:0] s2_spec;
+  wire          s2_sign, s2_sub, s2_zsign;
+  wire [7:0]    s2_exp;
+  wire [23:0]   s2_xman, s2_yman;
+  wire [4:0]    s2_shift;
+  assign {s2_spec, s2_sign, s2_sub, s2_zsign, s2_exp, s2_xman, s2_yman,
+          s2_shift} = s2_data;
 
   // ---------------------------------------------------------------------
-  // c3: normalise.  A carry shifts right by one; otherwise shift left by
-  // the leading-zero count, limited to exp - 1 so that the exponent stays
-  // >= 1 (a "stopper" bit at that position bounds the count).
+  // c2a: align y to x: 26 bits (significand, guard, round) and a sticky
+  // bit; for c3a, the normalisation limit: a "stopper" one at bit
+  // 27 - exp of the 28-bit sum bounds the left shift so that the exponent
+  // stays >= 1 (none for exp >= 28).
   // ---------------------------------------------------------------------
-  wire [7:0]  lz_cap  = s2_exp - EXP_ONE;
-  wire [26:0] stopper = (lz_cap < 8'd27) ? (27'h400_0000 >> lz_cap[4:0]) : 27'd0;
+  wire [25:0] y_sh;
+  wire        y_st;
+  fp_shr_sticky #(.WIDTH(26)) u_align (
+    .v_i      ({s2_yman, 2'b00}),
+    .amt_i    (s2_shift),
+    .sticky_i (1'b0),
+    .v_o      (y_sh),
+    .sticky_o (y_st)
+  );
+  wire [26:0] c2_x       = {s2_xman, 3'b000};
+  wire [26:0] c2_y       = {y_sh, y_st};
+  wire [27:0] c2_stopper = 28'h800_0000 >> s2_exp;
 
-  reg [26:0] lz_v;  // value with stopper, drives the count
-  reg [26:0] lz_w;  // value shifted alongside
-  reg [4:0]  lz_n;  // shift count
-  always @* begin
-    lz_v = s2_sum[26:0] | stopper;
-    lz_w = s2_sum[26:0];
-    lz_n = 5'd0;
-    if (lz_v[26:11] == 16'd0) begin lz_v = lz_v << 16; lz_w = lz_w << 16; lz_n = lz_n + 5'd16; end
-    if (lz_v[26:19] == 8'd0)  begin lz_v = lz_v << 8;  lz_w = lz_w << 8;  lz_n = lz_n + 5'd8;  end
-    if (lz_v[26:23] == 4'd0)  begin lz_v = lz_v << 4;  lz_w = lz_w << 4;  lz_n = lz_n + 5'd4;  end
-    if (lz_v[26:25] == 2'd0)  begin lz_v = lz_v << 2;  lz_w = lz_w << 2;  lz_n = lz_n + 5'd2;  end
-    if (lz_v[26] == 1'b0)     begin lz_v = lz_v << 1;  lz_w = lz_w << 1;  lz_n = lz_n + 5'd1;  end
-  end
-
-  reg        c3_sign;
-  reg [9:0]  c3_exp;
-  reg [23:0] c3_man;
-  reg        c3_g;
-  reg        c3_r;
-  reg        c3_s;
-  always @* begin
-    c3_sign = s2_sign;
-    if (s2_sum == 28'd0) begin
-      c3_sign = s2_zsign;
-      c3_exp  = 10'd1;
-      c3_man  = 24'd0;
-      c3_g    = 1'b0;
-      c3_r    = 1'b0;
-      c3_s    = 1'b0;
-    end else if (s2_sum[27]) begin
-      c3_exp  = {2'd0, s2_exp} + 10'd1;
-      c3_man  = s2_sum[27:4];
-      c3_g    = s2_sum[3];
-      c3_r    = s2_sum[2];
-      c3_s    = |s2_sum[1:0];
-    end else begin
-      c3_exp  = {2'd0, s2_exp} - {5'd0, lz_n};
-      c3_man  = lz_w[26:3];
-      c3_g    = lz_w[2];
-      c3_r    = lz_w[1];
-      c3_s    = lz_w[0];
-    end
-  end
-
-  wire unused_lz = &{1'b0, lz_v, 1'b0};
-
-  localparam integer W3 = 1 + 32 + 1 + 1 + 10 + 24 + 3;
+  localparam integer W3 = WS + 1 + 1 + 1 + 8 + 28 + 27 + 27;
   wire          s3_valid;
   wire [W3-1:0] s3_data;
-  fp_pipe #(.WIDTH(W3), .DEPTH(DEPTH3)) u_pipe3 (
+  fp_pipe #(.WIDTH(W3), .DEPTH(BND[B_C2B] ? 1 : 0)) u_pipe3 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s2_valid),
-    .data_i  ({s2_spec, s2_spec_y, s2_spec_nv, c3_sign, c3_exp, c3_man,
-               c3_g, c3_r, c3_s}),
+    .data_i  ({s2_spec, s2_sign, s2_sub, s2_zsign, s2_exp, c2_stopper,
+               c2_x, c2_y}),
     .valid_o (s3_valid),
     .data_o  (s3_data)
   );
 
-  wire        s3_spec;
-  wire [31:0] s3_spec_y;
-  wire        s3_spec_nv;
-  wire        s3_sign;
-  wire [9:0]  s3_exp;
-  wire [23:0] s3_man;
-  wire        s3_g;
-  wire        s3_r;
-  wire        s3_s;
-  assign {s3_spec, s3_spec_y, s3_spec_nv, s3_sign, s3_exp, s3_man,
-          s3_g, s3_r, s3_s} = s3_data;
+  wire [WS-1:0] s3_spec;
+  wire          s3_sign, s3_sub, s3_zsign;
+  wire [7:0]    s3_exp;
+  wire [27:0]   s3_stopper;
+  wire [26:0]   s3_x, s3_y;
+  assign {s3_spec, s3_sign, s3_sub, s3_zsign, s3_exp, s3_stopper, s3_x,
+          s3_y} = s3_data;
 
   // ---------------------------------------------------------------------
-  // c4: round and pack, or the special result
+  // c2b: x + y or x - y (x >= y, so the difference is not negative), one
+  // carry chain: x + (y xor sub) + sub, the carry-in entering through an
+  // extra low bit.
   // ---------------------------------------------------------------------
-  wire [31:0] rnd_y;
-  wire [4:0]  rnd_flags;
-  fp_round #(.ROUND(ROUND), .FTZ(FTZ)) u_round (
-    .sign_i   (s3_sign),
-    .exp_i    (s3_exp),
-    .mant_i   (s3_man),
-    .guard_i  (s3_g),
-    .round_i  (s3_r),
-    .sticky_i (s3_s),
-    .y_o      (rnd_y),
-    .flags_o  (rnd_flags)
+  wire [28:0] c2b_y    = {{1'b0, s3_y} ^ {28{s3_sub}}, s3_sub};
+  wire [28:0] c2b_full = {1'b0, s3_x, s3_sub} + c2b_y;
+  wire [27:0] c2b_sum  = c2b_full[28:1];
+  wire unused_sum0 = &{1'b0, c2b_full[0], 1'b0};
+  // What c3a counts the leading zeros of: the sum with the stopper.
+  wire [27:0] c2b_lzv  = c2b_sum | s3_stopper;
+
+  localparam integer W4 = WS + 1 + 1 + 8 + 28 + 28;
+  wire          s4_valid;
+  wire [W4-1:0] s4_data;
+  fp_pipe #(.WIDTH(W4), .DEPTH(BND[B_C3] ? 1 : 0)) u_pipe4 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s3_valid),
+    .data_i  ({s3_spec, s3_sign, s3_zsign, s3_exp, c2b_lzv, c2b_sum}),
+    .valid_o (s4_valid),
+    .data_o  (s4_data)
   );
 
-  wire [31:0] c4_y     = s3_spec ? s3_spec_y : rnd_y;
-  wire [4:0]  c4_flags = s3_spec ? (s3_spec_nv ? FLAG_NV : 5'd0) : rnd_flags;
+  wire [WS-1:0] s4_spec;
+  wire          s4_sign, s4_zsign;
+  wire [7:0]    s4_exp;
+  wire [27:0]   s4_lzv;
+  wire [27:0]   s4_sum;
+  assign {s4_spec, s4_sign, s4_zsign, s4_exp, s4_lzv, s4_sum} = s4_data;
+
+  // ---------------------------------------------------------------------
+  // c3a: leading zeros of the sum (0 on a carry out: a right shift by one
+  // is the same as taking bits 27:4), at most exp thanks to the stopper;
+  // the sign of an exact zero.
+  // ---------------------------------------------------------------------
+  wire [4:0] c3_lz;
+  fp_lzc #(.WIDTH(28)) u_lzc (
+    .v_i (s4_lzv),
+    .n_o (c3_lz)
+  );
+  wire c3_sign = (s4_sum == 28'd0) ? s4_zsign : s4_sign;
+
+  localparam integer W5 = WS + 1 + 8 + 5 + 28;
+  wire          s5_valid;
+  wire [W5-1:0] s5_data;
+  fp_pipe #(.WIDTH(W5), .DEPTH(BND[B_C3B] ? 1 : 0)) u_pipe5 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s4_valid),
+    .data_i  ({s4_spec, c3_sign, s4_exp, c3_lz, s4_sum}),
+    .valid_o (s5_valid),
+    .data_o  (s5_data)
+  );
+
+  wire [WS-1:0] s5_spec;
+  wire          s5_sign;
+  wire [7:0]    s5_exp;
+  wire [4:0]    s5_lz;
+  wire [27:0]   s5_sum;
+  assign {s5_spec, s5_sign, s5_exp, s5_lz, s5_sum} = s5_data;
+
+  // ---------------------------------------------------------------------
+  // c3b: normalise: significand bits 27:4, guard 3, round 2, sticky 1:0;
+  // exponent exp + 1 - lz (>= 1; a zero sum gives a zero significand,
+  // which fp_round packs as a zero whatever the exponent)
+  // ---------------------------------------------------------------------
+  wire [27:0] c3b_w   = s5_sum << s5_lz;
+  wire [9:0]  c3b_exp = {2'd0, s5_exp} + 10'd1 - {5'd0, s5_lz};
+
+  localparam integer W6 = WS + 1 + 10 + 24 + 3;
+  wire          s6_valid;
+  wire [W6-1:0] s6_data;
+  fp_pipe #(.WIDTH(W6), .DEPTH(BND[B_C4] ? 1 : 0)) u_pipe6 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s5_valid),
+    .data_i  ({s5_spec, s5_sign, c3b_exp, c3b_w[27:2], |c3b_w[1:0]}),
+    .valid_o (s6_valid),
+    .data_o  (s6_data)
+  );
+
+  wire [WS-1:0] s6_spec;
+  wire          s6_sign;
+  wire [9:0]    s6_exp;
+  wire [23:0]   s6_man;
+  wire          s6_g, s6_r, s6_s;
+  assign {s6_spec, s6_sign, s6_exp, s6_man, s6_g, s6_r, s6_s} = s6_data;
+
+  // ---------------------------------------------------------------------
+  // c4a: rounding increment; c4b: overflow, flush, flags, special result
+  // ---------------------------------------------------------------------
+  wire [30:0] c4_pack;
+  wire        c4_overflow;
+  wire        c4_inexact;
+  wire        c4_tiny;
+  fp_round #(.ROUND(ROUND)) u_round (
+    .exp_i     (s6_exp),
+    .mant_i    (s6_man),
+    .guard_i   (s6_g),
+    .round_i   (s6_r),
+    .sticky_i  (s6_s),
+    .pack_o    (c4_pack),
+    .overflow_o(c4_overflow),
+    .inexact_o (c4_inexact),
+    .tiny_o    (c4_tiny)
+  );
+
+  localparam integer W7 = WS + 1 + 31 + 1 + 1 + 1;
+  wire          s7_valid;
+  wire [W7-1:0] s7_data;
+  fp_pipe #(.WIDTH(W7), .DEPTH(BND[B_C4B] ? 1 : 0)) u_pipe7 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s6_valid),
+    .data_i  ({s6_spec, s6_sign, c4_pack, c4_overflow, c4_inexact, c4_tiny}),
+    .valid_o (s7_valid),
+    .data_o  (s7_data)
+  );
+
+  wire        s7_spec;
+  wire [31:0] s7_spec_y;
+  wire        s7_spec_nv;
+  wire        s7_sign;
+  wire [30:0] s7_pack;
+  wire        s7_overflow;
+  wire        s7_inexact;
+  wire        s7_tiny;
+  assign {s7_spec, s7_spec_y, s7_spec_nv, s7_sign, s7_pack, s7_overflow, s7_inexact,
+          s7_tiny} = s7_data;
+
+  wire [31:0] c4_y;
+  wire [4:0]  c4_flags;
+  fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
+    .sign_i    (s7_sign),
+    .pack_i    (s7_pack),
+    .overflow_i(s7_overflow),
+    .inexact_i (s7_inexact),
+    .tiny_i    (s7_tiny),
+    .spec_i    (s7_spec),
+    .spec_y_i  (s7_spec_y),
+    .spec_nv_i (s7_spec_nv),
+    .y_o       (c4_y),
+    .flags_o   (c4_flags)
+  );
 
   fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (s3_valid),
+    .valid_i (s7_valid),
     .data_i  ({c4_y, c4_flags}),
     .valid_o (valid_o),
     .data_o  ({y_o, flags_o})

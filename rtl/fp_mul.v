@@ -5,19 +5,41 @@
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the
-//            result on the outputs; >= 1 (default 3).  Stage boundaries:
-//              L = 1: m1 m2 m3 | out
-//              L = 2: m1 m2 | m3 | out
-//              L = 3: m1 | m2 | m3 | out
-//              L = 4: in | m1 | m2 | m3 | out
-//              L >= 5: in | m1 | m2 | m3a | m3b | out, plus L-5 delay
-//              stages (in = operand registers; m3a = normalisation and
-//              denormalisation, m3b = rounding)
-//            where m1 = unpack, special cases, normalisation of subnormal
-//            significands, exponent sum; m2 = 24 x 24 bit product (the
-//            registers around it map to the DSP input/output registers);
-//            m3 = normalisation, denormalisation of tiny results with
-//            sticky, rounding and packing (fp_round).
+//            result on the outputs; >= 1 (default 3).  The datapath has
+//            nine places for a register (| below) besides the output
+//            register; LATENCY picks which hold one:
+//              L = 1:  m1a m1b m2a m2b m2c m3a m3b m4a m4b | out
+//              L = 2:  m1a m1b m2a m2b m2c | m3a m3b m4a m4b | out
+//              L = 3:  m1a m1b | m2a m2b m2c | m3a m3b m4a m4b | out
+//              L = 4:  in | m1a m1b | m2a m2b m2c | m3a m3b m4a m4b | out
+//              L = 5:  in | m1a m1b | m2a m2b m2c | m3a m3b | m4a m4b | out
+//              L = 6:  in | m1a m1b | m2a | m2b m2c | m3a m3b | m4a m4b | out
+//              L = 7:  in | m1a | m1b | m2a | m2b m2c | m3a m3b | m4a m4b
+//                      | out
+//              L = 8:  in | m1a | m1b | m2a | m2b m2c | m3a m3b | m4a
+//                      | m4b | out
+//              L = 9:  in | m1a | m1b | m2a | m2b | m2c | m3a m3b | m4a
+//                      | m4b | out
+//              L >= 10: in | m1a | m1b | m2a | m2b | m2c | m3a | m3b
+//                      | m4a | m4b | out, plus L-10 delay stages
+//            where in = operand registers;
+//              m1a = unpack, special cases, leading zeros of subnormal
+//                    significands (fp_mul_unpack_norm), exponent sum;
+//              m1b = normalising shift of the significands;
+//              m2a = the four 12 x 12 bit partial products (DSP blocks)
+//                    and the exponent less the normalising shifts;
+//              m2b = sum of the two middle partial products, and from the
+//                    exponent: the result exponent for either position of
+//                    the product's leading one and the denormalisation
+//                    shift (both depend only on the exponent);
+//              m2c = the 48-bit product (top 27 bits and a sticky bit);
+//              m3a = one-place normalisation and the denormalisation of
+//                    tiny results, shifts of 2 to 30 places with sticky
+//                    (fp_shr_sticky);
+//              m3b = the remaining one-place shift with sticky;
+//              m4a = rounding increment and overflow (fp_round);
+//              m4b = flush to zero, flags, special result
+//                    (fp_round_pack).
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
 //            kept, no flag: x86 DAZ) and tiny results flushed to +-0 with
@@ -70,16 +92,40 @@ module fp_mul #(
   localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
-  localparam [4:0]  FLAG_NV     = 5'b10000;
-  localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 26 leave sticky
+  localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
 
-  // Stage boundaries: register stages at the inputs, after m1, after m2,
-  // inside m3 (before rounding) and at the output.
-  localparam integer DEPTH_I = (LATENCY >= 4) ? 1 : 0;
-  localparam integer DEPTH1  = (LATENCY >= 3) ? 1 : 0;
-  localparam integer DEPTH2  = (LATENCY >= 2) ? 1 : 0;
-  localparam integer DEPTH3  = (LATENCY >= 5) ? 1 : 0;
-  localparam integer DEPTH_O = (LATENCY >= 5) ? LATENCY - 4 : 1;
+  // Register places, in datapath order (bit k of BND: place k holds one).
+  localparam integer B_IN  = 0; // in  | m1a : operand registers
+  localparam integer B_M1B = 1; // m1a | m1b
+  localparam integer B_M2  = 2; // m1b | m2a : DSP operands
+  localparam integer B_M2B = 3; // m2a | m2b : DSP products
+  localparam integer B_M2C = 4; // m2b | m2c
+  localparam integer B_M3  = 5; // m2c | m3a : the product
+  localparam integer B_M3B = 6; // m3a | m3b
+  localparam integer B_M4  = 7; // m3b | m4a : before rounding
+  localparam integer B_M4B = 8; // m4a | m4b
+  localparam integer N_FULL = 10; // LATENCY with every place registered
+
+  // The header's table; LATENCY >= N_FULL adds output delay stages.
+  function [8:0] bounds(input integer lat);
+    begin
+      case (lat)
+        1:       bounds = 9'b0_0000_0000;
+        2:       bounds = 9'b0_0010_0000;
+        3:       bounds = 9'b0_0010_0100;
+        4:       bounds = 9'b0_0010_0101;
+        5:       bounds = 9'b0_1010_0101;
+        6:       bounds = 9'b0_1010_1101;
+        7:       bounds = 9'b0_1010_1111;
+        8:       bounds = 9'b1_1010_1111;
+        9:       bounds = 9'b1_1011_1111;
+        default: bounds = 9'b1_1111_1111;
+      endcase
+    end
+  endfunction
+
+  localparam [8:0]   BND     = bounds(LATENCY);
+  localparam integer DEPTH_O = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -89,11 +135,11 @@ module fp_mul #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // operand registers (LATENCY >= 4)
+  // in: operand registers
   // ---------------------------------------------------------------------
   wire        s0_valid;
   wire [31:0] a_in, b_in;
-  fp_pipe #(.WIDTH(64), .DEPTH(DEPTH_I)) u_pipe_in (
+  fp_pipe #(.WIDTH(64), .DEPTH(BND[B_IN] ? 1 : 0)) u_pipe_in (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (valid_i),
@@ -103,7 +149,7 @@ module fp_mul #(
   );
 
   // ---------------------------------------------------------------------
-  // m1: unpack, special cases, normalise subnormal significands
+  // m1a: unpack, special cases, leading zeros, exponent sum
   // ---------------------------------------------------------------------
   wire       a_sign = a_in[31];
   wire       b_sign = b_in[31];
@@ -142,135 +188,304 @@ module fp_mul #(
     end
   end
 
-  // Significands with the leading one at bit 23, exponents (10-bit two's
-  // complement) lowered by the normalising shift.
-  wire [23:0] a_man;
-  wire [23:0] b_man;
-  wire [9:0]  a_expn;
-  wire [9:0]  b_expn;
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_norm_a (
+  // Significands, their exponents and leading-zero counts.
+  wire [23:0] c1_aman, c1_bman;
+  wire [7:0]  a_expu, b_expu;
+  wire [4:0]  c1_alz, c1_blz;
+  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_a (
     .exp_i  (a_exp),
     .frac_i (a_in[22:0]),
-    .man_o  (a_man),
-    .exp_o  (a_expn)
+    .man_o  (c1_aman),
+    .exp_o  (a_expu),
+    .lz_o   (c1_alz)
   );
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_norm_b (
+  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_b (
     .exp_i  (b_exp),
     .frac_i (b_in[22:0]),
-    .man_o  (b_man),
-    .exp_o  (b_expn)
+    .man_o  (c1_bman),
+    .exp_o  (b_expu),
+    .lz_o   (c1_blz)
   );
 
-  // Biased exponent of the product taken as a value in [1, 2) times 2:
-  // the product of two significands in [1, 2) lies in [1, 4).
-  wire [9:0] c1_exp = a_expn + b_expn - EXP_BIAS_M1;
+  // Biased exponent of the product taken as a value in [1, 2) times 2
+  // (the product of two significands in [1, 2) lies in [1, 4)), before
+  // the normalising shifts; 10-bit two's complement.
+  wire [9:0] c1_exp = {2'd0, a_expu} + {2'd0, b_expu} - EXP_BIAS_M1;
 
-  localparam integer W1 = 1 + 32 + 1 + 1 + 10 + 24 + 24;
+  // The special result: what m4b needs of an operation throughout.
+  localparam integer WS = 1 + 32 + 1 + 1; // spec, spec_y, spec_nv, sign
+
+  localparam integer W1 = WS + 10 + 24 + 24 + 5 + 5;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
-  fp_pipe #(.WIDTH(W1), .DEPTH(DEPTH1)) u_pipe1 (
+  fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_M1B] ? 1 : 0)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s0_valid),
-    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_exp, a_man, b_man}),
+    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_exp,
+               c1_aman, c1_bman, c1_alz, c1_blz}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
 
-  wire        s1_spec;
-  wire [31:0] s1_spec_y;
-  wire        s1_spec_nv;
-  wire        s1_sign;
-  wire [9:0]  s1_exp;
-  wire [23:0] s1_aman;
-  wire [23:0] s1_bman;
-  assign {s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_exp, s1_aman,
-          s1_bman} = s1_data;
+  wire [WS-1:0] s1_spec;  // spec, spec_y, spec_nv, sign
+  wire [9:0]    s1_exp;
+  wire [23:0]   s1_aman, s1_bman;
+  wire [4:0]    s1_alz, s1_blz;
+  assign {s1_spec, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
 
   // ---------------------------------------------------------------------
-  // m2: the significand product, in [2^46, 2^48)
+  // m1b: normalise the significands (leading one at bit 23)
   // ---------------------------------------------------------------------
-  wire [47:0] c2_prod = s1_aman * s1_bman;
+  wire [23:0] c1b_aman = s1_aman << s1_alz;
+  wire [23:0] c1b_bman = s1_bman << s1_blz;
 
-  localparam integer W2 = 1 + 32 + 1 + 1 + 10 + 48;
+  localparam integer W2 = WS + 10 + 5 + 5 + 24 + 24;
   wire          s2_valid;
   wire [W2-1:0] s2_data;
-  fp_pipe #(.WIDTH(W2), .DEPTH(DEPTH2)) u_pipe2 (
+  fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_M2] ? 1 : 0)) u_pipe2 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s1_valid),
-    .data_i  ({s1_spec, s1_spec_y, s1_spec_nv, s1_sign, s1_exp, c2_prod}),
+    .data_i  ({s1_spec, s1_exp, s1_alz, s1_blz, c1b_aman, c1b_bman}),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
 
-  wire        s2_spec;
-  wire [31:0] s2_spec_y;
-  wire        s2_spec_nv;
-  wire        s2_sign;
-  wire [9:0]  s2_exp;
-  wire [47:0] s2_prod;
-  assign {s2_spec, s2_spec_y, s2_spec_nv, s2_sign, s2_exp, s2_prod} = s2_data;
+  wire [WS-1:0] s2_spec;
+  wire [9:0]    s2_exp;
+  wire [4:0]    s2_alz, s2_blz;
+  wire [23:0]   s2_aman, s2_bman;
+  assign {s2_spec, s2_exp, s2_alz, s2_blz, s2_aman, s2_bman} = s2_data;
 
   // ---------------------------------------------------------------------
-  // m3: normalise (at most one place left), shift tiny results right into
-  // the subnormal range keeping a sticky bit, round and pack
+  // m2a: partial products of the 12-bit halves (one DSP block each), and
+  // the exponent of the normalised significands
   // ---------------------------------------------------------------------
-  wire [47:0] norm_p   = s2_prod[47] ? s2_prod : {s2_prod[46:0], 1'b0};
-  wire [9:0]  norm_e   = s2_prod[47] ? s2_exp : (s2_exp - 10'd1);
-  // Exponent below 1 (two's complement: negative or zero)?
-  wire        is_low   = norm_e[9] | (norm_e == 10'd0);
-  wire [9:0]  rs_full  = 10'd1 - norm_e;
-  wire [4:0]  rs       = !is_low ? 5'd0
-                       : ((rs_full > SHIFT_MAX) ? SHIFT_MAX[4:0] : rs_full[4:0]);
-  wire [47:0] den_p    = norm_p >> rs;
-  wire [47:0] lost     = norm_p & ~({48{1'b1}} << rs);
-  wire [9:0]  c3_exp   = is_low ? 10'd1 : norm_e;
-  wire        c3_sticky = (|den_p[21:0]) | (|lost);
+  wire [23:0] c2_ll = s2_aman[11:0]  * s2_bman[11:0];
+  wire [23:0] c2_lh = s2_aman[11:0]  * s2_bman[23:12];
+  wire [23:0] c2_hl = s2_aman[23:12] * s2_bman[11:0];
+  wire [23:0] c2_hh = s2_aman[23:12] * s2_bman[23:12];
+  wire [9:0]  c2_exp = s2_exp - {5'd0, s2_alz} - {5'd0, s2_blz};
 
-  // LATENCY >= 5: a register stage between the shifts and the rounding.
-  localparam integer W3 = 1 + 32 + 1 + 1 + 10 + 26 + 1;
+  localparam integer W3 = WS + 10 + 4 * 24;
   wire          s3_valid;
   wire [W3-1:0] s3_data;
-  fp_pipe #(.WIDTH(W3), .DEPTH(DEPTH3)) u_pipe3 (
+  fp_pipe #(.WIDTH(W3), .DEPTH(BND[B_M2B] ? 1 : 0)) u_pipe3 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s2_valid),
-    .data_i  ({s2_spec, s2_spec_y, s2_spec_nv, s2_sign, c3_exp, den_p[47:22], c3_sticky}),
+    .data_i  ({s2_spec, c2_exp, c2_ll, c2_lh, c2_hl, c2_hh}),
     .valid_o (s3_valid),
     .data_o  (s3_data)
   );
 
-  wire        s3_spec;
-  wire [31:0] s3_spec_y;
-  wire        s3_spec_nv;
-  wire        s3_sign;
-  wire [9:0]  s3_exp;
-  wire [25:0] s3_man;    // significand, guard and round bits
-  wire        s3_sticky;
-  assign {s3_spec, s3_spec_y, s3_spec_nv, s3_sign, s3_exp, s3_man, s3_sticky} = s3_data;
+  wire [WS-1:0] s3_spec;
+  wire [9:0]    s3_exp;
+  wire [23:0]   s3_ll, s3_lh, s3_hl, s3_hh;
+  assign {s3_spec, s3_exp, s3_ll, s3_lh, s3_hl, s3_hh} = s3_data;
 
-  wire [31:0] rnd_y;
-  wire [4:0]  rnd_flags;
-  fp_round #(.ROUND(ROUND), .FTZ(FTZ)) u_round (
-    .sign_i   (s3_sign),
-    .exp_i    (s3_exp),
-    .mant_i   (s3_man[25:2]),
-    .guard_i  (s3_man[1]),
-    .round_i  (s3_man[0]),
-    .sticky_i (s3_sticky),
-    .y_o      (rnd_y),
-    .flags_o  (rnd_flags)
+  // ---------------------------------------------------------------------
+  // m2b: middle partial products summed; from the exponent e alone, for
+  // either position of the product's leading one (p47 = product bit 47):
+  //   result exponent  p47: max(e, 1)   else: max(e - 1, 1)
+  //   right shift of the product's top 27 bits (normalisation and
+  //   denormalisation in one): e >= 2: p47 (0 or 1 place), e <= 1:
+  //   2 - e places either way, at most SHIFT_MAX (all bits go to sticky)
+  // so that m3 only picks by p47: shift = c2b_shift | (p47 & c2b_ge2).
+  // ---------------------------------------------------------------------
+  wire [24:0] c2b_mid    = {1'b0, s3_lh} + {1'b0, s3_hl};
+  wire        c2b_lo_st  = |s3_ll[11:0];
+  wire        c2b_ge1    = ~s3_exp[9] & (s3_exp != 10'd0);
+  wire        c2b_ge2    = c2b_ge1 & (s3_exp != 10'd1);
+  wire [9:0]  c2b_exp_m1 = s3_exp - 10'd1;
+  wire [9:0]  c2b_exp_a  = c2b_ge1 ? s3_exp : 10'd1;
+  wire [9:0]  c2b_exp_b  = c2b_ge2 ? c2b_exp_m1 : 10'd1;
+  wire [9:0]  c2b_rs     = 10'd2 - s3_exp;
+  // (rs > SHIFT_MAX written as bits: no comparator chain)
+  wire [4:0]  c2b_shift  = c2b_ge2 ? 5'd0
+                         : ((|c2b_rs[9:5]) ? SHIFT_MAX[4:0] : c2b_rs[4:0]);
+
+  localparam integer W4 = WS + 10 + 10 + 1 + 5 + 24 + 12 + 25 + 1;
+  wire          s4_valid;
+  wire [W4-1:0] s4_data;
+  fp_pipe #(.WIDTH(W4), .DEPTH(BND[B_M2C] ? 1 : 0)) u_pipe4 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s3_valid),
+    .data_i  ({s3_spec, c2b_exp_a, c2b_exp_b, c2b_ge2, c2b_shift,
+               s3_hh, s3_ll[23:12], c2b_mid, c2b_lo_st}),
+    .valid_o (s4_valid),
+    .data_o  (s4_data)
   );
 
-  wire [31:0] c3_y     = s3_spec ? s3_spec_y : rnd_y;
-  wire [4:0]  c3_flags = s3_spec ? (s3_spec_nv ? FLAG_NV : 5'd0) : rnd_flags;
+  wire [WS-1:0] s4_spec;
+  wire [9:0]    s4_exp_a, s4_exp_b;
+  wire          s4_ge2;
+  wire [4:0]    s4_shift;
+  wire [23:0]   s4_hh;
+  wire [11:0]   s4_ll_hi;
+  wire [24:0]   s4_mid;
+  wire          s4_lo_st;
+  assign {s4_spec, s4_exp_a, s4_exp_b, s4_ge2, s4_shift, s4_hh, s4_ll_hi,
+          s4_mid, s4_lo_st} = s4_data;
+
+  // ---------------------------------------------------------------------
+  // m2c: the product prod = hh * 2^24 + mid * 2^12 + ll, in [2^46, 2^48);
+  // its top 27 bits and the OR of the 21 below
+  // ---------------------------------------------------------------------
+  wire [35:0] c2c_hi  = {s4_hh, s4_ll_hi} + {11'd0, s4_mid}; // prod[47:12]
+  wire [26:0] c2c_top = c2c_hi[35:9];                          // prod[47:21]
+  wire        c2c_st  = s4_lo_st | (|c2c_hi[8:0]);
+
+  localparam integer W5 = WS + 10 + 10 + 1 + 5 + 27 + 1;
+  wire          s5_valid;
+  wire [W5-1:0] s5_data;
+  fp_pipe #(.WIDTH(W5), .DEPTH(BND[B_M3] ? 1 : 0)) u_pipe5 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s4_valid),
+    .data_i  ({s4_spec, s4_exp_a, s4_exp_b, s4_ge2, s4_shift, c2c_top, c2c_st}),
+    .valid_o (s5_valid),
+    .data_o  (s5_data)
+  );
+
+  wire [WS-1:0] s5_spec;
+  wire [9:0]    s5_exp_a, s5_exp_b;
+  wire          s5_ge2;
+  wire [4:0]    s5_shift;
+  wire [26:0]   s5_top;
+  wire          s5_st;
+  assign {s5_spec, s5_exp_a, s5_exp_b, s5_ge2, s5_shift, s5_top, s5_st} = s5_data;
+
+  // ---------------------------------------------------------------------
+  // m3a: pick the exponent by p47; the shift's even part (2 to 30 places)
+  // m3b: the shift's last place.  The top 27 bits shifted right leave the
+  // significand, guard and round bits in bits 25:0 (bit 26 is then 0).
+  // ---------------------------------------------------------------------
+  wire        p47      = s5_top[26];
+  wire [9:0]  c3_exp   = p47 ? s5_exp_a : s5_exp_b;
+  wire        c3_one   = s5_shift[0] | (p47 & s5_ge2);
+  wire [26:0] c3_top;
+  wire        c3_st;
+  fp_shr_sticky #(.WIDTH(27)) u_shift_even (
+    .v_i      (s5_top),
+    .amt_i    ({s5_shift[4:1], 1'b0}),
+    .sticky_i (s5_st),
+    .v_o      (c3_top),
+    .sticky_o (c3_st)
+  );
+
+  localparam integer W6 = WS + 10 + 1 + 27 + 1;
+  wire          s6_valid;
+  wire [W6-1:0] s6_data;
+  fp_pipe #(.WIDTH(W6), .DEPTH(BND[B_M3B] ? 1 : 0)) u_pipe6 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s5_valid),
+    .data_i  ({s5_spec, c3_exp, c3_one, c3_top, c3_st}),
+    .valid_o (s6_valid),
+    .data_o  (s6_data)
+  );
+
+  wire [WS-1:0] s6_spec;
+  wire [9:0]    s6_exp;
+  wire          s6_one;
+  wire [26:0]   s6_top;
+  wire          s6_st;
+  assign {s6_spec, s6_exp, s6_one, s6_top, s6_st} = s6_data;
+
+  wire [26:0] c3b_top;
+  wire        c3b_st;
+  fp_shr_sticky #(.WIDTH(27)) u_shift_one (
+    .v_i      (s6_top),
+    .amt_i    ({4'd0, s6_one}),
+    .sticky_i (s6_st),
+    .v_o      (c3b_top),
+    .sticky_o (c3b_st)
+  );
+  wire unused_top = &{1'b0, c3b_top[26], 1'b0};
+
+  localparam integer W7 = WS + 10 + 26 + 1;
+  wire          s7_valid;
+  wire [W7-1:0] s7_data;
+  fp_pipe #(.WIDTH(W7), .DEPTH(BND[B_M4] ? 1 : 0)) u_pipe7 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s6_valid),
+    .data_i  ({s6_spec, s6_exp, c3b_top[25:0], c3b_st}),
+    .valid_o (s7_valid),
+    .data_o  (s7_data)
+  );
+
+  wire [WS-1:0] s7_spec;
+  wire [9:0]    s7_exp;
+  wire [25:0]   s7_man;   // significand, guard and round bits
+  wire          s7_st;
+  assign {s7_spec, s7_exp, s7_man, s7_st} = s7_data;
+
+  // ---------------------------------------------------------------------
+  // m4a: rounding increment; m4b: overflow, flush, flags, special result
+  // ---------------------------------------------------------------------
+  wire [30:0] c4_pack;
+  wire        c4_overflow;
+  wire        c4_inexact;
+  wire        c4_tiny;
+  fp_round #(.ROUND(ROUND)) u_round (
+    .exp_i     (s7_exp),
+    .mant_i    (s7_man[25:2]),
+    .guard_i   (s7_man[1]),
+    .round_i   (s7_man[0]),
+    .sticky_i  (s7_st),
+    .pack_o    (c4_pack),
+    .overflow_o(c4_overflow),
+    .inexact_o (c4_inexact),
+    .tiny_o    (c4_tiny)
+  );
+
+  localparam integer W8 = WS + 31 + 1 + 1 + 1;
+  wire          s8_valid;
+  wire [W8-1:0] s8_data;
+  fp_pipe #(.WIDTH(W8), .DEPTH(BND[B_M4B] ? 1 : 0)) u_pipe8 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s7_valid),
+    .data_i  ({s7_spec, c4_pack, c4_overflow, c4_inexact, c4_tiny}),
+    .valid_o (s8_valid),
+    .data_o  (s8_data)
+  );
+
+  wire        s8_spec;
+  wire [31:0] s8_spec_y;
+  wire        s8_spec_nv;
+  wire        s8_sign;
+  wire [30:0] s8_pack;
+  wire        s8_overflow;
+  wire        s8_inexact;
+  wire        s8_tiny;
+  assign {s8_spec, s8_spec_y, s8_spec_nv, s8_sign, s8_pack, s8_overflow, s8_inexact,
+          s8_tiny} = s8_data;
+
+  wire [31:0] c4_y;
+  wire [4:0]  c4_flags;
+  fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
+    .sign_i    (s8_sign),
+    .pack_i    (s8_pack),
+    .overflow_i(s8_overflow),
+    .inexact_i (s8_inexact),
+    .tiny_i    (s8_tiny),
+    .spec_i    (s8_spec),
+    .spec_y_i  (s8_spec_y),
+    .spec_nv_i (s8_spec_nv),
+    .y_o       (c4_y),
+    .flags_o   (c4_flags)
+  );
 
   fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (s3_valid),
-    .data_i  ({c3_y, c3_flags}),
+    .valid_i (s8_valid),
+    .data_i  ({c4_y, c4_flags}),
     .valid_o (valid_o),
     .data_o  ({y_o, flags_o})
   );
