@@ -9,10 +9,11 @@
 // one-entry holding register each; the write reaches the host port once
 // both are held and the B channel is free (or being emptied this cycle).
 // AR is held likewise; the read address goes to the host port for one
-// cycle, the core's registered read data is captured 1 + FMAX_PIPE cycles
-// later and held on R until RREADY.  B and R stay valid, with stable
-// payload, until accepted.  Each channel takes a new transfer every second
-// cycle (reads every third with FMAX_PIPE).  The
+// cycle, the core's registered read data is captured one cycle later (three
+// with FMAX_PIPE: a register in front of the host port, two read stages)
+// and held on R until RREADY.  B and R stay valid, with stable payload,
+// until accepted.  Each channel takes a new transfer every second cycle
+// (reads every fourth with FMAX_PIPE).  The
 // host port has one address, so a write and a read that are both ready in
 // the same cycle take turns (round robin).  All outputs are registered;
 // no READY depends combinationally on a VALID.
@@ -43,8 +44,9 @@
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (see fp3_top)
-//   FMAX_PIPE    pipeline for clock rate (see fp3_top); 1: a read's data
-//                are captured two cycles after its address
+//   FMAX_PIPE    pipeline for clock rate (see fp3_top); 1: the host port's
+//                inputs are registered, a read's data are captured three
+//                cycles after its address
 // Reset: rst_i, synchronous, active high (invert ARESETn outside).
 `default_nettype none
 module fp3_axil #(
@@ -109,7 +111,7 @@ module fp3_axil #(
   reg  [1:0]         b_resp_q,   b_resp_d;
   reg                ar_valid_q, ar_valid_d;
   reg  [WA_BITS-1:0] ar_addr_q,  ar_addr_d;
-  reg  [1:0]         rd_pend_q,  rd_pend_d;   // a host-port read 1, 2 cycles ago
+  reg  [2:0]         rd_pend_q,  rd_pend_d;   // a host-port read 1, 2, 3 cycles ago
   reg                rd_err_q,   rd_err_d;    // ... for an address answered SLVERR
   reg                r_valid_q,  r_valid_d;
   reg  [31:0]        r_data_q,   r_data_d;
@@ -161,14 +163,29 @@ module fp3_axil #(
 
   // ---- host-port arbitration -----------------------------------------------
   wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
-  // The host port's read data arrive 1 + FMAX_PIPE cycles after the address.
-  wire rd_arrive = FMAX_PIPE != 0 ? rd_pend_q[1] : rd_pend_q[0];
-  wire rd_cand  = ar_valid_q && rd_pend_q == 2'd0 && (!r_valid_q || s_axil_rready_i);
+  // The host port's read data arrive 1 cycle after the address, 3 with
+  // FMAX_PIPE (its input register and second read stage).
+  wire rd_arrive = FMAX_PIPE != 0 ? rd_pend_q[2] : rd_pend_q[0];
+  wire rd_cand  = ar_valid_q && rd_pend_q == 3'd0 && (!r_valid_q || s_axil_rready_i);
   wire do_write = wr_cand && (!rd_cand || !prio_q);
   wire do_read  = rd_cand && (!wr_cand || prio_q);
 
-  wire               host_we    = do_write && wr_ok;
-  wire [WA_BITS-1:0] host_addr  = do_write ? aw_addr_q : ar_addr_q;
+  wire               host_we_c   = do_write && wr_ok;
+  wire [WA_BITS-1:0] host_addr_c = do_write ? aw_addr_q : ar_addr_q;
+
+  // FMAX_PIPE: the host port's inputs are registered (the address decode
+  // and the write checks above do not reach into the core's start logic).
+  wire               host_we;
+  wire [WA_BITS-1:0] host_addr;
+  wire [31:0]        host_wdata;
+  fp_pipe #(.WIDTH(WA_BITS + 32), .DEPTH(FMAX_PIPE != 0 ? 1 : 0)) u_host_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (host_we_c),
+    .data_i  ({host_addr_c, w_data_q}),
+    .valid_o (host_we),
+    .data_o  ({host_addr, host_wdata})
+  );
 
   // ---- next state --------------------------------------------------------------
   always @(*) begin
@@ -181,7 +198,7 @@ module fp3_axil #(
     b_resp_d   = b_resp_q;
     ar_valid_d = ar_valid_q;
     ar_addr_d  = ar_addr_q;
-    rd_pend_d  = {FMAX_PIPE != 0 && rd_pend_q[0], do_read};
+    rd_pend_d  = {FMAX_PIPE != 0 && rd_pend_q[1], FMAX_PIPE != 0 && rd_pend_q[0], do_read};
     rd_err_d   = rd_err_q;
     r_valid_d  = r_valid_q;
     r_data_d   = r_data_q;
@@ -229,7 +246,7 @@ module fp3_axil #(
       w_valid_q  <= 1'b0;
       b_valid_q  <= 1'b0;
       ar_valid_q <= 1'b0;
-      rd_pend_q  <= 2'd0;
+      rd_pend_q  <= 3'd0;
       r_valid_q  <= 1'b0;
       prio_q     <= 1'b0;
     end else begin
@@ -275,7 +292,7 @@ module fp3_axil #(
     .rst_i           (rst_i),
     .host_we_i       (host_we),
     .host_addr_i     (host_addr),
-    .host_wdata_i    (w_data_q),
+    .host_wdata_i    (host_wdata),
     .host_rdata_o    (host_rdata),
     .running_o       (running),
     .done_o          (done_o),

@@ -123,9 +123,10 @@ static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
  * waiting at most the longest latency or a beq's resolution.  Exceeding it
  * means the machine hung. */
 static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
+  const uint64_t extra = c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0;
   uint64_t per_insn = (uint64_t)(c->add_latency > c->mul_latency ? c->add_latency
-                                                                   : c->mul_latency) + 2;
-  if (per_insn < FP3_BEQ_CYCLES) per_insn = FP3_BEQ_CYCLES;
+                                                                   : c->mul_latency) + 2 + extra;
+  if (per_insn < FP3_BEQ_CYCLES + extra) per_insn = FP3_BEQ_CYCLES + extra;
   return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
 

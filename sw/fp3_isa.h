@@ -48,8 +48,15 @@
 /* Cycles from issue to the operands leaving the register file (the
  * block-RAM read stage).  A dependent instruction issues FP3_READ_CYCLES +
  * latency cycles after its producer: the unit's latency (ADD_LATENCY,
- * MUL_LATENCY, 1 for the move path) plus this. */
+ * MUL_LATENCY, 1 for the move path) plus this.  The same with FMAX_PIPE
+ * (rtl/fp3_top.v: a second read stage, but write-backs announced a cycle
+ * earlier), except that its move path takes 2 cycles. */
 #define FP3_READ_CYCLES 1
+
+/* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
+ * beq (FP3_BEQ_CYCLES) and to a run: the pick stage and the second
+ * operand-read stage.  Its host-port reads take 2 cycles instead of 1. */
+#define FP3_FMAX_PIPE_CYCLES 2
 
 /* A context issues at most once every FP3_ISSUE_SPACING cycles (its
  * readiness is decided a cycle ahead, for the instruction at the head of

@@ -458,6 +458,52 @@ static void test_move_bypass(void **state) {
   capture_free(&b);
 }
 
+/* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 6)
+ * keeps the dependent-issue distances of the default pipeline (its second
+ * read stage is covered by announcing write-backs a cycle earlier), gives
+ * the move path a second cycle, and resolves a beq FP3_FMAX_PIPE_CYCLES
+ * later than the default build; every result as the ISS computes it.
+ * fmax_case returns the run's cycles; want_stalls < 0: not checked. */
+static uint64_t fmax_case(fp3_engine *e, const char *src, long want_stalls) {
+  fp3_image img;
+  assemble(src, &img);
+  uint32_t init[8];
+  for (unsigned r = 0; r < 8; r++) init[r] = fpref_bits(1.0f + 0.25f * (float)r);
+  capture a, b;
+  run_on(e, &img, init, 8, 1, &a);
+  run_on(iss, &img, init, 8, 1, &b);
+  compare_captures(&a, &b, src);
+  if (want_stalls >= 0) assert_int_equal(a.st.stalls, want_stalls);
+  uint64_t cycles = a.st.cycles;
+  capture_free(&a);
+  capture_free(&b);
+  return cycles;
+}
+
+static void test_fmax_pipe(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
+  assert_non_null(e);
+  assert_int_equal(e->config.fmax_pipe, 1);
+  assert_int_equal(rtl->config.fmax_pipe, 0);
+  fmax_case(e, "add r1, r1, r2\nadd r1, r1, r2\nadd r1, r1, r2\nhalt\n",
+            START_STALLS + 2 * (FP3_READ_CYCLES + e->config.add_latency - 1) + SPACING_STALLS);
+  fmax_case(e, "mul r3, r3, r2\nmul r3, r3, r2\nsub r4, r3, r2\nhalt\n",
+            START_STALLS + 2 * (FP3_READ_CYCLES + e->config.mul_latency - 1) + SPACING_STALLS);
+  /* Move path of 2 cycles: each link waits the read stage and one more. */
+  fmax_case(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n",
+            START_STALLS + 3 * (FP3_READ_CYCLES + 1) + SPACING_STALLS);
+  /* A taken beq costs FP3_BEQ_CYCLES on the default build, and
+   * FP3_FMAX_PIPE_CYCLES more on this one (its queue is empty meanwhile:
+   * no stall is counted, the run's cycles show it). */
+  const char *plain = "nop\nhalt\n", *br = "beq r1, r1, out\nnop\nout:\nhalt\n";
+  long d_rtl = (long)fmax_case(rtl, br, -1) - (long)fmax_case(rtl, plain, -1);
+  long d_e = (long)fmax_case(e, br, -1) - (long)fmax_case(e, plain, -1);
+  assert_int_equal(d_rtl, FP3_BEQ_CYCLES - FP3_ISSUE_SPACING);
+  assert_int_equal(d_e, FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES - FP3_ISSUE_SPACING);
+  fp3_engine_free(e);
+}
+
 static void test_loop_overlap(void **state) {
   (void)state;
   capture a, b;
@@ -854,6 +900,7 @@ int main(void) {
       cmocka_unit_test(test_independent_ops_spacing),
       cmocka_unit_test(test_waw_same_register),
       cmocka_unit_test(test_move_bypass),
+      cmocka_unit_test(test_fmax_pipe),
       cmocka_unit_test(test_loop_overlap),
       cmocka_unit_test(test_errors_agree),
       cmocka_unit_test(test_random_programs),
