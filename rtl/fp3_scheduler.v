@@ -153,8 +153,6 @@ module fp3_scheduler #(
   reg          fvalid_q;            // a fetched word arrives this cycle
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
-  reg          lastv_q;             // a context issued last cycle
-  reg [CW-1:0] last_q;              // ... this one
   reg [7:0]    quiet_q;             // cycles without busy flag or issue, to DRAIN
 
   // ---- instruction memory --------------------------------------------------
@@ -200,6 +198,10 @@ module fp3_scheduler #(
   wire [NC-1:0] h_endi;     // the head is an endi
   wire [NC-1:0] h_stop;     // ... a halt or the run's last endi
   wire [NC-1:0] h_ovf;      // ... would run off the end of the memory
+  // Issue fields of every head: {ra, rb, rd, unit, sub, li, immediate,
+  // endi, beq}.
+  localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
+  wire [NC*FW-1:0] fields;
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -229,6 +231,12 @@ module fp3_scheduler #(
       assign h_ovf[c]  = !h_stop[c] && !h_endi[c] &&
                          {{(32-AW){1'b0}}, p0_q[c]} == IMEM_DEPTH - 1;
 
+      // What the instruction issues with, decoded here in every context
+      // so that only a multiplexer sits behind the arbiter.
+      assign fields[c*FW +: FW] = {ra8[IW-1:0], rb8[IW-1:0], rd8[IW-1:0], dec[5:4],
+                                   opc == OP_SUB, opc == OP_LI, imm, h_endi[c],
+                                   opc == OP_BEQ};
+
       wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
       wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
@@ -248,7 +256,8 @@ module fp3_scheduler #(
 
   // ---- round-robin pick: the first set bit at or after `from` --------------
   // `from` enters as a thermometer mask (bits from..NC-1 set), decoded from
-  // a register, so the pick itself is two priority chains and no compare.
+  // a register, so the pick itself is two priority chains and no compare;
+  // the grant is one-hot.
   function [NC-1:0] at_or_after;
     input [CW-1:0] from;
     integer p;
@@ -257,26 +266,33 @@ module fp3_scheduler #(
     end
   endfunction
 
-  function [CW:0] rr_pick;  // {found, index}
+  function [NC-1:0] first_one;  // the lowest set bit of x, one-hot
+    input [NC-1:0] x;
+    integer p;
+    reg seen;
+    begin
+      seen = 1'b0;
+      for (p = 0; p < NC; p = p + 1) begin
+        first_one[p] = x[p] && !seen;
+        seen         = seen || x[p];
+      end
+    end
+  endfunction
+
+  function [NC-1:0] rr_grant;   // one-hot; zero if req is
     input [NC-1:0] req;
     input [NC-1:0] high;    // at_or_after(from)
-    integer p;
-    reg found;
     begin
-      rr_pick = {1'b0, {CW{1'b0}}};
-      found   = 1'b0;
-      for (p = 0; p < NC; p = p + 1) begin   // from, from+1, ..., NC-1
-        if (!found && req[p] && high[p]) begin
-          rr_pick = {1'b1, p[CW-1:0]};
-          found   = 1'b1;
-        end
-      end
-      for (p = 0; p < NC; p = p + 1) begin   // then 0, 1, ..., from-1
-        if (!found && req[p]) begin
-          rr_pick = {1'b1, p[CW-1:0]};
-          found   = 1'b1;
-        end
-      end
+      rr_grant = (|(req & high)) ? first_one(req & high) : first_one(req);
+    end
+  endfunction
+
+  function [CW-1:0] encode;     // index of a one-hot x (0 if none)
+    input [NC-1:0] x;
+    integer p;
+    begin
+      encode = {CW{1'b0}};
+      for (p = 0; p < NC; p = p + 1) if (x[p]) encode = encode | p[CW-1:0];
     end
   endfunction
 
@@ -297,26 +313,30 @@ module fp3_scheduler #(
   endfunction
 
   // ---- issue step ----------------------------------------------------------
-  wire [NC-1:0] cand  = ready_q & active_q & ~onehot(lastv_q, last_q);
-  wire [CW:0]   gpick = rr_pick(cand, at_or_after(grr_q));
-  wire          grant = gpick[CW];
-  wire [CW-1:0] g     = gpick[CW-1:0];
-  wire [63:0]   gi    = w0_q[g];
+  // (A context granted in the previous cycle has its ready bit cleared:
+  // it belonged to the instruction that left.)
+  wire [NC-1:0] cand  = ready_q & active_q;
+  wire [NC-1:0] gone  = rr_grant(cand, at_or_after(grr_q));  // the head leaves its queue
+  wire          grant = |cand;
+  wire [CW-1:0] g     = encode(gone);
+  reg  [FW-1:0] gf;                                         // the granted head's fields
+  integer q;
+  always @(*) begin
+    gf = {FW{1'b0}};
+    for (q = 0; q < NC; q = q + 1) gf = gf | ({FW{gone[q]}} & fields[q*FW +: FW]);
+  end
 
-  wire [7:0]  g_opc  = gi[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire [7:0]  g_rd8  = gi[ISA_RD_LSB  +: ISA_REG_WIDTH];
-  wire [7:0]  g_ra8  = gi[ISA_RA_LSB  +: ISA_REG_WIDTH];
-  wire [7:0]  g_rb8  = gi[ISA_RB_LSB  +: ISA_REG_WIDTH];
-  wire [31:0] g_imm  = gi[0 +: ISA_IMM_WIDTH];
-  wire [6:0]  g_dec  = isa_decode(g_opc);
-  wire        g_endi = g_opc == OP_ENDI;
+  wire [IW-1:0] g_ra, g_rb, g_rd;
+  wire [1:0]    g_unit;
+  wire          g_sub, g_li, g_endi, g_beq;
+  wire [31:0]   g_imm;
+  assign {g_ra, g_rb, g_rd, g_unit, g_sub, g_li, g_imm, g_endi, g_beq} = gf;
 
   // The granted instruction, as it issues: {valid, ctx, ra, rb, rd, unit,
   // sub, imm (li), immediate, endi, beq}.
   localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 1 + 32 + 1 + 1;
-  wire [IS_W-1:0] is_d = {grant, g, g, g_ra8[IW-1:0], g, g_rb8[IW-1:0], g, g_rd8[IW-1:0],
-                          g_dec[5:4], g_opc == OP_SUB, g_opc == OP_LI, g_imm,
-                          grant && g_endi, grant && g_opc == OP_BEQ};
+  wire [IS_W-1:0] is_d = {grant, g, g, g_ra, g, g_rb, g, g_rd, g_unit, g_sub, g_li, g_imm,
+                          grant && g_endi, grant && g_beq};
   wire [IS_W-1:0] is_w;
   generate
     if (PICK_STAGE == 0) begin : g_pick0
@@ -342,9 +362,8 @@ module fp3_scheduler #(
   // the memory address) and no read in flight.
   wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving & ~bwait_q;
-  wire [CW:0]   fpick = rr_pick(fetch_req, at_or_after(frr_q));
-  wire          fetch = fpick[CW] && running_o;
-  wire [CW-1:0] f     = fpick[CW-1:0];
+  wire          fetch = (|fetch_req) && running_o;
+  wire [CW-1:0] f     = encode(rr_grant(fetch_req, at_or_after(frr_q)));
   assign fetch_addr = fpc_q[f];
 
   // The arriving word decides where its context fetches next.
@@ -370,12 +389,11 @@ module fp3_scheduler #(
   assign steps_done_sel_o = sdone_q[sel_ctx_i];
 
   // Upper bits of wide fields are checked by `legal`, not used as indices.
-  wire unused_ok = &{1'b0, g_rd8, g_ra8, g_rb8, g_dec[6], g_dec[3:0], imem_word[31:AW]};
+  wire unused_ok = &{1'b0, imem_word[31:AW]};
 
   // ---- control, status and counters ----------------------------------------
   wire          bad_start = start_i && !running_o && !start_ok;
   wire [NC-1:0] illegal   = active_q & v0_q & ~legal;
-  wire [NC-1:0] gone      = onehot(grant, g);   // the head leaves its queue
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -391,8 +409,6 @@ module fp3_scheduler #(
       fvalid_q  <= 1'b0;
       fctx_q    <= {CW{1'b0}};
       fpcq_q    <= {AW{1'b0}};
-      lastv_q   <= 1'b0;
-      last_q    <= {CW{1'b0}};
       quiet_q   <= 8'd0;
       grr_q     <= {CW{1'b0}};
       frr_q     <= {CW{1'b0}};
@@ -427,7 +443,6 @@ module fp3_scheduler #(
         ready_q   <= {NC{1'b0}};
         final_q   <= {NC{steps_i == 32'd1}};
         fvalid_q  <= 1'b0;
-        lastv_q   <= 1'b0;
         quiet_q   <= 8'd0;
         grr_q     <= {CW{1'b0}};
         frr_q     <= {CW{1'b0}};
@@ -448,8 +463,6 @@ module fp3_scheduler #(
       if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
 
       ready_q <= ready_d & ~gone;
-      lastv_q <= grant;
-      last_q  <= g;
 
       // Queues: the granted head leaves, an arriving word joins at the end.
       for (k = 0; k < NC; k = k + 1) begin

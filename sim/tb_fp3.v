@@ -181,8 +181,8 @@ module tb_fp3 #(
   // bit c for context c; registers and busy flags are shown for context 0.
   wire           dbg_issue     = dut.u_sched.grant;      // granted (issues now; next cycle with FMAX_PIPE)
   wire [AW-1:0]  dbg_pc        = dut.u_sched.p0_q[dut.u_sched.g];  // PC of the issuing instruction
-  wire [63:0]    dbg_insn      = dut.u_sched.gi;         // its word
-  wire [7:0]     dbg_opc       = dut.u_sched.g_opc;
+  wire [63:0]    dbg_insn      = dut.u_sched.w0_q[dut.u_sched.g];  // its word
+  wire [7:0]     dbg_opc       = dbg_insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire [AW-1:0]  dbg_pc0       = dut.u_sched.p0_q[0];    // context 0: PC of its queue's head
   wire [NC-1:0]  dbg_active    = dut.u_sched.active_q;   // contexts fetching and issuing
   wire [NC-1:0]  dbg_waiting   = dut.u_sched.active_q & dut.u_sched.v0_q;  // hold an instruction
