@@ -363,8 +363,15 @@ module fp3_scheduler #(
   wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
-  wire [CW-1:0] f     = encode(rr_grant(fetch_req, at_or_after(frr_q)));
-  assign fetch_addr = fpc_q[f];
+  wire [NC-1:0] fgnt  = rr_grant(fetch_req, at_or_after(frr_q));
+  wire [CW-1:0] f     = encode(fgnt);
+  // The granted context's fetch PC, selected by the one-hot grant.
+  reg [AW-1:0] fpc_sel;
+  always @(*) begin
+    fpc_sel = {AW{1'b0}};
+    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fgnt[q]}} & fpc_q[q]);
+  end
+  assign fetch_addr = fpc_sel;
 
   // The arriving word decides where its context fetches next.
   wire [7:0]    a_opc   = imem_word[ISA_OPC_LSB +: ISA_OPC_WIDTH];
