@@ -63,6 +63,8 @@
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
 //                 missing one is illegal
 //   PICK_STAGE    0 or 1: a register between the grant and the issue
+//   FETCH_STAGE   0 or 1: a register between the instruction memory and
+//                 the queues (the word arrives a cycle later)
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
@@ -79,6 +81,7 @@ module fp3_scheduler #(
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
   parameter integer PICK_STAGE   = 0,
+  parameter integer FETCH_STAGE  = 0,
   parameter integer DRAIN        = 1
 ) (
   input  wire                         clk_i,
@@ -360,8 +363,23 @@ module fp3_scheduler #(
   // A context may fetch when it has room for the word (an entry free, not
   // counting one it may issue now: that would put the arbiter in front of
   // the memory address) and no read in flight.
-  wire [NC-1:0] arriving = onehot(fvalid_q, fctx_q);
-  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~arriving & ~bwait_q;
+  // FETCH_STAGE: the word is registered after the memory (whose output is
+  // slow) and arrives a cycle later; a context has one word in flight.
+  wire          avalid;
+  wire [CW-1:0] actx;
+  wire [AW-1:0] apc;
+  wire [63:0]   aword;
+  fp_pipe #(.WIDTH(CW + AW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .valid_i (fvalid_q),
+    .data_i  ({fctx_q, fpcq_q, imem_word}),
+    .valid_o (avalid),
+    .data_o  ({actx, apc, aword})
+  );
+  wire [NC-1:0] arriving = onehot(avalid, actx);
+  wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q);
+  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [NC-1:0] fgnt  = rr_grant(fetch_req, at_or_after(frr_q));
   wire [CW-1:0] f     = encode(fgnt);
@@ -374,11 +392,11 @@ module fp3_scheduler #(
   assign fetch_addr = fpc_sel;
 
   // The arriving word decides where its context fetches next.
-  wire [7:0]    a_opc   = imem_word[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          a_endi  = a_opc == OP_ENDI;
   wire          a_beq   = a_opc == OP_BEQ;
-  wire          a_atend = {{(32-AW){1'b0}}, fpcq_q} == IMEM_DEPTH - 1;
-  wire [AW-1:0] a_next  = a_endi ? imem_word[AW-1:0] : fpcq_q + {{(AW-1){1'b0}}, 1'b1};
+  wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
+  wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
 
   wire start_ok = start_i && !running_o && steps_i != 32'd0 &&
                   contexts_i != 32'd0 && contexts_i <= NC;
@@ -396,7 +414,7 @@ module fp3_scheduler #(
   assign steps_done_sel_o = sdone_q[sel_ctx_i];
 
   // Upper bits of wide fields are checked by `legal`, not used as indices.
-  wire unused_ok = &{1'b0, imem_word[31:AW]};
+  wire unused_ok = &{1'b0, aword[31:AW]};
 
   // ---- control, status and counters ----------------------------------------
   wire          bad_start = start_i && !running_o && !start_ok;
@@ -481,12 +499,12 @@ module fp3_scheduler #(
         end
         if (arriving[k] && active_q[k]) begin
           if (gone[k] ? !v1_q[k] : !v0_q[k]) begin
-            w0_q[k] <= imem_word;
-            p0_q[k] <= fpcq_q;
+            w0_q[k] <= aword;
+            p0_q[k] <= apc;
             v0_q[k] <= 1'b1;
           end else begin
-            w1_q[k] <= imem_word;
-            p1_q[k] <= fpcq_q;
+            w1_q[k] <= aword;
+            p1_q[k] <= apc;
             v1_q[k] <= 1'b1;
           end
           fpc_q[k] <= a_next;

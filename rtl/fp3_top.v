@@ -26,10 +26,13 @@
 // The scoreboard hears of a write-back P + R cycles ahead (fp3_wb_tag), so
 // that a dependent instruction can issue R - 1 cycles before it and take
 // the value from the bypass: it issues 1 + latency cycles after its
-// producer for either FMAX_PIPE.  What FMAX_PIPE = 1 costs: a move's
-// consumer waits a cycle more, a beq resolves 2 cycles later
-// (FP3_BEQ_CYCLES + 2), a run takes 2 cycles more, and host reads take
-// 2 cycles; it needs ADD_LATENCY and MUL_LATENCY of at least 2.
+// producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the
+// instruction word after the instruction memory (fp3_scheduler
+// FETCH_STAGE).  What it costs: a move's consumer waits a cycle more, a
+// beq resolves 3 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// run takes a few cycles more, a context fetches at most every third
+// cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
+// MUL_LATENCY of at least 2.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -49,8 +52,9 @@
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, a register
-//                between the scheduler's grant and the issue, and a second
-//                operand-read stage (see "Pipeline" above)
+//                after the instruction memory, one between the scheduler's
+//                grant and the issue, and a second operand-read stage (see
+//                "Pipeline" above)
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -173,7 +177,7 @@ module fp3_top #(
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
                   .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .PICK_STAGE(PICK),
-                  .DRAIN(AHEAD)) u_sched (
+                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
