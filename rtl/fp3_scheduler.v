@@ -63,8 +63,9 @@
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
 //                 missing one is illegal
 //   PICK_STAGE    0 or 1: a register between the grant and the issue
-//   FETCH_STAGE   0 or 1: a register between the instruction memory and
-//                 the queues (the word arrives a cycle later)
+//   FETCH_STAGE   0 or 1: registers between the fetch grant and the
+//                 instruction memory, and between the memory and the
+//                 queues (the word arrives two cycles later)
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
@@ -205,6 +206,7 @@ module fp3_scheduler #(
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
   wire [NC*FW-1:0] fields;
+  wire [NC*AW-1:0] fpcs;    // every context's fetch PC
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -239,6 +241,8 @@ module fp3_scheduler #(
       assign fields[c*FW +: FW] = {ra8[IW-1:0], rb8[IW-1:0], rd8[IW-1:0], dec[5:4],
                                    opc == OP_SUB, opc == OP_LI, imm, h_endi[c],
                                    opc == OP_BEQ};
+
+      assign fpcs[c*AW +: AW] = fpc_q[c];
 
       wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
       wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
@@ -363,8 +367,10 @@ module fp3_scheduler #(
   // A context may fetch when it has room for the word (an entry free, not
   // counting one it may issue now: that would put the arbiter in front of
   // the memory address) and no read in flight.
-  // FETCH_STAGE: the word is registered after the memory (whose output is
-  // slow) and arrives a cycle later; a context has one word in flight.
+  // FETCH_STAGE: the fetch grant is registered and its address goes to the
+  // memory a cycle later, and the word is registered after the memory
+  // (whose output is slow) and arrives a cycle later; a context has one
+  // word in flight, from its grant to its arrival.
   wire          avalid;
   wire [CW-1:0] actx;
   wire [AW-1:0] apc;
@@ -378,16 +384,27 @@ module fp3_scheduler #(
     .data_o  ({actx, apc, aword})
   );
   wire [NC-1:0] arriving = onehot(avalid, actx);
-  wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q);
+  wire          fread;      // the memory reads for context fr (grant fr1)
+  wire [NC-1:0] fr1;
+  wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q) |
+                            ((FETCH_STAGE != 0 && fread) ? fr1 : {NC{1'b0}});
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [NC-1:0] fgnt  = rr_grant(fetch_req, at_or_after(frr_q));
-  wire [CW-1:0] f     = encode(fgnt);
+  fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .valid_i (fetch),
+    .data_i  (fgnt),
+    .valid_o (fread),
+    .data_o  (fr1)
+  );
+  wire [CW-1:0] fr = encode(fr1);
   // The granted context's fetch PC, selected by the one-hot grant.
   reg [AW-1:0] fpc_sel;
   always @(*) begin
     fpc_sel = {AW{1'b0}};
-    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fgnt[q]}} & fpc_q[q]);
+    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
   end
   assign fetch_addr = fpc_sel;
 
@@ -546,11 +563,11 @@ module fp3_scheduler #(
         end
       end
 
-      // The word read now arrives next cycle.
-      fvalid_q <= fetch;
-      fctx_q   <= f;
+      // The word read now arrives next cycle (FETCH_STAGE: the one after).
+      fvalid_q <= fread;
+      fctx_q   <= fr;
       fpcq_q   <= fetch_addr;
-      if (fetch) frr_q <= next_ctx(f);
+      if (fetch) frr_q <= next_ctx(encode(fgnt));
 
       // Nothing in flight once DRAIN cycles passed without a busy flag.
       if (!idle_i || issue_o)      quiet_q <= 8'd0;

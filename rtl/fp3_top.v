@@ -26,11 +26,11 @@
 // The scoreboard hears of a write-back P + R cycles ahead (fp3_wb_tag), so
 // that a dependent instruction can issue R - 1 cycles before it and take
 // the value from the bypass: it issues 1 + latency cycles after its
-// producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the
-// instruction word after the instruction memory (fp3_scheduler
+// producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
+// grant before the instruction memory and the word after it (fp3_scheduler
 // FETCH_STAGE).  What it costs: a move's consumer waits a cycle more, a
-// beq resolves 3 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
-// run takes a few cycles more, a context fetches at most every third
+// beq resolves 4 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// run takes a few cycles more, a context fetches at most every fourth
 // cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
 // MUL_LATENCY of at least 2.
 //
@@ -51,10 +51,10 @@
 //   HAS_SUB      0: the adder only adds; sub is an illegal instruction
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
-//   FMAX_PIPE    0: the default pipeline; 1: for clock rate, a register
-//                after the instruction memory, one between the scheduler's
-//                grant and the issue, and a second operand-read stage (see
-//                "Pipeline" above)
+//   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
+//                before and after the instruction memory, one between the
+//                scheduler's grant and the issue, and a second
+//                operand-read stage (see "Pipeline" above)
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,

@@ -54,10 +54,10 @@
 #define FP3_READ_CYCLES 1
 
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
- * beq (FP3_BEQ_CYCLES): the pick stage, the second operand-read stage and
- * the register after the instruction memory.  Its host-port reads take 2
- * cycles instead of 1. */
-#define FP3_FMAX_PIPE_CYCLES 3
+ * beq (FP3_BEQ_CYCLES): the pick stage, the second operand-read stage, and
+ * the fetch grant and the instruction word registered.  Its host-port
+ * reads take 2 cycles instead of 1. */
+#define FP3_FMAX_PIPE_CYCLES 4
 
 /* A context issues at most once every FP3_ISSUE_SPACING cycles (its
  * readiness is decided a cycle ahead, for the instruction at the head of
