@@ -226,8 +226,7 @@ module fp3_scheduler #(
       assign legal[c] = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
                         reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
                         (opc != OP_ENDI || imm < IMEM_DEPTH) &&
-                        (opc != OP_BEQ || (imm < IMEM_DEPTH &&
-                                           imm > {{(32-AW){1'b0}}, p0_q[c]}));
+                        (opc != OP_BEQ || (imm < IMEM_DEPTH && imm[AW-1:0] > p0_q[c]));
 
       // What issuing the head does to its context, decided per context so
       // that the state updates need no multiplexer behind the arbiter.

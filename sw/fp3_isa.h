@@ -59,6 +59,12 @@
  * reads take 2 cycles instead of 1. */
 #define FP3_FMAX_PIPE_CYCLES 4
 
+/* With FMAX_PIPE a context fetches at most every FP3_FMAX_PIPE_FETCH_SPACING
+ * cycles (grant, read, word registered, queued), so one context runs
+ * straight-line code no faster than that; with several contexts the
+ * fetches interleave, one per cycle. */
+#define FP3_FMAX_PIPE_FETCH_SPACING 4
+
 /* A context issues at most once every FP3_ISSUE_SPACING cycles (its
  * readiness is decided a cycle ahead, for the instruction at the head of
  * its queue); two or more contexts issue every cycle between them. */
