@@ -157,6 +157,7 @@ module fp3_regfile #(
   end
   wire [1:0] a_lvt = lvt_q[a_idx_q];   // one LVT read per port
   wire [1:0] b_lvt = lvt_q[b_idx_q];
+  wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
 
   // Bypass of one write-back cycle: {hit, data} for index x.
 `define FP3_BYPASS(x, v, ia, ib, ic, da, db, dc) \
@@ -168,6 +169,7 @@ module fp3_regfile #(
 
   generate
     if (READ_STAGES == 1) begin : g_read1
+      wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
       assign ra_data_o = a_byp1[32] ? a_byp1[31:0] :
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
       assign rb_data_o = b_byp1[32] ? b_byp1[31:0] :
@@ -181,6 +183,29 @@ module fp3_regfile #(
                                        wb0_data_i, wb1_data_i, w2_data);
       reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
       reg  [1:0]  a_lvt_q, b_lvt_q;
+      // The LVT read in two halves: in the issue cycle the low index bits
+      // pick an entry in every group of 16, in the next the high bits pick
+      // the group.  The entries are then a cycle old: a register written
+      // in the issue cycle is taken from the bypass anyway.
+      wire [1:0] a_lvt2, b_lvt2;
+      if (XW > 4) begin : g_lvt_split
+        localparam integer NG = ENTRIES / 16;
+        reg [2*NG-1:0] a_pre_q, b_pre_q;
+        integer gi;
+        always @(posedge clk_i) begin
+          for (gi = 0; gi < NG; gi = gi + 1) begin
+            a_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, a_idx[3:0]}) +: 2];
+            b_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, rb_i[3:0]}) +: 2];
+          end
+        end
+        assign a_lvt2 = a_pre_q[2*a_idx_q[XW-1:4] +: 2];
+        assign b_lvt2 = b_pre_q[2*b_idx_q[XW-1:4] +: 2];
+        wire unused_lvt = &{1'b0, a_lvt, b_lvt};   // the one-cycle read
+      end else begin : g_lvt_whole
+        assign a_lvt2 = a_lvt;
+        assign b_lvt2 = b_lvt;
+        wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
+      end
       reg  [32:0] a_byp_q, b_byp_q;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
@@ -189,8 +214,8 @@ module fp3_regfile #(
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_lvt_q <= a_lvt;
-        b_lvt_q <= b_lvt;
+        a_lvt_q <= a_lvt2;
+        b_lvt_q <= b_lvt2;
         a_byp_q <= a_byp2[32] ? a_byp2 : a_byp1;
         b_byp_q <= b_byp2[32] ? b_byp2 : b_byp1;
       end
@@ -227,6 +252,7 @@ module fp3_regfile #(
         else if (hit1) lvt_q[r] <= 2'd1;
         else if (hit2) lvt_q[r] <= 2'd2;
       end
+      assign lvt_flat[2*r +: 2] = lvt_q[r];
       always @(posedge clk_i) begin
         if (rst_i)                               busy_q[r] <= 1'b0;
         else if (set_i && set_idx_i == IDX)      busy_q[r] <= 1'b1;
