@@ -368,14 +368,19 @@ static void test_frames_sleeping(void **state) {
 
 /* ---- hazards with exact cycle accounting ---------------------------------- */
 
-static void run_both(const char *src, uint32_t steps, capture *a, capture *b) {
+/* src on the RTL engine e (a) and on the ISS (b), which must agree. */
+static void run_both_on(fp3_engine *e, const char *src, uint32_t steps, capture *a, capture *b) {
   fp3_image img;
   assemble(src, &img);
   uint32_t init[8];
   for (unsigned r = 0; r < 8; r++) init[r] = fpref_bits(1.0f + 0.25f * (float)r);
-  run_on(rtl, &img, init, 8, steps, a);
+  run_on(e, &img, init, 8, steps, a);
   run_on(iss, &img, init, 8, steps, b);
   compare_captures(a, b, src);
+}
+
+static void run_both(const char *src, uint32_t steps, capture *a, capture *b) {
+  run_both_on(rtl, src, steps, a, b);
 }
 
 /* Stall cycles of a run on one context, beside its hazards: the cycle in
@@ -459,22 +464,15 @@ static void test_move_bypass(void **state) {
 }
 
 /* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 6)
- * keeps the dependent-issue distances of the default pipeline (its second
- * read stage is covered by announcing write-backs a cycle earlier), gives
- * the move path a second cycle, and resolves a beq FP3_FMAX_PIPE_CYCLES
- * later than the default build; every result as the ISS computes it.
- * fmax_case returns the run's cycles; want_stalls < 0: not checked. */
-static uint64_t fmax_case(fp3_engine *e, const char *src, long want_stalls) {
-  fp3_image img;
-  assemble(src, &img);
-  uint32_t init[8];
-  for (unsigned r = 0; r < 8; r++) init[r] = fpref_bits(1.0f + 0.25f * (float)r);
+ * keeps the dependent-issue distances of the default pipeline (write-backs
+ * are announced earlier, for its second read stage), has a 2-cycle move
+ * path, and resolves a beq FP3_FMAX_PIPE_CYCLES later than the default
+ * build; every result as the ISS computes it.  fmax_cycles: the cycles of
+ * one integration of src on e, checked against the ISS. */
+static long fmax_cycles(fp3_engine *e, const char *src) {
   capture a, b;
-  run_on(e, &img, init, 8, 1, &a);
-  run_on(iss, &img, init, 8, 1, &b);
-  compare_captures(&a, &b, src);
-  if (want_stalls >= 0) assert_int_equal(a.st.stalls, want_stalls);
-  uint64_t cycles = a.st.cycles;
+  run_both_on(e, src, 1, &a, &b);
+  long cycles = (long)a.st.cycles;
   capture_free(&a);
   capture_free(&b);
   return cycles;
@@ -493,18 +491,18 @@ static void test_fmax_pipe(void **state) {
   const char *add3 = "add r1, r1, r2\nadd r1, r1, r2\nadd r1, r1, r2\nhalt\n";
   const char *mul2 = "mul r3, r3, r2\nmul r3, r3, r2\nhalt\n";
   const char *mul3 = "mul r3, r3, r2\nmul r3, r3, r2\nmul r3, r3, r2\nhalt\n";
-  assert_int_equal(fmax_case(e, add3, -1) - fmax_case(e, add2, -1),
+  assert_int_equal(fmax_cycles(e, add3) - fmax_cycles(e, add2),
                    FP3_READ_CYCLES + e->config.add_latency);
-  assert_int_equal(fmax_case(e, mul3, -1) - fmax_case(e, mul2, -1),
+  assert_int_equal(fmax_cycles(e, mul3) - fmax_cycles(e, mul2),
                    FP3_READ_CYCLES + e->config.mul_latency);
   /* The 2-cycle move path, bit-exact. */
-  fmax_case(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n", -1);
+  fmax_cycles(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n");
   /* A taken beq costs FP3_BEQ_CYCLES on the default build, and
    * FP3_FMAX_PIPE_CYCLES more on this one, against a nop before the halt
    * (which costs the issue spacing there, the fetch spacing here). */
   const char *plain = "nop\nhalt\n", *br = "beq r1, r1, out\nnop\nout:\nhalt\n";
-  long d_rtl = (long)fmax_case(rtl, br, -1) - (long)fmax_case(rtl, plain, -1);
-  long d_e = (long)fmax_case(e, br, -1) - (long)fmax_case(e, plain, -1);
+  long d_rtl = fmax_cycles(rtl, br) - fmax_cycles(rtl, plain);
+  long d_e = fmax_cycles(e, br) - fmax_cycles(e, plain);
   assert_int_equal(d_rtl, FP3_BEQ_CYCLES - FP3_ISSUE_SPACING);
   assert_int_equal(d_e, FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES - FP3_FMAX_PIPE_FETCH_SPACING);
   fp3_engine_free(e);
