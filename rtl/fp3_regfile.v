@@ -33,10 +33,11 @@
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
 //                    of the three RAMs' data (one stage; the default)
 //   READ_STAGES = 2  cycle t + 1: the RAMs' data registered, the LVT read
-//                    and the bypass compare against the writes of cycles
-//                    t and t + 1, registered; cycle t + 2: one select
-//                    (for clock rate: no RAM output, LVT read or compare
-//                    sits in front of the select)
+//                    (its first half in cycle t) and the bypass compare
+//                    against the writes of cycles t and t + 1,
+//                    registered; cycle t + 2: one select (for clock rate:
+//                    no RAM output, LVT read or compare sits in front of
+//                    the select)
 //
 // Parameters
 //   ENTRIES      registers in all, 2**XW

@@ -192,11 +192,9 @@ module fp3_scheduler #(
    (ahead_valid_i[2] && ahead_idx_i[2*XW +: XW] == (x)))
 
   // ---- ready step: the head of every queue ---------------------------------
-  // The instruction in the issue register (PICK_STAGE = 1) if it writes a
-  // register: the ready step of its context checks against it.
-  wire          iss_dst_q;
-  wire [CW-1:0] iss_ctx_q;
-  wire [XW-1:0] iss_rd_q;
+  // The instruction in the issue register (PICK_STAGE = 1: issue_ctx_o,
+  // rd_o) writes a register: the ready step of its context checks it.
+  wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
   wire [NC-1:0] legal;
   wire [NC-1:0] ready_d;
   wire [NC-1:0] h_endi;     // the head is an endi
@@ -248,14 +246,14 @@ module fp3_scheduler #(
       wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
       // PICK_STAGE: the destination of this context's instruction in the
       // issue register is not busy yet.
-      wire pend = iss_dst_q && iss_ctx_q == CTX;
+      wire pend = iss_dst && issue_ctx_o == CTX;
       assign ready_d[c] = v0_q[c] && legal[c] &&
                           (!use_ra || ((!busy_i[xa] || `FP3_FREED(xa)) &&
-                                       !(pend && iss_rd_q == xa))) &&
+                                       !(pend && rd_o == xa))) &&
                           (!use_rb || ((!busy_i[xb] || `FP3_FREED(xb)) &&
-                                       !(pend && iss_rd_q == xb))) &&
+                                       !(pend && rd_o == xb))) &&
                           (!use_rd || ((!busy_i[xd] || `FP3_FREED(xd)) &&
-                                       !(pend && iss_rd_q == xd)));
+                                       !(pend && rd_o == xd)));
     end
   endgenerate
 `undef FP3_FREED
@@ -358,9 +356,6 @@ module fp3_scheduler #(
   endgenerate
   assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
           imm_o, endi_o, beq_o} = is_w;
-  assign iss_dst_q = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
-  assign iss_ctx_q = issue_ctx_o;
-  assign iss_rd_q  = rd_o;
 
   // ---- fetch step ----------------------------------------------------------
   // A context may fetch when it has room for the word (an entry free, not

@@ -4,9 +4,9 @@
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
-// appears on host_rdata_o 1 + FMAX_PIPE cycles later (HOST_READ_CYCLES:
-// the register window's read stages; INFO1 reports FMAX_PIPE, and reading
-// it with the address held for two cycles works for both).  The map (HR_* in
+// appears on host_rdata_o 1 + FMAX_PIPE cycles later (the register
+// window's read stages; INFO1 reports FMAX_PIPE, and reading it with the
+// address held for two cycles works for both).  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
 // CTX selects the context whose status and registers the host sees;

@@ -226,7 +226,7 @@ module tb_fp3 #(
       wire wb = (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
       wire wd = (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
       wire pend = dut.u_sched.g_ctx[gs].pend;
-      wire [31:0] pend_x = dut.u_sched.iss_rd_q;
+      wire [31:0] pend_x = dut.u_sched.rd_o;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
         ((dut.u_sched.g_ctx[gs].use_ra &&
           ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xa] && !wa) || (pend && pend_x == xa))) ||

@@ -41,8 +41,8 @@ typedef struct fp3_config {
   unsigned has_sub;     /* 1: the adder subtracts (HAS_SUB); 0: sub illegal */
   unsigned has_mul;     /* 1: a mul core (HAS_MUL); 0: mul illegal        */
   unsigned fmax_pipe;   /* 1: the pipeline for clock rate (FMAX_PIPE, RTL
-                           only): beq and run 2 cycles longer, same
-                           dependent-issue distances                      */
+                           only): same dependent-issue distances, a beq
+                           FP3_FMAX_PIPE_CYCLES longer (fp3_isa.h)        */
 } fp3_config;
 
 /* Check that a program only needs the units a build has: every add, sub

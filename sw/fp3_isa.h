@@ -49,8 +49,9 @@
  * block-RAM read stage).  A dependent instruction issues FP3_READ_CYCLES +
  * latency cycles after its producer: the unit's latency (ADD_LATENCY,
  * MUL_LATENCY, 1 for the move path) plus this.  The same with FMAX_PIPE
- * (rtl/fp3_top.v: a second read stage, but write-backs announced a cycle
- * earlier), except that its move path takes 2 cycles. */
+ * (rtl/fp3_top.v: a pick and a second read stage, but write-backs
+ * announced two cycles earlier), except that its move path takes 2
+ * cycles. */
 #define FP3_READ_CYCLES 1
 
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
