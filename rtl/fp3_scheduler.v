@@ -134,12 +134,15 @@ module fp3_scheduler #(
   localparam integer NC = NUM_CONTEXTS;
   localparam integer XW = CW + IW;
   localparam [7:0]   DRAIN8 = DRAIN[7:0];
+  localparam integer DW = 12;       // a queue entry's decoded bits (adec)
 
   // ---- per-context state ---------------------------------------------------
   reg [NC-1:0] active_q;            // fetching and issuing
   reg [NC-1:0] v0_q, v1_q;          // queue entries 0 (head) and 1 valid
   reg [63:0]   w0_q [0:NC-1];       // queue words
   reg [63:0]   w1_q [0:NC-1];
+  reg [DW-1:0] x0_q [0:NC-1];       // ... decoded as they joined (DW: below)
+  reg [DW-1:0] x1_q [0:NC-1];
   reg [AW-1:0] p0_q [0:NC-1];       // ... and their PCs
   reg [AW-1:0] p1_q [0:NC-1];
   reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
@@ -151,7 +154,8 @@ module fp3_scheduler #(
   reg [3:0]    err_q  [0:NC-1];
   reg [AW-1:0] epc_q  [0:NC-1];     // faulting PC
   // ---- shared state --------------------------------------------------------
-  reg [31:0]   steps_q;
+  reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
+  reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
   reg [CW-1:0] grr_q;               // issue arbiter: highest priority
   reg [CW-1:0] frr_q;               // fetch arbiter: highest priority
   reg          fvalid_q;            // a fetched word arrives this cycle
@@ -191,6 +195,43 @@ module fp3_scheduler #(
    (ahead_valid_i[1] && ahead_idx_i[1*XW +: XW] == (x)) || \
    (ahead_valid_i[2] && ahead_idx_i[2*XW +: XW] == (x)))
 
+  // ---- decode, once, as a word joins its queue -----------------------------
+  // Everything the ready and issue steps need of a word beyond its raw
+  // fields is decided here, from the arriving word and its PC, and kept
+  // beside the word in its queue entry (DW bits): {legal, use_rb, use_ra,
+  // use_rd, unit, sub, li, endi, beq, halt, ovf}.  A word never changes in
+  // its queue, so this is the decision the ready step would take each cycle,
+  // taken off its path.
+  wire [63:0]   aword;
+  wire [AW-1:0] apc;
+  wire [DW-1:0] adec;
+  wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire          a_endi  = a_opc == OP_ENDI;
+  wire          a_beq   = a_opc == OP_BEQ;
+  wire          a_halt  = a_opc == OP_HALT;
+  wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
+  generate
+    begin : g_adec
+      wire [7:0]  rd8 = aword[ISA_RD_LSB +: ISA_REG_WIDTH];
+      wire [7:0]  ra8 = aword[ISA_RA_LSB +: ISA_REG_WIDTH];
+      wire [7:0]  rb8 = aword[ISA_RB_LSB +: ISA_REG_WIDTH];
+      wire [31:0] imm = aword[0 +: ISA_IMM_WIDTH];
+      wire [6:0]  dec = isa_decode(a_opc);
+      wire use_rd = dec[0], use_ra = dec[1], use_rb = dec[2], use_imm = dec[3];
+      wire built = (dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
+                   (a_opc != OP_SUB || HAS_SUB != 0) &&
+                   (dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+      wire legal = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
+                   reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
+                   (!a_endi || imm < IMEM_DEPTH) &&
+                   (!a_beq || (imm < IMEM_DEPTH && imm[AW-1:0] > apc));
+      // Issuing it would run off the end of the memory: not a halt or an
+      // endi (which leave or jump) at the last address.
+      assign adec = {legal, use_rb, use_ra, use_rd, dec[5:4], a_opc == OP_SUB,
+                     a_opc == OP_LI, a_endi, a_beq, a_halt, a_atend && !a_halt && !a_endi};
+    end
+  endgenerate
+
   // ---- ready step: the head of every queue ---------------------------------
   // The instruction in the issue register (PICK_STAGE = 1: issue_ctx_o,
   // rd_o) writes a register: the ready step of its context checks it.
@@ -210,44 +251,31 @@ module fp3_scheduler #(
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
       wire [63:0] insn = w0_q[c];
-      wire [7:0]  opc = insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-      wire [7:0]  rd8 = insn[ISA_RD_LSB  +: ISA_REG_WIDTH];
-      wire [7:0]  ra8 = insn[ISA_RA_LSB  +: ISA_REG_WIDTH];
-      wire [7:0]  rb8 = insn[ISA_RB_LSB  +: ISA_REG_WIDTH];
-      wire [31:0] imm = insn[0 +: ISA_IMM_WIDTH];
-      wire [6:0]  dec = isa_decode(opc);
-      wire use_rd = dec[0], use_ra = dec[1], use_rb = dec[2], use_imm = dec[3];
-
-      wire built = (dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
-                   (opc != OP_SUB || HAS_SUB != 0) &&
-                   (dec[5:4] != UNIT_MUL || HAS_MUL != 0);
-      assign legal[c] = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
-                        reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
-                        (opc != OP_ENDI || imm < IMEM_DEPTH) &&
-                        (opc != OP_BEQ || (imm < IMEM_DEPTH && imm[AW-1:0] > p0_q[c]));
-
-      // What issuing the head does to its context, decided per context so
-      // that the state updates need no multiplexer behind the arbiter.
-      assign h_endi[c] = opc == OP_ENDI;
-      assign h_stop[c] = opc == OP_HALT || (h_endi[c] && final_q[c]);
-      assign h_ovf[c]  = !h_stop[c] && !h_endi[c] &&
-                         {{(32-AW){1'b0}}, p0_q[c]} == IMEM_DEPTH - 1;
-
-      // What the instruction issues with, decoded here in every context
-      // so that only a multiplexer sits behind the arbiter.
-      assign fields[c*FW +: FW] = {ra8[IW-1:0], rb8[IW-1:0], rd8[IW-1:0], dec[5:4],
-                                   opc == OP_SUB, opc == OP_LI, imm, h_endi[c],
-                                   opc == OP_BEQ};
+      wire [IW-1:0] rd = insn[ISA_RD_LSB +: IW];
+      wire [IW-1:0] ra = insn[ISA_RA_LSB +: IW];
+      wire [IW-1:0] rb = insn[ISA_RB_LSB +: IW];
+      wire [31:0]   imm = insn[0 +: ISA_IMM_WIDTH];
+      // (The opcode and the registers' high bits were decoded at arrival.)
+      wire          unused_insn = &{1'b0, insn};
+      wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
+      wire [1:0]    d_unit;
+      assign {lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
+              d_ovf} = x0_q[c];
+      assign legal[c]  = lgl;
+      assign h_endi[c] = d_endi;
+      assign h_stop[c] = d_halt || (d_endi && final_q[c]);
+      assign h_ovf[c]  = d_ovf;
+      assign fields[c*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
 
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
-      wire [XW-1:0] xa = {CTX, ra8[IW-1:0]};
-      wire [XW-1:0] xb = {CTX, rb8[IW-1:0]};
-      wire [XW-1:0] xd = {CTX, rd8[IW-1:0]};
+      wire [XW-1:0] xa = {CTX, ra};
+      wire [XW-1:0] xb = {CTX, rb};
+      wire [XW-1:0] xd = {CTX, rd};
       // PICK_STAGE: the destination of this context's instruction in the
       // issue register is not busy yet.
       wire pend = iss_dst && issue_ctx_o == CTX;
-      assign ready_d[c] = v0_q[c] && legal[c] &&
+      assign ready_d[c] = v0_q[c] && lgl &&
                           (!use_ra || ((!busy_i[xa] || `FP3_FREED(xa)) &&
                                        !(pend && rd_o == xa))) &&
                           (!use_rb || ((!busy_i[xb] || `FP3_FREED(xb)) &&
@@ -367,8 +395,6 @@ module fp3_scheduler #(
   // word in flight, from its grant to its arrival.
   wire          avalid;
   wire [CW-1:0] actx;
-  wire [AW-1:0] apc;
-  wire [63:0]   aword;
   fp_pipe #(.WIDTH(CW + AW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -403,10 +429,6 @@ module fp3_scheduler #(
   assign fetch_addr = fpc_sel;
 
   // The arriving word decides where its context fetches next.
-  wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire          a_endi  = a_opc == OP_ENDI;
-  wire          a_beq   = a_opc == OP_BEQ;
-  wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
 
   wire start_ok = start_i && !running_o && steps_i != 32'd0 &&
@@ -448,7 +470,7 @@ module fp3_scheduler #(
       quiet_q   <= 8'd0;
       grr_q     <= {CW{1'b0}};
       frr_q     <= {CW{1'b0}};
-      steps_q   <= 32'd0;
+      last2_q   <= 32'd0;
       cycles_o  <= 64'd0;
       issued_o  <= 64'd0;
       stalls_o  <= 64'd0;
@@ -468,7 +490,7 @@ module fp3_scheduler #(
       end else if (start_ok) begin
         running_o <= 1'b1;
         done_o    <= 1'b0;
-        steps_q   <= steps_i;
+        last2_q   <= steps_i - 32'd2;
         cycles_o  <= 64'd0;
         issued_o  <= 64'd0;
         stalls_o  <= 64'd0;
@@ -504,6 +526,7 @@ module fp3_scheduler #(
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) begin
           w0_q[k] <= w1_q[k];
+          x0_q[k] <= x1_q[k];
           p0_q[k] <= p1_q[k];
           v0_q[k] <= v1_q[k];
           v1_q[k] <= 1'b0;
@@ -511,10 +534,12 @@ module fp3_scheduler #(
         if (arriving[k] && active_q[k]) begin
           if (gone[k] ? !v1_q[k] : !v0_q[k]) begin
             w0_q[k] <= aword;
+            x0_q[k] <= adec;
             p0_q[k] <= apc;
             v0_q[k] <= 1'b1;
           end else begin
             w1_q[k] <= aword;
+            x1_q[k] <= adec;
             p1_q[k] <= apc;
             v1_q[k] <= 1'b1;
           end
@@ -539,7 +564,7 @@ module fp3_scheduler #(
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k] && h_endi[k]) begin
           sdone_q[k] <= sdone_q[k] + 32'd1;
-          final_q[k] <= sdone_q[k] + 32'd2 == steps_q;
+          final_q[k] <= near_q[k];
         end
         if (gone[k] && h_stop[k]) active_q[k] <= 1'b0;
         if (gone[k] && h_ovf[k]) begin
@@ -571,6 +596,15 @@ module fp3_scheduler #(
         done_o    <= 1'b1;
       end
     end
+  end
+
+  // Whether the next endi of a context is the last but one, compared a
+  // cycle ahead: sdone_q changes only when an endi issues, and a context
+  // issues at most every other cycle (and its first endi comes cycles
+  // after START), so at an endi near_q is up to date.
+  integer n;
+  always @(posedge clk_i) begin
+    for (n = 0; n < NC; n = n + 1) near_q[n] <= sdone_q[n] == last2_q;
   end
 
 `ifdef FORMAL
