@@ -143,6 +143,8 @@ module fp3_scheduler #(
   reg [63:0]   w1_q [0:NC-1];
   reg [DW-1:0] x0_q [0:NC-1];       // ... decoded as they joined (DW: below)
   reg [DW-1:0] x1_q [0:NC-1];
+  reg [2:0]    s0_q [0:NC-1];       // ... their wait bits (ready step)
+  reg [2:0]    s1_q [0:NC-1];
   reg [AW-1:0] p0_q [0:NC-1];       // ... and their PCs
   reg [AW-1:0] p1_q [0:NC-1];
   reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
@@ -202,8 +204,12 @@ module fp3_scheduler #(
   // use_rd, unit, sub, li, endi, beq, halt, ovf}.  A word never changes in
   // its queue, so this is the decision the ready step would take each cycle,
   // taken off its path.
+  wire          avalid;     // a fetched word arrives (fetch step, below)
+  wire [CW-1:0] actx;       // ... for this context
   wire [63:0]   aword;
   wire [AW-1:0] apc;
+  wire [NC-1:0] arriving;   // ... one-hot
+  wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
   wire [DW-1:0] adec;
   wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          a_endi  = a_opc == OP_ENDI;
@@ -233,9 +239,20 @@ module fp3_scheduler #(
   endgenerate
 
   // ---- ready step: the head of every queue ---------------------------------
-  // The instruction in the issue register (PICK_STAGE = 1: issue_ctx_o,
-  // rd_o) writes a register: the ready step of its context checks it.
-  wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
+  // Each queue entry carries three wait bits, one per operand field (ra,
+  // rb, rd): the register's busy flag, kept up to date by the entry itself
+  // so that the ready step reads no busy flag.  Only a context's own
+  // instructions make its registers busy, so an entry's wait bit is
+  //   set    as the word joins: the flag (busy_i), or the destination of
+  //          the instruction in the issue register (PICK_STAGE = 1: its
+  //          flag is set at the end of this cycle), or of the head granted
+  //          in this cycle;
+  //          later: when the head ahead of it is granted and writes it;
+  //   clear  when the register's write-back is announced (ahead_*_i; the
+  //          flag clears in the same cycle).
+  // An announcement in this cycle counts as free already.  So the head is
+  // ready when it is legal and no used field waits: sources (RAW) and the
+  // destination (WAW).  Registered: valid for the pick in the next cycle.
   wire [NC-1:0] legal;
   wire [NC-1:0] ready_d;
   wire [NC-1:0] h_endi;     // the head is an endi
@@ -246,6 +263,17 @@ module fp3_scheduler #(
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
   wire [NC*FW-1:0] fields;
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
+  wire [NC*3-1:0]  s0_d, s1_d;   // the wait bits after this cycle ({rd, rb, ra})
+  // The arriving word's wait bits, except for its context's head granted now.
+  wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
+  wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
+  wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
+  wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
+`define FP3_JOIN_WAIT(x) \
+  ((busy_i[x] && !`FP3_FREED(x)) || (iss_dst && rd_o == (x)))
+  wire [2:0] a_wait = {`FP3_JOIN_WAIT({actx, a_rd}), `FP3_JOIN_WAIT({actx, a_rb}),
+                       `FP3_JOIN_WAIT({actx, a_ra})};
+`undef FP3_JOIN_WAIT
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -272,16 +300,27 @@ module fp3_scheduler #(
       wire [XW-1:0] xa = {CTX, ra};
       wire [XW-1:0] xb = {CTX, rb};
       wire [XW-1:0] xd = {CTX, rd};
-      // PICK_STAGE: the destination of this context's instruction in the
-      // issue register is not busy yet.
-      wire pend = iss_dst && issue_ctx_o == CTX;
-      assign ready_d[c] = v0_q[c] && lgl &&
-                          (!use_ra || ((!busy_i[xa] || `FP3_FREED(xa)) &&
-                                       !(pend && rd_o == xa))) &&
-                          (!use_rb || ((!busy_i[xb] || `FP3_FREED(xb)) &&
-                                       !(pend && rd_o == xb))) &&
-                          (!use_rd || ((!busy_i[xd] || `FP3_FREED(xd)) &&
-                                       !(pend && rd_o == xd)));
+      // Wait bits of the head (0) and of the entry behind it (1), with this
+      // cycle's announcements taken off.
+      wire [2:0] s0 = s0_q[c] & ~{`FP3_FREED(xd), `FP3_FREED(xb), `FP3_FREED(xa)};
+      wire [IW-1:0] rd1 = w1_q[c][ISA_RD_LSB +: IW];
+      wire [IW-1:0] ra1 = w1_q[c][ISA_RA_LSB +: IW];
+      wire [IW-1:0] rb1 = w1_q[c][ISA_RB_LSB +: IW];
+      wire [2:0] s1 = s1_q[c] & ~{`FP3_FREED({CTX, rd1}), `FP3_FREED({CTX, rb1}),
+                                  `FP3_FREED({CTX, ra1})};
+      assign ready_d[c] = v0_q[c] && lgl && !(use_ra && s0[0]) && !(use_rb && s0[1]) &&
+                          !(use_rd && s0[2]);
+      // The head, if granted now, makes its destination busy for the
+      // entries behind it: the one in the queue and an arriving word.
+      wire wr0 = d_unit != UNIT_NONE;
+      wire [2:0] by1 = {3{wr0 && gone[c]}} & {rd1 == rd, rb1 == rd, ra1 == rd};
+      wire [2:0] bya = {3{wr0 && gone[c]}} & {a_rd == rd, a_rb == rd, a_ra == rd};
+      // The word that arrives now joins as the head or behind it.
+      wire [2:0] sa = a_wait | bya;
+      wire       to0 = arriving[c] && (gone[c] ? !v1_q[c] : !v0_q[c]);
+      wire       to1 = arriving[c] && !to0;
+      assign s0_d[c*3 +: 3] = to0 ? sa : gone[c] ? s1 | by1 : s0;
+      assign s1_d[c*3 +: 3] = to1 ? sa : s1 | by1;
     end
   endgenerate
 `undef FP3_FREED
@@ -348,7 +387,7 @@ module fp3_scheduler #(
   // (A context granted in the previous cycle has its ready bit cleared:
   // it belonged to the instruction that left.)
   wire [NC-1:0] cand  = ready_q & active_q;
-  wire [NC-1:0] gone  = rr_grant(cand, at_or_after(grr_q));  // the head leaves its queue
+  assign gone = rr_grant(cand, at_or_after(grr_q));  // the head leaves its queue
   wire          grant = |cand;
   wire [CW-1:0] g     = encode(gone);
   reg  [FW-1:0] gf;                                         // the granted head's fields
@@ -393,8 +432,6 @@ module fp3_scheduler #(
   // memory a cycle later, and the word is registered after the memory
   // (whose output is slow) and arrives a cycle later; a context has one
   // word in flight, from its grant to its arrival.
-  wire          avalid;
-  wire [CW-1:0] actx;
   fp_pipe #(.WIDTH(CW + AW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -403,7 +440,7 @@ module fp3_scheduler #(
     .valid_o (avalid),
     .data_o  ({actx, apc, aword})
   );
-  wire [NC-1:0] arriving = onehot(avalid, actx);
+  assign arriving = onehot(avalid, actx);
   wire          fread;      // the memory reads for context fr (grant fr1)
   wire [NC-1:0] fr1;
   wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q) |
@@ -521,6 +558,10 @@ module fp3_scheduler #(
       if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
 
       ready_q <= ready_d & ~gone;
+      for (k = 0; k < NC; k = k + 1) begin
+        s0_q[k] <= s0_d[k*3 +: 3];
+        s1_q[k] <= s1_d[k*3 +: 3];
+      end
 
       // Queues: the granted head leaves, an arriving word joins at the end.
       for (k = 0; k < NC; k = k + 1) begin

@@ -225,7 +225,8 @@ module tb_fp3 #(
       wire wa = (wbn0_v && wbn0_x == xa) || (wbn1_v && wbn1_x == xa) || (wbn2_v && wbn2_x == xa);
       wire wb = (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
       wire wd = (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
-      wire pend = dut.u_sched.g_ctx[gs].pend;
+      wire pend = FMAX_PIPE != 0 && dut.u_sched.issue_o &&
+                  dut.u_sched.issue_unit_o != UNIT_NONE && dut.u_sched.issue_ctx_o == gs;
       wire [31:0] pend_x = dut.u_sched.rd_o;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
         ((dut.u_sched.g_ctx[gs].use_ra &&
