@@ -264,16 +264,24 @@ module fp3_scheduler #(
   wire [NC*FW-1:0] fields;
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
   wire [NC*3-1:0]  s0_d, s1_d;   // the wait bits after this cycle ({rd, rb, ra})
-  // The arriving word's wait bits, except for its context's head granted now.
+  // A word's wait bits are found over two cycles: in the cycle it arrives
+  // (a), the flags of its fields are looked up (in every context's bank:
+  // lk_q) and this cycle's changes to them are compared (freed and
+  // pending destination: aw_q; its context's head granted now: by_q),
+  // all registered; in cycle a + 1, when it is in its queue entry (marked
+  // fresh: fr0_q, fr1_q), they are combined.  So no lookup, compare and
+  // queue update share a cycle.
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
   wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
-`define FP3_JOIN_WAIT(x) \
-  ((busy_i[x] && !`FP3_FREED(x)) || (iss_dst && rd_o == (x)))
-  wire [2:0] a_wait = {`FP3_JOIN_WAIT({actx, a_rd}), `FP3_JOIN_WAIT({actx, a_rb}),
-                       `FP3_JOIN_WAIT({actx, a_ra})};
-`undef FP3_JOIN_WAIT
+  reg  [NC-1:0] fr0_q, fr1_q;     // the head / entry 1 arrived last cycle
+  reg  [5:0]    aw_q;             // {pending, freed} in cycle a, per field
+  wire [2:0]    a_freed = {`FP3_FREED({actx, a_rd}), `FP3_FREED({actx, a_rb}),
+                           `FP3_FREED({actx, a_ra})};
+  wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
+                                          rd_o == {actx, a_ra}};
+  always @(posedge clk_i) aw_q <= {a_pend, a_freed};
   genvar c;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -300,27 +308,35 @@ module fp3_scheduler #(
       wire [XW-1:0] xa = {CTX, ra};
       wire [XW-1:0] xb = {CTX, rb};
       wire [XW-1:0] xd = {CTX, rd};
+      // The arriving word's lookup in this context's bank (used if it is
+      // this context's word), and the head, if granted now, making its
+      // destination busy for the entries behind it: the one in the queue
+      // and an arriving word.
+      wire       wr0 = d_unit != UNIT_NONE;
+      reg  [2:0] lk_q, by_q;
+      always @(posedge clk_i) begin
+        lk_q <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
+        by_q <= {3{wr0 && gone[c]}} & {a_rd == rd, a_rb == rd, a_ra == rd};
+      end
+      // The fresh word's wait bits: flag not freed, or pending, or written
+      // by the head granted in its arrival cycle.
+      wire [2:0] sj = (lk_q & ~aw_q[2:0]) | aw_q[5:3] | by_q;
       // Wait bits of the head (0) and of the entry behind it (1), with this
       // cycle's announcements taken off.
-      wire [2:0] s0 = s0_q[c] & ~{`FP3_FREED(xd), `FP3_FREED(xb), `FP3_FREED(xa)};
+      wire [2:0] s0 = (fr0_q[c] ? sj : s0_q[c]) &
+                      ~{`FP3_FREED(xd), `FP3_FREED(xb), `FP3_FREED(xa)};
       wire [IW-1:0] rd1 = w1_q[c][ISA_RD_LSB +: IW];
       wire [IW-1:0] ra1 = w1_q[c][ISA_RA_LSB +: IW];
       wire [IW-1:0] rb1 = w1_q[c][ISA_RB_LSB +: IW];
-      wire [2:0] s1 = s1_q[c] & ~{`FP3_FREED({CTX, rd1}), `FP3_FREED({CTX, rb1}),
-                                  `FP3_FREED({CTX, ra1})};
+      wire [2:0] s1 = (fr1_q[c] ? sj : s1_q[c]) &
+                      ~{`FP3_FREED({CTX, rd1}), `FP3_FREED({CTX, rb1}), `FP3_FREED({CTX, ra1})};
       assign ready_d[c] = v0_q[c] && lgl && !(use_ra && s0[0]) && !(use_rb && s0[1]) &&
                           !(use_rd && s0[2]);
-      // The head, if granted now, makes its destination busy for the
-      // entries behind it: the one in the queue and an arriving word.
-      wire wr0 = d_unit != UNIT_NONE;
       wire [2:0] by1 = {3{wr0 && gone[c]}} & {rd1 == rd, rb1 == rd, ra1 == rd};
-      wire [2:0] bya = {3{wr0 && gone[c]}} & {a_rd == rd, a_rb == rd, a_ra == rd};
-      // The word that arrives now joins as the head or behind it.
-      wire [2:0] sa = a_wait | bya;
-      wire       to0 = arriving[c] && (gone[c] ? !v1_q[c] : !v0_q[c]);
-      wire       to1 = arriving[c] && !to0;
-      assign s0_d[c*3 +: 3] = to0 ? sa : gone[c] ? s1 | by1 : s0;
-      assign s1_d[c*3 +: 3] = to1 ? sa : s1 | by1;
+      // After this cycle: the head leaves (entry 1 moves up), or stays.  A
+      // word arriving now is marked fresh in its entry instead.
+      assign s0_d[c*3 +: 3] = gone[c] ? s1 | by1 : s0;
+      assign s1_d[c*3 +: 3] = s1 | by1;
     end
   endgenerate
 `undef FP3_FREED
@@ -500,6 +516,8 @@ module fp3_scheduler #(
       fend_q    <= {NC{1'b0}};
       bwait_q   <= {NC{1'b0}};
       ready_q   <= {NC{1'b0}};
+      fr0_q     <= {NC{1'b0}};
+      fr1_q     <= {NC{1'b0}};
       final_q   <= {NC{1'b0}};
       fvalid_q  <= 1'b0;
       fctx_q    <= {CW{1'b0}};
@@ -536,6 +554,8 @@ module fp3_scheduler #(
         fend_q    <= {NC{1'b0}};
         bwait_q   <= {NC{1'b0}};
         ready_q   <= {NC{1'b0}};
+        fr0_q     <= {NC{1'b0}};
+        fr1_q     <= {NC{1'b0}};
         final_q   <= {NC{steps_i == 32'd1}};
         fvalid_q  <= 1'b0;
         quiet_q   <= 8'd0;
@@ -558,6 +578,8 @@ module fp3_scheduler #(
       if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
 
       ready_q <= ready_d & ~gone;
+      fr0_q   <= {NC{1'b0}};
+      fr1_q   <= {NC{1'b0}};
       for (k = 0; k < NC; k = k + 1) begin
         s0_q[k] <= s0_d[k*3 +: 3];
         s1_q[k] <= s1_d[k*3 +: 3];
@@ -574,11 +596,13 @@ module fp3_scheduler #(
         end
         if (arriving[k] && active_q[k]) begin
           if (gone[k] ? !v1_q[k] : !v0_q[k]) begin
+            fr0_q[k] <= 1'b1;
             w0_q[k] <= aword;
             x0_q[k] <= adec;
             p0_q[k] <= apc;
             v0_q[k] <= 1'b1;
           end else begin
+            fr1_q[k] <= 1'b1;
             w1_q[k] <= aword;
             x1_q[k] <= adec;
             p1_q[k] <= apc;
