@@ -158,8 +158,8 @@ module fp3_scheduler #(
   // ---- shared state --------------------------------------------------------
   reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
-  reg [CW-1:0] grr_q;               // issue arbiter: highest priority
-  reg [CW-1:0] frr_q;               // fetch arbiter: highest priority
+  reg [NC-1:0] ghigh_q;             // issue arbiter: contexts of first priority
+  reg [NC-1:0] fhigh_q;             // fetch arbiter: contexts of first priority
   reg          fvalid_q;            // a fetched word arrives this cycle
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
@@ -330,7 +330,7 @@ module fp3_scheduler #(
       wire [IW-1:0] rb1 = w1_q[c][ISA_RB_LSB +: IW];
       wire [2:0] s1 = (fr1_q[c] ? sj : s1_q[c]) &
                       ~{`FP3_FREED({CTX, rd1}), `FP3_FREED({CTX, rb1}), `FP3_FREED({CTX, ra1})};
-      assign ready_d[c] = v0_q[c] && lgl && !(use_ra && s0[0]) && !(use_rb && s0[1]) &&
+      assign ready_d[c] = active_q[c] && v0_q[c] && lgl && !(use_ra && s0[0]) && !(use_rb && s0[1]) &&
                           !(use_rd && s0[2]);
       wire [2:0] by1 = {3{wr0 && gone[c]}} & {rd1 == rd, rb1 == rd, ra1 == rd};
       // After this cycle: the head leaves (entry 1 moves up), or stays.  A
@@ -341,15 +341,21 @@ module fp3_scheduler #(
   endgenerate
 `undef FP3_FREED
 
-  // ---- round-robin pick: the first set bit at or after `from` --------------
-  // `from` enters as a thermometer mask (bits from..NC-1 set), decoded from
-  // a register, so the pick itself is two priority chains and no compare;
-  // the grant is one-hot.
-  function [NC-1:0] at_or_after;
-    input [CW-1:0] from;
+  // ---- round-robin pick: the first requester after the last granted -------
+  // The contexts after the last granted one are kept as a mask (a register,
+  // `high`), so the pick is two priority chains and no compare; the grant
+  // is one-hot.  An empty mask (the last grant went to the last context)
+  // gives the first requester from context 0 on.
+  function [NC-1:0] after;      // the bits above the set bit of a one-hot x
+    input [NC-1:0] x;
     integer p;
+    reg seen;
     begin
-      for (p = 0; p < NC; p = p + 1) at_or_after[p] = p[CW-1:0] >= from;
+      seen = 1'b0;
+      for (p = 0; p < NC; p = p + 1) begin
+        after[p] = seen;
+        seen     = seen || x[p];
+      end
     end
   endfunction
 
@@ -368,7 +374,7 @@ module fp3_scheduler #(
 
   function [NC-1:0] rr_grant;   // one-hot; zero if req is
     input [NC-1:0] req;
-    input [NC-1:0] high;    // at_or_after(from)
+    input [NC-1:0] high;    // requesters of first priority
     begin
       rr_grant = (|(req & high)) ? first_one(req & high) : first_one(req);
     end
@@ -380,13 +386,6 @@ module fp3_scheduler #(
     begin
       encode = {CW{1'b0}};
       for (p = 0; p < NC; p = p + 1) if (x[p]) encode = encode | p[CW-1:0];
-    end
-  endfunction
-
-  function [CW-1:0] next_ctx;  // the context after x, cyclically
-    input [CW-1:0] x;
-    begin
-      next_ctx = ({{(32-CW){1'b0}}, x} == NC - 1) ? {CW{1'b0}} : x + {{(CW-1){1'b0}}, 1'b1};
     end
   endfunction
 
@@ -402,8 +401,8 @@ module fp3_scheduler #(
   // ---- issue step ----------------------------------------------------------
   // (A context granted in the previous cycle has its ready bit cleared:
   // it belonged to the instruction that left.)
-  wire [NC-1:0] cand  = ready_q & active_q;
-  assign gone = rr_grant(cand, at_or_after(grr_q));  // the head leaves its queue
+  wire [NC-1:0] cand  = ready_q;     // (the ready step counts only active contexts)
+  assign gone = rr_grant(cand, ghigh_q);  // the head leaves its queue
   wire          grant = |cand;
   wire [CW-1:0] g     = encode(gone);
   reg  [FW-1:0] gf;                                         // the granted head's fields
@@ -463,7 +462,7 @@ module fp3_scheduler #(
                             ((FETCH_STAGE != 0 && fread) ? fr1 : {NC{1'b0}});
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
-  wire [NC-1:0] fgnt  = rr_grant(fetch_req, at_or_after(frr_q));
+  wire [NC-1:0] fgnt  = rr_grant(fetch_req, fhigh_q);
   fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -503,80 +502,76 @@ module fp3_scheduler #(
   wire unused_ok = &{1'b0, aword[31:AW]};
 
   // ---- control, status and counters ----------------------------------------
+  // Three groups of state, so that the START decision drives few flip-flops:
+  //   run control  RUNNING, DONE, the active contexts and what the first
+  //                cycle of a run needs: decided in the START cycle;
+  //   run state    queues, fetch, arbiters: held at their start values
+  //                while no run is in progress;
+  //   results      counters, integrations done, errors (the host reads them
+  //                after a run): cleared in the run's first cycle (start_q),
+  //                in which nothing can have issued yet, or set a cycle
+  //                after a refused START (bad_q).
   wire          bad_start = start_i && !running_o && !start_ok;
   wire [NC-1:0] illegal   = active_q & v0_q & ~legal;
+  reg           start_q, bad_q;  // a START taken / refused in the last cycle
+  reg  [3:0]    bad_err_q;       // ... why it was refused
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
       running_o <= 1'b0;
       done_o    <= 1'b0;
+      start_q   <= 1'b0;
+      bad_q     <= 1'b0;
+      bad_err_q <= ERR_NONE;
       active_q  <= {NC{1'b0}};
-      v0_q      <= {NC{1'b0}};
-      v1_q      <= {NC{1'b0}};
-      fend_q    <= {NC{1'b0}};
-      bwait_q   <= {NC{1'b0}};
-      ready_q   <= {NC{1'b0}};
-      fr0_q     <= {NC{1'b0}};
-      fr1_q     <= {NC{1'b0}};
       final_q   <= {NC{1'b0}};
-      fvalid_q  <= 1'b0;
-      fctx_q    <= {CW{1'b0}};
-      fpcq_q    <= {AW{1'b0}};
-      quiet_q   <= 8'd0;
-      grr_q     <= {CW{1'b0}};
-      frr_q     <= {CW{1'b0}};
       last2_q   <= 32'd0;
-      cycles_o  <= 64'd0;
-      issued_o  <= 64'd0;
-      stalls_o  <= 64'd0;
-      for (k = 0; k < NC; k = k + 1) begin
-        fpc_q[k]   <= {AW{1'b0}};
-        sdone_q[k] <= 32'd0;
-        err_q[k]   <= ERR_NONE;
-        epc_q[k]   <= {AW{1'b0}};
-      end
-    end else if (!running_o) begin
-      if (bad_start) begin
-        done_o <= 1'b1;
-        for (k = 0; k < NC; k = k + 1) begin
-          err_q[k]   <= (steps_i == 32'd0) ? ERR_BAD_STEPS : ERR_BAD_CONTEXTS;
-          sdone_q[k] <= 32'd0;
-        end
-      end else if (start_ok) begin
-        running_o <= 1'b1;
-        done_o    <= 1'b0;
-        last2_q   <= steps_i - 32'd2;
-        cycles_o  <= 64'd0;
-        issued_o  <= 64'd0;
-        stalls_o  <= 64'd0;
-        v0_q      <= {NC{1'b0}};
-        v1_q      <= {NC{1'b0}};
-        fend_q    <= {NC{1'b0}};
-        bwait_q   <= {NC{1'b0}};
-        ready_q   <= {NC{1'b0}};
-        fr0_q     <= {NC{1'b0}};
-        fr1_q     <= {NC{1'b0}};
-        final_q   <= {NC{steps_i == 32'd1}};
-        fvalid_q  <= 1'b0;
-        quiet_q   <= 8'd0;
-        grr_q     <= {CW{1'b0}};
-        frr_q     <= {CW{1'b0}};
-        for (k = 0; k < NC; k = k + 1) begin
-          active_q[k] <= k < contexts_i;
-          fpc_q[k]    <= {AW{1'b0}};
-          sdone_q[k]  <= 32'd0;
-          err_q[k]    <= ERR_NONE;
-          epc_q[k]    <= {AW{1'b0}};
-        end
-      end else if (clear_i) begin
-        done_o <= 1'b0;
-        for (k = 0; k < NC; k = k + 1) err_q[k] <= ERR_NONE;
-      end
     end else begin
-      cycles_o <= cycles_o + 64'd1;
-      if (grant) issued_o <= issued_o + 64'd1;
-      if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
+      start_q   <= start_ok;
+      bad_q     <= bad_start;
+      bad_err_q <= (steps_i == 32'd0) ? ERR_BAD_STEPS : ERR_BAD_CONTEXTS;
+      if (!running_o) begin
+        if (start_ok) begin
+          running_o <= 1'b1;
+          done_o    <= 1'b0;
+          last2_q   <= steps_i - 32'd2;
+          final_q   <= {NC{steps_i == 32'd1}};
+          for (k = 0; k < NC; k = k + 1) active_q[k] <= k < contexts_i;
+        end else if (start_i || clear_i) begin
+          done_o <= 1'b0;        // a refused START: DONE in the next cycle
+        end else if (bad_q) begin
+          done_o <= 1'b1;
+        end
+      end else begin
+        for (k = 0; k < NC; k = k + 1) begin
+          if (gone[k] && h_endi[k]) final_q[k] <= near_q[k];
+          if (gone[k] && (h_stop[k] || h_ovf[k])) active_q[k] <= 1'b0;
+          if (illegal[k]) active_q[k] <= 1'b0;
+        end
+        // Nothing in flight once DRAIN cycles passed without a busy flag.
+        if (active_q == {NC{1'b0}} && idle_i && !issue_o && quiet_q == DRAIN8) begin
+          running_o <= 1'b0;
+          done_o    <= 1'b1;
+        end
+      end
+    end
+  end
 
+  always @(posedge clk_i) begin
+    if (rst_i || !running_o) begin
+      v0_q     <= {NC{1'b0}};
+      v1_q     <= {NC{1'b0}};
+      fend_q   <= {NC{1'b0}};
+      bwait_q  <= {NC{1'b0}};
+      ready_q  <= {NC{1'b0}};
+      fr0_q    <= {NC{1'b0}};
+      fr1_q    <= {NC{1'b0}};
+      fvalid_q <= 1'b0;
+      quiet_q  <= 8'd0;
+      ghigh_q  <= {NC{1'b1}};
+      fhigh_q  <= {NC{1'b1}};
+      for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
+    end else begin
       ready_q <= ready_d & ~gone;
       fr0_q   <= {NC{1'b0}};
       fr1_q   <= {NC{1'b0}};
@@ -623,43 +618,63 @@ module fp3_scheduler #(
           end
         end
       end
-
-      // Integration counters: each context's own adder and comparison, so
-      // that nothing wide sits behind the arbiter.
-      for (k = 0; k < NC; k = k + 1) begin
-        if (gone[k] && h_endi[k]) begin
-          sdone_q[k] <= sdone_q[k] + 32'd1;
-          final_q[k] <= near_q[k];
-        end
-        if (gone[k] && h_stop[k]) active_q[k] <= 1'b0;
-        if (gone[k] && h_ovf[k]) begin
-          active_q[k] <= 1'b0;
-          err_q[k]    <= ERR_PC_OVERFLOW;
-          epc_q[k]    <= p0_q[k];
-        end
-      end
-      if (grant) grr_q <= next_ctx(g);
-      for (k = 0; k < NC; k = k + 1) begin
-        if (illegal[k]) begin
-          active_q[k] <= 1'b0;
-          err_q[k]    <= ERR_ILLEGAL_INSN;
-          epc_q[k]    <= p0_q[k];
-        end
-      end
+      if (grant) ghigh_q <= after(gone);
 
       // The word read now arrives next cycle (FETCH_STAGE: the one after).
       fvalid_q <= fread;
       fctx_q   <= fr;
       fpcq_q   <= fetch_addr;
-      if (fetch) frr_q <= next_ctx(encode(fgnt));
+      if (fetch) fhigh_q <= after(fgnt);
 
-      // Nothing in flight once DRAIN cycles passed without a busy flag.
       if (!idle_i || issue_o)      quiet_q <= 8'd0;
       else if (quiet_q != DRAIN8)  quiet_q <= quiet_q + 8'd1;
-      if (active_q == {NC{1'b0}} && idle_i && !issue_o && quiet_q == DRAIN8) begin
-        running_o <= 1'b0;
-        done_o    <= 1'b1;
+    end
+  end
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      cycles_o <= 64'd0;
+      issued_o <= 64'd0;
+      stalls_o <= 64'd0;
+      for (k = 0; k < NC; k = k + 1) begin
+        sdone_q[k] <= 32'd0;
+        err_q[k]   <= ERR_NONE;
+        epc_q[k]   <= {AW{1'b0}};
       end
+    end else if (start_q) begin
+      // The run's first cycle (counted; no issue or stall in it).
+      cycles_o <= 64'd1;
+      issued_o <= 64'd0;
+      stalls_o <= 64'd0;
+      for (k = 0; k < NC; k = k + 1) begin
+        sdone_q[k] <= 32'd0;
+        err_q[k]   <= ERR_NONE;
+        epc_q[k]   <= {AW{1'b0}};
+      end
+    end else if (bad_q) begin
+      for (k = 0; k < NC; k = k + 1) begin
+        err_q[k]   <= bad_err_q;
+        sdone_q[k] <= 32'd0;
+      end
+    end else if (running_o) begin
+      cycles_o <= cycles_o + 64'd1;
+      if (grant) issued_o <= issued_o + 64'd1;
+      if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
+      // Integration counters and errors: each context's own, so that
+      // nothing wide sits behind the arbiter.
+      for (k = 0; k < NC; k = k + 1) begin
+        if (gone[k] && h_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
+        if (gone[k] && h_ovf[k]) begin
+          err_q[k] <= ERR_PC_OVERFLOW;
+          epc_q[k] <= p0_q[k];
+        end
+        if (illegal[k]) begin
+          err_q[k] <= ERR_ILLEGAL_INSN;
+          epc_q[k] <= p0_q[k];
+        end
+      end
+    end else if (clear_i) begin
+      for (k = 0; k < NC; k = k + 1) err_q[k] <= ERR_NONE;
     end
   end
 
