@@ -96,7 +96,6 @@ module fp_mul #(
 
   localparam [7:0]  EXP_MAX     = 8'hFF;
   localparam [9:0]  EXP_BIAS_M1 = 10'd126; // bias - 1: product in [1, 4)
-  localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
   localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
@@ -166,84 +165,61 @@ module fp_mul #(
   wire       b_sign = b_in[31];
   wire [7:0] a_exp  = a_in[30:23];
   wire [7:0] b_exp  = b_in[30:23];
-  wire       a_nan  = (a_exp == EXP_MAX) & (|a_in[22:0]);
-  wire       b_nan  = (b_exp == EXP_MAX) & (|b_in[22:0]);
-  wire       a_snan = a_nan & ~a_in[22];
-  wire       b_snan = b_nan & ~b_in[22];
-  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_in[22:0]);
-  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_in[22:0]);
-  // Zero, or subnormal read as zero under FTZ (DAZ).
-  wire       a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~(|a_in[22:0]));
-  wire       b_zero = (b_exp == 8'd0) & ((FTZ != 0) | ~(|b_in[22:0]));
-  wire       c1_sign = a_sign ^ b_sign;
+  // The fields' tests for the special cases (combined in m1b).
+  wire [5:0] c1_cls = {a_exp == EXP_MAX, a_exp == 8'd0, |a_in[22:0],
+                       b_exp == EXP_MAX, b_exp == 8'd0, |b_in[22:0]};
 
-  reg        c1_spec;
-  reg [31:0] c1_spec_y;
-  reg        c1_spec_nv;
-  always @* begin
-    c1_spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
-    c1_spec_nv = 1'b0;
-    if (a_nan) begin
-      c1_spec_y  = a_in | QNAN_BIT;
-      c1_spec_nv = a_snan | b_snan;
-    end else if (b_nan) begin
-      c1_spec_y  = b_in | QNAN_BIT;
-      c1_spec_nv = b_snan;
-    end else if ((a_inf & b_zero) | (a_zero & b_inf)) begin
-      c1_spec_y  = DEFAULT_NAN;
-      c1_spec_nv = 1'b1;
-    end else if (a_inf | b_inf) begin
-      c1_spec_y  = {c1_sign, MAG_INF};
-    end else begin
-      c1_spec_y  = {c1_sign, 31'd0};
-    end
-  end
-
-  // Significands, their exponents and leading-zero counts.
+  // Significands (with the weight of the exponent fields) and their
+  // leading-zero counts.
   wire [23:0] c1_aman, c1_bman;
-  wire [7:0]  a_expu, b_expu;
   wire [4:0]  c1_alz, c1_blz;
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_a (
     .exp_i  (a_exp),
     .frac_i (a_in[22:0]),
     .man_o  (c1_aman),
-    .exp_o  (a_expu),
     .lz_o   (c1_alz)
   );
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_b (
     .exp_i  (b_exp),
     .frac_i (b_in[22:0]),
     .man_o  (c1_bman),
-    .exp_o  (b_expu),
     .lz_o   (c1_blz)
   );
 
   // Biased exponent of the product taken as a value in [1, 2) times 2
   // (the product of two significands in [1, 2) lies in [1, 4)), before
-  // the normalising shifts; 10-bit two's complement.
-  wire [9:0] c1_exp = {2'd0, a_expu} + {2'd0, b_expu} - EXP_BIAS_M1;
+  // the normalising shifts; 10-bit two's complement.  The fields as they
+  // are: fp_mul_unpack_norm gives a subnormal significand the weight of
+  // the field 0.
+  wire [9:0] c1_exp = {2'd0, a_exp} + {2'd0, b_exp} - EXP_BIAS_M1;
 
-  // The special result: what m4b needs of an operation throughout.
-  localparam integer WS = 1 + 32 + 1 + 1; // spec, spec_y, spec_nv, sign
+  // The special case: in m1b the fields' tests and the operand signs, in
+  // m2a spec, spec_nv, nan, nan_b, dnan, inf and the signs; from m2a on
+  // what m4b needs of it: spec, spec_y, spec_nv and the product's sign.
+  localparam integer WQ = 6 + 2;
+  localparam integer WR = 1 + 1 + 1 + 1 + 1 + 1 + 2;
+  localparam integer WS = 1 + 32 + 1 + 1;
 
-  localparam integer W1 = WS + 10 + 24 + 24 + 5 + 5;
+  localparam integer W1 = WQ + 10 + 24 + 24 + 5 + 5;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_M1B] ? 1 : 0)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s0_valid),
-    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_exp,
+    .data_i  ({c1_cls, a_sign, b_sign, c1_exp,
                c1_aman, c1_bman, c1_alz, c1_blz}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
 
-  wire [WS-1:0] s1_spec;  // spec, spec_y, spec_nv, sign
+  wire          s1_amax, s1_azero, s1_anz, s1_bmax, s1_bzero, s1_bnz;
+  wire          s1_asign, s1_bsign;
   wire [9:0]    s1_exp;
   wire [23:0]   s1_aman, s1_bman;
   wire [4:0]    s1_alz, s1_blz;
-  assign {s1_spec, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
+  assign {s1_amax, s1_azero, s1_anz, s1_bmax, s1_bzero, s1_bnz, s1_asign,
+          s1_bsign, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
 
   // ---------------------------------------------------------------------
   // m1b: normalise the significands (leading one at bit 23); the exponent
@@ -253,22 +229,63 @@ module fp_mul #(
   wire [23:0] c1b_bman = s1_bman << s1_blz;
   wire [9:0]  c1b_exp  = s1_exp - {5'd0, s1_alz} - {5'd0, s1_blz};
 
-  localparam integer W2 = WS + 10 + 24 + 24;
+  // The special case: NaN (a quiet one has fraction bit 22 set, the
+  // significand's bit 22), infinity, zero (or subnormal read as zero
+  // under FTZ: DAZ).  The special result, built in m2a: the first NaN
+  // operand quieted (nan; nan_b: it is b), else the default NaN for
+  // 0 * inf (dnan; an infinity and a zero leave no NaN operand), else
+  // infinity (inf), else zero.
+  wire a_nan  = s1_amax & s1_anz;
+  wire b_nan  = s1_bmax & s1_bnz;
+  wire a_inf  = s1_amax & ~s1_anz;
+  wire b_inf  = s1_bmax & ~s1_bnz;
+  wire a_zero = s1_azero & ((FTZ != 0) | ~s1_anz);
+  wire b_zero = s1_bzero & ((FTZ != 0) | ~s1_bnz);
+  wire c1b_spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
+  wire c1b_nan     = a_nan | b_nan;
+  wire c1b_nan_b   = ~a_nan;
+  wire c1b_dnan    = (a_inf & b_zero) | (a_zero & b_inf);
+  wire c1b_inf     = a_inf | b_inf;
+  wire c1b_spec_nv = (a_nan & ~s1_aman[22]) | (b_nan & ~s1_bman[22]) | c1b_dnan;
+
+  localparam integer W2 = WR + 10 + 24 + 24;
   wire          s2_valid;
   wire [W2-1:0] s2_data;
   fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_M2] ? 1 : 0)) u_pipe2 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s1_valid),
-    .data_i  ({s1_spec, c1b_exp, c1b_aman, c1b_bman}),
+    .data_i  ({c1b_spec, c1b_spec_nv, c1b_nan, c1b_nan_b, c1b_dnan, c1b_inf,
+               s1_asign, s1_bsign, c1b_exp, c1b_aman, c1b_bman}),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
 
-  wire [WS-1:0] s2_spec;
+  wire          s2_spec, s2_spec_nv, s2_nan, s2_nan_b, s2_dnan, s2_inf;
+  wire          s2_asign, s2_bsign;
   wire [9:0]    s2_exp;
   wire [23:0]   s2_aman, s2_bman;
-  assign {s2_spec, s2_exp, s2_aman, s2_bman} = s2_data;
+  assign {s2_spec, s2_spec_nv, s2_nan, s2_nan_b, s2_dnan, s2_inf, s2_asign,
+          s2_bsign, s2_exp, s2_aman, s2_bman} = s2_data;
+
+  // ---------------------------------------------------------------------
+  // m2a: the special result.  A NaN operand has a normal significand
+  // {1, fraction}, so its payload is the significand's low 22 bits.
+  // ---------------------------------------------------------------------
+  wire        c2_sign = s2_asign ^ s2_bsign;
+  reg  [31:0] c2_spec_y;
+  always @* begin
+    if (s2_nan) begin
+      c2_spec_y = s2_nan_b ? {s2_bsign, EXP_MAX, 1'b1, s2_bman[21:0]}
+                           : {s2_asign, EXP_MAX, 1'b1, s2_aman[21:0]};
+    end else if (s2_dnan) begin
+      c2_spec_y = DEFAULT_NAN;
+    end else if (s2_inf) begin
+      c2_spec_y = {c2_sign, MAG_INF};
+    end else begin
+      c2_spec_y = {c2_sign, 31'd0};
+    end
+  end
 
   // ---------------------------------------------------------------------
   // m2a: from the exponent e alone, for either position of the product's
@@ -308,7 +325,8 @@ module fp_mul #(
     .valid_i  (s2_valid),
     .a_i      (s2_aman),
     .b_i      (s2_bman),
-    .side_i   ({s2_spec, c2_exp_a, c2_exp_b, c2_ge2, c2_shift}),
+    .side_i   ({s2_spec, c2_spec_y, s2_spec_nv, c2_sign, c2_exp_a, c2_exp_b,
+                c2_ge2, c2_shift}),
     .valid_o  (sp_valid),
     .top_o    (c2_top),
     .sticky_o (c2_st),

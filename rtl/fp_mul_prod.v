@@ -10,7 +10,9 @@
 //              adders (m2a rows a * b[2j] + 2 a * b[2j+1], 12 of 26 bits;
 //              m2b pairs of those, 6 of 28 bits; m2c pairs again, 3 of 32
 //              bits; m2d the last three summed through one carry-save
-//              level (3:2 compressor) and one 40-bit adder)
+//              level (3:2 compressor) and one 40-bit adder); the sticky
+//              bit from the trailing zeros of a and b (m2a counts, m2b
+//              compares), beside the adders
 //   BND     register places (bit k set: a register): bit 0 after m2a,
 //           bit 1 after m2b, bit 2 after m2c (LUT = 1 only)
 //   SIDE_W  bits of the side-band word (>= 1)
@@ -127,7 +129,8 @@ module fp_mul_prod #(
     end else begin : g_lut
       // -----------------------------------------------------------------
       // m2a: row pairs, r1[26j +: 26] = a * b[2j] + 2 * a * b[2j+1]
-      // (the sum of rows 2j and 2j+1, weight 2^(2j))
+      // (the sum of rows 2j and 2j+1, weight 2^(2j)); the trailing zeros
+      // of a and b (leading zeros of the reversed words; 24 for zero)
       // -----------------------------------------------------------------
       wire [12*26-1:0] c_r1;
       genvar j;
@@ -138,25 +141,48 @@ module fp_mul_prod #(
         assign c_r1[26 * j +: 26] = {s, x[0]};
       end
 
-      localparam integer WA = SIDE_W + 12 * 26;
+      wire [23:0] a_rev, b_rev;
+      for (j = 0; j < 24; j = j + 1) begin : g_rev
+        assign a_rev[j] = a_i[23 - j];
+        assign b_rev[j] = b_i[23 - j];
+      end
+      wire [4:0] c_atz, c_btz;
+      fp_lzc #(.WIDTH(24)) u_atz (
+        .v_i (a_rev),
+        .n_o (c_atz)
+      );
+      fp_lzc #(.WIDTH(24)) u_btz (
+        .v_i (b_rev),
+        .n_o (c_btz)
+      );
+
+      localparam integer WA = SIDE_W + 5 + 5 + 12 * 26;
       wire          va;
       wire [WA-1:0] da;
       fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (valid_i),
-        .data_i  ({side_i, c_r1}),
+        .data_i  ({side_i, c_atz, c_btz, c_r1}),
         .valid_o (va),
         .data_o  (da)
       );
 
       wire [SIDE_W-1:0] sa;
+      wire [4:0]        atz, btz;
       wire [12*26-1:0]  r1;
-      assign {sa, r1} = da;
+      assign {sa, atz, btz, r1} = da;
 
       // -----------------------------------------------------------------
-      // m2b: r2[j] = r1[2j] + 4 * r1[2j+1] (rows 4j to 4j+3, < 2^28)
+      // m2b: r2[j] = r1[2j] + 4 * r1[2j+1] (rows 4j to 4j+3, < 2^28);
+      // the sticky bit: a product's trailing zeros are those of a and b
+      // together (the product of two odd numbers is odd; a zero factor
+      // counts 24 and gives a zero product), so its low 21 bits hold a
+      // one exactly when atz + btz < 21
       // -----------------------------------------------------------------
+      // (t >= 21 = 10101b written as bits: no comparator chain)
+      wire [5:0] tz   = {1'b0, atz} + {1'b0, btz};
+      wire       c_st = ~(tz[5] | (tz[4] & (tz[3] | (tz[2] & (tz[1] | tz[0])))));
       wire [6*28-1:0] c_r2;
       for (j = 0; j < 6; j = j + 1) begin : g_r2
         wire [25:0] x = r1[26 * (2 * j) +: 26];
@@ -165,21 +191,22 @@ module fp_mul_prod #(
         assign c_r2[28 * j +: 28] = {s, x[1:0]};
       end
 
-      localparam integer WB = SIDE_W + 6 * 28;
+      localparam integer WB = SIDE_W + 1 + 6 * 28;
       wire          vb;
       wire [WB-1:0] db;
       fp_pipe #(.WIDTH(WB), .DEPTH(BND[1] ? 1 : 0)) u_pipe_b (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (va),
-        .data_i  ({sa, c_r2}),
+        .data_i  ({sa, c_st, c_r2}),
         .valid_o (vb),
         .data_o  (db)
       );
 
       wire [SIDE_W-1:0] sb;
+      wire              st_b;
       wire [6*28-1:0]   r2;
-      assign {sb, r2} = db;
+      assign {sb, st_b, r2} = db;
 
       // -----------------------------------------------------------------
       // m2c: r3[j] = r2[2j] + 16 * r2[2j+1] (rows 8j to 8j+7, < 2^32)
@@ -192,28 +219,30 @@ module fp_mul_prod #(
         assign c_r3[32 * j +: 32] = {s, x[3:0]};
       end
 
-      localparam integer WC = SIDE_W + 3 * 32;
+      localparam integer WC = SIDE_W + 1 + 3 * 32;
       wire          vc;
       wire [WC-1:0] dc;
       fp_pipe #(.WIDTH(WC), .DEPTH(BND[2] ? 1 : 0)) u_pipe_c (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (vb),
-        .data_i  ({sb, c_r3}),
+        .data_i  ({sb, st_b, c_r3}),
         .valid_o (vc),
         .data_o  (dc)
       );
 
       wire [SIDE_W-1:0] sc;
+      wire              st_c;
       wire [31:0]       x3, y3, z3; // weights 2^0, 2^8, 2^16
-      assign {sc, z3, y3, x3} = dc;
+      assign {sc, st_c, z3, y3, x3} = dc;
 
       // -----------------------------------------------------------------
       // m2d: prod = x3 + y3 * 2^8 + z3 * 2^16.  Columns 16-47 hold all
       // three (x3[31:16], y3[31:8], z3): carry-save them; then bits 47:8
       // by one adder, with columns 8-15 (x3[15:8], y3[7:0]) beneath.
-      // Bits 7:0 are x3[7:0].  A carry out of column 47 cannot occur (the
-      // product is below 2^48), so the carries stop at column 47.
+      // Bits 7:0 (x3[7:0]) and 20:8 are only needed for the sticky bit,
+      // which is known already.  A carry out of column 47 cannot occur
+      // (the product is below 2^48), so the carries stop at column 47.
       // -----------------------------------------------------------------
       wire [31:0] xh = {16'd0, x3[31:16]};
       wire [31:0] yh = {8'd0, y3[31:8]};
@@ -222,9 +251,11 @@ module fp_mul_prod #(
                        | (yh[30:0] & z3[30:0]);                       // columns 17-47
       wire [39:0] p_hi = {cs_s, x3[15:8]} + {cs_c, 1'b0, y3[7:0]};   // prod[47:8]
 
+      wire unused_lo = &{1'b0, x3[7:0], p_hi[12:0], 1'b0};
+
       assign valid_o  = vc;
       assign top_o    = p_hi[39:13];
-      assign sticky_o = (|x3[7:0]) | (|p_hi[12:0]);
+      assign sticky_o = st_c;
       assign side_o   = sc;
     end
   endgenerate
