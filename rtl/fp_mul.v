@@ -20,23 +20,24 @@
 //                      | m4b | out
 //              L = 9:  in | m1a | m1b | m2a | m2b | m2c | m3a m3b | m4a
 //                      | m4b | out
-//              L = 10: in | m1a | m1b | m2a | m2b | m2c | m3a | m3b
-//                      | m4a | m4b | out
+//              L = 10: in | m1a | m1b | m2a | m2b | m2c | m2d | m3a
+//                      | m3b m4a | m4b | out
 //              L >= 11: in | m1a | m1b | m2a | m2b | m2c | m2d | m3a
 //                      | m3b | m4a | m4b | out, plus L-11 delay stages
 //            where in = operand registers;
-//              m1a = unpack, special cases, leading zeros of subnormal
-//                    significands (fp_mul_unpack_norm), exponent sum;
-//              m1b = normalising shift of the significands, and the
-//                    exponent less the shifts;
+//              m1a = unpack, the fields' tests for the special cases,
+//                    leading zeros of subnormal significands
+//                    (fp_mul_unpack_norm), exponent sum;
+//              m1b = normalising shift of the significands, the exponent
+//                    less the shifts, the special case decided;
 //              m2a = from the exponent (it alone decides them): the result
 //                    exponent for either position of the product's
-//                    leading one and the denormalisation shift; the first
-//                    step of the product;
+//                    leading one and the denormalisation shift; the
+//                    special result; the first step of the product;
 //              m2b, m2c (and m2d) = the further steps of the 48-bit
 //                    product, of which the top 27 bits and a sticky bit
-//                    go on (fp_mul_prod: for L <= 10 four 12 x 12-bit
-//                    partial products in DSP blocks, no m2d; for L >= 11
+//                    go on (fp_mul_prod: for L <= 9 four 12 x 12-bit
+//                    partial products in DSP blocks, no m2d; for L >= 10
 //                    an AND array and carry-chain adders, no DSP block:
 //                    Yosys maps the DSP without its registers, which
 //                    keeps the product under 150 MHz on the ECP5);
@@ -111,7 +112,7 @@ module fp_mul #(
   localparam integer B_M3B = 7; // m3a | m3b
   localparam integer B_M4  = 8; // m3b | m4a : before rounding
   localparam integer B_M4B = 9; // m4a | m4b
-  localparam integer N_LUT  = 11; // LATENCY from which the product is LUTs
+  localparam integer N_LUT  = 10; // LATENCY from which the product is LUTs
   localparam integer N_FULL = 11; // LATENCY with every place registered
 
   // The header's table; LATENCY >= N_FULL adds output delay stages.
@@ -127,7 +128,7 @@ module fp_mul #(
         7:       bounds = 10'b01_0100_1111;
         8:       bounds = 10'b11_0100_1111;
         9:       bounds = 10'b11_0101_1111;
-        10:      bounds = 10'b11_1101_1111;
+        10:      bounds = 10'b10_1111_1111;
         default: bounds = 10'b11_1111_1111;
       endcase
     end
