@@ -13,7 +13,7 @@
 
 FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
-           rtl/fp_mul_unpack_norm.v
+           rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v
 FPU_DIR := $(BUILD)/fpu
 FPU_INC := -Isim
 
@@ -31,16 +31,19 @@ FPU_CFG_lat_2_1  := 0 0 2 1
 FPU_CFG_lat_3_8  := 0 0 3 8
 FPU_CFG_lat_8_4  := 0 0 8 4
 FPU_CFG_lat_5_6  := 0 0 5 6
-# The fast latencies (150 MHz class on ECP5, README), every register place
-# of both cores, and output delay stages beyond them.
+# The fast latencies (150 MHz class on ECP5, README: add 9, mul 10, the
+# multiplier's LUT product, also in RTZ with FTZ), every register place of
+# both cores, and output delay stages beyond them.
 FPU_CFG_lat_9_7  := 0 0 9 7
 FPU_CFG_lat_7_10 := 0 0 7 10
 FPU_CFG_lat_6_9  := 0 0 6 9
 FPU_CFG_lat_10_11 := 0 0 10 11
+FPU_CFG_lat_8_12 := 0 0 8 12
+FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
 FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6 lat_9_7 lat_7_10 \
-                   lat_6_9 lat_10_11
+                   lat_6_9 lat_10_11 lat_8_12 lat_9_10_rtz_ftz
 FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
 
 fpu_model_lib  = $(FPU_DIR)/obj_$(1)/Vfpu_$(1)__ALL.a

@@ -6,7 +6,7 @@
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the
 //            result on the outputs; >= 1 (default 3).  The datapath has
-//            nine places for a register (| below) besides the output
+//            ten places for a register (| below) besides the output
 //            register; LATENCY picks which hold one:
 //              L = 1:  m1a m1b m2a m2b m2c m3a m3b m4a m4b | out
 //              L = 2:  m1a m1b m2a m2b m2c | m3a m3b m4a m4b | out
@@ -20,19 +20,27 @@
 //                      | m4b | out
 //              L = 9:  in | m1a | m1b | m2a | m2b | m2c | m3a m3b | m4a
 //                      | m4b | out
-//              L >= 10: in | m1a | m1b | m2a | m2b | m2c | m3a | m3b
-//                      | m4a | m4b | out, plus L-10 delay stages
+//              L = 10: in | m1a | m1b | m2a | m2b | m2c | m2d | m3a
+//                      | m3b m4a | m4b | out
+//              L >= 11: in | m1a | m1b | m2a | m2b | m2c | m2d | m3a
+//                      | m3b | m4a | m4b | out, plus L-11 delay stages
 //            where in = operand registers;
-//              m1a = unpack, special cases, leading zeros of subnormal
-//                    significands (fp_mul_unpack_norm), exponent sum;
-//              m1b = normalising shift of the significands;
-//              m2a = the four 12 x 12 bit partial products (DSP blocks)
-//                    and the exponent less the normalising shifts;
-//              m2b = sum of the two middle partial products, and from the
-//                    exponent: the result exponent for either position of
-//                    the product's leading one and the denormalisation
-//                    shift (both depend only on the exponent);
-//              m2c = the 48-bit product (top 27 bits and a sticky bit);
+//              m1a = unpack, the fields' tests for the special cases,
+//                    leading zeros of subnormal significands
+//                    (fp_mul_unpack_norm), exponent sum;
+//              m1b = normalising shift of the significands, the exponent
+//                    less the shifts, the special case decided;
+//              m2a = from the exponent (it alone decides them): the result
+//                    exponent for either position of the product's
+//                    leading one and the denormalisation shift; the
+//                    special result; the first step of the product;
+//              m2b, m2c (and m2d) = the further steps of the 48-bit
+//                    product, of which the top 27 bits and a sticky bit
+//                    go on (fp_mul_prod: for L <= 9 four 12 x 12-bit
+//                    partial products in DSP blocks, no m2d; for L >= 10
+//                    an AND array and carry-chain adders, no DSP block:
+//                    Yosys maps the DSP without its registers, which
+//                    keeps the product under 150 MHz on the ECP5);
 //              m3a = one-place normalisation and the denormalisation of
 //                    tiny results, shifts of 2 to 30 places with sticky
 //                    (fp_shr_sticky);
@@ -89,7 +97,6 @@ module fp_mul #(
 
   localparam [7:0]  EXP_MAX     = 8'hFF;
   localparam [9:0]  EXP_BIAS_M1 = 10'd126; // bias - 1: product in [1, 4)
-  localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
   localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
@@ -97,35 +104,39 @@ module fp_mul #(
   // Register places, in datapath order (bit k of BND: place k holds one).
   localparam integer B_IN  = 0; // in  | m1a : operand registers
   localparam integer B_M1B = 1; // m1a | m1b
-  localparam integer B_M2  = 2; // m1b | m2a : DSP operands
-  localparam integer B_M2B = 3; // m2a | m2b : DSP products
+  localparam integer B_M2  = 2; // m1b | m2a : product operands
+  localparam integer B_M2B = 3; // m2a | m2b
   localparam integer B_M2C = 4; // m2b | m2c
-  localparam integer B_M3  = 5; // m2c | m3a : the product
-  localparam integer B_M3B = 6; // m3a | m3b
-  localparam integer B_M4  = 7; // m3b | m4a : before rounding
-  localparam integer B_M4B = 8; // m4a | m4b
-  localparam integer N_FULL = 10; // LATENCY with every place registered
+  localparam integer B_M2D = 5; // m2c | m2d (LUT product only)
+  localparam integer B_M3  = 6; // m2d | m3a : the product
+  localparam integer B_M3B = 7; // m3a | m3b
+  localparam integer B_M4  = 8; // m3b | m4a : before rounding
+  localparam integer B_M4B = 9; // m4a | m4b
+  localparam integer N_LUT  = 10; // LATENCY from which the product is LUTs
+  localparam integer N_FULL = 11; // LATENCY with every place registered
 
   // The header's table; LATENCY >= N_FULL adds output delay stages.
-  function [8:0] bounds(input integer lat);
+  function [9:0] bounds(input integer lat);
     begin
       case (lat)
-        1:       bounds = 9'b0_0000_0000;
-        2:       bounds = 9'b0_0010_0000;
-        3:       bounds = 9'b0_0010_0100;
-        4:       bounds = 9'b0_0010_0101;
-        5:       bounds = 9'b0_1010_0101;
-        6:       bounds = 9'b0_1010_1101;
-        7:       bounds = 9'b0_1010_1111;
-        8:       bounds = 9'b1_1010_1111;
-        9:       bounds = 9'b1_1011_1111;
-        default: bounds = 9'b1_1111_1111;
+        1:       bounds = 10'b00_0000_0000;
+        2:       bounds = 10'b00_0100_0000;
+        3:       bounds = 10'b00_0100_0100;
+        4:       bounds = 10'b00_0100_0101;
+        5:       bounds = 10'b01_0100_0101;
+        6:       bounds = 10'b01_0100_1101;
+        7:       bounds = 10'b01_0100_1111;
+        8:       bounds = 10'b11_0100_1111;
+        9:       bounds = 10'b11_0101_1111;
+        10:      bounds = 10'b10_1111_1111;
+        default: bounds = 10'b11_1111_1111;
       endcase
     end
   endfunction
 
-  localparam [8:0]   BND     = bounds(LATENCY);
-  localparam integer DEPTH_O = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
+  localparam [9:0]   BND      = bounds(LATENCY);
+  localparam integer DEPTH_O  = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
+  localparam integer LUT_PROD = (LATENCY >= N_LUT) ? 1 : 0;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -155,197 +166,182 @@ module fp_mul #(
   wire       b_sign = b_in[31];
   wire [7:0] a_exp  = a_in[30:23];
   wire [7:0] b_exp  = b_in[30:23];
-  wire       a_nan  = (a_exp == EXP_MAX) & (|a_in[22:0]);
-  wire       b_nan  = (b_exp == EXP_MAX) & (|b_in[22:0]);
-  wire       a_snan = a_nan & ~a_in[22];
-  wire       b_snan = b_nan & ~b_in[22];
-  wire       a_inf  = (a_exp == EXP_MAX) & ~(|a_in[22:0]);
-  wire       b_inf  = (b_exp == EXP_MAX) & ~(|b_in[22:0]);
-  // Zero, or subnormal read as zero under FTZ (DAZ).
-  wire       a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~(|a_in[22:0]));
-  wire       b_zero = (b_exp == 8'd0) & ((FTZ != 0) | ~(|b_in[22:0]));
-  wire       c1_sign = a_sign ^ b_sign;
+  // The fields' tests for the special cases (combined in m1b).
+  wire [5:0] c1_cls = {a_exp == EXP_MAX, a_exp == 8'd0, |a_in[22:0],
+                       b_exp == EXP_MAX, b_exp == 8'd0, |b_in[22:0]};
 
-  reg        c1_spec;
-  reg [31:0] c1_spec_y;
-  reg        c1_spec_nv;
-  always @* begin
-    c1_spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
-    c1_spec_nv = 1'b0;
-    if (a_nan) begin
-      c1_spec_y  = a_in | QNAN_BIT;
-      c1_spec_nv = a_snan | b_snan;
-    end else if (b_nan) begin
-      c1_spec_y  = b_in | QNAN_BIT;
-      c1_spec_nv = b_snan;
-    end else if ((a_inf & b_zero) | (a_zero & b_inf)) begin
-      c1_spec_y  = DEFAULT_NAN;
-      c1_spec_nv = 1'b1;
-    end else if (a_inf | b_inf) begin
-      c1_spec_y  = {c1_sign, MAG_INF};
-    end else begin
-      c1_spec_y  = {c1_sign, 31'd0};
-    end
-  end
-
-  // Significands, their exponents and leading-zero counts.
+  // Significands (with the weight of the exponent fields) and their
+  // leading-zero counts.
   wire [23:0] c1_aman, c1_bman;
-  wire [7:0]  a_expu, b_expu;
   wire [4:0]  c1_alz, c1_blz;
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_a (
     .exp_i  (a_exp),
     .frac_i (a_in[22:0]),
     .man_o  (c1_aman),
-    .exp_o  (a_expu),
     .lz_o   (c1_alz)
   );
   fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_b (
     .exp_i  (b_exp),
     .frac_i (b_in[22:0]),
     .man_o  (c1_bman),
-    .exp_o  (b_expu),
     .lz_o   (c1_blz)
   );
 
   // Biased exponent of the product taken as a value in [1, 2) times 2
   // (the product of two significands in [1, 2) lies in [1, 4)), before
-  // the normalising shifts; 10-bit two's complement.
-  wire [9:0] c1_exp = {2'd0, a_expu} + {2'd0, b_expu} - EXP_BIAS_M1;
+  // the normalising shifts; 10-bit two's complement.  The fields as they
+  // are: fp_mul_unpack_norm gives a subnormal significand the weight of
+  // the field 0.
+  wire [9:0] c1_exp = {2'd0, a_exp} + {2'd0, b_exp} - EXP_BIAS_M1;
 
-  // The special result: what m4b needs of an operation throughout.
-  localparam integer WS = 1 + 32 + 1 + 1; // spec, spec_y, spec_nv, sign
+  // The special case: in m1b the fields' tests and the operand signs, in
+  // m2a spec, spec_nv, nan, nan_b, dnan, inf and the signs; from m2a on
+  // what m4b needs of it: spec, spec_y, spec_nv and the product's sign.
+  localparam integer WQ = 6 + 2;
+  localparam integer WR = 1 + 1 + 1 + 1 + 1 + 1 + 2;
+  localparam integer WS = 1 + 32 + 1 + 1;
 
-  localparam integer W1 = WS + 10 + 24 + 24 + 5 + 5;
+  localparam integer W1 = WQ + 10 + 24 + 24 + 5 + 5;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_M1B] ? 1 : 0)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s0_valid),
-    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, c1_sign, c1_exp,
+    .data_i  ({c1_cls, a_sign, b_sign, c1_exp,
                c1_aman, c1_bman, c1_alz, c1_blz}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
 
-  wire [WS-1:0] s1_spec;  // spec, spec_y, spec_nv, sign
+  wire          s1_amax, s1_azero, s1_anz, s1_bmax, s1_bzero, s1_bnz;
+  wire          s1_asign, s1_bsign;
   wire [9:0]    s1_exp;
   wire [23:0]   s1_aman, s1_bman;
   wire [4:0]    s1_alz, s1_blz;
-  assign {s1_spec, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
+  assign {s1_amax, s1_azero, s1_anz, s1_bmax, s1_bzero, s1_bnz, s1_asign,
+          s1_bsign, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
 
   // ---------------------------------------------------------------------
-  // m1b: normalise the significands (leading one at bit 23)
+  // m1b: normalise the significands (leading one at bit 23); the exponent
+  // of the normalised significands
   // ---------------------------------------------------------------------
   wire [23:0] c1b_aman = s1_aman << s1_alz;
   wire [23:0] c1b_bman = s1_bman << s1_blz;
+  wire [9:0]  c1b_exp  = s1_exp - {5'd0, s1_alz} - {5'd0, s1_blz};
 
-  localparam integer W2 = WS + 10 + 5 + 5 + 24 + 24;
+  // The special case: NaN (a quiet one has fraction bit 22 set, the
+  // significand's bit 22), infinity, zero (or subnormal read as zero
+  // under FTZ: DAZ).  The special result, built in m2a: the first NaN
+  // operand quieted (nan; nan_b: it is b), else the default NaN for
+  // 0 * inf (dnan; an infinity and a zero leave no NaN operand), else
+  // infinity (inf), else zero.
+  wire a_nan  = s1_amax & s1_anz;
+  wire b_nan  = s1_bmax & s1_bnz;
+  wire a_inf  = s1_amax & ~s1_anz;
+  wire b_inf  = s1_bmax & ~s1_bnz;
+  wire a_zero = s1_azero & ((FTZ != 0) | ~s1_anz);
+  wire b_zero = s1_bzero & ((FTZ != 0) | ~s1_bnz);
+  wire c1b_spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
+  wire c1b_nan     = a_nan | b_nan;
+  wire c1b_nan_b   = ~a_nan;
+  wire c1b_dnan    = (a_inf & b_zero) | (a_zero & b_inf);
+  wire c1b_inf     = a_inf | b_inf;
+  wire c1b_spec_nv = (a_nan & ~s1_aman[22]) | (b_nan & ~s1_bman[22]) | c1b_dnan;
+
+  localparam integer W2 = WR + 10 + 24 + 24;
   wire          s2_valid;
   wire [W2-1:0] s2_data;
   fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_M2] ? 1 : 0)) u_pipe2 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s1_valid),
-    .data_i  ({s1_spec, s1_exp, s1_alz, s1_blz, c1b_aman, c1b_bman}),
+    .data_i  ({c1b_spec, c1b_spec_nv, c1b_nan, c1b_nan_b, c1b_dnan, c1b_inf,
+               s1_asign, s1_bsign, c1b_exp, c1b_aman, c1b_bman}),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
 
-  wire [WS-1:0] s2_spec;
+  wire          s2_spec, s2_spec_nv, s2_nan, s2_nan_b, s2_dnan, s2_inf;
+  wire          s2_asign, s2_bsign;
   wire [9:0]    s2_exp;
-  wire [4:0]    s2_alz, s2_blz;
   wire [23:0]   s2_aman, s2_bman;
-  assign {s2_spec, s2_exp, s2_alz, s2_blz, s2_aman, s2_bman} = s2_data;
+  assign {s2_spec, s2_spec_nv, s2_nan, s2_nan_b, s2_dnan, s2_inf, s2_asign,
+          s2_bsign, s2_exp, s2_aman, s2_bman} = s2_data;
 
   // ---------------------------------------------------------------------
-  // m2a: partial products of the 12-bit halves (one DSP block each), and
-  // the exponent of the normalised significands
+  // m2a: the special result.  A NaN operand has a normal significand
+  // {1, fraction}, so its payload is the significand's low 22 bits.
   // ---------------------------------------------------------------------
-  wire [23:0] c2_ll = s2_aman[11:0]  * s2_bman[11:0];
-  wire [23:0] c2_lh = s2_aman[11:0]  * s2_bman[23:12];
-  wire [23:0] c2_hl = s2_aman[23:12] * s2_bman[11:0];
-  wire [23:0] c2_hh = s2_aman[23:12] * s2_bman[23:12];
-  wire [9:0]  c2_exp = s2_exp - {5'd0, s2_alz} - {5'd0, s2_blz};
-
-  localparam integer W3 = WS + 10 + 4 * 24;
-  wire          s3_valid;
-  wire [W3-1:0] s3_data;
-  fp_pipe #(.WIDTH(W3), .DEPTH(BND[B_M2B] ? 1 : 0)) u_pipe3 (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s2_valid),
-    .data_i  ({s2_spec, c2_exp, c2_ll, c2_lh, c2_hl, c2_hh}),
-    .valid_o (s3_valid),
-    .data_o  (s3_data)
-  );
-
-  wire [WS-1:0] s3_spec;
-  wire [9:0]    s3_exp;
-  wire [23:0]   s3_ll, s3_lh, s3_hl, s3_hh;
-  assign {s3_spec, s3_exp, s3_ll, s3_lh, s3_hl, s3_hh} = s3_data;
+  wire        c2_sign = s2_asign ^ s2_bsign;
+  reg  [31:0] c2_spec_y;
+  always @* begin
+    if (s2_nan) begin
+      c2_spec_y = s2_nan_b ? {s2_bsign, EXP_MAX, 1'b1, s2_bman[21:0]}
+                           : {s2_asign, EXP_MAX, 1'b1, s2_aman[21:0]};
+    end else if (s2_dnan) begin
+      c2_spec_y = DEFAULT_NAN;
+    end else if (s2_inf) begin
+      c2_spec_y = {c2_sign, MAG_INF};
+    end else begin
+      c2_spec_y = {c2_sign, 31'd0};
+    end
+  end
 
   // ---------------------------------------------------------------------
-  // m2b: middle partial products summed; from the exponent e alone, for
-  // either position of the product's leading one (p47 = product bit 47):
+  // m2a: from the exponent e alone, for either position of the product's
+  // leading one (p47 = product bit 47):
   //   result exponent  p47: max(e, 1)   else: max(e - 1, 1)
   //   right shift of the product's top 27 bits (normalisation and
   //   denormalisation in one): e >= 2: p47 (0 or 1 place), e <= 1:
   //   2 - e places either way, at most SHIFT_MAX (all bits go to sticky)
-  // so that m3 only picks by p47: shift = c2b_shift | (p47 & c2b_ge2).
+  // so that m3 only picks by p47: shift = c2_shift | (p47 & c2_ge2).
   // ---------------------------------------------------------------------
-  wire [24:0] c2b_mid    = {1'b0, s3_lh} + {1'b0, s3_hl};
-  wire        c2b_lo_st  = |s3_ll[11:0];
-  wire        c2b_ge1    = ~s3_exp[9] & (s3_exp != 10'd0);
-  wire        c2b_ge2    = c2b_ge1 & (s3_exp != 10'd1);
-  wire [9:0]  c2b_exp_m1 = s3_exp - 10'd1;
-  wire [9:0]  c2b_exp_a  = c2b_ge1 ? s3_exp : 10'd1;
-  wire [9:0]  c2b_exp_b  = c2b_ge2 ? c2b_exp_m1 : 10'd1;
-  wire [9:0]  c2b_rs     = 10'd2 - s3_exp;
+  wire        c2_ge1    = ~s2_exp[9] & (s2_exp != 10'd0);
+  wire        c2_ge2    = c2_ge1 & (s2_exp != 10'd1);
+  wire [9:0]  c2_exp_m1 = s2_exp - 10'd1;
+  wire [9:0]  c2_exp_a  = c2_ge1 ? s2_exp : 10'd1;
+  wire [9:0]  c2_exp_b  = c2_ge2 ? c2_exp_m1 : 10'd1;
+  wire [9:0]  c2_rs     = 10'd2 - s2_exp;
   // (rs > SHIFT_MAX written as bits: no comparator chain)
-  wire [4:0]  c2b_shift  = c2b_ge2 ? 5'd0
-                         : ((|c2b_rs[9:5]) ? SHIFT_MAX[4:0] : c2b_rs[4:0]);
+  wire [4:0]  c2_shift  = c2_ge2 ? 5'd0
+                        : ((|c2_rs[9:5]) ? SHIFT_MAX[4:0] : c2_rs[4:0]);
 
-  localparam integer W4 = WS + 10 + 10 + 1 + 5 + 24 + 12 + 25 + 1;
-  wire          s4_valid;
-  wire [W4-1:0] s4_data;
-  fp_pipe #(.WIDTH(W4), .DEPTH(BND[B_M2C] ? 1 : 0)) u_pipe4 (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s3_valid),
-    .data_i  ({s3_spec, c2b_exp_a, c2b_exp_b, c2b_ge2, c2b_shift,
-               s3_hh, s3_ll[23:12], c2b_mid, c2b_lo_st}),
-    .valid_o (s4_valid),
-    .data_o  (s4_data)
+  // ---------------------------------------------------------------------
+  // m2a-m2d: the product prod = aman * bman, in [2^46, 2^48): its top 27
+  // bits and the OR of the 21 below; the rest rides along
+  // ---------------------------------------------------------------------
+  localparam integer WP = WS + 10 + 10 + 1 + 5;
+  wire          sp_valid;
+  wire [WP-1:0] sp_side;
+  wire [26:0]   c2_top;
+  wire          c2_st;
+  fp_mul_prod #(
+    .LUT    (LUT_PROD),
+    .BND    ({BND[B_M2D], BND[B_M2C], BND[B_M2B]}),
+    .SIDE_W (WP)
+  ) u_prod (
+    .clk_i    (clk_i),
+    .rst_i    (rst_i),
+    .valid_i  (s2_valid),
+    .a_i      (s2_aman),
+    .b_i      (s2_bman),
+    .side_i   ({s2_spec, c2_spec_y, s2_spec_nv, c2_sign, c2_exp_a, c2_exp_b,
+                c2_ge2, c2_shift}),
+    .valid_o  (sp_valid),
+    .top_o    (c2_top),
+    .sticky_o (c2_st),
+    .side_o   (sp_side)
   );
 
-  wire [WS-1:0] s4_spec;
-  wire [9:0]    s4_exp_a, s4_exp_b;
-  wire          s4_ge2;
-  wire [4:0]    s4_shift;
-  wire [23:0]   s4_hh;
-  wire [11:0]   s4_ll_hi;
-  wire [24:0]   s4_mid;
-  wire          s4_lo_st;
-  assign {s4_spec, s4_exp_a, s4_exp_b, s4_ge2, s4_shift, s4_hh, s4_ll_hi,
-          s4_mid, s4_lo_st} = s4_data;
-
-  // ---------------------------------------------------------------------
-  // m2c: the product prod = hh * 2^24 + mid * 2^12 + ll, in [2^46, 2^48);
-  // its top 27 bits and the OR of the 21 below
-  // ---------------------------------------------------------------------
-  wire [35:0] c2c_hi  = {s4_hh, s4_ll_hi} + {11'd0, s4_mid}; // prod[47:12]
-  wire [26:0] c2c_top = c2c_hi[35:9];                          // prod[47:21]
-  wire        c2c_st  = s4_lo_st | (|c2c_hi[8:0]);
-
-  localparam integer W5 = WS + 10 + 10 + 1 + 5 + 27 + 1;
+  localparam integer W5 = WP + 27 + 1;
   wire          s5_valid;
   wire [W5-1:0] s5_data;
   fp_pipe #(.WIDTH(W5), .DEPTH(BND[B_M3] ? 1 : 0)) u_pipe5 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (s4_valid),
-    .data_i  ({s4_spec, s4_exp_a, s4_exp_b, s4_ge2, s4_shift, c2c_top, c2c_st}),
+    .valid_i (sp_valid),
+    .data_i  ({sp_side, c2_top, c2_st}),
     .valid_o (s5_valid),
     .data_o  (s5_data)
   );

@@ -1,0 +1,266 @@
+// fp_mul_prod.v -- the 24 x 24-bit significand product of fp_mul, pipelined:
+// the top 27 of its 48 bits and the OR of the 21 below (sticky), in one of
+// two structures, with a side-band word carried along the same registers.
+//
+// Parameters:
+//   LUT     0: four 12 x 12-bit partial products (`*`, DSP blocks where the
+//              flow maps them) summed in two steps: m2a products, m2b the
+//              two middle ones summed, m2c the 48-bit sum
+//           1: no multiplier: an AND array and a tree of carry-chain
+//              adders (m2a rows a * b[2j] + 2 a * b[2j+1], 12 of 26 bits;
+//              m2b pairs of those, 6 of 28 bits; m2c pairs again, 3 of 32
+//              bits; m2d the last three summed through one carry-save
+//              level (3:2 compressor) and one 40-bit adder); the sticky
+//              bit from the trailing zeros of a and b (m2a counts, m2b
+//              compares), beside the adders
+//   BND     register places (bit k set: a register): bit 0 after m2a,
+//           bit 1 after m2b, bit 2 after m2c (LUT = 1 only)
+//   SIDE_W  bits of the side-band word (>= 1)
+//
+// Ports:
+//   clk_i     clock, rising edge
+//   rst_i     synchronous reset, active high; clears the valid bits only
+//   valid_i   valid bit entering with the operands
+//   a_i, b_i  the significands (any 24-bit values)
+//   side_i    side-band word, delayed like the product
+//   valid_o   valid_i delayed
+//   top_o     bits 47:21 of a_i * b_i
+//   sticky_o  OR of bits 20:0 of a_i * b_i
+//   side_o    side_i delayed
+//
+// Timing: combinational from the inputs to the outputs apart from the
+// registers BND asks for: latency = number of bits set in BND.
+//
+// Why two structures: Yosys 0.23 maps `*` for the ECP5 to a MULT18X18D
+// without its internal registers, 3.93 ns from A/B to P in nextpnr's
+// speed-6 model; with clock-to-out and the two routing hops to and from
+// the block, a lone registered 12 x 12 multiply places at 141-148 MHz
+// (LFE5U-85F-6, 6 seeds), so the DSP product stays below 150 MHz at any
+// latency (fp_mul: 133-140 MHz).  The LUT structure puts one carry chain in each stage (the
+// AND gates in front of the first: a LUT level); with every register
+// place it takes 738 LUT4s, 299 CCU2C carry cells and 580 flip-flops on
+// the ECP5 (Yosys 0.23), against 7, 31, 162 and four DSP blocks.
+//
+// The carry-save level (LUT = 1, m2d): three addends x, y, z give
+// s = x ^ y ^ z and c = majority(x, y, z) with x + y + z = s + 2c (the
+// standard 3:2 compressor), so the three partial sums need one adder.
+`default_nettype none
+
+module fp_mul_prod #(
+  parameter integer   LUT    = 0,      // 0: DSP partial products, 1: LUT tree
+  parameter [2:0]     BND    = 3'b000, // register after m2a, m2b, m2c
+  parameter integer   SIDE_W = 1       // side-band bits
+) (
+  input  wire              clk_i,
+  input  wire              rst_i,
+  input  wire              valid_i,
+  input  wire [23:0]       a_i,
+  input  wire [23:0]       b_i,
+  input  wire [SIDE_W-1:0] side_i,
+  output wire              valid_o,
+  output wire [26:0]       top_o,
+  output wire              sticky_o,
+  output wire [SIDE_W-1:0] side_o
+);
+
+  generate
+    if ((LUT == 0) && BND[2]) begin : g_bad_bnd
+      // Elaboration error on purpose: the DSP structure has no m2d.
+      fp_mul_prod_error_BND2_needs_LUT u_error ();
+    end
+
+    if (LUT == 0) begin : g_dsp
+      // -----------------------------------------------------------------
+      // m2a: partial products of the 12-bit halves
+      // -----------------------------------------------------------------
+      wire [23:0] c_ll = a_i[11:0]  * b_i[11:0];
+      wire [23:0] c_lh = a_i[11:0]  * b_i[23:12];
+      wire [23:0] c_hl = a_i[23:12] * b_i[11:0];
+      wire [23:0] c_hh = a_i[23:12] * b_i[23:12];
+
+      localparam integer WA = SIDE_W + 4 * 24;
+      wire          va;
+      wire [WA-1:0] da;
+      fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (valid_i),
+        .data_i  ({side_i, c_ll, c_lh, c_hl, c_hh}),
+        .valid_o (va),
+        .data_o  (da)
+      );
+
+      wire [SIDE_W-1:0] sa;
+      wire [23:0]       ll, lh, hl, hh;
+      assign {sa, ll, lh, hl, hh} = da;
+
+      // -----------------------------------------------------------------
+      // m2b: the two middle partial products summed
+      // -----------------------------------------------------------------
+      wire [24:0] c_mid   = {1'b0, lh} + {1'b0, hl};
+      wire        c_lo_st = |ll[11:0];
+
+      localparam integer WB = SIDE_W + 24 + 12 + 25 + 1;
+      wire          vb;
+      wire [WB-1:0] db;
+      fp_pipe #(.WIDTH(WB), .DEPTH(BND[1] ? 1 : 0)) u_pipe_b (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (va),
+        .data_i  ({sa, hh, ll[23:12], c_mid, c_lo_st}),
+        .valid_o (vb),
+        .data_o  (db)
+      );
+
+      wire [SIDE_W-1:0] sb;
+      wire [23:0]       hh_b;
+      wire [11:0]       ll_hi;
+      wire [24:0]       mid;
+      wire              lo_st;
+      assign {sb, hh_b, ll_hi, mid, lo_st} = db;
+
+      // -----------------------------------------------------------------
+      // m2c: prod = hh * 2^24 + mid * 2^12 + ll; bits 47:12 by one adder
+      // -----------------------------------------------------------------
+      wire [35:0] c_hi = {hh_b, ll_hi} + {11'd0, mid};
+      assign valid_o  = vb;
+      assign top_o    = c_hi[35:9];
+      assign sticky_o = lo_st | (|c_hi[8:0]);
+      assign side_o   = sb;
+    end else begin : g_lut
+      // -----------------------------------------------------------------
+      // m2a: row pairs, r1[26j +: 26] = a * b[2j] + 2 * a * b[2j+1]
+      // (the sum of rows 2j and 2j+1, weight 2^(2j)); the trailing zeros
+      // of a and b (leading zeros of the reversed words; 24 for zero)
+      // -----------------------------------------------------------------
+      wire [12*26-1:0] c_r1;
+      genvar j;
+      for (j = 0; j < 12; j = j + 1) begin : g_r1
+        wire [23:0] x = a_i & {24{b_i[2 * j]}};
+        wire [23:0] y = a_i & {24{b_i[2 * j + 1]}};
+        wire [24:0] s = {1'b0, y} + {2'b0, x[23:1]};
+        assign c_r1[26 * j +: 26] = {s, x[0]};
+      end
+
+      wire [23:0] a_rev, b_rev;
+      for (j = 0; j < 24; j = j + 1) begin : g_rev
+        assign a_rev[j] = a_i[23 - j];
+        assign b_rev[j] = b_i[23 - j];
+      end
+      wire [4:0] c_atz, c_btz;
+      fp_lzc #(.WIDTH(24)) u_atz (
+        .v_i (a_rev),
+        .n_o (c_atz)
+      );
+      fp_lzc #(.WIDTH(24)) u_btz (
+        .v_i (b_rev),
+        .n_o (c_btz)
+      );
+
+      localparam integer WA = SIDE_W + 5 + 5 + 12 * 26;
+      wire          va;
+      wire [WA-1:0] da;
+      fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (valid_i),
+        .data_i  ({side_i, c_atz, c_btz, c_r1}),
+        .valid_o (va),
+        .data_o  (da)
+      );
+
+      wire [SIDE_W-1:0] sa;
+      wire [4:0]        atz, btz;
+      wire [12*26-1:0]  r1;
+      assign {sa, atz, btz, r1} = da;
+
+      // -----------------------------------------------------------------
+      // m2b: r2[j] = r1[2j] + 4 * r1[2j+1] (rows 4j to 4j+3, < 2^28);
+      // the sticky bit: a product's trailing zeros are those of a and b
+      // together (the product of two odd numbers is odd; a zero factor
+      // counts 24 and gives a zero product), so its low 21 bits hold a
+      // one exactly when atz + btz < 21
+      // -----------------------------------------------------------------
+      // (t >= 21 = 10101b written as bits: no comparator chain)
+      wire [5:0] tz   = {1'b0, atz} + {1'b0, btz};
+      wire       c_st = ~(tz[5] | (tz[4] & (tz[3] | (tz[2] & (tz[1] | tz[0])))));
+      wire [6*28-1:0] c_r2;
+      for (j = 0; j < 6; j = j + 1) begin : g_r2
+        wire [25:0] x = r1[26 * (2 * j) +: 26];
+        wire [25:0] y = r1[26 * (2 * j + 1) +: 26];
+        wire [25:0] s = y + {2'b0, x[25:2]};
+        assign c_r2[28 * j +: 28] = {s, x[1:0]};
+      end
+
+      localparam integer WB = SIDE_W + 1 + 6 * 28;
+      wire          vb;
+      wire [WB-1:0] db;
+      fp_pipe #(.WIDTH(WB), .DEPTH(BND[1] ? 1 : 0)) u_pipe_b (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (va),
+        .data_i  ({sa, c_st, c_r2}),
+        .valid_o (vb),
+        .data_o  (db)
+      );
+
+      wire [SIDE_W-1:0] sb;
+      wire              st_b;
+      wire [6*28-1:0]   r2;
+      assign {sb, st_b, r2} = db;
+
+      // -----------------------------------------------------------------
+      // m2c: r3[j] = r2[2j] + 16 * r2[2j+1] (rows 8j to 8j+7, < 2^32)
+      // -----------------------------------------------------------------
+      wire [3*32-1:0] c_r3;
+      for (j = 0; j < 3; j = j + 1) begin : g_r3
+        wire [27:0] x = r2[28 * (2 * j) +: 28];
+        wire [27:0] y = r2[28 * (2 * j + 1) +: 28];
+        wire [27:0] s = y + {4'b0, x[27:4]};
+        assign c_r3[32 * j +: 32] = {s, x[3:0]};
+      end
+
+      localparam integer WC = SIDE_W + 1 + 3 * 32;
+      wire          vc;
+      wire [WC-1:0] dc;
+      fp_pipe #(.WIDTH(WC), .DEPTH(BND[2] ? 1 : 0)) u_pipe_c (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (vb),
+        .data_i  ({sb, st_b, c_r3}),
+        .valid_o (vc),
+        .data_o  (dc)
+      );
+
+      wire [SIDE_W-1:0] sc;
+      wire              st_c;
+      wire [31:0]       x3, y3, z3; // weights 2^0, 2^8, 2^16
+      assign {sc, st_c, z3, y3, x3} = dc;
+
+      // -----------------------------------------------------------------
+      // m2d: prod = x3 + y3 * 2^8 + z3 * 2^16.  Columns 16-47 hold all
+      // three (x3[31:16], y3[31:8], z3): carry-save them; then bits 47:8
+      // by one adder, with columns 8-15 (x3[15:8], y3[7:0]) beneath.
+      // Bits 7:0 (x3[7:0]) and 20:8 are only needed for the sticky bit,
+      // which is known already.  A carry out of column 47 cannot occur
+      // (the product is below 2^48), so the carries stop at column 47.
+      // -----------------------------------------------------------------
+      wire [31:0] xh = {16'd0, x3[31:16]};
+      wire [31:0] yh = {8'd0, y3[31:8]};
+      wire [31:0] cs_s = xh ^ yh ^ z3;                                // columns 16-47
+      wire [30:0] cs_c = (xh[30:0] & yh[30:0]) | (xh[30:0] & z3[30:0])
+                       | (yh[30:0] & z3[30:0]);                       // columns 17-47
+      wire [39:0] p_hi = {cs_s, x3[15:8]} + {cs_c, 1'b0, y3[7:0]};   // prod[47:8]
+
+      wire unused_lo = &{1'b0, x3[7:0], p_hi[12:0], 1'b0};
+
+      assign valid_o  = vc;
+      assign top_o    = p_hi[39:13];
+      assign sticky_o = st_c;
+      assign side_o   = sc;
+    end
+  endgenerate
+
+endmodule
+
+`default_nettype wire
