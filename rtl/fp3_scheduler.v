@@ -27,10 +27,14 @@
 //           register whose write-back is announced in this cycle counts as
 //           free (the announcements come from the units' tag lines,
 //           fp3_wb_tag, early enough for the operand read to take the
-//           value from the bypass).  With PICK_STAGE, also not the
-//           destination of its context's instruction in the issue register
-//           (its busy flag is set at the end of this cycle).  Registered:
-//           valid for the pick in the next cycle.
+//           value from the bypass).  Registered: valid for the pick in the
+//           next cycle.  Nothing of this is decoded or looked up here: a
+//           word is decoded (legality included) as it joins its queue, and
+//           each queue entry keeps a wait bit per register field, set from
+//           the busy flags as it joins (and by the head ahead of it when
+//           that is granted; with PICK_STAGE, also the destination in the
+//           issue register, whose flag is set at the end of the cycle),
+//           cleared by the announcements.
 //   issue   Among the contexts whose head was ready, a round-robin arbiter
 //           grants one per cycle (the granted context has the lowest
 //           priority next), so no context with ready work starves.  A
