@@ -220,27 +220,23 @@ module fp3_scheduler #(
   wire          a_beq   = a_opc == OP_BEQ;
   wire          a_halt  = a_opc == OP_HALT;
   wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
-  generate
-    begin : g_adec
-      wire [7:0]  rd8 = aword[ISA_RD_LSB +: ISA_REG_WIDTH];
-      wire [7:0]  ra8 = aword[ISA_RA_LSB +: ISA_REG_WIDTH];
-      wire [7:0]  rb8 = aword[ISA_RB_LSB +: ISA_REG_WIDTH];
-      wire [31:0] imm = aword[0 +: ISA_IMM_WIDTH];
-      wire [6:0]  dec = isa_decode(a_opc);
-      wire use_rd = dec[0], use_ra = dec[1], use_rb = dec[2], use_imm = dec[3];
-      wire built = (dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
-                   (a_opc != OP_SUB || HAS_SUB != 0) &&
-                   (dec[5:4] != UNIT_MUL || HAS_MUL != 0);
-      wire legal = dec[6] && built && reg_ok(use_rd, rd8) && reg_ok(use_ra, ra8) &&
-                   reg_ok(use_rb, rb8) && (use_imm || imm == 32'd0) &&
-                   (!a_endi || imm < IMEM_DEPTH) &&
-                   (!a_beq || (imm < IMEM_DEPTH && imm[AW-1:0] > apc));
-      // Issuing it would run off the end of the memory: not a halt or an
-      // endi (which leave or jump) at the last address.
-      assign adec = {legal, use_rb, use_ra, use_rd, dec[5:4], a_opc == OP_SUB,
-                     a_opc == OP_LI, a_endi, a_beq, a_halt, a_atend && !a_halt && !a_endi};
-    end
-  endgenerate
+  wire [7:0]    a_rd8   = aword[ISA_RD_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    a_ra8   = aword[ISA_RA_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    a_rb8   = aword[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [31:0]   a_imm   = aword[0 +: ISA_IMM_WIDTH];
+  wire [6:0]    a_dec   = isa_decode(a_opc);   // {known, unit, uses: imm rb ra rd}
+  wire          a_built = (a_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
+                          (a_opc != OP_SUB || HAS_SUB != 0) &&
+                          (a_dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+  wire          a_legal = a_dec[6] && a_built && reg_ok(a_dec[0], a_rd8) &&
+                          reg_ok(a_dec[1], a_ra8) && reg_ok(a_dec[2], a_rb8) &&
+                          (a_dec[3] || a_imm == 32'd0) &&
+                          (!a_endi || a_imm < IMEM_DEPTH) &&
+                          (!a_beq || (a_imm < IMEM_DEPTH && a_imm[AW-1:0] > apc));
+  // (ovf: issuing it would run off the end of the memory: not a halt or an
+  // endi, which leave or jump, at the last address)
+  assign adec = {a_legal, a_dec[2], a_dec[1], a_dec[0], a_dec[5:4], a_opc == OP_SUB,
+                 a_opc == OP_LI, a_endi, a_beq, a_halt, a_atend && !a_halt && !a_endi};
 
   // ---- ready step: the head of every queue ---------------------------------
   // Each queue entry carries three wait bits, one per operand field (ra,
