@@ -142,15 +142,17 @@ module fp3_scheduler #(
 
   // ---- per-context state ---------------------------------------------------
   reg [NC-1:0] active_q;            // fetching and issuing
-  reg [NC-1:0] v0_q, v1_q;          // queue entries 0 (head) and 1 valid
-  reg [63:0]   w0_q [0:NC-1];       // queue words
-  reg [63:0]   w1_q [0:NC-1];
-  reg [DW-1:0] x0_q [0:NC-1];       // ... decoded as they joined (DW: below)
-  reg [DW-1:0] x1_q [0:NC-1];
-  reg [2:0]    s0_q [0:NC-1];       // ... their wait bits (ready step)
-  reg [2:0]    s1_q [0:NC-1];
-  reg [AW-1:0] p0_q [0:NC-1];       // ... and their PCs
-  reg [AW-1:0] p1_q [0:NC-1];
+  // Each queue has two slots (slot e of context c is entry 2c + e), used
+  // as a ring: hp_q points to the head.  A granted head only flips hp_q and
+  // clears its valid bit, and an arriving word is written into the free
+  // slot, which does not depend on the grant: so no word moves and the
+  // grant drives few flip-flops.
+  reg [NC-1:0]   hp_q;              // head slot
+  reg [2*NC-1:0] v_q;               // slot valid
+  reg [63:0]     w_q [0:2*NC-1];    // slot words
+  reg [DW-1:0]   x_q [0:2*NC-1];    // ... decoded as they joined (DW: below)
+  reg [2:0]      s_q [0:2*NC-1];    // ... their wait bits (ready step)
+  reg [AW-1:0]   p_q [0:2*NC-1];    // ... and their PCs
   reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
   reg [NC-1:0] fend_q;              // fetched the last word of the memory
   reg [NC-1:0] bwait_q;             // fetched a beq, not yet resolved
@@ -253,90 +255,98 @@ module fp3_scheduler #(
   // An announcement in this cycle counts as free already.  So the head is
   // ready when it is legal and no used field waits: sources (RAW) and the
   // destination (WAW).  Registered: valid for the pick in the next cycle.
-  wire [NC-1:0] legal;
+  wire [NC-1:0] legal;      // the head is legal
   wire [NC-1:0] ready_d;
   wire [NC-1:0] h_endi;     // the head is an endi
   wire [NC-1:0] h_stop;     // ... a halt or the run's last endi
   wire [NC-1:0] h_ovf;      // ... would run off the end of the memory
-  // Issue fields of every head: {ra, rb, rd, unit, sub, li, immediate,
+  wire [NC*AW-1:0] h_pc;    // ... its PC
+  // Issue fields of every slot: {ra, rb, rd, unit, sub, li, immediate,
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
-  wire [NC*FW-1:0] fields;
+  wire [2*NC*FW-1:0] fields;
+  wire [2*NC-1:0]    srdy;  // the slot's word is ready (if it is the head)
+  wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
-  wire [NC*3-1:0]  s0_d, s1_d;   // the wait bits after this cycle ({rd, rb, ra})
   // A word's wait bits are found over two cycles: in the cycle it arrives
   // (a), the flags of its fields are looked up (in every context's bank:
   // lk_q) and this cycle's changes to them are compared (freed and
   // pending destination: aw_q; its context's head granted now: by_q),
-  // all registered; in cycle a + 1, when it is in its queue entry (marked
-  // fresh: fr0_q, fr1_q), they are combined.  So no lookup, compare and
-  // queue update share a cycle.
+  // all registered; in cycle a + 1, when it is in its slot (marked fresh:
+  // fr_q), they are combined.  So no lookup, compare and queue update
+  // share a cycle.
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
   wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
-  reg  [NC-1:0] fr0_q, fr1_q;     // the head / entry 1 arrived last cycle
+  reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [5:0]    aw_q;             // {pending, freed} in cycle a, per field
   wire [2:0]    a_freed = {`FP3_FREED({actx, a_rd}), `FP3_FREED({actx, a_rb}),
                            `FP3_FREED({actx, a_ra})};
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
   always @(posedge clk_i) aw_q <= {a_pend, a_freed};
-  genvar c;
+  genvar c, e;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
-      wire [63:0] insn = w0_q[c];
-      wire [IW-1:0] rd = insn[ISA_RD_LSB +: IW];
-      wire [IW-1:0] ra = insn[ISA_RA_LSB +: IW];
-      wire [IW-1:0] rb = insn[ISA_RB_LSB +: IW];
-      wire [31:0]   imm = insn[0 +: ISA_IMM_WIDTH];
-      // (The opcode and the registers' high bits were decoded at arrival.)
-      wire          unused_insn = &{1'b0, insn};
-      wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
-      wire [1:0]    d_unit;
-      assign {lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
-              d_ovf} = x0_q[c];
-      assign legal[c]  = lgl;
-      assign h_endi[c] = d_endi;
-      assign h_stop[c] = d_halt || (d_endi && final_q[c]);
-      assign h_ovf[c]  = d_ovf;
-      assign fields[c*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
-
+      wire          hp = hp_q[c];
+      // The head's decoded bits, destination and PC.
+      wire [DW-1:0] xh = hp ? x_q[2*c+1] : x_q[2*c];
+      wire [63:0]   wh = hp ? w_q[2*c+1] : w_q[2*c];
+      wire [IW-1:0] rdh = wh[ISA_RD_LSB +: IW];
+      wire          unused_h = &{1'b0, wh, xh};
+      wire          wrh = xh[7:6] != UNIT_NONE;   // it writes rdh
+      assign legal[c]  = xh[11];
+      assign h_endi[c] = xh[3];
+      assign h_stop[c] = xh[1] || (xh[3] && final_q[c]);
+      assign h_ovf[c]  = xh[0];
+      assign h_pc[c*AW +: AW] = hp ? p_q[2*c+1] : p_q[2*c];
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
-      wire [XW-1:0] xa = {CTX, ra};
-      wire [XW-1:0] xb = {CTX, rb};
-      wire [XW-1:0] xd = {CTX, rd};
       // The arriving word's lookup in this context's bank (used if it is
       // this context's word), and the head, if granted now, making its
       // destination busy for the entries behind it: the one in the queue
       // and an arriving word.
-      wire       wr0 = d_unit != UNIT_NONE;
       reg  [2:0] lk_q, by_q;
       always @(posedge clk_i) begin
         lk_q <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
-        by_q <= {3{wr0 && gone[c]}} & {a_rd == rd, a_rb == rd, a_ra == rd};
+        by_q <= {3{wrh && gone[c]}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
       wire [2:0] sj = (lk_q & ~aw_q[2:0]) | aw_q[5:3] | by_q;
-      // Wait bits of the head (0) and of the entry behind it (1), with this
-      // cycle's announcements taken off.
-      wire [2:0] s0 = (fr0_q[c] ? sj : s0_q[c]) &
-                      ~{`FP3_FREED(xd), `FP3_FREED(xb), `FP3_FREED(xa)};
-      wire [IW-1:0] rd1 = w1_q[c][ISA_RD_LSB +: IW];
-      wire [IW-1:0] ra1 = w1_q[c][ISA_RA_LSB +: IW];
-      wire [IW-1:0] rb1 = w1_q[c][ISA_RB_LSB +: IW];
-      wire [2:0] s1 = (fr1_q[c] ? sj : s1_q[c]) &
-                      ~{`FP3_FREED({CTX, rd1}), `FP3_FREED({CTX, rb1}), `FP3_FREED({CTX, ra1})};
-      assign ready_d[c] = active_q[c] && v0_q[c] && lgl && !(use_ra && s0[0]) && !(use_rb && s0[1]) &&
-                          !(use_rd && s0[2]);
-      wire [2:0] by1 = {3{wr0 && gone[c]}} & {rd1 == rd, rb1 == rd, ra1 == rd};
-      // After this cycle: the head leaves (entry 1 moves up), or stays.  A
-      // word arriving now is marked fresh in its entry instead.
-      assign s0_d[c*3 +: 3] = gone[c] ? s1 | by1 : s0;
-      assign s1_d[c*3 +: 3] = s1 | by1;
+
+      for (e = 0; e < 2; e = e + 1) begin : g_slot
+        localparam integer I = 2 * c + e;       // this slot
+        localparam integer O = 2 * c + 1 - e;   // the other one
+        wire [63:0]   insn = w_q[I];
+        wire [IW-1:0] rd = insn[ISA_RD_LSB +: IW];
+        wire [IW-1:0] ra = insn[ISA_RA_LSB +: IW];
+        wire [IW-1:0] rb = insn[ISA_RB_LSB +: IW];
+        wire [31:0]   imm = insn[0 +: ISA_IMM_WIDTH];
+        // (The opcode and the registers' high bits were decoded at arrival.)
+        wire          unused_insn = &{1'b0, insn};
+        wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
+        wire [1:0]    d_unit;
+        assign {lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
+                d_ovf} = x_q[I];
+        wire          unused_x = &{1'b0, d_halt, d_ovf};
+        assign fields[I*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
+        // The wait bits, with this cycle's announcements taken off.
+        wire [2:0] s = (fr_q[I] ? sj : s_q[I]) &
+                       ~{`FP3_FREED({CTX, rd}), `FP3_FREED({CTX, rb}), `FP3_FREED({CTX, ra})};
+        assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
+        // The other slot, if it is the head and granted now, writes its
+        // destination: this word waits for it.
+        wire [63:0]   wo  = w_q[O];
+        wire [IW-1:0] rdo = wo[ISA_RD_LSB +: IW];
+        wire          unused_wo = &{1'b0, wo};
+        wire [2:0] by = {3{x_q[O][7:6] != UNIT_NONE && gone[c] && hp != e}} &
+                        {rd == rdo, rb == rdo, ra == rdo};
+        assign s_d[I*3 +: 3] = s | by;
+      end
+      assign ready_d[c] = active_q[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
     end
   endgenerate
 `undef FP3_FREED
@@ -405,11 +415,14 @@ module fp3_scheduler #(
   assign gone = rr_grant(cand, ghigh_q);  // the head leaves its queue
   wire          grant = |cand;
   wire [CW-1:0] g     = encode(gone);
-  reg  [FW-1:0] gf;                                         // the granted head's fields
+  // The granted head's fields: a one-hot pick among all slots (the
+  // grant and the head pointers), so no head is selected first.
+  reg  [FW-1:0] gf;
   integer q;
   always @(*) begin
     gf = {FW{1'b0}};
-    for (q = 0; q < NC; q = q + 1) gf = gf | ({FW{gone[q]}} & fields[q*FW +: FW]);
+    for (q = 0; q < 2 * NC; q = q + 1)
+      gf = gf | ({FW{gone[q/2] && hp_q[q/2] == q[0]}} & fields[q*FW +: FW]);
   end
 
   wire [IW-1:0] g_ra, g_rb, g_rd;
@@ -460,7 +473,15 @@ module fp3_scheduler #(
   wire [NC-1:0] fr1;
   wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q) |
                             ((FETCH_STAGE != 0 && fread) ? fr1 : {NC{1'b0}});
-  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~v1_q & ~in_flight & ~bwait_q;
+  wire [NC-1:0] full;       // both slots hold a word
+  wire [NC-1:0] holds;      // ... at least one (the head)
+  generate
+    for (c = 0; c < NC; c = c + 1) begin : g_fill
+      assign full[c]  = v_q[2*c] && v_q[2*c+1];
+      assign holds[c] = v_q[2*c] || v_q[2*c+1];
+    end
+  endgenerate
+  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [NC-1:0] fgnt  = rr_grant(fetch_req, fhigh_q);
   fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
@@ -512,10 +533,10 @@ module fp3_scheduler #(
   //                in which nothing can have issued yet, or set a cycle
   //                after a refused START (bad_q).
   wire          bad_start = start_i && !running_o && !start_ok;
-  wire [NC-1:0] illegal   = active_q & v0_q & ~legal;
+  wire [NC-1:0] illegal   = active_q & holds & ~legal;
   reg           start_q, bad_q;  // a START taken / refused in the last cycle
   reg  [3:0]    bad_err_q;       // ... why it was refused
-  integer k;
+  integer k, m;
   always @(posedge clk_i) begin
     if (rst_i) begin
       running_o <= 1'b0;
@@ -559,13 +580,12 @@ module fp3_scheduler #(
 
   always @(posedge clk_i) begin
     if (rst_i || !running_o) begin
-      v0_q     <= {NC{1'b0}};
-      v1_q     <= {NC{1'b0}};
+      hp_q     <= {NC{1'b0}};
+      v_q      <= {(2*NC){1'b0}};
       fend_q   <= {NC{1'b0}};
       bwait_q  <= {NC{1'b0}};
       ready_q  <= {NC{1'b0}};
-      fr0_q    <= {NC{1'b0}};
-      fr1_q    <= {NC{1'b0}};
+      fr_q     <= {(2*NC){1'b0}};
       fvalid_q <= 1'b0;
       quiet_q  <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
@@ -573,36 +593,28 @@ module fp3_scheduler #(
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
       ready_q <= ready_d & ~gone;
-      fr0_q   <= {NC{1'b0}};
-      fr1_q   <= {NC{1'b0}};
-      for (k = 0; k < NC; k = k + 1) begin
-        s0_q[k] <= s0_d[k*3 +: 3];
-        s1_q[k] <= s1_d[k*3 +: 3];
-      end
+      fr_q    <= {(2*NC){1'b0}};
+      for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
-      // Queues: the granted head leaves, an arriving word joins at the end.
+      // Queues: the granted head leaves (the head pointer moves on), an
+      // arriving word is written into a free slot: the head's if the queue
+      // is empty, else the other (a context fetches only with a slot free
+      // and one word in flight, so at most one slot is taken then).
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) begin
-          w0_q[k] <= w1_q[k];
-          x0_q[k] <= x1_q[k];
-          p0_q[k] <= p1_q[k];
-          v0_q[k] <= v1_q[k];
-          v1_q[k] <= 1'b0;
+          hp_q[k] <= !hp_q[k];
+          if (hp_q[k]) v_q[2*k+1] <= 1'b0;
+          else         v_q[2*k]   <= 1'b0;
         end
         if (arriving[k] && active_q[k]) begin
-          if (gone[k] ? !v1_q[k] : !v0_q[k]) begin
-            fr0_q[k] <= 1'b1;
-            w0_q[k] <= aword;
-            x0_q[k] <= adec;
-            p0_q[k] <= apc;
-            v0_q[k] <= 1'b1;
-          end else begin
-            fr1_q[k] <= 1'b1;
-            w1_q[k] <= aword;
-            x1_q[k] <= adec;
-            p1_q[k] <= apc;
-            v1_q[k] <= 1'b1;
-          end
+          for (m = 0; m < 2; m = m + 1)
+            if (!v_q[2*k+m] && (v_q[2*k+1-m] || hp_q[k] == m[0])) begin
+              fr_q[2*k+m] <= 1'b1;
+              w_q[2*k+m]  <= aword;
+              x_q[2*k+m]  <= adec;
+              p_q[2*k+m]  <= apc;
+              v_q[2*k+m]  <= 1'b1;
+            end
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
           if (a_beq) bwait_q[k] <= 1'b1;
@@ -659,18 +671,18 @@ module fp3_scheduler #(
     end else if (running_o) begin
       cycles_o <= cycles_o + 64'd1;
       if (grant) issued_o <= issued_o + 64'd1;
-      if (!grant && |(active_q & v0_q)) stalls_o <= stalls_o + 64'd1;
+      if (!grant && |(active_q & holds)) stalls_o <= stalls_o + 64'd1;
       // Integration counters and errors: each context's own, so that
       // nothing wide sits behind the arbiter.
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k] && h_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
         if (gone[k] && h_ovf[k]) begin
           err_q[k] <= ERR_PC_OVERFLOW;
-          epc_q[k] <= p0_q[k];
+          epc_q[k] <= h_pc[k*AW +: AW];
         end
         if (illegal[k]) begin
           err_q[k] <= ERR_ILLEGAL_INSN;
-          epc_q[k] <= p0_q[k];
+          epc_q[k] <= h_pc[k*AW +: AW];
         end
       end
     end else if (clear_i) begin

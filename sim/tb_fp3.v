@@ -180,12 +180,12 @@ module tb_fp3 #(
   // signal of the .gtkw file is in the waveform).  Per-context vectors have
   // bit c for context c; registers and busy flags are shown for context 0.
   wire           dbg_issue     = dut.u_sched.grant;      // granted (issues now; next cycle with FMAX_PIPE)
-  wire [AW-1:0]  dbg_pc        = dut.u_sched.p0_q[dut.u_sched.g];  // PC of the issuing instruction
-  wire [63:0]    dbg_insn      = dut.u_sched.w0_q[dut.u_sched.g];  // its word
+  wire [AW-1:0]  dbg_pc        = dut.u_sched.p_q[2*dut.u_sched.g + dut.u_sched.hp_q[dut.u_sched.g]];  // PC of the issuing instruction
+  wire [63:0]    dbg_insn      = dut.u_sched.w_q[2*dut.u_sched.g + dut.u_sched.hp_q[dut.u_sched.g]];  // its word
   wire [7:0]     dbg_opc       = dbg_insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire [AW-1:0]  dbg_pc0       = dut.u_sched.p0_q[0];    // context 0: PC of its queue's head
+  wire [AW-1:0]  dbg_pc0       = dut.u_sched.p_q[dut.u_sched.hp_q[0]];  // context 0: PC of its queue's head
   wire [NC-1:0]  dbg_active    = dut.u_sched.active_q;   // contexts fetching and issuing
-  wire [NC-1:0]  dbg_waiting   = dut.u_sched.active_q & dut.u_sched.v0_q;  // hold an instruction
+  wire [NC-1:0]  dbg_waiting   = dut.u_sched.active_q & dut.u_sched.holds;  // hold an instruction
   wire [NC-1:0]  dbg_ready     = dut.u_sched.ready_q;    // ... found ready last cycle
   wire [NC-1:0]  dbg_raw;                                // waits for a source (RAW)
   wire [NC-1:0]  dbg_waw;                                // waits for its destination (WAW)
@@ -219,9 +219,15 @@ module tb_fp3 #(
     // (No function here: Icarus re-evaluates a continuous assignment only
     // when a function's arguments change, not the signals it reads.)
     for (gs = 0; gs < NC; gs = gs + 1) begin : g_hazard
-      wire [31:0] xa = dut.u_sched.g_ctx[gs].xa;
-      wire [31:0] xb = dut.u_sched.g_ctx[gs].xb;
-      wire [31:0] xd = dut.u_sched.g_ctx[gs].xd;
+      // The head: its slot's word and decoded bits (x_q: bit 10 use_rb,
+      // 9 use_ra, 8 use_rd).
+      wire        hp  = dut.u_sched.hp_q[gs];
+      wire [63:0] hw  = dut.u_sched.w_q[2*gs+hp];
+      wire [11:0] hx  = dut.u_sched.x_q[2*gs+hp];
+      wire use_ra = hx[9], use_rb = hx[10], use_rd = hx[8];
+      wire [31:0] xa = gs * (1 << IW) + hw[ISA_RA_LSB +: IW];
+      wire [31:0] xb = gs * (1 << IW) + hw[ISA_RB_LSB +: IW];
+      wire [31:0] xd = gs * (1 << IW) + hw[ISA_RD_LSB +: IW];
       wire wa = (wbn0_v && wbn0_x == xa) || (wbn1_v && wbn1_x == xa) || (wbn2_v && wbn2_x == xa);
       wire wb = (wbn0_v && wbn0_x == xb) || (wbn1_v && wbn1_x == xb) || (wbn2_v && wbn2_x == xb);
       wire wd = (wbn0_v && wbn0_x == xd) || (wbn1_v && wbn1_x == xd) || (wbn2_v && wbn2_x == xd);
@@ -229,12 +235,10 @@ module tb_fp3 #(
                   dut.u_sched.issue_unit_o != UNIT_NONE && dut.u_sched.issue_ctx_o == gs;
       wire [31:0] pend_x = dut.u_sched.rd_o;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
-        ((dut.u_sched.g_ctx[gs].use_ra &&
-          ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xa] && !wa) || (pend && pend_x == xa))) ||
-         (dut.u_sched.g_ctx[gs].use_rb &&
-          ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xb] && !wb) || (pend && pend_x == xb))));
-      assign dbg_waw[gs] = dbg_waiting[gs] && dut.u_sched.g_ctx[gs].use_rd &&
-        ((dut.u_sched.busy_i[dut.u_sched.g_ctx[gs].xd] && !wd) || (pend && pend_x == xd));
+        ((use_ra && ((dut.u_sched.busy_i[xa] && !wa) || (pend && pend_x == xa))) ||
+         (use_rb && ((dut.u_sched.busy_i[xb] && !wb) || (pend && pend_x == xb))));
+      assign dbg_waw[gs] = dbg_waiting[gs] && use_rd &&
+        ((dut.u_sched.busy_i[xd] && !wd) || (pend && pend_x == xd));
     end
   endgenerate
   function [31:0] dbg_reg;  // register r of context c (after the clock edge)
@@ -369,7 +373,7 @@ module tb_fp3 #(
     input [8*80-1:0] why;
     begin
       $display("WATCHDOG: %0s at cycle %0d of the run (clock edge %0d, t = %0t ns): pc %0d (context 0), insn %h, %0d of %0d integrations done (context 0), active contexts %b, busy %h",
-               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.w0_q[0], dbg_steps_done,
+               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.w_q[dut.u_sched.hp_q[0]], dbg_steps_done,
                steps_run, dbg_active, dbg_busy);
       $display("FAIL: tb_fp3: the run hung (watchdog)");
       finish(2);
