@@ -114,6 +114,8 @@ module fp3_scheduler #(
   input  wire [(1<<(CW+IW))-1:0]      busy_i,
   input  wire [2:0]                   ahead_valid_i, // add, mul, move ports
   input  wire [3*(CW+IW)-1:0]         ahead_idx_i,
+  input  wire [2:0]                   early_valid_i, // ... those of the next cycle
+  input  wire [3*(CW+IW)-1:0]         early_idx_i,
   input  wire                         idle_i,
   // a beq issued two cycles ago, resolved: its context and outcome
   input  wire                         br_valid_i,
@@ -202,6 +204,11 @@ module fp3_scheduler #(
   ((ahead_valid_i[0] && ahead_idx_i[0*XW +: XW] == (x)) || \
    (ahead_valid_i[1] && ahead_idx_i[1*XW +: XW] == (x)) || \
    (ahead_valid_i[2] && ahead_idx_i[2*XW +: XW] == (x)))
+  // ... is announced in the next cycle.
+`define FP3_FREED_NEXT(x) \
+  ((early_valid_i[0] && early_idx_i[0*XW +: XW] == (x)) || \
+   (early_valid_i[1] && early_idx_i[1*XW +: XW] == (x)) || \
+   (early_valid_i[2] && early_idx_i[2*XW +: XW] == (x)))
 
   // ---- decode, once, as a word joins its queue -----------------------------
   // Everything the ready and issue steps need of a word beyond its raw
@@ -216,6 +223,7 @@ module fp3_scheduler #(
   wire [AW-1:0] apc;
   wire [NC-1:0] arriving;   // ... one-hot
   wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
+  wire [2*NC-1:0] wslot;    // the slot the arriving word is written into
   wire [DW-1:0] adec;
   wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          a_endi  = a_opc == OP_ENDI;
@@ -333,9 +341,18 @@ module fp3_scheduler #(
                 d_ovf} = x_q[I];
         wire          unused_x = &{1'b0, d_halt, d_ovf};
         assign fields[I*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
+        // This cycle's announcements of the fields, compared in the cycle
+        // before (early_*_i) with the fields the slot holds now: an
+        // arriving word's if it was written then.
+        wire [IW-1:0] nra = wslot[I] ? a_ra : ra;
+        wire [IW-1:0] nrb = wslot[I] ? a_rb : rb;
+        wire [IW-1:0] nrd = wslot[I] ? a_rd : rd;
+        reg  [2:0]    fq_q;
+        always @(posedge clk_i)
+          fq_q <= {`FP3_FREED_NEXT({CTX, nrd}), `FP3_FREED_NEXT({CTX, nrb}),
+                   `FP3_FREED_NEXT({CTX, nra})};
         // The wait bits, with this cycle's announcements taken off.
-        wire [2:0] s = (fr_q[I] ? sj : s_q[I]) &
-                       ~{`FP3_FREED({CTX, rd}), `FP3_FREED({CTX, rb}), `FP3_FREED({CTX, ra})};
+        wire [2:0] s = (fr_q[I] ? sj : s_q[I]) & ~fq_q;
         assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
         // The other slot, if it is the head and granted now, writes its
         // destination: this word waits for it.
@@ -350,6 +367,7 @@ module fp3_scheduler #(
     end
   endgenerate
 `undef FP3_FREED
+`undef FP3_FREED_NEXT
 
   // ---- round-robin pick: the first requester after the last granted -------
   // The contexts after the last granted one are kept as a mask (a register,
@@ -475,10 +493,18 @@ module fp3_scheduler #(
                             ((FETCH_STAGE != 0 && fread) ? fr1 : {NC{1'b0}});
   wire [NC-1:0] full;       // both slots hold a word
   wire [NC-1:0] holds;      // ... at least one (the head)
+  // An arriving word is written into a free slot: the head's if the queue
+  // is empty, else the other (a context fetches only with a slot free and
+  // one word in flight, so at most one slot is taken then).  Which slot
+  // does not depend on this cycle's grant.
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
       assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
+      for (e = 0; e < 2; e = e + 1) begin : g_free
+        assign wslot[2*c+e] = arriving[c] && active_q[c] && running_o && !v_q[2*c+e] &&
+                              (v_q[2*c+1-e] || hp_q[c] == e);
+      end
     end
   endgenerate
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
@@ -597,24 +623,22 @@ module fp3_scheduler #(
       for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
       // Queues: the granted head leaves (the head pointer moves on), an
-      // arriving word is written into a free slot: the head's if the queue
-      // is empty, else the other (a context fetches only with a slot free
-      // and one word in flight, so at most one slot is taken then).
+      // arriving word is written into its slot (wslot).
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) begin
           hp_q[k] <= !hp_q[k];
           if (hp_q[k]) v_q[2*k+1] <= 1'b0;
           else         v_q[2*k]   <= 1'b0;
         end
+        for (m = 0; m < 2; m = m + 1)
+          if (wslot[2*k+m]) begin
+            fr_q[2*k+m] <= 1'b1;
+            w_q[2*k+m]  <= aword;
+            x_q[2*k+m]  <= adec;
+            p_q[2*k+m]  <= apc;
+            v_q[2*k+m]  <= 1'b1;
+          end
         if (arriving[k] && active_q[k]) begin
-          for (m = 0; m < 2; m = m + 1)
-            if (!v_q[2*k+m] && (v_q[2*k+1-m] || hp_q[k] == m[0])) begin
-              fr_q[2*k+m] <= 1'b1;
-              w_q[2*k+m]  <= aword;
-              x_q[2*k+m]  <= adec;
-              p_q[2*k+m]  <= apc;
-              v_q[2*k+m]  <= 1'b1;
-            end
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
           if (a_beq) bwait_q[k] <= 1'b1;

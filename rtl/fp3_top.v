@@ -173,6 +173,8 @@ module fp3_top #(
   wire [4:0]    add_flags, mul_flags;
   wire          adda_valid, mula_valid, mova_valid;   // write-backs AHEAD cycles on
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
+  wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
+  wire [XW-1:0] adde_idx, mule_idx, move_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
@@ -200,6 +202,8 @@ module fp3_top #(
     .busy_i           (busy),
     .ahead_valid_i    ({mova_valid, mula_valid, adda_valid}),
     .ahead_idx_i      ({mova_idx, mula_idx, adda_idx}),
+    .early_valid_i    ({move_valid, mule_valid, adde_valid}),
+    .early_idx_i      ({move_idx, mule_idx, adde_idx}),
     .idle_i           (idle),
     .br_valid_i       (br_valid_q),
     .br_ctx_i         (br_ctx_q),
@@ -277,6 +281,8 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (issue && issue_unit == UNIT_ADD),
     .idx_i         (rd),
+    .early_valid_o (adde_valid),
+    .early_idx_o   (adde_idx),
     .ahead_valid_o (adda_valid),
     .ahead_idx_o   (adda_idx),
     .wb_valid_o    (add_valid),
@@ -287,6 +293,8 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (issue && issue_unit == UNIT_MUL),
     .idx_i         (rd),
+    .early_valid_o (mule_valid),
+    .early_idx_o   (mule_idx),
     .ahead_valid_o (mula_valid),
     .ahead_idx_o   (mula_idx),
     .wb_valid_o    (mul_valid),
@@ -297,6 +305,8 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (issue && issue_unit == UNIT_MOV),
     .idx_i         (rd),
+    .early_valid_o (move_valid),
+    .early_idx_o   (move_idx),
     .ahead_valid_o (mova_valid),
     .ahead_idx_o   (mova_idx),
     .wb_valid_o    (mov_valid),

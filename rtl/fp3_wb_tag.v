@@ -9,15 +9,20 @@
 // in cycle W - READ_STAGES + 1 at the earliest, reads it from the
 // register file's bypass; fp3_top "Pipeline"), and
 // on wb_*_o in cycle W, with the result, as the register file's write
-// index and the trace.
+// index and the trace.  The announcement is also shown a cycle before it
+// is made, on early_*_o in cycle W - AHEAD - 1, so that the scheduler can
+// compare it with its queued instructions' registers a cycle ahead and
+// keep the outcome in a register.
 //
 // Parameters
 //   XW           index width ({context, register})
 //   ISSUE_TO_WB  cycles from issue to write-back (read stages + unit
-//                latency), >= AHEAD
+//                latency), >= AHEAD + 1
 //   AHEAD        cycles the announcement precedes the write-back, >= 1
 // Ports
 //   valid_i, idx_i  an operation for this unit issues this cycle
+//   early_valid_o, early_idx_o  ... will be written back in AHEAD + 1
+//                   cycles (with ISSUE_TO_WB = AHEAD + 1, valid_i, idx_i)
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
 //   wb_valid_o, wb_idx_o        ... is written back this cycle
 `default_nettype none
@@ -30,16 +35,26 @@ module fp3_wb_tag #(
   input  wire          rst_i,
   input  wire          valid_i,
   input  wire [XW-1:0] idx_i,
+  output wire          early_valid_o,
+  output wire [XW-1:0] early_idx_o,
   output wire          ahead_valid_o,
   output wire [XW-1:0] ahead_idx_o,
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
-  fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD)) u_to_ahead (
+  fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD - 1)) u_to_early (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (valid_i),
     .data_i  (idx_i),
+    .valid_o (early_valid_o),
+    .data_o  (early_idx_o)
+  );
+  fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_ahead (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (early_valid_o),
+    .data_i  (early_idx_o),
     .valid_o (ahead_valid_o),
     .data_o  (ahead_idx_o)
   );
