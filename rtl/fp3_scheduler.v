@@ -273,6 +273,7 @@ module fp3_scheduler #(
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
   wire [2*NC*FW-1:0] fields;
+  wire [NC*FW-1:0]   h_fields;  // ... of the heads
   wire [2*NC-1:0]    srdy;  // the slot's word is ready (if it is the head)
   wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
@@ -363,6 +364,7 @@ module fp3_scheduler #(
                         {rd == rdo, rb == rdo, ra == rdo};
         assign s_d[I*3 +: 3] = s | by;
       end
+      assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
       assign ready_d[c] = active_q[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
     end
   endgenerate
@@ -371,9 +373,12 @@ module fp3_scheduler #(
 
   // ---- round-robin pick: the first requester after the last granted -------
   // The contexts after the last granted one are kept as a mask (a register,
-  // `high`), so the pick is two priority chains and no compare; the grant
-  // is one-hot.  An empty mask (the last grant went to the last context)
-  // gives the first requester from context 0 on.
+  // `high`), so the pick is the lowest set bit of {req, req & high}: the
+  // first requester of first priority, else the first requester.  The
+  // lowest set bit of x is x & -x, an addition, which maps to the FPGA's
+  // carry chain instead of a chain of LUTs.  The grant is one-hot.  An
+  // empty mask (the last grant went to the last context) gives the first
+  // requester from context 0 on.
   function [NC-1:0] after;      // the bits above the set bit of a one-hot x
     input [NC-1:0] x;
     integer p;
@@ -387,24 +392,14 @@ module fp3_scheduler #(
     end
   endfunction
 
-  function [NC-1:0] first_one;  // the lowest set bit of x, one-hot
-    input [NC-1:0] x;
-    integer p;
-    reg seen;
-    begin
-      seen = 1'b0;
-      for (p = 0; p < NC; p = p + 1) begin
-        first_one[p] = x[p] && !seen;
-        seen         = seen || x[p];
-      end
-    end
-  endfunction
-
   function [NC-1:0] rr_grant;   // one-hot; zero if req is
     input [NC-1:0] req;
     input [NC-1:0] high;    // requesters of first priority
+    reg [2*NC-1:0] x, lo;
     begin
-      rr_grant = (|(req & high)) ? first_one(req & high) : first_one(req);
+      x        = {req, req & high};
+      lo       = x & (~x + {{(2*NC-1){1'b0}}, 1'b1});
+      rr_grant = lo[NC-1:0] | lo[2*NC-1:NC];
     end
   endfunction
 
@@ -433,14 +428,13 @@ module fp3_scheduler #(
   assign gone = rr_grant(cand, ghigh_q);  // the head leaves its queue
   wire          grant = |cand;
   wire [CW-1:0] g     = encode(gone);
-  // The granted head's fields: a one-hot pick among all slots (the
-  // grant and the head pointers), so no head is selected first.
+  // The granted head's fields (the heads' fields are picked by the head
+  // pointers beside the arbiter, from registers only).
   reg  [FW-1:0] gf;
   integer q;
   always @(*) begin
     gf = {FW{1'b0}};
-    for (q = 0; q < 2 * NC; q = q + 1)
-      gf = gf | ({FW{gone[q/2] && hp_q[q/2] == q[0]}} & fields[q*FW +: FW]);
+    for (q = 0; q < NC; q = q + 1) gf = gf | ({FW{gone[q]}} & h_fields[q*FW +: FW]);
   end
 
   wire [IW-1:0] g_ra, g_rb, g_rd;
