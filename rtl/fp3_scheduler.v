@@ -373,33 +373,29 @@ module fp3_scheduler #(
 
   // ---- round-robin pick: the first requester after the last granted -------
   // The contexts after the last granted one are kept as a mask (a register,
-  // `high`), so the pick is the lowest set bit of {req, req & high}: the
-  // first requester of first priority, else the first requester.  The
-  // lowest set bit of x is x & -x, an addition, which maps to the FPGA's
-  // carry chain instead of a chain of LUTs.  The grant is one-hot.  An
-  // empty mask (the last grant went to the last context) gives the first
-  // requester from context 0 on.
-  function [NC-1:0] after;      // the bits above the set bit of a one-hot x
-    input [NC-1:0] x;
-    integer p;
-    reg seen;
+  // `high`), and the pick is the lowest set bit of x = {req, req & high}:
+  // the first requester of first priority, else the first requester.  With
+  // d = x - 1 (an addition: the FPGA's carry chain, not a chain of LUTs),
+  // the lowest set bit is x & ~d, and the bits above it are ~(x ^ d), which
+  // give the next mask (the bits above the granted context) without a
+  // second chain.  The grant is one-hot.  An empty mask (the last grant
+  // went to the last context) gives the first requester from context 0 on.
+  function [NC-1:0] rr_pick;    // one-hot; zero if x is
+    input [2*NC-1:0] x, d;
+    reg   [2*NC-1:0] lo;
     begin
-      seen = 1'b0;
-      for (p = 0; p < NC; p = p + 1) begin
-        after[p] = seen;
-        seen     = seen || x[p];
-      end
+      lo      = x & ~d;
+      rr_pick = lo[NC-1:0] | lo[2*NC-1:NC];
     end
   endfunction
 
-  function [NC-1:0] rr_grant;   // one-hot; zero if req is
-    input [NC-1:0] req;
-    input [NC-1:0] high;    // requesters of first priority
-    reg [2*NC-1:0] x, lo;
+  function [NC-1:0] rr_high;    // the contexts after the one granted
+    input [2*NC-1:0] x, d;
+    input            hit;       // a requester of first priority was granted
+    reg   [2*NC-1:0] above;
     begin
-      x        = {req, req & high};
-      lo       = x & (~x + {{(2*NC-1){1'b0}}, 1'b1});
-      rr_grant = lo[NC-1:0] | lo[2*NC-1:NC];
+      above   = ~(x ^ d);
+      rr_high = hit ? above[NC-1:0] : above[2*NC-1:NC];
     end
   endfunction
 
@@ -424,9 +420,15 @@ module fp3_scheduler #(
   // ---- issue step ----------------------------------------------------------
   // (A context granted in the previous cycle has its ready bit cleared:
   // it belonged to the instruction that left.)
-  wire [NC-1:0] cand  = ready_q;     // (the ready step counts only active contexts)
-  assign gone = rr_grant(cand, ghigh_q);  // the head leaves its queue
+  // The candidates and those of first priority are both registers
+  // (ready_q, rh_q = ready_q & ghigh_q), so the pick starts at flip-flops.
+  wire [NC-1:0]   cand  = ready_q;   // (the ready step counts only active contexts)
+  reg  [NC-1:0]   rh_q;
+  wire [2*NC-1:0] gx    = {cand, rh_q};
+  wire [2*NC-1:0] gd    = gx - {{(2*NC-1){1'b0}}, 1'b1};
+  assign gone = rr_pick(gx, gd);    // the head leaves its queue
   wire          grant = |cand;
+  wire [NC-1:0] ghigh_d = grant ? rr_high(gx, gd, |rh_q) : ghigh_q;
   wire [CW-1:0] g     = encode(gone);
   // The granted head's fields (the heads' fields are picked by the head
   // pointers beside the arbiter, from registers only).
@@ -503,7 +505,9 @@ module fp3_scheduler #(
   endgenerate
   wire [NC-1:0] fetch_req = active_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
-  wire [NC-1:0] fgnt  = rr_grant(fetch_req, fhigh_q);
+  wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
+  wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
+  wire [NC-1:0] fgnt  = rr_pick(fx, fd);
   fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -609,6 +613,7 @@ module fp3_scheduler #(
       fvalid_q <= 1'b0;
       quiet_q  <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
+      rh_q     <= {NC{1'b0}};
       fhigh_q  <= {NC{1'b1}};
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
@@ -648,13 +653,14 @@ module fp3_scheduler #(
           end
         end
       end
-      if (grant) ghigh_q <= after(gone);
+      ghigh_q <= ghigh_d;
+      rh_q    <= ready_d & ~gone & ghigh_d;
 
       // The word read now arrives next cycle (FETCH_STAGE: the one after).
       fvalid_q <= fread;
       fctx_q   <= fr;
       fpcq_q   <= fetch_addr;
-      if (fetch) fhigh_q <= after(fgnt);
+      if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
 
       if (!idle_i || issue_o)      quiet_q <= 8'd0;
       else if (quiet_q != DRAIN8)  quiet_q <= quiet_q + 8'd1;
