@@ -32,9 +32,10 @@
 //           word is decoded (legality included) as it joins its queue, and
 //           each queue entry keeps a wait bit per register field, set from
 //           the busy flags as it joins (and by the head ahead of it when
-//           that is granted; with PICK_STAGE, also the destination in the
-//           issue register, whose flag is set at the end of the cycle),
-//           cleared by the announcements.
+//           that is granted; with the pick stages, also the destinations
+//           of the instructions granted but not yet issued, and of the one
+//           issuing, whose flag is set at the end of the cycle), cleared by
+//           the announcements.
 //   issue   Among the contexts whose head was ready, a round-robin arbiter
 //           grants one per cycle (the granted context has the lowest
 //           priority next), so no context with ready work starves.  A
@@ -42,10 +43,13 @@
 //           candidate: its ready bit belonged to the instruction it just
 //           issued.  So one context issues at most every other cycle, and
 //           two or more contexts keep the arithmetic unit busy every cycle.
-//           PICK_STAGE = 0: the granted instruction issues (its register
+//           PICK_STAGES = 0: the granted instruction issues (its register
 //           addresses go to the register file) in the cycle of the grant;
-//           PICK_STAGE = 1: it is registered and issues in the next cycle
-//           (for clock rate: no arbiter in front of the register file).
+//           PICK_STAGES = 2 (for clock rate): the grant is registered, the
+//           granted instruction's fields are picked in the next cycle and
+//           registered, and it issues in the cycle after that.  So neither
+//           the arbiter nor a wide multiplexer sits in front of the
+//           register file, and no multiplexer behind the arbiter.
 //
 // WAR needs no check: operands are read at issue, in order.  A cycle
 // without issue while some active context holds an instruction is a stall.
@@ -66,7 +70,7 @@
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
 //                 missing one is illegal
-//   PICK_STAGE    0 or 1: a register between the grant and the issue
+//   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: registers between the fetch grant and the
 //                 instruction memory, and between the memory and the
 //                 queues (the word arrives two cycles later)
@@ -85,7 +89,7 @@ module fp3_scheduler #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
-  parameter integer PICK_STAGE   = 0,
+  parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
   parameter integer DRAIN        = 1
 ) (
@@ -254,9 +258,9 @@ module fp3_scheduler #(
   // so that the ready step reads no busy flag.  Only a context's own
   // instructions make its registers busy, so an entry's wait bit is
   //   set    as the word joins: the flag (busy_i), or the destination of
-  //          the instruction in the issue register (PICK_STAGE = 1: its
+  //          the instruction in the issue register (PICK_STAGES = 2: its
   //          flag is set at the end of this cycle), or of the head granted
-  //          in this cycle;
+  //          in this cycle or (PICK_STAGES = 2) in the last one;
   //          later: when the head ahead of it is granted and writes it;
   //   clear  when the register's write-back is announced (ahead_*_i; the
   //          flag clears in the same cycle).
@@ -274,6 +278,7 @@ module fp3_scheduler #(
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
   wire [2*NC*FW-1:0] fields;
   wire [NC*FW-1:0]   h_fields;  // ... of the heads
+  wire [NC*FW-1:0]   l_fields;  // ... of the last heads
   wire [2*NC-1:0]    srdy;  // the slot's word is ready (if it is the head)
   wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
@@ -287,7 +292,7 @@ module fp3_scheduler #(
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
-  wire          iss_dst = PICK_STAGE != 0 && issue_o && issue_unit_o != UNIT_NONE;
+  wire          iss_dst = PICK_STAGES != 0 && issue_o && issue_unit_o != UNIT_NONE;
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [5:0]    aw_q;             // {pending, freed} in cycle a, per field
   wire [2:0]    a_freed = {`FP3_FREED({actx, a_rd}), `FP3_FREED({actx, a_rb}),
@@ -316,11 +321,20 @@ module fp3_scheduler #(
       // The arriving word's lookup in this context's bank (used if it is
       // this context's word), and the head, if granted now, making its
       // destination busy for the entries behind it: the one in the queue
-      // and an arriving word.
-      reg  [2:0] lk_q, by_q;
+      // and an arriving word.  With PICK_STAGES = 2, the head granted in
+      // the last cycle (destination rdg_q, pg_q: it writes one) sets its
+      // flag only when it issues, in the next cycle: an arriving word
+      // waits for it too.
+      reg  [2:0]    lk_q, by_q;
+      reg           pg_q;
+      reg  [IW-1:0] rdg_q;
+      wire          pgv = PICK_STAGES == 2 && pg_q;
       always @(posedge clk_i) begin
-        lk_q <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
-        by_q <= {3{wrh && gone[c]}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
+        lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
+        by_q  <= ({3{wrh && gone[c]}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh}) |
+                 ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
+        pg_q  <= wrh && gone[c] && running_o;
+        rdg_q <= rdh;
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
@@ -364,7 +378,10 @@ module fp3_scheduler #(
                         {rd == rdo, rb == rdo, ra == rdo};
         assign s_d[I*3 +: 3] = s | by;
       end
+      // The head's fields, and the last head's (hp_q has moved on if it
+      // was granted).
       assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
+      assign l_fields[c*FW +: FW] = hp ? fields[2*c*FW +: FW] : fields[(2*c+1)*FW +: FW];
       assign ready_d[c] = active_q[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
     end
   endgenerate
@@ -430,13 +447,30 @@ module fp3_scheduler #(
   wire          grant = |cand;
   wire [NC-1:0] ghigh_d = grant ? rr_high(gx, gd, |rh_q) : ghigh_q;
   wire [CW-1:0] g     = encode(gone);
-  // The granted head's fields (the heads' fields are picked by the head
-  // pointers beside the arbiter, from registers only).
+  // The granted head's fields, picked from the heads' fields (selected by
+  // the head pointers beside the arbiter, from registers only) by the
+  // one-hot grant: this cycle's (PICK_STAGES = 0), or the last cycle's,
+  // registered (PICK_STAGES = 2; the granted word stays in its slot for a
+  // cycle: the next word to arrive takes the other slot or, if the queue
+  // is empty, the new head's).
+  reg  [NC-1:0] gone_q;
+  reg           grant_q;
+  reg  [CW-1:0] g_q;
+  always @(posedge clk_i) begin
+    gone_q  <= gone & {NC{running_o}};
+    grant_q <= grant && running_o;
+    g_q     <= g;
+  end
+  wire          two     = PICK_STAGES == 2;
+  wire [NC-1:0] p_sel   = two ? gone_q : gone;
+  wire          p_grant = two ? grant_q : grant;
+  wire [CW-1:0] p_g     = two ? g_q : g;
   reg  [FW-1:0] gf;
   integer q;
   always @(*) begin
     gf = {FW{1'b0}};
-    for (q = 0; q < NC; q = q + 1) gf = gf | ({FW{gone[q]}} & h_fields[q*FW +: FW]);
+    for (q = 0; q < NC; q = q + 1)
+      gf = gf | ({FW{p_sel[q]}} & (two ? l_fields[q*FW +: FW] : h_fields[q*FW +: FW]));
   end
 
   wire [IW-1:0] g_ra, g_rb, g_rd;
@@ -448,19 +482,22 @@ module fp3_scheduler #(
   // The granted instruction, as it issues: {valid, ctx, ra, rb, rd, unit,
   // sub, imm (li), immediate, endi, beq}.
   localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 1 + 32 + 1 + 1;
-  wire [IS_W-1:0] is_d = {grant, g, g, g_ra, g, g_rb, g, g_rd, g_unit, g_sub, g_li, g_imm,
-                          grant && g_endi, grant && g_beq};
+  wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_li,
+                          g_imm, p_grant && g_endi, p_grant && g_beq};
   wire [IS_W-1:0] is_w;
   generate
-    if (PICK_STAGE == 0) begin : g_pick0
+    if (PICK_STAGES == 0) begin : g_pick0
       assign is_w = is_d;
-    end else begin : g_pick1
+    end else if (PICK_STAGES == 2) begin : g_pick2
       reg [IS_W-1:0] is_q;
       always @(posedge clk_i) begin
         if (rst_i || !running_o) is_q <= {IS_W{1'b0}};
         else                     is_q <= is_d;
       end
       assign is_w = is_q;
+    end else begin : g_bad_pick_stages
+      // Elaboration error on purpose: PICK_STAGES must be 0 or 2.
+      fp3_scheduler_error_PICK_STAGES_must_be_0_or_2 u_error ();
     end
   endgenerate
   assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
@@ -594,7 +631,8 @@ module fp3_scheduler #(
           if (illegal[k]) active_q[k] <= 1'b0;
         end
         // Nothing in flight once DRAIN cycles passed without a busy flag.
-        if (active_q == {NC{1'b0}} && idle_i && !issue_o && quiet_q == DRAIN8) begin
+        if (active_q == {NC{1'b0}} && idle_i && !issue_o && !(two && grant_q) &&
+            quiet_q == DRAIN8) begin
           running_o <= 1'b0;
           done_o    <= 1'b1;
         end

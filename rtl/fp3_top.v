@@ -16,8 +16,9 @@
 // reads as zero while running (the register file's read ports belong to
 // the issue pipeline then).
 //
-// Pipeline of one operation (P = FMAX_PIPE, R = 1 + FMAX_PIPE):
-//   pick     (P = 1 only) the scheduler grants it; registered
+// Pipeline of one operation (P = 2 FMAX_PIPE, R = 1 + FMAX_PIPE):
+//   pick     (P = 2 only) cycle t - 2: the scheduler grants it, the grant
+//            registered; t - 1: its fields are picked, registered
 //   issue    cycle t: its register addresses go to the register file
 //   read     cycles t + 1 .. t + R: the data leave the register-file RAMs,
 //            bypassed (fp3_regfile READ_STAGES = R)
@@ -28,11 +29,11 @@
 // the value from the bypass: it issues 1 + latency cycles after its
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
 // grant before the instruction memory and the word after it (fp3_scheduler
-// FETCH_STAGE).  What it costs: a move's consumer waits a cycle more, a
-// beq resolves 4 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
+// beq resolves 5 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
 // run takes a few cycles more, a context fetches at most every fourth
 // cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
-// MUL_LATENCY of at least 2.
+// MUL_LATENCY of at least 3.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -52,7 +53,7 @@
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
-//                before and after the instruction memory, one between the
+//                before and after the instruction memory, two between the
 //                scheduler's grant and the issue, and a second
 //                operand-read stage (see "Pipeline" above)
 `default_nettype none
@@ -102,18 +103,19 @@ module fp3_top #(
   localparam integer CW = (NUM_CONTEXTS <= 2) ? 1 : $clog2(NUM_CONTEXTS);
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
-  localparam integer PICK  = FMAX_PIPE;      // pick stage
+  localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
   localparam integer READ  = 1 + FMAX_PIPE;  // operand-read stages
   localparam integer AHEAD = PICK + READ;    // write-back announcement
-  // The move path's latency: with the pick stage, one more, so that its
+  // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
   localparam integer MOV_LATENCY = 1 + PICK;
 
   generate
-    if (FMAX_PIPE != 0 && (ADD_LATENCY < 2 || MUL_LATENCY < 2)) begin : g_bad_latency
+    if (FMAX_PIPE != 0 && (ADD_LATENCY < 3 || MUL_LATENCY < 3)) begin : g_bad_latency
       // Elaboration error on purpose: the announcement of a write-back
-      // must come after the issue that sets its busy flag.
-      fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_2 u_error ();
+      // (and the cycle before it, fp3_wb_tag early_*) must come after the
+      // issue that sets its busy flag: latency >= PICK + 1.
+      fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_3 u_error ();
     end
   endgenerate
 
@@ -178,7 +180,7 @@ module fp3_top #(
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
-                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .PICK_STAGE(PICK),
+                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .PICK_STAGES(PICK),
                   .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),

@@ -214,7 +214,7 @@ module tb_fp3 #(
   generate
     // A waiting context's hazard, as the scheduler's ready step sees it: a
     // used source busy and its write-back not announced in this cycle, or
-    // the destination of its instruction in the issue register (FMAX_PIPE)
+    // the destination of its instruction in the issue register or being picked (FMAX_PIPE)
     // (RAW), or its destination so (WAW).
     // (No function here: Icarus re-evaluates a continuous assignment only
     // when a function's arguments change, not the signals it reads.)
@@ -234,11 +234,17 @@ module tb_fp3 #(
       wire pend = FMAX_PIPE != 0 && dut.u_sched.issue_o &&
                   dut.u_sched.issue_unit_o != UNIT_NONE && dut.u_sched.issue_ctx_o == gs;
       wire [31:0] pend_x = dut.u_sched.rd_o;
+      // ... or of the one granted in the last cycle, being picked.
+      wire pick = FMAX_PIPE != 0 && dut.u_sched.p_grant &&
+                  dut.u_sched.g_unit != UNIT_NONE && dut.u_sched.p_g == gs;
+      wire [31:0] pick_x = gs * (1 << IW) + dut.u_sched.g_rd;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
-        ((use_ra && ((dut.u_sched.busy_i[xa] && !wa) || (pend && pend_x == xa))) ||
-         (use_rb && ((dut.u_sched.busy_i[xb] && !wb) || (pend && pend_x == xb))));
+        ((use_ra && ((dut.u_sched.busy_i[xa] && !wa) || (pend && pend_x == xa) ||
+                     (pick && pick_x == xa))) ||
+         (use_rb && ((dut.u_sched.busy_i[xb] && !wb) || (pend && pend_x == xb) ||
+                     (pick && pick_x == xb))));
       assign dbg_waw[gs] = dbg_waiting[gs] && use_rd &&
-        ((dut.u_sched.busy_i[xd] && !wd) || (pend && pend_x == xd));
+        ((dut.u_sched.busy_i[xd] && !wd) || (pend && pend_x == xd) || (pick && pick_x == xd));
     end
   endgenerate
   function [31:0] dbg_reg;  // register r of context c (after the clock edge)

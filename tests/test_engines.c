@@ -465,7 +465,7 @@ static void test_move_bypass(void **state) {
 
 /* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 6)
  * keeps the dependent-issue distances of the default pipeline (write-backs
- * are announced earlier, for its second read stage), has a 2-cycle move
+ * are announced earlier, for its pick and second read stages), has a 3-cycle move
  * path, and resolves a beq FP3_FMAX_PIPE_CYCLES later than the default
  * build; every result as the ISS computes it.  fmax_cycles: the cycles of
  * one integration of src on e, checked against the ISS. */
@@ -495,7 +495,7 @@ static void test_fmax_pipe(void **state) {
                    FP3_READ_CYCLES + e->config.add_latency);
   assert_int_equal(fmax_cycles(e, mul3) - fmax_cycles(e, mul2),
                    FP3_READ_CYCLES + e->config.mul_latency);
-  /* The 2-cycle move path, bit-exact. */
+  /* The 3-cycle move path, bit-exact. */
   fmax_cycles(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n");
   /* A taken beq costs FP3_BEQ_CYCLES on the default build, and
    * FP3_FMAX_PIPE_CYCLES more on this one, against a nop before the halt
