@@ -545,22 +545,22 @@ module fp3_scheduler #(
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
   wire [NC-1:0] fgnt  = rr_pick(fx, fd);
-  fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i || !running_o),
-    .valid_i (fetch),
-    .data_i  (fgnt),
-    .valid_o (fread),
-    .data_o  (fr1)
-  );
-  wire [CW-1:0] fr = encode(fr1);
-  // The granted context's fetch PC, selected by the one-hot grant.
+  // The granted context's fetch PC, selected by the one-hot grant, goes
+  // to the memory with the grant (FETCH_STAGE: both registered).
   reg [AW-1:0] fpc_sel;
   always @(*) begin
     fpc_sel = {AW{1'b0}};
-    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
+    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fgnt[q]}} & fpcs[q*AW +: AW]);
   end
-  assign fetch_addr = fpc_sel;
+  fp_pipe #(.WIDTH(NC + AW), .DEPTH(FETCH_STAGE)) u_fgrant (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .valid_i (fetch),
+    .data_i  ({fgnt, fpc_sel}),
+    .valid_o (fread),
+    .data_o  ({fr1, fetch_addr})
+  );
+  wire [CW-1:0] fr = encode(fr1);
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
