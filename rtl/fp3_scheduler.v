@@ -179,17 +179,31 @@ module fp3_scheduler #(
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
-  // ending cycle t, the word is here in cycle t + 1.  Entries never
-  // written read as zero, the nop.
+  // ending cycle t, the word is here in cycle t + 1.  Each word is stored
+  // with its decoded bits (SW, below), decided as it is written: the
+  // host's write is registered, decoded and written a cycle later (a run
+  // starts two cycles after a write at the earliest).  Entries never
+  // written read as zero: the nop, decoded.
+  localparam integer SW = DW - 1;   // stored decoded bits
   wire [63:0]   imem_word;
+  wire [SW-1:0] imem_sdec;
   wire [AW-1:0] fetch_addr;
-  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(64)) u_imem (
+  reg           we_q;
+  reg  [AW-1:0] wa_q;
+  reg  [63:0]   wd_q;
+  wire [SW-1:0] wsdec;
+  always @(posedge clk_i) begin
+    we_q <= imem_we_i && !rst_i;
+    wa_q <= imem_waddr_i;
+    wd_q <= imem_wdata_i;
+  end
+  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64)) u_imem (
     .clk_i   (clk_i),
-    .we_i    (imem_we_i),
-    .waddr_i (imem_waddr_i),
-    .wdata_i (imem_wdata_i),
+    .we_i    (we_q),
+    .waddr_i (wa_q),
+    .wdata_i ({wsdec, wd_q}),
     .raddr_i (fetch_addr),
-    .rdata_o (imem_word)
+    .rdata_o ({imem_sdec, imem_word})
   );
 
   // ---- decode helpers ------------------------------------------------------
@@ -214,43 +228,48 @@ module fp3_scheduler #(
    (early_valid_i[1] && early_idx_i[1*XW +: XW] == (x)) || \
    (early_valid_i[2] && early_idx_i[2*XW +: XW] == (x)))
 
-  // ---- decode, once, as a word joins its queue -----------------------------
+  // ---- decode, once, as a word is written ---------------------------------
   // Everything the ready and issue steps need of a word beyond its raw
-  // fields is decided here, from the arriving word and its PC, and kept
-  // beside the word in its queue entry (DW bits): {legal, use_rb, use_ra,
-  // use_rd, unit, sub, li, endi, beq, halt, ovf}.  A word never changes in
-  // its queue, so this is the decision the ready step would take each cycle,
-  // taken off its path.
+  // fields is decided as it is written into the instruction memory (from
+  // the word and its address: a program does not change while it runs),
+  // stored beside it (SW bits: {illegal, use_rb, use_ra, use_rd, unit, sub,
+  // li, endi, beq, halt}; a zero word's are zero), completed as it joins
+  // its queue with ovf (it would run off the end of the memory: not a halt
+  // or an endi, which leave or jump, at the last address) and kept in its
+  // queue entry (DW bits: {legal, ..., halt, ovf}).  So neither the ready
+  // step nor the arrival decodes anything.
+  wire [7:0]    w_opc   = wd_q[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire          w_endi  = w_opc == OP_ENDI;
+  wire          w_beq   = w_opc == OP_BEQ;
+  wire [7:0]    w_rd8   = wd_q[ISA_RD_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_ra8   = wd_q[ISA_RA_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_rb8   = wd_q[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [31:0]   w_imm   = wd_q[0 +: ISA_IMM_WIDTH];
+  wire [6:0]    w_dec   = isa_decode(w_opc);   // {known, unit, uses: imm rb ra rd}
+  wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
+                          (w_opc != OP_SUB || HAS_SUB != 0) &&
+                          (w_dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+  wire          w_legal = w_dec[6] && w_built && reg_ok(w_dec[0], w_rd8) &&
+                          reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
+                          (w_dec[3] || w_imm == 32'd0) &&
+                          (!w_endi || w_imm < IMEM_DEPTH) &&
+                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > wa_q));
+  assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
+                  w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
+
   wire          avalid;     // a fetched word arrives (fetch step, below)
   wire [CW-1:0] actx;       // ... for this context
   wire [63:0]   aword;
+  wire [SW-1:0] asdec;      // ... its stored decoded bits
   wire [AW-1:0] apc;
   wire [NC-1:0] arriving;   // ... one-hot
   wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
   wire [2*NC-1:0] wslot;    // the slot the arriving word is written into
-  wire [DW-1:0] adec;
-  wire [7:0]    a_opc   = aword[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire          a_endi  = a_opc == OP_ENDI;
-  wire          a_beq   = a_opc == OP_BEQ;
-  wire          a_halt  = a_opc == OP_HALT;
+  wire          a_endi  = asdec[2];
+  wire          a_beq   = asdec[1];
+  wire          a_halt  = asdec[0];
   wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
-  wire [7:0]    a_rd8   = aword[ISA_RD_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    a_ra8   = aword[ISA_RA_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    a_rb8   = aword[ISA_RB_LSB +: ISA_REG_WIDTH];
-  wire [31:0]   a_imm   = aword[0 +: ISA_IMM_WIDTH];
-  wire [6:0]    a_dec   = isa_decode(a_opc);   // {known, unit, uses: imm rb ra rd}
-  wire          a_built = (a_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
-                          (a_opc != OP_SUB || HAS_SUB != 0) &&
-                          (a_dec[5:4] != UNIT_MUL || HAS_MUL != 0);
-  wire          a_legal = a_dec[6] && a_built && reg_ok(a_dec[0], a_rd8) &&
-                          reg_ok(a_dec[1], a_ra8) && reg_ok(a_dec[2], a_rb8) &&
-                          (a_dec[3] || a_imm == 32'd0) &&
-                          (!a_endi || a_imm < IMEM_DEPTH) &&
-                          (!a_beq || (a_imm < IMEM_DEPTH && a_imm[AW-1:0] > apc));
-  // (ovf: issuing it would run off the end of the memory: not a halt or an
-  // endi, which leave or jump, at the last address)
-  assign adec = {a_legal, a_dec[2], a_dec[1], a_dec[0], a_dec[5:4], a_opc == OP_SUB,
-                 a_opc == OP_LI, a_endi, a_beq, a_halt, a_atend && !a_halt && !a_endi};
+  wire [DW-1:0] adec    = {!asdec[SW-1], asdec[SW-2:0], a_atend && !a_halt && !a_endi};
 
   // ---- ready step: the head of every queue ---------------------------------
   // Each queue entry carries three wait bits, one per operand field (ra,
@@ -511,13 +530,13 @@ module fp3_scheduler #(
   // memory a cycle later, and the word is registered after the memory
   // (whose output is slow) and arrives a cycle later; a context has one
   // word in flight, from its grant to its arrival.
-  fp_pipe #(.WIDTH(CW + AW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
+  fp_pipe #(.WIDTH(CW + AW + SW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
     .valid_i (fvalid_q),
-    .data_i  ({fctx_q, fpcq_q, imem_word}),
+    .data_i  ({fctx_q, fpcq_q, imem_sdec, imem_word}),
     .valid_o (avalid),
-    .data_o  ({actx, apc, aword})
+    .data_o  ({actx, apc, asdec, aword})
   );
   assign arriving = onehot(avalid, actx);
   wire          fread;      // the memory reads for context fr (grant fr1)
