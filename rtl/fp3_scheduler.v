@@ -526,23 +526,24 @@ module fp3_scheduler #(
   // A context may fetch when it has room for the word (an entry free, not
   // counting one it may issue now: that would put the arbiter in front of
   // the memory address) and no read in flight.
-  // FETCH_STAGE: the fetch grant is registered and its address goes to the
-  // memory a cycle later, and the word is registered after the memory
-  // (whose output is slow) and arrives a cycle later; a context has one
-  // word in flight, from its grant to its arrival.
-  fp_pipe #(.WIDTH(CW + AW + SW + 64), .DEPTH(FETCH_STAGE)) u_arrive (
+  // FETCH_STAGE: the fetch grant is registered, the granted context's
+  // fetch PC is selected in the next cycle and registered (fpcq_q), and
+  // the memory reads it in the cycle after that; the word arrives from
+  // the memory's output register, three cycles after the grant.  A
+  // context has one word in flight, from its grant to its arrival.
+  fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_arrive (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
     .valid_i (fvalid_q),
-    .data_i  ({fctx_q, fpcq_q, imem_sdec, imem_word}),
+    .data_i  ({fctx_q, fpcq_q}),
     .valid_o (avalid),
-    .data_o  ({actx, apc, asdec, aword})
+    .data_o  ({actx, apc})
   );
+  assign {asdec, aword} = {imem_sdec, imem_word};
   assign arriving = onehot(avalid, actx);
-  wire          fread;      // the memory reads for context fr (grant fr1)
+  wire          fread;      // a fetch granted (FETCH_STAGE: in the last cycle) for fr1
   wire [NC-1:0] fr1;
-  wire [NC-1:0] in_flight = arriving | onehot(fvalid_q, fctx_q) |
-                            ((FETCH_STAGE != 0 && fread) ? fr1 : {NC{1'b0}});
+  reg  [NC-1:0] in_flight;  // granted a fetch, the word not yet in its queue
   wire [NC-1:0] full;       // both slots hold a word
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
@@ -564,21 +565,22 @@ module fp3_scheduler #(
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
   wire [NC-1:0] fgnt  = rr_pick(fx, fd);
-  // The granted context's fetch PC, selected by the one-hot grant, goes
-  // to the memory with the grant (FETCH_STAGE: both registered).
-  reg [AW-1:0] fpc_sel;
-  always @(*) begin
-    fpc_sel = {AW{1'b0}};
-    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fgnt[q]}} & fpcs[q*AW +: AW]);
-  end
-  fp_pipe #(.WIDTH(NC + AW), .DEPTH(FETCH_STAGE)) u_fgrant (
+  fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
     .valid_i (fetch),
-    .data_i  ({fgnt, fpc_sel}),
+    .data_i  (fgnt),
     .valid_o (fread),
-    .data_o  ({fr1, fetch_addr})
+    .data_o  (fr1)
   );
+  // The granted context's fetch PC, selected by the one-hot grant (fr1):
+  // the memory's address, or (FETCH_STAGE) registered first, in fpcq_q.
+  reg [AW-1:0] fpc_sel;
+  always @(*) begin
+    fpc_sel = {AW{1'b0}};
+    for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
+  end
+  assign fetch_addr = FETCH_STAGE != 0 ? fpcq_q : fpc_sel;
   wire [CW-1:0] fr = encode(fr1);
 
   // The arriving word decides where its context fetches next.
@@ -667,6 +669,7 @@ module fp3_scheduler #(
       bwait_q  <= {NC{1'b0}};
       ready_q  <= {NC{1'b0}};
       fr_q     <= {(2*NC){1'b0}};
+      in_flight <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       quiet_q  <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
@@ -713,10 +716,12 @@ module fp3_scheduler #(
       ghigh_q <= ghigh_d;
       rh_q    <= ready_d & ~gone & ghigh_d;
 
-      // The word read now arrives next cycle (FETCH_STAGE: the one after).
+      // The word read now arrives next cycle (FETCH_STAGE: the PC is
+      // read in the next cycle, the word arrives in the one after).
       fvalid_q <= fread;
       fctx_q   <= fr;
-      fpcq_q   <= fetch_addr;
+      fpcq_q   <= fpc_sel;
+      in_flight <= (in_flight | (fetch ? fgnt : {NC{1'b0}})) & ~arriving;
       if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
 
       if (!idle_i || issue_o)      quiet_q <= 8'd0;
