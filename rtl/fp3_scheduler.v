@@ -178,8 +178,9 @@ module fp3_scheduler #(
   reg [7:0]    quiet_q;             // cycles without busy flag or issue, to DRAIN
 
   // ---- instruction memory --------------------------------------------------
-  // A block RAM: the address presented in cycle t is read at the edge
-  // ending cycle t, the word is here in cycle t + 1.  Each word is stored
+  // A block RAM (FETCH_STAGE: LUT RAM, whose data leave a flip-flop): the
+  // address presented in cycle t is read at the edge ending cycle t, the
+  // word is here in cycle t + 1.  Each word is stored
   // with its decoded bits (SW, below), decided as it is written: the
   // host's write is registered, decoded and written a cycle later (a run
   // starts two cycles after a write at the earliest).  Entries never
@@ -197,7 +198,7 @@ module fp3_scheduler #(
     wa_q <= imem_waddr_i;
     wd_q <= imem_wdata_i;
   end
-  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64)) u_imem (
+  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .LUT_RAM(FETCH_STAGE)) u_imem (
     .clk_i   (clk_i),
     .we_i    (we_q),
     .waddr_i (wa_q),
@@ -303,9 +304,9 @@ module fp3_scheduler #(
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
   // A word's wait bits are found over two cycles: in the cycle it arrives
   // (a), the flags of its fields are looked up (in every context's bank:
-  // lk_q) and this cycle's changes to them are compared (freed and
-  // pending destination: aw_q; its context's head granted now: by_q),
-  // all registered; in cycle a + 1, when it is in its slot (marked fresh:
+  // lk_q) and this cycle's changes to them are compared (freed: aw_q;
+  // pending destinations: pd_q; its context's head's destination: hw_q,
+  // taken if that head is granted now, gone_q), all registered; in cycle a + 1, when it is in its slot (marked fresh:
   // fr_q), they are combined.  So no lookup, compare and queue update
   // share a cycle.
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
@@ -313,12 +314,13 @@ module fp3_scheduler #(
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
   wire          iss_dst = PICK_STAGES != 0 && issue_o && issue_unit_o != UNIT_NONE;
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
-  reg  [5:0]    aw_q;             // {pending, freed} in cycle a, per field
+  reg  [2:0]    aw_q;             // freed in cycle a, per field
+  reg  [NC-1:0] gone_q;           // the grant of the last cycle
   wire [2:0]    a_freed = {`FP3_FREED({actx, a_rd}), `FP3_FREED({actx, a_rb}),
                            `FP3_FREED({actx, a_ra})};
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
-  always @(posedge clk_i) aw_q <= {a_pend, a_freed};
+  always @(posedge clk_i) aw_q <= a_freed;
   genvar c, e;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -340,24 +342,27 @@ module fp3_scheduler #(
       // The arriving word's lookup in this context's bank (used if it is
       // this context's word), and the head, if granted now, making its
       // destination busy for the entries behind it: the one in the queue
-      // and an arriving word.  With PICK_STAGES = 2, the head granted in
-      // the last cycle (destination rdg_q, pg_q: it writes one) sets its
-      // flag only when it issues, in the next cycle: an arriving word
-      // waits for it too.
-      reg  [2:0]    lk_q, by_q;
+      // and an arriving word (the compare with the head's destination,
+      // hw_q, is registered, and the grant is taken in the next cycle
+      // from gone_q).  With PICK_STAGES = 2, the head granted in the
+      // last cycle (destination rdg_q, pg_q: it writes one) sets its flag
+      // only when it issues, in the next cycle: an arriving word waits
+      // for it too.  That and the destination in the issue register
+      // (a_pend) are kept together, in pd_q.
+      reg  [2:0]    lk_q, hw_q, pd_q;
       reg           pg_q;
       reg  [IW-1:0] rdg_q;
       wire          pgv = PICK_STAGES == 2 && pg_q;
       always @(posedge clk_i) begin
         lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
-        by_q  <= ({3{wrh && gone[c]}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh}) |
-                 ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
+        hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
+        pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
         pg_q  <= wrh && gone[c] && running_o;
         rdg_q <= rdh;
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
-      wire [2:0] sj = (lk_q & ~aw_q[2:0]) | aw_q[5:3] | by_q;
+      wire [2:0] sj = (lk_q & ~aw_q) | pd_q | (hw_q & {3{gone_q[c]}});
 
       for (e = 0; e < 2; e = e + 1) begin : g_slot
         localparam integer I = 2 * c + e;       // this slot
@@ -472,7 +477,6 @@ module fp3_scheduler #(
   // registered (PICK_STAGES = 2; the granted word stays in its slot for a
   // cycle: the next word to arrive takes the other slot or, if the queue
   // is empty, the new head's).
-  reg  [NC-1:0] gone_q;
   reg           grant_q;
   reg  [CW-1:0] g_q;
   always @(posedge clk_i) begin

@@ -255,9 +255,9 @@ module tb_fp3 #(
       // The RAM of the write-back port that wrote it last (the LVT).
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg = 32'd0;
-      else if (dut.u_regs.lvt_q[x] == 2'd0)   dbg_reg = dut.u_regs.u_ram00.mem[x];
-      else if (dut.u_regs.lvt_q[x] == 2'd1)   dbg_reg = dut.u_regs.u_ram10.mem[x];
-      else                                     dbg_reg = dut.u_regs.u_ram20.mem[x];
+      else if (dut.u_regs.lvt_q[x] == 2'd0)   dbg_reg = dut.u_regs.u_ram00.g_any.mem[x];
+      else if (dut.u_regs.lvt_q[x] == 2'd1)   dbg_reg = dut.u_regs.u_ram10.g_any.mem[x];
+      else                                     dbg_reg = dut.u_regs.u_ram20.g_any.mem[x];
     end
   endfunction
 
