@@ -14,8 +14,11 @@
 // to the arbiter (the long path of a one-cycle design):
 //
 //   fetch   One instruction-memory read per cycle, for one context chosen
-//           round-robin among those with room in their two-entry queue
-//           and no read in flight.  The fetch PC follows the words as they
+//           round-robin among those with room in their two-entry queue (a
+//           ring of two slots and a head pointer, so that a grant moves no
+//           word) and no read in flight.  Words are decoded as they are
+//           written into the memory, and their decoded bits are stored
+//           beside them.  The fetch PC follows the words as they
 //           arrive: after an endi it is the loop target (the last endi's
 //           extra words are dropped when the context stops).  Behind a
 //           beq its context fetches nothing until the branch is resolved:
@@ -71,12 +74,14 @@
 //   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
 //                 missing one is illegal
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
-//   FETCH_STAGE   0 or 1: registers between the fetch grant and the
-//                 instruction memory, and between the memory and the
-//                 queues (the word arrives two cycles later)
+//   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
+//                 selected and registered before the instruction memory,
+//                 which is LUT RAM (the word arrives two cycles later)
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
+// Program writes (imem_*) land in the memory a cycle later (registered and
+// decoded first).
 // Register indices towards the register file are {context, register}.
 `default_nettype none
 module fp3_scheduler #(
@@ -283,7 +288,8 @@ module fp3_scheduler #(
   //          in this cycle or (PICK_STAGES = 2) in the last one;
   //          later: when the head ahead of it is granted and writes it;
   //   clear  when the register's write-back is announced (ahead_*_i; the
-  //          flag clears in the same cycle).
+  //          flag clears in the same cycle), compared in the cycle before
+  //          with the announcement to come (early_*_i) and registered.
   // An announcement in this cycle counts as free already.  So the head is
   // ready when it is legal and no used field waits: sources (RAW) and the
   // destination (WAW).  Registered: valid for the pick in the next cycle.
