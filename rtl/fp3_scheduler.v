@@ -312,9 +312,9 @@ module fp3_scheduler #(
   // (a), the flags of its fields are looked up (in every context's bank:
   // lk_q) and this cycle's changes to them are compared (freed: aw_q;
   // pending destinations: pd_q; its context's head's destination: hw_q,
-  // taken if that head is granted now, gone_q), all registered; in cycle a + 1, when it is in its slot (marked fresh:
-  // fr_q), they are combined.  So no lookup, compare and queue update
-  // share a cycle.
+  // taken if that head is granted now, gone_q), all registered; in cycle
+  // a + 1, when it is in its slot (marked fresh: fr_q), they are combined.
+  // So no lookup, compare and queue update share a cycle.
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
@@ -740,18 +740,9 @@ module fp3_scheduler #(
   end
 
   always @(posedge clk_i) begin
-    if (rst_i) begin
-      cycles_o <= 64'd0;
-      issued_o <= 64'd0;
-      stalls_o <= 64'd0;
-      for (k = 0; k < NC; k = k + 1) begin
-        sdone_q[k] <= 32'd0;
-        err_q[k]   <= ERR_NONE;
-        epc_q[k]   <= {AW{1'b0}};
-      end
-    end else if (start_q) begin
-      // The run's first cycle (counted; no issue or stall in it).
-      cycles_o <= 64'd1;
+    if (rst_i || start_q) begin
+      // Reset, or the run's first cycle (counted; no issue or stall in it).
+      cycles_o <= {63'd0, !rst_i};
       issued_o <= 64'd0;
       stalls_o <= 64'd0;
       for (k = 0; k < NC; k = k + 1) begin
