@@ -221,18 +221,14 @@ module fp3_scheduler #(
     end
   endfunction
 
-  // Index x's write-back is announced in this cycle.  A plain expression,
-  // not a function: a continuous assignment is re-evaluated only when its
-  // operands change, and a function's body is not an operand (Icarus).
-`define FP3_FREED(x) \
-  ((ahead_valid_i[0] && ahead_idx_i[0*XW +: XW] == (x)) || \
-   (ahead_valid_i[1] && ahead_idx_i[1*XW +: XW] == (x)) || \
-   (ahead_valid_i[2] && ahead_idx_i[2*XW +: XW] == (x)))
-  // ... is announced in the next cycle.
-`define FP3_FREED_NEXT(x) \
-  ((early_valid_i[0] && early_idx_i[0*XW +: XW] == (x)) || \
-   (early_valid_i[1] && early_idx_i[1*XW +: XW] == (x)) || \
-   (early_valid_i[2] && early_idx_i[2*XW +: XW] == (x)))
+  // Index x is among the three write-backs announced on valid v, indices
+  // i: ahead_*_i (this cycle) or early_*_i (the next).  A plain
+  // expression, not a function: a continuous assignment is re-evaluated
+  // only when its operands change, and a function's body is not an
+  // operand (Icarus).
+`define FP3_FREED(v, i, x) \
+  ((v[0] && i[0*XW +: XW] == (x)) || (v[1] && i[1*XW +: XW] == (x)) || \
+   (v[2] && i[2*XW +: XW] == (x)))
 
   // ---- decode, once, as a word is written ---------------------------------
   // Everything the ready and issue steps need of a word beyond its raw
@@ -322,8 +318,9 @@ module fp3_scheduler #(
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [2:0]    aw_q;             // freed in cycle a, per field
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
-  wire [2:0]    a_freed = {`FP3_FREED({actx, a_rd}), `FP3_FREED({actx, a_rb}),
-                           `FP3_FREED({actx, a_ra})};
+  wire [2:0]    a_freed = {`FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_rd}),
+                           `FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_rb}),
+                           `FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_ra})};
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
   always @(posedge clk_i) aw_q <= a_freed;
@@ -372,7 +369,6 @@ module fp3_scheduler #(
 
       for (e = 0; e < 2; e = e + 1) begin : g_slot
         localparam integer I = 2 * c + e;       // this slot
-        localparam integer O = 2 * c + 1 - e;   // the other one
         wire [63:0]   insn = w_q[I];
         wire [IW-1:0] rd = insn[ISA_RD_LSB +: IW];
         wire [IW-1:0] ra = insn[ISA_RA_LSB +: IW];
@@ -394,18 +390,15 @@ module fp3_scheduler #(
         wire [IW-1:0] nrd = wslot[I] ? a_rd : rd;
         reg  [2:0]    fq_q;
         always @(posedge clk_i)
-          fq_q <= {`FP3_FREED_NEXT({CTX, nrd}), `FP3_FREED_NEXT({CTX, nrb}),
-                   `FP3_FREED_NEXT({CTX, nra})};
+          fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
+                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, nrb}),
+                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, nra})};
         // The wait bits, with this cycle's announcements taken off.
         wire [2:0] s = (fr_q[I] ? sj : s_q[I]) & ~fq_q;
         assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
         // The other slot, if it is the head and granted now, writes its
         // destination: this word waits for it.
-        wire [63:0]   wo  = w_q[O];
-        wire [IW-1:0] rdo = wo[ISA_RD_LSB +: IW];
-        wire          unused_wo = &{1'b0, wo};
-        wire [2:0] by = {3{x_q[O][7:6] != UNIT_NONE && gone[c] && hp != e}} &
-                        {rd == rdo, rb == rdo, ra == rdo};
+        wire [2:0] by = {3{wrh && gone[c] && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
         assign s_d[I*3 +: 3] = s | by;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
@@ -416,7 +409,6 @@ module fp3_scheduler #(
     end
   endgenerate
 `undef FP3_FREED
-`undef FP3_FREED_NEXT
 
   // ---- round-robin pick: the first requester after the last granted -------
   // The contexts after the last granted one are kept as a mask (a register,
