@@ -32,28 +32,38 @@
 //
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
 //                    of the three RAMs' data (one stage; the default)
-//   READ_STAGES = 2  cycle t + 1: the RAMs' data registered, the LVT read
+//   READ_STAGES = 3  cycle t + 1: the RAMs' data registered, the LVT read
 //                    (its first half in cycle t) and the bypass compare
-//                    against the writes of cycles t and t + 1,
-//                    registered; cycle t + 2: one select (for clock rate:
-//                    no RAM output, LVT read or compare sits in front of
-//                    the select)
+//                    against the writes of cycles t and t + 1, and against
+//                    the write-backs of cycle t + 2 (announced a cycle
+//                    ahead, nx*_i), as a one-hot choice, registered;
+//                    cycle t + 2: one AND-OR of the seven candidate words
+//                    (three RAMs, the bypass, the three write-back ports),
+//                    registered; cycle t + 3: the operands leave those
+//                    flip-flops (for clock rate: no RAM output, LVT read
+//                    or compare sits in front of the select, and nothing
+//                    in front of the operands' users)
 //
 // Parameters
 //   ENTRIES      registers in all, 2**XW
 //   XW           index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
-//   READ_STAGES  1 or 2, see above
+//   READ_STAGES  1 or 3, see above
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
 //     (no run in progress): the host's register read data is ra_data_o
-//     READ_STAGES cycles later.
+//     READ_STAGES cycles later, or earlier on ha_data_o.
+//   ha_data_o: port A's read data for the host, in cycle t + 1
+//     (READ_STAGES = 1: ra_data_o) or t + 2 (READ_STAGES = 3: the value
+//     ra_data_o's register takes), so that host reads take 1 or 2 cycles.
 //   busy_o: every busy flag; idle_o: none set.
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
 //     clears the register's busy flag.  A register announced in the cycle
 //     a new instruction claims it stays busy: the set wins.
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
+//   nx{0,1,2}_*: the write-back ports' valid and index of the next cycle
+//     (fp3_wb_tag next_*; read with READ_STAGES = 3).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
@@ -86,10 +96,17 @@ module fp3_regfile #(
   input  wire               wb2_valid_i,
   input  wire [XW-1:0]      wb2_idx_i,
   input  wire [31:0]        wb2_data_i,
+  input  wire               nx0_valid_i,
+  input  wire [XW-1:0]      nx0_idx_i,
+  input  wire               nx1_valid_i,
+  input  wire [XW-1:0]      nx1_idx_i,
+  input  wire               nx2_valid_i,
+  input  wire [XW-1:0]      nx2_idx_i,
   input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
+  output wire [31:0]        ha_data_o,
   output wire               idle_o
 );
   reg [ENTRIES-1:0] busy_q;
@@ -165,25 +182,56 @@ module fp3_regfile #(
   ((v[0] && (ia) == (x)) ? {1'b1, da} : \
    (v[1] && (ib) == (x)) ? {1'b1, db} : \
    (v[2] && (ic) == (x)) ? {1'b1, dc} : {33{1'b0}})
+  // Cycle t + 2's choice for index x (READ_STAGES = 3), one-hot in the
+  // order of pick7's words: a write-back of the next cycle (newest first),
+  // else the bypass data (byp: a write of cycle t or t + 1), else the RAM
+  // the LVT names.
+  function [6:0] read_sel;
+    input [XW-1:0] x;
+    input          byp;
+    input [1:0]    lvt;
+    begin
+      if      (nx0_valid_i && nx0_idx_i == x) read_sel = 7'b1000000;
+      else if (nx1_valid_i && nx1_idx_i == x) read_sel = 7'b0100000;
+      else if (nx2_valid_i && nx2_idx_i == x) read_sel = 7'b0010000;
+      else if (byp)                           read_sel = 7'b0001000;
+      else if (lvt == 2'd0)                   read_sel = 7'b0000100;
+      else if (lvt == 2'd1)                   read_sel = 7'b0000010;
+      else                                    read_sel = 7'b0000001;
+    end
+  endfunction
+
+  // The word of seven (w[32k +: 32]) that the one-hot sel[k] names.
+  function [31:0] pick7;
+    input [6:0]   sel;
+    input [223:0] w;
+    integer k;
+    begin
+      pick7 = 32'd0;
+      for (k = 0; k < 7; k = k + 1) pick7 = pick7 | ({32{sel[k]}} & w[32*k +: 32]);
+    end
+  endfunction
+
   wire [32:0] a_byp1 = `FP3_BYPASS(a_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
   wire [32:0] b_byp1 = `FP3_BYPASS(b_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
 
   generate
     if (READ_STAGES == 1) begin : g_read1
       wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
+      wire unused_nx   = &{1'b0, nx0_valid_i, nx0_idx_i, nx1_valid_i, nx1_idx_i,
+                           nx2_valid_i, nx2_idx_i};   // no stage sees a later write
       assign ra_data_o = a_byp1[32] ? a_byp1[31:0] :
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
       assign rb_data_o = b_byp1[32] ? b_byp1[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
-    end else if (READ_STAGES == 2) begin : g_read2
+      assign ha_data_o = ra_data_o;
+    end else if (READ_STAGES == 3) begin : g_read3
       // Cycle t + 1 also sees the writes of cycle t + 1 (newer: they win).
       wire [2:0]  wv1 = {w2_valid, wb1_valid_i, wb0_valid_i};
       wire [32:0] a_byp2 = `FP3_BYPASS(a_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
                                        wb0_data_i, wb1_data_i, w2_data);
       wire [32:0] b_byp2 = `FP3_BYPASS(b_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
                                        wb0_data_i, wb1_data_i, w2_data);
-      reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
-      reg  [1:0]  a_lvt_q, b_lvt_q;
       // The LVT read in two halves: in the issue cycle the low index bits
       // pick an entry in every group of 16, in the next the high bits pick
       // the group.  The entries are then a cycle old: a register written
@@ -207,7 +255,16 @@ module fp3_regfile #(
         assign b_lvt2 = b_lvt;
         wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
       end
-      reg  [32:0] a_byp_q, b_byp_q;
+      // Cycle t + 1, registered for cycle t + 2: the RAMs' data, the
+      // bypass data of the writes of cycles t and t + 1, and a one-hot
+      // choice among them and the write-backs of cycle t + 2 (their
+      // indices come a cycle ahead, nx*_i; the newest wins).  Cycle t + 2
+      // is then one AND-OR of seven registered words, registered again:
+      // the operands leave flip-flops in cycle t + 3.
+      reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
+      reg  [31:0] a_bd_q, b_bd_q;
+      reg  [6:0]  a_sel_q, b_sel_q;
+      reg  [31:0] a_out_q, b_out_q;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
         qa1_q   <= q10;
@@ -215,18 +272,25 @@ module fp3_regfile #(
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_lvt_q <= a_lvt2;
-        b_lvt_q <= b_lvt2;
-        a_byp_q <= a_byp2[32] ? a_byp2 : a_byp1;
-        b_byp_q <= b_byp2[32] ? b_byp2 : b_byp1;
+        a_bd_q  <= a_byp2[32] ? a_byp2[31:0] : a_byp1[31:0];
+        b_bd_q  <= b_byp2[32] ? b_byp2[31:0] : b_byp1[31:0];
+        a_sel_q <= read_sel(a_idx_q, a_byp2[32] || a_byp1[32], a_lvt2);
+        b_sel_q <= read_sel(b_idx_q, b_byp2[32] || b_byp1[32], b_lvt2);
       end
-      assign ra_data_o = a_byp_q[32] ? a_byp_q[31:0] :
-                         (a_lvt_q == 2'd0) ? qa0_q : (a_lvt_q == 2'd1) ? qa1_q : qa2_q;
-      assign rb_data_o = b_byp_q[32] ? b_byp_q[31:0] :
-                         (b_lvt_q == 2'd0) ? qb0_q : (b_lvt_q == 2'd1) ? qb1_q : qb2_q;
+      wire [31:0] a_nx = pick7(a_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, a_bd_q,
+                                         qa0_q, qa1_q, qa2_q});
+      wire [31:0] b_nx = pick7(b_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, b_bd_q,
+                                         qb0_q, qb1_q, qb2_q});
+      always @(posedge clk_i) begin
+        a_out_q <= a_nx;
+        b_out_q <= b_nx;
+      end
+      assign ra_data_o = a_out_q;
+      assign rb_data_o = b_out_q;
+      assign ha_data_o = a_nx;
     end else begin : g_bad_read_stages
-      // Elaboration error on purpose: READ_STAGES must be 1 or 2.
-      fp3_regfile_error_READ_STAGES_must_be_1_or_2 u_error ();
+      // Elaboration error on purpose: READ_STAGES must be 1 or 3.
+      fp3_regfile_error_READ_STAGES_must_be_1_or_3 u_error ();
     end
   endgenerate
 `undef FP3_BYPASS
@@ -243,7 +307,8 @@ module fp3_regfile #(
       localparam [XW-1:0] IDX = r[XW-1:0];
       wire hit0 = wb0_valid_i && wb0_idx_i == IDX;
       wire hit1 = wb1_valid_i && wb1_idx_i == IDX;
-      wire hit2 = w2_valid    && w2_idx    == IDX;
+      // (Port 2's two writers compared apart: no multiplexer in front.)
+      wire hit2 = (wb2_valid_i && wb2_idx_i == IDX) || (hwe_q && hidx_q == IDX);
       wire clr  = (clr0_valid_i && clr0_idx_i == IDX) ||
                   (clr1_valid_i && clr1_idx_i == IDX) ||
                   (clr2_valid_i && clr2_idx_i == IDX);

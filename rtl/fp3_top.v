@@ -16,7 +16,7 @@
 // reads as zero while running (the register file's read ports belong to
 // the issue pipeline then).
 //
-// Pipeline of one operation (P = 2 FMAX_PIPE, R = 1 + FMAX_PIPE):
+// Pipeline of one operation (P = 2 FMAX_PIPE, R = 1 + 2 FMAX_PIPE):
 //   pick     (P = 2 only) cycle t - 2: the scheduler grants it, the grant
 //            registered; t - 1: its fields are picked, registered
 //   issue    cycle t: its register addresses go to the register file
@@ -30,7 +30,7 @@
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
 // grant before the instruction memory and the word after it (fp3_scheduler
 // FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
-// beq resolves 5 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// beq resolves 6 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
 // run takes a few cycles more, a context fetches at most every fourth
 // cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
 // MUL_LATENCY of at least 3.
@@ -104,7 +104,8 @@ module fp3_top #(
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
   localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
-  localparam integer READ  = 1 + FMAX_PIPE;  // operand-read stages
+  localparam integer READ  = 1 + 2 * FMAX_PIPE;  // operand-read stages
+  localparam integer HREAD = 1 + FMAX_PIPE;      // host read cycles
   localparam integer AHEAD = PICK + READ;    // write-back announcement
   // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
@@ -177,6 +178,8 @@ module fp3_top #(
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
   wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
+  wire          addn_valid, muln_valid, movn_valid;   // write-backs of the next cycle
+  wire [XW-1:0] addn_idx, muln_idx, movn_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
@@ -225,7 +228,7 @@ module fp3_top #(
   );
 
   // ---- register banks ------------------------------------------------------
-  wire [31:0] ra_data, rb_data;
+  wire [31:0] ra_data, rb_data, ha_data;
 
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
@@ -254,10 +257,17 @@ module fp3_top #(
     .wb2_valid_i  (mov_valid),
     .wb2_idx_i    (mov_idx),
     .wb2_data_i   (mov_data),
+    .nx0_valid_i  (addn_valid),
+    .nx0_idx_i    (addn_idx),
+    .nx1_valid_i  (muln_valid),
+    .nx1_idx_i    (muln_idx),
+    .nx2_valid_i  (movn_valid),
+    .nx2_idx_i    (movn_idx),
     .host_sel_i   (host_idle),
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
+    .ha_data_o    (ha_data),
     .idle_o       (idle)
   );
 
@@ -287,6 +297,8 @@ module fp3_top #(
     .early_idx_o   (adde_idx),
     .ahead_valid_o (adda_valid),
     .ahead_idx_o   (adda_idx),
+    .next_valid_o  (addn_valid),
+    .next_idx_o    (addn_idx),
     .wb_valid_o    (add_valid),
     .wb_idx_o      (add_idx)
   );
@@ -299,6 +311,8 @@ module fp3_top #(
     .early_idx_o   (mule_idx),
     .ahead_valid_o (mula_valid),
     .ahead_idx_o   (mula_idx),
+    .next_valid_o  (muln_valid),
+    .next_idx_o    (muln_idx),
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
   );
@@ -311,6 +325,8 @@ module fp3_top #(
     .early_idx_o   (move_idx),
     .ahead_valid_o (mova_valid),
     .ahead_idx_o   (mova_idx),
+    .next_valid_o  (movn_valid),
+    .next_idx_o    (movn_idx),
     .wb_valid_o    (mov_valid),
     .wb_idx_o      (mov_idx)
   );
@@ -395,11 +411,11 @@ module fp3_top #(
     endcase
   end
   // A register of the window comes straight from the register file's read
-  // port A, which answers READ cycles after the address; the other
-  // registers are delayed to match.
+  // port A (ha_data), which answers HREAD cycles after the address; the
+  // other registers are delayed to match.
   wire [31:0] rdata_q;
   wire        reg_read_q;
-  fp_pipe #(.WIDTH(32), .DEPTH(READ)) u_host_read (
+  fp_pipe #(.WIDTH(32), .DEPTH(HREAD)) u_host_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (win_reg && reg_ok && host_idle),
@@ -407,7 +423,7 @@ module fp3_top #(
     .valid_o (reg_read_q),
     .data_o  (rdata_q)
   );
-  assign host_rdata_o = reg_read_q ? ra_data : rdata_q;
+  assign host_rdata_o = reg_read_q ? ha_data : rdata_q;
 
   // ---- outputs -------------------------------------------------------------
   assign running_o       = running;

@@ -24,6 +24,9 @@
 //   early_valid_o, early_idx_o  ... will be written back in AHEAD + 1
 //                   cycles (with ISSUE_TO_WB = AHEAD + 1, valid_i, idx_i)
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
+//   next_valid_o, next_idx_o    ... is written back next cycle (the
+//                               register file's last read stage looks a
+//                               cycle ahead: fp3_regfile nx*_i)
 //   wb_valid_o, wb_idx_o        ... is written back this cycle
 `default_nettype none
 module fp3_wb_tag #(
@@ -39,6 +42,8 @@ module fp3_wb_tag #(
   output wire [XW-1:0] early_idx_o,
   output wire          ahead_valid_o,
   output wire [XW-1:0] ahead_idx_o,
+  output wire          next_valid_o,
+  output wire [XW-1:0] next_idx_o,
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
@@ -58,11 +63,19 @@ module fp3_wb_tag #(
     .valid_o (ahead_valid_o),
     .data_o  (ahead_idx_o)
   );
-  fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD)) u_to_wb (
+  fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD - 1)) u_to_next (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (ahead_valid_o),
     .data_i  (ahead_idx_o),
+    .valid_o (next_valid_o),
+    .data_o  (next_idx_o)
+  );
+  fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_wb (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (next_valid_o),
+    .data_i  (next_idx_o),
     .valid_o (wb_valid_o),
     .data_o  (wb_idx_o)
   );
