@@ -299,16 +299,44 @@ module fp3_regfile #(
   assign idle_o = (busy_q == {ENTRIES{1'b0}});
 
   // ---- LVT and busy flags, one register at a time --------------------------
+  // This cycle's writes per port, one-hot over the registers.  With
+  // READ_STAGES = 3 they are decoded a cycle ahead (from nx*_i and the
+  // host's unregistered write) and registered, so that no index compare
+  // sits in front of the LVT; port 2's two writers are decoded apart.
+  function [ENTRIES-1:0] dec;   // one-hot of idx if valid
+    input          valid;
+    input [XW-1:0] idx;
+    integer d;
+    begin
+      for (d = 0; d < ENTRIES; d = d + 1) dec[d] = valid && idx == d[XW-1:0];
+    end
+  endfunction
+  wire [ENTRIES-1:0] h0, h1, h2;
+  generate
+    if (READ_STAGES == 3) begin : g_hit_ahead
+      reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
+      always @(posedge clk_i) begin
+        h0_q <= dec(!rst_i && nx0_valid_i, nx0_idx_i);
+        h1_q <= dec(!rst_i && nx1_valid_i, nx1_idx_i);
+        h2_q <= dec(!rst_i && nx2_valid_i, nx2_idx_i) | dec(!rst_i && host_we_i, host_idx_i);
+      end
+      assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
+    end else begin : g_hit_now
+      assign h0 = dec(wb0_valid_i, wb0_idx_i);
+      assign h1 = dec(wb1_valid_i, wb1_idx_i);
+      assign h2 = dec(wb2_valid_i, wb2_idx_i) | dec(hwe_q, hidx_q);
+    end
+  endgenerate
+
   // The WAW stall guarantees that the write ports name distinct registers,
   // so the priority below never matters for a legal sequence.
   genvar r;
   generate
     for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
       localparam [XW-1:0] IDX = r[XW-1:0];
-      wire hit0 = wb0_valid_i && wb0_idx_i == IDX;
-      wire hit1 = wb1_valid_i && wb1_idx_i == IDX;
-      // (Port 2's two writers compared apart: no multiplexer in front.)
-      wire hit2 = (wb2_valid_i && wb2_idx_i == IDX) || (hwe_q && hidx_q == IDX);
+      wire hit0 = h0[r];
+      wire hit1 = h1[r];
+      wire hit2 = h2[r];
       wire clr  = (clr0_valid_i && clr0_idx_i == IDX) ||
                   (clr1_valid_i && clr1_idx_i == IDX) ||
                   (clr2_valid_i && clr2_idx_i == IDX);
