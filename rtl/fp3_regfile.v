@@ -150,25 +150,17 @@ module fp3_regfile #(
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
 
-  // ---- read stage: LVT choice and bypass, in cycle t + 1 -----------------
+  // ---- read stages: LVT choice and bypass --------------------------------
   // The read addresses and the write-backs of cycle t are registered; in
   // cycle t + 1 the LVT (which by then includes the writes of cycle t)
   // picks the RAM, and a write-back of cycle t to the same register (which
   // the RAM read at the same edge missed) replaces the RAM data.  Nothing
   // of this sits behind the issue arbiter in cycle t.
-  // Cycle t + 1: the index read, the writes of cycle t (they missed the
-  // RAMs' read), and the LVT entry of the index (it includes them).
   reg [XW-1:0] a_idx_q, b_idx_q;
-  reg [2:0]    wv_q;
-  reg [XW-1:0] wi0_q, wi1_q, wi2_q;
-  reg [31:0]   wd0_q, wd1_q, wd2_q;
+  reg [31:0]   wd0_q, wd1_q, wd2_q;     // the writes of cycle t
   always @(posedge clk_i) begin
     a_idx_q <= a_idx;
     b_idx_q <= rb_i;
-    wv_q    <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
-    wi0_q   <= wb0_idx_i;
-    wi1_q   <= wb1_idx_i;
-    wi2_q   <= w2_idx;
     wd0_q   <= wb0_data_i;
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
@@ -176,30 +168,6 @@ module fp3_regfile #(
   wire [1:0] a_lvt = lvt_q[a_idx_q];   // one LVT read per port
   wire [1:0] b_lvt = lvt_q[b_idx_q];
   wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
-
-  // Bypass of one write-back cycle: {hit, data} for index x.
-`define FP3_BYPASS(x, v, ia, ib, ic, da, db, dc) \
-  ((v[0] && (ia) == (x)) ? {1'b1, da} : \
-   (v[1] && (ib) == (x)) ? {1'b1, db} : \
-   (v[2] && (ic) == (x)) ? {1'b1, dc} : {33{1'b0}})
-  // Cycle t + 2's choice for index x (READ_STAGES = 3), one-hot in the
-  // order of pick7's words: a write-back of the next cycle (newest first),
-  // else the bypass data (byp: a write of cycle t or t + 1), else the RAM
-  // the LVT names.
-  function [6:0] read_sel;
-    input [XW-1:0] x;
-    input          byp;
-    input [1:0]    lvt;
-    begin
-      if      (nx0_valid_i && nx0_idx_i == x) read_sel = 7'b1000000;
-      else if (nx1_valid_i && nx1_idx_i == x) read_sel = 7'b0100000;
-      else if (nx2_valid_i && nx2_idx_i == x) read_sel = 7'b0010000;
-      else if (byp)                           read_sel = 7'b0001000;
-      else if (lvt == 2'd0)                   read_sel = 7'b0000100;
-      else if (lvt == 2'd1)                   read_sel = 7'b0000010;
-      else                                    read_sel = 7'b0000001;
-    end
-  endfunction
 
   // The word of seven (w[32k +: 32]) that the one-hot sel[k] names.
   function [31:0] pick7;
@@ -212,26 +180,57 @@ module fp3_regfile #(
     end
   endfunction
 
-  wire [32:0] a_byp1 = `FP3_BYPASS(a_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
-  wire [32:0] b_byp1 = `FP3_BYPASS(b_idx_q, wv_q, wi0_q, wi1_q, wi2_q, wd0_q, wd1_q, wd2_q);
-
   generate
     if (READ_STAGES == 1) begin : g_read1
+      // Cycle t + 1: the writes of cycle t (they missed the RAMs' read)
+      // replace the RAM data the LVT entry of the index (it includes
+      // them) names.
+      reg [2:0]    wv_q;
+      reg [XW-1:0] wi0_q, wi1_q, wi2_q;
+      always @(posedge clk_i) begin
+        wv_q  <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
+        wi0_q <= wb0_idx_i;
+        wi1_q <= wb1_idx_i;
+        wi2_q <= w2_idx;
+      end
+      // Bypass of one write-back cycle: {hit, data} for index x.
+`define FP3_BYPASS(x) \
+  ((wv_q[0] && wi0_q == (x)) ? {1'b1, wd0_q} : \
+   (wv_q[1] && wi1_q == (x)) ? {1'b1, wd1_q} : \
+   (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : {33{1'b0}})
+      wire [32:0] a_byp = `FP3_BYPASS(a_idx_q);
+      wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
+`undef FP3_BYPASS
       wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
       wire unused_nx   = &{1'b0, nx0_valid_i, nx0_idx_i, nx1_valid_i, nx1_idx_i,
                            nx2_valid_i, nx2_idx_i};   // no stage sees a later write
-      assign ra_data_o = a_byp1[32] ? a_byp1[31:0] :
+      assign ra_data_o = a_byp[32] ? a_byp[31:0] :
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
-      assign rb_data_o = b_byp1[32] ? b_byp1[31:0] :
+      assign rb_data_o = b_byp[32] ? b_byp[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
       assign ha_data_o = ra_data_o;
     end else if (READ_STAGES == 3) begin : g_read3
-      // Cycle t + 1 also sees the writes of cycle t + 1 (newer: they win).
-      wire [2:0]  wv1 = {w2_valid, wb1_valid_i, wb0_valid_i};
-      wire [32:0] a_byp2 = `FP3_BYPASS(a_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
-                                       wb0_data_i, wb1_data_i, w2_data);
-      wire [32:0] b_byp2 = `FP3_BYPASS(b_idx_q, wv1, wb0_idx_i, wb1_idx_i, w2_idx,
-                                       wb0_data_i, wb1_data_i, w2_data);
+      // Cycle t: the read indices compared with the writes of cycle t
+      // (they miss the RAMs' read) and of cycle t + 1 (nx*_i, the host's
+      // write registered), as a one-hot choice of the newest, registered.
+      // Port 2's two writers are compared apart (one of them at most
+      // writes).
+      function [5:0] byp_sel;     // {t + 1: port 0, 1, 2; t: port 0, 1, 2}
+        input [XW-1:0] x;
+        reg   [5:0]    h;
+        begin
+          h = {nx0_valid_i && nx0_idx_i == x, nx1_valid_i && nx1_idx_i == x,
+               (nx2_valid_i && nx2_idx_i == x) || (host_we_i && host_idx_i == x),
+               wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
+               (wb2_valid_i && wb2_idx_i == x) || (hwe_q && hidx_q == x)};
+          byp_sel = h & ~(h >> 1) & ~(h >> 2) & ~(h >> 3) & ~(h >> 4) & ~(h >> 5);
+        end
+      endfunction
+      reg [5:0] a_hit_q, b_hit_q;
+      always @(posedge clk_i) begin
+        a_hit_q <= rst_i ? 6'd0 : byp_sel(a_idx);
+        b_hit_q <= rst_i ? 6'd0 : byp_sel(rb_i);
+      end
       // The LVT read in two halves: in the issue cycle the low index bits
       // pick an entry in every group of 16, in the next the high bits pick
       // the group.  The entries are then a cycle old: a register written
@@ -256,11 +255,29 @@ module fp3_regfile #(
         wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
       end
       // Cycle t + 1, registered for cycle t + 2: the RAMs' data, the
-      // bypass data of the writes of cycles t and t + 1, and a one-hot
-      // choice among them and the write-backs of cycle t + 2 (their
-      // indices come a cycle ahead, nx*_i; the newest wins).  Cycle t + 2
-      // is then one AND-OR of seven registered words, registered again:
-      // the operands leave flip-flops in cycle t + 3.
+      // bypass word (a write of cycle t or t + 1, chosen by the hits of
+      // cycle t), and a one-hot choice among them and the write-backs of
+      // cycle t + 2 (their indices come a cycle ahead, nx*_i; the newest
+      // wins).  Cycle t + 2 is then one AND-OR of seven registered words,
+      // registered again: the operands leave flip-flops in cycle t + 3.
+      // Cycle t + 2's choice for index x, one-hot in the order of pick7's
+      // words: a write-back of the next cycle (newest first), else the
+      // bypass word (byp), else the RAM the LVT names.
+      function [6:0] read_sel;
+        input [XW-1:0] x;
+        input          byp;
+        input [1:0]    lvt;
+        begin
+          if      (nx0_valid_i && nx0_idx_i == x) read_sel = 7'b1000000;
+          else if (nx1_valid_i && nx1_idx_i == x) read_sel = 7'b0100000;
+          else if (nx2_valid_i && nx2_idx_i == x) read_sel = 7'b0010000;
+          else if (byp)                           read_sel = 7'b0001000;
+          else if (lvt == 2'd0)                   read_sel = 7'b0000100;
+          else if (lvt == 2'd1)                   read_sel = 7'b0000010;
+          else                                    read_sel = 7'b0000001;
+        end
+      endfunction
+      wire [191:0] bw = {wb0_data_i, wb1_data_i, w2_data, wd0_q, wd1_q, wd2_q};
       reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
       reg  [31:0] a_bd_q, b_bd_q;
       reg  [6:0]  a_sel_q, b_sel_q;
@@ -272,10 +289,10 @@ module fp3_regfile #(
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_bd_q  <= a_byp2[32] ? a_byp2[31:0] : a_byp1[31:0];
-        b_bd_q  <= b_byp2[32] ? b_byp2[31:0] : b_byp1[31:0];
-        a_sel_q <= read_sel(a_idx_q, a_byp2[32] || a_byp1[32], a_lvt2);
-        b_sel_q <= read_sel(b_idx_q, b_byp2[32] || b_byp1[32], b_lvt2);
+        a_bd_q  <= pick7({1'b0, a_hit_q}, {32'd0, bw});
+        b_bd_q  <= pick7({1'b0, b_hit_q}, {32'd0, bw});
+        a_sel_q <= read_sel(a_idx_q, |a_hit_q, a_lvt2);
+        b_sel_q <= read_sel(b_idx_q, |b_hit_q, b_lvt2);
       end
       wire [31:0] a_nx = pick7(a_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, a_bd_q,
                                          qa0_q, qa1_q, qa2_q});
@@ -293,7 +310,6 @@ module fp3_regfile #(
       fp3_regfile_error_READ_STAGES_must_be_1_or_3 u_error ();
     end
   endgenerate
-`undef FP3_BYPASS
 
   assign busy_o = busy_q;
   assign idle_o = (busy_q == {ENTRIES{1'b0}});
