@@ -4,7 +4,8 @@
 #   make test     the whole test suite (installs what is missing first)
 #   make lint     verilator --lint-only -Wall on the RTL
 #   make synth    Yosys synthesis (xc2v, xc7, ECP5), area reports
-#   make pnr      nextpnr place and route, Fmax (ECP5, iCE40)
+#   make pnr      nextpnr place and route, Fmax (ECP5, iCE40); pnr-unit:
+#                 one module alone (UNIT=, UNIT_PARAMS=)
 #   make wave     Icarus testbench and waveform
 #   make bench    benchmarks (also bench-fp, bench-parallel, bench-cosim,
 #                 bench-compile, bench-sleep)

@@ -56,3 +56,16 @@ pnr: pnr-tools $(PNR_ECP5_BASE).json \
 	@set -e; for t in $(PNR_ICE40_UNITS); do \
 	  bash scripts/pnr.sh ice40 $$t $(PNR_SYNTH_DIR)/$${t}_ice40.json $(PNR_DIR); done
 	@echo "pnr: summary in $(PNR_DIR)/pnr_summary.csv"
+
+# `make pnr-unit UNIT=MODULE [UNIT_PARAMS="NAME=VALUE ..."] [PNR_SEED=n]`:
+# one RTL module alone, its ports between flip-flops (scripts/pnr-unit.sh),
+# on the same ECP5 and clock: a block's own Fmax and critical path, to tell
+# which block limits the whole.  E.g. UNIT=fp3_regfile
+# UNIT_PARAMS="ENTRIES=256 XW=8 READ_STAGES=3" (the register file of the
+# build for clock rate).  Results in $(BUILD)/pnr-unit/.
+UNIT        ?=
+UNIT_PARAMS ?=
+.PHONY: pnr-unit
+pnr-unit: pnr-tools
+	@test -n "$(UNIT)" || { echo "make pnr-unit: name the module: UNIT=fp3_regfile (see rtl/)" >&2; exit 2; }
+	@bash scripts/pnr-unit.sh $(BUILD)/pnr-unit $(UNIT) $(UNIT_PARAMS) -- $(RTL_SRC)
