@@ -10,7 +10,7 @@
 // both are held and the B channel is free (or being emptied this cycle).
 // AR is held likewise; the read address goes to the host port for one
 // cycle, the core's registered read data is captured one cycle later (three
-// with FMAX_PIPE: a register in front of the host port, two read stages)
+// with FMAX_PIPE: a register in front of the host port, two read cycles)
 // and held on R until RREADY.  B and R stay valid, with stable payload,
 // until accepted.  Each channel takes a new transfer every second cycle
 // (reads every fourth with FMAX_PIPE).  The
@@ -164,7 +164,7 @@ module fp3_axil #(
   // ---- host-port arbitration -----------------------------------------------
   wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
   // The host port's read data arrive 1 cycle after the address, 3 with
-  // FMAX_PIPE (its input register and second read stage).
+  // FMAX_PIPE (its input register and the core's two read cycles).
   wire rd_arrive = FMAX_PIPE != 0 ? rd_pend_q[2] : rd_pend_q[0];
   wire rd_cand  = ar_valid_q && rd_pend_q == 3'd0 && (!r_valid_q || s_axil_rready_i);
   wire do_write = wr_cand && (!rd_cand || !prio_q);

@@ -1,4 +1,4 @@
-// fp3_regfile -- register banks, one per context, in block RAM, with one
+// fp3_regfile -- register banks, one per context, in RAM, with one
 // busy flag per register (the scoreboard of paper §4), write-back bypass
 // and a host port.
 //
@@ -12,50 +12,54 @@
 // per register is in flight and write-backs to one register happen in
 // program order.
 //
-// Storage: RAM with a registered read, so that the banks of many contexts
-// map to FPGA block RAM (one write port per RAM).  The three write-back
-// ports (add core, mul core, move path) each write a RAM of their own,
-// replicated once per read port, and a live value table (LVT, 2 bits per
-// register, in flip-flops) records which port wrote each register last
-// (LaForest & Steffan, "Efficient Multi-Ported Memories for FPGAs", FPGA
-// 2010).  A read presented in cycle t (the issue cycle) returns its data
-// in cycle t + READ_STAGES (the last operand-read stage).
+// Storage: RAM with a registered read (one write port per RAM): FPGA block
+// RAM for the banks of many contexts, or LUT RAM read over two cycles for
+// clock rate (READ_STAGES = 4).  The three write-back ports (add core, mul
+// core, move path) each write a RAM of their own, replicated once per read
+// port, and a live value table (LVT, 2 bits per register, in flip-flops)
+// records which port wrote each register last (LaForest & Steffan,
+// "Efficient Multi-Ported Memories for FPGAs", FPGA 2010).  A read
+// presented in cycle t (the issue cycle) returns its data in cycle
+// t + READ_STAGES (the last operand-read stage).
 //
 // Bypass: the scheduler issues a consumer up to READ_STAGES - 1 cycles
 // before its operand is written back (DESIGN.md: no whole-pipeline stall
-// on write-back).  A write in cycle t lands in the RAM at the clock edge
-// the read samples, and writes in cycles t + 1 .. t + READ_STAGES - 1
-// after it, so those write-back values are captured beside the read and
-// replace the RAM data (the newest wins).  Writes in later cycles are never
-// needed by a read of cycle t (the scoreboard did not count the operand as
-// free).
+// on write-back).  The RAMs' word misses the writes from some cycle on
+// (t with READ_STAGES = 1: a write lands at the edge the read samples;
+// t + 1 with READ_STAGES = 4), up to t + READ_STAGES - 1, so those
+// write-back values are captured beside the read and replace the RAM data
+// (the newest wins).  Writes in later cycles are never needed by a read
+// of cycle t (the scoreboard did not count the operand as free).
 //
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
 //                    of the three RAMs' data (one stage; the default)
-//   READ_STAGES = 3  cycle t + 1: the RAMs' data registered, the LVT read
-//                    (its first half in cycle t) and the bypass compare
-//                    against the writes of cycles t and t + 1, and against
-//                    the write-backs of cycle t + 2 (announced a cycle
-//                    ahead, nx*_i), as a one-hot choice, registered;
-//                    cycle t + 2: one AND-OR of the seven candidate words
-//                    (three RAMs, the bypass, the three write-back ports),
-//                    registered; cycle t + 3: the operands leave those
-//                    flip-flops (for clock rate: no RAM output, LVT read
-//                    or compare sits in front of the select, and nothing
-//                    in front of the operands' users)
+//   READ_STAGES = 4  for clock rate.  Cycle t: the RAMs register the read
+//                    address (a copy per 4-bit lane); cycle t + 1: the
+//                    RAMs are read (LUT RAM: no block-RAM output, 5.8 ns
+//                    from the clock on the ECP5, starts a path), the LVT's
+//                    first half is read, and the index is compared with
+//                    the writes of cycles t + 1 and t + 2 (the latter
+//                    announced a cycle ahead, nx*_i), registered; cycle
+//                    t + 2: the RAMs' words and the bypass word registered,
+//                    with a one-hot choice among them and the write-backs
+//                    of cycle t + 3 (compared with nx*_i); cycle t + 3: one
+//                    AND-OR of seven words, registered; cycle t + 4: the
+//                    operands leave those flip-flops (nothing sits in front
+//                    of their users).
 //
 // Parameters
 //   ENTRIES      registers in all, 2**XW
 //   XW           index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
-//   READ_STAGES  1 or 3, see above
+//   READ_STAGES  1 or 4, see above
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
 //     (no run in progress): the host's register read data is ra_data_o
 //     READ_STAGES cycles later, or earlier on ha_data_o.
-//   ha_data_o: port A's read data for the host, in cycle t + 1
-//     (READ_STAGES = 1: ra_data_o) or t + 2 (READ_STAGES = 3: the value
-//     ra_data_o's register takes), so that host reads take 1 or 2 cycles.
+//   ha_data_o: port A's read data for the host in cycle t + 1
+//     (READ_STAGES = 1: ra_data_o) or t + 2 (READ_STAGES = 4: the RAM the
+//     LVT names, without bypass: the host reads while stopped), so that
+//     host reads take 1 or 2 cycles.
 //   busy_o: every busy flag; idle_o: none set.
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
@@ -63,7 +67,7 @@
 //     a new instruction claims it stays busy: the set wins.
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
 //   nx{0,1,2}_*: the write-back ports' valid and index of the next cycle
-//     (fp3_wb_tag next_*; read with READ_STAGES = 3).
+//     (fp3_wb_tag next_*; read with READ_STAGES = 4).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
@@ -130,23 +134,25 @@ module fp3_regfile #(
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
+  // READ_STAGES = 4: LUT RAM read over two cycles (fp3_ram READ_STAGES 2).
+  localparam integer RAM_READ = (READ_STAGES == 4) ? 2 : 1;
   wire [31:0] q00, q01, q10, q11, q20, q21;
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram00 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram00 (
     .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
     .raddr_i(a_idx), .rdata_o(q00));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram01 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram01 (
     .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
     .raddr_i(rb_i), .rdata_o(q01));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram10 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram10 (
     .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
     .raddr_i(a_idx), .rdata_o(q10));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram11 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram11 (
     .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
     .raddr_i(rb_i), .rdata_o(q11));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram20 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram20 (
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(a_idx), .rdata_o(q20));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32)) u_ram21 (
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram21 (
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
 
@@ -209,13 +215,14 @@ module fp3_regfile #(
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
       assign ha_data_o = ra_data_o;
-    end else if (READ_STAGES == 3) begin : g_read3
-      // Cycle t: the read indices compared with the writes of cycle t
-      // (they miss the RAMs' read) and of cycle t + 1 (nx*_i, the host's
-      // write registered), as a one-hot choice of the newest, registered.
+    end else if (READ_STAGES == 4) begin : g_read4
+      // Cycle t + 1 (the RAMs read at their registered address copies):
+      // the read indices compared with the writes of cycle t + 1 (they
+      // miss the RAMs' read) and of cycle t + 2 (nx*_i, the host's write
+      // registered), as a one-hot choice of the newest, registered.
       // Port 2's two writers are compared apart (one of them at most
       // writes).
-      function [5:0] byp_sel;     // {t + 1: port 0, 1, 2; t: port 0, 1, 2}
+      function [5:0] byp_sel;     // {t + 2: port 0, 1, 2; t + 1: port 0, 1, 2}
         input [XW-1:0] x;
         reg   [5:0]    h;
         begin
@@ -226,15 +233,18 @@ module fp3_regfile #(
           byp_sel = h & ~(h >> 1) & ~(h >> 2) & ~(h >> 3) & ~(h >> 4) & ~(h >> 5);
         end
       endfunction
-      reg [5:0] a_hit_q, b_hit_q;
+      reg [5:0]    a_hit_q, b_hit_q;
+      reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hit_q <= rst_i ? 6'd0 : byp_sel(a_idx);
-        b_hit_q <= rst_i ? 6'd0 : byp_sel(rb_i);
+        a_hit_q  <= rst_i ? 6'd0 : byp_sel(a_idx_q);
+        b_hit_q  <= rst_i ? 6'd0 : byp_sel(b_idx_q);
+        a_idx_qq <= a_idx_q;
+        b_idx_qq <= b_idx_q;
       end
-      // The LVT read in two halves: in the issue cycle the low index bits
-      // pick an entry in every group of 16, in the next the high bits pick
-      // the group.  The entries are then a cycle old: a register written
-      // in the issue cycle is taken from the bypass anyway.
+      // The LVT entry, read in cycle t + 1 (it has the writes up to cycle
+      // t, as the RAMs' words have) in two halves: in cycle t + 1 the low
+      // index bits pick an entry in every group of 16, in cycle t + 2 the
+      // high bits pick the group.
       wire [1:0] a_lvt2, b_lvt2;
       if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
@@ -242,25 +252,28 @@ module fp3_regfile #(
         integer gi;
         always @(posedge clk_i) begin
           for (gi = 0; gi < NG; gi = gi + 1) begin
-            a_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, a_idx[3:0]}) +: 2];
-            b_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, rb_i[3:0]}) +: 2];
+            a_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, a_idx_q[3:0]}) +: 2];
+            b_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, b_idx_q[3:0]}) +: 2];
           end
         end
-        assign a_lvt2 = a_pre_q[2*a_idx_q[XW-1:4] +: 2];
-        assign b_lvt2 = b_pre_q[2*b_idx_q[XW-1:4] +: 2];
+        assign a_lvt2 = a_pre_q[2*a_idx_qq[XW-1:4] +: 2];
+        assign b_lvt2 = b_pre_q[2*b_idx_qq[XW-1:4] +: 2];
         wire unused_lvt = &{1'b0, a_lvt, b_lvt};   // the one-cycle read
       end else begin : g_lvt_whole
-        assign a_lvt2 = a_lvt;
-        assign b_lvt2 = b_lvt;
-        wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
+        // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
+        // read of such a register takes the bypass word.
+        assign a_lvt2 = lvt_q[a_idx_qq];
+        assign b_lvt2 = lvt_q[b_idx_qq];
+        wire unused_lvt = &{1'b0, lvt_flat, a_lvt, b_lvt};
       end
-      // Cycle t + 1, registered for cycle t + 2: the RAMs' data, the
-      // bypass word (a write of cycle t or t + 1, chosen by the hits of
-      // cycle t), and a one-hot choice among them and the write-backs of
-      // cycle t + 2 (their indices come a cycle ahead, nx*_i; the newest
-      // wins).  Cycle t + 2 is then one AND-OR of seven registered words,
-      // registered again: the operands leave flip-flops in cycle t + 3.
-      // Cycle t + 2's choice for index x, one-hot in the order of pick7's
+      // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
+      // bypass word (a write of cycle t + 1 or t + 2, chosen by the hits
+      // of cycle t + 1), and a one-hot choice among them and the
+      // write-backs of cycle t + 3 (their indices come a cycle ahead,
+      // nx*_i; the newest wins).  Cycle t + 3 is then one AND-OR of seven
+      // registered words, registered again: the operands leave flip-flops
+      // in cycle t + 4.
+      // Cycle t + 3's choice for index x, one-hot in the order of pick7's
       // words: a write-back of the next cycle (newest first), else the
       // bypass word (byp), else the RAM the LVT names.
       function [6:0] read_sel;
@@ -291,8 +304,8 @@ module fp3_regfile #(
         qb2_q   <= q21;
         a_bd_q  <= pick7({1'b0, a_hit_q}, {32'd0, bw});
         b_bd_q  <= pick7({1'b0, b_hit_q}, {32'd0, bw});
-        a_sel_q <= read_sel(a_idx_q, |a_hit_q, a_lvt2);
-        b_sel_q <= read_sel(b_idx_q, |b_hit_q, b_lvt2);
+        a_sel_q <= read_sel(a_idx_qq, |a_hit_q, a_lvt2);
+        b_sel_q <= read_sel(b_idx_qq, |b_hit_q, b_lvt2);
       end
       wire [31:0] a_nx = pick7(a_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, a_bd_q,
                                          qa0_q, qa1_q, qa2_q});
@@ -304,10 +317,13 @@ module fp3_regfile #(
       end
       assign ra_data_o = a_out_q;
       assign rb_data_o = b_out_q;
-      assign ha_data_o = a_nx;
+      // The host reads only while stopped: nothing is written back then,
+      // and its own write lands before its next read (one port).  The
+      // RAM the LVT names is its word, in cycle t + 2.
+      assign ha_data_o = (a_lvt2 == 2'd0) ? q00 : (a_lvt2 == 2'd1) ? q10 : q20;
     end else begin : g_bad_read_stages
-      // Elaboration error on purpose: READ_STAGES must be 1 or 3.
-      fp3_regfile_error_READ_STAGES_must_be_1_or_3 u_error ();
+      // Elaboration error on purpose: READ_STAGES must be 1 or 4.
+      fp3_regfile_error_READ_STAGES_must_be_1_or_4 u_error ();
     end
   endgenerate
 
@@ -316,7 +332,7 @@ module fp3_regfile #(
 
   // ---- LVT and busy flags, one register at a time --------------------------
   // This cycle's writes per port, one-hot over the registers.  With
-  // READ_STAGES = 3 they are decoded a cycle ahead (from nx*_i and the
+  // READ_STAGES = 4 they are decoded a cycle ahead (from nx*_i and the
   // host's unregistered write) and registered, so that no index compare
   // sits in front of the LVT; port 2's two writers are decoded apart.
   function [ENTRIES-1:0] dec;   // one-hot of idx if valid
@@ -329,7 +345,7 @@ module fp3_regfile #(
   endfunction
   wire [ENTRIES-1:0] h0, h1, h2;
   generate
-    if (READ_STAGES == 3) begin : g_hit_ahead
+    if (READ_STAGES == 4) begin : g_hit_ahead
       reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
       always @(posedge clk_i) begin
         h0_q <= dec(!rst_i && nx0_valid_i, nx0_idx_i);

@@ -16,7 +16,7 @@
 // reads as zero while running (the register file's read ports belong to
 // the issue pipeline then).
 //
-// Pipeline of one operation (P = 2 FMAX_PIPE, R = 1 + 2 FMAX_PIPE):
+// Pipeline of one operation (P = 2 FMAX_PIPE, R = 1 + 3 FMAX_PIPE):
 //   pick     (P = 2 only) cycle t - 2: the scheduler grants it, the grant
 //            registered; t - 1: its fields are picked, registered
 //   issue    cycle t: its register addresses go to the register file
@@ -30,7 +30,7 @@
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
 // grant before the instruction memory and the word after it (fp3_scheduler
 // FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
-// beq resolves 6 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// beq resolves 7 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
 // run takes a few cycles more, a context fetches at most every fourth
 // cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
 // MUL_LATENCY of at least 3.
@@ -54,8 +54,9 @@
 //                (hardware sized to a scene: `fp3 configure`)
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
 //                before and after the instruction memory, two between the
-//                scheduler's grant and the issue, and a second
-//                operand-read stage (see "Pipeline" above)
+//                scheduler's grant and the issue, and three more
+//                operand-read stages: a LUT-RAM register file (see
+//                "Pipeline" above)
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -104,7 +105,7 @@ module fp3_top #(
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
   localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
-  localparam integer READ  = 1 + 2 * FMAX_PIPE;  // operand-read stages
+  localparam integer READ  = 1 + 3 * FMAX_PIPE;  // operand-read stages
   localparam integer HREAD = 1 + FMAX_PIPE;      // host read cycles
   localparam integer AHEAD = PICK + READ;    // write-back announcement
   // The move path's latency: with the pick stages, PICK more, so that its

@@ -49,16 +49,16 @@
  * block-RAM read stage).  A dependent instruction issues FP3_READ_CYCLES +
  * latency cycles after its producer: the unit's latency (ADD_LATENCY,
  * MUL_LATENCY, 1 for the move path) plus this.  The same with FMAX_PIPE
- * (rtl/fp3_top.v: two pick stages and three read stages, but
- * write-backs announced four cycles earlier), except that its move path
+ * (rtl/fp3_top.v: two pick stages and four read stages, but
+ * write-backs announced five cycles earlier), except that its move path
  * takes 3 cycles. */
 #define FP3_READ_CYCLES 1
 
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
- * beq (FP3_BEQ_CYCLES): the two pick stages, the second and third
+ * beq (FP3_BEQ_CYCLES): the two pick stages, the three more
  * operand-read stages, and the fetch grant and the instruction word
  * registered.  Its host-port reads take 2 cycles instead of 1. */
-#define FP3_FMAX_PIPE_CYCLES 6
+#define FP3_FMAX_PIPE_CYCLES 7
 
 /* With FMAX_PIPE a context fetches at most every FP3_FMAX_PIPE_FETCH_SPACING
  * cycles (grant, read, word registered, queued), so one context runs
