@@ -38,14 +38,14 @@
 //                    RAMs are read (LUT RAM: no block-RAM output, 5.8 ns
 //                    from the clock on the ECP5, starts a path), the LVT's
 //                    first half is read, and the index is compared with
-//                    the writes of cycles t + 1 and t + 2 (the latter
-//                    announced a cycle ahead, nx*_i), registered; cycle
-//                    t + 2: the RAMs' words and the bypass word registered,
-//                    with a one-hot choice among them and the write-backs
-//                    of cycle t + 3 (compared with nx*_i); cycle t + 3: one
-//                    AND-OR of seven words, registered; cycle t + 4: the
-//                    operands leave those flip-flops (nothing sits in front
-//                    of their users).
+//                    the write-backs of cycles t + 1, t + 2 and t + 3
+//                    (announced two cycles ahead, wb*_in2_i), registered;
+//                    cycle t + 2: the RAMs' words and the bypass word
+//                    registered, with a one-hot choice among them and the
+//                    write-backs of cycle t + 3; cycle t + 3: one AND-OR
+//                    of seven words, registered; cycle t + 4: the operands
+//                    leave those flip-flops (nothing sits in front of
+//                    their users).
 //
 // Parameters
 //   ENTRIES      registers in all, 2**XW
@@ -66,8 +66,8 @@
 //     clears the register's busy flag.  A register announced in the cycle
 //     a new instruction claims it stays busy: the set wins.
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
-//   nx{0,1,2}_*: the write-back ports' valid and index of the next cycle
-//     (fp3_wb_tag next_*; read with READ_STAGES = 4).
+//   wb{0,1,2}_in2_*: the write-back ports' valid and index two cycles
+//     ahead (fp3_wb_tag next2_*; read with READ_STAGES = 4).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
@@ -100,12 +100,12 @@ module fp3_regfile #(
   input  wire               wb2_valid_i,
   input  wire [XW-1:0]      wb2_idx_i,
   input  wire [31:0]        wb2_data_i,
-  input  wire               nx0_valid_i,
-  input  wire [XW-1:0]      nx0_idx_i,
-  input  wire               nx1_valid_i,
-  input  wire [XW-1:0]      nx1_idx_i,
-  input  wire               nx2_valid_i,
-  input  wire [XW-1:0]      nx2_idx_i,
+  input  wire               wb0_in2_valid_i,
+  input  wire [XW-1:0]      wb0_in2_idx_i,
+  input  wire               wb1_in2_valid_i,
+  input  wire [XW-1:0]      wb1_in2_idx_i,
+  input  wire               wb2_in2_valid_i,
+  input  wire [XW-1:0]      wb2_in2_idx_i,
   input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
@@ -155,6 +155,17 @@ module fp3_regfile #(
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram21 (
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
+
+  // The write-back ports' valid and index of the next cycle (READ_STAGES
+  // = 4; the tag lines' own stage, which Yosys merges with these).
+  reg [2:0]    nx_v;
+  reg [XW-1:0] nx_i0, nx_i1, nx_i2;
+  always @(posedge clk_i) begin
+    nx_v  <= rst_i ? 3'd0 : {wb2_in2_valid_i, wb1_in2_valid_i, wb0_in2_valid_i};
+    nx_i0 <= wb0_in2_idx_i;
+    nx_i1 <= wb1_in2_idx_i;
+    nx_i2 <= wb2_in2_idx_i;
+  end
 
   // ---- read stages: LVT choice and bypass --------------------------------
   // The read addresses and the write-backs of cycle t are registered; in
@@ -208,8 +219,7 @@ module fp3_regfile #(
       wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
 `undef FP3_BYPASS
       wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
-      wire unused_nx   = &{1'b0, nx0_valid_i, nx0_idx_i, nx1_valid_i, nx1_idx_i,
-                           nx2_valid_i, nx2_idx_i};   // no stage sees a later write
+      wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2};   // no stage looks ahead
       assign ra_data_o = a_byp[32] ? a_byp[31:0] :
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
@@ -217,27 +227,30 @@ module fp3_regfile #(
       assign ha_data_o = ra_data_o;
     end else if (READ_STAGES == 4) begin : g_read4
       // Cycle t + 1 (the RAMs read at their registered address copies):
-      // the read indices compared with the writes of cycle t + 1 (they
-      // miss the RAMs' read) and of cycle t + 2 (nx*_i, the host's write
-      // registered), as a one-hot choice of the newest, registered.
-      // Port 2's two writers are compared apart (one of them at most
-      // writes).
-      function [5:0] byp_sel;     // {t + 2: port 0, 1, 2; t + 1: port 0, 1, 2}
+      // the read indices compared with the write-backs of cycles t + 1
+      // (they miss the RAMs' read), t + 2 (nx*, a cycle ahead) and t + 3
+      // (wb*_in2_i, two cycles ahead), as a one-hot choice of the newest,
+      // registered.  (Only write-backs: the host writes while stopped,
+      // and its reads, ha_data_o, need no bypass.)
+      function [8:0] byp_sel;     // {t + 3, t + 2, t + 1: port 0, 1, 2 each}
         input [XW-1:0] x;
-        reg   [5:0]    h;
+        reg   [8:0]    h;
+        integer        j;
         begin
-          h = {nx0_valid_i && nx0_idx_i == x, nx1_valid_i && nx1_idx_i == x,
-               (nx2_valid_i && nx2_idx_i == x) || (host_we_i && host_idx_i == x),
+          h = {wb0_in2_valid_i && wb0_in2_idx_i == x, wb1_in2_valid_i && wb1_in2_idx_i == x,
+               wb2_in2_valid_i && wb2_in2_idx_i == x,
+               nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
                wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
-               (wb2_valid_i && wb2_idx_i == x) || (hwe_q && hidx_q == x)};
-          byp_sel = h & ~(h >> 1) & ~(h >> 2) & ~(h >> 3) & ~(h >> 4) & ~(h >> 5);
+               wb2_valid_i && wb2_idx_i == x};
+          byp_sel = h;
+          for (j = 1; j < 9; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
       endfunction
-      reg [5:0]    a_hit_q, b_hit_q;
+      reg [8:0]    a_hit_q, b_hit_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hit_q  <= rst_i ? 6'd0 : byp_sel(a_idx_q);
-        b_hit_q  <= rst_i ? 6'd0 : byp_sel(b_idx_q);
+        a_hit_q  <= rst_i ? 9'd0 : byp_sel(a_idx_q);
+        b_hit_q  <= rst_i ? 9'd0 : byp_sel(b_idx_q);
         a_idx_qq <= a_idx_q;
         b_idx_qq <= b_idx_q;
       end
@@ -258,7 +271,8 @@ module fp3_regfile #(
         end
         assign a_lvt2 = a_pre_q[2*a_idx_qq[XW-1:4] +: 2];
         assign b_lvt2 = b_pre_q[2*b_idx_qq[XW-1:4] +: 2];
-        wire unused_lvt = &{1'b0, a_lvt, b_lvt};   // the one-cycle read
+        // (the one-cycle read; the low bits were used in cycle t + 1)
+        wire unused_lvt = &{1'b0, a_lvt, b_lvt, a_idx_qq[3:0], b_idx_qq[3:0]};
       end else begin : g_lvt_whole
         // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
         // read of such a register takes the bypass word.
@@ -267,34 +281,18 @@ module fp3_regfile #(
         wire unused_lvt = &{1'b0, lvt_flat, a_lvt, b_lvt};
       end
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
-      // bypass word (a write of cycle t + 1 or t + 2, chosen by the hits
-      // of cycle t + 1), and a one-hot choice among them and the
-      // write-backs of cycle t + 3 (their indices come a cycle ahead,
-      // nx*_i; the newest wins).  Cycle t + 3 is then one AND-OR of seven
-      // registered words, registered again: the operands leave flip-flops
-      // in cycle t + 4.
-      // Cycle t + 3's choice for index x, one-hot in the order of pick7's
-      // words: a write-back of the next cycle (newest first), else the
-      // bypass word (byp), else the RAM the LVT names.
-      function [6:0] read_sel;
-        input [XW-1:0] x;
-        input          byp;
-        input [1:0]    lvt;
-        begin
-          if      (nx0_valid_i && nx0_idx_i == x) read_sel = 7'b1000000;
-          else if (nx1_valid_i && nx1_idx_i == x) read_sel = 7'b0100000;
-          else if (nx2_valid_i && nx2_idx_i == x) read_sel = 7'b0010000;
-          else if (byp)                           read_sel = 7'b0001000;
-          else if (lvt == 2'd0)                   read_sel = 7'b0000100;
-          else if (lvt == 2'd1)                   read_sel = 7'b0000010;
-          else                                    read_sel = 7'b0000001;
-        end
-      endfunction
-      wire [191:0] bw = {wb0_data_i, wb1_data_i, w2_data, wd0_q, wd1_q, wd2_q};
+      // bypass word (a write-back of cycle t + 1 or t + 2, chosen by the
+      // hits of cycle t + 1), and a one-hot choice of the word for cycle
+      // t + 3, in the order of pick7's words: a write-back of cycle t + 3
+      // (a hit of cycle t + 1, a cycle older), else the bypass word, else
+      // the RAM the LVT names.
+      wire [191:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wd0_q, wd1_q, wd2_q};
       reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
       reg  [31:0] a_bd_q, b_bd_q;
       reg  [6:0]  a_sel_q, b_sel_q;
       reg  [31:0] a_out_q, b_out_q;
+      wire        a_ram = a_hit_q == 9'd0;
+      wire        b_ram = b_hit_q == 9'd0;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
         qa1_q   <= q10;
@@ -302,10 +300,12 @@ module fp3_regfile #(
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_bd_q  <= pick7({1'b0, a_hit_q}, {32'd0, bw});
-        b_bd_q  <= pick7({1'b0, b_hit_q}, {32'd0, bw});
-        a_sel_q <= read_sel(a_idx_qq, |a_hit_q, a_lvt2);
-        b_sel_q <= read_sel(b_idx_qq, |b_hit_q, b_lvt2);
+        a_bd_q  <= pick7({1'b0, a_hit_q[5:0]}, {32'd0, bw});
+        b_bd_q  <= pick7({1'b0, b_hit_q[5:0]}, {32'd0, bw});
+        a_sel_q <= {a_hit_q[8:6], |a_hit_q[5:0], a_ram && a_lvt2 == 2'd0,
+                    a_ram && a_lvt2 == 2'd1, a_ram && a_lvt2 == 2'd2};
+        b_sel_q <= {b_hit_q[8:6], |b_hit_q[5:0], b_ram && b_lvt2 == 2'd0,
+                    b_ram && b_lvt2 == 2'd1, b_ram && b_lvt2 == 2'd2};
       end
       wire [31:0] a_nx = pick7(a_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, a_bd_q,
                                          qa0_q, qa1_q, qa2_q});
@@ -332,7 +332,7 @@ module fp3_regfile #(
 
   // ---- LVT and busy flags, one register at a time --------------------------
   // This cycle's writes per port, one-hot over the registers.  With
-  // READ_STAGES = 4 they are decoded a cycle ahead (from nx*_i and the
+  // READ_STAGES = 4 they are decoded a cycle ahead (from nx_* and the
   // host's unregistered write) and registered, so that no index compare
   // sits in front of the LVT; port 2's two writers are decoded apart.
   function [ENTRIES-1:0] dec;   // one-hot of idx if valid
@@ -348,9 +348,9 @@ module fp3_regfile #(
     if (READ_STAGES == 4) begin : g_hit_ahead
       reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
       always @(posedge clk_i) begin
-        h0_q <= dec(!rst_i && nx0_valid_i, nx0_idx_i);
-        h1_q <= dec(!rst_i && nx1_valid_i, nx1_idx_i);
-        h2_q <= dec(!rst_i && nx2_valid_i, nx2_idx_i) | dec(!rst_i && host_we_i, host_idx_i);
+        h0_q <= dec(!rst_i && nx_v[0], nx_i0);
+        h1_q <= dec(!rst_i && nx_v[1], nx_i1);
+        h2_q <= dec(!rst_i && nx_v[2], nx_i2) | dec(!rst_i && host_we_i, host_idx_i);
       end
       assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
     end else begin : g_hit_now

@@ -179,7 +179,7 @@ module fp3_top #(
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
   wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
-  wire          addn_valid, muln_valid, movn_valid;   // write-backs of the next cycle
+  wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
@@ -258,12 +258,12 @@ module fp3_top #(
     .wb2_valid_i  (mov_valid),
     .wb2_idx_i    (mov_idx),
     .wb2_data_i   (mov_data),
-    .nx0_valid_i  (addn_valid),
-    .nx0_idx_i    (addn_idx),
-    .nx1_valid_i  (muln_valid),
-    .nx1_idx_i    (muln_idx),
-    .nx2_valid_i  (movn_valid),
-    .nx2_idx_i    (movn_idx),
+    .wb0_in2_valid_i (addn_valid),
+    .wb0_in2_idx_i   (addn_idx),
+    .wb1_in2_valid_i (muln_valid),
+    .wb1_in2_idx_i   (muln_idx),
+    .wb2_in2_valid_i (movn_valid),
+    .wb2_in2_idx_i   (movn_idx),
     .host_sel_i   (host_idle),
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
@@ -298,8 +298,8 @@ module fp3_top #(
     .early_idx_o   (adde_idx),
     .ahead_valid_o (adda_valid),
     .ahead_idx_o   (adda_idx),
-    .next_valid_o  (addn_valid),
-    .next_idx_o    (addn_idx),
+    .next2_valid_o (addn_valid),
+    .next2_idx_o   (addn_idx),
     .wb_valid_o    (add_valid),
     .wb_idx_o      (add_idx)
   );
@@ -312,8 +312,8 @@ module fp3_top #(
     .early_idx_o   (mule_idx),
     .ahead_valid_o (mula_valid),
     .ahead_idx_o   (mula_idx),
-    .next_valid_o  (muln_valid),
-    .next_idx_o    (muln_idx),
+    .next2_valid_o (muln_valid),
+    .next2_idx_o   (muln_idx),
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
   );
@@ -326,8 +326,8 @@ module fp3_top #(
     .early_idx_o   (move_idx),
     .ahead_valid_o (mova_valid),
     .ahead_idx_o   (mova_idx),
-    .next_valid_o  (movn_valid),
-    .next_idx_o    (movn_idx),
+    .next2_valid_o (movn_valid),
+    .next2_idx_o   (movn_idx),
     .wb_valid_o    (mov_valid),
     .wb_idx_o      (mov_idx)
   );

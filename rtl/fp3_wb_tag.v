@@ -24,9 +24,9 @@
 //   early_valid_o, early_idx_o  ... will be written back in AHEAD + 1
 //                   cycles (with ISSUE_TO_WB = AHEAD + 1, valid_i, idx_i)
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
-//   next_valid_o, next_idx_o    ... is written back next cycle (the
-//                               register file's last read stage looks a
-//                               cycle ahead: fp3_regfile nx*_i)
+//   next2_valid_o, next2_idx_o  ... is written back in 2 cycles (the
+//                               register file's read stages compare it
+//                               with their index: fp3_regfile nx2*_i)
 //   wb_valid_o, wb_idx_o        ... is written back this cycle
 `default_nettype none
 module fp3_wb_tag #(
@@ -42,8 +42,8 @@ module fp3_wb_tag #(
   output wire [XW-1:0] early_idx_o,
   output wire          ahead_valid_o,
   output wire [XW-1:0] ahead_idx_o,
-  output wire          next_valid_o,
-  output wire [XW-1:0] next_idx_o,
+  output wire          next2_valid_o,
+  output wire [XW-1:0] next2_idx_o,
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
@@ -63,19 +63,40 @@ module fp3_wb_tag #(
     .valid_o (ahead_valid_o),
     .data_o  (ahead_idx_o)
   );
-  fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD - 1)) u_to_next (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (ahead_valid_o),
-    .data_i  (ahead_idx_o),
-    .valid_o (next_valid_o),
-    .data_o  (next_idx_o)
-  );
+  // Two cycles before the write-back: the announcement a cycle early
+  // (AHEAD = 1), or a stage of the line after the announcement.
+  wire          next_valid;
+  wire [XW-1:0] next_idx;
+  generate
+    if (AHEAD == 1) begin : g_next2_early
+      assign next2_valid_o = early_valid_o;
+      assign next2_idx_o   = early_idx_o;
+      assign next_valid    = ahead_valid_o;
+      assign next_idx      = ahead_idx_o;
+    end else begin : g_next2_line
+      fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD - 2)) u_to_next2 (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (ahead_valid_o),
+        .data_i  (ahead_idx_o),
+        .valid_o (next2_valid_o),
+        .data_o  (next2_idx_o)
+      );
+      fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_next (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (next2_valid_o),
+        .data_i  (next2_idx_o),
+        .valid_o (next_valid),
+        .data_o  (next_idx)
+      );
+    end
+  endgenerate
   fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_wb (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (next_valid_o),
-    .data_i  (next_idx_o),
+    .valid_i (next_valid),
+    .data_i  (next_idx),
     .valid_o (wb_valid_o),
     .data_o  (wb_idx_o)
   );
