@@ -9,11 +9,11 @@
 // one-entry holding register each; the write reaches the host port once
 // both are held and the B channel is free (or being emptied this cycle).
 // AR is held likewise; the read address goes to the host port for one
-// cycle, the core's registered read data is captured one cycle later (three
-// with FMAX_PIPE: a register in front of the host port, two read cycles)
+// cycle, the core's registered read data is captured one cycle later (five
+// with FMAX_PIPE: a register in front of the host port, four read cycles)
 // and held on R until RREADY.  B and R stay valid, with stable payload,
 // until accepted.  Each channel takes a new transfer every second cycle
-// (reads every fourth with FMAX_PIPE).  The
+// (reads every sixth with FMAX_PIPE).  The
 // host port has one address, so a write and a read that are both ready in
 // the same cycle take turns (round robin).  All outputs are registered;
 // no READY depends combinationally on a VALID.
@@ -111,7 +111,10 @@ module fp3_axil #(
   reg  [1:0]         b_resp_q,   b_resp_d;
   reg                ar_valid_q, ar_valid_d;
   reg  [WA_BITS-1:0] ar_addr_q,  ar_addr_d;
-  reg  [2:0]         rd_pend_q,  rd_pend_d;   // a host-port read 1, 2, 3 cycles ago
+  // The host port's read data arrive RD_CYCLES after the address: 1, or 5
+  // with FMAX_PIPE (its input register and the core's four read cycles).
+  localparam integer RD_CYCLES = FMAX_PIPE != 0 ? 5 : 1;
+  reg  [RD_CYCLES-1:0] rd_pend_q, rd_pend_d;  // a host-port read 1 .. RD_CYCLES cycles ago
   reg                rd_err_q,   rd_err_d;    // ... for an address answered SLVERR
   reg                r_valid_q,  r_valid_d;
   reg  [31:0]        r_data_q,   r_data_d;
@@ -163,10 +166,9 @@ module fp3_axil #(
 
   // ---- host-port arbitration -----------------------------------------------
   wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
-  // The host port's read data arrive 1 cycle after the address, 3 with
-  // FMAX_PIPE (its input register and the core's two read cycles).
-  wire rd_arrive = FMAX_PIPE != 0 ? rd_pend_q[2] : rd_pend_q[0];
-  wire rd_cand  = ar_valid_q && rd_pend_q == 3'd0 && (!r_valid_q || s_axil_rready_i);
+  wire rd_arrive = rd_pend_q[RD_CYCLES-1];
+  wire rd_cand  = ar_valid_q && rd_pend_q == {RD_CYCLES{1'b0}} &&
+                  (!r_valid_q || s_axil_rready_i);
   wire do_write = wr_cand && (!rd_cand || !prio_q);
   wire do_read  = rd_cand && (!wr_cand || prio_q);
 
@@ -198,7 +200,7 @@ module fp3_axil #(
     b_resp_d   = b_resp_q;
     ar_valid_d = ar_valid_q;
     ar_addr_d  = ar_addr_q;
-    rd_pend_d  = {FMAX_PIPE != 0 && rd_pend_q[1], FMAX_PIPE != 0 && rd_pend_q[0], do_read};
+    rd_pend_d  = (rd_pend_q << 1) | {{(RD_CYCLES-1){1'b0}}, do_read};
     rd_err_d   = rd_err_q;
     r_valid_d  = r_valid_q;
     r_data_d   = r_data_q;
@@ -246,7 +248,7 @@ module fp3_axil #(
       w_valid_q  <= 1'b0;
       b_valid_q  <= 1'b0;
       ar_valid_q <= 1'b0;
-      rd_pend_q  <= 3'd0;
+      rd_pend_q  <= {RD_CYCLES{1'b0}};
       r_valid_q  <= 1'b0;
       prio_q     <= 1'b0;
     end else begin

@@ -55,11 +55,7 @@
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
 //     (no run in progress): the host's register read data is ra_data_o
-//     READ_STAGES cycles later, or earlier on ha_data_o.
-//   ha_data_o: port A's read data for the host in cycle t + 1
-//     (READ_STAGES = 1: ra_data_o) or t + 2 (READ_STAGES = 4: the RAM the
-//     LVT names, without bypass: the host reads while stopped), so that
-//     host reads take 1 or 2 cycles.
+//     READ_STAGES cycles later.
 //   busy_o: every busy flag; idle_o: none set.
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
@@ -110,7 +106,6 @@ module fp3_regfile #(
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
-  output wire [31:0]        ha_data_o,
   output wire               idle_o
 );
   reg [ENTRIES-1:0] busy_q;
@@ -224,14 +219,13 @@ module fp3_regfile #(
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
-      assign ha_data_o = ra_data_o;
     end else if (READ_STAGES == 4) begin : g_read4
       // Cycle t + 1 (the RAMs read at their registered address copies):
       // the read indices compared with the write-backs of cycles t + 1
       // (they miss the RAMs' read), t + 2 (nx*, a cycle ahead) and t + 3
       // (wb*_in2_i, two cycles ahead), as a one-hot choice of the newest,
       // registered.  (Only write-backs: the host writes while stopped,
-      // and its reads, ha_data_o, need no bypass.)
+      // and its write lands before its next read: one port.)
       function [8:0] byp_sel;     // {t + 3, t + 2, t + 1: port 0, 1, 2 each}
         input [XW-1:0] x;
         reg   [8:0]    h;
@@ -317,10 +311,6 @@ module fp3_regfile #(
       end
       assign ra_data_o = a_out_q;
       assign rb_data_o = b_out_q;
-      // The host reads only while stopped: nothing is written back then,
-      // and its own write lands before its next read (one port).  The
-      // RAM the LVT names is its word, in cycle t + 2.
-      assign ha_data_o = (a_lvt2 == 2'd0) ? q00 : (a_lvt2 == 2'd1) ? q10 : q20;
     end else begin : g_bad_read_stages
       // Elaboration error on purpose: READ_STAGES must be 1 or 4.
       fp3_regfile_error_READ_STAGES_must_be_1_or_4 u_error ();

@@ -4,9 +4,9 @@
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
-// appears on host_rdata_o 1 + FMAX_PIPE cycles later (the register
+// appears on host_rdata_o 1 + 3 FMAX_PIPE cycles later (the register
 // window's read stages; INFO1 reports FMAX_PIPE, and reading it with the
-// address held for two cycles works for both).  The map (HR_* in
+// address held for four cycles works for both).  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
 // CTX selects the context whose status and registers the host sees;
@@ -32,7 +32,7 @@
 // FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
 // beq resolves 7 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
 // run takes a few cycles more, a context fetches at most every fourth
-// cycle, and host reads take 2 cycles; it needs ADD_LATENCY and
+// cycle, and host reads take 4 cycles; it needs ADD_LATENCY and
 // MUL_LATENCY of at least 3.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
@@ -105,8 +105,7 @@ module fp3_top #(
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
   localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
-  localparam integer READ  = 1 + 3 * FMAX_PIPE;  // operand-read stages
-  localparam integer HREAD = 1 + FMAX_PIPE;      // host read cycles
+  localparam integer READ  = 1 + 3 * FMAX_PIPE;  // operand-read stages, host read cycles
   localparam integer AHEAD = PICK + READ;    // write-back announcement
   // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
@@ -229,7 +228,7 @@ module fp3_top #(
   );
 
   // ---- register banks ------------------------------------------------------
-  wire [31:0] ra_data, rb_data, ha_data;
+  wire [31:0] ra_data, rb_data;
 
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
@@ -268,7 +267,6 @@ module fp3_top #(
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
-    .ha_data_o    (ha_data),
     .idle_o       (idle)
   );
 
@@ -412,11 +410,11 @@ module fp3_top #(
     endcase
   end
   // A register of the window comes straight from the register file's read
-  // port A (ha_data), which answers HREAD cycles after the address; the
-  // other registers are delayed to match.
+  // port A, which answers READ cycles after the address; the other
+  // registers are delayed to match.
   wire [31:0] rdata_q;
   wire        reg_read_q;
-  fp_pipe #(.WIDTH(32), .DEPTH(HREAD)) u_host_read (
+  fp_pipe #(.WIDTH(32), .DEPTH(READ)) u_host_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (win_reg && reg_ok && host_idle),
@@ -424,7 +422,7 @@ module fp3_top #(
     .valid_o (reg_read_q),
     .data_o  (rdata_q)
   );
-  assign host_rdata_o = reg_read_q ? ha_data : rdata_q;
+  assign host_rdata_o = reg_read_q ? ra_data : rdata_q;
 
   // ---- outputs -------------------------------------------------------------
   assign running_o       = running;

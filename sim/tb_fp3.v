@@ -68,7 +68,7 @@ module tb_fp3 #(
   localparam integer NC       = NUM_CONTEXTS;
   localparam integer IW       = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);  // as fp3_top
   localparam integer MAX_LAT  = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
-  localparam integer READ     = 1 + FMAX_PIPE;   // host read cycles, operand-read stages
+  localparam integer READ     = 1 + 3 * FMAX_PIPE;   // host read cycles, operand-read stages
   localparam integer RUN_WORDS = 16;                 // run.hex layout
   localparam integer R_MAGIC = 0, R_VERSION = 1, R_NWORDS = 2, R_NUM_REGS = 3,
                      R_STEPS = 4, R_ERROR = 5, R_FAULT_PC = 6, R_STEPS_DONE = 7,

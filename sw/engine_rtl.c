@@ -34,7 +34,7 @@ typedef struct rtl_engine {
   fp3_model *model;
   fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
   unsigned ctx_sel;              /* CTX as last written (UINT_MAX: unknown) */
-  unsigned read_cycles;          /* host-port read latency, 1 + FMAX_PIPE */
+  unsigned read_cycles;          /* host-port read latency, 1 + 3 FMAX_PIPE */
   int win_set;                   /* waveform window, in cycles of a run */
   uint64_t win_first, win_count;
 } rtl_engine;
@@ -259,7 +259,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   if (!r) return NULL;
   r->mops = model_ops;
   r->ctx_sel = UINT_MAX;
-  r->read_cycles = 2; /* the longest, until INFO1 tells */
+  r->read_cycles = 4; /* the longest, until INFO1 tells */
   r->model = r->mops->create(trace_path);
   if (!r->model) {
     free(r);
@@ -287,7 +287,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->base.config.mode.round = (info1 >> 16) & 1 ? FPREF_RTZ : FPREF_RNE;
   r->base.config.mode.ftz = (info1 >> 17) & 1;
   r->base.config.fmax_pipe = (info1 >> 18) & 1;
-  r->read_cycles = 1 + r->base.config.fmax_pipe;
+  r->read_cycles = 1 + 3 * r->base.config.fmax_pipe;
   if (host_read(r, FP3_HR_ID) != FP3_ID_VALUE) {
     fprintf(stderr, "fp3: the RTL model answers with a wrong ID register\n");
     rtl_destroy(&r->base);

@@ -57,7 +57,7 @@
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
  * beq (FP3_BEQ_CYCLES): the two pick stages, the three more
  * operand-read stages, and the fetch grant and the instruction word
- * registered.  Its host-port reads take 2 cycles instead of 1. */
+ * registered.  Its host-port reads take 4 cycles instead of 1. */
 #define FP3_FMAX_PIPE_CYCLES 7
 
 /* With FMAX_PIPE a context fetches at most every FP3_FMAX_PIPE_FETCH_SPACING
