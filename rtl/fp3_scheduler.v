@@ -291,10 +291,17 @@ module fp3_scheduler #(
   // destination (WAW).  Registered: valid for the pick in the next cycle.
   wire [NC-1:0] legal;      // the head is legal
   wire [NC-1:0] ready_d;
-  wire [NC-1:0] h_endi;     // the head is an endi
-  wire [NC-1:0] h_stop;     // ... a halt or the run's last endi
+  wire [NC-1:0] h_stop;     // the head is a halt or the run's last endi
   wire [NC-1:0] h_ovf;      // ... would run off the end of the memory
   wire [NC*AW-1:0] h_pc;    // ... its PC
+  // The head granted in the last cycle (gone_q), still in its slot (the
+  // one hp_q no longer points to: a word is written only into a free
+  // slot): its integration (sdone_q, final_q) and PC overflow (err_q,
+  // epc_q) are counted and recorded a cycle after the grant, so that the
+  // grant drives no counter or error register.
+  wire [NC-1:0] l_endi;     // the last head is an endi
+  wire [NC-1:0] l_ovf;      // ... would run off the end of the memory
+  wire [NC*AW-1:0] l_pc;    // ... its PC
   // Issue fields of every slot: {ra, rb, rd, unit, sub, li, immediate,
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
@@ -336,10 +343,14 @@ module fp3_scheduler #(
       wire          unused_h = &{1'b0, wh, xh};
       wire          wrh = xh[7:6] != UNIT_NONE;   // it writes rdh
       assign legal[c]  = xh[11];
-      assign h_endi[c] = xh[3];
       assign h_stop[c] = xh[1] || (xh[3] && final_q[c]);
       assign h_ovf[c]  = xh[0];
       assign h_pc[c*AW +: AW] = hp ? p_q[2*c+1] : p_q[2*c];
+      wire [DW-1:0] xl = hp ? x_q[2*c] : x_q[2*c+1];
+      wire          unused_l = &{1'b0, xl};
+      assign l_endi[c] = xl[3];
+      assign l_ovf[c]  = xl[0];
+      assign l_pc[c*AW +: AW] = hp ? p_q[2*c] : p_q[2*c+1];
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
       // The arriving word's lookup in this context's bank (used if it is
@@ -649,7 +660,7 @@ module fp3_scheduler #(
         end
       end else begin
         for (k = 0; k < NC; k = k + 1) begin
-          if (gone[k] && h_endi[k]) final_q[k] <= near_q[k];
+          if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
           if (gone[k] && (h_stop[k] || h_ovf[k])) active_q[k] <= 1'b0;
           if (illegal[k]) active_q[k] <= 1'b0;
         end
@@ -752,12 +763,14 @@ module fp3_scheduler #(
       if (grant) issued_o <= issued_o + 64'd1;
       if (!grant && |(active_q & holds)) stalls_o <= stalls_o + 64'd1;
       // Integration counters and errors: each context's own, so that
-      // nothing wide sits behind the arbiter.
+      // nothing wide sits behind the arbiter, counted and recorded a cycle
+      // after the grant (the last head; its context, stopped by a PC
+      // overflow at the grant, is not active now: no illegal head).
       for (k = 0; k < NC; k = k + 1) begin
-        if (gone[k] && h_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
-        if (gone[k] && h_ovf[k]) begin
+        if (gone_q[k] && l_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
+        if (gone_q[k] && l_ovf[k]) begin
           err_q[k] <= ERR_PC_OVERFLOW;
-          epc_q[k] <= h_pc[k*AW +: AW];
+          epc_q[k] <= l_pc[k*AW +: AW];
         end
         if (illegal[k]) begin
           err_q[k] <= ERR_ILLEGAL_INSN;
@@ -770,9 +783,12 @@ module fp3_scheduler #(
   end
 
   // Whether the next endi of a context is the last but one, compared a
-  // cycle ahead: sdone_q changes only when an endi issues, and a context
-  // issues at most every other cycle (and its first endi comes cycles
-  // after START), so at an endi near_q is up to date.
+  // cycle ahead: sdone_q changes only when an endi is counted, in the
+  // cycle after its grant, and final_q is decided then too.  A context is
+  // granted at most every other cycle (and its first endi comes cycles
+  // after START), so in the cycle after an endi's grant near_q compares
+  // sdone_q of the grant's cycle: its earlier endis counted, not it.  And
+  // final_q is up to date at the next endi's grant.
   integer n;
   always @(posedge clk_i) begin
     for (n = 0; n < NC; n = n + 1) near_q[n] <= sdone_q[n] == last2_q;
