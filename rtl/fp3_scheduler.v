@@ -282,7 +282,8 @@ module fp3_scheduler #(
   //          the instruction in the issue register (PICK_STAGES = 2: its
   //          flag is set at the end of this cycle), or of the head granted
   //          in this cycle or (PICK_STAGES = 2) in the last one;
-  //          later: when the head ahead of it is granted and writes it;
+  //          later: when the head ahead of it is granted and writes it
+  //          (taken in the cycle after the grant);
   //   clear  when the register's write-back is announced (ahead_*_i; the
   //          flag clears in the same cycle), compared in the cycle before
   //          with the announcement to come (early_*_i) and registered.
@@ -359,19 +360,19 @@ module fp3_scheduler #(
       // and an arriving word (the compare with the head's destination,
       // hw_q, is registered, and the grant is taken in the next cycle
       // from gone_q).  With PICK_STAGES = 2, the head granted in the
-      // last cycle (destination rdg_q, pg_q: it writes one) sets its flag
-      // only when it issues, in the next cycle: an arriving word waits
-      // for it too.  That and the destination in the issue register
-      // (a_pend) are kept together, in pd_q.
+      // last cycle (gone_q; destination rdg_q, if it writes one: wrg_q)
+      // sets its flag only when it issues, in the next cycle: an arriving
+      // word waits for it too.  That and the destination in the issue
+      // register (a_pend) are kept together, in pd_q.
       reg  [2:0]    lk_q, hw_q, pd_q;
-      reg           pg_q;
+      reg           wrg_q;
       reg  [IW-1:0] rdg_q;
-      wire          pgv = PICK_STAGES == 2 && pg_q;
+      wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
       always @(posedge clk_i) begin
         lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
         hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
         pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
-        pg_q  <= wrh && gone[c] && running_o;
+        wrg_q <= wrh;
         rdg_q <= rdh;
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
@@ -404,13 +405,17 @@ module fp3_scheduler #(
           fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
                    `FP3_FREED(early_valid_i, early_idx_i, {CTX, nrb}),
                    `FP3_FREED(early_valid_i, early_idx_i, {CTX, nra})};
+        // The other slot, if it is the head and granted, writes its
+        // destination: this word waits for it.  Compared in every cycle
+        // (by_q), taken in the next if the head was granted (gone_q: this
+        // slot is the head then), so that the grant drives no wait bit.
+        reg  [2:0] by_q;
+        always @(posedge clk_i)
+          by_q <= {3{wrh && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
         // The wait bits, with this cycle's announcements taken off.
-        wire [2:0] s = (fr_q[I] ? sj : s_q[I]) & ~fq_q;
+        wire [2:0] s = (fr_q[I] ? sj : s_q[I] | (by_q & {3{gone_q[c]}})) & ~fq_q;
         assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
-        // The other slot, if it is the head and granted now, writes its
-        // destination: this word waits for it.
-        wire [2:0] by = {3{wrh && gone[c] && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
-        assign s_d[I*3 +: 3] = s | by;
+        assign s_d[I*3 +: 3] = s;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
       // was granted).
