@@ -747,6 +747,13 @@ module fp3_scheduler #(
     end
   end
 
+  // Issues and stalls are counted a cycle late (grant_q, stall_q), so
+  // that the grant drives no counter: the run goes on for a cycle after
+  // either (a context was active, with work), and in its first cycle, in
+  // which the results are cleared, there was none in the one before.
+  reg stall_q;              // a stall in the last cycle
+  always @(posedge clk_i) stall_q <= running_o && !grant && |(active_q & holds);
+
   always @(posedge clk_i) begin
     if (rst_i || start_q) begin
       // Reset, or the run's first cycle (counted; no issue or stall in it).
@@ -765,8 +772,8 @@ module fp3_scheduler #(
       end
     end else if (running_o) begin
       cycles_o <= cycles_o + 64'd1;
-      if (grant) issued_o <= issued_o + 64'd1;
-      if (!grant && |(active_q & holds)) stalls_o <= stalls_o + 64'd1;
+      if (grant_q) issued_o <= issued_o + 64'd1;
+      if (stall_q) stalls_o <= stalls_o + 64'd1;
       // Integration counters and errors: each context's own, so that
       // nothing wide sits behind the arbiter, counted and recorded a cycle
       // after the grant (the last head; its context, stopped by a PC
