@@ -187,9 +187,10 @@ module fp3_scheduler #(
   // address presented in cycle t is read at the edge ending cycle t, the
   // word is here in cycle t + 1.  Each word is stored
   // with its decoded bits (SW, below), decided as it is written: the
-  // host's write is registered, decoded and written a cycle later (a run
-  // starts two cycles after a write at the earliest).  Entries never
-  // written read as zero: the nop, decoded.
+  // host's write is decoded and registered, and written a cycle later (a
+  // run starts two cycles after a write at the earliest); so no decode
+  // sits in front of the memory.  Entries never written read as zero: the
+  // nop, decoded.
   localparam integer SW = DW - 1;   // stored decoded bits
   wire [63:0]   imem_word;
   wire [SW-1:0] imem_sdec;
@@ -197,17 +198,19 @@ module fp3_scheduler #(
   reg           we_q;
   reg  [AW-1:0] wa_q;
   reg  [63:0]   wd_q;
-  wire [SW-1:0] wsdec;
+  wire [SW-1:0] wsdec;      // the word being written, decoded
+  reg  [SW-1:0] ws_q;
   always @(posedge clk_i) begin
     we_q <= imem_we_i && !rst_i;
     wa_q <= imem_waddr_i;
     wd_q <= imem_wdata_i;
+    ws_q <= wsdec;
   end
   fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .LUT_RAM(FETCH_STAGE)) u_imem (
     .clk_i   (clk_i),
     .we_i    (we_q),
     .waddr_i (wa_q),
-    .wdata_i ({wsdec, wd_q}),
+    .wdata_i ({ws_q, wd_q}),
     .raddr_i (fetch_addr),
     .rdata_o ({imem_sdec, imem_word})
   );
@@ -240,13 +243,13 @@ module fp3_scheduler #(
   // or an endi, which leave or jump, at the last address) and kept in its
   // queue entry (DW bits: {legal, ..., halt, ovf}).  So neither the ready
   // step nor the arrival decodes anything.
-  wire [7:0]    w_opc   = wd_q[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire [7:0]    w_opc   = imem_wdata_i[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          w_endi  = w_opc == OP_ENDI;
   wire          w_beq   = w_opc == OP_BEQ;
-  wire [7:0]    w_rd8   = wd_q[ISA_RD_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_ra8   = wd_q[ISA_RA_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_rb8   = wd_q[ISA_RB_LSB +: ISA_REG_WIDTH];
-  wire [31:0]   w_imm   = wd_q[0 +: ISA_IMM_WIDTH];
+  wire [7:0]    w_rd8   = imem_wdata_i[ISA_RD_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_ra8   = imem_wdata_i[ISA_RA_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_rb8   = imem_wdata_i[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [31:0]   w_imm   = imem_wdata_i[0 +: ISA_IMM_WIDTH];
   wire [6:0]    w_dec   = isa_decode(w_opc);   // {known, unit, uses: imm rb ra rd}
   wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
@@ -255,7 +258,7 @@ module fp3_scheduler #(
                           reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_imm < IMEM_DEPTH) &&
-                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > wa_q));
+                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > imem_waddr_i));
   assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
