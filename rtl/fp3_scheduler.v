@@ -269,7 +269,8 @@ module fp3_scheduler #(
   wire [AW-1:0] apc;
   wire [NC-1:0] arriving;   // ... one-hot
   wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
-  wire [2*NC-1:0] wslot;    // the slot the arriving word is written into
+  reg  [2*NC-1:0] wsel_q;   // the slot the arriving word is written into
+  wire [2*NC-1:0] wslot;    // ... and becomes valid (its context active)
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
   wire          a_halt  = asdec[0];
@@ -400,9 +401,9 @@ module fp3_scheduler #(
         // This cycle's announcements of the fields, compared in the cycle
         // before (early_*_i) with the fields the slot holds now: an
         // arriving word's if it was written then.
-        wire [IW-1:0] nra = wslot[I] ? a_ra : ra;
-        wire [IW-1:0] nrb = wslot[I] ? a_rb : rb;
-        wire [IW-1:0] nrd = wslot[I] ? a_rd : rd;
+        wire [IW-1:0] nra = wsel_q[I] ? a_ra : ra;
+        wire [IW-1:0] nrb = wsel_q[I] ? a_rb : rb;
+        wire [IW-1:0] nrd = wsel_q[I] ? a_rd : rd;
         reg  [2:0]    fq_q;
         always @(posedge clk_i)
           fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
@@ -569,15 +570,19 @@ module fp3_scheduler #(
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
   // is empty, else the other (a context fetches only with a slot free and
-  // one word in flight, so at most one slot is taken then).  Which slot
-  // does not depend on this cycle's grant.
+  // one word in flight, so at most one slot is taken then, and a lone
+  // word is the head).  Which slot does not depend on a grant (a grant
+  // empties a queue of one and moves the head to the other slot), so it
+  // is chosen a cycle ahead, as the word is read, and registered (wsel_q):
+  // the slot's word, decoded bits and PC are written on a flip-flop's
+  // output, whether or not the context is still active (the slot is
+  // free), and only its valid bit waits for that (wslot).
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
       assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
-        assign wslot[2*c+e] = arriving[c] && active_q[c] && running_o && !v_q[2*c+e] &&
-                              (v_q[2*c+1-e] || hp_q[c] == e);
+        assign wslot[2*c+e] = wsel_q[2*c+e] && active_q[c] && running_o;
       end
     end
   endgenerate
@@ -603,6 +608,8 @@ module fp3_scheduler #(
   end
   assign fetch_addr = FETCH_STAGE != 0 ? fpcq_q : fpc_sel;
   wire [CW-1:0] fr = encode(fr1);
+  // The word read now, arriving in the next cycle (u_arrive's input).
+  wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(fvalid_q, fctx_q) : onehot(fread, fr);
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
@@ -682,6 +689,17 @@ module fp3_scheduler #(
     end
   end
 
+  // Queue slots' contents: the arriving word, in the slot chosen for it
+  // (wsel_q, below).
+  always @(posedge clk_i) begin
+    for (k = 0; k < 2 * NC; k = k + 1)
+      if (wsel_q[k]) begin
+        w_q[k] <= aword;
+        x_q[k] <= adec;
+        p_q[k] <= apc;
+      end
+  end
+
   always @(posedge clk_i) begin
     if (rst_i || !running_o) begin
       hp_q     <= {NC{1'b0}};
@@ -690,6 +708,7 @@ module fp3_scheduler #(
       bwait_q  <= {NC{1'b0}};
       ready_q  <= {NC{1'b0}};
       fr_q     <= {(2*NC){1'b0}};
+      wsel_q   <= {(2*NC){1'b0}};
       in_flight <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       quiet_q  <= 8'd0;
@@ -703,21 +722,21 @@ module fp3_scheduler #(
       for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
       // Queues: the granted head leaves (the head pointer moves on), an
-      // arriving word is written into its slot (wslot).
+      // arriving word is written into its slot (above) and is valid there
+      // (wslot); the slot of the word arriving next is chosen.
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) begin
           hp_q[k] <= !hp_q[k];
           if (hp_q[k]) v_q[2*k+1] <= 1'b0;
           else         v_q[2*k]   <= 1'b0;
         end
-        for (m = 0; m < 2; m = m + 1)
+        for (m = 0; m < 2; m = m + 1) begin
           if (wslot[2*k+m]) begin
             fr_q[2*k+m] <= 1'b1;
-            w_q[2*k+m]  <= aword;
-            x_q[2*k+m]  <= adec;
-            p_q[2*k+m]  <= apc;
             v_q[2*k+m]  <= 1'b1;
           end
+          wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
+        end
         if (arriving[k] && active_q[k]) begin
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
