@@ -187,9 +187,10 @@ module fp3_scheduler #(
   // address presented in cycle t is read at the edge ending cycle t, the
   // word is here in cycle t + 1.  Each word is stored
   // with its decoded bits (SW, below), decided as it is written: the
-  // host's write is registered, decoded and written a cycle later (a run
-  // starts two cycles after a write at the earliest).  Entries never
-  // written read as zero: the nop, decoded.
+  // host's write is decoded and registered, and written a cycle later (a
+  // run starts two cycles after a write at the earliest); so no decode
+  // sits in front of the memory.  Entries never written read as zero: the
+  // nop, decoded.
   localparam integer SW = DW - 1;   // stored decoded bits
   wire [63:0]   imem_word;
   wire [SW-1:0] imem_sdec;
@@ -197,17 +198,19 @@ module fp3_scheduler #(
   reg           we_q;
   reg  [AW-1:0] wa_q;
   reg  [63:0]   wd_q;
-  wire [SW-1:0] wsdec;
+  wire [SW-1:0] wsdec;      // the word being written, decoded
+  reg  [SW-1:0] ws_q;
   always @(posedge clk_i) begin
     we_q <= imem_we_i && !rst_i;
     wa_q <= imem_waddr_i;
     wd_q <= imem_wdata_i;
+    ws_q <= wsdec;
   end
   fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .LUT_RAM(FETCH_STAGE)) u_imem (
     .clk_i   (clk_i),
     .we_i    (we_q),
     .waddr_i (wa_q),
-    .wdata_i ({wsdec, wd_q}),
+    .wdata_i ({ws_q, wd_q}),
     .raddr_i (fetch_addr),
     .rdata_o ({imem_sdec, imem_word})
   );
@@ -240,13 +243,13 @@ module fp3_scheduler #(
   // or an endi, which leave or jump, at the last address) and kept in its
   // queue entry (DW bits: {legal, ..., halt, ovf}).  So neither the ready
   // step nor the arrival decodes anything.
-  wire [7:0]    w_opc   = wd_q[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire [7:0]    w_opc   = imem_wdata_i[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          w_endi  = w_opc == OP_ENDI;
   wire          w_beq   = w_opc == OP_BEQ;
-  wire [7:0]    w_rd8   = wd_q[ISA_RD_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_ra8   = wd_q[ISA_RA_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_rb8   = wd_q[ISA_RB_LSB +: ISA_REG_WIDTH];
-  wire [31:0]   w_imm   = wd_q[0 +: ISA_IMM_WIDTH];
+  wire [7:0]    w_rd8   = imem_wdata_i[ISA_RD_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_ra8   = imem_wdata_i[ISA_RA_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_rb8   = imem_wdata_i[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [31:0]   w_imm   = imem_wdata_i[0 +: ISA_IMM_WIDTH];
   wire [6:0]    w_dec   = isa_decode(w_opc);   // {known, unit, uses: imm rb ra rd}
   wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
@@ -255,7 +258,7 @@ module fp3_scheduler #(
                           reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_imm < IMEM_DEPTH) &&
-                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > wa_q));
+                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > imem_waddr_i));
   assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
@@ -266,7 +269,8 @@ module fp3_scheduler #(
   wire [AW-1:0] apc;
   wire [NC-1:0] arriving;   // ... one-hot
   wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
-  wire [2*NC-1:0] wslot;    // the slot the arriving word is written into
+  reg  [2*NC-1:0] wsel_q;   // the slot the arriving word is written into
+  wire [2*NC-1:0] wslot;    // ... and becomes valid (its context active)
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
   wire          a_halt  = asdec[0];
@@ -282,7 +286,8 @@ module fp3_scheduler #(
   //          the instruction in the issue register (PICK_STAGES = 2: its
   //          flag is set at the end of this cycle), or of the head granted
   //          in this cycle or (PICK_STAGES = 2) in the last one;
-  //          later: when the head ahead of it is granted and writes it;
+  //          later: when the head ahead of it is granted and writes it
+  //          (taken in the cycle after the grant);
   //   clear  when the register's write-back is announced (ahead_*_i; the
   //          flag clears in the same cycle), compared in the cycle before
   //          with the announcement to come (early_*_i) and registered.
@@ -291,10 +296,17 @@ module fp3_scheduler #(
   // destination (WAW).  Registered: valid for the pick in the next cycle.
   wire [NC-1:0] legal;      // the head is legal
   wire [NC-1:0] ready_d;
-  wire [NC-1:0] h_endi;     // the head is an endi
-  wire [NC-1:0] h_stop;     // ... a halt or the run's last endi
+  wire [NC-1:0] h_stop;     // the head is a halt or the run's last endi
   wire [NC-1:0] h_ovf;      // ... would run off the end of the memory
   wire [NC*AW-1:0] h_pc;    // ... its PC
+  // The head granted in the last cycle (gone_q), still in its slot (the
+  // one hp_q no longer points to: a word is written only into a free
+  // slot): its integration (sdone_q, final_q) and PC overflow (err_q,
+  // epc_q) are counted and recorded a cycle after the grant, so that the
+  // grant drives no counter or error register.
+  wire [NC-1:0] l_endi;     // the last head is an endi
+  wire [NC-1:0] l_ovf;      // ... would run off the end of the memory
+  wire [NC*AW-1:0] l_pc;    // ... its PC
   // Issue fields of every slot: {ra, rb, rd, unit, sub, li, immediate,
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
@@ -336,10 +348,14 @@ module fp3_scheduler #(
       wire          unused_h = &{1'b0, wh, xh};
       wire          wrh = xh[7:6] != UNIT_NONE;   // it writes rdh
       assign legal[c]  = xh[11];
-      assign h_endi[c] = xh[3];
       assign h_stop[c] = xh[1] || (xh[3] && final_q[c]);
       assign h_ovf[c]  = xh[0];
       assign h_pc[c*AW +: AW] = hp ? p_q[2*c+1] : p_q[2*c];
+      wire [DW-1:0] xl = hp ? x_q[2*c] : x_q[2*c+1];
+      wire          unused_l = &{1'b0, xl};
+      assign l_endi[c] = xl[3];
+      assign l_ovf[c]  = xl[0];
+      assign l_pc[c*AW +: AW] = hp ? p_q[2*c] : p_q[2*c+1];
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
       // The arriving word's lookup in this context's bank (used if it is
@@ -348,19 +364,19 @@ module fp3_scheduler #(
       // and an arriving word (the compare with the head's destination,
       // hw_q, is registered, and the grant is taken in the next cycle
       // from gone_q).  With PICK_STAGES = 2, the head granted in the
-      // last cycle (destination rdg_q, pg_q: it writes one) sets its flag
-      // only when it issues, in the next cycle: an arriving word waits
-      // for it too.  That and the destination in the issue register
-      // (a_pend) are kept together, in pd_q.
+      // last cycle (gone_q; destination rdg_q, if it writes one: wrg_q)
+      // sets its flag only when it issues, in the next cycle: an arriving
+      // word waits for it too.  That and the destination in the issue
+      // register (a_pend) are kept together, in pd_q.
       reg  [2:0]    lk_q, hw_q, pd_q;
-      reg           pg_q;
+      reg           wrg_q;
       reg  [IW-1:0] rdg_q;
-      wire          pgv = PICK_STAGES == 2 && pg_q;
+      wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
       always @(posedge clk_i) begin
         lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
         hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
         pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
-        pg_q  <= wrh && gone[c] && running_o;
+        wrg_q <= wrh;
         rdg_q <= rdh;
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
@@ -385,21 +401,25 @@ module fp3_scheduler #(
         // This cycle's announcements of the fields, compared in the cycle
         // before (early_*_i) with the fields the slot holds now: an
         // arriving word's if it was written then.
-        wire [IW-1:0] nra = wslot[I] ? a_ra : ra;
-        wire [IW-1:0] nrb = wslot[I] ? a_rb : rb;
-        wire [IW-1:0] nrd = wslot[I] ? a_rd : rd;
+        wire [IW-1:0] nra = wsel_q[I] ? a_ra : ra;
+        wire [IW-1:0] nrb = wsel_q[I] ? a_rb : rb;
+        wire [IW-1:0] nrd = wsel_q[I] ? a_rd : rd;
         reg  [2:0]    fq_q;
         always @(posedge clk_i)
           fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
                    `FP3_FREED(early_valid_i, early_idx_i, {CTX, nrb}),
                    `FP3_FREED(early_valid_i, early_idx_i, {CTX, nra})};
+        // The other slot, if it is the head and granted, writes its
+        // destination: this word waits for it.  Compared in every cycle
+        // (by_q), taken in the next if the head was granted (gone_q: this
+        // slot is the head then), so that the grant drives no wait bit.
+        reg  [2:0] by_q;
+        always @(posedge clk_i)
+          by_q <= {3{wrh && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
         // The wait bits, with this cycle's announcements taken off.
-        wire [2:0] s = (fr_q[I] ? sj : s_q[I]) & ~fq_q;
+        wire [2:0] s = (fr_q[I] ? sj : s_q[I] | (by_q & {3{gone_q[c]}})) & ~fq_q;
         assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
-        // The other slot, if it is the head and granted now, writes its
-        // destination: this word waits for it.
-        wire [2:0] by = {3{wrh && gone[c] && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
-        assign s_d[I*3 +: 3] = s | by;
+        assign s_d[I*3 +: 3] = s;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
       // was granted).
@@ -550,15 +570,19 @@ module fp3_scheduler #(
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
   // is empty, else the other (a context fetches only with a slot free and
-  // one word in flight, so at most one slot is taken then).  Which slot
-  // does not depend on this cycle's grant.
+  // one word in flight, so at most one slot is taken then, and a lone
+  // word is the head).  Which slot does not depend on a grant (a grant
+  // empties a queue of one and moves the head to the other slot), so it
+  // is chosen a cycle ahead, as the word is read, and registered (wsel_q):
+  // the slot's word, decoded bits and PC are written on a flip-flop's
+  // output, whether or not the context is still active (the slot is
+  // free), and only its valid bit waits for that (wslot).
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
       assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
-        assign wslot[2*c+e] = arriving[c] && active_q[c] && running_o && !v_q[2*c+e] &&
-                              (v_q[2*c+1-e] || hp_q[c] == e);
+        assign wslot[2*c+e] = wsel_q[2*c+e] && active_q[c] && running_o;
       end
     end
   endgenerate
@@ -584,6 +608,8 @@ module fp3_scheduler #(
   end
   assign fetch_addr = FETCH_STAGE != 0 ? fpcq_q : fpc_sel;
   wire [CW-1:0] fr = encode(fr1);
+  // The word read now, arriving in the next cycle (u_arrive's input).
+  wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(fvalid_q, fctx_q) : onehot(fread, fr);
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
@@ -649,7 +675,7 @@ module fp3_scheduler #(
         end
       end else begin
         for (k = 0; k < NC; k = k + 1) begin
-          if (gone[k] && h_endi[k]) final_q[k] <= near_q[k];
+          if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
           if (gone[k] && (h_stop[k] || h_ovf[k])) active_q[k] <= 1'b0;
           if (illegal[k]) active_q[k] <= 1'b0;
         end
@@ -663,6 +689,17 @@ module fp3_scheduler #(
     end
   end
 
+  // Queue slots' contents: the arriving word, in the slot chosen for it
+  // (wsel_q, below).
+  always @(posedge clk_i) begin
+    for (k = 0; k < 2 * NC; k = k + 1)
+      if (wsel_q[k]) begin
+        w_q[k] <= aword;
+        x_q[k] <= adec;
+        p_q[k] <= apc;
+      end
+  end
+
   always @(posedge clk_i) begin
     if (rst_i || !running_o) begin
       hp_q     <= {NC{1'b0}};
@@ -671,6 +708,7 @@ module fp3_scheduler #(
       bwait_q  <= {NC{1'b0}};
       ready_q  <= {NC{1'b0}};
       fr_q     <= {(2*NC){1'b0}};
+      wsel_q   <= {(2*NC){1'b0}};
       in_flight <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       quiet_q  <= 8'd0;
@@ -684,21 +722,21 @@ module fp3_scheduler #(
       for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
       // Queues: the granted head leaves (the head pointer moves on), an
-      // arriving word is written into its slot (wslot).
+      // arriving word is written into its slot (above) and is valid there
+      // (wslot); the slot of the word arriving next is chosen.
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) begin
           hp_q[k] <= !hp_q[k];
           if (hp_q[k]) v_q[2*k+1] <= 1'b0;
           else         v_q[2*k]   <= 1'b0;
         end
-        for (m = 0; m < 2; m = m + 1)
+        for (m = 0; m < 2; m = m + 1) begin
           if (wslot[2*k+m]) begin
             fr_q[2*k+m] <= 1'b1;
-            w_q[2*k+m]  <= aword;
-            x_q[2*k+m]  <= adec;
-            p_q[2*k+m]  <= apc;
             v_q[2*k+m]  <= 1'b1;
           end
+          wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
+        end
         if (arriving[k] && active_q[k]) begin
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
@@ -731,6 +769,13 @@ module fp3_scheduler #(
     end
   end
 
+  // Issues and stalls are counted a cycle late (grant_q, stall_q), so
+  // that the grant drives no counter: the run goes on for a cycle after
+  // either (a context was active, with work), and in its first cycle, in
+  // which the results are cleared, there was none in the one before.
+  reg stall_q;              // a stall in the last cycle
+  always @(posedge clk_i) stall_q <= running_o && !grant && |(active_q & holds);
+
   always @(posedge clk_i) begin
     if (rst_i || start_q) begin
       // Reset, or the run's first cycle (counted; no issue or stall in it).
@@ -749,15 +794,17 @@ module fp3_scheduler #(
       end
     end else if (running_o) begin
       cycles_o <= cycles_o + 64'd1;
-      if (grant) issued_o <= issued_o + 64'd1;
-      if (!grant && |(active_q & holds)) stalls_o <= stalls_o + 64'd1;
+      if (grant_q) issued_o <= issued_o + 64'd1;
+      if (stall_q) stalls_o <= stalls_o + 64'd1;
       // Integration counters and errors: each context's own, so that
-      // nothing wide sits behind the arbiter.
+      // nothing wide sits behind the arbiter, counted and recorded a cycle
+      // after the grant (the last head; its context, stopped by a PC
+      // overflow at the grant, is not active now: no illegal head).
       for (k = 0; k < NC; k = k + 1) begin
-        if (gone[k] && h_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
-        if (gone[k] && h_ovf[k]) begin
+        if (gone_q[k] && l_endi[k]) sdone_q[k] <= sdone_q[k] + 32'd1;
+        if (gone_q[k] && l_ovf[k]) begin
           err_q[k] <= ERR_PC_OVERFLOW;
-          epc_q[k] <= h_pc[k*AW +: AW];
+          epc_q[k] <= l_pc[k*AW +: AW];
         end
         if (illegal[k]) begin
           err_q[k] <= ERR_ILLEGAL_INSN;
@@ -770,9 +817,12 @@ module fp3_scheduler #(
   end
 
   // Whether the next endi of a context is the last but one, compared a
-  // cycle ahead: sdone_q changes only when an endi issues, and a context
-  // issues at most every other cycle (and its first endi comes cycles
-  // after START), so at an endi near_q is up to date.
+  // cycle ahead: sdone_q changes only when an endi is counted, in the
+  // cycle after its grant, and final_q is decided then too.  A context is
+  // granted at most every other cycle (and its first endi comes cycles
+  // after START), so in the cycle after an endi's grant near_q compares
+  // sdone_q of the grant's cycle: its earlier endis counted, not it.  And
+  // final_q is up to date at the next endi's grant.
   integer n;
   always @(posedge clk_i) begin
     for (n = 0; n < NC; n = n + 1) near_q[n] <= sdone_q[n] == last2_q;
