@@ -5,24 +5,21 @@
 //                    one address at the same edge return the old word).
 //                    The shape of FPGA block RAM (Xilinx RAMB16, Lattice
 //                    DP16KD) and LUT RAM with an output register; Yosys
-//                    infers either (LUT_RAM = 0), or LUT RAM only
-//                    (LUT_RAM = 1: the data leave a flip-flop, where a
-//                    block RAM's leave it 5.8 ns after the clock on the
-//                    ECP5).  The default.
+//                    infers either.  The default.
 //   READ_STAGES = 2  for clock rate: LUT RAM (ECP5 TRELLIS_DPR16X4, 16
 //                    words x 4 bits), in lanes of 4 bits.  Cycle t: the
 //                    read address is registered, one copy per lane (so
 //                    that it does not fan out to every LUT-RAM cell of the
 //                    word from one flip-flop); cycle t + 1: each lane's
 //                    LUT RAM is read at its copy (the bank of 16 words
-//                    chosen by the high bits) and the word registered.  It
-//                    is the word after the writes of cycles up to t.
+//                    chosen by the high bits) and the word registered: it
+//                    leaves a flip-flop (a block RAM's leaves it 5.8 ns
+//                    after the clock on the ECP5).  It is the word after
+//                    the writes of cycles up to t.
 //
 // Parameters
 //   DEPTH        words, >= 2; AW address width, clog2(DEPTH) at least
 //   WIDTH        bits per word
-//   LUT_RAM      READ_STAGES = 1 only: 0 block or LUT RAM, the synthesis
-//                tool's choice; 1 LUT RAM (ram_style = "distributed")
 //   READ_STAGES  1 or 2, see above
 // Ports
 //   we_i/waddr_i/wdata_i  write at the rising edge
@@ -34,7 +31,6 @@ module fp3_ram #(
   parameter integer DEPTH = 32,
   parameter integer AW    = 5,
   parameter integer WIDTH = 32,
-  parameter integer LUT_RAM = 0,
   parameter integer READ_STAGES = 1
 ) (
   input  wire             clk_i,
@@ -48,18 +44,8 @@ module fp3_ram #(
   initial rdata_o = {WIDTH{1'b0}};
 
   generate
-    if (READ_STAGES == 1 && LUT_RAM == 0) begin : g_any
+    if (READ_STAGES == 1) begin : g_any
       reg [WIDTH-1:0] mem [0:DEPTH-1];
-      initial for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
-      always @(posedge clk_i) begin
-        if (we_i) mem[waddr_i] <= wdata_i;
-        rdata_o <= mem[raddr_i];
-      end
-    end else if (READ_STAGES == 1) begin : g_any
-      // (The same as above but for the attribute: Verilog-2005 has no
-      // attribute that depends on a parameter.  The blocks of one
-      // conditional generate share their name, IEEE 1364-2005 12.4.3.)
-      (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
       initial for (i = 0; i < DEPTH; i = i + 1) mem[i] = {WIDTH{1'b0}};
       always @(posedge clk_i) begin
         if (we_i) mem[waddr_i] <= wdata_i;
@@ -67,7 +53,8 @@ module fp3_ram #(
       end
     end else if (READ_STAGES == 2) begin : g_any
       // The whole words, for a testbench only: nothing reads them, and
-      // synthesis removes them.
+      // synthesis removes them.  (The blocks of one conditional generate
+      // may share a name, IEEE 1364-2005 12.4.3: g_any.mem in either form.)
       /* verilator lint_off UNUSEDSIGNAL */
       reg [WIDTH-1:0] mem [0:DEPTH-1];
       /* verilator lint_on UNUSEDSIGNAL */

@@ -183,9 +183,9 @@ module fp3_scheduler #(
   reg [7:0]    quiet_q;             // cycles without busy flag or issue, to DRAIN
 
   // ---- instruction memory --------------------------------------------------
-  // A block RAM (FETCH_STAGE: LUT RAM, whose data leave a flip-flop): the
-  // address presented in cycle t is read at the edge ending cycle t, the
-  // word is here in cycle t + 1.  Each word is stored
+  // A block RAM: the address presented in cycle t is read at the edge
+  // ending cycle t, the word is here in cycle t + 1 (FETCH_STAGE: LUT RAM
+  // read over two cycles, fp3_ram READ_STAGES = 2: in cycle t + 2).  Each word is stored
   // with its decoded bits (SW, below), decided as it is written: the
   // host's write is decoded and registered, and written a cycle later (a
   // run starts two cycles after a write at the earliest); so no decode
@@ -194,7 +194,7 @@ module fp3_scheduler #(
   localparam integer SW = DW - 1;   // stored decoded bits
   wire [63:0]   imem_word;
   wire [SW-1:0] imem_sdec;
-  wire [AW-1:0] fetch_addr;
+  reg  [AW-1:0] fpc_sel;    // the fetch address (fetch step, below)
   reg           we_q;
   reg  [AW-1:0] wa_q;
   reg  [63:0]   wd_q;
@@ -206,12 +206,12 @@ module fp3_scheduler #(
     wd_q <= imem_wdata_i;
     ws_q <= wsdec;
   end
-  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .LUT_RAM(FETCH_STAGE)) u_imem (
+  fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .READ_STAGES(1 + FETCH_STAGE)) u_imem (
     .clk_i   (clk_i),
     .we_i    (we_q),
     .waddr_i (wa_q),
     .wdata_i ({ws_q, wd_q}),
-    .raddr_i (fetch_addr),
+    .raddr_i (fpc_sel),
     .rdata_o ({imem_sdec, imem_word})
   );
 
@@ -549,8 +549,9 @@ module fp3_scheduler #(
   // counting one it may issue now: that would put the arbiter in front of
   // the memory address) and no read in flight.
   // FETCH_STAGE: the fetch grant is registered, the granted context's
-  // fetch PC is selected in the next cycle and registered (fpcq_q), and
-  // the memory reads it in the cycle after that; the word arrives from
+  // fetch PC is selected in the next cycle and registered (by the memory,
+  // and in fpcq_q), and the memory reads it in the cycle after that; the
+  // word arrives from
   // the memory's output register, three cycles after the grant.  A
   // context has one word in flight, from its grant to its arrival.
   fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_arrive (
@@ -600,13 +601,13 @@ module fp3_scheduler #(
     .data_o  (fr1)
   );
   // The granted context's fetch PC, selected by the one-hot grant (fr1):
-  // the memory's address, or (FETCH_STAGE) registered first, in fpcq_q.
-  reg [AW-1:0] fpc_sel;
+  // the memory's address (FETCH_STAGE: the memory registers it, a copy
+  // per 4-bit lane of the word, and reads in the next cycle; fpcq_q, the
+  // same address, goes with the word).
   always @(*) begin
     fpc_sel = {AW{1'b0}};
     for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
   end
-  assign fetch_addr = FETCH_STAGE != 0 ? fpcq_q : fpc_sel;
   wire [CW-1:0] fr = encode(fr1);
   // The word read now, arriving in the next cycle (u_arrive's input).
   wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(fvalid_q, fctx_q) : onehot(fread, fr);
