@@ -14,8 +14,10 @@
 //                    LUT RAM is read at its copy (the bank of 16 words
 //                    chosen by the high bits) and the word registered: it
 //                    leaves a flip-flop (a block RAM's leaves it 5.8 ns
-//                    after the clock on the ECP5).  It is the word after
-//                    the writes of cycles up to t.
+//                    after the clock on the ECP5).  The write is
+//                    registered per lane too, and lands a cycle late: the
+//                    word read is the one after the writes of cycles up
+//                    to t - 1.
 //
 // Parameters
 //   DEPTH        words, >= 2; AW address width, clog2(DEPTH) at least
@@ -68,15 +70,26 @@ module fp3_ram #(
         // Yosys would merge into one (and hang every lane on it): the
         // process is kept, and the initial value keeps the copies apart
         // from equal registers without one elsewhere.
-        reg [AW-1:0] raddr_q;
+        // The write's copies likewise.
+        reg              we_q;
+        reg [AW-1:0]     raddr_q, waddr_q;
+        reg [LW-1:0]     wdata_q;
         (* ram_style = "distributed" *) reg [LW-1:0] lane [0:DEPTH-1];
         initial begin
+          we_q    = 1'b0;
           raddr_q = {AW{1'b0}};
+          waddr_q = {AW{1'b0}};
+          wdata_q = {LW{1'b0}};
           for (i = 0; i < DEPTH; i = i + 1) lane[i] = {LW{1'b0}};
         end
-        (* keep *) always @(posedge clk_i) raddr_q <= raddr_i;
+        (* keep *) always @(posedge clk_i) begin
+          raddr_q <= raddr_i;
+          we_q    <= we_i;
+          waddr_q <= waddr_i;
+          wdata_q <= wdata_i[4*l +: LW];
+        end
         always @(posedge clk_i) begin
-          if (we_i) lane[waddr_i] <= wdata_i[4*l +: LW];
+          if (we_q) lane[waddr_q] <= wdata_q;
           rdata_o[4*l +: LW] <= lane[raddr_q];
         end
       end

@@ -24,28 +24,30 @@
 //
 // Bypass: the scheduler issues a consumer up to READ_STAGES - 1 cycles
 // before its operand is written back (DESIGN.md: no whole-pipeline stall
-// on write-back).  The RAMs' word misses the writes from some cycle on
-// (t with READ_STAGES = 1: a write lands at the edge the read samples;
-// t + 1 with READ_STAGES = 4), up to t + READ_STAGES - 1, so those
-// write-back values are captured beside the read and replace the RAM data
-// (the newest wins).  Writes in later cycles are never needed by a read
-// of cycle t (the scoreboard did not count the operand as free).
+// on write-back).  The RAMs' word misses the writes from cycle t on (with
+// READ_STAGES = 1 a write lands at the edge the read samples; with
+// READ_STAGES = 4 the RAMs register their writes and are read in cycle
+// t + 1), up to t + READ_STAGES - 1, so those write values are captured
+// beside the read and replace the RAM data (the newest wins).  Writes in
+// later cycles are never needed by a read of cycle t (the scoreboard did
+// not count the operand as free).
 //
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
 //                    of the three RAMs' data (one stage; the default)
 //   READ_STAGES = 4  for clock rate.  Cycle t: the RAMs register the read
-//                    address (a copy per 4-bit lane); cycle t + 1: the
-//                    RAMs are read (LUT RAM: no block-RAM output, 5.8 ns
-//                    from the clock on the ECP5, starts a path), the LVT's
-//                    first half is read, and the index is compared with
-//                    the write-backs of cycles t + 1, t + 2 and t + 3
-//                    (announced two cycles ahead, wb*_in2_i), registered;
-//                    cycle t + 2: the RAMs' words and the bypass word
-//                    registered, with a one-hot choice among them and the
-//                    write-backs of cycle t + 3; cycle t + 3: one AND-OR
-//                    of seven words, registered; cycle t + 4: the operands
-//                    leave those flip-flops (nothing sits in front of
-//                    their users).
+//                    address (a copy per 4-bit lane; their writes are
+//                    registered likewise); cycle t + 1: the RAMs are read
+//                    (LUT RAM: no block-RAM output, 5.8 ns from the clock
+//                    on the ECP5, starts a path), the LVT's first half is
+//                    read, and the index is compared with the writes of
+//                    cycle t and the write-backs of cycles t + 1, t + 2
+//                    and t + 3 (announced two cycles ahead, wb*_in2_i),
+//                    registered; cycle t + 2: the RAMs' words and the
+//                    bypass word registered, with a one-hot choice among
+//                    them and the write-backs of cycle t + 3; cycle t + 3:
+//                    one AND-OR of seven words, registered; cycle t + 4:
+//                    the operands leave those flip-flops (nothing sits in
+//                    front of their users).
 //
 // Parameters
 //   ENTRIES      registers in all, 2**XW
@@ -169,10 +171,16 @@ module fp3_regfile #(
   // the RAM read at the same edge missed) replaces the RAM data.  Nothing
   // of this sits behind the issue arbiter in cycle t.
   reg [XW-1:0] a_idx_q, b_idx_q;
-  reg [31:0]   wd0_q, wd1_q, wd2_q;     // the writes of cycle t
+  reg [2:0]    wv_q;                    // the writes of the last cycle
+  reg [XW-1:0] wi0_q, wi1_q, wi2_q;
+  reg [31:0]   wd0_q, wd1_q, wd2_q;
   always @(posedge clk_i) begin
     a_idx_q <= a_idx;
     b_idx_q <= rb_i;
+    wv_q    <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
+    wi0_q   <= wb0_idx_i;
+    wi1_q   <= wb1_idx_i;
+    wi2_q   <= w2_idx;
     wd0_q   <= wb0_data_i;
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
@@ -181,14 +189,14 @@ module fp3_regfile #(
   wire [1:0] b_lvt = lvt_q[b_idx_q];
   wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
 
-  // The word of seven (w[32k +: 32]) that the one-hot sel[k] names.
-  function [31:0] pick7;
-    input [6:0]   sel;
-    input [223:0] w;
+  // The word of nine (w[32k +: 32]) that the one-hot sel[k] names.
+  function [31:0] pick9;
+    input [8:0]   sel;
+    input [287:0] w;
     integer k;
     begin
-      pick7 = 32'd0;
-      for (k = 0; k < 7; k = k + 1) pick7 = pick7 | ({32{sel[k]}} & w[32*k +: 32]);
+      pick9 = 32'd0;
+      for (k = 0; k < 9; k = k + 1) pick9 = pick9 | ({32{sel[k]}} & w[32*k +: 32]);
     end
   endfunction
 
@@ -197,14 +205,6 @@ module fp3_regfile #(
       // Cycle t + 1: the writes of cycle t (they missed the RAMs' read)
       // replace the RAM data the LVT entry of the index (it includes
       // them) names.
-      reg [2:0]    wv_q;
-      reg [XW-1:0] wi0_q, wi1_q, wi2_q;
-      always @(posedge clk_i) begin
-        wv_q  <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
-        wi0_q <= wb0_idx_i;
-        wi1_q <= wb1_idx_i;
-        wi2_q <= w2_idx;
-      end
       // Bypass of one write-back cycle: {hit, data} for index x.
 `define FP3_BYPASS(x) \
   ((wv_q[0] && wi0_q == (x)) ? {1'b1, wd0_q} : \
@@ -220,36 +220,38 @@ module fp3_regfile #(
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
     end else if (READ_STAGES == 4) begin : g_read4
-      // Cycle t + 1 (the RAMs read at their registered address copies):
-      // the read indices compared with the write-backs of cycles t + 1
-      // (they miss the RAMs' read), t + 2 (nx*, a cycle ahead) and t + 3
-      // (wb*_in2_i, two cycles ahead), as a one-hot choice of the newest,
-      // registered.  (Only write-backs: the host writes while stopped,
-      // and its write lands before its next read: one port.)
-      function [8:0] byp_sel;     // {t + 3, t + 2, t + 1: port 0, 1, 2 each}
+      // Cycle t + 1 (the RAMs read at their registered address copies;
+      // their writes land a cycle late, so the read has the writes up to
+      // cycle t - 1): the read indices compared with the writes of cycle
+      // t (registered, wv_q: the host's write included, for its reads)
+      // and the write-backs of cycles t + 1, t + 2 (nx_*, a cycle ahead)
+      // and t + 3 (wb*_in2_i, two cycles ahead), as a one-hot choice of
+      // the newest, registered.  (The host writes only while stopped.)
+      function [11:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2 each}
         input [XW-1:0] x;
-        reg   [8:0]    h;
+        reg   [11:0]   h;
         integer        j;
         begin
           h = {wb0_in2_valid_i && wb0_in2_idx_i == x, wb1_in2_valid_i && wb1_in2_idx_i == x,
                wb2_in2_valid_i && wb2_in2_idx_i == x,
                nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
                wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
-               wb2_valid_i && wb2_idx_i == x};
+               wb2_valid_i && wb2_idx_i == x,
+               wv_q[0] && wi0_q == x, wv_q[1] && wi1_q == x, wv_q[2] && wi2_q == x};
           byp_sel = h;
-          for (j = 1; j < 9; j = j + 1) byp_sel = byp_sel & ~(h >> j);
+          for (j = 1; j < 12; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
       endfunction
-      reg [8:0]    a_hit_q, b_hit_q;
+      reg [11:0]   a_hit_q, b_hit_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hit_q  <= rst_i ? 9'd0 : byp_sel(a_idx_q);
-        b_hit_q  <= rst_i ? 9'd0 : byp_sel(b_idx_q);
+        a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q);
+        b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q);
         a_idx_qq <= a_idx_q;
         b_idx_qq <= b_idx_q;
       end
       // The LVT entry, read in cycle t + 1 (it has the writes up to cycle
-      // t, as the RAMs' words have) in two halves: in cycle t + 1 the low
+      // t; one of cycle t is taken from the bypass) in two halves: in cycle t + 1 the low
       // index bits pick an entry in every group of 16, in cycle t + 2 the
       // high bits pick the group.
       wire [1:0] a_lvt2, b_lvt2;
@@ -275,18 +277,25 @@ module fp3_regfile #(
         wire unused_lvt = &{1'b0, lvt_flat, a_lvt, b_lvt};
       end
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
-      // bypass word (a write-back of cycle t + 1 or t + 2, chosen by the
+      // bypass word (a write of cycle t, t + 1 or t + 2, chosen by the
       // hits of cycle t + 1), and a one-hot choice of the word for cycle
-      // t + 3, in the order of pick7's words: a write-back of cycle t + 3
-      // (a hit of cycle t + 1, a cycle older), else the bypass word, else
-      // the RAM the LVT names.
-      wire [191:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wd0_q, wd1_q, wd2_q};
+      // t + 3, in the order of pick9's words: a write-back of cycle t + 3
+      // (a hit of cycle t + 1, two cycles older), else the bypass word,
+      // else the RAM the LVT names.
+      reg  [31:0] wd0_qq, wd1_qq, wd2_qq;   // the writes of cycle t
+      always @(posedge clk_i) begin
+        wd0_qq <= wd0_q;
+        wd1_qq <= wd1_q;
+        wd2_qq <= wd2_q;
+      end
+      wire [287:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wd0_q, wd1_q, wd2_q,
+                         wd0_qq, wd1_qq, wd2_qq};
       reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
       reg  [31:0] a_bd_q, b_bd_q;
       reg  [6:0]  a_sel_q, b_sel_q;
       reg  [31:0] a_out_q, b_out_q;
-      wire        a_ram = a_hit_q == 9'd0;
-      wire        b_ram = b_hit_q == 9'd0;
+      wire        a_ram = a_hit_q == 12'd0;
+      wire        b_ram = b_hit_q == 12'd0;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
         qa1_q   <= q10;
@@ -294,17 +303,17 @@ module fp3_regfile #(
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_bd_q  <= pick7({1'b0, a_hit_q[5:0]}, {32'd0, bw});
-        b_bd_q  <= pick7({1'b0, b_hit_q[5:0]}, {32'd0, bw});
-        a_sel_q <= {a_hit_q[8:6], |a_hit_q[5:0], a_ram && a_lvt2 == 2'd0,
+        a_bd_q  <= pick9(a_hit_q[8:0], bw);
+        b_bd_q  <= pick9(b_hit_q[8:0], bw);
+        a_sel_q <= {a_hit_q[11:9], |a_hit_q[8:0], a_ram && a_lvt2 == 2'd0,
                     a_ram && a_lvt2 == 2'd1, a_ram && a_lvt2 == 2'd2};
-        b_sel_q <= {b_hit_q[8:6], |b_hit_q[5:0], b_ram && b_lvt2 == 2'd0,
+        b_sel_q <= {b_hit_q[11:9], |b_hit_q[8:0], b_ram && b_lvt2 == 2'd0,
                     b_ram && b_lvt2 == 2'd1, b_ram && b_lvt2 == 2'd2};
       end
-      wire [31:0] a_nx = pick7(a_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, a_bd_q,
-                                         qa0_q, qa1_q, qa2_q});
-      wire [31:0] b_nx = pick7(b_sel_q, {wb0_data_i, wb1_data_i, wb2_data_i, b_bd_q,
-                                         qb0_q, qb1_q, qb2_q});
+      wire [31:0] a_nx = pick9({2'b00, a_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
+                                                  a_bd_q, qa0_q, qa1_q, qa2_q});
+      wire [31:0] b_nx = pick9({2'b00, b_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
+                                                  b_bd_q, qb0_q, qb1_q, qb2_q});
       always @(posedge clk_i) begin
         a_out_q <= a_nx;
         b_out_q <= b_nx;
