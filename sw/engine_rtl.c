@@ -266,9 +266,11 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
     return NULL;
   }
   r->base.ops = &rtl_ops;
-  /* The configuration the model was built with, from its INFO registers. */
-  uint32_t info0 = host_read(r, FP3_HR_INFO0);
+  /* The configuration the model was built with, from its INFO registers;
+   * INFO1 first, which says how long the others take to read. */
   uint32_t info1 = host_read(r, FP3_HR_INFO1);
+  r->read_cycles = 1 + 3 * ((info1 >> 18) & 1);
+  uint32_t info0 = host_read(r, FP3_HR_INFO0);
   const uint32_t info2 = host_read(r, FP3_HR_INFO2);
   r->base.config.num_contexts = info2 & 0xFFFF;
   r->base.config.has_add = (info2 >> 16) & 1;
@@ -287,7 +289,6 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->base.config.mode.round = (info1 >> 16) & 1 ? FPREF_RTZ : FPREF_RNE;
   r->base.config.mode.ftz = (info1 >> 17) & 1;
   r->base.config.fmax_pipe = (info1 >> 18) & 1;
-  r->read_cycles = 1 + 3 * r->base.config.fmax_pipe;
   if (host_read(r, FP3_HR_ID) != FP3_ID_VALUE) {
     fprintf(stderr, "fp3: the RTL model answers with a wrong ID register\n");
     rtl_destroy(&r->base);

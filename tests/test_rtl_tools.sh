@@ -27,9 +27,9 @@ echo "PASS: verilator -Wall clean with FMAX_PIPE=1 ADD_LATENCY=9 MUL_LATENCY=10"
 # indices, 4 32-bit words and 13 one-bit inputs: 245), and a module it
 # cannot find is an error.
 ${YOSYS:-yosys} -q -p "read_verilog -Irtl ${src//$'\n'/ }; hierarchy -top fp3_regfile -chparam ENTRIES 256 \
-  -chparam XW 8 -chparam READ_STAGES 3; proc; write_json $tmp/ports.json" >/dev/null 2>&1 || {
+  -chparam XW 8 -chparam READ_STAGES 4; proc; write_json $tmp/ports.json" >/dev/null 2>&1 || {
   echo "FAIL: yosys could not elaborate fp3_regfile for unit-wrap.py"; exit 1; }
-python3 scripts/unit-wrap.py fp3_regfile "$tmp/ports.json" ENTRIES=256 XW=8 READ_STAGES=3 \
+python3 scripts/unit-wrap.py fp3_regfile "$tmp/ports.json" ENTRIES=256 XW=8 READ_STAGES=4 \
   > "$tmp/unit.v" || { echo "FAIL: unit-wrap.py"; exit 1; }
 grep -q "reg \[244:0\] chain;" "$tmp/unit.v" || {
   grep "chain;" "$tmp/unit.v"; echo "FAIL: unit-wrap.py: input chain is not 245 bits"; exit 1; }
