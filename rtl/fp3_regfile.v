@@ -331,9 +331,11 @@ module fp3_regfile #(
 
   // ---- LVT and busy flags, one register at a time --------------------------
   // This cycle's writes per port, one-hot over the registers.  With
-  // READ_STAGES = 4 they are decoded a cycle ahead (from nx_* and the
-  // host's unregistered write) and registered, so that no index compare
-  // sits in front of the LVT; port 2's two writers are decoded apart.
+  // READ_STAGES = 4 they are decoded a cycle ahead (from nx_*) and
+  // registered, so that no index compare sits in front of the LVT; the
+  // host's write is decoded from its register, and so reaches the LVT a
+  // cycle after the RAM (a read in between takes it from the bypass:
+  // the writes of cycle t).  Port 2's two writers are decoded apart.
   function [ENTRIES-1:0] dec;   // one-hot of idx if valid
     input          valid;
     input [XW-1:0] idx;
@@ -349,7 +351,7 @@ module fp3_regfile #(
       always @(posedge clk_i) begin
         h0_q <= dec(!rst_i && nx_v[0], nx_i0);
         h1_q <= dec(!rst_i && nx_v[1], nx_i1);
-        h2_q <= dec(!rst_i && nx_v[2], nx_i2) | dec(!rst_i && host_we_i, host_idx_i);
+        h2_q <= dec(!rst_i && nx_v[2], nx_i2) | dec(!rst_i && hwe_q, hidx_q);
       end
       assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
     end else begin : g_hit_now

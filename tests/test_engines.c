@@ -484,6 +484,24 @@ static void test_fmax_pipe(void **state) {
   assert_non_null(e);
   assert_int_equal(e->config.fmax_pipe, 1);
   assert_int_equal(rtl->config.fmax_pipe, 0);
+  /* Host writes read back at once, each the cycle after the last (its
+   * register file reads LUT RAM, whose writes land a cycle late: the read
+   * takes them from the bypass), overwritten and in another context. */
+  uint32_t v = 0;
+  assert_int_equal(fp3_engine_write_reg(e, 7, 0x3F800000u), 0);
+  assert_int_equal(fp3_engine_read_reg(e, 7, &v), 0);
+  assert_int_equal(v, 0x3F800000u);
+  assert_int_equal(fp3_engine_write_reg(e, 7, 0xC0490FDBu), 0);
+  assert_int_equal(fp3_engine_write_reg(e, 8, 0x12345678u), 0);
+  assert_int_equal(fp3_engine_read_reg(e, 7, &v), 0);
+  assert_int_equal(v, 0xC0490FDBu);
+  assert_int_equal(fp3_engine_read_reg(e, 8, &v), 0);
+  assert_int_equal(v, 0x12345678u);
+  assert_int_equal(fp3_engine_write_ctx_reg(e, 2, 7, 0x40000000u), 0);
+  assert_int_equal(fp3_engine_read_ctx_reg(e, 2, 7, &v), 0);
+  assert_int_equal(v, 0x40000000u);
+  assert_int_equal(fp3_engine_read_reg(e, 7, &v), 0);
+  assert_int_equal(v, 0xC0490FDBu);
   /* One more link in a dependent chain costs FP3_READ_CYCLES + latency, as
    * on the default build (a context's fetch, every fourth cycle here, is
    * not the bottleneck of these chains). */
