@@ -185,8 +185,6 @@ module fp3_regfile #(
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
   end
-  wire [1:0] a_lvt = lvt_q[a_idx_q];   // one LVT read per port
-  wire [1:0] b_lvt = lvt_q[b_idx_q];
   wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
 
   // The word of nine (w[32k +: 32]) that the one-hot sel[k] names.
@@ -210,6 +208,8 @@ module fp3_regfile #(
   ((wv_q[0] && wi0_q == (x)) ? {1'b1, wd0_q} : \
    (wv_q[1] && wi1_q == (x)) ? {1'b1, wd1_q} : \
    (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : {33{1'b0}})
+      wire [1:0]  a_lvt = lvt_q[a_idx_q];   // one LVT read per port
+      wire [1:0]  b_lvt = lvt_q[b_idx_q];
       wire [32:0] a_byp = `FP3_BYPASS(a_idx_q);
       wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
 `undef FP3_BYPASS
@@ -251,9 +251,9 @@ module fp3_regfile #(
         b_idx_qq <= b_idx_q;
       end
       // The LVT entry, read in cycle t + 1 (it has the writes up to cycle
-      // t; one of cycle t is taken from the bypass) in two halves: in cycle t + 1 the low
-      // index bits pick an entry in every group of 16, in cycle t + 2 the
-      // high bits pick the group.
+      // t; one of cycle t is taken from the bypass) in two halves: in
+      // cycle t + 1 the low index bits pick an entry in every group of 16,
+      // in cycle t + 2 the high bits pick the group.
       wire [1:0] a_lvt2, b_lvt2;
       if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
@@ -267,14 +267,14 @@ module fp3_regfile #(
         end
         assign a_lvt2 = a_pre_q[2*a_idx_qq[XW-1:4] +: 2];
         assign b_lvt2 = b_pre_q[2*b_idx_qq[XW-1:4] +: 2];
-        // (the one-cycle read; the low bits were used in cycle t + 1)
-        wire unused_lvt = &{1'b0, a_lvt, b_lvt, a_idx_qq[3:0], b_idx_qq[3:0]};
+        // (the low index bits were used in cycle t + 1)
+        wire unused_lvt = &{1'b0, a_idx_qq[3:0], b_idx_qq[3:0]};
       end else begin : g_lvt_whole
         // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
         // read of such a register takes the bypass word.
         assign a_lvt2 = lvt_q[a_idx_qq];
         assign b_lvt2 = lvt_q[b_idx_qq];
-        wire unused_lvt = &{1'b0, lvt_flat, a_lvt, b_lvt};
+        wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
       end
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
       // bypass word (a write of cycle t, t + 1 or t + 2, chosen by the
