@@ -106,8 +106,13 @@ module fp3_scheduler #(
   input  wire [63:0]                  imem_wdata_i,
   input  wire                         start_i,
   input  wire                         clear_i,
-  input  wire [31:0]                  steps_i,
-  input  wire [31:0]                  contexts_i,    // contexts a START runs
+  // STEPS and CONTEXTS, decided as the host writes them (fp3_top), so
+  // that no 32-bit compare sits between START and the run state
+  input  wire                         steps_zero_i,  // STEPS == 0
+  input  wire                         steps_one_i,   // STEPS == 1
+  input  wire [31:0]                  steps_last2_i, // STEPS - 2
+  input  wire                         contexts_bad_i, // CONTEXTS == 0 or > NUM_CONTEXTS
+  input  wire [NUM_CONTEXTS-1:0]      contexts_run_i, // contexts a START runs: k < CONTEXTS
   input  wire [CW-1:0]                sel_ctx_i,     // context of the *_sel_o
   // status and counters
   output reg                          running_o,
@@ -615,8 +620,7 @@ module fp3_scheduler #(
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
 
-  wire start_ok = start_i && !running_o && steps_i != 32'd0 &&
-                  contexts_i != 32'd0 && contexts_i <= NC;
+  wire start_ok = start_i && !running_o && !steps_zero_i && !contexts_bad_i;
 
   // ---- selected-context status ---------------------------------------------
   wire [NC-1:0] err_any;
@@ -661,14 +665,14 @@ module fp3_scheduler #(
     end else begin
       start_q   <= start_ok;
       bad_q     <= bad_start;
-      bad_err_q <= (steps_i == 32'd0) ? ERR_BAD_STEPS : ERR_BAD_CONTEXTS;
+      bad_err_q <= steps_zero_i ? ERR_BAD_STEPS : ERR_BAD_CONTEXTS;
       if (!running_o) begin
         if (start_ok) begin
           running_o <= 1'b1;
           done_o    <= 1'b0;
-          last2_q   <= steps_i - 32'd2;
-          final_q   <= {NC{steps_i == 32'd1}};
-          for (k = 0; k < NC; k = k + 1) active_q[k] <= k < contexts_i;
+          last2_q   <= steps_last2_i;
+          final_q   <= {NC{steps_one_i}};
+          active_q  <= contexts_run_i;
         end else if (start_i || clear_i) begin
           done_o <= 1'b0;        // a refused START: DONE in the next cycle
         end else if (bad_q) begin

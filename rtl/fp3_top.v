@@ -141,14 +141,36 @@ module fp3_top #(
   wire host_reg_we = host_we_i && host_idle && win_reg && reg_ok;
   wire imem_we     = host_we_i && host_idle && win_imem && imem_ok && host_addr_i[0];
 
+  // What a START needs of STEPS and CONTEXTS, decided as the host writes
+  // them (the scheduler's START then compares nothing 32 bits wide): STEPS
+  // is 0, is 1, STEPS - 2; CONTEXTS is outside 1..NUM_CONTEXTS; the
+  // contexts it starts (k < CONTEXTS), one bit each.
+  reg                    steps_zero_q, steps_one_q, contexts_bad_q;
+  reg  [31:0]            steps_last2_q;
+  reg  [NUM_CONTEXTS-1:0] contexts_run_q;
+  integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
-      steps_q    <= 32'd0;
-      contexts_q <= 32'd1;
-      ctx_q      <= {CW{1'b0}};
+      steps_q        <= 32'd0;
+      steps_zero_q   <= 1'b1;
+      steps_one_q    <= 1'b0;
+      steps_last2_q  <= 32'hffff_fffe;
+      contexts_q     <= 32'd1;
+      contexts_bad_q <= 1'b0;
+      contexts_run_q <= {{(NUM_CONTEXTS-1){1'b0}}, 1'b1};
+      ctx_q          <= {CW{1'b0}};
     end else if (host_we_i && host_idle) begin
-      if (host_addr_i == HR_STEPS)    steps_q    <= host_wdata_i;
-      if (host_addr_i == HR_CONTEXTS) contexts_q <= host_wdata_i;
+      if (host_addr_i == HR_STEPS) begin
+        steps_q       <= host_wdata_i;
+        steps_zero_q  <= host_wdata_i == 32'd0;
+        steps_one_q   <= host_wdata_i == 32'd1;
+        steps_last2_q <= host_wdata_i - 32'd2;
+      end
+      if (host_addr_i == HR_CONTEXTS) begin
+        contexts_q     <= host_wdata_i;
+        contexts_bad_q <= host_wdata_i == 32'd0 || host_wdata_i > NUM_CONTEXTS;
+        for (k = 0; k < NUM_CONTEXTS; k = k + 1) contexts_run_q[k] <= k < host_wdata_i;
+      end
       if (host_addr_i == HR_CTX && host_wdata_i < NUM_CONTEXTS)
                                       ctx_q      <= host_wdata_i[CW-1:0];
     end
@@ -192,8 +214,11 @@ module fp3_top #(
     .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
     .start_i          (start),
     .clear_i          (clear),
-    .steps_i          (steps_q),
-    .contexts_i       (contexts_q),
+    .steps_zero_i     (steps_zero_q),
+    .steps_one_i      (steps_one_q),
+    .steps_last2_i    (steps_last2_q),
+    .contexts_bad_i   (contexts_bad_q),
+    .contexts_run_i   (contexts_run_q),
     .sel_ctx_i        (ctx_q),
     .running_o        (running),
     .done_o           (done),
