@@ -198,6 +198,13 @@ module fp3_regfile #(
     end
   endfunction
 
+  function [2:0] lvt1h;   // an LVT entry (port 0, 1, 2) one-hot: {2, 1, 0}
+    input [1:0] p;
+    begin
+      lvt1h = {p == 2'd2, p == 2'd1, p == 2'd0};
+    end
+  endfunction
+
   generate
     if (READ_STAGES == 1) begin : g_read1
       // Cycle t + 1: the writes of cycle t (they missed the RAMs' read)
@@ -251,29 +258,31 @@ module fp3_regfile #(
         b_idx_qq <= b_idx_q;
       end
       // The LVT entry, read in cycle t + 1 (it has the writes up to cycle
-      // t; one of cycle t is taken from the bypass) in two halves: in
-      // cycle t + 1 the low index bits pick an entry in every group of 16,
-      // in cycle t + 2 the high bits pick the group.
-      wire [1:0] a_lvt2, b_lvt2;
+      // t; one of cycle t is taken from the bypass), one-hot ({port 2, 1,
+      // 0}), in two halves: in cycle t + 1 the low index bits pick an
+      // entry in every group of 16, registered one-hot, in cycle t + 2 the
+      // high bits pick the group (a multiplexer per bit, nothing behind it
+      // but the gate with a_ram).
+      wire [2:0] a_lvt2, b_lvt2;
       if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
-        reg [2*NG-1:0] a_pre_q, b_pre_q;
+        reg [3*NG-1:0] a_pre_q, b_pre_q;
         integer gi;
         always @(posedge clk_i) begin
           for (gi = 0; gi < NG; gi = gi + 1) begin
-            a_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, a_idx_q[3:0]}) +: 2];
-            b_pre_q[2*gi +: 2] <= lvt_flat[2*(16*gi + {28'd0, b_idx_q[3:0]}) +: 2];
+            a_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_idx_q[3:0]}) +: 2]);
+            b_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_idx_q[3:0]}) +: 2]);
           end
         end
-        assign a_lvt2 = a_pre_q[2*a_idx_qq[XW-1:4] +: 2];
-        assign b_lvt2 = b_pre_q[2*b_idx_qq[XW-1:4] +: 2];
+        assign a_lvt2 = a_pre_q[3*a_idx_qq[XW-1:4] +: 3];
+        assign b_lvt2 = b_pre_q[3*b_idx_qq[XW-1:4] +: 3];
         // (the low index bits were used in cycle t + 1)
         wire unused_lvt = &{1'b0, a_idx_qq[3:0], b_idx_qq[3:0]};
       end else begin : g_lvt_whole
         // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
         // read of such a register takes the bypass word.
-        assign a_lvt2 = lvt_q[a_idx_qq];
-        assign b_lvt2 = lvt_q[b_idx_qq];
+        assign a_lvt2 = lvt1h(lvt_q[a_idx_qq]);
+        assign b_lvt2 = lvt1h(lvt_q[b_idx_qq]);
         wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
       end
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
@@ -305,10 +314,8 @@ module fp3_regfile #(
         qb2_q   <= q21;
         a_bd_q  <= pick9(a_hit_q[8:0], bw);
         b_bd_q  <= pick9(b_hit_q[8:0], bw);
-        a_sel_q <= {a_hit_q[11:9], |a_hit_q[8:0], a_ram && a_lvt2 == 2'd0,
-                    a_ram && a_lvt2 == 2'd1, a_ram && a_lvt2 == 2'd2};
-        b_sel_q <= {b_hit_q[11:9], |b_hit_q[8:0], b_ram && b_lvt2 == 2'd0,
-                    b_ram && b_lvt2 == 2'd1, b_ram && b_lvt2 == 2'd2};
+        a_sel_q <= {a_hit_q[11:9], |a_hit_q[8:0], {3{a_ram}} & {a_lvt2[0], a_lvt2[1], a_lvt2[2]}};
+        b_sel_q <= {b_hit_q[11:9], |b_hit_q[8:0], {3{b_ram}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2]}};
       end
       wire [31:0] a_nx = pick9({2'b00, a_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
                                                   a_bd_q, qa0_q, qa1_q, qa2_q});
