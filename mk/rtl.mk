@@ -36,6 +36,10 @@ RTL_BENCH_CONFIGS := nc16 nc32 nc64
 RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
 RTL_SCENE_CONFIGS := drift
 
+# The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
+RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE
+rtl_gparams = $(join $(patsubst %,-G%=,$(wordlist 1,$(words $(RTL_CFG_$(1))),$(RTL_CFG_PARAMS))),$(RTL_CFG_$(1)))
+
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
 rtl_archive = $(call rtl_objdir,$(1))/Vfp3_top_$(1)__ALL.a
 rtl_shim    = $(BUILD)/sim/fp3_shim_$(1).o
@@ -55,16 +59,7 @@ $(RTL_PARAM_STAMP):
 define RTL_MODEL_RULES
 $(call rtl_archive,$(1)): $(RTL_SRC) $(RTL_INC) $(RTL_PARAM_STAMP) | $(SETUP_STAMP)
 	@mkdir -p $(call rtl_objdir,$(1))
-	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) \
-	  -GROUND=$(word 1,$(RTL_CFG_$(1))) -GFTZ=$(word 2,$(RTL_CFG_$(1))) \
-	  $(if $(word 3,$(RTL_CFG_$(1))),-GNUM_CONTEXTS=$(word 3,$(RTL_CFG_$(1)))) \
-	  $(if $(word 4,$(RTL_CFG_$(1))),-GADD_LATENCY=$(word 4,$(RTL_CFG_$(1)))) \
-	  $(if $(word 5,$(RTL_CFG_$(1))),-GMUL_LATENCY=$(word 5,$(RTL_CFG_$(1)))) \
-	  $(if $(word 6,$(RTL_CFG_$(1))),-GNUM_REGS=$(word 6,$(RTL_CFG_$(1)))) \
-	  $(if $(word 7,$(RTL_CFG_$(1))),-GHAS_ADD=$(word 7,$(RTL_CFG_$(1)))) \
-	  $(if $(word 8,$(RTL_CFG_$(1))),-GHAS_SUB=$(word 8,$(RTL_CFG_$(1)))) \
-	  $(if $(word 9,$(RTL_CFG_$(1))),-GHAS_MUL=$(word 9,$(RTL_CFG_$(1)))) \
-	  $(if $(word 10,$(RTL_CFG_$(1))),-GFMAX_PIPE=$(word 10,$(RTL_CFG_$(1)))) \
+	$(VERILATOR) --cc --build -j 2 $(RTL_VFLAGS) $(call rtl_gparams,$(1)) \
 	  --prefix Vfp3_top_$(1) --Mdir $(call rtl_objdir,$(1)) $(RTL_SRC) \
 	  >$(call rtl_objdir,$(1))/build.log 2>&1 || { tail -40 $(call rtl_objdir,$(1))/build.log; exit 1; }
 
