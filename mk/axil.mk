@@ -1,34 +1,52 @@
-# axil.mk -- the AXI4-Lite wrapper rtl/fp3_axil.v: its own Verilated model
-# (top fp3_axil, default parameters), its C shim, its lint and its test.
+# axil.mk -- the AXI4-Lite wrapper rtl/fp3_axil.v: its Verilated models
+# (top fp3_axil), their C shim, their lint and their test.
 #
-# tests/test_axil drives real AXI4-Lite transactions from C
-# (sim/fp3_axil_model.h) and links the host-port RTL model (RTL_OBJS) too,
+# One model per build variant (enum fp3_axil_variant of
+# sim/fp3_axil_model.h): default, every parameter at its default; fmax, the
+# build for clock rate, with the parameters of the processor model
+# RTL_CFG_fmax.  tests/test_axil drives real AXI4-Lite transactions from C
+# and links the host-port RTL models (RTL_OBJS and RTL_AXIL_CONFIGS) too,
 # through the sw library's engines, to compare the two (the Makefile reads
-# mk/rtl.mk, which defines RTL_OBJS and RTL_DEPS, before this file).
+# mk/rtl.mk, which defines them and rtl_gparams, before this file).
 
 AXIL_TOP      := fp3_axil
-AXIL_OBJDIR   := $(BUILD)/obj_fp3_axil
-AXIL_ARCHIVE  := $(AXIL_OBJDIR)/Vfp3_axil__ALL.a
-AXIL_SHIM_OBJ := $(BUILD)/sim/fp3_axil_shim.o
-AXIL_OBJS     := $(AXIL_SHIM_OBJ) $(AXIL_ARCHIVE)
+AXIL_VARIANTS := default fmax
+AXIL_PARAMS_default :=
+AXIL_PARAMS_fmax    := $(call rtl_gparams,fmax)
 AXIL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(AXIL_TOP)
 
-$(AXIL_ARCHIVE): $(RTL_SRC) $(RTL_INC) mk/axil.mk | $(SETUP_STAMP)
-	@mkdir -p $(AXIL_OBJDIR)
-	$(VERILATOR) --cc --build -j 2 $(AXIL_VFLAGS) --Mdir $(AXIL_OBJDIR) $(RTL_SRC) \
-	  >$(AXIL_OBJDIR)/build.log 2>&1 || { tail -40 $(AXIL_OBJDIR)/build.log; exit 1; }
-	@touch $@
+axil_objdir  = $(BUILD)/obj_fp3_axil_$(1)
+axil_archive = $(call axil_objdir,$(1))/Vfp3_axil_$(1)__ALL.a
 
-$(AXIL_SHIM_OBJ): sim/fp3_axil_shim.cpp sim/fp3_axil_model.h sim/vmodel.h $(AXIL_ARCHIVE)
-	@mkdir -p $(dir $@)
-	$(CXX) $(VERILATOR_CXXFLAGS) -I$(AXIL_OBJDIR) -c $< -o $@
-
-# `make lint` also lints the wrapper as a top of its own.
+# `make lint` also lints the wrapper as a top of its own, in each variant.
 .PHONY: lint-axil
 lint: lint-axil
-lint-axil: $(SETUP_STAMP)
-	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(AXIL_TOP) $(RTL_SRC)
-	@echo "lint: $(AXIL_TOP) verilator -Wall clean"
+
+define AXIL_MODEL_RULES
+$(call axil_archive,$(1)): $(RTL_SRC) $(RTL_INC) mk/axil.mk mk/rtl.mk | $(SETUP_STAMP)
+	@mkdir -p $(call axil_objdir,$(1))
+	$(VERILATOR) --cc --build -j 2 $(AXIL_VFLAGS) $(AXIL_PARAMS_$(1)) \
+	  --prefix Vfp3_axil_$(1) --Mdir $(call axil_objdir,$(1)) $(RTL_SRC) \
+	  >$(call axil_objdir,$(1))/build.log 2>&1 || { tail -40 $(call axil_objdir,$(1))/build.log; exit 1; }
+	@touch $$@
+
+.PHONY: lint-axil-$(1)
+lint-axil: lint-axil-$(1)
+lint-axil-$(1): $(SETUP_STAMP)
+	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(AXIL_TOP) $(AXIL_PARAMS_$(1)) $(RTL_SRC)
+	@echo "lint: $(AXIL_TOP) ($(1)) verilator -Wall clean"
+endef
+$(foreach v,$(AXIL_VARIANTS),$(eval $(call AXIL_MODEL_RULES,$(v))))
+
+# One shim serves every variant (a template over the Verilated class).
+AXIL_ARCHIVES := $(foreach v,$(AXIL_VARIANTS),$(call axil_archive,$(v)))
+AXIL_SHIM_OBJ := $(BUILD)/sim/fp3_axil_shim.o
+AXIL_OBJS     := $(AXIL_SHIM_OBJ) $(AXIL_ARCHIVES) \
+                 $(foreach c,$(RTL_AXIL_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+
+$(AXIL_SHIM_OBJ): sim/fp3_axil_shim.cpp sim/fp3_axil_model.h sim/vmodel.h $(AXIL_ARCHIVES)
+	@mkdir -p $(dir $@)
+	$(CXX) $(VERILATOR_CXXFLAGS) $(foreach v,$(AXIL_VARIANTS),-I$(call axil_objdir,$(v))) -c $< -o $@
 
 $(BUILD)/tests/test_axil: tests/test_axil.c sim/fp3_axil_model.h $(BUILD)/sw-san/libfp3.a \
                           $(AXIL_OBJS) $(RTL_DEPS)

@@ -35,6 +35,11 @@ RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # scenes/drift.scene` derives exactly these parameters (the test checks it).
 RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
 RTL_SCENE_CONFIGS := drift
+# ... and the build for clock rate (README "Fmax"), the processor inside the
+# AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which
+# tests/test_axil.c compares with it.
+RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
+RTL_AXIL_CONFIGS := fmax
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
 RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE
@@ -67,7 +72,8 @@ $(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h sim/vmodel.h $(call rtl_
 	@mkdir -p $$(dir $$@)
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef
-$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+$(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_CONFIGS) \
+                  $(RTL_AXIL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 # rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).

@@ -1,9 +1,9 @@
 /*
  * fp3_axil_model.h -- the Verilated AXI4-Lite wrapper (rtl/fp3_axil.v) as
- * plain C.
+ * plain C, in each of its builds (fp3_axil_variant).
  *
- * An opaque handle over the Verilator-generated C++ model; the only C++ of
- * this model is sim/fp3_axil_shim.cpp.  Each call of fp3_axil_model_cycle()
+ * An opaque handle over a Verilator-generated C++ model; the only C++ of
+ * these models is sim/fp3_axil_shim.cpp.  Each call of fp3_axil_model_cycle()
  * is one clock cycle: the master's signals in `in` are applied with the
  * clock low, the slave's signals are sampled after they settle and before
  * the rising edge (so a channel handshakes at this edge exactly when its
@@ -19,6 +19,14 @@ extern "C" {
 #endif
 
 typedef struct fp3_axil_model fp3_axil_model;
+
+/* The builds of the wrapper (mk/axil.mk). */
+typedef enum fp3_axil_variant {
+  FP3_AXIL_DEFAULT, /* every parameter at its default (FMAX_PIPE 0)        */
+  FP3_AXIL_FMAX     /* the build for clock rate: FMAX_PIPE 1, NUM_CONTEXTS
+                       8, ADD_LATENCY 9, MUL_LATENCY 10, the rest default
+                       (RTL_CFG_fmax of mk/rtl.mk)                         */
+} fp3_axil_variant;
 
 /* Master-driven signals of one cycle (s_axil_*_i). */
 typedef struct fp3_axil_in {
@@ -38,11 +46,15 @@ typedef struct fp3_axil_out {
   int running, done; /* side band */
 } fp3_axil_out;
 
-/* A new model, held in reset for two cycles.  trace_path: a VCD waveform
- * to write, or NULL.  NULL if out of memory or the file cannot be opened. */
-fp3_axil_model *fp3_axil_model_new(const char *trace_path);
+/* A new model of build `variant`, held in reset for two cycles.
+ * trace_path: a VCD waveform to write, or NULL.  NULL if out of memory,
+ * if the file cannot be opened (message on stderr) or for an unknown
+ * variant. */
+fp3_axil_model *fp3_axil_model_new(fp3_axil_variant variant, const char *trace_path);
+/* Close the waveform and free the model; m may be NULL. */
 void fp3_axil_model_free(fp3_axil_model *m);
-/* One clock cycle; `in` may be NULL (all master signals 0). */
+/* One clock cycle; `in` may be NULL (all master signals 0), `out` may be
+ * NULL. */
 void fp3_axil_model_cycle(fp3_axil_model *m, const fp3_axil_in *in, fp3_axil_out *out);
 
 #ifdef __cplusplus
