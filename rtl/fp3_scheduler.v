@@ -592,7 +592,7 @@ module fp3_scheduler #(
       end
     end
   endgenerate
-  wire [NC-1:0] fetch_req = active_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
+  wire [NC-1:0] fetch_req = factive_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -659,7 +659,6 @@ module fp3_scheduler #(
       start_q   <= 1'b0;
       bad_q     <= 1'b0;
       bad_err_q <= ERR_NONE;
-      active_q  <= {NC{1'b0}};
       final_q   <= {NC{1'b0}};
       last2_q   <= 32'd0;
     end else begin
@@ -672,7 +671,6 @@ module fp3_scheduler #(
           done_o    <= 1'b0;
           last2_q   <= steps_last2_i;
           final_q   <= {NC{steps_one_i}};
-          active_q  <= contexts_run_i;
         end else if (start_i || clear_i) begin
           done_o <= 1'b0;        // a refused START: DONE in the next cycle
         end else if (bad_q) begin
@@ -681,8 +679,6 @@ module fp3_scheduler #(
       end else begin
         for (k = 0; k < NC; k = k + 1) begin
           if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
-          if (gone[k] && (h_stop[k] || h_ovf[k])) active_q[k] <= 1'b0;
-          if (illegal[k]) active_q[k] <= 1'b0;
         end
         // Nothing in flight once DRAIN cycles passed without a busy flag.
         if (active_q == {NC{1'b0}} && idle_i && !issue_o && !(two && grant_q) &&
@@ -692,6 +688,30 @@ module fp3_scheduler #(
         end
       end
     end
+  end
+
+  // The active contexts: started by START, stopped by their halt or last
+  // endi, a PC overflow or an illegal head.  Two equal registers: the
+  // fetch arbiter has a copy of its own (kept apart in synthesis), so that
+  // its requests start at a flip-flop placed beside it rather than at one
+  // shared with the ready step, the queues and the run control.
+  reg [NC-1:0] active_d;
+  always @(*) begin
+    active_d = active_q;
+    if (rst_i) begin
+      active_d = {NC{1'b0}};
+    end else if (!running_o) begin
+      if (start_ok) active_d = contexts_run_i;
+    end else begin
+      for (k = 0; k < NC; k = k + 1)
+        if ((gone[k] && (h_stop[k] || h_ovf[k])) || illegal[k]) active_d[k] = 1'b0;
+    end
+  end
+  (* keep *) reg [NC-1:0] factive_q;   // the fetch arbiter's copy
+  initial factive_q = {NC{1'b0}};
+  always @(posedge clk_i) begin
+    active_q  <= active_d;
+    factive_q <= active_d;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
