@@ -11,10 +11,13 @@
 # sw/compile.c and sw/cmd_compile.c reach libfp3.a through mk/sw.mk's
 # wildcard.
 
-$(BUILD)/tests/test_compile: tests/test_compile.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
+# The test models (RTL_TEST_OBJS, mk/rtl.mk) give test_compile the build for
+# clock rate (nc3: FMAX_PIPE 1).
+$(BUILD)/tests/test_compile: tests/test_compile.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) \
+                             $(RTL_TEST_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
-	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_compile
 

@@ -300,12 +300,14 @@ struct fp3_compiled {
 
 /* Cycles from the issue of an instruction of `unit` to the issue of a
  * dependent one: the register file's read stage plus the unit's latency
- * (fp3_isa.h FP3_READ_CYCLES). */
+ * (fp3_isa.h FP3_READ_CYCLES; FMAX_PIPE's move path is
+ * FP3_FMAX_PIPE_PICK_STAGES longer). */
 static unsigned unit_latency(const fp3_compile_opts *o, unsigned unit) {
   switch (unit) {
   case FP3_UNIT_ADD: return FP3_READ_CYCLES + o->add_latency;
   case FP3_UNIT_MUL: return FP3_READ_CYCLES + o->mul_latency;
-  case FP3_UNIT_MOV: return FP3_READ_CYCLES + o->mov_latency;
+  case FP3_UNIT_MOV:
+    return FP3_READ_CYCLES + o->mov_latency + (o->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0);
   default: return 1;
   }
 }
@@ -411,6 +413,7 @@ void fp3_compile_defaults(fp3_compile_opts *o) {
   o->mul_latency = FP3_DEFAULT_MUL_LATENCY;
   o->mov_latency = 1;
   o->num_regs = FP3_DEFAULT_NUM_REGS;
+  o->fmax_pipe = 0;
 }
 
 typedef struct regalloc {
@@ -472,8 +475,14 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
     return -1;
   }
   if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
-      !o->mov_latency) {
-    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1)");
+      !o->mov_latency || o->fmax_pipe > 1) {
+    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
+    return -1;
+  }
+  if (o->fmax_pipe &&
+      (o->add_latency <= FP3_FMAX_PIPE_PICK_STAGES || o->mul_latency <= FP3_FMAX_PIPE_PICK_STAGES)) {
+    snprintf(msg, n, "FMAX_PIPE needs add and mul latencies of at least %d (add %u, mul %u)",
+             FP3_FMAX_PIPE_PICK_STAGES + 1, o->add_latency, o->mul_latency);
     return -1;
   }
   fp3_compiled *c = calloc(1, sizeof *c);
@@ -688,8 +697,9 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   fp3_strbuf_printf(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
       c->stats.body_insns, c->stats.body_arith, c->stats.literal_body_insns);
   fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
-  fp3_strbuf_printf(&t, "; estimated cycles (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
+  fp3_strbuf_printf(&t, "; estimated cycles%s (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
           ";   first integration %u, each later one %u\n",
+      o->fmax_pipe ? " for FMAX_PIPE=1" : "",
       unit_latency(o, FP3_UNIT_ADD), unit_latency(o, FP3_UNIT_MUL), unit_latency(o, FP3_UNIT_MOV),
       c->stats.est_cycles_first, c->stats.est_cycles_later);
   fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
@@ -814,25 +824,41 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
     if (fp3_insn_opc(img->words[k]) == FP3_OP_ENDI) endi_at = k;
   if (endi_at == img->n || iterations < 2) return -1;
   size_t loop = fp3_insn_imm(img->words[endi_at]);
-  long ready[256] = {0};
-  long t = FP3_START_CYCLES, prev_endi = -1;
+  /* Times are cycles of the scheduler's grants (fp3_scheduler.v; the
+   * issue of the default build).  Fetch to grant, fetch to fetch, grant to
+   * issue: */
+  const long to_grant = FP3_START_CYCLES + (lat->fmax_pipe ? FP3_FMAX_PIPE_FETCH_STAGES : 0);
+  const long fetch_spacing = lat->fmax_pipe ? FP3_FMAX_PIPE_FETCH_SPACING : FP3_FETCH_SPACING;
+  const long pick = lat->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0;
+  long ready[256] = {0};   /* a register's earliest grant to read or write it */
+  /* The cycle from which the slot of word k (k mod FP3_QUEUE_WORDS) is free
+   * for it: the cycle after the grant of the word FP3_QUEUE_WORDS before. */
+  long slot_free[FP3_QUEUE_WORDS] = {0};
+  long fetch = 0;          /* the earliest next fetch                      */
+  long t = 0;              /* the earliest next grant                      */
+  long prev_endi = -1;     /* the last endi's issue                        */
   unsigned it = 0;
-  for (size_t pc = 0; it < iterations && pc < img->n;) {
+  for (size_t pc = 0, words = 0; it < iterations && pc < img->n; words++) {
     uint64_t w = img->words[pc];
     unsigned opc = fp3_insn_opc(w), unit = fp3_opc_unit(opc);
     int uses = fp3_opc_uses(opc);
-    long at = t;
     if (uses < 0) return -1;
+    long *slot = &slot_free[words % FP3_QUEUE_WORDS];
+    if (*slot > fetch) fetch = *slot;
+    long at = fetch + to_grant > t ? fetch + to_grant : t;
+    fetch += fetch_spacing;
     if ((uses & FP3_USES_RA) && ready[fp3_insn_ra(w)] > at) at = ready[fp3_insn_ra(w)];
     if ((uses & FP3_USES_RB) && ready[fp3_insn_rb(w)] > at) at = ready[fp3_insn_rb(w)];
     if ((uses & FP3_USES_RD) && ready[fp3_insn_rd(w)] > at) at = ready[fp3_insn_rd(w)];
     if (uses & FP3_USES_RD) ready[fp3_insn_rd(w)] = at + (long)unit_latency(lat, unit);
+    *slot = at + 1;
     t = at + FP3_ISSUE_SPACING;
     if (opc == FP3_OP_ENDI) {
+      const long issue = at + pick;
       it++;
-      if (it == 1) *first = (unsigned)(at + 1);
-      else *later = (unsigned)(at - prev_endi);
-      prev_endi = at;
+      if (it == 1) *first = (unsigned)(issue + 1);
+      else *later = (unsigned)(issue - prev_endi);
+      prev_endi = issue;
       pc = loop;
     } else {
       pc++;

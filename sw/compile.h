@@ -51,12 +51,19 @@ typedef struct fp3_compile_opts {
   int drop_zero;         /* 1: remove terms zero in every object           */
   unsigned add_latency;  /* add/sub core latency, cycles (ADD_LATENCY)     */
   unsigned mul_latency;  /* mul core latency, cycles (MUL_LATENCY)         */
-  unsigned mov_latency;  /* move path latency, cycles (1)                  */
+  unsigned mov_latency;  /* move path latency, cycles (1; FMAX_PIPE adds
+                            FP3_FMAX_PIPE_PICK_STAGES)                    */
   unsigned num_regs;     /* registers per context                         */
+  unsigned fmax_pipe;    /* 1: for the build for clock rate (FMAX_PIPE=1,
+                            fp3_config.fmax_pipe): its pick and fetch
+                            stages (fp3_isa.h FP3_FMAX_PIPE_*); needs
+                            add_latency, mul_latency >
+                            FP3_FMAX_PIPE_PICK_STAGES; 0: the default   */
 } fp3_compile_opts;
 
 /* fold = drop_zero = 1, latencies FP3_DEFAULT_ADD_LATENCY and
- * FP3_DEFAULT_MUL_LATENCY (fp3_isa.h), moves 1, FP3_DEFAULT_NUM_REGS. */
+ * FP3_DEFAULT_MUL_LATENCY (fp3_isa.h), moves 1, FP3_DEFAULT_NUM_REGS,
+ * the default build (fmax_pipe = 0). */
 void fp3_compile_defaults(fp3_compile_opts *o);
 
 /* What a compilation produced (instruction counts are static: words of
@@ -88,8 +95,9 @@ int fp3_compile_knows(const char *name);
 /* Compile scene sc for integrator `integrator`; scene_name names the scene
  * in the program's header comment.  Returns 0 and *out (free with
  * fp3_compiled_free), or -1 with a message: unknown integrator, empty
- * scene, more registers than num_regs, a body longer than the instruction
- * memory. */
+ * scene, bad options (num_regs outside 4..256, a latency of 0, fmax_pipe
+ * not 0 or 1, or with a core latency it does not allow), more registers
+ * than num_regs, a body longer than the instruction memory. */
 int fp3_compile(const fp3_scene *sc, const char *integrator,
                 const fp3_compile_opts *opts, const char *scene_name,
                 fp3_compiled **out, char *msg, size_t n);
@@ -114,13 +122,25 @@ fp3_golden_ref fp3_compiled_golden(fp3_compiled *c);
  * message. */
 int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n);
 
-/* Estimated cycles of an image on an in-order single-issue FP3: the
- * prologue, then the loop body (from the target of the last endi) for
- * `iterations` >= 2 integrations; the first issue FP3_START_CYCLES after
- * START, one issue every FP3_ISSUE_SPACING cycles at most, dependent issue
- * FP3_READ_CYCLES + `latency` cycles after the producer, a destination written again only when its previous write
- * has landed.  *first: cycles to the end of the first integration, *later:
- * of the last one.  Returns 0, or -1 for an image without endi. */
+/* Estimated cycles of an image run by one context of the build `lat`
+ * describes (latencies, fmax_pipe): the prologue, then the loop body (from
+ * the target of the last endi) for `iterations` >= 2 integrations.  The
+ * model of fp3_scheduler.v, in cycles of its grants: one fetch at a time,
+ * at most every FP3_FETCH_SPACING cycles (FP3_FMAX_PIPE_FETCH_SPACING),
+ * into a queue of FP3_QUEUE_WORDS, whose slot frees in the cycle after its
+ * word's grant; the first fetch in cycle 0 after START; a word granted
+ * FP3_START_CYCLES (+ FP3_FMAX_PIPE_FETCH_STAGES) after its fetch at the
+ * earliest, at most one grant every FP3_ISSUE_SPACING cycles, a dependent
+ * one FP3_READ_CYCLES + `latency` cycles after its producer's, a
+ * destination written again only when its previous write has landed; an
+ * issue FP3_FMAX_PIPE_PICK_STAGES after its grant with fmax_pipe, else in
+ * the grant's cycle.  Exact for one context of either build on programs
+ * without beq; a beq is not modelled (the compiler emits none): it counts
+ * as an instruction without a result, not taken, resolved at once.
+ * *first: cycles from START to the end of the first integration (the
+ * cycle after its endi's issue), *later: from the last endi but one to
+ * the last.  Returns 0, or -1 for an image without endi, with an unknown
+ * opcode, or iterations < 2. */
 int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
                         unsigned iterations, unsigned *first, unsigned *later);
 

@@ -51,8 +51,28 @@
  * MUL_LATENCY, 1 for the move path) plus this.  The same with FMAX_PIPE
  * (rtl/fp3_top.v: two pick stages and four read stages, but
  * write-backs announced five cycles earlier), except that its move path
- * takes 3 cycles. */
+ * takes FP3_FMAX_PIPE_PICK_STAGES cycles more. */
 #define FP3_READ_CYCLES 1
+
+/* FMAX_PIPE's pick stages (rtl/fp3_top.v PICK, fp3_scheduler.v
+ * PICK_STAGES): an instruction issues this many cycles after the
+ * scheduler grants it, and the move path takes this many cycles more
+ * (fp3_top.v MOV_LATENCY = 1 + PICK); ADD_LATENCY and MUL_LATENCY must
+ * exceed it. */
+#define FP3_FMAX_PIPE_PICK_STAGES 2
+
+/* FMAX_PIPE's fetch stages (fp3_scheduler.v FETCH_STAGE): the fetch grant
+ * registered before the instruction memory and the word registered after
+ * it, so a word joins its queue this many cycles later. */
+#define FP3_FMAX_PIPE_FETCH_STAGES 2
+
+/* A context's instruction queue holds FP3_QUEUE_WORDS words
+ * (fp3_scheduler.v: two slots); a slot is free again in the cycle after
+ * its word's grant.  The context fetches one word at a time, only with a
+ * slot free, at most every FP3_FETCH_SPACING cycles (the fetch grant, the
+ * word arriving; with FMAX_PIPE, FP3_FMAX_PIPE_FETCH_SPACING). */
+#define FP3_QUEUE_WORDS 2
+#define FP3_FETCH_SPACING 2
 
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
  * beq (FP3_BEQ_CYCLES): the two pick stages, the three more
@@ -64,7 +84,7 @@
  * cycles (grant, read, word registered, queued), so one context runs
  * straight-line code no faster than that; with several contexts the
  * fetches interleave, one per cycle. */
-#define FP3_FMAX_PIPE_FETCH_SPACING 4
+#define FP3_FMAX_PIPE_FETCH_SPACING (FP3_FETCH_SPACING + FP3_FMAX_PIPE_FETCH_STAGES)
 
 /* A context issues at most once every FP3_ISSUE_SPACING cycles (its
  * readiness is decided a cycle ahead, for the instruction at the head of
@@ -72,7 +92,10 @@
 #define FP3_ISSUE_SPACING 2
 
 /* Cycles from START to the first issue: the first instruction is
- * fetched, lands in its context's queue, and is found ready. */
+ * fetched (in cycle 0, the first after START), lands in its context's
+ * queue, and is found ready; so also the fewest cycles from a word's
+ * fetch to its issue.  FMAX_PIPE adds FP3_FMAX_PIPE_FETCH_STAGES and
+ * FP3_FMAX_PIPE_PICK_STAGES. */
 #define FP3_START_CYCLES 3
 
 /* Cycles from a beq's issue to the next issue of its context: operands

@@ -10,7 +10,8 @@
  *  - the IR golden model equals the ISS bit for bit, every object after
  *    every integration, for random scenes and every integrator and option;
  *    and the RTL for a small scene, whose measured cycles per integration
- *    equal the scheduler's estimate for the engine's latencies;
+ *    equal the scheduler's estimate for the engine's latencies, on the
+ *    default build and on the build for clock rate (FMAX_PIPE);
  *  - the folded inputs are the host's binary32 products;
  *  - the emitted text assembles to the compiled image; bad input fails.
  */
@@ -31,6 +32,9 @@
 #include "fpref.h"
 #include "integrators.h"
 #include "objects.h"
+#include "../sim/fp3_model.h"
+
+extern const fp3_model_ops fp3_model_nc3; /* FMAX_PIPE 1 (mk/rtl.mk RTL_CFG_nc3) */
 
 static const char *const integrators[] = {"euler", "symeuler", "rk2", "rk4"};
 #define N_INTEG (sizeof integrators / sizeof integrators[0])
@@ -246,12 +250,33 @@ static void test_ir_equals_iss(void **state) {
   fp3_engine_free(iss);
 }
 
-/* On the RTL, compiled for the engine's own latencies: bit-exact, and one
- * object's cycles per later integration are the scheduler's estimate. */
-static void test_rtl(void **state) {
-  (void)state;
-  fp3_engine *rtl = fp3_engine_rtl_new(NULL);
-  assert_non_null(rtl);
+#define ENDIS 8 /* integrations measured by endi_cycles */
+
+static void on_endi(void *ctx, uint32_t integration, uint64_t cycle) {
+  uint64_t *at = ctx;
+  if (integration <= ENDIS) at[integration - 1] = cycle;
+}
+
+/* One context running img on e for ENDIS integrations (cycles do not
+ * depend on the register values): *first, cycles from START to the end of
+ * the first integration (the cycle after its endi's issue, as fp3 run
+ * counts it); *later, from the last endi but one to the last. */
+static void endi_cycles(fp3_engine *e, const fp3_image *img, unsigned *first, unsigned *later) {
+  uint64_t at[ENDIS] = {0};
+  fp3_observer obs = {at, NULL, on_endi, NULL, NULL};
+  fp3_status st;
+  assert_int_equal(fp3_engine_load(e, img->words, img->n), 0);
+  assert_int_equal(fp3_engine_run(e, ENDIS, &obs, &st), 0);
+  assert_int_equal(st.error, FP3_ERR_NONE);
+  *first = (unsigned)(at[0] + 1);
+  *later = (unsigned)(at[ENDIS - 1] - at[ENDIS - 2]);
+}
+
+/* On the RTL, compiled for the engine's own latencies and pipeline
+ * (fp3_config.fmax_pipe): bit-exact, and one object's cycles of the first
+ * and per later integration are the scheduler's estimates, for every
+ * integrator, folded or not. */
+static void expect_compiled_exact(fp3_engine *rtl) {
   fp3_scene sc, one;
   scene(30, 12, 1, 1, &sc);
   scene(31, 1, 1, 1, &one);
@@ -262,6 +287,7 @@ static void test_rtl(void **state) {
       o.fold = o.drop_zero = fold;
       o.add_latency = rtl->config.add_latency;
       o.mul_latency = rtl->config.mul_latency;
+      o.fmax_pipe = rtl->config.fmax_pipe;
       fp3_compiled *c = NULL;
       char msg[300];
       if (fp3_compile(&sc, integrators[i], &o, "t", &c, msg, sizeof msg)) fail_msg("%s", msg);
@@ -271,6 +297,9 @@ static void test_rtl(void **state) {
       run_on(rtl, c, &one, 40, &r2);
       assert_int_equal((r2.cycles - r1.cycles) / 20, fp3_compiled_stats(c)->est_cycles_later);
       assert_int_equal((r2.cycles - r1.cycles) % 20, 0);
+      unsigned first, later;
+      endi_cycles(rtl, fp3_compiled_image(c), &first, &later);
+      assert_int_equal(first, fp3_compiled_stats(c)->est_cycles_first);
       fp3_objects_result_free(&res);
       fp3_objects_result_free(&r1);
       fp3_objects_result_free(&r2);
@@ -278,7 +307,56 @@ static void test_rtl(void **state) {
     }
   fp3_scene_free(&sc);
   fp3_scene_free(&one);
+}
+
+/* Moves, which compiled bodies lack, estimated exactly: dependence chains
+ * through multiplies and a mov closing the loop (the first: its waits
+ * fill the queue, which then limits the fetch; the second: two moves on
+ * the chain, which the move path's latency decides). */
+static void expect_moves_exact(fp3_engine *rtl) {
+  static const char *const progs[] = {
+      "li r4, 1.0\nbody:\nmul r1, r2, r4\nmul r6, r1, r4\nmul r7, r6, r4\nmov r2, r7\n"
+      "endi body\n",
+      "li r4, 1.0\nli r2, 2.0\nbody:\nmul r1, r2, r4\nmov r5, r1\nmul r6, r5, r4\n"
+      "mov r2, r6\nendi body\n",
+  };
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  o.add_latency = rtl->config.add_latency;
+  o.mul_latency = rtl->config.mul_latency;
+  o.fmax_pipe = rtl->config.fmax_pipe;
+  for (size_t i = 0; i < sizeof progs / sizeof progs[0]; i++) {
+    fp3_image img;
+    char *errs = NULL;
+    if (fp3_asm_string(progs[i], "moves.s", &img, &errs)) fail_msg("%s", errs);
+    free(errs);
+    unsigned first, later, est_first, est_later;
+    endi_cycles(rtl, &img, &first, &later);
+    assert_int_equal(fp3_estimate_cycles(&img, &o, ENDIS, &est_first, &est_later), 0);
+    assert_int_equal(first, est_first);
+    assert_int_equal(later, est_later);
+  }
+}
+
+/* Both on an RTL engine of build `fmax_pipe` (freed here). */
+static void expect_estimates_exact(fp3_engine *rtl, unsigned fmax_pipe) {
+  assert_non_null(rtl);
+  assert_int_equal(rtl->config.fmax_pipe, fmax_pipe);
+  expect_compiled_exact(rtl);
+  expect_moves_exact(rtl);
   fp3_engine_free(rtl);
+}
+
+static void test_rtl(void **state) {
+  (void)state;
+  expect_estimates_exact(fp3_engine_rtl_new(NULL), 0);
+}
+
+/* The same on the build for clock rate (the 3-context test model: FMAX_PIPE,
+ * add 6, mul 5): its 3-cycle move path, fetch spacing and pick stages. */
+static void test_rtl_fmax_pipe(void **state) {
+  (void)state;
+  expect_estimates_exact(fp3_engine_rtl_new_model(&fp3_model_nc3, NULL), 1);
 }
 
 /* ---- inputs, text, errors -------------------------------------------------------- */
@@ -350,6 +428,14 @@ static void test_errors(void **state) {
   assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "registers"));
   fp3_compile_defaults(&o);
+  o.fmax_pipe = 2;
+  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "fmax_pipe 0 or 1"));
+  o.fmax_pipe = 1;
+  o.mul_latency = FP3_FMAX_PIPE_PICK_STAGES; /* the RTL refuses to elaborate it */
+  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "FMAX_PIPE needs"));
+  fp3_compile_defaults(&o);
   fp3_scene empty = {NULL, 0};
   assert_int_equal(fp3_compile(&empty, "rk4", &o, "t", &c, msg, sizeof msg), -1);
   fp3_scene_free(&sc);
@@ -367,6 +453,7 @@ int main(void) {
       cmocka_unit_test(test_errors),
       cmocka_unit_test(test_ir_equals_iss),
       cmocka_unit_test(test_rtl),
+      cmocka_unit_test(test_rtl_fmax_pipe),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
