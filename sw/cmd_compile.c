@@ -20,7 +20,8 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 compile SCENE [--integrator NAME] [-o PROGRAM.s]\n"
           "                   [--literal | --no-fold] [--keep-zero]\n"
-          "                   [--add-latency N] [--mul-latency N] [--json]\n"
+          "                   [--add-latency N] [--mul-latency N] [--fmax-pipe]\n"
+          "                   [--json]\n"
           "\n"
           "Compile the scene file SCENE ('h STEP', then 'T C m v0 s0' per object,\n"
           "see fp3 run --help) and an integrator into an FP3 program that computes\n"
@@ -40,16 +41,22 @@ static void usage(FILE *f) {
           "  --literal        both: the operations of programs/ship_I.s\n"
           "  --add-latency N, --mul-latency N   core latencies (ADD_LATENCY, MUL_LATENCY) to schedule for\n"
           "                   (default %u and %u, sw/fp3_isa.h)\n"
+          "  --fmax-pipe      schedule and estimate for the build for clock rate\n"
+          "                   (FMAX_PIPE=1: a move's consumer waits %d cycles more, a\n"
+          "                   context fetches at most every %d cycles; add and mul\n"
+          "                   latencies of at least %d)\n"
           "  --json           the report as one JSON object on standard output\n"
           "                   (with -o only)\n"
           "\n"
           "The report (standard error, or --json): instructions per integration\n"
           "of the literal program and of the compiled one, and the scheduler's\n"
-          "estimate of cycles per integration.\n"
+          "estimate of cycles per integration of one object (one context; exact\n"
+          "for the RTL of these latencies and pipeline).\n"
           "Exit status: 0 written; 2 bad arguments, scene or integrator; 1 the\n"
           "output could not be written.\n",
           fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
-          (unsigned)FP3_DEFAULT_MUL_LATENCY);
+          (unsigned)FP3_DEFAULT_MUL_LATENCY, FP3_FMAX_PIPE_PICK_STAGES,
+          FP3_FMAX_PIPE_FETCH_SPACING, FP3_FMAX_PIPE_PICK_STAGES + 1);
 }
 
 /* A latency option value 1..64. */
@@ -86,6 +93,8 @@ int fp3_cmd_compile(int argc, char **argv) {
       if (r < 0 || latency_arg("--add-latency", v, &o.add_latency)) return EXIT_USAGE;
     } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--mul-latency", &v)) != 0) {
       if (r < 0 || latency_arg("--mul-latency", v, &o.mul_latency)) return EXIT_USAGE;
+    } else if (strcmp(argv[i], "--fmax-pipe") == 0) {
+      o.fmax_pipe = 1;
     } else if (strcmp(argv[i], "--literal") == 0) {
       o.fold = o.drop_zero = 0;
     } else if (strcmp(argv[i], "--no-fold") == 0) {
@@ -141,16 +150,17 @@ int fp3_cmd_compile(int argc, char **argv) {
            st->body_insns, st->body_arith, st->literal_body_insns);
     printf(", \"prologue_insns\": %u, \"hoisted\": %u, \"dead_removed\": %u, \"registers\": %u",
            st->prologue_insns, st->hoisted, st->dead_removed, st->regs);
-    printf(", \"add_latency\": %u, \"mul_latency\": %u", o.add_latency, o.mul_latency);
+    printf(", \"add_latency\": %u, \"mul_latency\": %u, \"fmax_pipe\": %s", o.add_latency,
+           o.mul_latency, o.fmax_pipe ? "true" : "false");
     printf(", \"est_cycles_first_step\": %u, \"est_cycles_per_step\": %u}\n",
            st->est_cycles_first, st->est_cycles_later);
   } else if (rc == 0) {
     fprintf(stderr,
             "fp3 compile: %s (%zu objects), %s: %u instructions per integration "
             "(literal program %u), prologue %u; estimated %u cycles per later "
-            "integration (first %u)%s%s\n",
+            "integration (first %u)%s%s%s\n",
             scene, sc.n, integ, st->body_insns, st->literal_body_insns, st->prologue_insns,
-            st->est_cycles_later, st->est_cycles_first,
+            st->est_cycles_later, st->est_cycles_first, o.fmax_pipe ? " for FMAX_PIPE=1" : "",
             o.drop_zero && st->no_drag ? "; no drag" : "",
             o.drop_zero && st->no_thrust ? "; no thrust" : "");
   }

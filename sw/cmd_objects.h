@@ -24,7 +24,8 @@ typedef struct fp3_objects_cmd {
                                     for integ_name (compile.h) and its
                                     golden model instead of img, golden */
   const fp3_compile_opts *copts; /* its options (NULL: defaults with the
-                                    engine's latencies and registers)  */
+                                    engine's latencies, registers and
+                                    FMAX_PIPE)                          */
   const char *scene_path;        /* scene file, or NULL: generate        */
   size_t objects;                /* --objects (0: all of the scene)      */
   uint64_t seed;                 /* generator seed                       */
