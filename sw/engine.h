@@ -41,8 +41,12 @@ typedef struct fp3_config {
   unsigned has_sub;     /* 1: the adder subtracts (HAS_SUB); 0: sub illegal */
   unsigned has_mul;     /* 1: a mul core (HAS_MUL); 0: mul illegal        */
   unsigned fmax_pipe;   /* 1: the pipeline for clock rate (FMAX_PIPE, RTL
-                           only): same dependent-issue distances, a beq
-                           FP3_FMAX_PIPE_CYCLES longer (fp3_isa.h)        */
+                           only): same dependent-issue distances after an
+                           add or mul, a move's consumer 2 cycles later
+                           (FP3_FMAX_PIPE_PICK_STAGES), a beq
+                           FP3_FMAX_PIPE_CYCLES longer, a context fetching
+                           every FP3_FMAX_PIPE_FETCH_SPACING cycles, host
+                           reads of 4 cycles (fp3_isa.h)                  */
 } fp3_config;
 
 /* Check that a program only needs the units a build has: every add, sub
