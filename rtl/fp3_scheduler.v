@@ -695,18 +695,10 @@ module fp3_scheduler #(
   // fetch arbiter has a copy of its own (kept apart in synthesis), so that
   // its requests start at a flip-flop placed beside it rather than at one
   // shared with the ready step, the queues and the run control.
-  reg [NC-1:0] active_d;
-  always @(*) begin
-    active_d = active_q;
-    if (rst_i) begin
-      active_d = {NC{1'b0}};
-    end else if (!running_o) begin
-      if (start_ok) active_d = contexts_run_i;
-    end else begin
-      for (k = 0; k < NC; k = k + 1)
-        if ((gone[k] && (h_stop[k] || h_ovf[k])) || illegal[k]) active_d[k] = 1'b0;
-    end
-  end
+  wire [NC-1:0] stop_now = (gone & (h_stop | h_ovf)) | illegal;
+  wire [NC-1:0] active_d = rst_i      ? {NC{1'b0}} :
+                           !running_o ? (start_ok ? contexts_run_i : active_q) :
+                                        active_q & ~stop_now;
   (* keep *) reg [NC-1:0] factive_q;   // the fetch arbiter's copy
   initial factive_q = {NC{1'b0}};
   always @(posedge clk_i) begin

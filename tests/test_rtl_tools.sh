@@ -21,6 +21,16 @@ out=$(verilator --lint-only -Wall -Irtl --top-module fp3_top -GFMAX_PIPE=1 -GADD
 if [ -n "$out" ]; then echo "$out"; echo "FAIL: verilator lint (FMAX_PIPE=1) printed warnings"; exit 1; fi
 echo "PASS: verilator -Wall clean with FMAX_PIPE=1 ADD_LATENCY=9 MUL_LATENCY=10"
 
+# No latch in either build (make synth fails on one, scripts/synth.sh; this
+# is the same check after Yosys's proc alone, seconds instead of minutes):
+# a combinational block that leaves a variable unassigned on some path.
+for params in "" "-chparam FMAX_PIPE 1 -chparam NUM_CONTEXTS 8 -chparam ADD_LATENCY 9 -chparam MUL_LATENCY 10"; do
+  ${YOSYS:-yosys} -q -p "read_verilog -Irtl ${src//$'\n'/ }; hierarchy -top fp3_axil $params; proc;
+    select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr" >"$tmp/latch.log" 2>&1 || {
+    grep -E "ERROR|latch" "$tmp/latch.log" | head; echo "FAIL: a latch in fp3_axil ($params)"; exit 1; }
+done
+echo "PASS: no latch after yosys proc (default and FMAX_PIPE=1 builds)"
+
 # make pnr-unit's wrapper (scripts/unit-wrap.py): for the register file of
 # the build for clock rate it elaborates in Icarus without a warning, its
 # input shift register is as wide as the module's inputs (13 8-bit
