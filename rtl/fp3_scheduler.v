@@ -153,11 +153,13 @@ module fp3_scheduler #(
 
   localparam integer NC = NUM_CONTEXTS;
   localparam integer XW = CW + IW;
-  localparam [7:0]   DRAIN8 = DRAIN[7:0];
+  localparam [7:0]   LULL8 = DRAIN[7:0] - 8'd1;  // (lull_q, below)
   localparam integer DW = 12;       // a queue entry's decoded bits (adec)
 
   // ---- per-context state ---------------------------------------------------
-  reg [NC-1:0] active_q;            // fetching and issuing
+  reg [NC-1:0] active_q;            // fetching and issuing, but for stop_q (act)
+  reg [NC-1:0] stop_q;              // the head granted in the last cycle stopped its context
+  wire [NC-1:0] act;                // active: active_q & ~stop_q (run control, below)
   // Each queue has two slots (slot e of context c is entry 2c + e), used
   // as a ring: hp_q points to the head.  A granted head only flips hp_q and
   // clears its valid bit, and an arriving word is written into the free
@@ -185,7 +187,8 @@ module fp3_scheduler #(
   reg          fvalid_q;            // a fetched word arrives this cycle
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
-  reg [7:0]    quiet_q;             // cycles without busy flag or issue, to DRAIN
+  reg [7:0]    lull_q;              // cycles without busy flag or issue, to DRAIN - 1, a cycle late
+  reg          idle_q, iss_q;       // idle_i and issue_o a cycle late
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
@@ -430,7 +433,7 @@ module fp3_scheduler #(
       // was granted).
       assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
       assign l_fields[c*FW +: FW] = hp ? fields[2*c*FW +: FW] : fields[(2*c+1)*FW +: FW];
-      assign ready_d[c] = active_q[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
+      assign ready_d[c] = act[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
     end
   endgenerate
 `undef FP3_FREED
@@ -588,11 +591,11 @@ module fp3_scheduler #(
       assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
-        assign wslot[2*c+e] = wsel_q[2*c+e] && active_q[c] && running_o;
+        assign wslot[2*c+e] = wsel_q[2*c+e] && act[c] && running_o;
       end
     end
   endgenerate
-  wire [NC-1:0] fetch_req = factive_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
+  wire [NC-1:0] fetch_req = factive_q & ~fstop_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -648,7 +651,7 @@ module fp3_scheduler #(
   //                in which nothing can have issued yet, or set a cycle
   //                after a refused START (bad_q).
   wire          bad_start = start_i && !running_o && !start_ok;
-  wire [NC-1:0] illegal   = active_q & holds & ~legal;
+  wire [NC-1:0] illegal   = act & holds & ~legal;
   reg           start_q, bad_q;  // a START taken / refused in the last cycle
   reg  [3:0]    bad_err_q;       // ... why it was refused
   integer k, m;
@@ -680,9 +683,13 @@ module fp3_scheduler #(
         for (k = 0; k < NC; k = k + 1) begin
           if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
         end
-        // Nothing in flight once DRAIN cycles passed without a busy flag.
-        if (active_q == {NC{1'b0}} && idle_i && !issue_o && !(two && grant_q) &&
-            quiet_q == DRAIN8) begin
+        // Nothing in flight once DRAIN cycles passed without a busy flag
+        // or an issue: the last of them was cycle t - 1 (idle_q, iss_q),
+        // the DRAIN - 1 before it are counted in lull_q, and cycle t - 1
+        // was one of the run (not start_q).  No busy flag now follows (idle_i is not
+        // needed): none was set in t - 1, as nothing issued.
+        if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_q &&
+            idle_q && !iss_q && lull_q == LULL8) begin
           running_o <= 1'b0;
           done_o    <= 1'b1;
         end
@@ -690,20 +697,29 @@ module fp3_scheduler #(
     end
   end
 
-  // The active contexts: started by START, stopped by their halt or last
-  // endi, a PC overflow or an illegal head.  Two equal registers: the
-  // fetch arbiter has a copy of its own (kept apart in synthesis), so that
-  // its requests start at a flip-flop placed beside it rather than at one
-  // shared with the ready step, the queues and the run control.
-  wire [NC-1:0] stop_now = (gone & (h_stop | h_ovf)) | illegal;
+  // The active contexts (act): started by START, stopped by their halt or
+  // last endi, a PC overflow or an illegal head.  A head granted in cycle
+  // t that stops its context is registered (stop_q) and taken off act in
+  // cycle t + 1, and off active_q in t + 2: so the grant drives one
+  // flip-flop, not the active contexts' next state.  Two equal sets of
+  // registers: the fetch arbiter has a copy of its own (kept apart in
+  // synthesis), so that its requests start at flip-flops placed beside it
+  // rather than at ones shared with the ready step, the queues and the
+  // run control.
+  assign act = active_q & ~stop_q;
+  wire [NC-1:0] stop_d   = gone & (h_stop | h_ovf) & {NC{running_o && !rst_i}};
   wire [NC-1:0] active_d = rst_i      ? {NC{1'b0}} :
-                           !running_o ? (start_ok ? contexts_run_i : active_q) :
-                                        active_q & ~stop_now;
-  (* keep *) reg [NC-1:0] factive_q;   // the fetch arbiter's copy
+                           !running_o ? (start_ok ? contexts_run_i : act) :
+                                        act & ~illegal;
+  (* keep *) reg [NC-1:0] factive_q;   // the fetch arbiter's copies
+  (* keep *) reg [NC-1:0] fstop_q;
   initial factive_q = {NC{1'b0}};
+  initial fstop_q   = {NC{1'b0}};
   always @(posedge clk_i) begin
     active_q  <= active_d;
     factive_q <= active_d;
+    stop_q    <= stop_d;
+    fstop_q   <= stop_d;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
@@ -728,7 +744,7 @@ module fp3_scheduler #(
       wsel_q   <= {(2*NC){1'b0}};
       in_flight <= {NC{1'b0}};
       fvalid_q <= 1'b0;
-      quiet_q  <= 8'd0;
+      lull_q   <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
       rh_q     <= {NC{1'b0}};
       fhigh_q  <= {NC{1'b1}};
@@ -754,7 +770,7 @@ module fp3_scheduler #(
           end
           wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
         end
-        if (arriving[k] && active_q[k]) begin
+        if (arriving[k] && act[k]) begin
           fpc_q[k] <= a_next;
           if (!a_endi && a_atend) fend_q[k] <= 1'b1;
           if (a_beq) bwait_q[k] <= 1'b1;
@@ -781,8 +797,10 @@ module fp3_scheduler #(
       in_flight <= (in_flight | (fetch ? fgnt : {NC{1'b0}})) & ~arriving;
       if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
 
-      if (!idle_i || issue_o)      quiet_q <= 8'd0;
-      else if (quiet_q != DRAIN8)  quiet_q <= quiet_q + 8'd1;
+      // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
+      // control), none before the run's first cycle.
+      if (start_q || !idle_q || iss_q) lull_q <= 8'd0;
+      else if (lull_q != LULL8)        lull_q <= lull_q + 8'd1;
     end
   end
 
@@ -791,7 +809,11 @@ module fp3_scheduler #(
   // either (a context was active, with work), and in its first cycle, in
   // which the results are cleared, there was none in the one before.
   reg stall_q;              // a stall in the last cycle
-  always @(posedge clk_i) stall_q <= running_o && !grant && |(active_q & holds);
+  always @(posedge clk_i) begin
+    stall_q <= running_o && !grant && |(act & holds);
+    idle_q  <= idle_i;
+    iss_q   <= issue_o;
+  end
 
   always @(posedge clk_i) begin
     if (rst_i || start_q) begin
@@ -847,7 +869,7 @@ module fp3_scheduler #(
 
 `ifdef FORMAL
   // The granted context is a candidate, and is active.
-  always @(*) if (grant) assert (cand[g] && active_q[g]);
+  always @(*) if (grant) assert (cand[g] && act[g]);
 `endif
 endmodule
 `default_nettype wire
