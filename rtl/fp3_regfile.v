@@ -171,16 +171,10 @@ module fp3_regfile #(
   // the RAM read at the same edge missed) replaces the RAM data.  Nothing
   // of this sits behind the issue arbiter in cycle t.
   reg [XW-1:0] a_idx_q, b_idx_q;
-  reg [2:0]    wv_q;                    // the writes of the last cycle
-  reg [XW-1:0] wi0_q, wi1_q, wi2_q;
-  reg [31:0]   wd0_q, wd1_q, wd2_q;
+  reg [31:0]   wd0_q, wd1_q, wd2_q;    // the data written in the last cycle
   always @(posedge clk_i) begin
     a_idx_q <= a_idx;
     b_idx_q <= rb_i;
-    wv_q    <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
-    wi0_q   <= wb0_idx_i;
-    wi1_q   <= wb1_idx_i;
-    wi2_q   <= w2_idx;
     wd0_q   <= wb0_data_i;
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
@@ -210,6 +204,14 @@ module fp3_regfile #(
       // Cycle t + 1: the writes of cycle t (they missed the RAMs' read)
       // replace the RAM data the LVT entry of the index (it includes
       // them) names.
+      reg [2:0]    wv_q;                // the writes of the last cycle
+      reg [XW-1:0] wi0_q, wi1_q, wi2_q;
+      always @(posedge clk_i) begin
+        wv_q  <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
+        wi0_q <= wb0_idx_i;
+        wi1_q <= wb1_idx_i;
+        wi2_q <= w2_idx;
+      end
       // Bypass of one write-back cycle: {hit, data} for index x.
 `define FP3_BYPASS(x) \
   ((wv_q[0] && wi0_q == (x)) ? {1'b1, wd0_q} : \
@@ -227,33 +229,46 @@ module fp3_regfile #(
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
                          (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 : q21;
     end else if (READ_STAGES == 4) begin : g_read4
-      // Cycle t + 1 (the RAMs read at their registered address copies;
-      // their writes land a cycle late, so the read has the writes up to
-      // cycle t - 1): the read indices compared with the writes of cycle
-      // t (registered, wv_q: the host's write included, for its reads)
-      // and the write-backs of cycles t + 1, t + 2 (nx_*, a cycle ahead)
-      // and t + 3 (wb*_in2_i, two cycles ahead), as a one-hot choice of
-      // the newest, registered.  (The host writes only while stopped.)
+      // Cycle t: the read indices compared with the writes known then,
+      // registered (*_hits_q): those of cycle t (the ports' inputs, the
+      // host's write included, for its reads), of t + 1 (nx_*, a cycle
+      // ahead) and of t + 2 (wb*_in2_*, two cycles ahead).  Cycle t + 1
+      // (the RAMs read at their registered address copies; their writes
+      // land a cycle late, so the read has the writes up to cycle t - 1):
+      // with the write-backs of cycle t + 3 (wb*_in2_* then), the newest
+      // of the twelve hits, one-hot, registered.  So cycle t + 1 compares
+      // three indices, not twelve.  (The host writes only while stopped.)
+      function [8:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2 each}
+        input [XW-1:0] x;
+        begin
+          hits_known = {wb0_in2_valid_i && wb0_in2_idx_i == x,
+                        wb1_in2_valid_i && wb1_in2_idx_i == x,
+                        wb2_in2_valid_i && wb2_in2_idx_i == x,
+                        nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
+                        wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
+                        w2_valid && w2_idx == x};
+        end
+      endfunction
       function [11:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2 each}
         input [XW-1:0] x;
+        input [8:0]    known;     // hits_known(x), a cycle old
         reg   [11:0]   h;
         integer        j;
         begin
           h = {wb0_in2_valid_i && wb0_in2_idx_i == x, wb1_in2_valid_i && wb1_in2_idx_i == x,
-               wb2_in2_valid_i && wb2_in2_idx_i == x,
-               nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
-               wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
-               wb2_valid_i && wb2_idx_i == x,
-               wv_q[0] && wi0_q == x, wv_q[1] && wi1_q == x, wv_q[2] && wi2_q == x};
+               wb2_in2_valid_i && wb2_in2_idx_i == x, known};
           byp_sel = h;
           for (j = 1; j < 12; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
       endfunction
+      reg [8:0]    a_hits_q, b_hits_q;
       reg [11:0]   a_hit_q, b_hit_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q);
-        b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q);
+        a_hits_q <= rst_i ? 9'd0 : hits_known(a_idx);
+        b_hits_q <= rst_i ? 9'd0 : hits_known(rb_i);
+        a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q, a_hits_q);
+        b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q, b_hits_q);
         a_idx_qq <= a_idx_q;
         b_idx_qq <= b_idx_q;
       end
