@@ -595,7 +595,7 @@ module fp3_scheduler #(
       end
     end
   endgenerate
-  wire [NC-1:0] fetch_req = factive_q & ~fstop_q & ~fend_q & ~full & ~in_flight & ~bwait_q;
+  wire [NC-1:0] fetch_req = fok_q & ~fstop_q & ~full & ~in_flight;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -622,6 +622,25 @@ module fp3_scheduler #(
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
+
+  // A context stops fetching when it has fetched the memory's last word
+  // (fend) or a beq (bwait), as its word arrives; a resolved beq releases
+  // it (its word arrived at least three cycles ago, so no arriving word
+  // competes), and a taken one moves it to its target (inside the
+  // memory: legal targets are).  Next state (fetch_step registers below).
+  wire [NC-1:0] fend_d, bwait_d;
+  generate
+    for (c = 0; c < NC; c = c + 1) begin : g_fflags
+      wire arr = arriving[c] && act[c];
+      wire br  = br_valid_i && br_ctx_i == c[CW-1:0];
+      assign fend_d[c]  = (rst_i || !running_o)  ? 1'b0 :
+                          (br && br_taken_i)      ? 1'b0 :
+                          (arr && !a_endi && a_atend) ? 1'b1 : fend_q[c];
+      assign bwait_d[c] = (rst_i || !running_o)  ? 1'b0 :
+                          br                      ? 1'b0 :
+                          (arr && a_beq)          ? 1'b1 : bwait_q[c];
+    end
+  endgenerate
 
   wire start_ok = start_i && !running_o && !steps_zero_i && !contexts_bad_i;
 
@@ -701,25 +720,29 @@ module fp3_scheduler #(
   // last endi, a PC overflow or an illegal head.  A head granted in cycle
   // t that stops its context is registered (stop_q) and taken off act in
   // cycle t + 1, and off active_q in t + 2: so the grant drives one
-  // flip-flop, not the active contexts' next state.  Two equal sets of
-  // registers: the fetch arbiter has a copy of its own (kept apart in
-  // synthesis), so that its requests start at flip-flops placed beside it
-  // rather than at ones shared with the ready step, the queues and the
-  // run control.
+  // flip-flop, not the active contexts' next state.  The fetch arbiter
+  // has registers of its own (kept apart in synthesis), so that its
+  // requests start at flip-flops placed beside it rather than at ones
+  // shared with the ready step, the queues and the run control: a copy
+  // of stop_q, and fok_q, the active contexts that may fetch as far as
+  // their own state goes (not past the memory's last word, not waiting
+  // on a beq; fend_d, bwait_d: the fetch step).
   assign act = active_q & ~stop_q;
   wire [NC-1:0] stop_d   = gone & (h_stop | h_ovf) & {NC{running_o && !rst_i}};
-  wire [NC-1:0] active_d = rst_i      ? {NC{1'b0}} :
-                           !running_o ? (start_ok ? contexts_run_i : act) :
-                                        act & ~illegal;
-  (* keep *) reg [NC-1:0] factive_q;   // the fetch arbiter's copies
+  // START (from the host's write) is the last multiplexer in front of
+  // the registers: held_d is their next state without it.
+  wire          start_now = start_ok && !rst_i;
+  wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
+  wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
+  (* keep *) reg [NC-1:0] fok_q;       // the fetch arbiter's registers
   (* keep *) reg [NC-1:0] fstop_q;
-  initial factive_q = {NC{1'b0}};
-  initial fstop_q   = {NC{1'b0}};
+  initial fok_q   = {NC{1'b0}};
+  initial fstop_q = {NC{1'b0}};
   always @(posedge clk_i) begin
-    active_q  <= active_d;
-    factive_q <= active_d;
-    stop_q    <= stop_d;
-    fstop_q   <= stop_d;
+    active_q <= active_d;
+    stop_q   <= stop_d;
+    fok_q    <= start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
+    fstop_q  <= stop_d;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
@@ -734,11 +757,13 @@ module fp3_scheduler #(
   end
 
   always @(posedge clk_i) begin
+    fend_q  <= fend_d;
+    bwait_q <= bwait_d;
+  end
+  always @(posedge clk_i) begin
     if (rst_i || !running_o) begin
       hp_q     <= {NC{1'b0}};
       v_q      <= {(2*NC){1'b0}};
-      fend_q   <= {NC{1'b0}};
-      bwait_q  <= {NC{1'b0}};
       ready_q  <= {NC{1'b0}};
       fr_q     <= {(2*NC){1'b0}};
       wsel_q   <= {(2*NC){1'b0}};
@@ -770,21 +795,10 @@ module fp3_scheduler #(
           end
           wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
         end
-        if (arriving[k] && act[k]) begin
-          fpc_q[k] <= a_next;
-          if (!a_endi && a_atend) fend_q[k] <= 1'b1;
-          if (a_beq) bwait_q[k] <= 1'b1;
-        end
-        // A resolved beq releases its context's fetch, at its target if
-        // taken (inside the memory: legal targets are).  Its word arrived
-        // at least three cycles ago, so no arriving word competes here.
-        if (br_valid_i && br_ctx_i == k[CW-1:0]) begin
-          bwait_q[k] <= 1'b0;
-          if (br_taken_i) begin
-            fpc_q[k]  <= br_target_i;
-            fend_q[k] <= 1'b0;
-          end
-        end
+        // The fetch PC: after the arriving word, or a taken beq's target
+        // (fend_d, bwait_d).
+        if (arriving[k] && act[k]) fpc_q[k] <= a_next;
+        if (br_valid_i && br_taken_i && br_ctx_i == k[CW-1:0]) fpc_q[k] <= br_target_i;
       end
       ghigh_q <= ghigh_d;
       rh_q    <= ready_d & ~gone & ghigh_d;
