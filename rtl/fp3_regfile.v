@@ -13,8 +13,9 @@
 // program order.
 //
 // Storage: RAM with a registered read (one write port per RAM): FPGA block
-// RAM for the banks of many contexts, or LUT RAM read over two cycles for
-// clock rate (READ_STAGES = 4).  The three write-back ports (add core, mul
+// RAM for the banks of many contexts, or RAM read over two cycles for
+// clock rate (READ_STAGES = 4; fp3_ram READ_STAGES 2: LUT RAM, or in ECP5
+// synthesis block RAM with its output register).  The three write-back ports (add core, mul
 // core, move path) each write a RAM of their own, replicated once per read
 // port, and a live value table (LVT, 2 bits per register, in flip-flops)
 // records which port wrote each register last (LaForest & Steffan,
@@ -35,14 +36,14 @@
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
 //                    of the three RAMs' data (one stage; the default)
 //   READ_STAGES = 4  for clock rate.  Cycle t: the RAMs register the read
-//                    address (a copy per 4-bit lane; their writes are
-//                    registered likewise); cycle t + 1: the RAMs are read
-//                    (LUT RAM: no block-RAM output, 5.8 ns from the clock
-//                    on the ECP5, starts a path), the LVT's first half is
-//                    read, and the index is compared with the writes of
-//                    cycle t and the write-backs of cycles t + 1, t + 2
-//                    and t + 3 (announced two cycles ahead, wb*_in2_i),
-//                    registered; cycle t + 2: the RAMs' words and the
+//                    address, and the index is compared with the writes
+//                    of cycle t and the write-backs of cycles t + 1 and
+//                    t + 2 (announced ahead), registered; cycle t + 1:
+//                    the RAMs are read, the LVT's first half is read,
+//                    and the index is compared with the write-backs of
+//                    cycle t + 3 (announced two cycles ahead, wb*_in2_i),
+//                    the newest hit registered one-hot; cycle t + 2: the
+//                    RAMs' words (from their registers) and the
 //                    bypass word registered, with a one-hot choice among
 //                    them and the write-backs of cycle t + 3; cycle t + 3:
 //                    one AND-OR of seven words, registered; cycle t + 4:
@@ -131,7 +132,7 @@ module fp3_regfile #(
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
-  // READ_STAGES = 4: LUT RAM read over two cycles (fp3_ram READ_STAGES 2).
+  // READ_STAGES = 4: RAM read over two cycles (fp3_ram READ_STAGES 2).
   localparam integer RAM_READ = (READ_STAGES == 4) ? 2 : 1;
   wire [31:0] q00, q01, q10, q11, q20, q21;
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram00 (

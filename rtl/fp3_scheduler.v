@@ -76,7 +76,8 @@
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
 //                 selected and registered before the instruction memory,
-//                 which is LUT RAM (the word arrives two cycles later)
+//                 which is read over two cycles (fp3_ram READ_STAGES 2:
+//                 the word arrives two cycles later)
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
@@ -192,9 +193,9 @@ module fp3_scheduler #(
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
-  // ending cycle t, the word is here in cycle t + 1 (FETCH_STAGE: LUT RAM
-  // read over two cycles, fp3_ram READ_STAGES = 2: in cycle t + 2).  Each word is stored
-  // with its decoded bits (SW, below), decided as it is written: the
+  // ending cycle t, the word is here in cycle t + 1 (FETCH_STAGE: read
+  // over two cycles, fp3_ram READ_STAGES = 2: in cycle t + 2).  Each word
+  // is stored with its decoded bits (SW, below), decided as it is written: the
   // host's write is decoded and registered, and written a cycle later (a
   // run starts two cycles after a write at the earliest); so no decode
   // sits in front of the memory.  Entries never written read as zero: the

@@ -33,7 +33,11 @@ mkdir -p "$out"
 case "$flow" in
   xc2v|xc7) map="synth_xilinx -flatten -family $flow -top $top"
             write="write_edif -pvector bra $base.edf" ;;
-  ecp5)     # synth_ecp5 up to its check step, then that step without
+  ecp5)     # FP3_ECP5_EBR: fp3_ram's two-cycle read as block RAM with
+            # its output register (rtl/fp3_ram.v).
+            # The ECP5 cells it instantiates, for `hierarchy -check`.
+            defines="-DFP3_ECP5_EBR"; cells="read_verilog -lib +/ecp5/cells_bb.v"
+            # synth_ecp5 up to its check step, then that step without
             # `autoname`, which takes many minutes on the multi-context
             # register file (Yosys 0.23) and only renames cells (the same
             # for ice40).
@@ -49,7 +53,8 @@ esac
 # hide them in vendor cells) and as mapped cells (Xilinx LD*, generic).
 # `check -assert` fails on combinational loops, multiple or missing drivers.
 if ! ${YOSYS:-yosys} -q -l "$base.log" -p "
-  read_verilog -Irtl $*
+  ${cells:-}
+  read_verilog ${defines:-} -Irtl $*
   hierarchy -check -top $top ${chparam[*]}
   $(for k in "${keep[@]}"; do echo "setattr -mod -set keep_hierarchy 1 *$k*;"; done)
   proc
