@@ -409,40 +409,70 @@ module fp3_top #(
   wire [4:0] flags_sel = flags_q[ctx_q];
 
   // ---- host read mux (registered) ------------------------------------------
-  reg [31:0] rdata_d;
+  // The words of the four addresses host_addr_i[11:2] names (hr_four),
+  // then the one host_addr_i[1:0] names.  With READ >= 2 (FMAX_PIPE) the
+  // four words are registered between the two halves (HSPLIT), sampled in
+  // the cycle of the address as before, and the read takes READ cycles
+  // still.
+  localparam integer HSPLIT = (READ >= 2) ? 1 : 0;
+  reg [127:0] hr_four;
+  integer hk;
   always @(*) begin
-    rdata_d = 32'd0;
-    case (host_addr_i)
-      HR_STATUS:     rdata_d = {20'd0, error, 5'd0, any_error, done, running};
-      HR_STEPS:      rdata_d = steps_q;
-      HR_STEPS_DONE: rdata_d = steps_done;
-      HR_FAULT_PC:   rdata_d = fault_pc;
-      HR_FLAGS:      rdata_d = {27'd0, flags_sel};
-      HR_CYCLES_LO:  rdata_d = cycles[31:0];
-      HR_CYCLES_HI:  rdata_d = cycles[63:32];
-      HR_ISSUED_LO:  rdata_d = issued[31:0];
-      HR_ISSUED_HI:  rdata_d = issued[63:32];
-      HR_STALLS_LO:  rdata_d = stalls[31:0];
-      HR_STALLS_HI:  rdata_d = stalls[63:32];
-      HR_INFO0:      rdata_d = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
-      HR_INFO1:      rdata_d = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0], MUL_LATENCY[7:0],
-                                ADD_LATENCY[7:0]};
-      HR_ID:         rdata_d = ID_VALUE;
-      HR_CTX:        rdata_d = {{(32-CW){1'b0}}, ctx_q};
-      HR_CONTEXTS:   rdata_d = contexts_q;
-      HR_INFO2:      rdata_d = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
-      default: rdata_d = 32'd0;
-    endcase
+    hr_four = 128'd0;
+    for (hk = 0; hk < 4; hk = hk + 1) begin
+      case ({host_addr_i[11:2], hk[1:0]})
+        HR_STATUS:     hr_four[32*hk +: 32] = {20'd0, error, 5'd0, any_error, done, running};
+        HR_STEPS:      hr_four[32*hk +: 32] = steps_q;
+        HR_STEPS_DONE: hr_four[32*hk +: 32] = steps_done;
+        HR_FAULT_PC:   hr_four[32*hk +: 32] = fault_pc;
+        HR_FLAGS:      hr_four[32*hk +: 32] = {27'd0, flags_sel};
+        HR_CYCLES_LO:  hr_four[32*hk +: 32] = cycles[31:0];
+        HR_CYCLES_HI:  hr_four[32*hk +: 32] = cycles[63:32];
+        HR_ISSUED_LO:  hr_four[32*hk +: 32] = issued[31:0];
+        HR_ISSUED_HI:  hr_four[32*hk +: 32] = issued[63:32];
+        HR_STALLS_LO:  hr_four[32*hk +: 32] = stalls[31:0];
+        HR_STALLS_HI:  hr_four[32*hk +: 32] = stalls[63:32];
+        HR_INFO0:      hr_four[32*hk +: 32] = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
+        HR_INFO1:      hr_four[32*hk +: 32] = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0],
+                                               MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+        HR_ID:         hr_four[32*hk +: 32] = ID_VALUE;
+        HR_CTX:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
+        HR_CONTEXTS:   hr_four[32*hk +: 32] = contexts_q;
+        HR_INFO2:      hr_four[32*hk +: 32] = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0],
+                                               NUM_CONTEXTS[15:0]};
+        default:       hr_four[32*hk +: 32] = 32'd0;
+      endcase
+    end
   end
+  wire         hr_reg = win_reg && reg_ok && host_idle;   // a register of the window
+  wire [127:0] hr_four_w;
+  wire [1:0]   hr_lo_w;
+  wire         hr_reg_w;
+  generate
+    if (HSPLIT != 0) begin : g_host_split
+      reg [127:0] four_q;
+      reg [1:0]   lo_q;
+      reg         reg_q;
+      always @(posedge clk_i) begin
+        four_q <= hr_four;
+        lo_q   <= host_addr_i[1:0];
+        reg_q  <= hr_reg && !rst_i;
+      end
+      assign {hr_four_w, hr_lo_w, hr_reg_w} = {four_q, lo_q, reg_q};
+    end else begin : g_host_one
+      assign {hr_four_w, hr_lo_w, hr_reg_w} = {hr_four, host_addr_i[1:0], hr_reg};
+    end
+  endgenerate
+  wire [31:0] rdata_d = hr_four_w[32*hr_lo_w +: 32];
   // A register of the window comes straight from the register file's read
   // port A, which answers READ cycles after the address; the other
   // registers are delayed to match.
   wire [31:0] rdata_q;
   wire        reg_read_q;
-  fp_pipe #(.WIDTH(32), .DEPTH(READ)) u_host_read (
+  fp_pipe #(.WIDTH(32), .DEPTH(READ - HSPLIT)) u_host_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (win_reg && reg_ok && host_idle),
+    .valid_i (hr_reg_w),
     .data_i  (rdata_d),
     .valid_o (reg_read_q),
     .data_o  (rdata_q)

@@ -133,7 +133,10 @@ module fp_add #(
   wire        s0_valid;
   wire        sub_in;
   wire [31:0] a_in, b_in;
-  fp_pipe #(.WIDTH(65), .DEPTH(BND[B_IN] ? 1 : 0)) u_pipe_in (
+  // (HOLD: the operand registers load with valid_i only, so that the add
+  // and multiply cores' registers, which have the same inputs, stay
+  // apart, each beside its own core.)
+  fp_pipe #(.WIDTH(65), .DEPTH(BND[B_IN] ? 1 : 0), .HOLD(1)) u_pipe_in (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (valid_i),

@@ -4,6 +4,12 @@
 // Parameters:
 //   WIDTH  data bits carried alongside the valid bit (>= 1)
 //   DEPTH  register stages (>= 0); 0 is a plain wire (no clock, no reset)
+//   HOLD   0: the data registers load every cycle (the default);
+//          1: each loads only with the valid bit entering its stage, and
+//          holds its word across bubbles.  Two lines with the same inputs
+//          then differ in their enables, so synthesis does not merge
+//          their registers into one set (the FP cores' operand
+//          registers: each core keeps its own, placed beside it).
 //
 // Ports:
 //   clk_i    clock, rising edge
@@ -14,13 +20,14 @@
 //   data_o   data_i delayed by DEPTH rising edges (not reset)
 //
 // Timing: what is on the inputs in cycle t is on the outputs in cycle
-// t + DEPTH.  Data registers load every cycle (no enable): a bubble
-// carries don't-care data with valid 0.
+// t + DEPTH.  With HOLD = 0 data registers load every cycle (no enable): a
+// bubble carries don't-care data with valid 0.
 `default_nettype none
 
 module fp_pipe #(
   parameter integer WIDTH = 1, // data bits
-  parameter integer DEPTH = 1  // register stages, 0 = wire
+  parameter integer DEPTH = 1, // register stages, 0 = wire
+  parameter integer HOLD  = 0  // 1: data loads only with its valid bit
 ) (
   input  wire             clk_i,
   input  wire             rst_i,
@@ -64,8 +71,11 @@ module fp_pipe #(
         end
       end
 
-      always @(posedge clk_i) begin
-        data_q <= data_d;
+      genvar k;
+      for (k = 0; k < DEPTH; k = k + 1) begin : g_stage
+        always @(posedge clk_i) begin
+          if (HOLD == 0 || valid_d[k]) data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
+        end
       end
 
       assign valid_o = valid_q[DEPTH-1];
