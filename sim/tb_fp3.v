@@ -184,8 +184,8 @@ module tb_fp3 #(
   wire [63:0]    dbg_insn      = dut.u_sched.w_q[2*dut.u_sched.g + dut.u_sched.hp_q[dut.u_sched.g]];  // its word
   wire [7:0]     dbg_opc       = dbg_insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire [AW-1:0]  dbg_pc0       = dut.u_sched.p_q[dut.u_sched.hp_q[0]];  // context 0: PC of its queue's head
-  wire [NC-1:0]  dbg_active    = dut.u_sched.active_q;   // contexts fetching and issuing
-  wire [NC-1:0]  dbg_waiting   = dut.u_sched.active_q & dut.u_sched.holds;  // hold an instruction
+  wire [NC-1:0]  dbg_active    = dut.u_sched.act;        // contexts fetching and issuing
+  wire [NC-1:0]  dbg_waiting   = dut.u_sched.act & dut.u_sched.holds;  // hold an instruction
   wire [NC-1:0]  dbg_ready     = dut.u_sched.ready_q;    // ... found ready last cycle
   wire [NC-1:0]  dbg_raw;                                // waits for a source (RAW)
   wire [NC-1:0]  dbg_waw;                                // waits for its destination (WAW)
