@@ -802,7 +802,8 @@ module fp3_scheduler #(
         if (br_valid_i && br_taken_i && br_ctx_i == k[CW-1:0]) fpc_q[k] <= br_target_i;
       end
       ghigh_q <= ghigh_d;
-      rh_q    <= ready_d & ~gone & ghigh_d;
+      // (ghigh_d has the contexts strictly above a granted one: not it.)
+      rh_q    <= ready_d & ghigh_d;
 
       // The word read now arrives next cycle (FETCH_STAGE: the PC is
       // read in the next cycle, the word arrives in the one after).
