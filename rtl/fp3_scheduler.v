@@ -576,6 +576,7 @@ module fp3_scheduler #(
   wire          fread;      // a fetch granted (FETCH_STAGE: in the last cycle) for fr1
   wire [NC-1:0] fr1;
   reg  [NC-1:0] in_flight;  // granted a fetch, the word not yet in its queue
+  wire [NC-1:0] full;       // both slots hold a word
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
   // is empty, else the other (a context fetches only with a slot free and
@@ -588,13 +589,14 @@ module fp3_scheduler #(
   // free), and only its valid bit waits for that (wslot).
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
+      assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
         assign wslot[2*c+e] = wsel_q[2*c+e] && act[c] && running_o;
       end
     end
   endgenerate
-  wire [NC-1:0] fetch_req = fq_q & ~in_flight;     // (fq_q: run control, below)
+  wire [NC-1:0] fetch_req = fok_q & ~fstop_q & ~full & ~in_flight;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -719,7 +721,13 @@ module fp3_scheduler #(
   // last endi, a PC overflow or an illegal head.  A head granted in cycle
   // t that stops its context is registered (stop_q) and taken off act in
   // cycle t + 1, and off active_q in t + 2: so the grant drives one
-  // flip-flop, not the active contexts' next state.
+  // flip-flop, not the active contexts' next state.  The fetch arbiter
+  // has registers of its own (kept apart in synthesis), so that its
+  // requests start at flip-flops placed beside it rather than at ones
+  // shared with the ready step, the queues and the run control: a copy
+  // of stop_q, and fok_q, the active contexts that may fetch as far as
+  // their own state goes (not past the memory's last word, not waiting
+  // on a beq; fend_d, bwait_d: the fetch step).
   assign act = active_q & ~stop_q;
   wire [NC-1:0] stop_d   = gone & (h_stop | h_ovf) & {NC{running_o && !rst_i}};
   // START (from the host's write) is the last multiplexer in front of
@@ -727,32 +735,15 @@ module fp3_scheduler #(
   wire          start_now = start_ok && !rst_i;
   wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
   wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
-  // The fetch arbiter's requests start at a register of its own (fq_q,
-  // kept apart in synthesis, so placed beside it rather than with the
-  // ready step, the queues and the run control): the contexts that may
-  // fetch in the next cycle but for a word in flight -- active, not
-  // stopped by this cycle's grant, not past the memory's last word, not
-  // waiting on a beq (fend_d, bwait_d: the fetch step), and with a slot
-  // free after this cycle's grant and arrival.  The grant (gone) is the
-  // last multiplexer: each side is decided without it.
-  wire [NC-1:0] fok_d = start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
-  wire [NC-1:0] room_n, room_g;   // a slot free next cycle: head not granted / granted
-  generate
-    for (c = 0; c < NC; c = c + 1) begin : g_room
-      wire [1:0] vs = v_q[2*c +: 2] | wslot[2*c +: 2];   // valid next cycle, if not granted
-      assign room_n[c] = !(vs[0] && vs[1]);
-      // Granted: the head's slot (hp_q) is free unless a word arrives into it.
-      assign room_g[c] = hp_q[c] ? !(vs[0] && wslot[2*c+1]) : !(wslot[2*c] && vs[1]);
-    end
-  endgenerate
-  wire [NC-1:0] fq_d = (rst_i || !running_o) ? fok_d :     // (queues empty next cycle)
-                       (gone & fok_d & ~(h_stop | h_ovf) & room_g) | (~gone & fok_d & room_n);
-  (* keep *) reg [NC-1:0] fq_q;
-  initial fq_q = {NC{1'b0}};
+  (* keep *) reg [NC-1:0] fok_q;       // the fetch arbiter's registers
+  (* keep *) reg [NC-1:0] fstop_q;
+  initial fok_q   = {NC{1'b0}};
+  initial fstop_q = {NC{1'b0}};
   always @(posedge clk_i) begin
     active_q <= active_d;
     stop_q   <= stop_d;
-    fq_q     <= fq_d;
+    fok_q    <= start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
+    fstop_q  <= stop_d;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
