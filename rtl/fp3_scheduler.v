@@ -628,7 +628,7 @@ module fp3_scheduler #(
   // (fend) or a beq (bwait), as its word arrives; a resolved beq releases
   // it (its word arrived at least three cycles ago, so no arriving word
   // competes), and a taken one moves it to its target (inside the
-  // memory: legal targets are).  Next state (fetch_step registers below).
+  // memory: legal targets are).  Next state; registered below.
   wire [NC-1:0] fend_d, bwait_d;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fflags
@@ -706,8 +706,9 @@ module fp3_scheduler #(
         // Nothing in flight once DRAIN cycles passed without a busy flag
         // or an issue: the last of them was cycle t - 1 (idle_q, iss_q),
         // the DRAIN - 1 before it are counted in lull_q, and cycle t - 1
-        // was one of the run (not start_q).  No busy flag now follows (idle_i is not
-        // needed): none was set in t - 1, as nothing issued.
+        // was one of the run (not start_q).  So no flag is busy now
+        // either (idle_i is not needed): none was set in t - 1, as
+        // nothing issued.
         if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_q &&
             idle_q && !iss_q && lull_q == LULL8) begin
           running_o <= 1'b0;
