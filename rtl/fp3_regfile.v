@@ -239,12 +239,18 @@ module fp3_regfile #(
       // with the write-backs of cycle t + 3 (wb*_in2_* then), the newest
       // of the twelve hits, one-hot, registered.  So cycle t + 1 compares
       // three indices, not twelve.  (The host writes only while stopped.)
+      function [2:0] in2_hits;    // x among the write-backs two cycles ahead
+        input [XW-1:0] x;
+        begin
+          in2_hits = {wb0_in2_valid_i && wb0_in2_idx_i == x,
+                      wb1_in2_valid_i && wb1_in2_idx_i == x,
+                      wb2_in2_valid_i && wb2_in2_idx_i == x};
+        end
+      endfunction
       function [8:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2 each}
         input [XW-1:0] x;
         begin
-          hits_known = {wb0_in2_valid_i && wb0_in2_idx_i == x,
-                        wb1_in2_valid_i && wb1_in2_idx_i == x,
-                        wb2_in2_valid_i && wb2_in2_idx_i == x,
+          hits_known = {in2_hits(x),
                         nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
                         wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
                         w2_valid && w2_idx == x};
@@ -256,8 +262,7 @@ module fp3_regfile #(
         reg   [11:0]   h;
         integer        j;
         begin
-          h = {wb0_in2_valid_i && wb0_in2_idx_i == x, wb1_in2_valid_i && wb1_in2_idx_i == x,
-               wb2_in2_valid_i && wb2_in2_idx_i == x, known};
+          h = {in2_hits(x), known};
           byp_sel = h;
           for (j = 1; j < 12; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
