@@ -14,10 +14,10 @@
 //                    LUT RAM is read at its copy (the bank of 16 words
 //                    chosen by the high bits) and the word registered: it
 //                    leaves a flip-flop (a block RAM's own output, without
-//                    its register, 5.8 ns after the clock on the ECP5).  The write is
-//                    registered per lane too, and lands a cycle late: the
-//                    word read is the one after the writes of cycles up
-//                    to t - 1.
+//                    its register, 5.8 ns after the clock on the ECP5).
+//                    The write is registered per lane too, and lands a
+//                    cycle late: the word read is the one after the
+//                    writes of cycles up to t - 1.
 //                    In ECP5 synthesis (FP3_ECP5_EBR, set by
 //                    scripts/synth.sh) and up to 512 words: block RAM
 //                    with its output register instead, the same read
@@ -30,8 +30,9 @@
 // Ports
 //   we_i/waddr_i/wdata_i  write at the rising edge
 //   raddr_i (cycle t) -> rdata_o (cycle t + READ_STAGES)
-// The words as written are g_any.mem[] in every simulated form (a testbench's view
-// of the contents; sim/tb_fp3.v reads the register file's).
+// The words as written are g_any.mem[] in every simulated form (a
+// testbench's view of the contents; sim/tb_fp3.v reads the register
+// file's).
 `default_nettype none
 module fp3_ram #(
   parameter integer DEPTH = 32,

@@ -15,10 +15,11 @@
 // Storage: RAM with a registered read (one write port per RAM): FPGA block
 // RAM for the banks of many contexts, or RAM read over two cycles for
 // clock rate (READ_STAGES = 4; fp3_ram READ_STAGES 2: LUT RAM, or in ECP5
-// synthesis block RAM with its output register).  The three write-back ports (add core, mul
-// core, move path) each write a RAM of their own, replicated once per read
-// port, and a live value table (LVT, 2 bits per register, in flip-flops)
-// records which port wrote each register last (LaForest & Steffan,
+// synthesis block RAM with its output register).  The three write-back
+// ports (add core, mul core, move path) each write a RAM of their own,
+// replicated once per read port, and a live value table (LVT, 2 bits per
+// register, in flip-flops) records which port wrote each register last
+// (LaForest & Steffan,
 // "Efficient Multi-Ported Memories for FPGAs", FPGA 2010).  A read
 // presented in cycle t (the issue cycle) returns its data in cycle
 // t + READ_STAGES (the last operand-read stage).
