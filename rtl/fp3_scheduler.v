@@ -575,8 +575,17 @@ module fp3_scheduler #(
   assign arriving = onehot(avalid, actx);
   wire          fread;      // a fetch granted (FETCH_STAGE: in the last cycle) for fr1
   wire [NC-1:0] fr1;
-  reg  [NC-1:0] in_flight;  // granted a fetch, the word not yet in its queue
-  wire [NC-1:0] full;       // both slots hold a word
+  // A context may fetch when it has room for the word and no read in
+  // flight.  The grant of the last cycle is a register (fg_q), so nothing
+  // follows the arbiter's grant but flip-flops: the words in flight are
+  // fg_q and those granted before it (infl_q), and the room for the next
+  // word (no room: a full queue or a read in flight, not counting the
+  // last grant) is decided a cycle ahead, from the queues' next state
+  // (nroom_q).
+  reg  [NC-1:0] fg_q;       // granted a fetch in the last cycle
+  reg  [NC-1:0] infl_q;     // granted before that, the word not yet in its queue
+  reg  [NC-1:0] nroom_q;    // a full queue or infl_q
+  wire [2*NC-1:0] v_n;      // the slots' valid bits, next state
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
   // is empty, else the other (a context fetches only with a slot free and
@@ -587,16 +596,21 @@ module fp3_scheduler #(
   // the slot's word, decoded bits and PC are written on a flip-flop's
   // output, whether or not the context is still active (the slot is
   // free), and only its valid bit waits for that (wslot).
+  // A slot is valid once a word is written into it (wslot), until its
+  // head is granted (gone).
+  wire [NC-1:0] infl_n = (infl_q | fg_q) & ~arriving;
+  wire [NC-1:0] nroom_n;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
-      assign full[c]  = v_q[2*c] && v_q[2*c+1];
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
         assign wslot[2*c+e] = wsel_q[2*c+e] && act[c] && running_o;
+        assign v_n[2*c+e]   = wslot[2*c+e] || (v_q[2*c+e] && !(gone[c] && hp_q[c] == e[0]));
       end
+      assign nroom_n[c] = (v_n[2*c] && v_n[2*c+1]) || infl_n[c];
     end
   endgenerate
-  wire [NC-1:0] fetch_req = fok_q & ~fstop_q & ~full & ~in_flight;
+  wire [NC-1:0] fetch_req = fgo_q & ~nroom_q & ~fg_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -723,10 +737,10 @@ module fp3_scheduler #(
   // t that stops its context is registered (stop_q) and taken off act in
   // cycle t + 1, and off active_q in t + 2: so the grant drives one
   // flip-flop, not the active contexts' next state.  The fetch arbiter
-  // has registers of its own (kept apart in synthesis), so that its
+  // has a register of its own (kept apart in synthesis), so that its
   // requests start at flip-flops placed beside it rather than at ones
-  // shared with the ready step, the queues and the run control: a copy
-  // of stop_q, and fok_q, the active contexts that may fetch as far as
+  // shared with the ready step, the queues and the run control: fgo_q,
+  // the contexts active in the next cycle (act) that may fetch as far as
   // their own state goes (not past the memory's last word, not waiting
   // on a beq; fend_d, bwait_d: the fetch step).
   assign act = active_q & ~stop_q;
@@ -736,15 +750,12 @@ module fp3_scheduler #(
   wire          start_now = start_ok && !rst_i;
   wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
   wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
-  (* keep *) reg [NC-1:0] fok_q;       // the fetch arbiter's registers
-  (* keep *) reg [NC-1:0] fstop_q;
-  initial fok_q   = {NC{1'b0}};
-  initial fstop_q = {NC{1'b0}};
+  (* keep *) reg [NC-1:0] fgo_q;       // the fetch arbiter's register
+  initial fgo_q = {NC{1'b0}};
   always @(posedge clk_i) begin
     active_q <= active_d;
     stop_q   <= stop_d;
-    fok_q    <= start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
-    fstop_q  <= stop_d;
+    fgo_q    <= (start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d) & ~stop_d;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
@@ -769,7 +780,9 @@ module fp3_scheduler #(
       ready_q  <= {NC{1'b0}};
       fr_q     <= {(2*NC){1'b0}};
       wsel_q   <= {(2*NC){1'b0}};
-      in_flight <= {NC{1'b0}};
+      fg_q     <= {NC{1'b0}};
+      infl_q   <= {NC{1'b0}};
+      nroom_q  <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       lull_q   <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
@@ -778,23 +791,16 @@ module fp3_scheduler #(
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
       ready_q <= ready_d & ~gone;
-      fr_q    <= {(2*NC){1'b0}};
+      fr_q    <= wslot;
       for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
       // Queues: the granted head leaves (the head pointer moves on), an
       // arriving word is written into its slot (above) and is valid there
       // (wslot); the slot of the word arriving next is chosen.
+      v_q <= v_n;
       for (k = 0; k < NC; k = k + 1) begin
-        if (gone[k]) begin
-          hp_q[k] <= !hp_q[k];
-          if (hp_q[k]) v_q[2*k+1] <= 1'b0;
-          else         v_q[2*k]   <= 1'b0;
-        end
+        if (gone[k]) hp_q[k] <= !hp_q[k];
         for (m = 0; m < 2; m = m + 1) begin
-          if (wslot[2*k+m]) begin
-            fr_q[2*k+m] <= 1'b1;
-            v_q[2*k+m]  <= 1'b1;
-          end
           wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
         end
         // The fetch PC: after the arriving word, or a taken beq's target
@@ -811,7 +817,9 @@ module fp3_scheduler #(
       fvalid_q <= fread;
       fctx_q   <= fr;
       fpcq_q   <= fpc_sel;
-      in_flight <= (in_flight | (fetch ? fgnt : {NC{1'b0}})) & ~arriving;
+      fg_q     <= fetch ? fgnt : {NC{1'b0}};
+      infl_q   <= infl_n;
+      nroom_q  <= nroom_n;
       if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
