@@ -106,7 +106,7 @@ module fp3_axil #(
   reg  [WA_BITS-1:0] aw_addr_q,  aw_addr_d;
   reg                w_valid_q,  w_valid_d;
   reg  [31:0]        w_data_q,   w_data_d;
-  reg  [3:0]         w_strb_q,   w_strb_d;
+  reg                w_all_q,    w_all_d;     // all four byte strobes
   reg                b_valid_q,  b_valid_d;
   reg  [1:0]         b_resp_q,   b_resp_d;
   reg                ar_valid_q, ar_valid_d;
@@ -156,12 +156,15 @@ module fp3_axil #(
   endfunction
 
   // A write the core performs now (access W or RW; all but CTRL only
-  // while stopped).
-  wire wr_ok = w_strb_q == STRB_ALL &&
-               (aw_addr_q == HR_CTRL ||
-                (!running && (aw_addr_q == HR_STEPS || aw_addr_q == HR_CONTEXTS ||
-                              (aw_addr_q == HR_CTX && w_data_q < NUM_CONTEXTS) ||
-                              reg_hit(aw_addr_q) || imem_hit(aw_addr_q[WA_BITS-1:1]))));
+  // while stopped).  Its address and data are decoded as they are
+  // captured (from the next state, below), so that the check is a few
+  // flip-flops and RUNNING, not compares in front of the host port.
+  reg wa_ctrl_q;    // the address is CTRL
+  reg wa_stop_q;    // ... a register written only while stopped (not CTX)
+  reg wa_ctx_q;     // ... CTX
+  reg wd_ctx_q;     // the data name a context (for CTX)
+  wire wr_ok = w_all_q &&
+               (wa_ctrl_q || (!running && (wa_stop_q || (wa_ctx_q && wd_ctx_q))));
   wire rd_ok = reg_readable(ar_addr_q);
 
   // ---- host-port arbitration -----------------------------------------------
@@ -195,7 +198,7 @@ module fp3_axil #(
     aw_addr_d  = aw_addr_q;
     w_valid_d  = w_valid_q;
     w_data_d   = w_data_q;
-    w_strb_d   = w_strb_q;
+    w_all_d    = w_all_q;
     b_valid_d  = b_valid_q;
     b_resp_d   = b_resp_q;
     ar_valid_d = ar_valid_q;
@@ -215,7 +218,7 @@ module fp3_axil #(
     if (s_axil_wvalid_i && !w_valid_q) begin
       w_valid_d = 1'b1;
       w_data_d  = s_axil_wdata_i;
-      w_strb_d  = s_axil_wstrb_i;
+      w_all_d   = s_axil_wstrb_i == STRB_ALL;
     end
     if (s_axil_bready_i) b_valid_d = 1'b0;
     if (do_write) begin
@@ -262,7 +265,12 @@ module fp3_axil #(
     end
     aw_addr_q <= aw_addr_d;
     w_data_q  <= w_data_d;
-    w_strb_q  <= w_strb_d;
+    w_all_q   <= w_all_d;
+    wa_ctrl_q <= aw_addr_d == HR_CTRL;
+    wa_stop_q <= aw_addr_d == HR_STEPS || aw_addr_d == HR_CONTEXTS ||
+                 reg_hit(aw_addr_d) || imem_hit(aw_addr_d[WA_BITS-1:1]);
+    wa_ctx_q  <= aw_addr_d == HR_CTX;
+    wd_ctx_q  <= w_data_d < NUM_CONTEXTS;
     b_resp_q  <= b_resp_d;
     ar_addr_q <= ar_addr_d;
     rd_err_q  <= rd_err_d;
