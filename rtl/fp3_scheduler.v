@@ -578,14 +578,13 @@ module fp3_scheduler #(
   // A context may fetch when it has room for the word and no read in
   // flight.  The grant of the last cycle is a register (fg_q), so nothing
   // follows the arbiter's grant but flip-flops: the words in flight are
-  // fg_q and those granted before it (infl_q), and the room for the next
-  // word (no room: a full queue or a read in flight, not counting the
-  // last grant) is decided a cycle ahead, from the queues' next state
-  // (nroom_q).
+  // fg_q and those granted before it (infl_q), and the rest of the
+  // request is decided a cycle ahead (mf_q, with the active contexts,
+  // below).
   reg  [NC-1:0] fg_q;       // granted a fetch in the last cycle
   reg  [NC-1:0] infl_q;     // granted before that, the word not yet in its queue
-  reg  [NC-1:0] nroom_q;    // a full queue or infl_q
-  wire [2*NC-1:0] v_n;      // the slots' valid bits, next state
+  reg  [NC-1:0] mf_q;       // may fetch, but for fg_q
+  wire [2*NC-1:0] v_k, v_g; // the slots' valid bits, next: head kept / granted now
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
   // is empty, else the other (a context fetches only with a slot free and
@@ -599,18 +598,17 @@ module fp3_scheduler #(
   // A slot is valid once a word is written into it (wslot), until its
   // head is granted (gone).
   wire [NC-1:0] infl_n = (infl_q | fg_q) & ~arriving;
-  wire [NC-1:0] nroom_n;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fill
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
         assign wslot[2*c+e] = wsel_q[2*c+e] && act[c] && running_o;
-        assign v_n[2*c+e]   = wslot[2*c+e] || (v_q[2*c+e] && !(gone[c] && hp_q[c] == e[0]));
+        assign v_k[2*c+e]   = wslot[2*c+e] || v_q[2*c+e];
+        assign v_g[2*c+e]   = wslot[2*c+e] || (v_q[2*c+e] && hp_q[c] != e[0]);
       end
-      assign nroom_n[c] = (v_n[2*c] && v_n[2*c+1]) || infl_n[c];
     end
   endgenerate
-  wire [NC-1:0] fetch_req = fgo_q & ~nroom_q & ~fg_q;
+  wire [NC-1:0] fetch_req = mf_q & ~fg_q;
   wire          fetch = (|fetch_req) && running_o;
   wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
   wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
@@ -737,25 +735,38 @@ module fp3_scheduler #(
   // t that stops its context is registered (stop_q) and taken off act in
   // cycle t + 1, and off active_q in t + 2: so the grant drives one
   // flip-flop, not the active contexts' next state.  The fetch arbiter
-  // has a register of its own (kept apart in synthesis), so that its
-  // requests start at flip-flops placed beside it rather than at ones
-  // shared with the ready step, the queues and the run control: fgo_q,
-  // the contexts active in the next cycle (act) that may fetch as far as
-  // their own state goes (not past the memory's last word, not waiting
-  // on a beq; fend_d, bwait_d: the fetch step).
+  // has a register of its own, so that its requests start at flip-flops
+  // placed beside it rather than at ones shared with the ready step, the
+  // queues and the run control: mf_q, the contexts active in the next
+  // cycle (act) that may fetch as far as their own state goes (not past
+  // the memory's last word, not waiting on a beq; fend_d, bwait_d: the
+  // fetch step), with a free slot in the next cycle and no read in flight
+  // but the last grant's.  Both the queues' next state (v_q) and mf_q are
+  // decided for either outcome of the issue step (v_k, v_g; mf_k, mf_g,
+  // kept as nets in synthesis) and chosen by the grant (gone), so that
+  // one LUT follows the issue arbiter.
   assign act = active_q & ~stop_q;
-  wire [NC-1:0] stop_d   = gone & (h_stop | h_ovf) & {NC{running_o && !rst_i}};
   // START (from the host's write) is the last multiplexer in front of
   // the registers: held_d is their next state without it.
   wire          start_now = start_ok && !rst_i;
   wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
   wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
-  (* keep *) reg [NC-1:0] fgo_q;       // the fetch arbiter's register
-  initial fgo_q = {NC{1'b0}};
+  // The head stops its context if granted (stop_d).
+  wire [NC-1:0] h_end     = (h_stop | h_ovf) & {NC{running_o && !rst_i}};
+  wire [NC-1:0] stop_d    = gone & h_end;
+  wire [NC-1:0] fok_n     = start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
+  wire [NC-1:0] mf_n;
+  generate
+    for (c = 0; c < NC; c = c + 1) begin : g_mf
+      (* keep *) wire mf_k = fok_n[c] && !infl_n[c] && !(v_k[2*c] && v_k[2*c+1]);
+      (* keep *) wire mf_g = fok_n[c] && !infl_n[c] && !(v_g[2*c] && v_g[2*c+1]) && !h_end[c];
+      assign mf_n[c] = gone[c] ? mf_g : mf_k;
+    end
+  endgenerate
   always @(posedge clk_i) begin
     active_q <= active_d;
     stop_q   <= stop_d;
-    fgo_q    <= (start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d) & ~stop_d;
+    mf_q     <= mf_n;
   end
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
@@ -782,7 +793,6 @@ module fp3_scheduler #(
       wsel_q   <= {(2*NC){1'b0}};
       fg_q     <= {NC{1'b0}};
       infl_q   <= {NC{1'b0}};
-      nroom_q  <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       lull_q   <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
@@ -797,7 +807,7 @@ module fp3_scheduler #(
       // Queues: the granted head leaves (the head pointer moves on), an
       // arriving word is written into its slot (above) and is valid there
       // (wslot); the slot of the word arriving next is chosen.
-      v_q <= v_n;
+      for (k = 0; k < 2 * NC; k = k + 1) v_q[k] <= gone[k/2] ? v_g[k] : v_k[k];
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) hp_q[k] <= !hp_q[k];
         for (m = 0; m < 2; m = m + 1) begin
@@ -819,7 +829,6 @@ module fp3_scheduler #(
       fpcq_q   <= fpc_sel;
       fg_q     <= fetch ? fgnt : {NC{1'b0}};
       infl_q   <= infl_n;
-      nroom_q  <= nroom_n;
       if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
