@@ -413,19 +413,25 @@ module fp3_top #(
   // then the one host_addr_i[1:0] names.  With READ >= 2 (FMAX_PIPE) the
   // four words are registered between the two halves (HSPLIT), sampled in
   // the cycle of the address as before, and the read takes READ cycles
-  // still.
+  // still.  The words of context CTX (STATUS, STEPS_DONE, FAULT_PC,
+  // FLAGS) are then registered in every cycle instead, as selected, and
+  // taken in the second half (so the context select does not reach the
+  // address's multiplexer): the same cycle's values.
   localparam integer HSPLIT = (READ >= 2) ? 1 : 0;
+  wire [31:0] w_status = {20'd0, error, 5'd0, any_error, done, running};
+  wire [31:0] w_flags  = {27'd0, flags_sel};
+  wire        in_four  = HSPLIT == 0;   // the context's words are in hr_four
   reg [127:0] hr_four;
   integer hk;
   always @(*) begin
     hr_four = 128'd0;
     for (hk = 0; hk < 4; hk = hk + 1) begin
       case ({host_addr_i[11:2], hk[1:0]})
-        HR_STATUS:     hr_four[32*hk +: 32] = {20'd0, error, 5'd0, any_error, done, running};
+        HR_STATUS:     hr_four[32*hk +: 32] = in_four ? w_status : 32'd0;
         HR_STEPS:      hr_four[32*hk +: 32] = steps_q;
-        HR_STEPS_DONE: hr_four[32*hk +: 32] = steps_done;
-        HR_FAULT_PC:   hr_four[32*hk +: 32] = fault_pc;
-        HR_FLAGS:      hr_four[32*hk +: 32] = {27'd0, flags_sel};
+        HR_STEPS_DONE: hr_four[32*hk +: 32] = in_four ? steps_done : 32'd0;
+        HR_FAULT_PC:   hr_four[32*hk +: 32] = in_four ? fault_pc : 32'd0;
+        HR_FLAGS:      hr_four[32*hk +: 32] = in_four ? w_flags : 32'd0;
         HR_CYCLES_LO:  hr_four[32*hk +: 32] = cycles[31:0];
         HR_CYCLES_HI:  hr_four[32*hk +: 32] = cycles[63:32];
         HR_ISSUED_LO:  hr_four[32*hk +: 32] = issued[31:0];
@@ -445,25 +451,35 @@ module fp3_top #(
     end
   end
   wire         hr_reg = win_reg && reg_ok && host_idle;   // a register of the window
-  wire [127:0] hr_four_w;
-  wire [1:0]   hr_lo_w;
-  wire         hr_reg_w;
+  wire [31:0]  rdata_d;    // the word host_addr_i named (READ - HSPLIT cycles to go)
+  wire         hr_reg_w;   // ... it is the register file's
   generate
     if (HSPLIT != 0) begin : g_host_split
       reg [127:0] four_q;
       reg [1:0]   lo_q;
       reg         reg_q;
+      reg [31:0]  st_q, sd_q, fpc_q, fl_q;   // context CTX's words
+      reg [3:0]   ctxw_q;  // one-hot: host_addr_i named one of them (STATUS .. FLAGS)
       always @(posedge clk_i) begin
-        four_q <= hr_four;
-        lo_q   <= host_addr_i[1:0];
-        reg_q  <= hr_reg && !rst_i;
+        four_q   <= hr_four;
+        lo_q     <= host_addr_i[1:0];
+        reg_q    <= hr_reg && !rst_i;
+        st_q     <= w_status;
+        sd_q     <= steps_done;
+        fpc_q    <= fault_pc;
+        fl_q     <= w_flags;
+        ctxw_q   <= {host_addr_i == HR_FLAGS, host_addr_i == HR_FAULT_PC,
+                     host_addr_i == HR_STEPS_DONE, host_addr_i == HR_STATUS};
       end
-      assign {hr_four_w, hr_lo_w, hr_reg_w} = {four_q, lo_q, reg_q};
+      assign rdata_d = four_q[32*lo_q +: 32] | ({32{ctxw_q[0]}} & st_q) |
+                       ({32{ctxw_q[1]}} & sd_q) | ({32{ctxw_q[2]}} & fpc_q) |
+                       ({32{ctxw_q[3]}} & fl_q);
+      assign hr_reg_w = reg_q;
     end else begin : g_host_one
-      assign {hr_four_w, hr_lo_w, hr_reg_w} = {hr_four, host_addr_i[1:0], hr_reg};
+      assign rdata_d  = hr_four[32*host_addr_i[1:0] +: 32];
+      assign hr_reg_w = hr_reg;
     end
   endgenerate
-  wire [31:0] rdata_d = hr_four_w[32*hr_lo_w +: 32];
   // A register of the window comes straight from the register file's read
   // port A, which answers READ cycles after the address; the other
   // registers are delayed to match.

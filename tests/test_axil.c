@@ -733,6 +733,71 @@ static void test_slverr(void **state) {
   bus_close(&b);
 }
 
+/* ---- the words of context CTX, read right after CTX is written -------------------- */
+
+/* Every context runs one program; its data send the even contexts to an
+ * illegal word (ILLEGAL_INSN at FAULT_PC 3, no integration done) and the
+ * odd ones through STEPS integrations, of which those with c % 4 == 1 add
+ * a value that does not fit (the inexact flag).  Then, back to back, CTX
+ * is written and one of STATUS, STEPS_DONE, FAULT_PC, FLAGS read at once,
+ * for contexts taken in turn: a read that sees another context's word
+ * differs. */
+static void test_context_words(void **state) {
+  const build *bd = *state;
+  bus b;
+  bus_open(&b, bd, 31, FAST);
+  const unsigned nctx = bd->num_contexts;
+  char *errors = NULL;
+  fp3_image img;
+  fp3_image_init(&img);
+  assert_int_equal(fp3_asm_string("body:\n beq r0, r1, bad\n add r2, r2, r3\n endi body\n"
+                                  "bad:\n halt\n", "t.s", &img, &errors), 0);
+  img.words[3] = 0xFFull << FP3_OPC_LSB; /* `bad`: an opcode the ISA does not have */
+  for (unsigned i = 0; i < img.n; i++) {
+    wr_ok(&b, FP3_HR_IMEM_BASE + 2 * i, (uint32_t)img.words[i]);
+    wr_ok(&b, FP3_HR_IMEM_BASE + 2 * i + 1, (uint32_t)(img.words[i] >> 32));
+  }
+  const uint32_t steps = 5;
+  for (unsigned c = 0; c < nctx; c++) {
+    wr_ok(&b, FP3_HR_CTX, c);
+    wr_ok(&b, FP3_HR_REG_BASE + 0, c);
+    wr_ok(&b, FP3_HR_REG_BASE + 1, c % 2 ? c + 1 : c);
+    wr_ok(&b, FP3_HR_REG_BASE + 2, fpref_bits(1.0f));
+    wr_ok(&b, FP3_HR_REG_BASE + 3, fpref_bits(c % 4 == 1 ? 1.0e-8f : 0.5f));
+  }
+  wr_ok(&b, FP3_HR_CONTEXTS, nctx);
+  wr_ok(&b, FP3_HR_STEPS, steps);
+  wr_ok(&b, FP3_HR_CTRL, FP3_CTRL_START);
+  unsigned long polls = 0;
+  while (rd_ok(&b, FP3_HR_STATUS) & FP3_STATUS_RUNNING) assert_true(++polls < 100000);
+  static const uint32_t words[] = {FP3_HR_STATUS, FP3_HR_STEPS_DONE, FP3_HR_FAULT_PC,
+                                   FP3_HR_FLAGS};
+  unsigned reads = 0;
+  for (unsigned w = 0; w < 4; w++) {
+    for (unsigned k = 0; k < 2 * nctx; k++) {
+      unsigned c = (k * 3 + w) % nctx; /* each context, after a different one */
+      wr_ok(&b, FP3_HR_CTX, c);
+      uint32_t got = rd_ok(&b, words[w]);
+      int bad = c % 2 == 0;
+      uint32_t want = 0;
+      switch (words[w]) {
+      case FP3_HR_STATUS:
+        want = FP3_STATUS_DONE | FP3_STATUS_ANY_ERROR |
+               (bad ? (uint32_t)FP3_ERR_ILLEGAL_INSN << FP3_STATUS_ERROR_LSB : 0);
+        break;
+      case FP3_HR_STEPS_DONE: want = bad ? 0 : steps; break;
+      case FP3_HR_FAULT_PC:   want = bad ? 3 : 0; break;
+      default:                want = c % 4 == 1 ? FP3_FLAG_INEXACT : 0; break;
+      }
+      if (got != want)
+        fail_msg("word 0x%03X of context %u: 0x%08X, want 0x%08X", words[w], c, got, want);
+      reads++;
+    }
+  }
+  print_message("%u reads of a context's word right after CTX was written, all right\n", reads);
+  bus_close(&b);
+}
+
 /* ---- many objects: every context runs the ship, each its own scene ------------------ */
 
 static void test_ship_contexts(void **state) {
@@ -810,6 +875,7 @@ int main(void) {
       ON_BOTH(test_random_stalls),
       ON_BOTH(test_register_map),
       ON_BOTH(test_slverr),
+      ON_BOTH(test_context_words),
       ON_BOTH(test_ship_contexts),
       ON_BOTH(test_ship_back_to_back),
       ON_BOTH(test_ship_random_handshakes),
