@@ -132,9 +132,9 @@ module fp3_scheduler #(
   input  wire [2:0]                   early_valid_i, // ... those of the next cycle
   input  wire [3*(CW+IW)-1:0]         early_idx_i,
   input  wire                         idle_i,
-  // a beq issued two cycles ago, resolved: its context and outcome
-  input  wire                         br_valid_i,
-  input  wire [CW-1:0]                br_ctx_i,
+  // a beq issued two cycles ago, resolved: its context (one-hot; none if
+  // no beq was) and outcome
+  input  wire [NC-1:0]                br_i,
   input  wire                         br_taken_i,
   input  wire [AW-1:0]                br_target_i,
   // issue to the register file and the arithmetic unit
@@ -645,7 +645,7 @@ module fp3_scheduler #(
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_fflags
       wire arr = arriving[c] && act[c];
-      wire br  = br_valid_i && br_ctx_i == c[CW-1:0];
+      wire br  = br_i[c];
       assign fend_d[c]  = (rst_i || !running_o)  ? 1'b0 :
                           (br && br_taken_i)      ? 1'b0 :
                           (arr && !a_endi && a_atend) ? 1'b1 : fend_q[c];
@@ -816,7 +816,7 @@ module fp3_scheduler #(
         // The fetch PC: after the arriving word, or a taken beq's target
         // (fend_d, bwait_d).
         if (arriving[k] && act[k]) fpc_q[k] <= a_next;
-        if (br_valid_i && br_taken_i && br_ctx_i == k[CW-1:0]) fpc_q[k] <= br_target_i;
+        if (br_i[k] && br_taken_i) fpc_q[k] <= br_target_i;
       end
       ghigh_q <= ghigh_d;
       // (ghigh_d has the contexts strictly above a granted one: not it.)

@@ -186,8 +186,8 @@ module fp3_top #(
   wire [CW-1:0] issue_ctx;
   wire          idle;
   wire          issue, issue_sub, issue_imm, endi, beq;
-  reg           br_valid_q, br_taken_q;   // beq resolution (read stage)
-  reg [CW-1:0]  br_ctx_q;
+  reg           br_taken_q;               // beq resolution (read stage)
+  reg [NUM_CONTEXTS-1:0] br_q;            // ... its context, one-hot (none: no beq)
   reg [AW-1:0]  br_target_q;
   wire [1:0]    issue_unit;
   wire [31:0]   imm;
@@ -235,8 +235,7 @@ module fp3_top #(
     .early_valid_i    ({move_valid, mule_valid, adde_valid}),
     .early_idx_i      ({move_idx, mule_idx, adde_idx}),
     .idle_i           (idle),
-    .br_valid_i       (br_valid_q),
-    .br_ctx_i         (br_ctx_q),
+    .br_i             (br_q),
     .br_taken_i       (br_taken_q),
     .br_target_i      (br_target_q),
     .issue_o          (issue),
@@ -358,12 +357,12 @@ module fp3_top #(
   // ---- branch resolution -------------------------------------------------
   // A beq's operands, read like any others, are compared here (a 32-bit
   // equality of bit patterns) and the outcome registered: the scheduler
-  // sees it READ + 1 cycles after the issue.
+  // sees it READ + 1 cycles after the issue, its context decoded.
+  integer bc;
   always @(posedge clk_i) begin
-    if (rst_i) br_valid_q <= 1'b0;
-    else       br_valid_q <= rd_beq;
+    for (bc = 0; bc < NUM_CONTEXTS; bc = bc + 1)
+      br_q[bc] <= !rst_i && rd_beq && rd_ctx == bc[CW-1:0];
     br_taken_q  <= ra_data == rb_data;
-    br_ctx_q    <= rd_ctx;
     br_target_q <= rd_immval[AW-1:0];
   end
 
