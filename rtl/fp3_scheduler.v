@@ -23,8 +23,9 @@
 //           extra words are dropped when the context stops).  Behind a
 //           beq its context fetches nothing until the branch is resolved:
 //           the operands are compared in the read stage (fp3_top) and the
-//           outcome, registered, comes back on br_*_i two cycles after the
-//           issue; a taken beq moves the fetch PC to its target.
+//           outcome, registered, comes back (br_i, br_taken_i,
+//           br_target_i) two cycles after the issue; a taken beq moves
+//           the fetch PC to its target.
 //   ready   For the instruction at the head of each queue: legal, sources
 //           not busy (RAW) and destination not busy (WAW), where a busy
 //           register whose write-back is announced in this cycle counts as
