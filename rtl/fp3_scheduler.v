@@ -327,11 +327,8 @@ module fp3_scheduler #(
   wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
   // A word's wait bits are found over two cycles: in the cycle it arrives
-  // (a), the flags of its fields are looked up (lk_q: the arriving
-  // context's 32 flags are selected by its context, a register of the
-  // fetch pipeline, while the word comes out of the memory, and then by
-  // the fields: the memory's outputs drive three multiplexers, not one per
-  // context) and this cycle's changes to them are compared (freed: aw_q;
+  // (a), the flags of its fields are looked up (in every context's bank:
+  // lk_q) and this cycle's changes to them are compared (freed: aw_q;
   // pending destinations: pd_q; its context's head's destination: hw_q,
   // taken if that head is granted now, gone_q), all registered; in cycle
   // a + 1, when it is in its slot (marked fresh: fr_q), they are combined.
@@ -348,12 +345,7 @@ module fp3_scheduler #(
                            `FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_ra})};
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
-  wire [(1<<IW)-1:0] a_busy = busy_i[actx * (1 << IW) +: (1 << IW)];  // actx's flags
-  reg  [2:0]    lk_q;
-  always @(posedge clk_i) begin
-    aw_q <= a_freed;
-    lk_q <= {a_busy[a_rd], a_busy[a_rb], a_busy[a_ra]};
-  end
+  always @(posedge clk_i) aw_q <= a_freed;
   genvar c, e;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -376,9 +368,9 @@ module fp3_scheduler #(
       assign l_pc[c*AW +: AW] = hp ? p_q[2*c] : p_q[2*c+1];
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
-      // The head, if granted now, making its destination busy for the
-      // entries behind it (used if the arriving word is this context's,
-      // like lk_q): the one in the queue
+      // The arriving word's lookup in this context's bank (used if it is
+      // this context's word), and the head, if granted now, making its
+      // destination busy for the entries behind it: the one in the queue
       // and an arriving word (the compare with the head's destination,
       // hw_q, is registered, and the grant is taken in the next cycle
       // from gone_q).  With PICK_STAGES = 2, the head granted in the
@@ -386,11 +378,12 @@ module fp3_scheduler #(
       // sets its flag only when it issues, in the next cycle: an arriving
       // word waits for it too.  That and the destination in the issue
       // register (a_pend) are kept together, in pd_q.
-      reg  [2:0]    hw_q, pd_q;
+      reg  [2:0]    lk_q, hw_q, pd_q;
       reg           wrg_q;
       reg  [IW-1:0] rdg_q;
       wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
       always @(posedge clk_i) begin
+        lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
         hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
         pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
         wrg_q <= wrh;
