@@ -759,8 +759,10 @@ module fp3_scheduler #(
   wire [NC-1:0] mf_n;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_mf
-      (* keep *) wire mf_k = fok_n[c] && !infl_n[c] && !(v_k[2*c] && v_k[2*c+1]);
-      (* keep *) wire mf_g = fok_n[c] && !infl_n[c] && !(v_g[2*c] && v_g[2*c+1]) && !h_end[c];
+      (* keep *) wire mf_k;
+      (* keep *) wire mf_g;
+      assign mf_k = fok_n[c] && !infl_n[c] && !(v_k[2*c] && v_k[2*c+1]);
+      assign mf_g = fok_n[c] && !infl_n[c] && !(v_g[2*c] && v_g[2*c+1]) && !h_end[c];
       assign mf_n[c] = gone[c] ? mf_g : mf_k;
     end
   endgenerate
