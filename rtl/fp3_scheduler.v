@@ -326,27 +326,65 @@ module fp3_scheduler #(
   wire [2*NC-1:0]    srdy;  // the slot's word is ready (if it is the head)
   wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
-  // A word's wait bits are found over two cycles: in the cycle it arrives
-  // (a), the flags of its fields are looked up (in every context's bank:
-  // lk_q) and this cycle's changes to them are compared (freed: aw_q;
-  // pending destinations: pd_q; its context's head's destination: hw_q,
-  // taken if that head is granted now, gone_q), all registered; in cycle
-  // a + 1, when it is in its slot (marked fresh: fr_q), they are combined.
-  // So no lookup, compare and queue update share a cycle.
+  // A word's wait bits are found over three cycles.  In cycle a - 1 (the
+  // word is being read: its context is known, narr) its context's flags
+  // as they will be in cycle a, less those freed in cycle a, are decided
+  // and registered (bq_q, below).  In cycle a, when it arrives, the flags
+  // of its fields are looked up in bq_q (lk_q) and this cycle's other
+  // changes to them are compared (pending destinations: pd_q; its
+  // context's head's destination: hw_q, taken if that head is granted
+  // now, gone_q), all registered; in cycle a + 1, when it is in its slot
+  // (marked fresh: fr_q), they are combined.  So no lookup, compare and
+  // queue update share a cycle, and the word, which leaves the
+  // instruction memory's output register, meets 32 flip-flops of its own
+  // context, not the flags of every context.
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
   wire          iss_dst = PICK_STAGES != 0 && issue_o && issue_unit_o != UNIT_NONE;
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
-  reg  [2:0]    aw_q;             // freed in cycle a, per field
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
-  wire [2:0]    a_freed = {`FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_rd}),
-                           `FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_rb}),
-                           `FP3_FREED(ahead_valid_i, ahead_idx_i, {actx, a_ra})};
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
-  always @(posedge clk_i) aw_q <= a_freed;
-  genvar c, e;
+  // The arriving word's flags, a cycle ahead.  busy_i is the register
+  // file's flag register (fp3_regfile): a flag is set at the edge ending
+  // the issue of an instruction that writes it (issue_o, issue_unit_o !=
+  // UNIT_NONE, rd_o; the set wins) and cleared at the edge ending its
+  // write-back's announcement (ahead_*_i), which early_*_i show a cycle
+  // before.  So in cycle a - 1, for the context whose word arrives in
+  // cycle a (nctx), flag r is in cycle a
+  //   set(a - 1) or (busy(a - 1) and not announced(a - 1)),
+  // and counts as free if it is announced in cycle a (early_*_i now).
+  // Whether each announcement, and the issue, is of that context is
+  // decided once (*_on); each flag compares only the register part.
+  localparam integer RN = 1 << IW;  // flags per context
+  wire [CW-1:0] nctx;               // (the fetch step's narr, encoded)
+  wire [RN-1:0] nbusy = busy_i[nctx*RN +: RN];
+  wire          s_on  = issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx;
+  wire [2:0]    c_on, e_on;
+  reg  [RN-1:0] bq_q;               // the arriving word's context's flags (cycle a)
+  genvar c, e, j;
+  generate
+    for (j = 0; j < 3; j = j + 1) begin : g_on
+      assign c_on[j] = ahead_valid_i[j] && ahead_idx_i[j*XW+IW +: CW] == nctx;
+      assign e_on[j] = early_valid_i[j] && early_idx_i[j*XW+IW +: CW] == nctx;
+    end
+    for (j = 0; j < RN; j = j + 1) begin : g_flag
+      localparam [IW-1:0] R = j[IW-1:0];
+      wire set = s_on && rd_o[IW-1:0] == R;
+      wire clr = (c_on[0] && ahead_idx_i[0*XW +: IW] == R) ||
+                 (c_on[1] && ahead_idx_i[1*XW +: IW] == R) ||
+                 (c_on[2] && ahead_idx_i[2*XW +: IW] == R);
+      wire ann = (e_on[0] && early_idx_i[0*XW +: IW] == R) ||
+                 (e_on[1] && early_idx_i[1*XW +: IW] == R) ||
+                 (e_on[2] && early_idx_i[2*XW +: IW] == R);
+      always @(posedge clk_i) bq_q[j] <= (set || (nbusy[j] && !clr)) && !ann;
+    end
+  endgenerate
+  // The lookup: the flags of the arriving word's fields, less the
+  // announcements of this cycle (used by the context whose word it is).
+  reg  [2:0]    lk_q;
+  always @(posedge clk_i) lk_q <= {bq_q[a_rd], bq_q[a_rb], bq_q[a_ra]};
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
@@ -368,9 +406,7 @@ module fp3_scheduler #(
       assign l_pc[c*AW +: AW] = hp ? p_q[2*c] : p_q[2*c+1];
       assign fpcs[c*AW +: AW] = fpc_q[c];
 
-      // The arriving word's lookup in this context's bank (used if it is
-      // this context's word), and the head, if granted now, making its
-      // destination busy for the entries behind it: the one in the queue
+      // The head, if granted now, making its destination busy for the entries behind it: the one in the queue
       // and an arriving word (the compare with the head's destination,
       // hw_q, is registered, and the grant is taken in the next cycle
       // from gone_q).  With PICK_STAGES = 2, the head granted in the
@@ -378,12 +414,11 @@ module fp3_scheduler #(
       // sets its flag only when it issues, in the next cycle: an arriving
       // word waits for it too.  That and the destination in the issue
       // register (a_pend) are kept together, in pd_q.
-      reg  [2:0]    lk_q, hw_q, pd_q;
+      reg  [2:0]    hw_q, pd_q;
       reg           wrg_q;
       reg  [IW-1:0] rdg_q;
       wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
       always @(posedge clk_i) begin
-        lk_q  <= {busy_i[{CTX, a_rd}], busy_i[{CTX, a_rb}], busy_i[{CTX, a_ra}]};
         hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
         pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
         wrg_q <= wrh;
@@ -391,7 +426,7 @@ module fp3_scheduler #(
       end
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
-      wire [2:0] sj = (lk_q & ~aw_q) | pd_q | (hw_q & {3{gone_q[c]}});
+      wire [2:0] sj = lk_q | pd_q | (hw_q & {3{gone_q[c]}});
 
       for (e = 0; e < 2; e = e + 1) begin : g_slot
         localparam integer I = 2 * c + e;       // this slot
@@ -633,6 +668,7 @@ module fp3_scheduler #(
   wire [CW-1:0] fr = encode(fr1);
   // The word read now, arriving in the next cycle (u_arrive's input).
   wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(fvalid_q, fctx_q) : onehot(fread, fr);
+  assign nctx = FETCH_STAGE != 0 ? fctx_q : fr;
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
