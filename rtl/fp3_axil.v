@@ -157,8 +157,13 @@ module fp3_axil #(
 
   // A write the core performs now (access W or RW; all but CTRL only
   // while stopped).  Its address and data are decoded as they are
-  // captured (from the next state, below), so that the check is a few
-  // flip-flops and RUNNING, not compares in front of the host port.
+  // captured, from the bus (aw_take, w_take: the decode is held with the
+  // word), so that the check is a few flip-flops and RUNNING, not
+  // compares in front of the host port, and the compares do not follow
+  // the holding multiplexer.
+  wire               aw_take = s_axil_awvalid_i && !aw_valid_q;
+  wire [WA_BITS-1:0] aw_in   = s_axil_awaddr_i[WA_LSB +: WA_BITS];
+  wire               w_take  = s_axil_wvalid_i && !w_valid_q;
   reg wa_ctrl_q;    // the address is CTRL
   reg wa_stop_q;    // ... a register written only while stopped (not CTX)
   reg wa_ctx_q;     // ... CTX
@@ -211,11 +216,11 @@ module fp3_axil #(
     prio_d     = (wr_cand && rd_cand) ? !prio_q : prio_q;
 
     // write: hold AW and W, then perform and respond
-    if (s_axil_awvalid_i && !aw_valid_q) begin
+    if (aw_take) begin
       aw_valid_d = 1'b1;
-      aw_addr_d  = s_axil_awaddr_i[WA_LSB +: WA_BITS];
+      aw_addr_d  = aw_in;
     end
-    if (s_axil_wvalid_i && !w_valid_q) begin
+    if (w_take) begin
       w_valid_d = 1'b1;
       w_data_d  = s_axil_wdata_i;
       w_all_d   = s_axil_wstrb_i == STRB_ALL;
@@ -266,11 +271,13 @@ module fp3_axil #(
     aw_addr_q <= aw_addr_d;
     w_data_q  <= w_data_d;
     w_all_q   <= w_all_d;
-    wa_ctrl_q <= aw_addr_d == HR_CTRL;
-    wa_stop_q <= aw_addr_d == HR_STEPS || aw_addr_d == HR_CONTEXTS ||
-                 reg_hit(aw_addr_d) || imem_hit(aw_addr_d[WA_BITS-1:1]);
-    wa_ctx_q  <= aw_addr_d == HR_CTX;
-    wd_ctx_q  <= w_data_d < NUM_CONTEXTS;
+    if (aw_take) begin
+      wa_ctrl_q <= aw_in == HR_CTRL;
+      wa_stop_q <= aw_in == HR_STEPS || aw_in == HR_CONTEXTS ||
+                   reg_hit(aw_in) || imem_hit(aw_in[WA_BITS-1:1]);
+      wa_ctx_q  <= aw_in == HR_CTX;
+    end
+    if (w_take) wd_ctx_q <= s_axil_wdata_i < NUM_CONTEXTS;
     b_resp_q  <= b_resp_d;
     ar_addr_q <= ar_addr_d;
     rd_err_q  <= rd_err_d;
