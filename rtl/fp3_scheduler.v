@@ -355,36 +355,40 @@ module fp3_scheduler #(
   // cycle a (nctx), flag r is in cycle a
   //   set(a - 1) or (busy(a - 1) and not announced(a - 1)),
   // and counts as free if it is announced in cycle a (early_*_i now).
-  // Whether each announcement, and the issue, is of that context is
-  // decided once (*_on); each flag compares only the register part.
+  // The flags set and announced in cycle a - 1 (smask, cmask) are found
+  // by the issue step (below), as one-hot masks over the context's
+  // registers.
   localparam integer RN = 1 << IW;  // flags per context
   wire [CW-1:0] nctx;               // (the fetch step's narr, encoded)
-  wire [RN-1:0] nbusy = busy_i[nctx*RN +: RN];
-  wire          s_on  = issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx;
-  wire [2:0]    c_on, e_on;
+  wire [RN-1:0] smask, cmask;
   reg  [RN-1:0] bq_q;               // the arriving word's context's flags (cycle a)
-  genvar c, e, j;
-  generate
-    for (j = 0; j < 3; j = j + 1) begin : g_on
-      assign c_on[j] = ahead_valid_i[j] && ahead_idx_i[j*XW+IW +: CW] == nctx;
-      assign e_on[j] = early_valid_i[j] && early_idx_i[j*XW+IW +: CW] == nctx;
+  // One flag of a context, one-hot (none unless v).
+  function [RN-1:0] flag1;
+    input          v;
+    input [IW-1:0] r;
+    integer d;
+    begin
+      for (d = 0; d < RN; d = d + 1) flag1[d] = v && r == d[IW-1:0];
     end
-    for (j = 0; j < RN; j = j + 1) begin : g_flag
-      localparam [IW-1:0] R = j[IW-1:0];
-      wire set = s_on && rd_o[IW-1:0] == R;
-      wire clr = (c_on[0] && ahead_idx_i[0*XW +: IW] == R) ||
-                 (c_on[1] && ahead_idx_i[1*XW +: IW] == R) ||
-                 (c_on[2] && ahead_idx_i[2*XW +: IW] == R);
-      wire ann = (e_on[0] && early_idx_i[0*XW +: IW] == R) ||
-                 (e_on[1] && early_idx_i[1*XW +: IW] == R) ||
-                 (e_on[2] && early_idx_i[2*XW +: IW] == R);
-      always @(posedge clk_i) bq_q[j] <= (set || (nbusy[j] && !clr)) && !ann;
+  endfunction
+  // The flags of context x among three announcements (valid v, indices i).
+  function [RN-1:0] ann3;
+    input [2:0]      v;
+    input [3*XW-1:0] i;
+    input [CW-1:0]   x;
+    begin
+      ann3 = flag1(v[0] && i[0*XW+IW +: CW] == x, i[0*XW +: IW]) |
+             flag1(v[1] && i[1*XW+IW +: CW] == x, i[1*XW +: IW]) |
+             flag1(v[2] && i[2*XW+IW +: CW] == x, i[2*XW +: IW]);
     end
-  endgenerate
+  endfunction
+  always @(posedge clk_i)
+    bq_q <= (smask | (busy_i[nctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, nctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
   always @(posedge clk_i) lk_q <= {bq_q[a_rd], bq_q[a_rb], bq_q[a_ra]};
+  genvar c, e;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
@@ -588,6 +592,32 @@ module fp3_scheduler #(
   endgenerate
   assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
           imm_o, endi_o, beq_o} = is_w;
+
+  // The flags of the arriving word's context set and announced in cycle
+  // a - 1 (bq_q, above).  With FETCH_STAGE and PICK_STAGES = 2 they are
+  // decided in cycle a - 2 and registered: the instruction that issues in
+  // a - 1 is picked in a - 2 (is_d), the announcements of a - 1 are shown
+  // in a - 2 (early_*_i), and the context (fctx_q in a - 1) is fr in
+  // a - 2.  So the flags meet flip-flops of their own, not the issue
+  // register's and the tag lines' compares.  (If no run goes on in
+  // a - 2, no word arrives in a.)
+  generate
+    if (FETCH_STAGE != 0 && PICK_STAGES == 2) begin : g_mask_ahead
+      reg [RN-1:0] smask_q, cmask_q;
+      always @(posedge clk_i) begin
+        smask_q <= flag1(!rst_i && running_o && p_grant && g_unit != UNIT_NONE && p_g == fr,
+                         g_rd);
+        cmask_q <= ann3(early_valid_i, early_idx_i, fr);
+      end
+      assign smask = smask_q;
+      assign cmask = cmask_q;
+      wire unused_ahead = &{1'b0, ahead_valid_i, ahead_idx_i};  // (early_*_i, a cycle before)
+    end else begin : g_mask_now
+      assign smask = flag1(issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx,
+                           rd_o[IW-1:0]);
+      assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx);
+    end
+  endgenerate
 
   // ---- fetch step ----------------------------------------------------------
   // A context may fetch when it has room for the word (an entry free, not
