@@ -77,8 +77,9 @@
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
 //                 selected and registered before the instruction memory,
-//                 which is read over two cycles (fp3_ram READ_STAGES 2:
-//                 the word arrives two cycles later)
+//                 which is read over two cycles (fp3_ram READ_STAGES 2),
+//                 and the word registered again after it: the word
+//                 arrives four cycles after the grant instead of one
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
@@ -186,7 +187,7 @@ module fp3_scheduler #(
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
   reg [NC-1:0] ghigh_q;             // issue arbiter: contexts of first priority
   reg [NC-1:0] fhigh_q;             // fetch arbiter: contexts of first priority
-  reg          fvalid_q;            // a fetched word arrives this cycle
+  reg          fvalid_q;            // a fetched word arrives (FETCH_STAGE: two cycles later)
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
   reg [7:0]    lull_q;              // cycles without busy flag or issue, to DRAIN - 1, a cycle late
@@ -388,6 +389,11 @@ module fp3_scheduler #(
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
   always @(posedge clk_i) lk_q <= {bq_q[a_rd], bq_q[a_rb], bq_q[a_ra]};
+  // PICK_STAGES = 2: the head granted in the last cycle, per context: it
+  // writes a register (pg_w) and which (pg_rd) -- the instruction picked
+  // now, which issues in the next cycle.
+  wire [NC-1:0]    pg_w;
+  wire [NC*IW-1:0] pg_rd;
   genvar c, e;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -428,6 +434,8 @@ module fp3_scheduler #(
         wrg_q <= wrh;
         rdg_q <= rdh;
       end
+      assign pg_w[c] = pgv;
+      assign pg_rd[c*IW +: IW] = rdg_q;
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
       wire [2:0] sj = lk_q | pd_q | (hw_q & {3{gone_q[c]}});
@@ -596,18 +604,18 @@ module fp3_scheduler #(
   // The flags of the arriving word's context set and announced in cycle
   // a - 1 (bq_q, above).  With FETCH_STAGE and PICK_STAGES = 2 they are
   // decided in cycle a - 2 and registered: the instruction that issues in
-  // a - 1 is picked in a - 2 (is_d), the announcements of a - 1 are shown
-  // in a - 2 (early_*_i), and the context (fctx_q in a - 1) is fr in
-  // a - 2.  So the flags meet flip-flops of their own, not the issue
-  // register's and the tag lines' compares.  (If no run goes on in
-  // a - 2, no word arrives in a.)
+  // a - 1 is picked in a - 2 (is_d; its context's pg_w, pg_rd), the
+  // announcements of a - 1 are shown in a - 2 (early_*_i), and the
+  // context (nfctx in a - 1) is fctx_q in a - 2.  So the flags meet
+  // flip-flops of their own, not the issue register's and the tag lines'
+  // compares, and the mask is not behind the pick's multiplexer.  (If no
+  // run goes on in a - 2, no word arrives in a.)
   generate
     if (FETCH_STAGE != 0 && PICK_STAGES == 2) begin : g_mask_ahead
       reg [RN-1:0] smask_q, cmask_q;
       always @(posedge clk_i) begin
-        smask_q <= flag1(!rst_i && running_o && p_grant && g_unit != UNIT_NONE && p_g == fr,
-                         g_rd);
-        cmask_q <= ann3(early_valid_i, early_idx_i, fr);
+        smask_q <= flag1(!rst_i && running_o && pg_w[fctx_q], pg_rd[fctx_q*IW +: IW]);
+        cmask_q <= ann3(early_valid_i, early_idx_i, fctx_q);
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
@@ -616,6 +624,7 @@ module fp3_scheduler #(
       assign smask = flag1(issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx,
                            rd_o[IW-1:0]);
       assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx);
+      wire unused_pg = &{1'b0, pg_w, pg_rd};  // (the issue register, now)
     end
   endgenerate
 
@@ -625,19 +634,42 @@ module fp3_scheduler #(
   // the memory address) and no read in flight.
   // FETCH_STAGE: the fetch grant is registered, the granted context's
   // fetch PC is selected in the next cycle and registered (by the memory,
-  // and in fpcq_q), and the memory reads it in the cycle after that; the
-  // word arrives from
-  // the memory's output register, three cycles after the grant.  A
-  // context has one word in flight, from its grant to its arrival.
-  fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_arrive (
+  // and in fpcq_q), the memory reads it in the cycle after that into its
+  // output register, and the word is registered once more, in the fabric
+  // (fw_q): it arrives four cycles after the grant.  So nothing but that
+  // register meets the memory's output, and the block RAM's long route
+  // into the fabric is a path of its own.  The word's context and PC
+  // follow it: to the cycle before it arrives (u_next: narr), and to its
+  // arrival (u_arrive).  A context has one word in flight, from its
+  // grant to its arrival.
+  wire          nvalid;     // the word arriving in the next cycle (FETCH_STAGE)
+  wire [CW-1:0] nfctx;      // ... its context
+  wire [AW-1:0] npc;        // ... its PC
+  fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_next (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
     .valid_i (fvalid_q),
     .data_i  ({fctx_q, fpcq_q}),
+    .valid_o (nvalid),
+    .data_o  ({nfctx, npc})
+  );
+  fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_arrive (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .valid_i (nvalid),
+    .data_i  ({nfctx, npc}),
     .valid_o (avalid),
     .data_o  ({actx, apc})
   );
-  assign {asdec, aword} = {imem_sdec, imem_word};
+  generate
+    if (FETCH_STAGE != 0) begin : g_word_reg
+      reg [SW+63:0] fw_q;
+      always @(posedge clk_i) fw_q <= {imem_sdec, imem_word};
+      assign {asdec, aword} = fw_q;
+    end else begin : g_word_now
+      assign {asdec, aword} = {imem_sdec, imem_word};
+    end
+  endgenerate
   assign arriving = onehot(avalid, actx);
   wire          fread;      // a fetch granted (FETCH_STAGE: in the last cycle) for fr1
   wire [NC-1:0] fr1;
@@ -696,9 +728,9 @@ module fp3_scheduler #(
     for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
   end
   wire [CW-1:0] fr = encode(fr1);
-  // The word read now, arriving in the next cycle (u_arrive's input).
-  wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(fvalid_q, fctx_q) : onehot(fread, fr);
-  assign nctx = FETCH_STAGE != 0 ? fctx_q : fr;
+  // The word arriving in the next cycle (u_arrive's input).
+  wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(nvalid, nfctx) : onehot(fread, fr);
+  assign nctx = FETCH_STAGE != 0 ? nfctx : fr;
 
   // The arriving word decides where its context fetches next.
   wire [AW-1:0] a_next  = a_endi ? aword[AW-1:0] : apc + {{(AW-1){1'b0}}, 1'b1};
@@ -892,7 +924,7 @@ module fp3_scheduler #(
       rh_q    <= ready_d & ghigh_d;
 
       // The word read now arrives next cycle (FETCH_STAGE: the PC is
-      // read in the next cycle, the word arrives in the one after).
+      // read in the next cycle, the word arrives two cycles after that).
       fvalid_q <= fread;
       fctx_q   <= fr;
       fpcq_q   <= fpc_sel;

@@ -28,10 +28,11 @@
 // that a dependent instruction can issue R - 1 cycles before it and take
 // the value from the bypass: it issues 1 + latency cycles after its
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
-// grant before the instruction memory and the word after it (fp3_scheduler
+// grant before the instruction memory and the word twice after it (the
+// block RAM's output register and one in the fabric; fp3_scheduler
 // FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
-// beq resolves 7 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
-// run takes a few cycles more, a context fetches at most every fourth
+// beq resolves 8 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
+// run takes a few cycles more, a context fetches at most every fifth
 // cycle, and host reads take 4 cycles; it needs ADD_LATENCY and
 // MUL_LATENCY of at least 3.
 //
@@ -392,6 +393,11 @@ module fp3_top #(
   wire unused_valid = add_core_valid ^ mul_core_valid ^ mov_path_valid;
 
   // ---- sticky exception flags of the run, per context ----------------------
+  // Cleared in the run's first cycle, a cycle after its START (fclr_q; as
+  // the scheduler clears its counters), in which nothing has issued yet:
+  // so the host port's decode does not reach the flags.
+  reg fclr_q;
+  always @(posedge clk_i) fclr_q <= start && host_idle;
   genvar fc;
   generate
     for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
@@ -399,7 +405,7 @@ module fp3_top #(
       wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
       wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
       always @(posedge clk_i) begin
-        if (rst_i || (start && host_idle)) flags_q[fc] <= 5'd0;
+        if (rst_i || fclr_q) flags_q[fc] <= 5'd0;
         else flags_q[fc] <= flags_q[fc] | (add_here ? add_flags : 5'd0) |
                             (mul_here ? mul_flags : 5'd0);
       end

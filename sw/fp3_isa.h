@@ -62,9 +62,10 @@
 #define FP3_FMAX_PIPE_PICK_STAGES 2
 
 /* FMAX_PIPE's fetch stages (fp3_scheduler.v FETCH_STAGE): the fetch grant
- * registered before the instruction memory and the word registered after
- * it, so a word joins its queue this many cycles later. */
-#define FP3_FMAX_PIPE_FETCH_STAGES 2
+ * registered before the instruction memory, the word in the memory's
+ * output register and registered again after it, so a word joins its
+ * queue this many cycles later. */
+#define FP3_FMAX_PIPE_FETCH_STAGES 3
 
 /* A context's instruction queue holds FP3_QUEUE_WORDS words
  * (fp3_scheduler.v: two slots); a slot is free again in the cycle after
@@ -76,9 +77,9 @@
 
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
  * beq (FP3_BEQ_CYCLES): the two pick stages, the three more
- * operand-read stages, and the fetch grant and the instruction word
- * registered.  Its host-port reads take 4 cycles instead of 1. */
-#define FP3_FMAX_PIPE_CYCLES 7
+ * operand-read stages, and the fetch stages (FP3_FMAX_PIPE_FETCH_STAGES).
+ * Its host-port reads take 4 cycles instead of 1. */
+#define FP3_FMAX_PIPE_CYCLES (5 + FP3_FMAX_PIPE_FETCH_STAGES)
 
 /* With FMAX_PIPE a context fetches at most every FP3_FMAX_PIPE_FETCH_SPACING
  * cycles (grant, read, word registered, queued), so one context runs

@@ -503,15 +503,17 @@ static void test_fmax_pipe(void **state) {
   assert_int_equal(fp3_engine_read_reg(e, 7, &v), 0);
   assert_int_equal(v, 0xC0490FDBu);
   /* One more link in a dependent chain costs FP3_READ_CYCLES + latency, as
-   * on the default build (a context's fetch, every fourth cycle here, is
-   * not the bottleneck of these chains). */
-  const char *add2 = "add r1, r1, r2\nadd r1, r1, r2\nhalt\n";
+   * on the default build.  A context fetches every fifth cycle here, and a
+   * word only with a slot of its queue free: the halt behind a chain of
+   * two joins late enough to end the run, so the chains compared are of
+   * three and four, whose ends the dependences decide. */
   const char *add3 = "add r1, r1, r2\nadd r1, r1, r2\nadd r1, r1, r2\nhalt\n";
-  const char *mul2 = "mul r3, r3, r2\nmul r3, r3, r2\nhalt\n";
+  const char *add4 = "add r1, r1, r2\nadd r1, r1, r2\nadd r1, r1, r2\nadd r1, r1, r2\nhalt\n";
   const char *mul3 = "mul r3, r3, r2\nmul r3, r3, r2\nmul r3, r3, r2\nhalt\n";
-  assert_int_equal(fmax_cycles(e, add3) - fmax_cycles(e, add2),
+  const char *mul4 = "mul r3, r3, r2\nmul r3, r3, r2\nmul r3, r3, r2\nmul r3, r3, r2\nhalt\n";
+  assert_int_equal(fmax_cycles(e, add4) - fmax_cycles(e, add3),
                    FP3_READ_CYCLES + e->config.add_latency);
-  assert_int_equal(fmax_cycles(e, mul3) - fmax_cycles(e, mul2),
+  assert_int_equal(fmax_cycles(e, mul4) - fmax_cycles(e, mul3),
                    FP3_READ_CYCLES + e->config.mul_latency);
   /* The 3-cycle move path, bit-exact. */
   fmax_cycles(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n");
