@@ -16,7 +16,10 @@
 // (reads every sixth with FMAX_PIPE).  The
 // host port has one address, so a write and a read that are both ready in
 // the same cycle take turns (round robin).  All outputs are registered;
-// no READY depends combinationally on a VALID.
+// no READY depends combinationally on a VALID.  The side band (running_o,
+// done_o) is fp3_top's, registered once more: it follows STATUS a cycle
+// later, and its output flip-flops are not the run state's, which fans
+// out through the core.
 //
 // Responses: OKAY (2'b00) for an access the core performs, SLVERR (2'b10)
 // with no effect on the core for
@@ -122,6 +125,13 @@ module fp3_axil #(
   reg                prio_q,     prio_d;      // 1: a read wins the next tie
 
   wire        running;
+  wire        done;
+  // The side band's own registers (see the header).
+  reg         running_q, done_q;
+  always @(posedge clk_i) begin
+    running_q <= !rst_i && running;
+    done_q    <= !rst_i && done;
+  end
   wire [31:0] host_rdata;
 
   // ---- address decode --------------------------------------------------------
@@ -312,7 +322,7 @@ module fp3_axil #(
     .host_wdata_i    (host_wdata),
     .host_rdata_o    (host_rdata),
     .running_o       (running),
-    .done_o          (done_o),
+    .done_o          (done),
     .tr_issue_o      (tr_issue),
     .tr_issue_ctx_o  (tr_issue_ctx),
     .tr_issue_unit_o (tr_issue_unit),
@@ -340,7 +350,8 @@ module fp3_axil #(
   assign s_axil_rvalid_o  = r_valid_q;
   assign s_axil_rdata_o   = r_data_q;
   assign s_axil_rresp_o   = r_resp_q;
-  assign running_o        = running;
+  assign running_o        = running_q;
+  assign done_o           = done_q;
 
   // Not decoded: protection bits, byte offsets and address bits above the
   // map (see the header), and the trace port, which a bus cannot carry.

@@ -846,8 +846,13 @@ module fp3_scheduler #(
   // one LUT follows the issue arbiter.
   assign act = active_q & ~stop_q;
   // START (from the host's write) is the last multiplexer in front of
-  // the registers: held_d is their next state without it.
-  wire          start_now = start_ok && !rst_i;
+  // the registers: held_d is their next state without it.  With
+  // FETCH_STAGE the contexts start a cycle after START, from its register
+  // (start_q; RUNNING is set at START as without), so that the host
+  // port's address decode (start_ok) meets the run control's few
+  // flip-flops only, not the active contexts' and the fetch requests'
+  // next state: the run's first cycle passes with no context active.
+  wire          start_now = (FETCH_STAGE != 0 ? start_q && running_o : start_ok) && !rst_i;
   wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
   wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
   // The head stops its context if granted (stop_d).

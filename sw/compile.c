@@ -834,7 +834,7 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
   /* The cycle from which the slot of word k (k mod FP3_QUEUE_WORDS) is free
    * for it: the cycle after the grant of the word FP3_QUEUE_WORDS before. */
   long slot_free[FP3_QUEUE_WORDS] = {0};
-  long fetch = 0;          /* the earliest next fetch                      */
+  long fetch = lat->fmax_pipe ? FP3_FMAX_PIPE_START_STAGES : 0; /* the earliest next fetch */
   long t = 0;              /* the earliest next grant                      */
   long prev_endi = -1;     /* the last endi's issue                        */
   unsigned it = 0;

@@ -128,7 +128,8 @@ int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_
  * model of fp3_scheduler.v, in cycles of its grants: one fetch at a time,
  * at most every FP3_FETCH_SPACING cycles (FP3_FMAX_PIPE_FETCH_SPACING),
  * into a queue of FP3_QUEUE_WORDS, whose slot frees in the cycle after its
- * word's grant; the first fetch in cycle 0 after START; a word granted
+ * word's grant; the first fetch in cycle 0 after START (with fmax_pipe
+ * FP3_FMAX_PIPE_START_STAGES later); a word granted
  * FP3_START_CYCLES (+ FP3_FMAX_PIPE_FETCH_STAGES) after its fetch at the
  * earliest, at most one grant every FP3_ISSUE_SPACING cycles, a dependent
  * one FP3_READ_CYCLES + `latency` cycles after its producer's, a

@@ -67,6 +67,11 @@
  * queue this many cycles later. */
 #define FP3_FMAX_PIPE_FETCH_STAGES 3
 
+/* FMAX_PIPE starts the contexts a cycle after START (fp3_scheduler.v
+ * start_now, from the registered START): the first fetch is this many
+ * cycles later than without. */
+#define FP3_FMAX_PIPE_START_STAGES 1
+
 /* A context's instruction queue holds FP3_QUEUE_WORDS words
  * (fp3_scheduler.v: two slots); a slot is free again in the cycle after
  * its word's grant.  The context fetches one word at a time, only with a
@@ -96,7 +101,7 @@
  * fetched (in cycle 0, the first after START), lands in its context's
  * queue, and is found ready; so also the fewest cycles from a word's
  * fetch to its issue.  FMAX_PIPE adds FP3_FMAX_PIPE_FETCH_STAGES and
- * FP3_FMAX_PIPE_PICK_STAGES. */
+ * FP3_FMAX_PIPE_PICK_STAGES (and, from START, FP3_FMAX_PIPE_START_STAGES). */
 #define FP3_START_CYCLES 3
 
 /* Cycles from a beq's issue to the next issue of its context: operands
