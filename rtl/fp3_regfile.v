@@ -373,14 +373,56 @@ module fp3_regfile #(
       for (d = 0; d < ENTRIES; d = d + 1) dec[d] = valid && idx == d[XW-1:0];
     end
   endfunction
+  // The two halves of dec (READ_STAGES = 4): an index's high HW bits
+  // one-hot if valid, and its low LW bits one-hot.
+  localparam integer LW = XW / 2;
+  localparam integer HW = XW - LW;
+  function [(1<<HW)-1:0] dec_hi;
+    input          valid;
+    input [HW-1:0] hi;
+    integer d;
+    begin
+      for (d = 0; d < (1 << HW); d = d + 1) dec_hi[d] = valid && hi == d[HW-1:0];
+    end
+  endfunction
+  function [(1<<LW)-1:0] dec_lo;
+    input [LW-1:0] lo;
+    integer d;
+    begin
+      for (d = 0; d < (1 << LW); d = d + 1) dec_lo[d] = lo == d[LW-1:0];
+    end
+  endfunction
   wire [ENTRIES-1:0] h0, h1, h2;
   generate
     if (READ_STAGES == 4) begin : g_hit_ahead
-      reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
+      // Decoded in two halves from the indices nx_* and hwe_q register:
+      // the index's high bits with its valid bit, one-hot over
+      // 2**(XW - XW/2), and its low bits, one-hot over 2**(XW/2).  A
+      // flag is then one LUT of four registers: two halves of a write-back
+      // and, on port 2, two of the host's write.  (One 8-bit compare per
+      // flag behind a single index register was the critical path: 256
+      // flags across the die, 6.8 of 8.2 ns routing.)
+      reg [(1<<HW)-1:0] hh0_q, hh1_q, hh2_q, hhh_q;   // high halves
+      reg [(1<<LW)-1:0] hl0_q, hl1_q, hl2_q, hlh_q;   // low halves
       always @(posedge clk_i) begin
-        h0_q <= dec(!rst_i && nx_v[0], nx_i0);
-        h1_q <= dec(!rst_i && nx_v[1], nx_i1);
-        h2_q <= dec(!rst_i && nx_v[2], nx_i2) | dec(!rst_i && hwe_q, hidx_q);
+        hh0_q <= dec_hi(!rst_i && wb0_in2_valid_i, wb0_in2_idx_i[XW-1:LW]);
+        hh1_q <= dec_hi(!rst_i && wb1_in2_valid_i, wb1_in2_idx_i[XW-1:LW]);
+        hh2_q <= dec_hi(!rst_i && wb2_in2_valid_i, wb2_in2_idx_i[XW-1:LW]);
+        hhh_q <= dec_hi(!rst_i && host_we_i, host_idx_i[XW-1:LW]);
+        hl0_q <= dec_lo(wb0_in2_idx_i[LW-1:0]);
+        hl1_q <= dec_lo(wb1_in2_idx_i[LW-1:0]);
+        hl2_q <= dec_lo(wb2_in2_idx_i[LW-1:0]);
+        hlh_q <= dec_lo(host_idx_i[LW-1:0]);
+      end
+      reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
+      integer e;
+      always @(posedge clk_i) begin
+        for (e = 0; e < ENTRIES; e = e + 1) begin
+          h0_q[e] <= !rst_i && hh0_q[e >> LW] && hl0_q[e % (1 << LW)];
+          h1_q[e] <= !rst_i && hh1_q[e >> LW] && hl1_q[e % (1 << LW)];
+          h2_q[e] <= !rst_i && (hh2_q[e >> LW] && hl2_q[e % (1 << LW)] ||
+                                hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
+        end
       end
       assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
     end else begin : g_hit_now
