@@ -17,6 +17,7 @@
 # Not part of `make test`: the processor's place and route takes minutes.
 #
 #   make pnr [PNR_PARAMS="NUM_CONTEXTS=2 ADD_LATENCY=6"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
+#            [PNR_ECP5_PLACER="nextpnr placer options" (scripts/pnr.sh)]
 
 PNR_DIR         := $(BUILD)/pnr
 PNR_SYNTH_DIR   := $(BUILD)/synth

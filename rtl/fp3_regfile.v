@@ -395,20 +395,21 @@ module fp3_regfile #(
   wire [ENTRIES-1:0] h0, h1, h2;
   generate
     if (READ_STAGES == 4) begin : g_hit_ahead
-      // Decoded in two halves from the indices nx_* and hwe_q register:
-      // the index's high bits with its valid bit, one-hot over
-      // 2**(XW - XW/2), and its low bits, one-hot over 2**(XW/2).  A
-      // flag is then one LUT of four registers: two halves of a write-back
-      // and, on port 2, two of the host's write.  (One 8-bit compare per
-      // flag behind a single index register was the critical path: 256
-      // flags across the die, 6.8 of 8.2 ns routing.)
+      // Decoded in two halves from the indices nx_* and hidx_q register:
+      // the index's high bits (a write-back's with its valid bit), one-hot
+      // over 2**(XW - XW/2), and its low bits, one-hot over 2**(XW/2)
+      // (dec_hi, dec_lo).  A flag is then one LUT of two registers, or on
+      // port 2 of five (the host's write brings its valid bit, hwe_q: its
+      // address checks sit in front of that register).  (One 8-bit compare
+      // per flag behind a single index register was the critical path:
+      // 256 flags across the die, 6.8 of 8.2 ns routing.)
       reg [(1<<HW)-1:0] hh0_q, hh1_q, hh2_q, hhh_q;   // high halves
       reg [(1<<LW)-1:0] hl0_q, hl1_q, hl2_q, hlh_q;   // low halves
       always @(posedge clk_i) begin
         hh0_q <= dec_hi(!rst_i && wb0_in2_valid_i, wb0_in2_idx_i[XW-1:LW]);
         hh1_q <= dec_hi(!rst_i && wb1_in2_valid_i, wb1_in2_idx_i[XW-1:LW]);
         hh2_q <= dec_hi(!rst_i && wb2_in2_valid_i, wb2_in2_idx_i[XW-1:LW]);
-        hhh_q <= dec_hi(!rst_i && host_we_i, host_idx_i[XW-1:LW]);
+        hhh_q <= dec_hi(1'b1, host_idx_i[XW-1:LW]);
         hl0_q <= dec_lo(wb0_in2_idx_i[LW-1:0]);
         hl1_q <= dec_lo(wb1_in2_idx_i[LW-1:0]);
         hl2_q <= dec_lo(wb2_in2_idx_i[LW-1:0]);
@@ -421,7 +422,7 @@ module fp3_regfile #(
           h0_q[e] <= !rst_i && hh0_q[e >> LW] && hl0_q[e % (1 << LW)];
           h1_q[e] <= !rst_i && hh1_q[e >> LW] && hl1_q[e % (1 << LW)];
           h2_q[e] <= !rst_i && (hh2_q[e >> LW] && hl2_q[e % (1 << LW)] ||
-                                hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
+                                hwe_q && hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
         end
       end
       assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
