@@ -559,8 +559,26 @@ module fp3_scheduler #(
     grant_q <= grant && running_o;
     g_q     <= g;
   end
+  // With PICK_STAGES = 2 the pick multiplexer takes the last grant from
+  // copies of gone_q of its own, one for the immediate (32 bits) and one
+  // for the other fields: each drives some 30 LUTs beside the heads'
+  // fields instead of one register driving 53 of them and the contexts'
+  // logic (a grant bit across the die to the immediate was a critical
+  // path).  The process is kept, and the initial value keeps the copies
+  // apart from gone_q, so that Yosys does not merge them (as in fp3_ram).
+  reg [NC-1:0] gpi_q, gpf_q;
+  initial begin
+    gpi_q = {NC{1'b0}};
+    gpf_q = {NC{1'b0}};
+  end
+  (* keep *) always @(posedge clk_i) begin
+    gpi_q <= gone & {NC{running_o}};
+    gpf_q <= gone & {NC{running_o}};
+  end
+  localparam [FW-1:0] IMM_BITS = {{(FW-34){1'b0}}, {32{1'b1}}, 2'b00};   // g_imm in gf
   wire          two     = PICK_STAGES == 2;
-  wire [NC-1:0] p_sel   = two ? gone_q : gone;
+  wire [NC-1:0] p_seli  = two ? gpi_q : gone;
+  wire [NC-1:0] p_self  = two ? gpf_q : gone;
   wire          p_grant = two ? grant_q : grant;
   wire [CW-1:0] p_g     = two ? g_q : g;
   reg  [FW-1:0] gf;
@@ -568,7 +586,8 @@ module fp3_scheduler #(
   always @(*) begin
     gf = {FW{1'b0}};
     for (q = 0; q < NC; q = q + 1)
-      gf = gf | ({FW{p_sel[q]}} & (two ? l_fields[q*FW +: FW] : h_fields[q*FW +: FW]));
+      gf = gf | (({FW{p_seli[q]}} & IMM_BITS | {FW{p_self[q]}} & ~IMM_BITS) &
+                 (two ? l_fields[q*FW +: FW] : h_fields[q*FW +: FW]));
   end
 
   wire [IW-1:0] g_ra, g_rb, g_rd;
