@@ -288,12 +288,26 @@ module fp3_regfile #(
       wire [2:0] a_lvt2, b_lvt2;
       if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
+        // The low index bits for this read from copies of a_idx_q[3:0]
+        // and b_idx_q[3:0] of their own (kept apart as in fp3_ram): they
+        // drive the LVT's 16:1 multiplexers across the die, and the
+        // bypass compares keep the originals (a read index placed by the
+        // LVT, far from its compares, was a critical path).
+        reg [3:0] a_lo_q, b_lo_q;
+        initial begin
+          a_lo_q = 4'd0;
+          b_lo_q = 4'd0;
+        end
+        (* keep *) always @(posedge clk_i) begin
+          a_lo_q <= a_idx[3:0];
+          b_lo_q <= rb_i[3:0];
+        end
         reg [3*NG-1:0] a_pre_q, b_pre_q;
         integer gi;
         always @(posedge clk_i) begin
           for (gi = 0; gi < NG; gi = gi + 1) begin
-            a_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_idx_q[3:0]}) +: 2]);
-            b_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_idx_q[3:0]}) +: 2]);
+            a_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_lo_q}) +: 2]);
+            b_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_lo_q}) +: 2]);
           end
         end
         assign a_lvt2 = a_pre_q[3*a_idx_qq[XW-1:4] +: 3];
