@@ -231,7 +231,11 @@ module fp3_scheduler #(
     input       used;
     input [7:0] r;
     begin
-      reg_ok = used ? ({24'd0, r} < NUM_REGS) : (r == 8'd0);
+      // r < NUM_REGS as r's high bits zero when NUM_REGS is a power of
+      // two: Yosys maps a compare with a constant to a carry chain (the
+      // host's program write -> this chain was a critical path).
+      reg_ok = used ? ((r >> IW) == 8'd0 && (NUM_REGS == (1 << IW) || {24'd0, r} < NUM_REGS))
+                    : (r == 8'd0);
     end
   endfunction
 
@@ -265,11 +269,14 @@ module fp3_scheduler #(
   wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
                           (w_dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+  // w_imm < IMEM_DEPTH, without a carry chain when IMEM_DEPTH is 2**AW
+  wire          w_in    = (w_imm >> AW) == 32'd0 &&
+                          (IMEM_DEPTH == (1 << AW) || w_imm < IMEM_DEPTH);
   wire          w_legal = w_dec[6] && w_built && reg_ok(w_dec[0], w_rd8) &&
                           reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
                           (w_dec[3] || w_imm == 32'd0) &&
-                          (!w_endi || w_imm < IMEM_DEPTH) &&
-                          (!w_beq || (w_imm < IMEM_DEPTH && w_imm[AW-1:0] > imem_waddr_i));
+                          (!w_endi || w_in) &&
+                          (!w_beq || (w_in && w_imm[AW-1:0] > imem_waddr_i));
   assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
@@ -828,11 +835,14 @@ module fp3_scheduler #(
       bad_q     <= bad_start;
       bad_err_q <= steps_zero_i ? ERR_BAD_STEPS : ERR_BAD_CONTEXTS;
       if (!running_o) begin
+        // What the run needs of STEPS follows it while stopped (the
+        // values taken at START's edge are the run's), so that START's
+        // decode does not enable these 40 flip-flops.
+        last2_q <= steps_last2_i;
+        final_q <= {NC{steps_one_i}};
         if (start_ok) begin
           running_o <= 1'b1;
           done_o    <= 1'b0;
-          last2_q   <= steps_last2_i;
-          final_q   <= {NC{steps_one_i}};
         end else if (start_i || clear_i) begin
           done_o <= 1'b0;        // a refused START: DONE in the next cycle
         end else if (bad_q) begin

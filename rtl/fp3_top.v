@@ -125,8 +125,13 @@ module fp3_top #(
   wire        win_reg  = host_addr_i[11:8] == HR_REG_BASE[11:8];
   wire        win_imem = host_addr_i[11] == HR_IMEM_BASE[11];
   wire [9:0]  imem_idx = host_addr_i[10:1];
-  wire        reg_ok   = {24'd0, host_addr_i[7:0]} < NUM_REGS;
-  wire        imem_ok  = {22'd0, imem_idx} < IMEM_DEPTH;
+  // (compares with a constant as high bits zero when it is a power of
+  // two: Yosys maps such a compare to a carry chain, which was on a
+  // critical path, the host's write -> the register file)
+  wire        reg_ok   = (host_addr_i[7:0] >> IW) == 8'd0 &&
+                         (NUM_REGS == (1 << IW) || {24'd0, host_addr_i[7:0]} < NUM_REGS);
+  wire        imem_ok  = (imem_idx >> AW) == 10'd0 &&
+                         (IMEM_DEPTH == (1 << AW) || {22'd0, imem_idx} < IMEM_DEPTH);
 
   wire        running;
   reg  [31:0] steps_q;
