@@ -562,8 +562,7 @@ module fp3_scheduler #(
   reg           grant_q;
   reg  [CW-1:0] g_q;
   always @(posedge clk_i) begin
-    if (!running_o) gone_q <= {NC{1'b0}};
-    else            gone_q <= gone;
+    gone_q  <= gone & {NC{running_o}};
     grant_q <= grant && running_o;
     g_q     <= g;
   end
@@ -574,22 +573,18 @@ module fp3_scheduler #(
   // logic (a grant bit across the die to the immediate was a critical
   // path).  The process is kept, and the initial value keeps the copies
   // apart from gone_q, so that Yosys does not merge them (as in fp3_ram).
-  // All three clear as a synchronous reset while stopped, so that no
-  // gate behind the grant is shared between them (an AND with running_o
-  // shared by the three was placed between them, a critical path).
+  // The copies take the grant as it is, not gated with running_o as
+  // gone_q is: the pick's valid bit (grant_q) is gated, and fields picked
+  // while stopped are not used.  (Gated alike, the three shared one AND
+  // gate, which the placer put between them: a critical path.)
   reg [NC-1:0] gpi_q, gpf_q;
   initial begin
     gpi_q = {NC{1'b0}};
     gpf_q = {NC{1'b0}};
   end
   (* keep *) always @(posedge clk_i) begin
-    if (!running_o) begin
-      gpi_q <= {NC{1'b0}};
-      gpf_q <= {NC{1'b0}};
-    end else begin
-      gpi_q <= gone;
-      gpf_q <= gone;
-    end
+    gpi_q <= gone;
+    gpf_q <= gone;
   end
   localparam [FW-1:0] IMM_BITS = {{(FW-34){1'b0}}, {32{1'b1}}, 2'b00};   // g_imm in gf
   wire          two     = PICK_STAGES == 2;
