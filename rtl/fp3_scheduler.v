@@ -571,12 +571,13 @@ module fp3_scheduler #(
   // for the other fields: each drives some 30 LUTs beside the heads'
   // fields instead of one register driving 53 of them and the contexts'
   // logic (a grant bit across the die to the immediate was a critical
-  // path).  The process is kept, and the initial value keeps the copies
-  // apart from gone_q, so that Yosys does not merge them (as in fp3_ram).
-  // The copies take the grant as it is, not gated with running_o as
-  // gone_q is: the pick's valid bit (grant_q) is gated, and fields picked
-  // while stopped are not used.  (Gated alike, the three shared one AND
-  // gate, which the placer put between them: a critical path.)
+  // path).  The copies take the grant as it is, not gated with running_o
+  // as gone_q is: the pick's valid bit (grant_q) is gated, and fields
+  // picked while stopped are not used.  (Gated alike, the three shared
+  // one AND gate, which the placer put between them: a critical path.)
+  // The process is kept so that Yosys does not merge the two equal
+  // copies (as in fp3_ram); their initial value only defines them in
+  // simulation before the first clock.
   reg [NC-1:0] gpi_q, gpf_q;
   initial begin
     gpi_q = {NC{1'b0}};
