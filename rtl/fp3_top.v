@@ -431,35 +431,48 @@ module fp3_top #(
   wire [31:0] w_status = {20'd0, error, 5'd0, any_error, done, running};
   wire [31:0] w_flags  = {27'd0, flags_sel};
   wire        in_four  = HSPLIT == 0;   // the context's words are in hr_four
+  // The scalar registers are words 0x000 .. 0x01F of the map (HR_INFO2,
+  // the last, is checked below): hr_four is chosen by host_addr_i[4:2]
+  // only, and whether the address is among those words at all (scal) is
+  // applied after the choice (with HSPLIT, registered beside it).  So no
+  // compare of the whole address clears the four words' registers (as a
+  // synchronous reset from the address decode it was a critical path).
+  wire        scal = host_addr_i[11:5] == 7'd0;
   reg [127:0] hr_four;
   integer hk;
   always @(*) begin
     hr_four = 128'd0;
     for (hk = 0; hk < 4; hk = hk + 1) begin
-      case ({host_addr_i[11:2], hk[1:0]})
-        HR_STATUS:     hr_four[32*hk +: 32] = in_four ? w_status : 32'd0;
-        HR_STEPS:      hr_four[32*hk +: 32] = steps_q;
-        HR_STEPS_DONE: hr_four[32*hk +: 32] = in_four ? steps_done : 32'd0;
-        HR_FAULT_PC:   hr_four[32*hk +: 32] = in_four ? fault_pc : 32'd0;
-        HR_FLAGS:      hr_four[32*hk +: 32] = in_four ? w_flags : 32'd0;
-        HR_CYCLES_LO:  hr_four[32*hk +: 32] = cycles[31:0];
-        HR_CYCLES_HI:  hr_four[32*hk +: 32] = cycles[63:32];
-        HR_ISSUED_LO:  hr_four[32*hk +: 32] = issued[31:0];
-        HR_ISSUED_HI:  hr_four[32*hk +: 32] = issued[63:32];
-        HR_STALLS_LO:  hr_four[32*hk +: 32] = stalls[31:0];
-        HR_STALLS_HI:  hr_four[32*hk +: 32] = stalls[63:32];
-        HR_INFO0:      hr_four[32*hk +: 32] = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
-        HR_INFO1:      hr_four[32*hk +: 32] = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0],
-                                               MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
-        HR_ID:         hr_four[32*hk +: 32] = ID_VALUE;
-        HR_CTX:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
-        HR_CONTEXTS:   hr_four[32*hk +: 32] = contexts_q;
-        HR_INFO2:      hr_four[32*hk +: 32] = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0],
-                                               NUM_CONTEXTS[15:0]};
-        default:       hr_four[32*hk +: 32] = 32'd0;
+      case ({host_addr_i[4:2], hk[1:0]})
+        HR_STATUS[4:0]:     hr_four[32*hk +: 32] = in_four ? w_status : 32'd0;
+        HR_STEPS[4:0]:      hr_four[32*hk +: 32] = steps_q;
+        HR_STEPS_DONE[4:0]: hr_four[32*hk +: 32] = in_four ? steps_done : 32'd0;
+        HR_FAULT_PC[4:0]:   hr_four[32*hk +: 32] = in_four ? fault_pc : 32'd0;
+        HR_FLAGS[4:0]:      hr_four[32*hk +: 32] = in_four ? w_flags : 32'd0;
+        HR_CYCLES_LO[4:0]:  hr_four[32*hk +: 32] = cycles[31:0];
+        HR_CYCLES_HI[4:0]:  hr_four[32*hk +: 32] = cycles[63:32];
+        HR_ISSUED_LO[4:0]:  hr_four[32*hk +: 32] = issued[31:0];
+        HR_ISSUED_HI[4:0]:  hr_four[32*hk +: 32] = issued[63:32];
+        HR_STALLS_LO[4:0]:  hr_four[32*hk +: 32] = stalls[31:0];
+        HR_STALLS_HI[4:0]:  hr_four[32*hk +: 32] = stalls[63:32];
+        HR_INFO0[4:0]:      hr_four[32*hk +: 32] = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
+        HR_INFO1[4:0]:      hr_four[32*hk +: 32] = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0],
+                                                    MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+        HR_ID[4:0]:         hr_four[32*hk +: 32] = ID_VALUE;
+        HR_CTX[4:0]:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
+        HR_CONTEXTS[4:0]:   hr_four[32*hk +: 32] = contexts_q;
+        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0],
+                                                    NUM_CONTEXTS[15:0]};
+        default:            hr_four[32*hk +: 32] = 32'd0;
       endcase
     end
   end
+  generate
+    if (HR_INFO2 > 12'h01F) begin : g_bad_map
+      // Elaboration error on purpose: the scalar map outgrew host_addr_i[4:0].
+      fp3_top_error_scalar_registers_must_be_words_0_to_31 u_error ();
+    end
+  endgenerate
   wire         hr_reg = win_reg && reg_ok && host_idle;   // a register of the window
   wire [31:0]  rdata_d;    // the word host_addr_i named (READ - HSPLIT cycles to go)
   wire         hr_reg_w;   // ... it is the register file's
@@ -467,12 +480,14 @@ module fp3_top #(
     if (HSPLIT != 0) begin : g_host_split
       reg [127:0] four_q;
       reg [1:0]   lo_q;
+      reg         scal_q;
       reg         reg_q;
       reg [31:0]  st_q, sd_q, fpc_q, fl_q;   // context CTX's words
       reg [3:0]   ctxw_q;  // one-hot: host_addr_i named one of them (STATUS .. FLAGS)
       always @(posedge clk_i) begin
         four_q   <= hr_four;
         lo_q     <= host_addr_i[1:0];
+        scal_q   <= scal;
         reg_q    <= hr_reg && !rst_i;
         st_q     <= w_status;
         sd_q     <= steps_done;
@@ -481,12 +496,12 @@ module fp3_top #(
         ctxw_q   <= {host_addr_i == HR_FLAGS, host_addr_i == HR_FAULT_PC,
                      host_addr_i == HR_STEPS_DONE, host_addr_i == HR_STATUS};
       end
-      assign rdata_d = four_q[32*lo_q +: 32] | ({32{ctxw_q[0]}} & st_q) |
+      assign rdata_d = ({32{scal_q}} & four_q[32*lo_q +: 32]) | ({32{ctxw_q[0]}} & st_q) |
                        ({32{ctxw_q[1]}} & sd_q) | ({32{ctxw_q[2]}} & fpc_q) |
                        ({32{ctxw_q[3]}} & fl_q);
       assign hr_reg_w = reg_q;
     end else begin : g_host_one
-      assign rdata_d  = hr_four[32*host_addr_i[1:0] +: 32];
+      assign rdata_d  = {32{scal}} & hr_four[32*host_addr_i[1:0] +: 32];
       assign hr_reg_w = hr_reg;
     end
   endgenerate

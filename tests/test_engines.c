@@ -871,6 +871,39 @@ static void test_random_programs_contexts(void **state) {
   }
 }
 
+/* ---- the host port's map, straight at the model ---------------------------- */
+
+/* A host-port read: the address held for `read` cycles (1 + 3 FMAX_PIPE,
+ * fp3_top "Host port"), the data of the last. */
+static uint32_t model_read(const fp3_model_ops *ops, fp3_model *m, unsigned read,
+                           unsigned addr) {
+  fp3_model_in in = {0, (uint16_t)addr, 0};
+  fp3_model_out out = {0};
+  for (unsigned k = 0; k < read; k++) ops->cycle(m, &in, &out);
+  return out.rdata;
+}
+
+/* The scalar registers read as documented, and every other word below the
+ * register window as zero, in the default build and with FMAX_PIPE (whose
+ * read multiplexer chooses the four words by address bits 4:2 and gates
+ * them with the rest: an address 0x20 above ID must not read ID). */
+static void test_host_map_reads(void **state) {
+  (void)state;
+  const struct { const fp3_model_ops *ops; unsigned read; } cfg[] = {
+      {&fp3_model_rne, 1}, {&fp3_model_nc3, 4}};
+  for (size_t i = 0; i < sizeof cfg / sizeof cfg[0]; i++) {
+    fp3_model *m = cfg[i].ops->create(NULL);
+    assert_non_null(m);
+    assert_int_equal(model_read(cfg[i].ops, m, cfg[i].read, FP3_HR_ID), FP3_ID_VALUE);
+    assert_int_equal(model_read(cfg[i].ops, m, cfg[i].read, FP3_HR_CONTEXTS), 1);
+    for (unsigned a = FP3_HR_INFO2 + 1; a < FP3_HR_REG_BASE; a++) {
+      uint32_t v = model_read(cfg[i].ops, m, cfg[i].read, a);
+      if (v != 0) fail_msg("config %zu: word 0x%03X reads 0x%08X, want 0", i, a, v);
+    }
+    cfg[i].ops->destroy(m);
+  }
+}
+
 static void test_bad_contexts(void **state) {
   (void)state;
   fp3_image img;
@@ -932,6 +965,7 @@ int main(void) {
       cmocka_unit_test(test_many_ships),
       cmocka_unit_test(test_random_programs_contexts),
       cmocka_unit_test(test_bad_contexts),
+      cmocka_unit_test(test_host_map_reads),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }
