@@ -55,6 +55,13 @@
 //   ENTRIES      registers in all, 2**XW
 //   XW           index width, clog2(NUM_CONTEXTS) + clog2(NUM_REGS)
 //   READ_STAGES  1 or 4, see above
+//   FLAGS_AHEAD  0: set_*/clr*_* change the busy flags at the edge ending
+//                the cycle they are given in.  1 (for clock rate): they
+//                are given a cycle earlier (the instruction picked, which
+//                issues in the next cycle: fp3_scheduler pick_*; the tag
+//                lines' early_*), decoded in two halves and registered,
+//                and change the flags at the same edge as with 0: each
+//                flag is then one LUT of flip-flops.
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
@@ -64,7 +71,8 @@
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
 //     clears the register's busy flag.  A register announced in the cycle
-//     a new instruction claims it stays busy: the set wins.
+//     a new instruction claims it stays busy: the set wins.  (FLAGS_AHEAD
+//     = 1: both a cycle ahead, see above.)
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
 //   wb{0,1,2}_in2_*: the write-back ports' valid and index two cycles
 //     ahead (fp3_wb_tag next2_*; read with READ_STAGES = 4).
@@ -74,7 +82,8 @@
 module fp3_regfile #(
   parameter integer ENTRIES     = 32,
   parameter integer XW          = 5,
-  parameter integer READ_STAGES = 1
+  parameter integer READ_STAGES = 1,
+  parameter integer FLAGS_AHEAD = 0
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -447,18 +456,50 @@ module fp3_regfile #(
     end
   endgenerate
 
+  // The busy flags' set and clear, one-hot over the registers.
+  wire [ENTRIES-1:0] fset, fclr;
+  generate
+    if (FLAGS_AHEAD != 0) begin : g_flags_ahead
+      // From the events of the next cycle, decoded in two halves (as the
+      // write hits above) and registered.  (A flag behind four 8-bit
+      // compares with the issue register's destination and the tag lines'
+      // indices was a critical path: some 5.8 ns of routing to the
+      // flags' enables across the die.)
+      reg [(1<<HW)-1:0] sh_q, ch0_q, ch1_q, ch2_q;   // high halves
+      reg [(1<<LW)-1:0] sl_q, cl0_q, cl1_q, cl2_q;   // low halves
+      always @(posedge clk_i) begin
+        sh_q  <= dec_hi(!rst_i && set_i, set_idx_i[XW-1:LW]);
+        ch0_q <= dec_hi(!rst_i && clr0_valid_i, clr0_idx_i[XW-1:LW]);
+        ch1_q <= dec_hi(!rst_i && clr1_valid_i, clr1_idx_i[XW-1:LW]);
+        ch2_q <= dec_hi(!rst_i && clr2_valid_i, clr2_idx_i[XW-1:LW]);
+        sl_q  <= dec_lo(set_idx_i[LW-1:0]);
+        cl0_q <= dec_lo(clr0_idx_i[LW-1:0]);
+        cl1_q <= dec_lo(clr1_idx_i[LW-1:0]);
+        cl2_q <= dec_lo(clr2_idx_i[LW-1:0]);
+      end
+      genvar f;
+      for (f = 0; f < ENTRIES; f = f + 1) begin : g_flag
+        localparam integer FH = f >> LW;
+        localparam integer FL = f % (1 << LW);
+        assign fset[f] = sh_q[FH] && sl_q[FL];
+        assign fclr[f] = ch0_q[FH] && cl0_q[FL] || ch1_q[FH] && cl1_q[FL] ||
+                         ch2_q[FH] && cl2_q[FL];
+      end
+    end else begin : g_flags_now
+      assign fset = dec(set_i, set_idx_i);
+      assign fclr = dec(clr0_valid_i, clr0_idx_i) | dec(clr1_valid_i, clr1_idx_i) |
+                    dec(clr2_valid_i, clr2_idx_i);
+    end
+  endgenerate
+
   // The WAW stall guarantees that the write ports name distinct registers,
   // so the priority below never matters for a legal sequence.
   genvar r;
   generate
     for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
-      localparam [XW-1:0] IDX = r[XW-1:0];
       wire hit0 = h0[r];
       wire hit1 = h1[r];
       wire hit2 = h2[r];
-      wire clr  = (clr0_valid_i && clr0_idx_i == IDX) ||
-                  (clr1_valid_i && clr1_idx_i == IDX) ||
-                  (clr2_valid_i && clr2_idx_i == IDX);
       always @(posedge clk_i) begin
         if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
         else if (hit0) lvt_q[r] <= 2'd0;
@@ -468,8 +509,8 @@ module fp3_regfile #(
       assign lvt_flat[2*r +: 2] = lvt_q[r];
       always @(posedge clk_i) begin
         if (rst_i)                               busy_q[r] <= 1'b0;
-        else if (set_i && set_idx_i == IDX)      busy_q[r] <= 1'b1;
-        else if (clr)                            busy_q[r] <= 1'b0;
+        else if (fset[r])                        busy_q[r] <= 1'b1;
+        else if (fclr[r])                        busy_q[r] <= 1'b0;
       end
     end
   endgenerate

@@ -150,7 +150,13 @@ module fp3_scheduler #(
   output wire                         issue_imm_o,   // the move path takes the immediate
   output wire [31:0]                  imm_o,
   output wire                         endi_o,        // the issued instruction is an endi
-  output wire                         beq_o          // ... a beq
+  output wire                         beq_o,         // ... a beq
+  // the instruction picked, which issues in the next cycle (PICK_STAGES =
+  // 2; with 0, the one issuing now): it writes a register (add, mul or
+  // move: issue_o && issue_unit_o != UNIT_NONE then), and which
+  // ({context, register}: rd_o then)
+  output wire                         pick_wr_o,
+  output wire [CW+IW-1:0]             pick_rd_o
 );
 `include "fp3_isa.vh"
 
@@ -614,6 +620,10 @@ module fp3_scheduler #(
   wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_li,
                           g_imm, p_grant && g_endi, p_grant && g_beq};
   wire [IS_W-1:0] is_w;
+  // (The issue register is cleared while stopped, below.)
+  assign pick_wr_o = p_grant && g_unit != UNIT_NONE &&
+                     (PICK_STAGES == 0 || (!rst_i && running_o));
+  assign pick_rd_o = {p_g, g_rd};
   generate
     if (PICK_STAGES == 0) begin : g_pick0
       assign is_w = is_d;

@@ -208,6 +208,8 @@ module fp3_top #(
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
   wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
+  wire          pick_wr;                              // the next issue's destination
+  wire [XW-1:0] pick_rd;
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
@@ -254,7 +256,9 @@ module fp3_top #(
     .issue_imm_o      (issue_imm),
     .imm_o            (imm),
     .endi_o           (endi),
-    .beq_o            (beq)
+    .beq_o            (beq),
+    .pick_wr_o        (pick_wr),
+    .pick_rd_o        (pick_rd)
   );
 
   // ---- register banks ------------------------------------------------------
@@ -262,7 +266,11 @@ module fp3_top #(
 
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
-  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ)) u_regs (
+  // With the pick stages the busy flags take their set and clear a cycle
+  // ahead (fp3_regfile FLAGS_AHEAD): the instruction picked and the tag
+  // lines' early announcements.
+  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ),
+                .FLAGS_AHEAD(FMAX_PIPE)) u_regs (
     .clk_i        (clk_i),
     .rst_i        (rst_i),
     .ra_i         (ra),
@@ -270,14 +278,14 @@ module fp3_top #(
     .ra_data_o    (ra_data),
     .rb_data_o    (rb_data),
     .busy_o       (busy),
-    .set_i        (issue && issue_unit != UNIT_NONE),
-    .set_idx_i    (rd),
-    .clr0_valid_i (adda_valid),
-    .clr0_idx_i   (adda_idx),
-    .clr1_valid_i (mula_valid),
-    .clr1_idx_i   (mula_idx),
-    .clr2_valid_i (mova_valid),
-    .clr2_idx_i   (mova_idx),
+    .set_i        (pick_wr),
+    .set_idx_i    (pick_rd),
+    .clr0_valid_i (FMAX_PIPE != 0 ? adde_valid : adda_valid),
+    .clr0_idx_i   (FMAX_PIPE != 0 ? adde_idx   : adda_idx),
+    .clr1_valid_i (FMAX_PIPE != 0 ? mule_valid : mula_valid),
+    .clr1_idx_i   (FMAX_PIPE != 0 ? mule_idx   : mula_idx),
+    .clr2_valid_i (FMAX_PIPE != 0 ? move_valid : mova_valid),
+    .clr2_idx_i   (FMAX_PIPE != 0 ? move_idx   : mova_idx),
     .wb0_valid_i  (add_valid),
     .wb0_idx_i    (add_idx),
     .wb0_data_i   (add_data),
