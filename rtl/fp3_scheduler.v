@@ -192,7 +192,7 @@ module fp3_scheduler #(
   reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
   reg [NC-1:0] ghigh_q;             // issue arbiter: contexts of first priority
-  reg [NC-1:0] fhigh_q;             // fetch arbiter: contexts of first priority
+  reg [2*NC-1:0] fpos_q;            // fetch arbiter: where its round starts (one-hot)
   reg          fvalid_q;            // a fetched word arrives (FETCH_STAGE: two cycles later)
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
@@ -747,11 +747,20 @@ module fp3_scheduler #(
       end
     end
   endgenerate
-  wire [NC-1:0] fetch_req = mf_q & ~fg_q;
-  wire          fetch = (|fetch_req) && running_o;
-  wire [2*NC-1:0] fx  = {fetch_req, fetch_req & fhigh_q};
-  wire [2*NC-1:0] fd  = fx - {{(2*NC-1){1'b0}}, 1'b1};
-  wire [NC-1:0] fgnt  = rr_pick(fx, fd);
+  // The fetch arbiter: round robin, as the issue arbiter's pick (rr_pick),
+  // but with no logic in front of the carry chain, and the last grant
+  // (fg_q, which may not fetch) only behind it.  The round starts after
+  // the last grant g: fpos_q is bit g + 1 of x = {mf_q, mf_q} (bit NC,
+  // the second copy's first, after the last context).  d = x - fpos_q
+  // borrows from x's first set bit at or after fpos_q, which is the grant
+  // (x & ~d, rr_pick): a context after g, else the first context with a
+  // request.  Only the latter can be g itself, when no other context
+  // requests (none is after g, and none before g, or it would be the
+  // first): so masking g after the pick leaves no grant, as it should.
+  wire          fetch = (|(mf_q & ~fg_q)) && running_o;
+  wire [2*NC-1:0] fx  = {mf_q, mf_q};
+  wire [2*NC-1:0] fd  = fx - fpos_q;
+  wire [NC-1:0] fgnt  = rr_pick(fx, fd) & ~fg_q;
   fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -947,7 +956,7 @@ module fp3_scheduler #(
       lull_q   <= 8'd0;
       ghigh_q  <= {NC{1'b1}};
       rh_q     <= {NC{1'b0}};
-      fhigh_q  <= {NC{1'b1}};
+      fpos_q   <= {{(2*NC-1){1'b0}}, 1'b1};
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
       ready_q <= ready_d & ~gone;
@@ -979,7 +988,7 @@ module fp3_scheduler #(
       fpcq_q   <= fpc_sel;
       fg_q     <= fetch ? fgnt : {NC{1'b0}};
       infl_q   <= infl_n;
-      if (fetch) fhigh_q <= rr_high(fx, fd, |(fetch_req & fhigh_q));
+      if (fetch) fpos_q <= {{(NC-1){1'b0}}, fgnt, 1'b0};
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
       // control), none before the run's first cycle.
