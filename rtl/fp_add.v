@@ -163,27 +163,22 @@ module fp_add #(
   wire [30:0] a_mag = ((FTZ != 0) && (a_exp == 8'd0)) ? 31'd0 : a_in[30:0];
   wire [30:0] b_mag = ((FTZ != 0) && (b_exp == 8'd0)) ? 31'd0 : b_in[30:0];
 
-  reg        c1_spec;
-  reg [31:0] c1_spec_y;
-  reg        c1_spec_nv;
-  always @* begin
-    c1_spec    = a_nan | b_nan | a_inf | b_inf;
-    c1_spec_nv = 1'b0;
-    if (a_nan) begin
-      c1_spec_y  = a_in | QNAN_BIT;
-      c1_spec_nv = a_snan | b_snan;
-    end else if (b_nan) begin
-      c1_spec_y  = b_in | QNAN_BIT;
-      c1_spec_nv = b_snan;
-    end else if (a_inf & b_inf & (a_sign ^ b_sign)) begin
-      c1_spec_y  = DEFAULT_NAN;
-      c1_spec_nv = 1'b1;
-    end else if (a_inf) begin
-      c1_spec_y  = {a_sign, MAG_INF};
-    end else begin
-      c1_spec_y  = {b_sign, MAG_INF};
-    end
-  end
+  // The special case is classified here and its result built in c1b from
+  // the registered fields (a NaN's payload is its significand: its
+  // exponent is not 0, so FTZ leaves it): which operand's NaN is quieted
+  // (c1_spa, c1_spb), the default NaN (c1_sdn), else an infinity; and the
+  // result's sign.  (The 32-bit result chosen here sat behind the operand
+  // register's NaN and infinity tests, which Yosys made the result
+  // register's synchronous set: a critical path on the ECP5.)
+  wire       c1_spec    = a_nan | b_nan | a_inf | b_inf;
+  wire       c1_spa     = a_nan;
+  wire       c1_spb     = ~a_nan & b_nan;
+  wire       c1_sdn     = ~a_nan & ~b_nan & a_inf & b_inf & (a_sign ^ b_sign);
+  wire       c1_spec_nv = a_nan ? (a_snan | b_snan) : b_nan ? b_snan : c1_sdn;
+  wire       c1_ssign   = a_nan  ? a_in[31] :
+                          b_nan  ? b_in[31] :
+                          c1_sdn ? DEFAULT_NAN[31] :
+                          a_inf  ? a_sign : b_sign;
 
   // Significands, exponents (1 for subnormals) and the compare.
   wire        a_norm   = (a_mag[30:23] != 8'd0);
@@ -197,27 +192,30 @@ module fp_add #(
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
   wire        c1_zsign = c1_sub ? 1'b0 : a_sign;
 
-  // The special result, carried to c4b.
-  localparam integer WS = 1 + 32 + 1; // spec, spec_y, spec_nv
+  // The special case as classified (c1a), and its result (from c1b on),
+  // carried to c4b.
+  localparam integer WC = 1 + 1 + 1 + 1 + 1 + 1; // spec, spa, spb, sdn, sign, spec_nv
+  localparam integer WS = 1 + 32 + 1;            // spec, spec_y, spec_nv
 
-  localparam integer W1 = WS + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24;
+  localparam integer W1 = WC + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_C1B] ? 1 : 0)) u_pipe1 (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s0_valid),
-    .data_i  ({c1_spec, c1_spec_y, c1_spec_nv, a_sign, b_sign, c1_swap,
+    .data_i  ({c1_spec, c1_spa, c1_spb, c1_sdn, c1_ssign, c1_spec_nv, a_sign, b_sign, c1_swap,
                c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
 
-  wire [WS-1:0] s1_spec;  // spec, spec_y, spec_nv
+  wire          s1_sp, s1_spa, s1_spb, s1_sdn, s1_ssign, s1_snv;
   wire          s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign;
   wire [7:0]    s1_ae, s1_be;
   wire [23:0]   s1_aman, s1_bman;
-  assign {s1_spec, s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign, s1_ae,
+  assign {s1_sp, s1_spa, s1_spb, s1_sdn, s1_ssign, s1_snv, s1_asign, s1_bsign, s1_swap,
+          s1_sub, s1_zsign, s1_ae,
           s1_be, s1_aman, s1_bman} = s1_data;
 
   // ---------------------------------------------------------------------
@@ -230,6 +228,12 @@ module fp_add #(
   wire [7:0]  d_ba      = s1_be - s1_ae;  // used when b_e >= a_e
   wire [4:0]  sh_ab     = d_ab[4:0] | {5{|d_ab[7:5]}};
   wire [4:0]  sh_ba     = d_ba[4:0] | {5{|d_ba[7:5]}};
+  // The special result: a quiet NaN with an operand's payload or the
+  // default NaN's, else an infinity (IEEE 754-2008 6.2.3, 7.2).
+  wire [21:0] c1b_pay   = s1_spa ? s1_aman[21:0] : s1_spb ? s1_bman[21:0] : 22'd0;
+  wire        c1b_nan   = s1_spa | s1_spb | s1_sdn;
+  wire [31:0] c1b_spy   = {s1_ssign, MAG_INF} | (c1b_nan ? QNAN_BIT : 32'd0) | {10'd0, c1b_pay};
+  wire [WS-1:0] s1_spec = {s1_sp, c1b_spy, s1_snv};
   wire        c1b_sign  = s1_swap ? s1_bsign : s1_asign;
   wire [7:0]  c1b_exp   = s1_swap ? s1_be    : s1_ae;
   wire [23:0] c1b_xman  = s1_swap ? s1_bman  : s1_aman;
