@@ -59,9 +59,9 @@
 //                the cycle they are given in.  1 (for clock rate): they
 //                are given a cycle earlier (the instruction picked, which
 //                issues in the next cycle: fp3_scheduler pick_*; the tag
-//                lines' early_*), decoded in two halves and registered,
-//                and change the flags at the same edge as with 0: each
-//                flag is then one LUT of flip-flops.
+//                lines' early_*) and registered (the clears decoded in two
+//                halves first, the set after), and change the flags at
+//                the same edge as with 0.
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
@@ -460,19 +460,35 @@ module fp3_regfile #(
   wire [ENTRIES-1:0] fset, fclr;
   generate
     if (FLAGS_AHEAD != 0) begin : g_flags_ahead
-      // From the events of the next cycle, decoded in two halves (as the
-      // write hits above) and registered.  (A flag behind four 8-bit
-      // compares with the issue register's destination and the tag lines'
-      // indices was a critical path: some 5.8 ns of routing to the
-      // flags' enables across the die.)
-      reg [(1<<HW)-1:0] sh_q, ch0_q, ch1_q, ch2_q;   // high halves
-      reg [(1<<LW)-1:0] sl_q, cl0_q, cl1_q, cl2_q;   // low halves
+      // The clears from the announcements of the next cycle, decoded in
+      // two halves (as the write hits above) and registered.  The set
+      // from the instruction picked, registered as it is (a copy of the
+      // issue register's destination that drives only this decode: kept,
+      // or Yosys would merge it with the issue register) and decoded in
+      // halves after it, so that the pick's multiplexer drives only
+      // flip-flops.  (A flag behind four 8-bit compares with the issue
+      // register's destination and the tag lines' indices was a critical
+      // path: some 5.8 ns of routing to the flags' enables across the
+      // die; the set's halves decoded behind the pick's multiplexer were
+      // the next, 5.3 ns.)
+      reg           sv_q;
+      reg  [XW-1:0] si_q;
+      initial begin
+        sv_q = 1'b0;
+        si_q = {XW{1'b0}};
+      end
+      (* keep *) always @(posedge clk_i) begin
+        sv_q <= !rst_i && set_i;
+        si_q <= set_idx_i;
+      end
+      wire [(1<<HW)-1:0] sh = dec_hi(sv_q, si_q[XW-1:LW]);
+      wire [(1<<LW)-1:0] sl = dec_lo(si_q[LW-1:0]);
+      reg [(1<<HW)-1:0] ch0_q, ch1_q, ch2_q;   // high halves
+      reg [(1<<LW)-1:0] cl0_q, cl1_q, cl2_q;   // low halves
       always @(posedge clk_i) begin
-        sh_q  <= dec_hi(!rst_i && set_i, set_idx_i[XW-1:LW]);
         ch0_q <= dec_hi(!rst_i && clr0_valid_i, clr0_idx_i[XW-1:LW]);
         ch1_q <= dec_hi(!rst_i && clr1_valid_i, clr1_idx_i[XW-1:LW]);
         ch2_q <= dec_hi(!rst_i && clr2_valid_i, clr2_idx_i[XW-1:LW]);
-        sl_q  <= dec_lo(set_idx_i[LW-1:0]);
         cl0_q <= dec_lo(clr0_idx_i[LW-1:0]);
         cl1_q <= dec_lo(clr1_idx_i[LW-1:0]);
         cl2_q <= dec_lo(clr2_idx_i[LW-1:0]);
@@ -481,7 +497,7 @@ module fp3_regfile #(
       for (f = 0; f < ENTRIES; f = f + 1) begin : g_flag
         localparam integer FH = f >> LW;
         localparam integer FL = f % (1 << LW);
-        assign fset[f] = sh_q[FH] && sl_q[FL];
+        assign fset[f] = sh[FH] && sl[FL];
         assign fclr[f] = ch0_q[FH] && cl0_q[FL] || ch1_q[FH] && cl1_q[FL] ||
                          ch2_q[FH] && cl2_q[FL];
       end
