@@ -11,8 +11,8 @@
 //              m2b pairs of those, 6 of 28 bits; m2c pairs again, 3 of 32
 //              bits; m2d the last three summed through one carry-save
 //              level (3:2 compressor) and one 40-bit adder); the sticky
-//              bit from the trailing zeros of a and b (m2a counts, m2b
-//              compares), beside the adders
+//              bit from the lowest ones of a and b (m2a finds them with
+//              the carry chain and pairs them, m2b ORs), beside the adders
 //   BND     register places (bit k set: a register): bit 0 after m2a,
 //           bit 1 after m2b, bit 2 after m2c (LUT = 1 only)
 //   SIDE_W  bits of the side-band word (>= 1)
@@ -38,7 +38,7 @@
 // (LFE5U-85F-6, 6 seeds), so the DSP product stays below 150 MHz at any
 // latency (fp_mul: 133-140 MHz).  The LUT structure puts one carry chain in each stage (the
 // AND gates in front of the first: a LUT level); with every register
-// place it takes 738 LUT4s, 299 CCU2C carry cells and 580 flip-flops on
+// place it takes 654 LUT4s, 318 CCU2C carry cells and 591 flip-flops on
 // the ECP5 (Yosys 0.23), against 7, 31, 162 and four DSP blocks.
 //
 // The carry-save level (LUT = 1, m2d): three addends x, y, z give
@@ -130,8 +130,8 @@ module fp_mul_prod #(
     end else begin : g_lut
       // -----------------------------------------------------------------
       // m2a: row pairs, r1[26j +: 26] = a * b[2j] + 2 * a * b[2j+1]
-      // (the sum of rows 2j and 2j+1, weight 2^(2j)); the trailing zeros
-      // of a and b (leading zeros of the reversed words; 24 for zero)
+      // (the sum of rows 2j and 2j+1, weight 2^(2j)); the sticky bit's
+      // terms (below)
       // -----------------------------------------------------------------
       wire [12*26-1:0] c_r1;
       genvar j;
@@ -142,48 +142,46 @@ module fp_mul_prod #(
         assign c_r1[26 * j +: 26] = {s, x[0]};
       end
 
-      wire [23:0] a_rev, b_rev;
-      for (j = 0; j < 24; j = j + 1) begin : g_rev
-        assign a_rev[j] = a_i[23 - j];
-        assign b_rev[j] = b_i[23 - j];
+      // The sticky bit: a product's trailing zeros are those of a and b
+      // together (the product of two odd numbers is odd; a zero factor
+      // gives a zero product), so its low 21 bits hold a one exactly when
+      // a's lowest one (bit i) and b's (bit j) have i + j <= 20.  With the
+      // carry chain: a & ~(a - 1) is a's lowest one alone, ~b & (b - 1)
+      // the bits below b's lowest one (all of them for b = 0), and term i
+      // holds when a's lowest one is bit i and b has a one at or below
+      // bit 20 - i.  The 21 terms are registered here and ORed in m2b.
+      wire [23:0] a_dec = a_i - 24'd1;
+      wire [23:0] b_dec = b_i - 24'd1;
+      wire [23:0] a_low = a_i & ~a_dec;
+      wire [23:0] b_below = ~b_i & b_dec;
+      wire [20:0] c_stt;
+      for (j = 0; j < 21; j = j + 1) begin : g_stt
+        assign c_stt[j] = a_low[j] & ~b_below[20 - j];
       end
-      wire [4:0] c_atz, c_btz;
-      fp_lzc #(.WIDTH(24)) u_atz (
-        .v_i (a_rev),
-        .n_o (c_atz)
-      );
-      fp_lzc #(.WIDTH(24)) u_btz (
-        .v_i (b_rev),
-        .n_o (c_btz)
-      );
+      wire unused_ab = &{1'b0, a_low[23:21], b_below[23:21]};
 
-      localparam integer WA = SIDE_W + 5 + 5 + 12 * 26;
+      localparam integer WA = SIDE_W + 21 + 12 * 26;
       wire          va;
       wire [WA-1:0] da;
       fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (valid_i),
-        .data_i  ({side_i, c_atz, c_btz, c_r1}),
+        .data_i  ({side_i, c_stt, c_r1}),
         .valid_o (va),
         .data_o  (da)
       );
 
       wire [SIDE_W-1:0] sa;
-      wire [4:0]        atz, btz;
+      wire [20:0]       stt;
       wire [12*26-1:0]  r1;
-      assign {sa, atz, btz, r1} = da;
+      assign {sa, stt, r1} = da;
 
       // -----------------------------------------------------------------
       // m2b: r2[j] = r1[2j] + 4 * r1[2j+1] (rows 4j to 4j+3, < 2^28);
-      // the sticky bit: a product's trailing zeros are those of a and b
-      // together (the product of two odd numbers is odd; a zero factor
-      // counts 24 and gives a zero product), so its low 21 bits hold a
-      // one exactly when atz + btz < 21
+      // the sticky bit, the OR of m2a's terms
       // -----------------------------------------------------------------
-      // (t >= 21 = 10101b written as bits: no comparator chain)
-      wire [5:0] tz   = {1'b0, atz} + {1'b0, btz};
-      wire       c_st = ~(tz[5] | (tz[4] & (tz[3] | (tz[2] & (tz[1] | tz[0])))));
+      wire       c_st = |stt;
       wire [6*28-1:0] c_r2;
       for (j = 0; j < 6; j = j + 1) begin : g_r2
         wire [25:0] x = r1[26 * (2 * j) +: 26];
