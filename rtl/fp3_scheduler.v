@@ -153,10 +153,11 @@ module fp3_scheduler #(
   output wire                         beq_o,         // ... a beq
   // the instruction picked, which issues in the next cycle (PICK_STAGES =
   // 2; with 0, the one issuing now): it writes a register (add, mul or
-  // move: issue_o && issue_unit_o != UNIT_NONE then), and which
-  // ({context, register}: rd_o then)
+  // move: issue_o && issue_unit_o != UNIT_NONE then), which ({context,
+  // register}: rd_o then), and its unit (issue_unit_o then)
   output wire                         pick_wr_o,
-  output wire [CW+IW-1:0]             pick_rd_o
+  output wire [CW+IW-1:0]             pick_rd_o,
+  output wire [1:0]                   pick_unit_o
 );
 `include "fp3_isa.vh"
 
@@ -624,6 +625,7 @@ module fp3_scheduler #(
   assign pick_wr_o = p_grant && g_unit != UNIT_NONE &&
                      (PICK_STAGES == 0 || (!rst_i && running_o));
   assign pick_rd_o = {p_g, g_rd};
+  assign pick_unit_o = g_unit;
   generate
     if (PICK_STAGES == 0) begin : g_pick0
       assign is_w = is_d;
