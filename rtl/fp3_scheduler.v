@@ -299,7 +299,7 @@ module fp3_scheduler #(
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
   wire          a_halt  = asdec[0];
-  wire          a_atend = {{(32-AW){1'b0}}, apc} == IMEM_DEPTH - 1;
+  wire          a_atend;    // ... at the memory's last address (compared a cycle ahead: u_arrive)
   wire [DW-1:0] adec    = {!asdec[SW-1], asdec[SW-2:0], a_atend && !a_halt && !a_endi};
 
   // ---- ready step: the head of every queue ---------------------------------
@@ -696,13 +696,14 @@ module fp3_scheduler #(
     .valid_o (nvalid),
     .data_o  ({nfctx, npc})
   );
-  fp_pipe #(.WIDTH(CW + AW), .DEPTH(FETCH_STAGE)) u_arrive (
+  wire          n_atend = {{(32-AW){1'b0}}, npc} == IMEM_DEPTH - 1;
+  fp_pipe #(.WIDTH(CW + AW + 1), .DEPTH(FETCH_STAGE)) u_arrive (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
     .valid_i (nvalid),
-    .data_i  ({nfctx, npc}),
+    .data_i  ({nfctx, npc, n_atend}),
     .valid_o (avalid),
-    .data_o  ({actx, apc})
+    .data_o  ({actx, apc, a_atend})
   );
   generate
     if (FETCH_STAGE != 0) begin : g_word_reg
