@@ -567,11 +567,9 @@ module fp3_scheduler #(
   // cycle: the next word to arrive takes the other slot or, if the queue
   // is empty, the new head's).
   reg           grant_q;
-  reg  [CW-1:0] g_q;
   always @(posedge clk_i) begin
     gone_q  <= gone & {NC{running_o}};
     grant_q <= grant && running_o;
-    g_q     <= g;
   end
   // With PICK_STAGES = 2 the pick multiplexer takes the last grant from
   // copies of gone_q of its own, one for the immediate (32 bits) and one
@@ -599,7 +597,10 @@ module fp3_scheduler #(
   wire [NC-1:0] p_seli  = two ? gpi_q : gone;
   wire [NC-1:0] p_self  = two ? gpf_q : gone;
   wire          p_grant = two ? grant_q : grant;
-  wire [CW-1:0] p_g     = two ? g_q : g;
+  // (The granted context's number, encoded from the grant's copy in the
+  // pick cycle: registered as encoded, Yosys made the grant a synchronous
+  // reset of its register, behind the arbiter: a critical path.)
+  wire [CW-1:0] p_g     = two ? encode(gpf_q) : g;
   reg  [FW-1:0] gf;
   integer q;
   always @(*) begin
