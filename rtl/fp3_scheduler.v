@@ -990,7 +990,7 @@ module fp3_scheduler #(
       fvalid_q <= fread;
       fctx_q   <= fr;
       fpcq_q   <= fpc_sel;
-      fg_q     <= fetch ? fgnt : {NC{1'b0}};
+      fg_q     <= fgnt;   // (none without fetch: the arbiter's; no synchronous reset from fetch)
       infl_q   <= infl_n;
       if (fetch) fpos_q <= {{(NC-1){1'b0}}, fgnt, 1'b0};
 
