@@ -1006,7 +1006,14 @@ module fp3_scheduler #(
   // either (a context was active, with work), and in its first cycle, in
   // which the results are cleared, there was none in the one before.
   reg stall_q;              // a stall in the last cycle
+  // An illegal head is recorded a cycle later too (ill_q), so that the
+  // heads' decode drives no error register (which sits by the host's
+  // read, across the die: a critical path).  Its context left the active
+  // set at once (held_d), so its head stays in its slot (h_pc) and the
+  // run goes on for that cycle.
+  reg [NC-1:0] ill_q;
   always @(posedge clk_i) begin
+    ill_q   <= illegal & {NC{running_o}};
     stall_q <= running_o && !grant && |(act & holds);
     idle_q  <= idle_i;
     iss_q   <= issue_o;
@@ -1042,7 +1049,7 @@ module fp3_scheduler #(
           err_q[k] <= ERR_PC_OVERFLOW;
           epc_q[k] <= l_pc[k*AW +: AW];
         end
-        if (illegal[k]) begin
+        if (ill_q[k]) begin
           err_q[k] <= ERR_ILLEGAL_INSN;
           epc_q[k] <= h_pc[k*AW +: AW];
         end

@@ -921,6 +921,39 @@ static void test_bad_contexts(void **state) {
   }
 }
 
+/* An illegal word met by some contexts only, among all the contexts of the
+ * default build and of the build for clock rate: each records its own
+ * error and faulting PC, as on the ISS, and the others halt cleanly.  The
+ * odd contexts (r1 != r2) fall through the beq onto the illegal word. */
+static void test_errors_every_context(void **state) {
+  (void)state;
+  fp3_image img;
+  assemble("beq r1, r2, ok\n.word 0x0900000000000000\nok: halt\n", &img);
+  static multi_capture ma, mb;
+  static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
+  fp3_engine *fmax = fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
+  assert_non_null(fmax);
+  fp3_engine *builds[2] = {rtl, fmax};
+  for (int i = 0; i < 2; i++) {
+    unsigned nctx = builds[i]->config.num_contexts;
+    memset(init, 0, sizeof init);
+    for (unsigned k = 0; k < nctx; k++) init[k][1] = (k & 1) ? 0x3F800000u : 0;
+    fp3_status sa, sb;
+    run_contexts_on(builds[i], &img, init, nctx, 1, &ma, &sa);
+    run_contexts_on(iss, &img, init, nctx, 1, &mb, &sb);
+    assert_int_equal(sa.any_error, nctx > 1);
+    for (unsigned k = 0; k < nctx; k++) {
+      assert_int_equal(ma.c[k].st.error, (k & 1) ? FP3_ERR_ILLEGAL_INSN : FP3_ERR_NONE);
+      assert_int_equal(ma.c[k].st.fault_pc, (k & 1) ? 1 : 0);
+      assert_int_equal(ma.c[k].st.error, mb.c[k].st.error);
+      assert_int_equal(ma.c[k].st.fault_pc, mb.c[k].st.fault_pc);
+    }
+    multi_free(&ma);
+    multi_free(&mb);
+  }
+  fp3_engine_free(fmax);
+}
+
 static int setup(void **state) {
   (void)state;
   rtl = fp3_engine_rtl_new(NULL);
@@ -965,6 +998,7 @@ int main(void) {
       cmocka_unit_test(test_many_ships),
       cmocka_unit_test(test_random_programs_contexts),
       cmocka_unit_test(test_bad_contexts),
+      cmocka_unit_test(test_errors_every_context),
       cmocka_unit_test(test_host_map_reads),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
