@@ -207,8 +207,12 @@ module fp3_scheduler #(
   // is stored with its decoded bits (SW, below), decided as it is written: the
   // host's write is decoded and registered, and written a cycle later (a
   // run starts two cycles after a write at the earliest); so no decode
-  // sits in front of the memory.  Entries never written read as zero: the
-  // nop, decoded.
+  // sits in front of the memory.  FETCH_STAGE: the write is registered
+  // once more before the decode (the host's data register meets only
+  // flip-flops) and lands a cycle later still, before a run's first read:
+  // a START in the cycle after the write starts the contexts a cycle after
+  // it, and the first fetch PC reaches the memory a cycle after their
+  // first grant.  Entries never written read as zero: the nop, decoded.
   localparam integer SW = DW - 1;   // stored decoded bits
   wire [63:0]   imem_word;
   wire [SW-1:0] imem_sdec;
@@ -218,10 +222,28 @@ module fp3_scheduler #(
   reg  [63:0]   wd_q;
   wire [SW-1:0] wsdec;      // the word being written, decoded
   reg  [SW-1:0] ws_q;
+  wire          dwe;        // the write being decoded
+  wire [AW-1:0] dwa;
+  wire [63:0]   dwd;
+  generate
+    if (FETCH_STAGE != 0) begin : g_write_reg
+      reg           iwe_q;
+      reg  [AW-1:0] iwa_q;
+      reg  [63:0]   iwd_q;
+      always @(posedge clk_i) begin
+        iwe_q <= imem_we_i && !rst_i;
+        iwa_q <= imem_waddr_i;
+        iwd_q <= imem_wdata_i;
+      end
+      assign {dwe, dwa, dwd} = {iwe_q, iwa_q, iwd_q};
+    end else begin : g_write_now
+      assign {dwe, dwa, dwd} = {imem_we_i, imem_waddr_i, imem_wdata_i};
+    end
+  endgenerate
   always @(posedge clk_i) begin
-    we_q <= imem_we_i && !rst_i;
-    wa_q <= imem_waddr_i;
-    wd_q <= imem_wdata_i;
+    we_q <= dwe && !rst_i;
+    wa_q <= dwa;
+    wd_q <= dwd;
     ws_q <= wsdec;
   end
   fp3_ram #(.DEPTH(IMEM_DEPTH), .AW(AW), .WIDTH(SW + 64), .READ_STAGES(1 + FETCH_STAGE)) u_imem (
@@ -265,13 +287,13 @@ module fp3_scheduler #(
   // or an endi, which leave or jump, at the last address) and kept in its
   // queue entry (DW bits: {legal, ..., halt, ovf}).  So neither the ready
   // step nor the arrival decodes anything.
-  wire [7:0]    w_opc   = imem_wdata_i[ISA_OPC_LSB +: ISA_OPC_WIDTH];
+  wire [7:0]    w_opc   = dwd[ISA_OPC_LSB +: ISA_OPC_WIDTH];
   wire          w_endi  = w_opc == OP_ENDI;
   wire          w_beq   = w_opc == OP_BEQ;
-  wire [7:0]    w_rd8   = imem_wdata_i[ISA_RD_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_ra8   = imem_wdata_i[ISA_RA_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_rb8   = imem_wdata_i[ISA_RB_LSB +: ISA_REG_WIDTH];
-  wire [31:0]   w_imm   = imem_wdata_i[0 +: ISA_IMM_WIDTH];
+  wire [7:0]    w_rd8   = dwd[ISA_RD_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_ra8   = dwd[ISA_RA_LSB +: ISA_REG_WIDTH];
+  wire [7:0]    w_rb8   = dwd[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [31:0]   w_imm   = dwd[0 +: ISA_IMM_WIDTH];
   wire [6:0]    w_dec   = isa_decode(w_opc);   // {known, unit, uses: imm rb ra rd}
   wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
@@ -283,7 +305,7 @@ module fp3_scheduler #(
                           reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_in) &&
-                          (!w_beq || (w_in && w_imm[AW-1:0] > imem_waddr_i));
+                          (!w_beq || (w_in && w_imm[AW-1:0] > dwa));
   assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
