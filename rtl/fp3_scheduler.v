@@ -317,6 +317,14 @@ module fp3_scheduler #(
   wire [NC-1:0] arriving;   // ... one-hot
   wire [NC-1:0] gone;       // the head granted in this cycle (issue step)
   reg  [2*NC-1:0] wsel_q;   // the slot the arriving word is written into
+  wire [2*NC-1:0] wsel_d;   // ... next (fetch step, below)
+  wire [CW-1:0]   fr;       // the context granted a fetch (fetch step, below)
+  // ... a copy for the freed compares (fq_q, below) only, kept (else Yosys
+  // merges it with wsel_q, which enables some 85 flip-flops per slot and
+  // sits among them: its route to the compares was a critical path)
+  reg  [2*NC-1:0] wsf_q;
+  initial wsf_q = {(2*NC){1'b0}};
+  (* keep *) always @(posedge clk_i) wsf_q <= (rst_i || !running_o) ? {(2*NC){1'b0}} : wsel_d;
   wire [2*NC-1:0] wslot;    // ... and becomes valid (its context active)
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
@@ -494,9 +502,9 @@ module fp3_scheduler #(
         // This cycle's announcements of the fields, compared in the cycle
         // before (early_*_i) with the fields the slot holds now: an
         // arriving word's if it was written then.
-        wire [IW-1:0] nra = wsel_q[I] ? a_ra : ra;
-        wire [IW-1:0] nrb = wsel_q[I] ? a_rb : rb;
-        wire [IW-1:0] nrd = wsel_q[I] ? a_rd : rd;
+        wire [IW-1:0] nra = wsf_q[I] ? a_ra : ra;
+        wire [IW-1:0] nrb = wsf_q[I] ? a_rb : rb;
+        wire [IW-1:0] nrd = wsf_q[I] ? a_rd : rd;
         reg  [2:0]    fq_q;
         always @(posedge clk_i)
           fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
@@ -679,9 +687,15 @@ module fp3_scheduler #(
   generate
     if (FETCH_STAGE != 0 && PICK_STAGES == 2) begin : g_mask_ahead
       reg [RN-1:0] smask_q, cmask_q;
+      // fctx_q's copy for these masks, kept (fctx_q also goes with the
+      // fetch address to the memory's side: its route back to the masks
+      // was a critical path)
+      reg [CW-1:0] fcm_q;
+      initial fcm_q = {CW{1'b0}};
+      (* keep *) always @(posedge clk_i) if (!rst_i && running_o) fcm_q <= fr;
       always @(posedge clk_i) begin
-        smask_q <= flag1(!rst_i && running_o && pg_w[fctx_q], pg_rd[fctx_q*IW +: IW]);
-        cmask_q <= ann3(early_valid_i, early_idx_i, fctx_q);
+        smask_q <= flag1(!rst_i && running_o && pg_w[fcm_q], pg_rd[fcm_q*IW +: IW]);
+        cmask_q <= ann3(early_valid_i, early_idx_i, fcm_q);
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
@@ -803,9 +817,17 @@ module fp3_scheduler #(
     fpc_sel = {AW{1'b0}};
     for (q = 0; q < NC; q = q + 1) fpc_sel = fpc_sel | ({AW{fr1[q]}} & fpcs[q*AW +: AW]);
   end
-  wire [CW-1:0] fr = encode(fr1);
+  assign fr = encode(fr1);
   // The word arriving in the next cycle (u_arrive's input).
   wire [NC-1:0] narr = FETCH_STAGE != 0 ? onehot(nvalid, nfctx) : onehot(fread, fr);
+  // The slot the word arriving next is written into (wsel_q, below).
+  generate
+    for (c = 0; c < NC; c = c + 1) begin : g_wsel
+      for (e = 0; e < 2; e = e + 1) begin : g_slot
+        assign wsel_d[2*c+e] = narr[c] && (hp_q[c] ^ holds[c]) == e[0];
+      end
+    end
+  endgenerate
   assign nctx = FETCH_STAGE != 0 ? nfctx : fr;
 
   // The arriving word decides where its context fetches next.
@@ -861,7 +883,7 @@ module fp3_scheduler #(
   wire [NC-1:0] illegal   = act & holds & ~legal;
   reg           start_q, bad_q;  // a START taken / refused in the last cycle
   reg  [3:0]    bad_err_q;       // ... why it was refused
-  integer k, m;
+  integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
       running_o <= 1'b0;
@@ -993,11 +1015,9 @@ module fp3_scheduler #(
       // arriving word is written into its slot (above) and is valid there
       // (wslot); the slot of the word arriving next is chosen.
       for (k = 0; k < 2 * NC; k = k + 1) v_q[k] <= gone[k/2] ? v_g[k] : v_k[k];
+      wsel_q <= wsel_d;
       for (k = 0; k < NC; k = k + 1) begin
         if (gone[k]) hp_q[k] <= !hp_q[k];
-        for (m = 0; m < 2; m = m + 1) begin
-          wsel_q[2*k+m] <= narr[k] && (hp_q[k] ^ holds[k]) == m[0];
-        end
         // The fetch PC: after the arriving word, or a taken beq's target
         // (fend_d, bwait_d).
         if (arriving[k] && act[k]) fpc_q[k] <= a_next;
