@@ -471,16 +471,13 @@ module fp3_regfile #(
       // path: some 5.8 ns of routing to the flags' enables across the
       // die; the set's halves decoded behind the pick's multiplexer were
       // the next, 5.3 ns.)
-      reg           sv_q;
-      reg  [XW-1:0] si_q;
-      initial begin
-        sv_q = 1'b0;
-        si_q = {XW{1'b0}};
-      end
-      (* keep *) always @(posedge clk_i) begin
-        sv_q <= !rst_i && set_i;
-        si_q <= set_idx_i;
-      end
+      wire          sv_q;
+      wire [XW-1:0] si_q;
+      fp3_keep #(.W(1 + XW)) u_set_copy (
+        .clk_i (clk_i),
+        .d_i   ({!rst_i && set_i, set_idx_i}),
+        .q_o   ({sv_q, si_q})
+      );
       wire [(1<<HW)-1:0] sh = dec_hi(sv_q, si_q[XW-1:LW]);
       wire [(1<<LW)-1:0] sl = dec_lo(si_q[LW-1:0]);
       reg [(1<<HW)-1:0] ch0_q, ch1_q, ch2_q;   // high halves

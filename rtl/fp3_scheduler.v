@@ -322,9 +322,12 @@ module fp3_scheduler #(
   // ... a copy for the freed compares (fq_q, below) only, kept (else Yosys
   // merges it with wsel_q, which enables some 85 flip-flops per slot and
   // sits among them: its route to the compares was a critical path)
-  reg  [2*NC-1:0] wsf_q;
-  initial wsf_q = {(2*NC){1'b0}};
-  (* keep *) always @(posedge clk_i) wsf_q <= (rst_i || !running_o) ? {(2*NC){1'b0}} : wsel_d;
+  wire [2*NC-1:0] wsf_q;
+  fp3_keep #(.W(2 * NC)) u_wsel_copy (
+    .clk_i (clk_i),
+    .d_i   ((rst_i || !running_o) ? {(2*NC){1'b0}} : wsel_d),
+    .q_o   (wsf_q)
+  );
   wire [2*NC-1:0] wslot;    // ... and becomes valid (its context active)
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
@@ -690,9 +693,12 @@ module fp3_scheduler #(
       // fctx_q's copy for these masks, kept (fctx_q also goes with the
       // fetch address to the memory's side: its route back to the masks
       // was a critical path)
-      reg [CW-1:0] fcm_q;
-      initial fcm_q = {CW{1'b0}};
-      (* keep *) always @(posedge clk_i) if (!rst_i && running_o) fcm_q <= fr;
+      wire [CW-1:0] fcm_q;
+      fp3_keep #(.W(CW)) u_fctx_copy (
+        .clk_i (clk_i),
+        .d_i   ((!rst_i && running_o) ? fr : fcm_q),
+        .q_o   (fcm_q)
+      );
       always @(posedge clk_i) begin
         smask_q <= flag1(!rst_i && running_o && pg_w[fcm_q], pg_rd[fcm_q*IW +: IW]);
         cmask_q <= ann3(early_valid_i, early_idx_i, fcm_q);

@@ -367,18 +367,11 @@ module fp3_top #(
   wire [XW-1:0] mov_rd;
   generate
     if (PICK != 0) begin : g_mov_copy
-      reg           mv_q;
-      reg  [XW-1:0] mi_q;
-      initial begin
-        mv_q = 1'b0;
-        mi_q = {XW{1'b0}};
-      end
-      (* keep *) always @(posedge clk_i) begin
-        mv_q <= pick_wr && pick_unit == UNIT_MOV;
-        mi_q <= pick_rd;
-      end
-      assign mov_issue = mv_q;
-      assign mov_rd    = mi_q;
+      fp3_keep #(.W(1 + XW)) u_mov_copy (
+        .clk_i (clk_i),
+        .d_i   ({pick_wr && pick_unit == UNIT_MOV, pick_rd}),
+        .q_o   ({mov_issue, mov_rd})
+      );
     end else begin : g_mov_issue
       assign mov_issue = issue && issue_unit == UNIT_MOV;
       assign mov_rd    = rd;
