@@ -319,15 +319,6 @@ module fp3_scheduler #(
   reg  [2*NC-1:0] wsel_q;   // the slot the arriving word is written into
   wire [2*NC-1:0] wsel_d;   // ... next (fetch step, below)
   wire [CW-1:0]   fr;       // the context granted a fetch (fetch step, below)
-  // ... a copy for the freed compares (fq_q, below) only, kept (else Yosys
-  // merges it with wsel_q, which enables some 85 flip-flops per slot and
-  // sits among them: its route to the compares was a critical path)
-  wire [2*NC-1:0] wsf_q;
-  fp3_keep #(.W(2 * NC)) u_wsel_copy (
-    .clk_i (clk_i),
-    .d_i   ((rst_i || !running_o) ? {(2*NC){1'b0}} : wsel_d),
-    .q_o   (wsf_q)
-  );
   wire [2*NC-1:0] wslot;    // ... and becomes valid (its context active)
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
@@ -486,6 +477,14 @@ module fp3_scheduler #(
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle.
       wire [2:0] sj = lk_q | pd_q | (hw_q & {3{gone_q[c]}});
+      // The arriving word's fields among the announcements of the next
+      // cycle (early_*_i now), for whichever of this context's slots it
+      // is written into (fresh there in the next cycle: fr_q).
+      reg  [2:0] fa_q;
+      always @(posedge clk_i)
+        fa_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, a_rd}),
+                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, a_rb}),
+                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, a_ra})};
 
       for (e = 0; e < 2; e = e + 1) begin : g_slot
         localparam integer I = 2 * c + e;       // this slot
@@ -502,17 +501,15 @@ module fp3_scheduler #(
                 d_ovf} = x_q[I];
         wire          unused_x = &{1'b0, d_halt, d_ovf};
         assign fields[I*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
-        // This cycle's announcements of the fields, compared in the cycle
-        // before (early_*_i) with the fields the slot holds now: an
-        // arriving word's if it was written then.
-        wire [IW-1:0] nra = wsf_q[I] ? a_ra : ra;
-        wire [IW-1:0] nrb = wsf_q[I] ? a_rb : rb;
-        wire [IW-1:0] nrd = wsf_q[I] ? a_rd : rd;
+        // This cycle's announcements of the fields the slot holds, compared
+        // in the cycle before (early_*_i) and registered; a word arriving
+        // in that cycle has its own (fa_q), taken while it is fresh.  So
+        // no slot select sits in front of the compares.
         reg  [2:0]    fq_q;
         always @(posedge clk_i)
-          fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, nrd}),
-                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, nrb}),
-                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, nra})};
+          fq_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, rd}),
+                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, rb}),
+                   `FP3_FREED(early_valid_i, early_idx_i, {CTX, ra})};
         // The other slot, if it is the head and granted, writes its
         // destination: this word waits for it.  Compared in every cycle
         // (by_q), taken in the next if the head was granted (gone_q: this
@@ -521,7 +518,7 @@ module fp3_scheduler #(
         always @(posedge clk_i)
           by_q <= {3{wrh && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
         // The wait bits, with this cycle's announcements taken off.
-        wire [2:0] s = (fr_q[I] ? sj : s_q[I] | (by_q & {3{gone_q[c]}})) & ~fq_q;
+        wire [2:0] s = fr_q[I] ? sj & ~fa_q : (s_q[I] | (by_q & {3{gone_q[c]}})) & ~fq_q;
         assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
         assign s_d[I*3 +: 3] = s;
       end
