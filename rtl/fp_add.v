@@ -20,10 +20,12 @@
 //              L >= 9: in | c1a | c1b | c2a | c2b | c3a | c3b | c4a | c4b
 //                      | out, plus L-9 delay stages
 //            where in = operand registers;
-//              c1a = unpack, special cases, magnitude compare;
+//              c1a = unpack, special cases, magnitude compare, each
+//                    significand's lowest one (for c2a's sticky bit);
 //              c1b = swap (x = the operand of larger magnitude), exponent
 //                    difference (alignment shift, saturated);
-//              c2a = alignment shift of y with sticky (fp_shr_sticky), the
+//              c2a = alignment shift of y, its sticky bit (the lowest
+//                    one of y, found in c1a, against the shift), the
 //                    normalisation limit from the exponent;
 //              c2b = add/subtract (one carry chain), ORed with the
 //                    normalisation limit for c3a;
@@ -88,6 +90,24 @@ module fp_add #(
   localparam [31:0] QNAN_BIT    = 32'h0040_0000;
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
+
+  // The sticky limit of a significand m for the alignment shift (c2a):
+  // the position of m's lowest one in {m, 00} (its trailing zeros + 2),
+  // or 31 for m = 0, so that a right shift of {m, 00} by s (0 to 31)
+  // drops a one exactly when s > the limit.  The lowest one is m & ~(m -
+  // 1) (a carry chain), encoded by ORs.
+  function [4:0] sticky_limit(input [23:0] m);
+    reg [24:0] d;
+    reg [23:0] low;
+    integer    k;
+    begin
+      d   = {1'b0, m} - 25'd1;        // d[24]: m = 0 (the borrow)
+      low = m & ~d[23:0];
+      sticky_limit = {5{d[24]}};
+      for (k = 0; k < 24; k = k + 1)
+        sticky_limit = sticky_limit | ({5{low[k]}} & (k[4:0] + 5'd2));
+    end
+  endfunction
 
   // Register places, in datapath order (bit k of BND: place k holds one).
   localparam integer B_IN  = 0; // in  | c1a : operand registers
@@ -187,6 +207,9 @@ module fp_add #(
   wire [7:0]  b_e      = {b_mag[30:24], b_mag[23] | ~b_norm};
   wire [23:0] c1_aman  = {a_norm, a_mag[22:0]};
   wire [23:0] c1_bman  = {b_norm, b_mag[22:0]};
+  // For the alignment's sticky bit (c2a): each significand's lowest one.
+  wire [4:0]  c1_alim  = sticky_limit(c1_aman);
+  wire [4:0]  c1_blim  = sticky_limit(c1_bman);
   wire        c1_swap  = (b_mag > a_mag);
   wire        c1_sub   = a_sign ^ b_sign;
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
@@ -197,7 +220,7 @@ module fp_add #(
   localparam integer WC = 1 + 1 + 1 + 1 + 1 + 1; // spec, spa, spb, sdn, sign, spec_nv
   localparam integer WS = 1 + 32 + 1;            // spec, spec_y, spec_nv
 
-  localparam integer W1 = WC + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24;
+  localparam integer W1 = WC + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24 + 5 + 5;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_C1B] ? 1 : 0)) u_pipe1 (
@@ -205,7 +228,7 @@ module fp_add #(
     .rst_i   (rst_i),
     .valid_i (s0_valid),
     .data_i  ({c1_spec, c1_spa, c1_spb, c1_sdn, c1_ssign, c1_spec_nv, a_sign, b_sign, c1_swap,
-               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman}),
+               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman, c1_alim, c1_blim}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
@@ -214,9 +237,10 @@ module fp_add #(
   wire          s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign;
   wire [7:0]    s1_ae, s1_be;
   wire [23:0]   s1_aman, s1_bman;
+  wire [4:0]    s1_alim, s1_blim;
   assign {s1_sp, s1_spa, s1_spb, s1_sdn, s1_ssign, s1_snv, s1_asign, s1_bsign, s1_swap,
           s1_sub, s1_zsign, s1_ae,
-          s1_be, s1_aman, s1_bman} = s1_data;
+          s1_be, s1_aman, s1_bman, s1_alim, s1_blim} = s1_data;
 
   // ---------------------------------------------------------------------
   // c1b: swap: x is the operand of larger magnitude, y the other one; the
@@ -239,8 +263,9 @@ module fp_add #(
   wire [23:0] c1b_xman  = s1_swap ? s1_bman  : s1_aman;
   wire [23:0] c1b_yman  = s1_swap ? s1_aman  : s1_bman;
   wire [4:0]  c1b_shift = s1_swap ? sh_ba    : sh_ab;
+  wire [4:0]  c1b_ylim  = s1_swap ? s1_alim  : s1_blim;
 
-  localparam integer W2 = WS + 1 + 1 + 1 + 8 + 24 + 24 + 5;
+  localparam integer W2 = WS + 1 + 1 + 1 + 8 + 24 + 24 + 5 + 5;
   wire          s2_valid;
   wire [W2-1:0] s2_data;
   fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_C2] ? 1 : 0)) u_pipe2 (
@@ -248,7 +273,7 @@ module fp_add #(
     .rst_i   (rst_i),
     .valid_i (s1_valid),
     .data_i  ({s1_spec, c1b_sign, s1_sub, s1_zsign, c1b_exp, c1b_xman,
-               c1b_yman, c1b_shift}),
+               c1b_yman, c1b_shift, c1b_ylim}),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
@@ -257,25 +282,21 @@ module fp_add #(
   wire          s2_sign, s2_sub, s2_zsign;
   wire [7:0]    s2_exp;
   wire [23:0]   s2_xman, s2_yman;
-  wire [4:0]    s2_shift;
+  wire [4:0]    s2_shift, s2_ylim;
   assign {s2_spec, s2_sign, s2_sub, s2_zsign, s2_exp, s2_xman, s2_yman,
-          s2_shift} = s2_data;
+          s2_shift, s2_ylim} = s2_data;
 
   // ---------------------------------------------------------------------
   // c2a: align y to x: 26 bits (significand, guard, round) and a sticky
   // bit; for c3a, the normalisation limit: a "stopper" one at bit
   // 27 - exp of the 28-bit sum bounds the left shift so that the exponent
-  // stays >= 1 (none for exp >= 28).
+  // stays >= 1 (none for exp >= 28).  The sticky bit is the OR of the
+  // bits {y, 00} loses, set when y's lowest one sits below the shift:
+  // shift > s2_ylim (sticky_limit, from c1a), one short carry chain
+  // beside the shifter instead of an OR behind each of its levels.
   // ---------------------------------------------------------------------
-  wire [25:0] y_sh;
-  wire        y_st;
-  fp_shr_sticky #(.WIDTH(26)) u_align (
-    .v_i      ({s2_yman, 2'b00}),
-    .amt_i    (s2_shift),
-    .sticky_i (1'b0),
-    .v_o      (y_sh),
-    .sticky_o (y_st)
-  );
+  wire [25:0] y_sh = {s2_yman, 2'b00} >> s2_shift;
+  wire        y_st = s2_shift > s2_ylim;
   wire [26:0] c2_x       = {s2_xman, 3'b000};
   wire [26:0] c2_y       = {y_sh, y_st};
   wire [27:0] c2_stopper = 28'h800_0000 >> s2_exp;

@@ -1,6 +1,6 @@
 // fp_shr_sticky.v -- logical right shift of a word by 0 to 31 places that
-// keeps the OR of the bits shifted out (combinational), for the alignment
-// and denormalisation shifts of the FP cores.
+// keeps the OR of the bits shifted out (combinational), for the
+// multiplier's denormalisation shift (fp_mul).
 //
 // Parameters:
 //   WIDTH  bits of the word (>= 1)
