@@ -192,7 +192,7 @@ module fp3_scheduler #(
   // ---- shared state --------------------------------------------------------
   reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
-  reg [NC-1:0] ghigh_q;             // issue arbiter: contexts of first priority
+  reg [2*NC-1:0] ipos_q;            // issue arbiter: where its round starts (one-hot)
   reg [2*NC-1:0] fpos_q;            // fetch arbiter: where its round starts (one-hot)
   reg          fvalid_q;            // a fetched word arrives (FETCH_STAGE: two cycles later)
   reg [CW-1:0] fctx_q;              // ... for this context
@@ -532,30 +532,20 @@ module fp3_scheduler #(
 `undef FP3_FREED
 
   // ---- round-robin pick: the first requester after the last granted -------
-  // The contexts after the last granted one are kept as a mask (a register,
-  // `high`), and the pick is the lowest set bit of x = {req, req & high}:
-  // the first requester of first priority, else the first requester.  With
-  // d = x - 1 (an addition: the FPGA's carry chain, not a chain of LUTs),
-  // the lowest set bit is x & ~d, and the bits above it are ~(x ^ d), which
-  // give the next mask (the bits above the granted context) without a
-  // second chain.  The grant is one-hot.  An empty mask (the last grant
-  // went to the last context) gives the first requester from context 0 on.
+  // Both arbiters (issue and fetch) search x = {req, req}, the requests
+  // twice, from a one-hot position register: bit g + 1 of x after a grant
+  // to context g (bit NC, the second copy's first, after the last
+  // context).  d = x - pos (the FPGA's carry chain, with no logic in front
+  // of it) borrows from x's first set bit at or after pos, so x & ~d keeps
+  // that bit and no other below it: the first requester after the last
+  // granted, else the first requester from context 0 on.  rr_pick ORs the
+  // two copies into the one-hot grant.
   function [NC-1:0] rr_pick;    // one-hot; zero if x is
     input [2*NC-1:0] x, d;
     reg   [2*NC-1:0] lo;
     begin
       lo      = x & ~d;
       rr_pick = lo[NC-1:0] | lo[2*NC-1:NC];
-    end
-  endfunction
-
-  function [NC-1:0] rr_high;    // the contexts after the one granted
-    input [2*NC-1:0] x, d;
-    input            hit;       // a requester of first priority was granted
-    reg   [2*NC-1:0] above;
-    begin
-      above   = ~(x ^ d);
-      rr_high = hit ? above[NC-1:0] : above[2*NC-1:NC];
     end
   endfunction
 
@@ -580,15 +570,15 @@ module fp3_scheduler #(
   // ---- issue step ----------------------------------------------------------
   // (A context granted in the previous cycle has its ready bit cleared:
   // it belonged to the instruction that left.)
-  // The candidates and those of first priority are both registers
-  // (ready_q, rh_q = ready_q & ghigh_q), so the pick starts at flip-flops.
+  // The candidates (ready_q) and the round's start (ipos_q) are registers,
+  // and the carry chain subtracts one from the other, so the pick starts at
+  // flip-flops with no LUT before the chain.  (The last granted context is
+  // no candidate: ready_q leaves it out.)
   wire [NC-1:0]   cand  = ready_q;   // (the ready step counts only active contexts)
-  reg  [NC-1:0]   rh_q;
-  wire [2*NC-1:0] gx    = {cand, rh_q};
-  wire [2*NC-1:0] gd    = gx - {{(2*NC-1){1'b0}}, 1'b1};
+  wire [2*NC-1:0] gx    = {cand, cand};
+  wire [2*NC-1:0] gd    = gx - ipos_q;
   assign gone = rr_pick(gx, gd);    // the head leaves its queue
   wire          grant = |cand;
-  wire [NC-1:0] ghigh_d = grant ? rr_high(gx, gd, |rh_q) : ghigh_q;
   wire [CW-1:0] g     = encode(gone);
   // The granted head's fields, picked from the heads' fields (selected by
   // the head pointers beside the arbiter, from registers only) by the
@@ -790,16 +780,13 @@ module fp3_scheduler #(
       end
     end
   endgenerate
-  // The fetch arbiter: round robin, as the issue arbiter's pick (rr_pick),
-  // but with no logic in front of the carry chain, and the last grant
-  // (fg_q, which may not fetch) only behind it.  The round starts after
-  // the last grant g: fpos_q is bit g + 1 of x = {mf_q, mf_q} (bit NC,
-  // the second copy's first, after the last context).  d = x - fpos_q
-  // borrows from x's first set bit at or after fpos_q, which is the grant
-  // (x & ~d, rr_pick): a context after g, else the first context with a
-  // request.  Only the latter can be g itself, when no other context
-  // requests (none is after g, and none before g, or it would be the
-  // first): so masking g after the pick leaves no grant, as it should.
+  // The fetch arbiter: round robin (rr_pick, from fpos_q), with the last
+  // grant (fg_q, which may not fetch) masked only behind the carry chain.
+  // The pick from {mf_q, mf_q} is a context after the last grant g, else
+  // the first context with a request.  Only the latter can be g itself,
+  // when no other context requests (none is after g, and none before g,
+  // or it would be the first): so masking g after the pick leaves no
+  // grant, as it should.
   wire          fetch = (|(mf_q & ~fg_q)) && running_o;
   wire [2*NC-1:0] fx  = {mf_q, mf_q};
   wire [2*NC-1:0] fd  = fx - fpos_q;
@@ -1005,8 +992,7 @@ module fp3_scheduler #(
       infl_q   <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       lull_q   <= 8'd0;
-      ghigh_q  <= {NC{1'b1}};
-      rh_q     <= {NC{1'b0}};
+      ipos_q   <= {{(2*NC-1){1'b0}}, 1'b1};
       fpos_q   <= {{(2*NC-1){1'b0}}, 1'b1};
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
@@ -1026,9 +1012,7 @@ module fp3_scheduler #(
         if (arriving[k] && act[k]) fpc_q[k] <= a_next;
         if (br_i[k] && br_taken_i) fpc_q[k] <= br_target_i;
       end
-      ghigh_q <= ghigh_d;
-      // (ghigh_d has the contexts strictly above a granted one: not it.)
-      rh_q    <= ready_d & ghigh_d;
+      if (grant) ipos_q <= {{(NC-1){1'b0}}, gone, 1'b0};
 
       // The word read now arrives next cycle (FETCH_STAGE: the PC is
       // read in the next cycle, the word arrives two cycles after that).
