@@ -192,8 +192,6 @@ module fp3_scheduler #(
   // ---- shared state --------------------------------------------------------
   reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
-  reg [2*NC-1:0] ipos_q;            // issue arbiter: where its round starts (one-hot)
-  reg [2*NC-1:0] fpos_q;            // fetch arbiter: where its round starts (one-hot)
   reg          fvalid_q;            // a fetched word arrives (FETCH_STAGE: two cycles later)
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
@@ -531,24 +529,6 @@ module fp3_scheduler #(
   endgenerate
 `undef FP3_FREED
 
-  // ---- round-robin pick: the first requester after the last granted -------
-  // Both arbiters (issue and fetch) search x = {req, req}, the requests
-  // twice, from a one-hot position register: bit g + 1 of x after a grant
-  // to context g (bit NC, the second copy's first, after the last
-  // context).  d = x - pos (the FPGA's carry chain, with no logic in front
-  // of it) borrows from x's first set bit at or after pos, so x & ~d keeps
-  // that bit and no other below it: the first requester after the last
-  // granted, else the first requester from context 0 on.  rr_pick ORs the
-  // two copies into the one-hot grant.
-  function [NC-1:0] rr_pick;    // one-hot; zero if x is
-    input [2*NC-1:0] x, d;
-    reg   [2*NC-1:0] lo;
-    begin
-      lo      = x & ~d;
-      rr_pick = lo[NC-1:0] | lo[2*NC-1:NC];
-    end
-  endfunction
-
   function [CW-1:0] encode;     // index of a one-hot x (0 if none)
     input [NC-1:0] x;
     integer p;
@@ -570,15 +550,19 @@ module fp3_scheduler #(
   // ---- issue step ----------------------------------------------------------
   // (A context granted in the previous cycle has its ready bit cleared:
   // it belonged to the instruction that left.)
-  // The candidates (ready_q) and the round's start (ipos_q) are registers,
-  // and the carry chain subtracts one from the other, so the pick starts at
-  // flip-flops with no LUT before the chain.  (The last granted context is
-  // no candidate: ready_q leaves it out.)
+  // Round robin among the candidates (ready_q, a register: the pick
+  // starts at flip-flops; the last granted context is no candidate, ready_q
+  // leaves it out).
   wire [NC-1:0]   cand  = ready_q;   // (the ready step counts only active contexts)
-  wire [2*NC-1:0] gx    = {cand, cand};
-  wire [2*NC-1:0] gd    = gx - ipos_q;
-  assign gone = rr_pick(gx, gd);    // the head leaves its queue
   wire          grant = |cand;
+  fp3_rr_arbiter #(.N(NC)) u_issue_arb (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .req_i   (cand),
+    .pick_o  (gone),                 // the head leaves its queue
+    .take_i  (grant),
+    .taken_i (gone)
+  );
   wire [CW-1:0] g     = encode(gone);
   // The granted head's fields, picked from the heads' fields (selected by
   // the head pointers beside the arbiter, from registers only) by the
@@ -780,7 +764,7 @@ module fp3_scheduler #(
       end
     end
   endgenerate
-  // The fetch arbiter: round robin (rr_pick, from fpos_q), with the last
+  // The fetch arbiter: round robin (fp3_rr_arbiter), with the last
   // grant (fg_q, which may not fetch) masked only behind the carry chain.
   // The pick from {mf_q, mf_q} is a context after the last grant g, else
   // the first context with a request.  Only the latter can be g itself,
@@ -788,9 +772,16 @@ module fp3_scheduler #(
   // or it would be the first): so masking g after the pick leaves no
   // grant, as it should.
   wire          fetch = (|(mf_q & ~fg_q)) && running_o;
-  wire [2*NC-1:0] fx  = {mf_q, mf_q};
-  wire [2*NC-1:0] fd  = fx - fpos_q;
-  wire [NC-1:0] fgnt  = rr_pick(fx, fd) & ~fg_q;
+  wire [NC-1:0] fpick, fgnt;
+  fp3_rr_arbiter #(.N(NC)) u_fetch_arb (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .req_i   (mf_q),
+    .pick_o  (fpick),
+    .take_i  (fetch),
+    .taken_i (fgnt)
+  );
+  assign fgnt = fpick & ~fg_q;
   fp_pipe #(.WIDTH(NC), .DEPTH(FETCH_STAGE)) u_fgrant (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
@@ -992,8 +983,6 @@ module fp3_scheduler #(
       infl_q   <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       lull_q   <= 8'd0;
-      ipos_q   <= {{(2*NC-1){1'b0}}, 1'b1};
-      fpos_q   <= {{(2*NC-1){1'b0}}, 1'b1};
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
       ready_q <= ready_d & ~gone;
@@ -1012,7 +1001,6 @@ module fp3_scheduler #(
         if (arriving[k] && act[k]) fpc_q[k] <= a_next;
         if (br_i[k] && br_taken_i) fpc_q[k] <= br_target_i;
       end
-      if (grant) ipos_q <= {{(NC-1){1'b0}}, gone, 1'b0};
 
       // The word read now arrives next cycle (FETCH_STAGE: the PC is
       // read in the next cycle, the word arrives two cycles after that).
@@ -1021,7 +1009,6 @@ module fp3_scheduler #(
       fpcq_q   <= fpc_sel;
       fg_q     <= fgnt;   // (none without fetch: the arbiter's; no synchronous reset from fetch)
       infl_q   <= infl_n;
-      if (fetch) fpos_q <= {{(NC-1){1'b0}}, fgnt, 1'b0};
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
       // control), none before the run's first cycle.
