@@ -548,21 +548,33 @@ module fp3_scheduler #(
   endfunction
 
   // ---- issue step ----------------------------------------------------------
-  // (A context granted in the previous cycle has its ready bit cleared:
-  // it belonged to the instruction that left.)
-  // Round robin among the candidates (ready_q, a register: the pick
-  // starts at flip-flops; the last granted context is no candidate, ready_q
-  // leaves it out).
-  wire [NC-1:0]   cand  = ready_q;   // (the ready step counts only active contexts)
+  // Round robin (fp3_rr_arbiter) among the ready heads (ready_q, a
+  // register: the pick starts at flip-flops).  The context granted in the
+  // last cycle is no candidate: its ready bit belonged to the instruction
+  // that left.  It is masked behind the carry chain (gl_q, a copy of the
+  // last grant for this mask), as in the fetch arbiter, so that ready_q's
+  // next state does not wait for the grant: the pick starts after the
+  // last grant, so it is that context only when no other is ready, and
+  // masking it then leaves no grant, as it should (grant, the candidates
+  // decided from registers alone, agrees).
+  wire [NC-1:0] gl_q;
+  fp3_keep #(.W(NC)) u_gone_copy (
+    .clk_i (clk_i),
+    .d_i   (gone & {NC{running_o}}),
+    .q_o   (gl_q)
+  );
+  wire [NC-1:0] cand  = ready_q & ~gl_q;   // (the ready step counts only active contexts)
   wire          grant = |cand;
+  wire [NC-1:0] ipick;
   fp3_rr_arbiter #(.N(NC)) u_issue_arb (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
-    .req_i   (cand),
-    .pick_o  (gone),                 // the head leaves its queue
+    .req_i   (ready_q),
+    .pick_o  (ipick),
     .take_i  (grant),
     .taken_i (gone)
   );
+  assign gone = ipick & ~gl_q;        // the head leaves its queue
   wire [CW-1:0] g     = encode(gone);
   // The granted head's fields, picked from the heads' fields (selected by
   // the head pointers beside the arbiter, from registers only) by the
@@ -985,7 +997,7 @@ module fp3_scheduler #(
       lull_q   <= 8'd0;
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
-      ready_q <= ready_d & ~gone;
+      ready_q <= ready_d;
       fr_q    <= wslot;
       for (k = 0; k < 2 * NC; k = k + 1) s_q[k] <= s_d[k*3 +: 3];
 
