@@ -2,12 +2,14 @@
 // (tests/test_rr_arbiter.sh): random requests for +cycles=C cycles
 // (default 20000) from +seed=S (default 1), the pick compared every cycle
 // with a reference written differently (a loop from the requester after
-// the last grant taken, wrapping around), in the scheduler's two uses:
-//   issue  the pick is taken whenever there is one (take = |req);
-//   fetch  the last grant taken is masked behind the pick (taken = pick &
-//          ~last) and taken if any is left; the scheduler's claim that
-//          this is taken exactly when a requester other than the last
-//          grant asks (fp3_scheduler, fetch arbiter) is checked too.
+// the last grant taken, wrapping around), in two uses, a thousand cycles
+// each in turn:
+//   plain   the pick is taken whenever there is one (take = |req);
+//   masked  the grant taken in the last cycle is masked behind the
+//           pick (taken = pick & ~last) and taken if any is left: the
+//           scheduler's issue and fetch arbiters.  Their claim that this
+//           takes a grant exactly when a requester other than the last
+//           grant asks (fp3_scheduler: grant, fetch) is checked too.
 // A random reset now and then starts the round at requester 0 again.
 // Prints "PASS: tb_rr_arbiter N=... " or "FAIL: ..." lines and finishes.
 `default_nettype none
@@ -17,10 +19,10 @@ module tb_rr_arbiter;
   reg          clk = 1'b0;
   reg          rst = 1'b1;
   reg  [N-1:0] req = {N{1'b0}};
-  reg  [N-1:0] last = {N{1'b0}};   // the last grant taken (fetch use)
-  reg          fetch_use = 1'b0;
+  reg  [N-1:0] last = {N{1'b0}};   // the grant taken in the last cycle (masked use)
+  reg          masked = 1'b0;
   wire [N-1:0] pick;
-  wire [N-1:0] taken = fetch_use ? pick & ~last : pick;
+  wire [N-1:0] taken = masked ? pick & ~last : pick;
   wire         take  = |taken;
 
   fp3_rr_arbiter #(.N(N)) dut (
@@ -48,7 +50,7 @@ module tb_rr_arbiter;
       // New inputs after the edge: dense requests mostly, some sparse.
       req = $random(seed);
       if (($random(seed) & 3) == 0) req = req & $random(seed);
-      fetch_use = (cyc / 1000) % 2 == 1;
+      masked = (cyc / 1000) % 2 == 1;
       #1;
       // The reference pick: the first requester after ref_last.
       want = {N{1'b0}};
@@ -65,16 +67,16 @@ module tb_rr_arbiter;
           $display("FAIL: tb_rr_arbiter N=%0d cycle %0d: requests %b, last grant %0d: pick %b, want %b",
                    N, cyc, req, ref_last, pick, want);
       end
-      if (fetch_use && take !== |(req & ~last)) begin
+      if (masked && take !== |(req & ~last)) begin
         errors = errors + 1;
         if (errors <= 10)
-          $display("FAIL: tb_rr_arbiter N=%0d cycle %0d: fetch use takes %b with requests %b, last %b",
+          $display("FAIL: tb_rr_arbiter N=%0d cycle %0d: masked use takes %b with requests %b, last %b",
                    N, cyc, take, req, last);
       end
       @(posedge clk);
+      last = taken;                // zero after a cycle without a grant
       if (take) begin
         picks = picks + 1;
-        last  = taken;
         for (k = 0; k < N; k = k + 1) if (taken[k]) ref_last = k;
       end
       // A reset now and then: the round starts at requester 0 again.

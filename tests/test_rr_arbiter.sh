@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_rr_arbiter.sh -- fp3_rr_arbiter (the scheduler's issue and fetch
 # arbiters) against a reference round robin: sim/tb_rr_arbiter.v under
-# Icarus Verilog, random requests in both uses, for 1, 2, 3, 8 and 16
+# Icarus Verilog, random requests, the last grant masked or not, for 1, 2, 3, 8 and 16
 # requesters (the processor is built with 1, 3 and 8 contexts; 16 for the
 # throughput benchmark), each with its own seed.  The program's other
 # tests see the arbiters only through cycle counts and a loose fairness
