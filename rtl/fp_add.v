@@ -91,21 +91,26 @@ module fp_add #(
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
 
-  // The sticky limit of a significand m for the alignment shift (c2a):
-  // the position of m's lowest one in {m, 00} (its trailing zeros + 2),
-  // or 31 for m = 0, so that a right shift of {m, 00} by s (0 to 31)
-  // drops a one exactly when s > the limit.  The lowest one is m & ~(m -
-  // 1) (a carry chain), encoded by ORs.
-  function [4:0] sticky_limit(input [23:0] m);
-    reg [24:0] d;
-    reg [23:0] low;
+  // The sticky limit of a significand m = {norm, f} for the alignment
+  // shift (c2a): the position of m's lowest one in {m, 00} (its trailing
+  // zeros + 2), or 31 for m = 0, so that a right shift of {m, 00} by s (0
+  // to 31) drops a one exactly when s > the limit.  The lowest one of the
+  // fraction f is f & ~(f - 1) (a carry chain from the operand register,
+  // no logic in front of it), encoded by ORs; for f = 0 it is the hidden
+  // bit (25) if m is normal, else m = 0 (31); so is a subnormal read as
+  // zero (daz: FTZ).
+  function [4:0] sticky_limit(input [22:0] f, input norm, input daz);
+    reg [23:0] d;
+    reg [22:0] low;
+    reg [4:0]  enc;
     integer    k;
     begin
-      d   = {1'b0, m} - 25'd1;        // d[24]: m = 0 (the borrow)
-      low = m & ~d[23:0];
-      sticky_limit = {5{d[24]}};
-      for (k = 0; k < 24; k = k + 1)
-        sticky_limit = sticky_limit | ({5{low[k]}} & (k[4:0] + 5'd2));
+      d   = {1'b0, f} - 24'd1;        // d[23]: f = 0 (the borrow)
+      low = f & ~d[22:0];
+      enc = 5'd0;
+      for (k = 0; k < 23; k = k + 1)
+        enc = enc | ({5{low[k]}} & (k[4:0] + 5'd2));
+      sticky_limit = daz ? 5'd31 : !d[23] ? enc : norm ? 5'd25 : 5'd31;
     end
   endfunction
 
@@ -208,8 +213,8 @@ module fp_add #(
   wire [23:0] c1_aman  = {a_norm, a_mag[22:0]};
   wire [23:0] c1_bman  = {b_norm, b_mag[22:0]};
   // For the alignment's sticky bit (c2a): each significand's lowest one.
-  wire [4:0]  c1_alim  = sticky_limit(c1_aman);
-  wire [4:0]  c1_blim  = sticky_limit(c1_bman);
+  wire [4:0]  c1_alim  = sticky_limit(a_in[22:0], a_norm, (FTZ != 0) && (a_exp == 8'd0));
+  wire [4:0]  c1_blim  = sticky_limit(b_in[22:0], b_norm, (FTZ != 0) && (b_exp == 8'd0));
   wire        c1_swap  = (b_mag > a_mag);
   wire        c1_sub   = a_sign ^ b_sign;
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
