@@ -23,9 +23,10 @@
 //              c1a = unpack, special cases, magnitude compare, each
 //                    significand's lowest one (for c2a's sticky bit);
 //              c1b = swap (x = the operand of larger magnitude), exponent
-//                    difference (alignment shift, saturated);
-//              c2a = alignment shift of y, its sticky bit (the lowest
-//                    one of y, found in c1a, against the shift), the
+//                    difference (alignment shift, saturated), the
+//                    position of y's lowest one (its sticky limit);
+//              c2a = alignment shift of y, its sticky bit (the sticky
+//                    limit against the shift), the
 //                    normalisation limit from the exponent;
 //              c2b = add/subtract (one carry chain), ORed with the
 //                    normalisation limit for c3a;
@@ -91,26 +92,27 @@ module fp_add #(
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
 
-  // The sticky limit of a significand m = {norm, f} for the alignment
-  // shift (c2a): the position of m's lowest one in {m, 00} (its trailing
-  // zeros + 2), or 31 for m = 0, so that a right shift of {m, 00} by s (0
-  // to 31) drops a one exactly when s > the limit.  The lowest one of the
-  // fraction f is f & ~(f - 1) (a carry chain from the operand register,
-  // no logic in front of it), encoded by ORs; for f = 0 it is the hidden
-  // bit (25) if m is normal, else m = 0 (31); so is a subnormal read as
-  // zero (daz: FTZ).
-  function [4:0] sticky_limit(input [22:0] f, input norm, input daz);
+  // For the alignment's sticky bit (c2a), in two steps.  c1a: the lowest
+  // one of a significand m = {norm, f}, one-hot (zero for m = 0): that of
+  // the fraction f, f & ~(f - 1) (a carry chain from the operand register,
+  // no logic in front of it), else the hidden bit; none for a subnormal
+  // read as zero (daz: FTZ).
+  function [23:0] lowest_one(input [22:0] f, input norm, input daz);
     reg [23:0] d;
-    reg [22:0] low;
-    reg [4:0]  enc;
-    integer    k;
     begin
-      d   = {1'b0, f} - 24'd1;        // d[23]: f = 0 (the borrow)
-      low = f & ~d[22:0];
-      enc = 5'd0;
-      for (k = 0; k < 23; k = k + 1)
-        enc = enc | ({5{low[k]}} & (k[4:0] + 5'd2));
-      sticky_limit = daz ? 5'd31 : !d[23] ? enc : norm ? 5'd25 : 5'd31;
+      d          = {1'b0, f} - 24'd1;   // d[23]: f = 0 (the borrow)
+      lowest_one = {d[23] & norm, f & ~d[22:0]} & {24{~daz}};
+    end
+  endfunction
+  // c1b: the sticky limit, the position of that one in {m, 00} (m's
+  // trailing zeros + 2), 31 for m = 0, so that a right shift of {m, 00} by
+  // s (0 to 31) drops a one exactly when s > the limit.  Encoded by ORs.
+  function [4:0] sticky_limit(input [23:0] low);
+    integer k;
+    begin
+      sticky_limit = {5{~|low}};
+      for (k = 0; k < 24; k = k + 1)
+        sticky_limit = sticky_limit | ({5{low[k]}} & (k[4:0] + 5'd2));
     end
   endfunction
 
@@ -213,8 +215,8 @@ module fp_add #(
   wire [23:0] c1_aman  = {a_norm, a_mag[22:0]};
   wire [23:0] c1_bman  = {b_norm, b_mag[22:0]};
   // For the alignment's sticky bit (c2a): each significand's lowest one.
-  wire [4:0]  c1_alim  = sticky_limit(a_in[22:0], a_norm, (FTZ != 0) && (a_exp == 8'd0));
-  wire [4:0]  c1_blim  = sticky_limit(b_in[22:0], b_norm, (FTZ != 0) && (b_exp == 8'd0));
+  wire [23:0] c1_alow  = lowest_one(a_in[22:0], a_norm, (FTZ != 0) && (a_exp == 8'd0));
+  wire [23:0] c1_blow  = lowest_one(b_in[22:0], b_norm, (FTZ != 0) && (b_exp == 8'd0));
   wire        c1_swap  = (b_mag > a_mag);
   wire        c1_sub   = a_sign ^ b_sign;
   // Exact zero result: +0 for opposite signs (RNE, RTZ), else that sign.
@@ -225,7 +227,7 @@ module fp_add #(
   localparam integer WC = 1 + 1 + 1 + 1 + 1 + 1; // spec, spa, spb, sdn, sign, spec_nv
   localparam integer WS = 1 + 32 + 1;            // spec, spec_y, spec_nv
 
-  localparam integer W1 = WC + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24 + 5 + 5;
+  localparam integer W1 = WC + 1 + 1 + 1 + 1 + 1 + 8 + 8 + 24 + 24 + 24 + 24;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_C1B] ? 1 : 0)) u_pipe1 (
@@ -233,7 +235,7 @@ module fp_add #(
     .rst_i   (rst_i),
     .valid_i (s0_valid),
     .data_i  ({c1_spec, c1_spa, c1_spb, c1_sdn, c1_ssign, c1_spec_nv, a_sign, b_sign, c1_swap,
-               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman, c1_alim, c1_blim}),
+               c1_sub, c1_zsign, a_e, b_e, c1_aman, c1_bman, c1_alow, c1_blow}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
@@ -242,10 +244,10 @@ module fp_add #(
   wire          s1_asign, s1_bsign, s1_swap, s1_sub, s1_zsign;
   wire [7:0]    s1_ae, s1_be;
   wire [23:0]   s1_aman, s1_bman;
-  wire [4:0]    s1_alim, s1_blim;
+  wire [23:0]   s1_alow, s1_blow;
   assign {s1_sp, s1_spa, s1_spb, s1_sdn, s1_ssign, s1_snv, s1_asign, s1_bsign, s1_swap,
           s1_sub, s1_zsign, s1_ae,
-          s1_be, s1_aman, s1_bman, s1_alim, s1_blim} = s1_data;
+          s1_be, s1_aman, s1_bman, s1_alow, s1_blow} = s1_data;
 
   // ---------------------------------------------------------------------
   // c1b: swap: x is the operand of larger magnitude, y the other one; the
@@ -268,7 +270,7 @@ module fp_add #(
   wire [23:0] c1b_xman  = s1_swap ? s1_bman  : s1_aman;
   wire [23:0] c1b_yman  = s1_swap ? s1_aman  : s1_bman;
   wire [4:0]  c1b_shift = s1_swap ? sh_ba    : sh_ab;
-  wire [4:0]  c1b_ylim  = s1_swap ? s1_alim  : s1_blim;
+  wire [4:0]  c1b_ylim  = sticky_limit(s1_swap ? s1_alow : s1_blow);
 
   localparam integer W2 = WS + 1 + 1 + 1 + 8 + 24 + 24 + 5 + 5;
   wire          s2_valid;
@@ -297,7 +299,7 @@ module fp_add #(
   // 27 - exp of the 28-bit sum bounds the left shift so that the exponent
   // stays >= 1 (none for exp >= 28).  The sticky bit is the OR of the
   // bits {y, 00} loses, set when y's lowest one sits below the shift:
-  // shift > s2_ylim (sticky_limit, from c1a), one short carry chain
+  // shift > s2_ylim (sticky_limit, from c1b), one short carry chain
   // beside the shifter instead of an OR behind each of its levels.
   // ---------------------------------------------------------------------
   wire [25:0] y_sh = {s2_yman, 2'b00} >> s2_shift;
