@@ -904,6 +904,70 @@ static void test_host_map_reads(void **state) {
   }
 }
 
+/* START in the cycle right after the last program write, straight at the
+ * host port (which takes a write every cycle; AXI4-Lite every other one):
+ * the run's first fetch must see that word.  The memory first holds halts;
+ * the ship program is then written from its last word to its first (the
+ * word fetched first is written last), START follows at once, and the
+ * final registers must be the ISS's (a stale first word halts the run at
+ * once).  In the default build and the build for clock rate (nc3, with
+ * FMAX_PIPE: its program writes land two edges after the host's). */
+static void test_start_after_program(void **state) {
+  (void)state;
+  fp3_image img, halts;
+  char *errors = NULL;
+  fp3_image_init(&img);
+  assert_int_equal(fp3_asm_file("programs/ship_rk4.s", &img, &errors), 0);
+  assemble("halt\n", &halts);
+  const uint64_t halt = halts.words[0];
+  const ship_case *sc = &ship_cases[0];
+  float values[FP3_IN_COUNT] = {sc->T, sc->C, sc->m, fp3_ship_minv(sc->m), sc->h, sc->v0, sc->s0};
+  static uint32_t init[MAX_REGS];
+  memset(init, 0, sizeof init);
+  for (int p = 0; p < FP3_IN_COUNT; p++)
+    if (img.in_reg[p] >= 0) init[img.in_reg[p]] = fpref_bits(values[p]);
+  const uint32_t steps = 3;
+  static capture ref;
+  run_on(iss, &img, init, MAX_REGS, steps, &ref);
+  const struct { const fp3_model_ops *ops; unsigned read; } cfg[] = {
+      {&fp3_model_rne, 1}, {&fp3_model_nc3, 4}};
+  for (size_t i = 0; i < sizeof cfg / sizeof cfg[0]; i++) {
+    const fp3_model_ops *ops = cfg[i].ops;
+    fp3_model *m = ops->create(NULL);
+    assert_non_null(m);
+    fp3_model_in in = {1, 0, 0};
+#define HOST_WRITE(a, v) (in.addr = (uint16_t)(a), in.wdata = (uint32_t)(v), ops->cycle(m, &in, NULL))
+    for (size_t k = 0; k < img.n; k++) {
+      HOST_WRITE(FP3_HR_IMEM_BASE + 2 * k, halt);
+      HOST_WRITE(FP3_HR_IMEM_BASE + 2 * k + 1, halt >> 32);
+    }
+    for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++) HOST_WRITE(FP3_HR_REG_BASE + r, init[r]);
+    HOST_WRITE(FP3_HR_STEPS, steps);
+    for (size_t k = img.n; k-- > 0;) {
+      HOST_WRITE(FP3_HR_IMEM_BASE + 2 * k, img.words[k]);
+      HOST_WRITE(FP3_HR_IMEM_BASE + 2 * k + 1, img.words[k] >> 32);
+    }
+    HOST_WRITE(FP3_HR_CTRL, FP3_CTRL_START);
+#undef HOST_WRITE
+    fp3_model_out out = {0};
+    unsigned long cycles = 0;
+    do {
+      ops->cycle(m, NULL, &out);
+      if (++cycles > 100000ul) fail_msg("config %zu: the run does not end", i);
+    } while (!out.done);
+    uint32_t status = model_read(ops, m, cfg[i].read, FP3_HR_STATUS);
+    assert_int_equal((status >> FP3_STATUS_ERROR_LSB) & 0xF, FP3_ERR_NONE);
+    assert_int_equal(model_read(ops, m, cfg[i].read, FP3_HR_STEPS_DONE), steps);
+    for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++) {
+      uint32_t v = model_read(ops, m, cfg[i].read, FP3_HR_REG_BASE + r);
+      if (v != ref.final[r])
+        fail_msg("config %zu: r%u = 0x%08X, the ISS 0x%08X", i, r, v, ref.final[r]);
+    }
+    ops->destroy(m);
+  }
+  capture_free(&ref);
+}
+
 static void test_bad_contexts(void **state) {
   (void)state;
   fp3_image img;
@@ -1000,6 +1064,7 @@ int main(void) {
       cmocka_unit_test(test_bad_contexts),
       cmocka_unit_test(test_errors_every_context),
       cmocka_unit_test(test_host_map_reads),
+      cmocka_unit_test(test_start_after_program),
   };
   return cmocka_run_group_tests(tests, setup, teardown);
 }
