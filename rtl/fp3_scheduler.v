@@ -751,7 +751,7 @@ module fp3_scheduler #(
   // below).
   reg  [NC-1:0] fg_q;       // granted a fetch in the last cycle
   reg  [NC-1:0] infl_q;     // granted before that, the word not yet in its queue
-  reg  [NC-1:0] mf_q;       // may fetch, but for fg_q
+  reg  [NC-1:0] mf_q;       // may fetch, but for fg_q, fend_q and bwait_q
   wire [2*NC-1:0] v_k, v_g; // the slots' valid bits, next: head kept / granted now
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
@@ -770,7 +770,7 @@ module fp3_scheduler #(
     for (c = 0; c < NC; c = c + 1) begin : g_fill
       assign holds[c] = v_q[2*c] || v_q[2*c+1];
       for (e = 0; e < 2; e = e + 1) begin : g_free
-        assign wslot[2*c+e] = wsel_q[2*c+e] && act[c] && running_o;
+        assign wslot[2*c+e] = wsel_q[2*c+e] && act[c];
         assign v_k[2*c+e]   = wslot[2*c+e] || v_q[2*c+e];
         assign v_g[2*c+e]   = wslot[2*c+e] || (v_q[2*c+e] && hp_q[c] != e[0]);
       end
@@ -778,17 +778,18 @@ module fp3_scheduler #(
   endgenerate
   // The fetch arbiter: round robin (fp3_rr_arbiter), with the last
   // grant (fg_q, which may not fetch) masked only behind the carry chain.
-  // The pick from {mf_q, mf_q} is a context after the last grant g, else
+  // The pick from {freq, freq} is a context after the last grant g, else
   // the first context with a request.  Only the latter can be g itself,
   // when no other context requests (none is after g, and none before g,
   // or it would be the first): so masking g after the pick leaves no
   // grant, as it should.
-  wire          fetch = (|(mf_q & ~fg_q)) && running_o;
+  wire [NC-1:0] freq  = mf_q & ~fend_q & ~bwait_q;   // the fetch requests
+  wire          fetch = (|(freq & ~fg_q)) && running_o;
   wire [NC-1:0] fpick, fgnt;
   fp3_rr_arbiter #(.N(NC)) u_fetch_arb (
     .clk_i   (clk_i),
     .rst_i   (rst_i || !running_o),
-    .req_i   (mf_q),
+    .req_i   (freq),
     .pick_o  (fpick),
     .take_i  (fetch),
     .taken_i (fgnt)
@@ -931,10 +932,15 @@ module fp3_scheduler #(
   // has a register of its own, so that its requests start at flip-flops
   // placed beside it rather than at ones shared with the ready step, the
   // queues and the run control: mf_q, the contexts active in the next
-  // cycle (act) that may fetch as far as their own state goes (not past
-  // the memory's last word, not waiting on a beq; fend_d, bwait_d: the
-  // fetch step), with a free slot in the next cycle and no read in flight
-  // but the last grant's.  Both the queues' next state (v_q) and mf_q are
+  // cycle (act) with a free slot in the next cycle and no read in flight
+  // but the last grant's.  What else holds a context's fetch (past the
+  // memory's last word, waiting on a beq: fend_q, bwait_q, the fetch
+  // step) is its own register, joined to mf_q in front of the arbiter
+  // (freq), not decided in mf_q's cone: a resolved beq and an arriving
+  // word were in front of it (critical paths).  While stopped no context
+  // is active (a run ends with none, START starts them), so neither
+  // held_d nor the slots' write (wslot) is gated with RUNNING, a signal
+  // of the whole scheduler.  Both the queues' next state (v_q) and mf_q are
   // decided for either outcome of the issue step (v_k, v_g; mf_k, mf_g,
   // kept as nets in synthesis) and chosen by the grant (gone), so that
   // one LUT follows the issue arbiter.
@@ -947,12 +953,12 @@ module fp3_scheduler #(
   // flip-flops only, not the active contexts' and the fetch requests'
   // next state: the run's first cycle passes with no context active.
   wire          start_now = (FETCH_STAGE != 0 ? start_q && running_o : start_ok) && !rst_i;
-  wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : running_o ? act & ~illegal : act;
+  wire [NC-1:0] held_d    = rst_i ? {NC{1'b0}} : act & ~illegal;
   wire [NC-1:0] active_d  = start_now ? contexts_run_i : held_d;
   // The head stops its context if granted (stop_d).
   wire [NC-1:0] h_end     = (h_stop | h_ovf) & {NC{running_o && !rst_i}};
   wire [NC-1:0] stop_d    = gone & h_end;
-  wire [NC-1:0] fok_n     = start_now ? contexts_run_i : held_d & ~fend_d & ~bwait_d;
+  wire [NC-1:0] fok_n     = start_now ? contexts_run_i : held_d;
   wire [NC-1:0] mf_n;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_mf
