@@ -313,7 +313,8 @@ module fp3_axil #(
     .HAS_ADD      (HAS_ADD),
     .HAS_SUB      (HAS_SUB),
     .HAS_MUL      (HAS_MUL),
-    .FMAX_PIPE    (FMAX_PIPE)
+    .FMAX_PIPE    (FMAX_PIPE),
+    .CTX_CHECKED  (1)               // wr_ok: wd_ctx_q
   ) u_fp3 (
     .clk_i           (clk_i),
     .rst_i           (rst_i),

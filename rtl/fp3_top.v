@@ -58,6 +58,11 @@
 //                scheduler's grant and the issue, and three more
 //                operand-read stages: a LUT-RAM register file (see
 //                "Pipeline" above)
+//   CTX_CHECKED  0: a write to CTX of a number >= NUM_CONTEXTS is ignored
+//                here; 1: the host port's writer never makes one
+//                (fp3_axil refuses it with SLVERR, deciding it as the data
+//                arrive), so the 32-bit compare is left out: it was in
+//                front of CTX's enable, a critical path
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -70,7 +75,8 @@ module fp3_top #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
-  parameter integer FMAX_PIPE    = 0
+  parameter integer FMAX_PIPE    = 0,
+  parameter integer CTX_CHECKED  = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -177,7 +183,7 @@ module fp3_top #(
         contexts_bad_q <= host_wdata_i == 32'd0 || host_wdata_i > NUM_CONTEXTS;
         for (k = 0; k < NUM_CONTEXTS; k = k + 1) contexts_run_q[k] <= k < host_wdata_i;
       end
-      if (host_addr_i == HR_CTX && host_wdata_i < NUM_CONTEXTS)
+      if (host_addr_i == HR_CTX && (CTX_CHECKED != 0 || host_wdata_i < NUM_CONTEXTS))
                                       ctx_q      <= host_wdata_i[CW-1:0];
     end
     if (host_we_i && win_imem && !host_addr_i[0]) imem_lo_q <= host_wdata_i;
