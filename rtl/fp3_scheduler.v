@@ -360,7 +360,6 @@ module fp3_scheduler #(
   wire [2*NC*FW-1:0] fields;
   wire [NC*FW-1:0]   h_fields;  // ... of the heads
   wire [NC*FW-1:0]   l_fields;  // ... of the last heads
-  wire [2*NC-1:0]    srdy;  // the slot's word is ready (if it is the head)
   wire [2*NC*3-1:0]  s_d;   // the wait bits after this cycle ({rd, rb, ra})
   wire [NC*AW-1:0] fpcs;    // every context's fetch PC
   // A word's wait bits are found over three cycles.  In cycle a - 1 (the
@@ -381,6 +380,7 @@ module fp3_scheduler #(
   wire          iss_dst = PICK_STAGES != 0 && issue_o && issue_unit_o != UNIT_NONE;
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
+  wire [NC-1:0] gr_q;             // ... its copy for the ready step (below)
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
   // The arriving word's flags, a cycle ahead.  busy_i is the register
@@ -473,8 +473,15 @@ module fp3_scheduler #(
       assign pg_w[c] = pgv;
       assign pg_rd[c*IW +: IW] = rdg_q;
       // The fresh word's wait bits: flag not freed, or pending, or written
-      // by the head granted in its arrival cycle.
-      wire [2:0] sj = lk_q | pd_q | (hw_q & {3{gone_q[c]}});
+      // by the head granted in its arrival cycle (sj_g: if it was).
+      wire [2:0] sj_k = lk_q | pd_q;
+      wire [2:0] sj_g = sj_k | hw_q;
+      // Whether the head was granted in the last cycle (gr_q[c]) is the
+      // last choice, of the wait bits and of the head's readiness, each
+      // decided for both outcomes (s_k, s_g; rdy_k, rdy_g): one LUT
+      // follows it.  (gone_q in front of the wait bits, the readiness and the
+      // head select was a critical path.)
+      wire [1:0] srdy_k, srdy_g;   // the slots' words are ready, by outcome
       // The arriving word's fields among the announcements of the next
       // cycle (early_*_i now), for whichever of this context's slots it
       // is written into (fresh there in the next cycle: fr_q).
@@ -510,21 +517,28 @@ module fp3_scheduler #(
                    `FP3_FREED(early_valid_i, early_idx_i, {CTX, ra})};
         // The other slot, if it is the head and granted, writes its
         // destination: this word waits for it.  Compared in every cycle
-        // (by_q), taken in the next if the head was granted (gone_q: this
+        // (by_q), taken in the next if the head was granted (gr_q: this
         // slot is the head then), so that the grant drives no wait bit.
         reg  [2:0] by_q;
         always @(posedge clk_i)
           by_q <= {3{wrh && hp != e}} & {rd == rdh, rb == rdh, ra == rdh};
         // The wait bits, with this cycle's announcements taken off.
-        wire [2:0] s = fr_q[I] ? sj & ~fa_q : (s_q[I] | (by_q & {3{gone_q[c]}})) & ~fq_q;
-        assign srdy[I] = lgl && !(use_ra && s[0]) && !(use_rb && s[1]) && !(use_rd && s[2]);
-        assign s_d[I*3 +: 3] = s;
+        wire [2:0] s_k = fr_q[I] ? sj_k & ~fa_q : s_q[I] & ~fq_q;
+        wire [2:0] s_g = fr_q[I] ? sj_g & ~fa_q : (s_q[I] | by_q) & ~fq_q;
+        wire [2:0] u   = {use_rd, use_rb, use_ra};
+        assign srdy_k[e] = lgl && !(|(u & s_k));
+        assign srdy_g[e] = lgl && !(|(u & s_g));
+        assign s_d[I*3 +: 3] = gr_q[c] ? s_g : s_k;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
       // was granted).
       assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
       assign l_fields[c*FW +: FW] = hp ? fields[2*c*FW +: FW] : fields[(2*c+1)*FW +: FW];
-      assign ready_d[c] = act[c] && (hp ? v_q[2*c+1] && srdy[2*c+1] : v_q[2*c] && srdy[2*c]);
+      (* keep *) wire rdy_k;
+      (* keep *) wire rdy_g;
+      assign rdy_k = act[c] && (hp ? v_q[2*c+1] && srdy_k[1] : v_q[2*c] && srdy_k[0]);
+      assign rdy_g = act[c] && (hp ? v_q[2*c+1] && srdy_g[1] : v_q[2*c] && srdy_g[0]);
+      assign ready_d[c] = gr_q[c] ? rdy_g : rdy_k;
     end
   endgenerate
 `undef FP3_FREED
@@ -587,6 +601,13 @@ module fp3_scheduler #(
     gone_q  <= gone & {NC{running_o}};
     grant_q <= grant && running_o;
   end
+  // gone_q's copy for the ready step (the wait bits' and ready_q's last
+  // choice), kept: placed beside it, not with gone_q's other loads.
+  fp3_keep #(.W(NC)) u_gone_ready (
+    .clk_i (clk_i),
+    .d_i   (gone & {NC{running_o}}),
+    .q_o   (gr_q)
+  );
   // With PICK_STAGES = 2 the pick multiplexer takes the last grant from
   // copies of gone_q of its own, one for the immediate (32 bits) and one
   // for the other fields: each drives some 30 LUTs beside the heads'
