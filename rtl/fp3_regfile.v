@@ -67,7 +67,8 @@
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
 //     (no run in progress): the host's register read data is ra_data_o
 //     READ_STAGES cycles later.
-//   busy_o: every busy flag; idle_o: none set.
+//   busy_o: every busy flag; idle_o: none was set in the last cycle
+//     (registered: see idle_o below).
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
 //   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
 //     clears the register's busy flag.  A register announced in the cycle
@@ -379,7 +380,18 @@ module fp3_regfile #(
   endgenerate
 
   assign busy_o = busy_q;
-  assign idle_o = (busy_q == {ENTRIES{1'b0}});
+  // idle_o, a cycle late: the flags ORed in groups of 16 and registered
+  // (any_q), then joined.  (No flag set, one NOR of every flag from across
+  // the die in front of the scheduler's register, was a critical path.)
+  localparam integer GN = (ENTRIES + 15) / 16;
+  reg [GN-1:0] any_d, any_q;
+  integer ai;
+  always @(*) begin
+    any_d = {GN{1'b0}};
+    for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_q[ai];
+  end
+  always @(posedge clk_i) any_q <= rst_i ? {GN{1'b0}} : any_d;
+  assign idle_o = !(|any_q);
 
   // ---- LVT and busy flags, one register at a time --------------------------
   // This cycle's writes per port, one-hot over the registers.  With

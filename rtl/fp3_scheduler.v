@@ -133,7 +133,7 @@ module fp3_scheduler #(
   input  wire [3*(CW+IW)-1:0]         ahead_idx_i,
   input  wire [2:0]                   early_valid_i, // ... those of the next cycle
   input  wire [3*(CW+IW)-1:0]         early_idx_i,
-  input  wire                         idle_i,
+  input  wire                         idle_i,        // no busy flag in the last cycle
   // a beq issued two cycles ago, resolved: its context (one-hot; none if
   // no beq was) and outcome
   input  wire [NC-1:0]                br_i,
@@ -196,7 +196,9 @@ module fp3_scheduler #(
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
   reg [7:0]    lull_q;              // cycles without busy flag or issue, to DRAIN - 1, a cycle late
-  reg          idle_q, iss_q;       // idle_i and issue_o a cycle late
+  wire         idle_q = idle_i;     // no busy flag in the last cycle (registered
+                                    // in fp3_regfile)
+  reg          iss_q;               // issue_o a cycle late
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
@@ -934,8 +936,8 @@ module fp3_scheduler #(
         // or an issue: the last of them was cycle t - 1 (idle_q, iss_q),
         // the DRAIN - 1 before it are counted in lull_q, and cycle t - 1
         // was one of the run (not start_q).  So no flag is busy now
-        // either (idle_i is not needed): none was set in t - 1, as
-        // nothing issued.
+        // either (this cycle's flags are not needed): none was set in
+        // t - 1, as nothing issued.
         if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_q &&
             idle_q && !iss_q && lull_q == LULL8) begin
           running_o <= 1'b0;
@@ -1070,7 +1072,6 @@ module fp3_scheduler #(
   always @(posedge clk_i) begin
     ill_q   <= illegal & {NC{running_o}};
     stall_q <= running_o && !grant && |(act & holds);
-    idle_q  <= idle_i;
     iss_q   <= issue_o;
   end
 
