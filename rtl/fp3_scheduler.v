@@ -421,8 +421,25 @@ module fp3_scheduler #(
              flag1(v[2] && i[2*XW+IW +: CW] == x, i[2*XW +: IW]);
     end
   endfunction
+  // With FETCH_STAGE, nctx's copy for bq_q (bctx), kept: placed beside
+  // the flags' multiplexer and the announcements' compares it selects,
+  // not with nctx's other loads (nctx's route to them was a critical
+  // path).  nctx is fctx_q a cycle late (u_next), so is the copy.
+  wire [CW-1:0] bctx;
+  generate
+    if (FETCH_STAGE != 0) begin : g_bctx_copy
+      fp3_keep #(.W(CW)) u_bctx (
+        .clk_i (clk_i),
+        .d_i   (fctx_q),
+        .q_o   (bctx)
+      );
+      wire unused_nctx = &{1'b0, nctx};   // (bctx is its copy)
+    end else begin : g_bctx_now
+      assign bctx = nctx;
+    end
+  endgenerate
   always @(posedge clk_i)
-    bq_q <= (smask | (busy_i[nctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, nctx);
+    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, bctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
