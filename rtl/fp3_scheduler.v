@@ -359,6 +359,7 @@ module fp3_scheduler #(
   // Issue fields of every slot: {ra, rb, rd, unit, sub, li, immediate,
   // endi, beq}.
   localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
+  localparam [FW-1:0] IMM_BITS = {{(FW-34){1'b0}}, {32{1'b1}}, 2'b00};   // the immediate in a field word
   wire [2*NC*FW-1:0] fields;
   wire [NC*FW-1:0]   h_fields;  // ... of the heads
   wire [NC*FW-1:0]   l_fields;  // ... of the last heads
@@ -383,6 +384,7 @@ module fp3_scheduler #(
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
   wire [NC-1:0] gr_q;             // ... its copy for the ready step (below)
+  wire [NC-1:0] hpi_q;            // hp_q's copy for the immediate's pick (below)
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
   // The arriving word's flags, a cycle ahead.  busy_i is the register
@@ -552,7 +554,11 @@ module fp3_scheduler #(
       // The head's fields, and the last head's (hp_q has moved on if it
       // was granted).
       assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
-      assign l_fields[c*FW +: FW] = hp ? fields[2*c*FW +: FW] : fields[(2*c+1)*FW +: FW];
+      // (The immediate's bits by hpi_q, a copy of hp_q of their own.)
+      wire [FW-1:0] f_e0 = fields[2*c*FW +: FW];
+      wire [FW-1:0] f_e1 = fields[(2*c+1)*FW +: FW];
+      assign l_fields[c*FW +: FW] = (hp ? f_e0 : f_e1) & ~IMM_BITS |
+                                    (hpi_q[c] ? f_e0 : f_e1) & IMM_BITS;
       (* keep *) wire rdy_k;
       (* keep *) wire rdy_g;
       assign rdy_k = act[c] && (hp ? v_q[2*c+1] && srdy_k[1] : v_q[2*c] && srdy_k[0]);
@@ -620,6 +626,15 @@ module fp3_scheduler #(
     gone_q  <= gone & {NC{running_o}};
     grant_q <= grant && running_o;
   end
+  // hp_q's copy for the last heads' immediates (l_fields), the 32-bit
+  // half of the pick's multiplexer (its grant from gpi_q), kept: placed
+  // beside that multiplexer.  (hp_q, placed with its context's queue,
+  // across the die to the immediate's pick was a critical path.)
+  fp3_keep #(.W(NC)) u_hp_imm (
+    .clk_i (clk_i),
+    .d_i   ((rst_i || !running_o) ? {NC{1'b0}} : hp_q ^ gone),
+    .q_o   (hpi_q)
+  );
   // gone_q's copy for the ready step (the wait bits' and ready_q's last
   // choice), kept: placed beside it, not with gone_q's other loads.
   fp3_keep #(.W(NC)) u_gone_ready (
@@ -648,7 +663,6 @@ module fp3_scheduler #(
     gpi_q <= gone;
     gpf_q <= gone;
   end
-  localparam [FW-1:0] IMM_BITS = {{(FW-34){1'b0}}, {32{1'b1}}, 2'b00};   // g_imm in gf
   wire          two     = PICK_STAGES == 2;
   wire [NC-1:0] p_seli  = two ? gpi_q : gone;
   wire [NC-1:0] p_self  = two ? gpf_q : gone;
