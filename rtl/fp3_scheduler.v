@@ -801,11 +801,13 @@ module fp3_scheduler #(
   // flight.  The grant of the last cycle is a register (fg_q), so nothing
   // follows the arbiter's grant but flip-flops: the words in flight are
   // fg_q and those granted before it (infl_q), and the rest of the
-  // request is decided a cycle ahead (mf_q, with the active contexts,
+  // request is decided a cycle ahead (mfk_q, mfg_q, with the active contexts,
   // below).
   reg  [NC-1:0] fg_q;       // granted a fetch in the last cycle
   reg  [NC-1:0] infl_q;     // granted before that, the word not yet in its queue
-  reg  [NC-1:0] mf_q;       // may fetch, but for fg_q, fend_q and bwait_q
+  reg  [NC-1:0] mfk_q, mfg_q; // may fetch, but for fg_q, fend_q and bwait_q: if
+                            // the head was kept / granted in the last cycle
+  wire [NC-1:0] gf_q;       // ... which: the last grant (gone), a copy (below)
   wire [2*NC-1:0] v_k, v_g; // the slots' valid bits, next: head kept / granted now
   wire [NC-1:0] holds;      // ... at least one (the head)
   // An arriving word is written into a free slot: the head's if the queue
@@ -837,7 +839,7 @@ module fp3_scheduler #(
   // when no other context requests (none is after g, and none before g,
   // or it would be the first): so masking g after the pick leaves no
   // grant, as it should.
-  wire [NC-1:0] freq  = mf_q & ~fend_q & ~bwait_q;   // the fetch requests
+  wire [NC-1:0] freq  = (gf_q & mfg_q | ~gf_q & mfk_q) & ~fend_q & ~bwait_q;   // the requests
   wire          fetch = (|(freq & ~fg_q)) && running_o;
   wire [NC-1:0] fpick, fgnt;
   fp3_rr_arbiter #(.N(NC)) u_fetch_arb (
@@ -985,19 +987,22 @@ module fp3_scheduler #(
   // flip-flop, not the active contexts' next state.  The fetch arbiter
   // has a register of its own, so that its requests start at flip-flops
   // placed beside it rather than at ones shared with the ready step, the
-  // queues and the run control: mf_q, the contexts active in the next
-  // cycle (act) with a free slot in the next cycle and no read in flight
-  // but the last grant's.  What else holds a context's fetch (past the
+  // queues and the run control: mfk_q, mfg_q, the contexts active in the
+  // next cycle (act) with a free slot in the next cycle and no read in
+  // flight but the last grant's, one for either outcome of the issue step
+  // (mf_k, mf_g, kept as nets in synthesis), chosen in the next cycle in
+  // front of the arbiter (freq) by a copy of the grant (gf_q), so that no
+  // logic follows the issue arbiter here (its grant -> a fetch request
+  // was a critical path).  What else holds a context's fetch (past the
   // memory's last word, waiting on a beq: fend_q, bwait_q, the fetch
-  // step) is its own register, joined to mf_q in front of the arbiter
-  // (freq), not decided in mf_q's cone: a resolved beq and an arriving
+  // step) is its own register, joined to them in front of the arbiter
+  // too, not decided in their cone: a resolved beq and an arriving
   // word were in front of it (critical paths).  While stopped no context
   // is active (a run ends with none, START starts them), so neither
   // held_d nor the slots' write (wslot) is gated with RUNNING, a signal
-  // of the whole scheduler.  Both the queues' next state (v_q) and mf_q are
-  // decided for either outcome of the issue step (v_k, v_g; mf_k, mf_g,
-  // kept as nets in synthesis) and chosen by the grant (gone), so that
-  // one LUT follows the issue arbiter.
+  // of the whole scheduler.  The queues' next state (v_q) is decided for
+  // either outcome of the issue step too (v_k, v_g) and chosen by the
+  // grant (gone), so that one LUT follows the issue arbiter.
   assign act = active_q & ~stop_q;
   // START (from the host's write) is the last multiplexer in front of
   // the registers: held_d is their next state without it.  With
@@ -1013,21 +1018,30 @@ module fp3_scheduler #(
   wire [NC-1:0] h_end     = (h_stop | h_ovf) & {NC{running_o && !rst_i}};
   wire [NC-1:0] stop_d    = gone & h_end;
   wire [NC-1:0] fok_n     = start_now ? contexts_run_i : held_d;
-  wire [NC-1:0] mf_n;
+  wire [NC-1:0] mfk_n, mfg_n;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_mf
       (* keep *) wire mf_k;
       (* keep *) wire mf_g;
       assign mf_k = fok_n[c] && !infl_n[c] && !(v_k[2*c] && v_k[2*c+1]);
       assign mf_g = fok_n[c] && !infl_n[c] && !(v_g[2*c] && v_g[2*c+1]) && !h_end[c];
-      assign mf_n[c] = gone[c] ? mf_g : mf_k;
+      assign mfk_n[c] = mf_k;
+      assign mfg_n[c] = mf_g;
     end
   endgenerate
   always @(posedge clk_i) begin
     active_q <= active_d;
     stop_q   <= stop_d;
-    mf_q     <= mf_n;
+    mfk_q    <= mfk_n;
+    mfg_q    <= mfg_n;
   end
+  // The grant as it is (not gated with RUNNING: the choice is the one
+  // made in the last cycle), kept: placed by the fetch arbiter.
+  fp3_keep #(.W(NC)) u_gone_fetch (
+    .clk_i (clk_i),
+    .d_i   (gone),
+    .q_o   (gf_q)
+  );
 
   // Queue slots' contents: the arriving word, in the slot chosen for it
   // (wsel_q, below).
