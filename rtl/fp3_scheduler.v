@@ -196,9 +196,7 @@ module fp3_scheduler #(
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
   reg [7:0]    lull_q;              // cycles without busy flag or issue, to DRAIN - 1, a cycle late
-  wire         idle_q = idle_i;     // no busy flag in the last cycle (registered
-                                    // in fp3_regfile)
-  reg          iss_q;               // issue_o a cycle late
+  reg          iss_q;               // issue_o a cycle late (as idle_i is)
 
   // ---- instruction memory --------------------------------------------------
   // A block RAM: the address presented in cycle t is read at the edge
@@ -966,13 +964,13 @@ module fp3_scheduler #(
           if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
         end
         // Nothing in flight once DRAIN cycles passed without a busy flag
-        // or an issue: the last of them was cycle t - 1 (idle_q, iss_q),
+        // or an issue: the last of them was cycle t - 1 (idle_i, iss_q),
         // the DRAIN - 1 before it are counted in lull_q, and cycle t - 1
         // was one of the run (not start_q).  So no flag is busy now
         // either (this cycle's flags are not needed): none was set in
         // t - 1, as nothing issued.
         if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_q &&
-            idle_q && !iss_q && lull_q == LULL8) begin
+            idle_i && !iss_q && lull_q == LULL8) begin
           running_o <= 1'b0;
           done_o    <= 1'b1;
         end
@@ -1098,7 +1096,7 @@ module fp3_scheduler #(
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
       // control), none before the run's first cycle.
-      if (start_q || !idle_q || iss_q) lull_q <= 8'd0;
+      if (start_q || !idle_i || iss_q) lull_q <= 8'd0;
       else if (lull_q != LULL8)        lull_q <= lull_q + 8'd1;
     end
   end
