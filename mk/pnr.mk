@@ -17,6 +17,9 @@
 # Not part of `make test`: the processor's place and route takes minutes.
 #
 #   make pnr [PNR_PARAMS="NUM_CONTEXTS=2 ADD_LATENCY=6"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
+#            [PNR_SEEDS="1 2 3 4" [PNR_JOBS=n]: the ECP5 placed once per seed,
+#             PNR_JOBS at a time (scripts/pnr-seeds.sh): each seed's Fmax,
+#             their least, mean and greatest, the best placement kept]
 #            [PNR_ECP5_PLACER="nextpnr placer options" (scripts/pnr.sh)]
 
 PNR_DIR         := $(BUILD)/pnr
@@ -28,6 +31,7 @@ PNR_SPACE       := $(PNR_EMPTY) $(PNR_EMPTY)
 PNR_TAG         := $(subst $(PNR_SPACE),,$(subst =,-,$(foreach p,$(PNR_PARAMS),_$(p))))
 PNR_ECP5_BASE   := $(PNR_SYNTH_DIR)/fp3_axil$(PNR_TAG)_ecp5
 PNR_ICE40_UNITS ?= fp_add fp_mul
+PNR_SEEDS       ?=
 PNR_ICE40_LCS   := 7680
 
 # Netlists for nextpnr from scripts/synth.sh (as make synth writes them,
@@ -48,7 +52,7 @@ pnr: pnr-tools $(PNR_ECP5_BASE).json \
 	@mkdir -p $(PNR_DIR)
 	@echo "name,device,luts,ffs,dsps,brams,fmax_mhz,target_mhz,levels,logic_ns,routing_ns,from,to" \
 	  > $(PNR_DIR)/pnr_summary.csv
-	@bash scripts/pnr.sh ecp5 fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR)
+	@$(if $(strip $(PNR_SEEDS)),bash scripts/pnr-seeds.sh fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR) $(PNR_SEEDS),bash scripts/pnr.sh ecp5 fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR))
 	@set -- $$(bash scripts/synth-report.sh --fields --module fp3_top \
 	    $(PNR_ECP5_BASE)_stat.txt); l=$$1; f=$$2; \
 	  echo "pnr: fp3_top ($(PNR_PARAMS)) on iCE40: $$l LUT4s and $$f flip-flops (ECP5 netlist) against" \
@@ -70,3 +74,6 @@ UNIT_PARAMS ?=
 pnr-unit: pnr-tools
 	@test -n "$(UNIT)" || { echo "make pnr-unit: name the module: UNIT=fp3_regfile (see rtl/)" >&2; exit 2; }
 	@bash scripts/pnr-unit.sh $(BUILD)/pnr-unit $(UNIT) $(UNIT_PARAMS) -- $(RTL_SRC)
+
+# The seed sweep's bookkeeping, with a stand-in for nextpnr (seconds).
+TEST_SCRIPTS += tests/test_pnr_seeds.sh

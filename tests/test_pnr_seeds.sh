@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# test_pnr_seeds.sh -- scripts/pnr-seeds.sh (make pnr PNR_SEEDS=...), the
+# ECP5 seed sweep, with a stand-in for nextpnr (NEXTPNR_ECP5): it places
+# nothing but answers each seed with an Fmax of its own in the report, as
+# nextpnr does, so the sweep's bookkeeping is checked without minutes of
+# place and route: every seed run once, the best one chosen (ties: the
+# lower seed), least / mean / greatest right, the best placement's
+# configuration kept, bad arguments refused, and a seed that does not
+# place failing the sweep without leaving a "best" configuration.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+# The stand-in: Fmax by seed from FAKE_FMAX ("seed:MHz ..."); a seed
+# missing there does not place (exit 1, as nextpnr when a design does not
+# fit).  Writes the report, the configuration and the log where told.
+cat > "$tmp/fake-nextpnr" <<'FAKE'
+#!/usr/bin/env bash
+seed= report= cfg= log=
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --seed) seed=$2; shift ;; --report) report=$2; shift ;;
+    --textcfg) cfg=$2; shift ;; -l) log=$2; shift ;;
+  esac; shift
+done
+echo "fake nextpnr, seed $seed" > "$log"
+fmax=$(tr ' ' '\n' <<< "$FAKE_FMAX" | awk -F: -v s="$seed" '$1 == s {print $2}')
+[ -n "$fmax" ] || { echo "ERROR: Unable to place cell" >> "$log"; exit 1; }
+echo "configuration of seed $seed" > "$cfg"
+cat > "$report" <<JSON
+{"utilization": {"TRELLIS_COMB": {"used": 100, "available": 83640},
+                 "TRELLIS_FF": {"used": 50, "available": 83640}},
+ "fmax": {"\$glbnet\$clk_i": {"achieved": $fmax, "constraint": 150.0}},
+ "critical_paths": []}
+JSON
+FAKE
+chmod +x "$tmp/fake-nextpnr"
+echo '{}' > "$tmp/net.json"
+export NEXTPNR_ECP5="$tmp/fake-nextpnr"
+
+# A sweep: seed 7 is the best, out of order and among unequal seeds.
+FAKE_FMAX="2:140.5 3:131.0 5:140.5 7:151.3 9:120.0" PNR_JOBS=2 \
+  bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/out" 2 3 5 7 9 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on a sweep that places"; }
+grep -q "least 120.0, mean 136.7, greatest 151.3 MHz (seed 7)" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: wrong least/mean/greatest or best seed"; }
+[ "$(cat "$tmp/out/core_ecp5.config")" = "configuration of seed 7" ] ||
+  fail "pnr-seeds.sh: the kept configuration is not the best seed's"
+[ "$(tail -n +2 "$tmp/out/pnr_seeds.csv" | cut -d, -f1,2 | tr '\n' ' ')" = \
+  "2,140.5 3,131.0 5,140.5 7,151.3 9,120.0 " ] ||
+  { cat "$tmp/out/pnr_seeds.csv"; fail "pnr-seeds.sh: pnr_seeds.csv is not one row per seed"; }
+[ "$(tail -1 "$tmp/out/pnr_summary.csv" | cut -d, -f7)" = 151.3 ] ||
+  fail "pnr-seeds.sh: pnr_summary.csv does not end with the best seed's row"
+for s in 2 3 5 7 9; do grep -q "seed $s: Fmax" "$tmp/log" || fail "pnr-seeds.sh: no line for seed $s"; done
+
+# Ties: the lower seed.
+FAKE_FMAX="4:140.0 2:140.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/tie" 4 2 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on a tie"; }
+grep -q "(seed 2)" "$tmp/log" || { cat "$tmp/log"; fail "pnr-seeds.sh: a tie did not go to the lower seed"; }
+
+# A seed that does not place: the sweep fails, names it, keeps no best
+# configuration (also not an earlier sweep's).
+cp "$tmp/out/core_ecp5.config" "$tmp/stale.config"
+if FAKE_FMAX="2:140.5" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/out" 2 3 > "$tmp/log" 2>&1; then
+  cat "$tmp/log"; fail "pnr-seeds.sh succeeded although seed 3 does not place"; fi
+grep -q "seed 3: does not place" "$tmp/log" || { cat "$tmp/log"; fail "pnr-seeds.sh: the failing seed not named"; }
+[ ! -e "$tmp/out/core_ecp5.config" ] || fail "pnr-seeds.sh: a failed sweep left a best configuration"
+
+# Bad arguments: exit 2 with a message, nothing run.
+for args in "core $tmp/net.json $tmp/b 1 x" "core $tmp/none.json $tmp/b 1" "core $tmp/net.json $tmp/b"; do
+  set +e; bash scripts/pnr-seeds.sh $args > "$tmp/log" 2>&1; rc=$?; set -e
+  [ "$rc" -eq 2 ] || { cat "$tmp/log"; fail "pnr-seeds.sh $args: exit $rc, not 2"; }
+done
+set +e; PNR_JOBS=0 bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/b" 1 > "$tmp/log" 2>&1; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "bad PNR_JOBS" "$tmp/log" || fail "pnr-seeds.sh: PNR_JOBS=0 not refused"
+bash scripts/pnr-seeds.sh --help | grep -q "seed sweep" || fail "pnr-seeds.sh --help"
+echo "PASS: test_pnr_seeds (pnr-seeds.sh: sweep, best seed, ties, a seed that does not place, bad arguments)"
