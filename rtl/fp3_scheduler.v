@@ -378,6 +378,14 @@ module fp3_scheduler #(
   wire [IW-1:0] a_ra = aword[ISA_RA_LSB +: IW];
   wire [IW-1:0] a_rb = aword[ISA_RB_LSB +: IW];
   wire [IW-1:0] a_rd = aword[ISA_RD_LSB +: IW];
+  // The same fields for the lookup (lk_*) and for context c's compares
+  // (cf_q, {rd, rb, ra} per context): with FETCH_STAGE, copies of the
+  // word register's fields (fw_q), kept, each placed beside its own loads.
+  // (fw_q's fields, read by the lookup's 32:1 multiplexers and by every
+  // context's compares, were the critical path of two of nine
+  // placements of 2026-11-23's seed sweep, 6 ns of routing.)
+  wire [IW-1:0]      lk_ra, lk_rb, lk_rd;
+  wire [NC*3*IW-1:0] cf_q;
   wire          iss_dst = PICK_STAGES != 0 && issue_o && issue_unit_o != UNIT_NONE;
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
@@ -443,7 +451,7 @@ module fp3_scheduler #(
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
-  always @(posedge clk_i) lk_q <= {bq_q[a_rd], bq_q[a_rb], bq_q[a_ra]};
+  always @(posedge clk_i) lk_q <= {bq_q[lk_rd], bq_q[lk_rb], bq_q[lk_ra]};
   // PICK_STAGES = 2: the head granted in the last cycle, per context: it
   // writes a register (pg_w) and which (pg_rd) -- the instruction picked
   // now, which issues in the next cycle.
@@ -483,9 +491,13 @@ module fp3_scheduler #(
       reg           wrg_q;
       reg  [IW-1:0] rdg_q;
       wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
+      // The arriving word's fields, this context's copy (cf_q, above).
+      wire [IW-1:0] c_ra = cf_q[c*3*IW +: IW];
+      wire [IW-1:0] c_rb = cf_q[c*3*IW + IW +: IW];
+      wire [IW-1:0] c_rd = cf_q[c*3*IW + 2*IW +: IW];
       always @(posedge clk_i) begin
-        hw_q  <= {3{wrh}} & {a_rd == rdh, a_rb == rdh, a_ra == rdh};
-        pd_q  <= a_pend | ({3{pgv}} & {a_rd == rdg_q, a_rb == rdg_q, a_ra == rdg_q});
+        hw_q  <= {3{wrh}} & {c_rd == rdh, c_rb == rdh, c_ra == rdh};
+        pd_q  <= a_pend | ({3{pgv}} & {c_rd == rdg_q, c_rb == rdg_q, c_ra == rdg_q});
         wrg_q <= wrh;
         rdg_q <= rdh;
       end
@@ -506,9 +518,9 @@ module fp3_scheduler #(
       // is written into (fresh there in the next cycle: fr_q).
       reg  [2:0] fa_q;
       always @(posedge clk_i)
-        fa_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, a_rd}),
-                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, a_rb}),
-                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, a_ra})};
+        fa_q <= {`FP3_FREED(early_valid_i, early_idx_i, {CTX, c_rd}),
+                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, c_rb}),
+                 `FP3_FREED(early_valid_i, early_idx_i, {CTX, c_ra})};
 
       for (e = 0; e < 2; e = e + 1) begin : g_slot
         localparam integer I = 2 * c + e;       // this slot
@@ -788,8 +800,24 @@ module fp3_scheduler #(
       reg [SW+63:0] fw_q;
       always @(posedge clk_i) fw_q <= {imem_sdec, imem_word};
       assign {asdec, aword} = fw_q;
+      wire [3*IW-1:0] wf = {imem_word[ISA_RD_LSB +: IW], imem_word[ISA_RB_LSB +: IW],
+                            imem_word[ISA_RA_LSB +: IW]};
+      fp3_keep #(.W(3*IW)) u_lk_fields (
+        .clk_i (clk_i),
+        .d_i   (wf),
+        .q_o   ({lk_rd, lk_rb, lk_ra})
+      );
+      for (c = 0; c < NC; c = c + 1) begin : g_cf
+        fp3_keep #(.W(3*IW)) u_ctx_fields (
+          .clk_i (clk_i),
+          .d_i   (wf),
+          .q_o   (cf_q[c*3*IW +: 3*IW])
+        );
+      end
     end else begin : g_word_now
       assign {asdec, aword} = {imem_sdec, imem_word};
+      assign {lk_rd, lk_rb, lk_ra} = {a_rd, a_rb, a_ra};
+      assign cf_q = {NC{a_rd, a_rb, a_ra}};
     end
   endgenerate
   assign arriving = onehot(avalid, actx);
@@ -931,6 +959,17 @@ module fp3_scheduler #(
   wire [NC-1:0] illegal   = act & holds & ~legal;
   reg           start_q, bad_q;  // a START taken / refused in the last cycle
   reg  [3:0]    bad_err_q;       // ... why it was refused
+  // start_q's copy for the run's end (RUNNING's and DONE's next state, the
+  // quiet-cycle count lull_q), kept: placed beside them, not among
+  // start_q's few hundred other loads (the run's first cycle clears every
+  // counter).  start_q across the die to the end-of-run test in front of
+  // RUNNING was the critical path of two of nine placements (2026-11-23).
+  wire          start_e;
+  fp3_keep #(.W(1)) u_start_end (
+    .clk_i (clk_i),
+    .d_i   (start_ok && !rst_i),
+    .q_o   (start_e)
+  );
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -969,7 +1008,7 @@ module fp3_scheduler #(
         // was one of the run (not start_q).  So no flag is busy now
         // either (this cycle's flags are not needed): none was set in
         // t - 1, as nothing issued.
-        if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_q &&
+        if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_e &&
             idle_i && !iss_q && lull_q == LULL8) begin
           running_o <= 1'b0;
           done_o    <= 1'b1;
@@ -1096,7 +1135,7 @@ module fp3_scheduler #(
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
       // control), none before the run's first cycle.
-      if (start_q || !idle_i || iss_q) lull_q <= 8'd0;
+      if (start_e || !idle_i || iss_q) lull_q <= 8'd0;
       else if (lull_q != LULL8)        lull_q <= lull_q + 8'd1;
     end
   end

@@ -147,6 +147,9 @@ module fp3_top #(
   reg  [4:0]  flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags per context
 
   wire host_idle   = !running;
+  // A write to CTX taken (ctx_q and its copies, below)
+  wire ctx_we      = host_we_i && host_idle && host_addr_i == HR_CTX &&
+                     (CTX_CHECKED != 0 || host_wdata_i < NUM_CONTEXTS);
   wire wr_ctrl     = host_we_i && host_addr_i == HR_CTRL;
   wire start       = wr_ctrl && host_wdata_i[0];
   wire clear       = wr_ctrl && host_wdata_i[1];
@@ -183,11 +186,26 @@ module fp3_top #(
         contexts_bad_q <= host_wdata_i == 32'd0 || host_wdata_i > NUM_CONTEXTS;
         for (k = 0; k < NUM_CONTEXTS; k = k + 1) contexts_run_q[k] <= k < host_wdata_i;
       end
-      if (host_addr_i == HR_CTX && (CTX_CHECKED != 0 || host_wdata_i < NUM_CONTEXTS))
-                                      ctx_q      <= host_wdata_i[CW-1:0];
+      if (ctx_we)                     ctx_q      <= host_wdata_i[CW-1:0];
     end
     if (host_we_i && win_imem && !host_addr_i[0]) imem_lo_q <= host_wdata_i;
   end
+  // CTX's copies for the selected context's words, kept, each placed
+  // beside its multiplexers: the scheduler's (STATUS's error, FAULT_PC,
+  // STEPS_DONE: ctx_sch) and the flags' (FLAGS: ctx_flg).  ctx_q, which
+  // also indexes the register file's host port, across the die to the
+  // flags' multiplexer was a critical path (2026-11-23, seed 4 of nine).
+  wire [CW-1:0] ctx_sch, ctx_flg;
+  fp3_keep #(.W(CW)) u_ctx_sch (
+    .clk_i (clk_i),
+    .d_i   (rst_i ? {CW{1'b0}} : ctx_we ? host_wdata_i[CW-1:0] : ctx_sch),
+    .q_o   (ctx_sch)
+  );
+  fp3_keep #(.W(CW)) u_ctx_flg (
+    .clk_i (clk_i),
+    .d_i   (rst_i ? {CW{1'b0}} : ctx_we ? host_wdata_i[CW-1:0] : ctx_flg),
+    .q_o   (ctx_flg)
+  );
 
   // ---- scheduler -----------------------------------------------------------
   wire          done, any_error;
@@ -234,7 +252,7 @@ module fp3_top #(
     .steps_last2_i    (steps_last2_q),
     .contexts_bad_i   (contexts_bad_q),
     .contexts_run_i   (contexts_run_q),
-    .sel_ctx_i        (ctx_q),
+    .sel_ctx_i        (ctx_sch),
     .running_o        (running),
     .done_o           (done),
     .any_error_o      (any_error),
@@ -455,7 +473,7 @@ module fp3_top #(
       end
     end
   endgenerate
-  wire [4:0] flags_sel = flags_q[ctx_q];
+  wire [4:0] flags_sel = flags_q[ctx_flg];
 
   // ---- host read mux (registered) ------------------------------------------
   // The words of the four addresses host_addr_i[11:2] names (hr_four),
