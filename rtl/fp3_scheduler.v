@@ -606,10 +606,16 @@ module fp3_scheduler #(
   // last grant, so it is that context only when no other is ready, and
   // masking it then leaves no grant, as it should (grant, the candidates
   // decided from registers alone, agrees).
+  // The copy takes the grant as it is, not gated with RUNNING as gone_q
+  // is: while stopped ready_q is clear (no context is active in a run's
+  // last cycle, and the run state is held clear), so a stale mask masks
+  // nothing, and the grant meets the flip-flop with no gate between
+  // (the gate was on the critical path of a placement, seed 1 of
+  // 2026-11-23's sweep of d3eaf1f).
   wire [NC-1:0] gl_q;
   fp3_keep #(.W(NC)) u_gone_copy (
     .clk_i (clk_i),
-    .d_i   (gone & {NC{running_o}}),
+    .d_i   (gone),
     .q_o   (gl_q)
   );
   wire [NC-1:0] cand  = ready_q & ~gl_q;   // (the ready step counts only active contexts)
