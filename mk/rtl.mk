@@ -139,10 +139,14 @@ synth-contexts: $(SETUP_STAMP)
 	  echo "synth-contexts: $(RTL_TOP) on xc2v against NUM_CONTEXTS ($$md):"; cat $$md
 
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
-$(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS)
+# (It also runs the build for clock rate, the fp3_top model test_axil
+# compares its AXI4-Lite build with: RTL_AXIL_CONFIGS.)
+RTL_ENGINE_OBJS := $(RTL_TEST_OBJS) \
+  $(foreach c,$(RTL_AXIL_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+$(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_ENGINE_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
-	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) \
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_ENGINE_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_engines
 
