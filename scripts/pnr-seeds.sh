@@ -65,7 +65,7 @@ done >> "$out/pnr_seeds.csv.tmp"
 mv "$out/pnr_seeds.csv.tmp" "$out/pnr_seeds.csv"
 best=$(tail -n +2 "$out/pnr_seeds.csv" | sort -t, -k2,2gr -k1,1n | head -1 | cut -d, -f1)
 tail -n +2 "$out/pnr_seeds.csv" | awk -F, -v n="$name" -v b="$best" '
-  { f[NR] = $2; s += $2; if (NR == 1 || $2 < lo) lo = $2; if (NR == 1 || $2 > hi) hi = $2 }
+  { s += $2; if (NR == 1 || $2 < lo) lo = $2; if (NR == 1 || $2 > hi) hi = $2 }
   END { printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
                n, NR, lo, s / NR, hi, b }'
 awk -F, '{ printf "  %-5s %-9s %-7s %-9s %-11s %s\n", $1, $2, $3, $4, $5, $6 " -> " $7 }' \
