@@ -103,6 +103,8 @@ module fp3_axil #(
   localparam [3:0] STRB_ALL    = 4'b1111;
   localparam integer WA_LSB    = 2;   // byte address -> word address
   localparam integer WA_BITS   = 12;  // host-port word address width
+  localparam integer IW = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);      // as fp3_top's
+  localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
 
   // ---- state ---------------------------------------------------------------
   reg                aw_valid_q, aw_valid_d;
@@ -193,18 +195,28 @@ module fp3_axil #(
   wire               host_we_c   = do_write && wr_ok;
   wire [WA_BITS-1:0] host_addr_c = do_write ? aw_addr_q : ar_addr_q;
 
-  // FMAX_PIPE: the host port's inputs are registered (the address decode
-  // and the write checks above do not reach into the core's start logic).
+  // The register or window a write takes, decoded here for the core
+  // (fp3_top HOST_WSEL).
+  wire [6:0]         host_wsel_c;
+  fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_host_dec (
+    .addr_i (host_addr_c),
+    .wsel_o (host_wsel_c)
+  );
+
+  // FMAX_PIPE: the host port's inputs are registered, the write's decode
+  // with them (the address decode and the write checks above do not reach
+  // into the core's start logic or its host registers' enables).
   wire               host_we;
   wire [WA_BITS-1:0] host_addr;
   wire [31:0]        host_wdata;
-  fp_pipe #(.WIDTH(WA_BITS + 32), .DEPTH(FMAX_PIPE != 0 ? 1 : 0)) u_host_in (
+  wire [6:0]         host_wsel;
+  fp_pipe #(.WIDTH(WA_BITS + 32 + 7), .DEPTH(FMAX_PIPE != 0 ? 1 : 0)) u_host_in (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (host_we_c),
-    .data_i  ({host_addr_c, w_data_q}),
+    .data_i  ({host_addr_c, w_data_q, host_wsel_c}),
     .valid_o (host_we),
-    .data_o  ({host_addr, host_wdata})
+    .data_o  ({host_addr, host_wdata, host_wsel})
   );
 
   // ---- next state --------------------------------------------------------------
@@ -314,13 +326,15 @@ module fp3_axil #(
     .HAS_SUB      (HAS_SUB),
     .HAS_MUL      (HAS_MUL),
     .FMAX_PIPE    (FMAX_PIPE),
-    .CTX_CHECKED  (1)               // wr_ok: wd_ctx_q
+    .CTX_CHECKED  (1),              // wr_ok: wd_ctx_q
+    .HOST_WSEL    (1)               // host_wsel
   ) u_fp3 (
     .clk_i           (clk_i),
     .rst_i           (rst_i),
     .host_we_i       (host_we),
     .host_addr_i     (host_addr),
     .host_wdata_i    (host_wdata),
+    .host_wsel_i     (host_wsel),
     .host_rdata_o    (host_rdata),
     .running_o       (running),
     .done_o          (done),

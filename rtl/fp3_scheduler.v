@@ -652,10 +652,13 @@ module fp3_scheduler #(
     .q_o   (hpi_q)
   );
   // gone_q's copy for the ready step (the wait bits' and ready_q's last
-  // choice), kept: placed beside it, not with gone_q's other loads.
+  // choice), kept: placed beside it, not with gone_q's other loads.  It
+  // takes the grant ungated, as gl_q does (while stopped ready_q is clear,
+  // so there is no grant to gate; the gate was on the critical path of a
+  // placement, seed 2 of 2026-11-23's sweep of e9ea445).
   fp3_keep #(.W(NC)) u_gone_ready (
     .clk_i (clk_i),
-    .d_i   (gone & {NC{running_o}}),
+    .d_i   (gone),
     .q_o   (gr_q)
   );
   // With PICK_STAGES = 2 the pick multiplexer takes the last grant from

@@ -63,6 +63,11 @@
 //                (fp3_axil refuses it with SLVERR, deciding it as the data
 //                arrive), so the 32-bit compare is left out: it was in
 //                front of CTX's enable, a critical path
+//   HOST_WSEL    0: a write's register is decoded here from host_addr_i;
+//                1: the writer decodes it and gives it on host_wsel_i
+//                (fp3_axil with FMAX_PIPE: from its registered address,
+//                decoded a cycle ahead), so that the 12-bit compares are
+//                not in front of the host registers' enables
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
@@ -76,7 +81,8 @@ module fp3_top #(
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
   parameter integer FMAX_PIPE    = 0,
-  parameter integer CTX_CHECKED  = 0
+  parameter integer CTX_CHECKED  = 0,
+  parameter integer HOST_WSEL    = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -84,6 +90,7 @@ module fp3_top #(
   input  wire        host_we_i,
   input  wire [11:0] host_addr_i,
   input  wire [31:0] host_wdata_i,
+  input  wire [6:0]  host_wsel_i,   // HOST_WSEL = 1: fp3_host_dec of host_addr_i (else unused)
   output wire [31:0] host_rdata_o,
   output wire        running_o,
   output wire        done_o,
@@ -128,16 +135,25 @@ module fp3_top #(
   endgenerate
 
   // ---- host port decode ----------------------------------------------------
-  wire        win_reg  = host_addr_i[11:8] == HR_REG_BASE[11:8];
-  wire        win_imem = host_addr_i[11] == HR_IMEM_BASE[11];
-  wire [9:0]  imem_idx = host_addr_i[10:1];
-  // (compares with a constant as high bits zero when it is a power of
-  // two: Yosys maps such a compare to a carry chain, which was on a
-  // critical path, the host's write -> the register file)
-  wire        reg_ok   = (host_addr_i[7:0] >> IW) == 8'd0 &&
-                         (NUM_REGS == (1 << IW) || {24'd0, host_addr_i[7:0]} < NUM_REGS);
-  wire        imem_ok  = (imem_idx >> AW) == 10'd0 &&
-                         (IMEM_DEPTH == (1 << AW) || {22'd0, imem_idx} < IMEM_DEPTH);
+  // The register or window host_addr_i names (hsel: reads, and writes
+  // with HOST_WSEL = 0), and the one a write takes (wsel): fp3_host_dec's
+  // one-hot {program high word, program low word, register window, CTX,
+  // CONTEXTS, STEPS, CTRL}.
+  wire [6:0]  hsel, wsel;
+  fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_host_dec (
+    .addr_i (host_addr_i),
+    .wsel_o (hsel)
+  );
+  generate
+    if (HOST_WSEL != 0) begin : g_wsel_in
+      assign wsel = host_wsel_i;
+      wire unused_hsel = &{1'b0, hsel[6:5], hsel[3:0]};   // (reads use hsel[4])
+    end else begin : g_wsel_here
+      assign wsel = hsel;
+      wire unused_wsel = &{1'b0, host_wsel_i};
+    end
+  endgenerate
+  wire [AW-1:0] imem_idx = host_addr_i[AW:1];   // (hsel checks its range)
 
   wire        running;
   reg  [31:0] steps_q;
@@ -148,13 +164,13 @@ module fp3_top #(
 
   wire host_idle   = !running;
   // A write to CTX taken (ctx_q and its copies, below)
-  wire ctx_we      = host_we_i && host_idle && host_addr_i == HR_CTX &&
+  wire ctx_we      = host_we_i && host_idle && wsel[3] &&
                      (CTX_CHECKED != 0 || host_wdata_i < NUM_CONTEXTS);
-  wire wr_ctrl     = host_we_i && host_addr_i == HR_CTRL;
+  wire wr_ctrl     = host_we_i && wsel[0];
   wire start       = wr_ctrl && host_wdata_i[0];
   wire clear       = wr_ctrl && host_wdata_i[1];
-  wire host_reg_we = host_we_i && host_idle && win_reg && reg_ok;
-  wire imem_we     = host_we_i && host_idle && win_imem && imem_ok && host_addr_i[0];
+  wire host_reg_we = host_we_i && host_idle && wsel[4];
+  wire imem_we     = host_we_i && host_idle && wsel[6];
 
   // What a START needs of STEPS and CONTEXTS, decided as the host writes
   // them (the scheduler's START then compares nothing 32 bits wide): STEPS
@@ -175,20 +191,20 @@ module fp3_top #(
       contexts_run_q <= {{(NUM_CONTEXTS-1){1'b0}}, 1'b1};
       ctx_q          <= {CW{1'b0}};
     end else if (host_we_i && host_idle) begin
-      if (host_addr_i == HR_STEPS) begin
+      if (wsel[1]) begin
         steps_q       <= host_wdata_i;
         steps_zero_q  <= host_wdata_i == 32'd0;
         steps_one_q   <= host_wdata_i == 32'd1;
         steps_last2_q <= host_wdata_i - 32'd2;
       end
-      if (host_addr_i == HR_CONTEXTS) begin
+      if (wsel[2]) begin
         contexts_q     <= host_wdata_i;
         contexts_bad_q <= host_wdata_i == 32'd0 || host_wdata_i > NUM_CONTEXTS;
         for (k = 0; k < NUM_CONTEXTS; k = k + 1) contexts_run_q[k] <= k < host_wdata_i;
       end
       if (ctx_we)                     ctx_q      <= host_wdata_i[CW-1:0];
     end
-    if (host_we_i && win_imem && !host_addr_i[0]) imem_lo_q <= host_wdata_i;
+    if (host_we_i && wsel[5]) imem_lo_q <= host_wdata_i;
   end
   // CTX's copies for the selected context's words, kept, each placed
   // beside its multiplexers: the scheduler's (STATUS's error, FAULT_PC,
@@ -232,6 +248,8 @@ module fp3_top #(
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
   wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
+  wire          add3_valid, mul3_valid, mov3_valid;   // ... in three (FMAX_PIPE)
+  wire [XW-1:0] add3_idx, mul3_idx, mov3_idx;
   wire          pick_wr;                              // the next issue's destination
   wire [XW-1:0] pick_rd;
   wire [1:0]    pick_unit;
@@ -243,7 +261,7 @@ module fp3_top #(
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
-    .imem_waddr_i     (imem_idx[AW-1:0]),
+    .imem_waddr_i     (imem_idx),
     .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
     .start_i          (start),
     .clear_i          (clear),
@@ -327,6 +345,12 @@ module fp3_top #(
     .wb1_in2_idx_i   (muln_idx),
     .wb2_in2_valid_i (movn_valid),
     .wb2_in2_idx_i   (movn_idx),
+    .wb0_in3_valid_i (add3_valid),
+    .wb0_in3_idx_i   (add3_idx),
+    .wb1_in3_valid_i (mul3_valid),
+    .wb1_in3_idx_i   (mul3_idx),
+    .wb2_in3_valid_i (mov3_valid),
+    .wb2_in3_idx_i   (mov3_idx),
     .host_sel_i   (host_idle),
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
@@ -362,6 +386,8 @@ module fp3_top #(
     .ahead_idx_o   (adda_idx),
     .next2_valid_o (addn_valid),
     .next2_idx_o   (addn_idx),
+    .next3_valid_o (add3_valid),
+    .next3_idx_o   (add3_idx),
     .wb_valid_o    (add_valid),
     .wb_idx_o      (add_idx)
   );
@@ -376,6 +402,8 @@ module fp3_top #(
     .ahead_idx_o   (mula_idx),
     .next2_valid_o (muln_valid),
     .next2_idx_o   (muln_idx),
+    .next3_valid_o (mul3_valid),
+    .next3_idx_o   (mul3_idx),
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
   );
@@ -413,6 +441,8 @@ module fp3_top #(
     .ahead_idx_o   (mova_idx),
     .next2_valid_o (movn_valid),
     .next2_idx_o   (movn_idx),
+    .next3_valid_o (mov3_valid),
+    .next3_idx_o   (mov3_idx),
     .wb_valid_o    (mov_valid),
     .wb_idx_o      (mov_idx)
   );
@@ -530,7 +560,7 @@ module fp3_top #(
       fp3_top_error_scalar_registers_must_be_words_0_to_31 u_error ();
     end
   endgenerate
-  wire         hr_reg = win_reg && reg_ok && host_idle;   // a register of the window
+  wire         hr_reg = hsel[4] && host_idle;   // a register of the window
   wire [31:0]  rdata_d;    // the word host_addr_i named (READ - HSPLIT cycles to go)
   wire         hr_reg_w;   // ... it is the register file's
   generate

@@ -35,6 +35,7 @@ static fp3_model *create(const char *trace_path) {
   m->top->host_we_i = 0;
   m->top->host_addr_i = 0;
   m->top->host_wdata_i = 0;
+  m->top->host_wsel_i = 0;  /* HOST_WSEL = 0: the core decodes host_addr_i */
   m->reset();
   return reinterpret_cast<fp3_model *>(m);
 }

@@ -112,6 +112,7 @@ module tb_fp3 #(
     .host_we_i       (host_we),
     .host_addr_i     (host_addr),
     .host_wdata_i    (host_wdata),
+    .host_wsel_i     (7'd0),        // (HOST_WSEL = 0: decoded in the core)
     .host_rdata_o    (host_rdata),
     .running_o       (running),
     .done_o          (done),
