@@ -119,6 +119,7 @@ module fp3_scheduler #(
   input  wire [CW-1:0]                sel_ctx_i,     // context of the *_sel_o
   // status and counters
   output reg                          running_o,
+  output wire                         running_rf_o,  // running_o's copy (the register file's port A)
   output reg                          done_o,
   output wire                         any_error_o,
   output wire [3:0]                   error_sel_o,
@@ -196,6 +197,7 @@ module fp3_scheduler #(
   reg [CW-1:0] fctx_q;              // ... for this context
   reg [AW-1:0] fpcq_q;              // ... from this address
   reg [7:0]    lull_q;              // cycles without busy flag or issue, to DRAIN - 1, a cycle late
+  reg          lull_full_q;         // lull_q == DRAIN - 1, registered with it
   reg          iss_q;               // issue_o a cycle late (as idle_i is)
 
   // ---- instruction memory --------------------------------------------------
@@ -979,6 +981,25 @@ module fp3_scheduler #(
     .d_i   (start_ok && !rst_i),
     .q_o   (start_e)
   );
+  // The run ends: no context active and nothing in flight once DRAIN
+  // cycles passed without a busy flag or an issue: the last of them was
+  // cycle t - 1 (idle_i, iss_q), the DRAIN - 1 before it are counted in
+  // lull_q, and cycle t - 1 was one of the run (not start_q).  So no flag
+  // is busy now either (this cycle's flags are not needed): none was set
+  // in t - 1, as nothing issued.
+  wire run_end = act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_e &&
+                 idle_i && !iss_q && lull_full_q;
+  // RUNNING's next state (as the process below sets running_o), for its
+  // copy for the register file's port-A select (running_rf_o), kept:
+  // placed beside that multiplexer.  (RUNNING, which fans out through the
+  // scheduler, across the die to it was the critical path of seeds 1 and
+  // 2 of 2026-11-23's sweep of ac9dacd.)
+  wire running_d = !rst_i && (running_o ? !run_end : start_ok);
+  fp3_keep #(.W(1)) u_running_rf (
+    .clk_i (clk_i),
+    .d_i   (running_d),
+    .q_o   (running_rf_o)
+  );
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -1011,14 +1032,7 @@ module fp3_scheduler #(
         for (k = 0; k < NC; k = k + 1) begin
           if (gone_q[k] && l_endi[k]) final_q[k] <= near_q[k];
         end
-        // Nothing in flight once DRAIN cycles passed without a busy flag
-        // or an issue: the last of them was cycle t - 1 (idle_i, iss_q),
-        // the DRAIN - 1 before it are counted in lull_q, and cycle t - 1
-        // was one of the run (not start_q).  So no flag is busy now
-        // either (this cycle's flags are not needed): none was set in
-        // t - 1, as nothing issued.
-        if (act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_e &&
-            idle_i && !iss_q && lull_q == LULL8) begin
+        if (run_end) begin
           running_o <= 1'b0;
           done_o    <= 1'b1;
         end
@@ -1115,6 +1129,7 @@ module fp3_scheduler #(
       infl_q   <= {NC{1'b0}};
       fvalid_q <= 1'b0;
       lull_q   <= 8'd0;
+      lull_full_q <= LULL8 == 8'd0;
       for (k = 0; k < NC; k = k + 1) fpc_q[k] <= {AW{1'b0}};
     end else begin
       ready_q <= ready_d;
@@ -1143,9 +1158,17 @@ module fp3_scheduler #(
       infl_q   <= infl_n;
 
       // lull_q(t + 1) counts the quiet cycles before cycle t (see the run
-      // control), none before the run's first cycle.
-      if (start_e || !idle_i || iss_q) lull_q <= 8'd0;
-      else if (lull_q != LULL8)        lull_q <= lull_q + 8'd1;
+      // control), none before the run's first cycle.  Whether it is full
+      // is registered beside it (lull_full_q), so that the end-of-run test
+      // compares no count (lull_q -> its compare -> RUNNING's and DONE's
+      // enables was 4 LUTs deep).
+      if (start_e || !idle_i || iss_q) begin
+        lull_q      <= 8'd0;
+        lull_full_q <= LULL8 == 8'd0;
+      end else if (!lull_full_q) begin
+        lull_q      <= lull_q + 8'd1;
+        lull_full_q <= lull_q == LULL8 - 8'd1;
+      end
     end
   end
 

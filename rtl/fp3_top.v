@@ -156,6 +156,7 @@ module fp3_top #(
   wire [AW-1:0] imem_idx = host_addr_i[AW:1];   // (hsel checks its range)
 
   wire        running;
+  wire        running_rf;  // its copy for the register file's port-A select
   reg  [31:0] steps_q;
   reg  [31:0] contexts_q;
   reg  [CW-1:0] ctx_q;     // context the host sees
@@ -272,6 +273,7 @@ module fp3_top #(
     .contexts_run_i   (contexts_run_q),
     .sel_ctx_i        (ctx_sch),
     .running_o        (running),
+    .running_rf_o     (running_rf),
     .done_o           (done),
     .any_error_o      (any_error),
     .error_sel_o      (error),
@@ -351,7 +353,7 @@ module fp3_top #(
     .wb1_in3_idx_i   (mul3_idx),
     .wb2_in3_valid_i (mov3_valid),
     .wb2_in3_idx_i   (mov3_idx),
-    .host_sel_i   (host_idle),
+    .host_sel_i   (!running_rf),   // host_idle, from RUNNING's copy for this select
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
