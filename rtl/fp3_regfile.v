@@ -38,11 +38,12 @@
 //                    of the three RAMs' data (one stage; the default)
 //   READ_STAGES = 4  for clock rate.  Cycle t: the RAMs register the read
 //                    address, and the index is compared with the writes
-//                    of cycle t and the write-backs of cycles t + 1,
-//                    t + 2 and t + 3 (announced ahead: wb*_in3_i for
-//                    t + 3), registered; cycle t + 1: the RAMs are read,
-//                    the LVT's first half is read, and the newest of
-//                    those hits is registered one-hot; cycle t + 2: the
+//                    of cycle t and the write-backs of cycles t + 1 and
+//                    t + 2 (announced ahead), registered; cycle t + 1:
+//                    the RAMs are read, the LVT's first half is read,
+//                    and the index is compared with the write-backs of
+//                    cycle t + 3 (announced two cycles ahead, wb*_in2_i),
+//                    the newest hit registered one-hot; cycle t + 2: the
 //                    RAMs' words (from their registers) and the
 //                    bypass word registered, with a one-hot choice among
 //                    them and the write-backs of cycle t + 3; cycle t + 3:
@@ -76,8 +77,6 @@
 //   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
 //   wb{0,1,2}_in2_*: the write-back ports' valid and index two cycles
 //     ahead (fp3_wb_tag next2_*; read with READ_STAGES = 4).
-//   wb{0,1,2}_in3_*: ... three cycles ahead (fp3_wb_tag next3_*; read
-//     with READ_STAGES = 4 only).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 `default_nettype none
@@ -117,12 +116,6 @@ module fp3_regfile #(
   input  wire [XW-1:0]      wb1_in2_idx_i,
   input  wire               wb2_in2_valid_i,
   input  wire [XW-1:0]      wb2_in2_idx_i,
-  input  wire               wb0_in3_valid_i,
-  input  wire [XW-1:0]      wb0_in3_idx_i,
-  input  wire               wb1_in3_valid_i,
-  input  wire [XW-1:0]      wb1_in3_idx_i,
-  input  wire               wb2_in3_valid_i,
-  input  wire [XW-1:0]      wb2_in3_idx_i,
   input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
@@ -242,9 +235,7 @@ module fp3_regfile #(
       wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
 `undef FP3_BYPASS
       wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
-      wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2,   // no stage looks ahead
-                           wb0_in3_valid_i, wb0_in3_idx_i, wb1_in3_valid_i, wb1_in3_idx_i,
-                           wb2_in3_valid_i, wb2_in3_idx_i};
+      wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2};   // no stage looks ahead
       assign ra_data_o = a_byp[32] ? a_byp[31:0] :
                          (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 : q20;
       assign rb_data_o = b_byp[32] ? b_byp[31:0] :
@@ -253,45 +244,48 @@ module fp3_regfile #(
       // Cycle t: the read indices compared with the writes known then,
       // registered (*_hits_q): those of cycle t (the ports' inputs, the
       // host's write included, for its reads), of t + 1 (nx_*, a cycle
-      // ahead), of t + 2 (wb*_in2_*, two cycles ahead) and of t + 3
-      // (wb*_in3_*, three).  Cycle t + 1 (the RAMs read at their
-      // registered address copies; their writes land a cycle late, so the
-      // read has the writes up to cycle t - 1): the newest of the twelve
-      // hits, one-hot, registered.  So cycle t + 1 compares no index, only
-      // registered hits.  (The host writes only while stopped.)  (With the
-      // write-backs of t + 3 compared in cycle t + 1, as wb*_in2_* then,
-      // the read index -> the compare -> the newest hit was the critical
-      // path of a placement, seed 6 of 2026-11-23's sweep of e9ea445.)
-      function [11:0] hits_known; // {t + 3, t + 2, t + 1, t: port 0, 1, 2 each}
+      // ahead) and of t + 2 (wb*_in2_*, two cycles ahead).  Cycle t + 1
+      // (the RAMs read at their registered address copies; their writes
+      // land a cycle late, so the read has the writes up to cycle t - 1):
+      // with the write-backs of cycle t + 3 (wb*_in2_* then), the newest
+      // of the twelve hits, one-hot, registered.  So cycle t + 1 compares
+      // three indices, not twelve.  (The host writes only while stopped.)
+      function [2:0] in2_hits;    // x among the write-backs two cycles ahead
         input [XW-1:0] x;
         begin
-          hits_known = {wb0_in3_valid_i && wb0_in3_idx_i == x,
-                        wb1_in3_valid_i && wb1_in3_idx_i == x,
-                        wb2_in3_valid_i && wb2_in3_idx_i == x,
-                        wb0_in2_valid_i && wb0_in2_idx_i == x,
-                        wb1_in2_valid_i && wb1_in2_idx_i == x,
-                        wb2_in2_valid_i && wb2_in2_idx_i == x,
+          in2_hits = {wb0_in2_valid_i && wb0_in2_idx_i == x,
+                      wb1_in2_valid_i && wb1_in2_idx_i == x,
+                      wb2_in2_valid_i && wb2_in2_idx_i == x};
+        end
+      endfunction
+      function [8:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2 each}
+        input [XW-1:0] x;
+        begin
+          hits_known = {in2_hits(x),
                         nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
                         wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
                         w2_valid && w2_idx == x};
         end
       endfunction
-      function [11:0] newest;     // the newest of the hits h, one-hot
-        input [11:0] h;
-        integer      j;
+      function [11:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2 each}
+        input [XW-1:0] x;
+        input [8:0]    known;     // hits_known(x), a cycle old
+        reg   [11:0]   h;
+        integer        j;
         begin
-          newest = h;
-          for (j = 1; j < 12; j = j + 1) newest = newest & ~(h >> j);
+          h = {in2_hits(x), known};
+          byp_sel = h;
+          for (j = 1; j < 12; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
       endfunction
-      reg [11:0]   a_hits_q, b_hits_q;
+      reg [8:0]    a_hits_q, b_hits_q;
       reg [11:0]   a_hit_q, b_hit_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hits_q <= rst_i ? 12'd0 : hits_known(a_idx);
-        b_hits_q <= rst_i ? 12'd0 : hits_known(rb_i);
-        a_hit_q  <= rst_i ? 12'd0 : newest(a_hits_q);
-        b_hit_q  <= rst_i ? 12'd0 : newest(b_hits_q);
+        a_hits_q <= rst_i ? 9'd0 : hits_known(a_idx);
+        b_hits_q <= rst_i ? 9'd0 : hits_known(rb_i);
+        a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q, a_hits_q);
+        b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q, b_hits_q);
         a_idx_qq <= a_idx_q;
         b_idx_qq <= b_idx_q;
       end

@@ -119,7 +119,6 @@ module fp3_scheduler #(
   input  wire [CW-1:0]                sel_ctx_i,     // context of the *_sel_o
   // status and counters
   output reg                          running_o,
-  output wire                         running_rf_o,  // running_o's copy (the register file's port A)
   output reg                          done_o,
   output wire                         any_error_o,
   output wire [3:0]                   error_sel_o,
@@ -989,17 +988,6 @@ module fp3_scheduler #(
   // in t - 1, as nothing issued.
   wire run_end = act == {NC{1'b0}} && !issue_o && !(two && grant_q) && !start_e &&
                  idle_i && !iss_q && lull_full_q;
-  // RUNNING's next state (as the process below sets running_o), for its
-  // copy for the register file's port-A select (running_rf_o), kept:
-  // placed beside that multiplexer.  (RUNNING, which fans out through the
-  // scheduler, across the die to it was the critical path of seeds 1 and
-  // 2 of 2026-11-23's sweep of ac9dacd.)
-  wire running_d = !rst_i && (running_o ? !run_end : start_ok);
-  fp3_keep #(.W(1)) u_running_rf (
-    .clk_i (clk_i),
-    .d_i   (running_d),
-    .q_o   (running_rf_o)
-  );
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin

@@ -156,7 +156,6 @@ module fp3_top #(
   wire [AW-1:0] imem_idx = host_addr_i[AW:1];   // (hsel checks its range)
 
   wire        running;
-  wire        running_rf;  // its copy for the register file's port-A select
   reg  [31:0] steps_q;
   reg  [31:0] contexts_q;
   reg  [CW-1:0] ctx_q;     // context the host sees
@@ -249,8 +248,6 @@ module fp3_top #(
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
   wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
-  wire          add3_valid, mul3_valid, mov3_valid;   // ... in three (FMAX_PIPE)
-  wire [XW-1:0] add3_idx, mul3_idx, mov3_idx;
   wire          pick_wr;                              // the next issue's destination
   wire [XW-1:0] pick_rd;
   wire [1:0]    pick_unit;
@@ -273,7 +270,6 @@ module fp3_top #(
     .contexts_run_i   (contexts_run_q),
     .sel_ctx_i        (ctx_sch),
     .running_o        (running),
-    .running_rf_o     (running_rf),
     .done_o           (done),
     .any_error_o      (any_error),
     .error_sel_o      (error),
@@ -347,13 +343,7 @@ module fp3_top #(
     .wb1_in2_idx_i   (muln_idx),
     .wb2_in2_valid_i (movn_valid),
     .wb2_in2_idx_i   (movn_idx),
-    .wb0_in3_valid_i (add3_valid),
-    .wb0_in3_idx_i   (add3_idx),
-    .wb1_in3_valid_i (mul3_valid),
-    .wb1_in3_idx_i   (mul3_idx),
-    .wb2_in3_valid_i (mov3_valid),
-    .wb2_in3_idx_i   (mov3_idx),
-    .host_sel_i   (!running_rf),   // host_idle, from RUNNING's copy for this select
+    .host_sel_i   (host_idle),
     .host_we_i    (host_reg_we),
     .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
     .host_wdata_i (host_wdata_i),
@@ -388,8 +378,6 @@ module fp3_top #(
     .ahead_idx_o   (adda_idx),
     .next2_valid_o (addn_valid),
     .next2_idx_o   (addn_idx),
-    .next3_valid_o (add3_valid),
-    .next3_idx_o   (add3_idx),
     .wb_valid_o    (add_valid),
     .wb_idx_o      (add_idx)
   );
@@ -404,8 +392,6 @@ module fp3_top #(
     .ahead_idx_o   (mula_idx),
     .next2_valid_o (muln_valid),
     .next2_idx_o   (muln_idx),
-    .next3_valid_o (mul3_valid),
-    .next3_idx_o   (mul3_idx),
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
   );
@@ -443,8 +429,6 @@ module fp3_top #(
     .ahead_idx_o   (mova_idx),
     .next2_valid_o (movn_valid),
     .next2_idx_o   (movn_idx),
-    .next3_valid_o (mov3_valid),
-    .next3_idx_o   (mov3_idx),
     .wb_valid_o    (mov_valid),
     .wb_idx_o      (mov_idx)
   );

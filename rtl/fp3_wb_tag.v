@@ -26,9 +26,7 @@
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
 //   next2_valid_o, next2_idx_o  ... is written back in 2 cycles (the
 //                               register file's read stages compare it
-//                               with their index: fp3_regfile wb*_in2_i)
-//   next3_valid_o, next3_idx_o  ... in 3 cycles (fp3_regfile wb*_in3_i),
-//                               with AHEAD >= 3; zero with AHEAD < 3
+//                               with their index: fp3_regfile nx2*_i)
 //   wb_valid_o, wb_idx_o        ... is written back this cycle
 `default_nettype none
 module fp3_wb_tag #(
@@ -46,8 +44,6 @@ module fp3_wb_tag #(
   output wire [XW-1:0] ahead_idx_o,
   output wire          next2_valid_o,
   output wire [XW-1:0] next2_idx_o,
-  output wire          next3_valid_o,
-  output wire [XW-1:0] next3_idx_o,
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
@@ -75,34 +71,17 @@ module fp3_wb_tag #(
     if (AHEAD == 1) begin : g_next2_early
       assign next2_valid_o = early_valid_o;
       assign next2_idx_o   = early_idx_o;
-      assign next3_valid_o = 1'b0;
-      assign next3_idx_o   = {XW{1'b0}};
       assign next_valid    = ahead_valid_o;
       assign next_idx      = ahead_idx_o;
     end else begin : g_next2_line
-      // Three cycles before the write-back: the announcement (AHEAD = 3)
-      // or a stage of the line after it (AHEAD = 2: the announcement,
-      // which is next2 then; next3 is zero).
-      wire          n3_valid;
-      wire [XW-1:0] n3_idx;
-      fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD > 3 ? AHEAD - 3 : 0)) u_to_next3 (
+      fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD - 2)) u_to_next2 (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (ahead_valid_o),
         .data_i  (ahead_idx_o),
-        .valid_o (n3_valid),
-        .data_o  (n3_idx)
-      );
-      fp_pipe #(.WIDTH(XW), .DEPTH(AHEAD >= 3 ? 1 : 0)) u_to_next2 (
-        .clk_i   (clk_i),
-        .rst_i   (rst_i),
-        .valid_i (n3_valid),
-        .data_i  (n3_idx),
         .valid_o (next2_valid_o),
         .data_o  (next2_idx_o)
       );
-      assign next3_valid_o = AHEAD >= 3 && n3_valid;
-      assign next3_idx_o   = AHEAD >= 3 ? n3_idx : {XW{1'b0}};
       fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_next (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
