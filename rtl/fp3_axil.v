@@ -176,12 +176,19 @@ module fp3_axil #(
   wire               aw_take = s_axil_awvalid_i && !aw_valid_q;
   wire [WA_BITS-1:0] aw_in   = s_axil_awaddr_i[WA_LSB +: WA_BITS];
   wire               w_take  = s_axil_wvalid_i && !w_valid_q;
-  reg wa_ctrl_q;    // the address is CTRL
+  // The register or window the address names (fp3_host_dec), decoded
+  // once, as it is captured: for these checks and, held with the word,
+  // for the core's write (fp3_top HOST_WSEL).
+  wire [6:0] aw_wsel;
+  fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_aw_dec (
+    .addr_i (aw_in),
+    .wsel_o (aw_wsel)
+  );
+  reg [6:0] wa_wsel_q;  // aw_wsel of the held address: bit 0 CTRL, bit 3 CTX
   reg wa_stop_q;    // ... a register written only while stopped (not CTX)
-  reg wa_ctx_q;     // ... CTX
   reg wd_ctx_q;     // the data name a context (for CTX)
   wire wr_ok = w_all_q &&
-               (wa_ctrl_q || (!running && (wa_stop_q || (wa_ctx_q && wd_ctx_q))));
+               (wa_wsel_q[0] || (!running && (wa_stop_q || (wa_wsel_q[3] && wd_ctx_q))));
   wire rd_ok = reg_readable(ar_addr_q);
 
   // ---- host-port arbitration -----------------------------------------------
@@ -195,14 +202,6 @@ module fp3_axil #(
   wire               host_we_c   = do_write && wr_ok;
   wire [WA_BITS-1:0] host_addr_c = do_write ? aw_addr_q : ar_addr_q;
 
-  // The register or window a write takes, decoded here for the core
-  // (fp3_top HOST_WSEL).
-  wire [6:0]         host_wsel_c;
-  fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_host_dec (
-    .addr_i (host_addr_c),
-    .wsel_o (host_wsel_c)
-  );
-
   // FMAX_PIPE: the host port's inputs are registered, the write's decode
   // with them (the address decode and the write checks above do not reach
   // into the core's start logic or its host registers' enables).
@@ -214,7 +213,7 @@ module fp3_axil #(
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (host_we_c),
-    .data_i  ({host_addr_c, w_data_q, host_wsel_c}),
+    .data_i  ({host_addr_c, w_data_q, wa_wsel_q}),   // (wa_wsel_q: used only with a write)
     .valid_o (host_we),
     .data_o  ({host_addr, host_wdata, host_wsel})
   );
@@ -294,10 +293,10 @@ module fp3_axil #(
     w_data_q  <= w_data_d;
     w_all_q   <= w_all_d;
     if (aw_take) begin
-      wa_ctrl_q <= aw_in == HR_CTRL;
-      wa_stop_q <= aw_in == HR_STEPS || aw_in == HR_CONTEXTS ||
-                   reg_hit(aw_in) || imem_hit(aw_in[WA_BITS-1:1]);
-      wa_ctx_q  <= aw_in == HR_CTX;
+      wa_wsel_q <= aw_wsel;
+      // (the program window's low words too: an index beyond IMEM_DEPTH
+      // is refused, which aw_wsel[5] does not check)
+      wa_stop_q <= aw_wsel[1] || aw_wsel[2] || aw_wsel[4] || imem_hit(aw_in[WA_BITS-1:1]);
     end
     if (w_take) wd_ctx_q <= s_axil_wdata_i < NUM_CONTEXTS;
     b_resp_q  <= b_resp_d;
