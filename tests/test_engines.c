@@ -756,14 +756,20 @@ static void multi_free(multi_capture *m) {
  * contexts, ADD_LATENCY 9, MUL_LATENCY 10, FMAX_PIPE; mk/rtl.mk): the
  * FMAX_PIPE scheduler's contexts 3 to 7 run only there (a mutation of
  * context 3's hazard compares passed every test before it was here). */
-#define CONTEXT_BUILDS 4
+static const struct {
+  const fp3_model_ops *model;  /* NULL: the default build */
+  unsigned contexts;           /* what the build must report */
+  int fmax_pipe;
+} context_builds[] = {
+  {&fp3_model_nc1, 1, 0},
+  {&fp3_model_nc3, 3, 1},
+  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 0},
+  {&fp3_model_fmax, 8, 1},
+};
+#define CONTEXT_BUILDS (int)(sizeof context_builds / sizeof context_builds[0])
 static fp3_engine *context_build(int which) {
-  switch (which) {
-    case 0: return fp3_engine_rtl_new_model(&fp3_model_nc1, NULL);
-    case 1: return fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
-    case 2: return fp3_engine_rtl_new(NULL);
-    default: return fp3_engine_rtl_new_model(&fp3_model_fmax, NULL);
-  }
+  const fp3_model_ops *m = context_builds[which].model;
+  return m ? fp3_engine_rtl_new_model(m, NULL) : fp3_engine_rtl_new(NULL);
 }
 
 /* Different ships in every context: each context bit-exact with the ISS
@@ -783,8 +789,8 @@ static void test_many_ships(void **state) {
     fp3_engine *er = context_build(which);
     assert_non_null(er);
     unsigned nctx = er->config.num_contexts;
-    assert_int_equal(nctx, which == 0 ? 1 : which == 1 ? 3 : which == 3 ? 8 : FP3_DEFAULT_NUM_CONTEXTS);
-    assert_int_equal(er->config.fmax_pipe, which == 1 || which == 3);
+    assert_int_equal(nctx, context_builds[which].contexts);
+    assert_int_equal(er->config.fmax_pipe, context_builds[which].fmax_pipe);
     memset(init, 0, sizeof init);
     for (unsigned k = 0; k < nctx; k++) {
       const ship_case *sc = &ship_cases[k % NCASES];
