@@ -2,9 +2,9 @@
 // or window of the host-port map (HR_* in rtl/fp3_isa.vh, generated from
 // sw/fp3_isa.h) a 12-bit word address names.  Combinational.
 //
-// fp3_top decodes its host address with it; fp3_axil with FMAX_PIPE
-// decodes the address a cycle ahead, before its host-port register, and
-// hands the result to fp3_top (HOST_WSEL = 1), so that the host's write
+// fp3_top decodes its host address with it; fp3_axil decodes a write's
+// address as it is captured from the bus, holds the result with it and
+// hands it to fp3_top (HOST_WSEL = 1), so that the host's write
 // strobes reach the core's register enables from flip-flops through one
 // gate instead of a 12-bit compare (the host address -> a host
 // register's enable was the critical path of two of nine placements of

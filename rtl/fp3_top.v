@@ -65,8 +65,8 @@
 //                front of CTX's enable, a critical path
 //   HOST_WSEL    0: a write's register is decoded here from host_addr_i;
 //                1: the writer decodes it and gives it on host_wsel_i
-//                (fp3_axil with FMAX_PIPE: from its registered address,
-//                decoded a cycle ahead), so that the 12-bit compares are
+//                (fp3_axil: decoded as the address is captured, held
+//                with it), so that the 12-bit compares are
 //                not in front of the host registers' enables
 `default_nettype none
 module fp3_top #(
