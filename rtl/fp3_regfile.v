@@ -280,12 +280,22 @@ module fp3_regfile #(
       endfunction
       reg [8:0]    a_hits_q, b_hits_q;
       reg [11:0]   a_hit_q, b_hit_q;
+      // Beside the hits, two summaries of them, registered from the same
+      // compares rather than reduced from *_hit_q in cycle t + 2: no hit
+      // at all (the RAM the LVT names: *_ram_q) and a hit among the writes
+      // known in cycle t (the bypass word: *_bdv_q), so the read select
+      // meets a flip-flop, not a 12-input OR.
+      reg          a_ram_q, b_ram_q, a_bdv_q, b_bdv_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
         a_hits_q <= rst_i ? 9'd0 : hits_known(a_idx);
         b_hits_q <= rst_i ? 9'd0 : hits_known(rb_i);
         a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q, a_hits_q);
         b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q, b_hits_q);
+        a_ram_q  <= rst_i || ~|{in2_hits(a_idx_q), a_hits_q};
+        b_ram_q  <= rst_i || ~|{in2_hits(b_idx_q), b_hits_q};
+        a_bdv_q  <= !rst_i && |a_hits_q && ~|in2_hits(a_idx_q);
+        b_bdv_q  <= !rst_i && |b_hits_q && ~|in2_hits(b_idx_q);
         a_idx_qq <= a_idx_q;
         b_idx_qq <= b_idx_q;
       end
@@ -294,7 +304,7 @@ module fp3_regfile #(
       // 0}), in two halves: in cycle t + 1 the low index bits pick an
       // entry in every group of 16, registered one-hot, in cycle t + 2 the
       // high bits pick the group (a multiplexer per bit, nothing behind it
-      // but the gate with a_ram).
+      // but the gate with a_ram_q).
       wire [2:0] a_lvt2, b_lvt2;
       if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
@@ -349,8 +359,6 @@ module fp3_regfile #(
       reg  [31:0] a_bd_q, b_bd_q;
       reg  [6:0]  a_sel_q, b_sel_q;
       reg  [31:0] a_out_q, b_out_q;
-      wire        a_ram = a_hit_q == 12'd0;
-      wire        b_ram = b_hit_q == 12'd0;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
         qa1_q   <= q10;
@@ -360,8 +368,8 @@ module fp3_regfile #(
         qb2_q   <= q21;
         a_bd_q  <= pick9(a_hit_q[8:0], bw);
         b_bd_q  <= pick9(b_hit_q[8:0], bw);
-        a_sel_q <= {a_hit_q[11:9], |a_hit_q[8:0], {3{a_ram}} & {a_lvt2[0], a_lvt2[1], a_lvt2[2]}};
-        b_sel_q <= {b_hit_q[11:9], |b_hit_q[8:0], {3{b_ram}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2]}};
+        a_sel_q <= {a_hit_q[11:9], a_bdv_q, {3{a_ram_q}} & {a_lvt2[0], a_lvt2[1], a_lvt2[2]}};
+        b_sel_q <= {b_hit_q[11:9], b_bdv_q, {3{b_ram_q}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2]}};
       end
       wire [31:0] a_nx = pick9({2'b00, a_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
                                                   a_bd_q, qa0_q, qa1_q, qa2_q});
