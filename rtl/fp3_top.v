@@ -246,6 +246,8 @@ module fp3_top #(
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
   wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
+  wire          addp_valid, mulp_valid, movp_valid;   // ... and a cycle before that
+  wire [XW-1:0] addp_idx, mulp_idx, movp_idx;
   wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
   wire          pick_wr;                              // the next issue's destination
@@ -283,6 +285,8 @@ module fp3_top #(
     .ahead_idx_i      ({mova_idx, mula_idx, adda_idx}),
     .early_valid_i    ({move_valid, mule_valid, adde_valid}),
     .early_idx_i      ({move_idx, mule_idx, adde_idx}),
+    .pre_valid_i      ({movp_valid, mulp_valid, addp_valid}),
+    .pre_idx_i        ({movp_idx, mulp_idx, addp_idx}),
     .idle_i           (idle),
     .br_i             (br_q),
     .br_taken_i       (br_taken_q),
@@ -372,6 +376,10 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (issue && issue_unit == UNIT_ADD),
     .idx_i         (rd),
+    .pvalid_i      (pick_wr && pick_unit == UNIT_ADD),
+    .pidx_i        (pick_rd),
+    .pre_valid_o   (addp_valid),
+    .pre_idx_o     (addp_idx),
     .early_valid_o (adde_valid),
     .early_idx_o   (adde_idx),
     .ahead_valid_o (adda_valid),
@@ -386,6 +394,10 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (issue && issue_unit == UNIT_MUL),
     .idx_i         (rd),
+    .pvalid_i      (pick_wr && pick_unit == UNIT_MUL),
+    .pidx_i        (pick_rd),
+    .pre_valid_o   (mulp_valid),
+    .pre_idx_o     (mulp_idx),
     .early_valid_o (mule_valid),
     .early_idx_o   (mule_idx),
     .ahead_valid_o (mula_valid),
@@ -415,7 +427,6 @@ module fp3_top #(
     end else begin : g_mov_issue
       assign mov_issue = issue && issue_unit == UNIT_MOV;
       assign mov_rd    = rd;
-      wire unused_pick = &{1'b0, pick_unit};   // (the issue register's, now)
     end
   endgenerate
   fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + MOV_LATENCY), .AHEAD(AHEAD)) u_mov_tag (
@@ -423,6 +434,10 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (mov_issue),
     .idx_i         (mov_rd),
+    .pvalid_i      (pick_wr && pick_unit == UNIT_MOV),
+    .pidx_i        (pick_rd),
+    .pre_valid_o   (movp_valid),
+    .pre_idx_o     (movp_idx),
     .early_valid_o (move_valid),
     .early_idx_o   (move_idx),
     .ahead_valid_o (mova_valid),

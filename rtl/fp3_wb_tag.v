@@ -12,7 +12,9 @@
 // index and the trace.  The announcement is also shown a cycle before it
 // is made, on early_*_o in cycle W - AHEAD - 1, so that the scheduler can
 // compare it with its queued instructions' registers a cycle ahead and
-// keep the outcome in a register.
+// keep the outcome in a register.  And a cycle before that, on pre_*_o
+// (early_* of the next cycle), for registers that copy the announcement
+// beside groups of its loads (fp3_scheduler's per-context copies).
 //
 // Parameters
 //   XW           index width ({context, register})
@@ -21,6 +23,13 @@
 //   AHEAD        cycles the announcement precedes the write-back, >= 1
 // Ports
 //   valid_i, idx_i  an operation for this unit issues this cycle
+//   pvalid_i, pidx_i  the operation picked: valid_i, idx_i of the next
+//                   cycle (the issue a cycle ahead); used only with
+//                   ISSUE_TO_WB = AHEAD + 1, where it is pre_*_o
+//   pre_valid_o, pre_idx_o  ... will be written back in AHEAD + 2 cycles
+//                   (the line's stage in front of early_*_o; with
+//                   ISSUE_TO_WB = AHEAD + 2, valid_i, idx_i; with AHEAD + 1,
+//                   pvalid_i, pidx_i)
 //   early_valid_o, early_idx_o  ... will be written back in AHEAD + 1
 //                   cycles (with ISSUE_TO_WB = AHEAD + 1, valid_i, idx_i)
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
@@ -38,6 +47,10 @@ module fp3_wb_tag #(
   input  wire          rst_i,
   input  wire          valid_i,
   input  wire [XW-1:0] idx_i,
+  input  wire          pvalid_i,
+  input  wire [XW-1:0] pidx_i,
+  output wire          pre_valid_o,
+  output wire [XW-1:0] pre_idx_o,
   output wire          early_valid_o,
   output wire [XW-1:0] early_idx_o,
   output wire          ahead_valid_o,
@@ -47,14 +60,33 @@ module fp3_wb_tag #(
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
-  fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD - 1)) u_to_early (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (valid_i),
-    .data_i  (idx_i),
-    .valid_o (early_valid_o),
-    .data_o  (early_idx_o)
-  );
+  generate
+    if (ISSUE_TO_WB == AHEAD + 1) begin : g_early_input
+      // The announcement is the issue itself: a cycle before, the pick.
+      assign pre_valid_o   = pvalid_i;
+      assign pre_idx_o     = pidx_i;
+      assign early_valid_o = valid_i;
+      assign early_idx_o   = idx_i;
+    end else begin : g_early_line
+      fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD - 2)) u_to_pre (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (valid_i),
+        .data_i  (idx_i),
+        .valid_o (pre_valid_o),
+        .data_o  (pre_idx_o)
+      );
+      fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_early (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (pre_valid_o),
+        .data_i  (pre_idx_o),
+        .valid_o (early_valid_o),
+        .data_o  (early_idx_o)
+      );
+      wire unused_pick = &{1'b0, pvalid_i, pidx_i};  // (the line has the stage)
+    end
+  endgenerate
   fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_ahead (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
