@@ -137,32 +137,22 @@ module fp3_axil #(
   wire [31:0] host_rdata;
 
   // ---- address decode --------------------------------------------------------
-  // Register window: REG_BASE + r, r < NUM_REGS (as fp3_top decodes it).
-  function reg_hit;
-    input [WA_BITS-1:0] a;
-    begin
-      reg_hit = a[11:8] == HR_REG_BASE[11:8] && {24'd0, a[7:0]} < NUM_REGS;
-    end
-  endfunction
-  // Program window: IMEM_BASE + 2i (+1), i < IMEM_DEPTH.
-  // Bit 0 selects the half of the instruction word.
-  function imem_hit;
-    input [WA_BITS-1:1] a;
-    begin
-      imem_hit = a[11] == HR_IMEM_BASE[11] && {22'd0, a[10:1]} < IMEM_DEPTH;
-    end
-  endfunction
+  // The register window (REG_BASE + r, r < NUM_REGS) and the program window
+  // (IMEM_BASE + 2i (+1), i < IMEM_DEPTH; bit 0 the half of the word) are
+  // fp3_host_dec's, as fp3_top decodes them (wsel_o[4]; imem_ok_o).
 
-  // Scalar registers the host may read (access R or RW in the table).
+  // Scalar registers the host may read (access R or RW in the table); a
+  // register of the window: reg_win, fp3_host_dec's wsel_o[4] of a.
   function reg_readable;
     input [WA_BITS-1:0] a;
+    input               reg_win;
     begin
       case (a)
         HR_STATUS, HR_STEPS, HR_STEPS_DONE, HR_FAULT_PC, HR_FLAGS,
         HR_CYCLES_LO, HR_CYCLES_HI, HR_ISSUED_LO, HR_ISSUED_HI,
         HR_STALLS_LO, HR_STALLS_HI, HR_INFO0, HR_INFO1, HR_ID,
         HR_CTX, HR_CONTEXTS, HR_INFO2: reg_readable = 1'b1;
-        default:                       reg_readable = reg_hit(a);
+        default:                       reg_readable = reg_win;
       endcase
     end
   endfunction
@@ -180,16 +170,26 @@ module fp3_axil #(
   // once, as it is captured: for these checks and, held with the word,
   // for the core's write (fp3_top HOST_WSEL).
   wire [6:0] aw_wsel;
+  wire       aw_imem_ok;   // its program index is below IMEM_DEPTH
   fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_aw_dec (
-    .addr_i (aw_in),
-    .wsel_o (aw_wsel)
+    .addr_i    (aw_in),
+    .wsel_o    (aw_wsel),
+    .imem_ok_o (aw_imem_ok)
   );
   reg [6:0] wa_wsel_q;  // aw_wsel of the held address: bit 0 CTRL, bit 3 CTX
   reg wa_stop_q;    // ... a register written only while stopped (not CTX)
   reg wd_ctx_q;     // the data name a context (for CTX)
   wire wr_ok = w_all_q &&
                (wa_wsel_q[0] || (!running && (wa_stop_q || (wa_wsel_q[3] && wd_ctx_q))));
-  wire rd_ok = reg_readable(ar_addr_q);
+  wire [6:0] ar_wsel;      // the read's address, decoded (its register window)
+  wire       ar_imem_ok;
+  fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_ar_dec (
+    .addr_i    (ar_addr_q),
+    .wsel_o    (ar_wsel),
+    .imem_ok_o (ar_imem_ok)
+  );
+  wire unused_ar_dec = &{1'b0, ar_wsel[6:5], ar_wsel[3:0], ar_imem_ok};
+  wire rd_ok = reg_readable(ar_addr_q, ar_wsel[4]);
 
   // ---- host-port arbitration -----------------------------------------------
   wire wr_cand  = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
@@ -296,7 +296,8 @@ module fp3_axil #(
       wa_wsel_q <= aw_wsel;
       // (the program window's low words too: an index beyond IMEM_DEPTH
       // is refused, which aw_wsel[5] does not check)
-      wa_stop_q <= aw_wsel[1] || aw_wsel[2] || aw_wsel[4] || imem_hit(aw_in[WA_BITS-1:1]);
+      wa_stop_q <= aw_wsel[1] || aw_wsel[2] || aw_wsel[4] || aw_wsel[6] ||
+                   (aw_wsel[5] && aw_imem_ok);
     end
     if (w_take) wd_ctx_q <= s_axil_wdata_i < NUM_CONTEXTS;
     b_resp_q  <= b_resp_d;

@@ -21,6 +21,9 @@
 //            5 the program window, a low word (any index: the core
 //              stores it only with its high word),
 //            6 the program window, a high word, index < IMEM_DEPTH
+//   imem_ok_o  addr_i[10:1], as a program window's index, is below
+//            IMEM_DEPTH (whatever the window; fp3_axil's check of a low
+//            word)
 `default_nettype none
 module fp3_host_dec #(
   parameter integer NUM_REGS   = 32,
@@ -29,7 +32,8 @@ module fp3_host_dec #(
   parameter integer AW         = 8
 ) (
   input  wire [11:0] addr_i,
-  output wire [6:0]  wsel_o
+  output wire [6:0]  wsel_o,
+  output wire        imem_ok_o
 );
 `include "fp3_isa.vh"
   wire       win_reg  = addr_i[11:8] == HR_REG_BASE[11:8];
@@ -42,6 +46,7 @@ module fp3_host_dec #(
                         (NUM_REGS == (1 << IW) || {24'd0, addr_i[7:0]} < NUM_REGS);
   wire       imem_ok  = (imem_idx >> AW) == 10'd0 &&
                         (IMEM_DEPTH == (1 << AW) || {22'd0, imem_idx} < IMEM_DEPTH);
+  assign imem_ok_o = imem_ok;
   assign wsel_o = {win_imem && imem_ok && addr_i[0], win_imem && !addr_i[0],
                    win_reg && reg_ok, addr_i == HR_CTX, addr_i == HR_CONTEXTS,
                    addr_i == HR_STEPS, addr_i == HR_CTRL};

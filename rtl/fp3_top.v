@@ -140,17 +140,19 @@ module fp3_top #(
   // one-hot {program high word, program low word, register window, CTX,
   // CONTEXTS, STEPS, CTRL}.
   wire [6:0]  hsel, wsel;
+  wire        hsel_imem_ok;   // (hsel[6] has it for the writes)
   fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_host_dec (
-    .addr_i (host_addr_i),
-    .wsel_o (hsel)
+    .addr_i    (host_addr_i),
+    .wsel_o    (hsel),
+    .imem_ok_o (hsel_imem_ok)
   );
   generate
     if (HOST_WSEL != 0) begin : g_wsel_in
       assign wsel = host_wsel_i;
-      wire unused_hsel = &{1'b0, hsel[6:5], hsel[3:0]};   // (reads use hsel[4])
+      wire unused_hsel = &{1'b0, hsel[6:5], hsel[3:0], hsel_imem_ok};   // (reads use hsel[4])
     end else begin : g_wsel_here
       assign wsel = hsel;
-      wire unused_wsel = &{1'b0, host_wsel_i};
+      wire unused_wsel = &{1'b0, host_wsel_i, hsel_imem_ok};
     end
   endgenerate
   wire [AW-1:0] imem_idx = host_addr_i[AW:1];   // (hsel checks its range)
