@@ -589,11 +589,13 @@ module fp3_scheduler #(
       // The head's fields, and the last head's (hp_q has moved on if it
       // was granted).
       assign h_fields[c*FW +: FW] = hp ? fields[(2*c+1)*FW +: FW] : fields[2*c*FW +: FW];
-      // (The immediate's bits by hpi_q, a copy of hp_q of their own.)
+      // (The immediate's bits by hpi_q, hp_q a cycle late: the slot the
+      // head was in, which for a context granted in the last cycle is the
+      // last head's; for the others the pick does not read them.)
       wire [FW-1:0] f_e0 = fields[2*c*FW +: FW];
       wire [FW-1:0] f_e1 = fields[(2*c+1)*FW +: FW];
       assign l_fields[c*FW +: FW] = (hp ? f_e0 : f_e1) & ~IMM_BITS |
-                                    (hpi_q[c] ? f_e0 : f_e1) & IMM_BITS;
+                                    (hpi_q[c] ? f_e1 : f_e0) & IMM_BITS;
       (* keep *) wire rdy_k;
       (* keep *) wire rdy_g;
       assign rdy_k = act[c] && (hp ? v_q[2*c+1] && srdy_k[1] : v_q[2*c] && srdy_k[0]);
@@ -670,10 +672,14 @@ module fp3_scheduler #(
   // hp_q's copy for the last heads' immediates (l_fields), the 32-bit
   // half of the pick's multiplexer (its grant from gpi_q), kept: placed
   // beside that multiplexer.  (hp_q, placed with its context's queue,
-  // across the die to the immediate's pick was a critical path.)
+  // across the die to the immediate's pick was a critical path.)  It is
+  // hp_q a cycle late, the head's slot in the grant's cycle, not hp_q's
+  // next state (hp_q ^ gone): the grant crossed the die to this copy
+  // through a gate, the end of six of twelve placements of ec498be (the
+  // issue arbiter's loop in five, the copy's route to the pick in one).
   fp3_keep #(.W(NC)) u_hp_imm (
     .clk_i (clk_i),
-    .d_i   ((rst_i || !running_o) ? {NC{1'b0}} : hp_q ^ gone),
+    .d_i   (hp_q),
     .q_o   (hpi_q)
   );
   // gone_q's copy for the ready step (the wait bits' and ready_q's last
