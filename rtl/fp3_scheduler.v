@@ -470,7 +470,6 @@ module fp3_scheduler #(
   // now, which issues in the next cycle.
   wire [NC-1:0]    pg_w;
   wire [NC*IW-1:0] pg_rd;
-  wire [NC-1:0]    pg_mv;     // ... and is a move
   genvar c, e, l;
   generate
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
@@ -523,7 +522,7 @@ module fp3_scheduler #(
       // word waits for it too.  That and the destination in the issue
       // register (a_pend) are kept together, in pd_q.
       reg  [2:0]    hw_q, pd_q;
-      reg           wrg_q, mvg_q;
+      reg           wrg_q;
       reg  [IW-1:0] rdg_q;
       wire          pgv = PICK_STAGES == 2 && wrg_q && gone_q[c];
       // The arriving word's fields, this context's copy (cf_q, above).
@@ -534,11 +533,9 @@ module fp3_scheduler #(
         hw_q  <= {3{wrh}} & {c_rd == rdh, c_rb == rdh, c_ra == rdh};
         pd_q  <= a_pend | ({3{pgv}} & {c_rd == rdg_q, c_rb == rdg_q, c_ra == rdg_q});
         wrg_q <= wrh;
-        mvg_q <= xh[7:6] == UNIT_MOV;
         rdg_q <= rdh;
       end
       assign pg_w[c] = pgv;
-      assign pg_mv[c] = pgv && mvg_q;
       assign pg_rd[c*IW +: IW] = rdg_q;
       // The fresh word's wait bits: flag not freed, or pending, or written
       // by the head granted in its arrival cycle (sj_g: if it was).  For
@@ -818,22 +815,14 @@ module fp3_scheduler #(
         .d_i   ((!rst_i && running_o) ? fr : fcm_q),
         .q_o   (fcm_q)
       );
-      // The announcements of cycle a, for the context fcm_q, which is
-      // bctx in cycle a - 1: the add and mul lines' from their pre_*_i in
-      // cycle a - 2 (a tag line's early_*_i are its pre_*_i a cycle late,
-      // cleared by reset), the move line's (line 2) from this context's
-      // picked head.  (fp3_top's move line announces a move as it issues
-      // (MOV_LATENCY = 1 + PICK), so its pre_*_i are the pick itself,
-      // pick_wr_o and pick_rd_o, behind the pick multiplexer: a head
-      // pointer -> the pick -> amask_q ended two of four placements.)
-      // The move picked in cycle a - 2 issues in a - 1 and is announced
-      // in a.
+      // The announcements of cycle a, shown on pre_*_i in cycle a - 2 (a
+      // tag line's early_*_i are its pre_*_i a cycle late, cleared by
+      // reset), for the context fcm_q, which is bctx in cycle a - 1.
       reg [RN-1:0] amask_q;
       always @(posedge clk_i) begin
         smask_q <= flag1(!rst_i && running_o && pg_w[fcm_q], pg_rd[fcm_q*IW +: IW]);
         cmask_q <= ann3(early_valid_i, early_idx_i, fcm_q);
-        amask_q <= ann3({1'b0, pre_valid_i[1:0] & {2{!rst_i}}}, pre_idx_i, fcm_q) |
-                   flag1(!rst_i && running_o && pg_mv[fcm_q], pg_rd[fcm_q*IW +: IW]);
+        amask_q <= ann3(pre_valid_i & {3{!rst_i}}, pre_idx_i, fcm_q);
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
@@ -844,7 +833,7 @@ module fp3_scheduler #(
                            rd_o[IW-1:0]);
       assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx);
       assign amask = ann3(early_valid_i, early_idx_i, bctx);
-      wire unused_pg = &{1'b0, pg_w, pg_rd, pg_mv};  // (the issue register, now)
+      wire unused_pg = &{1'b0, pg_w, pg_rd};  // (the issue register, now)
     end
   endgenerate
 
