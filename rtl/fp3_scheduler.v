@@ -186,7 +186,6 @@ module fp3_scheduler #(
   reg [AW-1:0] fpc_q[0:NC-1];       // next fetch address
   reg [NC-1:0] fend_q;              // fetched the last word of the memory
   reg [NC-1:0] bwait_q;             // fetched a beq, not yet resolved
-  reg [NC-1:0] fhold_q;             // fend_q | bwait_q, a register of its own (fetch step)
   reg [NC-1:0] ready_q;             // head was ready (computed last cycle)
   reg [31:0]   sdone_q[0:NC-1];     // integrations completed
   reg [NC-1:0] final_q;             // the next endi is the last of the run
@@ -941,7 +940,7 @@ module fp3_scheduler #(
   // when no other context requests (none is after g, and none before g,
   // or it would be the first): so masking g after the pick leaves no
   // grant, as it should.
-  wire [NC-1:0] freq  = (gf_q & mfg_q | ~gf_q & mfk_q) & ~fhold_q;   // the requests
+  wire [NC-1:0] freq  = (gf_q & mfg_q | ~gf_q & mfk_q) & ~fend_q & ~bwait_q;   // the requests
   wire          fetch = (|(freq & ~fg_q)) && running_o;
   wire [NC-1:0] fpick, fgnt;
   fp3_rr_arbiter #(.N(NC)) u_fetch_arb (
@@ -1107,7 +1106,7 @@ module fp3_scheduler #(
   // logic follows the issue arbiter here (its grant -> a fetch request
   // was a critical path).  What else holds a context's fetch (past the
   // memory's last word, waiting on a beq: fend_q, bwait_q, the fetch
-  // step; their OR, fhold_q) is its own register, joined to them in front of the arbiter
+  // step) is its own register, joined to them in front of the arbiter
   // too, not decided in their cone: a resolved beq and an arriving
   // word were in front of it (critical paths).  While stopped no context
   // is active (a run ends with none, START starts them), so neither
@@ -1169,12 +1168,6 @@ module fp3_scheduler #(
   always @(posedge clk_i) begin
     fend_q  <= fend_d;
     bwait_q <= bwait_d;
-    // Their OR, registered, so that a request is one LUT of four
-    // flip-flops in front of the fetch arbiter's carry chain, not a
-    // five-input function (fend_q or bwait_q -> the request -> the chain
-    // -> the grant ended three of 24 placements of 13b51b8, the best of
-    // them among them).
-    fhold_q <= fend_d | bwait_d;
   end
   always @(posedge clk_i) begin
     if (rst_i || !running_o) begin
