@@ -192,7 +192,7 @@ module fp3_scheduler #(
   reg [3:0]    err_q  [0:NC-1];
   reg [AW-1:0] epc_q  [0:NC-1];     // faulting PC
   // ---- shared state --------------------------------------------------------
-  wire [32*NC-1:0] last2_q;         // STEPS - 2: sdone_q before the last endi but one, per context
+  reg [31:0]   last2_q;             // STEPS - 2: sdone_q before the last endi but one
   reg [NC-1:0] near_q;              // sdone_q == last2_q (a cycle old)
   reg          fvalid_q;            // a fetched word arrives (FETCH_STAGE: two cycles later)
   reg [CW-1:0] fctx_q;              // ... for this context
@@ -325,7 +325,6 @@ module fp3_scheduler #(
   wire          a_endi  = asdec[2];
   wire          a_beq   = asdec[1];
   wire          a_halt  = asdec[0];
-  wire [2:0]    a_use   = {asdec[SW-4], asdec[SW-2], asdec[SW-3]};  // {rd, rb, ra} used
   wire          a_atend;    // ... at the memory's last address (compared a cycle ahead: u_arrive)
   wire [DW-1:0] adec    = {!asdec[SW-1], asdec[SW-2:0], a_atend && !a_halt && !a_endi};
 
@@ -451,15 +450,8 @@ module fp3_scheduler #(
       assign bctx = nctx;
     end
   endgenerate
-  // The flags of bctx's context announced in cycle a (early_*_i now):
-  // with FETCH_STAGE and PICK_STAGES = 2 compared a cycle ahead, from the
-  // tag lines' pre_*_i and bctx's value of the next cycle, and registered
-  // (amask, g_mask_ahead below), so that bctx meets only the flags'
-  // multiplexer here, not the announcements' compares (bctx -> bq_q was a
-  // critical path).
-  wire [RN-1:0] amask;
   always @(posedge clk_i)
-    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~amask;
+    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, bctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
@@ -537,23 +529,9 @@ module fp3_scheduler #(
       assign pg_w[c] = pgv;
       assign pg_rd[c*IW +: IW] = rdg_q;
       // The fresh word's wait bits: flag not freed, or pending, or written
-      // by the head granted in its arrival cycle (sj_g: if it was).  For
-      // its readiness the looked-up flags (lk_q) are left out (r_k, r_g)
-      // and taken last (lk_hit, below), so that lk_q, which every
-      // context reads, meets two LUTs in front of ready_q, not the wait
-      // bits' and the slots' selects (lk_q -> the ready step was a
-      // critical path).
+      // by the head granted in its arrival cycle (sj_g: if it was).
       wire [2:0] sj_k = lk_q | pd_q;
       wire [2:0] sj_g = sj_k | hw_q;
-      wire [2:0] rj_g = pd_q | hw_q;
-      // The arriving word's used fields not freed in the cycle after its
-      // arrival (its use bits and fa_q's compares, registered as it is
-      // written into its slot): those whose looked-up flag makes it wait.
-      reg  [2:0] mq_q;
-      always @(posedge clk_i)
-        mq_q <= a_use & ~{`FP3_FREED(c_rd), `FP3_FREED(c_rb), `FP3_FREED(c_ra)};
-      (* keep *) wire lk_hit;      // the fresh word waits for a looked-up flag
-      assign lk_hit = |(lk_q & mq_q);
       // Whether the head was granted in the last cycle (gr_q[c]) is the
       // last choice, of the wait bits and of the head's readiness, each
       // decided for both outcomes (s_k, s_g; rdy_k, rdy_g): one LUT
@@ -603,12 +581,9 @@ module fp3_scheduler #(
         // The wait bits, with this cycle's announcements taken off.
         wire [2:0] s_k = fr_q[I] ? sj_k & ~fa_q : s_q[I] & ~fq_q;
         wire [2:0] s_g = fr_q[I] ? sj_g & ~fa_q : (s_q[I] | by_q) & ~fq_q;
-        // ... and without the looked-up flags, for the readiness
-        wire [2:0] r_k = fr_q[I] ? pd_q & ~fa_q : s_q[I] & ~fq_q;
-        wire [2:0] r_g = fr_q[I] ? rj_g & ~fa_q : (s_q[I] | by_q) & ~fq_q;
         wire [2:0] u   = {use_rd, use_rb, use_ra};
-        assign srdy_k[e] = lgl && !(|(u & r_k));
-        assign srdy_g[e] = lgl && !(|(u & r_g));
+        assign srdy_k[e] = lgl && !(|(u & s_k));
+        assign srdy_g[e] = lgl && !(|(u & s_g));
         assign s_d[I*3 +: 3] = gr_q[c] ? s_g : s_k;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
@@ -625,9 +600,7 @@ module fp3_scheduler #(
       (* keep *) wire rdy_g;
       assign rdy_k = act[c] && (hp ? v_q[2*c+1] && srdy_k[1] : v_q[2*c] && srdy_k[0]);
       assign rdy_g = act[c] && (hp ? v_q[2*c+1] && srdy_g[1] : v_q[2*c] && srdy_g[0]);
-      // The head is the fresh word, which waits if a looked-up flag is set.
-      wire fresh_h = hp ? fr_q[2*c+1] : fr_q[2*c];
-      assign ready_d[c] = (gr_q[c] ? rdy_g : rdy_k) && !(fresh_h && lk_hit);
+      assign ready_d[c] = gr_q[c] ? rdy_g : rdy_k;
     end
   endgenerate
 `undef FP3_FREED
@@ -814,24 +787,17 @@ module fp3_scheduler #(
         .d_i   ((!rst_i && running_o) ? fr : fcm_q),
         .q_o   (fcm_q)
       );
-      // The announcements of cycle a, shown on pre_*_i in cycle a - 2 (a
-      // tag line's early_*_i are its pre_*_i a cycle late, cleared by
-      // reset), for the context fcm_q, which is bctx in cycle a - 1.
-      reg [RN-1:0] amask_q;
       always @(posedge clk_i) begin
         smask_q <= flag1(!rst_i && running_o && pg_w[fcm_q], pg_rd[fcm_q*IW +: IW]);
         cmask_q <= ann3(early_valid_i, early_idx_i, fcm_q);
-        amask_q <= ann3(pre_valid_i & {3{!rst_i}}, pre_idx_i, fcm_q);
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
-      assign amask = amask_q;
       wire unused_ahead = &{1'b0, ahead_valid_i, ahead_idx_i};  // (early_*_i, a cycle before)
     end else begin : g_mask_now
       assign smask = flag1(issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx,
                            rd_o[IW-1:0]);
       assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx);
-      assign amask = ann3(early_valid_i, early_idx_i, bctx);
       wire unused_pg = &{1'b0, pg_w, pg_rd};  // (the issue register, now)
     end
   endgenerate
@@ -1062,6 +1028,7 @@ module fp3_scheduler #(
       bad_q     <= 1'b0;
       bad_err_q <= ERR_NONE;
       final_q   <= {NC{1'b0}};
+      last2_q   <= 32'd0;
     end else begin
       start_q   <= start_ok;
       bad_q     <= bad_start;
@@ -1069,7 +1036,8 @@ module fp3_scheduler #(
       if (!running_o) begin
         // What the run needs of STEPS follows it while stopped (the
         // values taken at START's edge are the run's), so that START's
-        // decode does not enable these flip-flops (last2_q too, below).
+        // decode does not enable these 40 flip-flops.
+        last2_q <= steps_last2_i;
         final_q <= {NC{steps_one_i}};
         if (start_ok) begin
           running_o <= 1'b1;
@@ -1287,21 +1255,9 @@ module fp3_scheduler #(
   // after START), so in the cycle after an endi's grant near_q compares
   // sdone_q of the grant's cycle: its earlier endis counted, not it.  And
   // final_q is up to date at the next endi's grant.
-  // STEPS - 2, a copy per context beside its compare (one register read
-  // by every context's 32-bit compare across the die was a critical
-  // path), kept so that Yosys does not merge the copies.
-  generate
-    for (c = 0; c < NC; c = c + 1) begin : g_last2
-      fp3_keep #(.W(32)) u_last2 (
-        .clk_i (clk_i),
-        .d_i   (running_o ? last2_q[c*32 +: 32] : steps_last2_i),
-        .q_o   (last2_q[c*32 +: 32])
-      );
-    end
-  endgenerate
   integer n;
   always @(posedge clk_i) begin
-    for (n = 0; n < NC; n = n + 1) near_q[n] <= sdone_q[n] == last2_q[n*32 +: 32];
+    for (n = 0; n < NC; n = n + 1) near_q[n] <= sdone_q[n] == last2_q;
   end
 
 `ifdef FORMAL
