@@ -676,7 +676,8 @@ module fp3_scheduler #(
   // hp_q a cycle late, the head's slot in the grant's cycle, not hp_q's
   // next state (hp_q ^ gone): the grant crossed the die to this copy
   // through a gate, the end of six of twelve placements of ec498be (the
-  // issue arbiter's loop in five, the copy's route to the pick in one).
+  // grant's route to the copy in five, the copy's route to the pick in
+  // one).
   fp3_keep #(.W(NC)) u_hp_imm (
     .clk_i (clk_i),
     .d_i   (hp_q),

@@ -255,6 +255,7 @@ module fp3_top #(
   wire          pick_wr;                              // the next issue's destination
   wire [XW-1:0] pick_rd;
   wire [1:0]    pick_unit;
+  wire          pick_mov = pick_wr && pick_unit == UNIT_MOV;   // ... to the move path
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
@@ -423,7 +424,7 @@ module fp3_top #(
     if (PICK != 0) begin : g_mov_copy
       fp3_keep #(.W(1 + XW)) u_mov_copy (
         .clk_i (clk_i),
-        .d_i   ({pick_wr && pick_unit == UNIT_MOV, pick_rd}),
+        .d_i   ({pick_mov, pick_rd}),
         .q_o   ({mov_issue, mov_rd})
       );
     end else begin : g_mov_issue
@@ -436,7 +437,7 @@ module fp3_top #(
     .rst_i         (rst_i),
     .valid_i       (mov_issue),
     .idx_i         (mov_rd),
-    .pvalid_i      (pick_wr && pick_unit == UNIT_MOV),
+    .pvalid_i      (pick_mov),
     .pidx_i        (pick_rd),
     .pre_valid_o   (movp_valid),
     .pre_idx_o     (movp_idx),
