@@ -19,7 +19,7 @@
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 #define DEFAULT_PROGRAM "programs/ship_rk4_sleep.s"
-#define DEFAULT_FMAX 33.3 /* MHz: README, make pnr, default build on LFE5U-85F-6 */
+#define DEFAULT_FMAX 40.5 /* MHz: README "Results" Fmax row, make pnr, default build on LFE5U-85F-6 */
 #define MAX_FRAMES 10000000u
 #define MAX_SHIPS 1000000u
 
