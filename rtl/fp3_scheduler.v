@@ -54,6 +54,16 @@
 //           registered, and it issues in the cycle after that.  So neither
 //           the arbiter nor a wide multiplexer sits in front of the
 //           register file, and no multiplexer behind the arbiter.
+//           PICK_STAGES = 2 also cuts the loop of ready and issue twice:
+//           each queue slot's readiness is registered before the choice by
+//           the last grants, and the arbiter's decision is registered
+//           before it is the grant.  A context is then granted at most
+//           every third cycle, and its head's readiness, two cycles later
+//           than it would be, sees the add and multiply lines'
+//           announcements two cycles earlier (fp3_wb_tag pre3_*), which
+//           gives the two cycles back to their consumers; a move's
+//           consumer and a word that has just arrived wait two cycles
+//           more ("The issue loop's registered stages", below).
 //
 // WAR needs no check: operands are read at issue, in order.  A cycle
 // without issue while some active context holds an instruction is a stall.
@@ -135,6 +145,12 @@ module fp3_scheduler #(
   input  wire [3*(CW+IW)-1:0]         early_idx_i,
   input  wire [2:0]                   pre_valid_i,   // ... those of the cycle after
   input  wire [3*(CW+IW)-1:0]         pre_idx_i,     //     (early_*_i a cycle ahead)
+  // ... two and three cycles ahead of early_*_i, add and mul ports only,
+  // as far as their tag lines reach (fp3_wb_tag; used with PICK_STAGES = 2)
+  input  wire [1:0]                   pre2_valid_i,
+  input  wire [2*(CW+IW)-1:0]         pre2_idx_i,
+  input  wire [1:0]                   pre3_valid_i,
+  input  wire [2*(CW+IW)-1:0]         pre3_idx_i,
   input  wire                         idle_i,        // no busy flag in the last cycle
   // a beq issued two cycles ago, resolved: its context (one-hot; none if
   // no beq was) and outcome
@@ -394,6 +410,8 @@ module fp3_scheduler #(
   reg  [2*NC-1:0] fr_q;           // the slot's word arrived last cycle
   reg  [NC-1:0] gone_q;           // the grant of the last cycle
   wire [NC-1:0] gr_q;             // ... its copy for the ready step (below)
+  reg  [NC-1:0] gr2_q;            // ... gr_q a cycle late: the grant two cycles ago
+  always @(posedge clk_i) gr2_q <= gr_q;
   wire [NC-1:0] hpi_q;            // hp_q's copy for the immediate's pick (below)
   wire [2:0]    a_pend  = {3{iss_dst}} & {rd_o == {actx, a_rd}, rd_o == {actx, a_rb},
                                           rd_o == {actx, a_ra}};
@@ -410,6 +428,13 @@ module fp3_scheduler #(
   // by the issue step (below), as one-hot masks over the context's
   // registers.
   localparam integer RN = 1 << IW;  // flags per context
+  // With the issue loop's registered stages (PICK_STAGES = 2) a wait bit
+  // may be cleared by an announcement up to two cycles before it is made
+  // (below): the lookup also takes off the add and mul lines'
+  // announcements of cycles a + 1 and a + 2 (pre_*_i and pre2_*_i now),
+  // the ones that the word's compares in its slot, from cycle a + 1 on,
+  // see no more.
+  localparam [0:0] LEAD = PICK_STAGES == 2;
   wire [CW-1:0] nctx;               // (the fetch step's narr, encoded)
   wire [RN-1:0] smask, cmask;
   reg  [RN-1:0] bq_q;               // the arriving word's context's flags (cycle a)
@@ -451,7 +476,9 @@ module fp3_scheduler #(
     end
   endgenerate
   always @(posedge clk_i)
-    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, bctx);
+    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, bctx)
+            & ~ann3({1'b0, pre_valid_i[1:0] & {2{LEAD}}}, pre_idx_i, bctx)
+            & ~ann3({1'b0, pre2_valid_i & {2{LEAD}}}, {{XW{1'b0}}, pre2_idx_i}, bctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
@@ -461,8 +488,18 @@ module fp3_scheduler #(
   // now, which issues in the next cycle.
   wire [NC-1:0]    pg_w;
   wire [NC*IW-1:0] pg_rd;
+  // The announcements the per-context copies (below) register: add and
+  // mul three cycles ahead of early_*_i (pre3_*_i), move a cycle ahead
+  // (pre_*_i: its line is the shortest, MOV_LATENCY = 1 + PICK_STAGES, and
+  // its announcement is its pick; fp3_top).
+  wire [2:0]      cp_valid = {pre_valid_i[2], pre3_valid_i};
+  wire [3*XW-1:0] cp_idx   = {pre_idx_i[2*XW +: XW], pre3_idx_i};
   genvar c, e, l;
   generate
+    if (PICK_STAGES != 2) begin : g_no_lead
+      // (No copies and no registered stages in the issue loop.)
+      wire unused_lead = &{1'b0, cp_valid, cp_idx, pre2_valid_i, pre2_idx_i, gr2_q};
+    end
     for (c = 0; c < NC; c = c + 1) begin : g_ctx
       localparam [CW-1:0] CTX = c[CW-1:0];
       wire          hp = hp_q[c];
@@ -475,15 +512,17 @@ module fp3_scheduler #(
       // compares: with PICK_STAGES = 2 a copy of their own, registered
       // from pre_*_i and kept, so that the three tag lines' indices do not
       // each fan out to every context's compares across the die (a
-      // critical path: 5.4-5.8 ns of routing).
+      // critical path: 5.4-5.8 ns of routing).  The add and mul lines'
+      // copies are registered from pre3_*_i: they show the announcements
+      // two cycles early, for the issue loop's registered stages (below).
       wire [2:0]      ev;
       wire [3*IW-1:0] er;
       for (l = 0; l < 3; l = l + 1) begin : g_line
         if (PICK_STAGES == 2) begin : g_copy
           fp3_keep #(.W(1 + IW)) u_early_copy (
             .clk_i (clk_i),
-            .d_i   ({!rst_i && pre_valid_i[l] && pre_idx_i[l*XW + IW +: CW] == CTX,
-                     pre_idx_i[l*XW +: IW]}),
+            .d_i   ({!rst_i && cp_valid[l] && cp_idx[l*XW + IW +: CW] == CTX,
+                     cp_idx[l*XW +: IW]}),
             .q_o   ({ev[l], er[l*IW +: IW]})
           );
         end else begin : g_shared
@@ -582,8 +621,24 @@ module fp3_scheduler #(
         wire [2:0] s_k = fr_q[I] ? sj_k & ~fa_q : s_q[I] & ~fq_q;
         wire [2:0] s_g = fr_q[I] ? sj_g & ~fa_q : (s_q[I] | by_q) & ~fq_q;
         wire [2:0] u   = {use_rd, use_rb, use_ra};
-        assign srdy_k[e] = lgl && !(|(u & s_k));
-        assign srdy_g[e] = lgl && !(|(u & s_g));
+        if (PICK_STAGES == 2) begin : g_ready_reg
+          // The slot's readiness for either outcome, registered and chosen
+          // a cycle later by whether its context was granted in either of
+          // the last two cycles (with issue spacing 3, in one at most); a
+          // fresh slot's is not known yet (its word was not in the slot a
+          // cycle ago).  See "The issue loop's registered stages".
+          reg rk_q, rg_q;
+          always @(posedge clk_i) begin
+            rk_q <= lgl && !(|(u & s_k));
+            rg_q <= lgl && !(|(u & s_g));
+          end
+          wire ok = !fr_q[I] && (gr_q[c] || gr2_q[c] ? rg_q : rk_q);
+          assign srdy_k[e] = ok;
+          assign srdy_g[e] = ok;
+        end else begin : g_ready_now
+          assign srdy_k[e] = lgl && !(|(u & s_k));
+          assign srdy_g[e] = lgl && !(|(u & s_g));
+        end
         assign s_d[I*3 +: 3] = gr_q[c] ? s_g : s_k;
       end
       // The head's fields, and the last head's (hp_q has moved on if it
@@ -645,18 +700,55 @@ module fp3_scheduler #(
     .d_i   (gone),
     .q_o   (gl_q)
   );
-  wire [NC-1:0] cand  = ready_q & ~gl_q;   // (the ready step counts only active contexts)
-  wire          grant = |cand;
+  // PICK_STAGES = 2: the arbiter's decision is registered (dec_q) before
+  // it is the grant (gone), so that the loop from ready_q through the
+  // arbiter's carry chain ends at a register of its own.  The context
+  // decided in the last cycle (dec_q, the grant of this cycle) and the one
+  // decided before (gl_q, the last grant) are no candidates: the ready step
+  // heard of neither when it made ready_q (it chooses by the grant of the
+  // last cycle).  So a context is granted at most every third cycle.  The
+  // round-robin position moves with the grant, a cycle after the decision.
   wire [NC-1:0] ipick;
-  fp3_rr_arbiter #(.N(NC)) u_issue_arb (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i || !running_o),
-    .req_i   (ready_q),
-    .pick_o  (ipick),
-    .take_i  (grant),
-    .taken_i (gone)
-  );
-  assign gone = ipick & ~gl_q;        // the head leaves its queue
+  wire          grant;        // a context is granted (one-hot: gone)
+  generate
+    if (PICK_STAGES == 2) begin : g_grant_reg
+      reg  [NC-1:0] dec_q;
+      reg           dec_any_q;
+      wire [NC-1:0] cand = ready_q & ~gl_q & ~dec_q;
+      fp3_rr_arbiter #(.N(NC)) u_issue_arb (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i || !running_o),
+        .req_i   (cand),
+        .pick_o  (ipick),
+        .take_i  (dec_any_q),
+        .taken_i (dec_q)
+      );
+      // (While stopped ready_q is clear, so cand and ipick are.)
+      always @(posedge clk_i) begin
+        if (rst_i) begin
+          dec_q     <= {NC{1'b0}};
+          dec_any_q <= 1'b0;
+        end else begin
+          dec_q     <= ipick;
+          dec_any_q <= |cand;
+        end
+      end
+      assign gone  = dec_q;     // the head leaves its queue
+      assign grant = dec_any_q;
+    end else begin : g_grant_now
+      wire [NC-1:0] cand = ready_q & ~gl_q;   // (the ready step counts only active contexts)
+      fp3_rr_arbiter #(.N(NC)) u_issue_arb (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i || !running_o),
+        .req_i   (ready_q),
+        .pick_o  (ipick),
+        .take_i  (grant),
+        .taken_i (gone)
+      );
+      assign grant = |cand;
+      assign gone  = ipick & ~gl_q;   // the head leaves its queue
+    end
+  endgenerate
   wire [CW-1:0] g     = encode(gone);
   // The granted head's fields, picked from the heads' fields (selected by
   // the head pointers beside the arbiter, from registers only) by the
@@ -1261,8 +1353,9 @@ module fp3_scheduler #(
   end
 
 `ifdef FORMAL
-  // The granted context is a candidate, and is active.
-  always @(*) if (grant) assert (cand[g] && act[g]);
+  // The granted context is active (with PICK_STAGES = 2, decided a cycle
+  // before: it has not issued since, so it has not stopped).
+  always @(*) if (grant) assert (act[g]);
 `endif
 endmodule
 `default_nettype wire

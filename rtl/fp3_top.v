@@ -250,6 +250,12 @@ module fp3_top #(
   wire [XW-1:0] adde_idx, mule_idx, move_idx;
   wire          addp_valid, mulp_valid, movp_valid;   // ... and a cycle before that
   wire [XW-1:0] addp_idx, mulp_idx, movp_idx;
+  wire          addp2_valid, mulp2_valid, movp2_valid;   // ... and a cycle before that
+  wire [XW-1:0] addp2_idx, mulp2_idx, movp2_idx;
+  wire          addp3_valid, mulp3_valid, movp3_valid;   // ... and a cycle before that
+  wire [XW-1:0] addp3_idx, mulp3_idx, movp3_idx;
+  // (The move line's announcement is its pick: it reaches no further.)
+  wire unused_movp23 = &{1'b0, movp2_valid, movp2_idx, movp3_valid, movp3_idx};
   wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx;
   wire          pick_wr;                              // the next issue's destination
@@ -290,6 +296,10 @@ module fp3_top #(
     .early_idx_i      ({move_idx, mule_idx, adde_idx}),
     .pre_valid_i      ({movp_valid, mulp_valid, addp_valid}),
     .pre_idx_i        ({movp_idx, mulp_idx, addp_idx}),
+    .pre2_valid_i     ({mulp2_valid, addp2_valid}),
+    .pre2_idx_i       ({mulp2_idx, addp2_idx}),
+    .pre3_valid_i     ({mulp3_valid, addp3_valid}),
+    .pre3_idx_i       ({mulp3_idx, addp3_idx}),
     .idle_i           (idle),
     .br_i             (br_q),
     .br_taken_i       (br_taken_q),
@@ -383,6 +393,10 @@ module fp3_top #(
     .pidx_i        (pick_rd),
     .pre_valid_o   (addp_valid),
     .pre_idx_o     (addp_idx),
+    .pre2_valid_o  (addp2_valid),
+    .pre2_idx_o    (addp2_idx),
+    .pre3_valid_o  (addp3_valid),
+    .pre3_idx_o    (addp3_idx),
     .early_valid_o (adde_valid),
     .early_idx_o   (adde_idx),
     .ahead_valid_o (adda_valid),
@@ -401,6 +415,10 @@ module fp3_top #(
     .pidx_i        (pick_rd),
     .pre_valid_o   (mulp_valid),
     .pre_idx_o     (mulp_idx),
+    .pre2_valid_o  (mulp2_valid),
+    .pre2_idx_o    (mulp2_idx),
+    .pre3_valid_o  (mulp3_valid),
+    .pre3_idx_o    (mulp3_idx),
     .early_valid_o (mule_valid),
     .early_idx_o   (mule_idx),
     .ahead_valid_o (mula_valid),
@@ -441,6 +459,10 @@ module fp3_top #(
     .pidx_i        (pick_rd),
     .pre_valid_o   (movp_valid),
     .pre_idx_o     (movp_idx),
+    .pre2_valid_o  (movp2_valid),
+    .pre2_idx_o    (movp2_idx),
+    .pre3_valid_o  (movp3_valid),
+    .pre3_idx_o    (movp3_idx),
     .early_valid_o (move_valid),
     .early_idx_o   (move_idx),
     .ahead_valid_o (mova_valid),

@@ -12,9 +12,14 @@
 // index and the trace.  The announcement is also shown a cycle before it
 // is made, on early_*_o in cycle W - AHEAD - 1, so that the scheduler can
 // compare it with its queued instructions' registers a cycle ahead and
-// keep the outcome in a register.  And a cycle before that, on pre_*_o
-// (early_* of the next cycle), for registers that copy the announcement
-// beside groups of its loads (fp3_scheduler's per-context copies).
+// keep the outcome in a register.  And, for registers that copy the
+// announcement beside groups of its loads (fp3_scheduler's per-context
+// copies) or that look further ahead (its issue loop's registered stages),
+// one, two and three cycles before that, on pre_*_o, pre2_*_o and
+// pre3_*_o: taps of the line, as far back as it reaches; the pick (the
+// issue a cycle ahead) is the earliest, and a tap the line is too short
+// for shows the pick, later than its name (the scheduler's ready step is
+// then as much later for this unit's consumers, never early).
 //
 // Parameters
 //   XW           index width ({context, register})
@@ -24,12 +29,15 @@
 // Ports
 //   valid_i, idx_i  an operation for this unit issues this cycle
 //   pvalid_i, pidx_i  the operation picked: valid_i, idx_i of the next
-//                   cycle (the issue a cycle ahead); used only with
-//                   ISSUE_TO_WB = AHEAD + 1, where it is pre_*_o
+//                   cycle (the issue a cycle ahead); the taps that reach
+//                   past the line's start (issue) show it
 //   pre_valid_o, pre_idx_o  ... will be written back in AHEAD + 2 cycles
-//                   (the line's stage in front of early_*_o; with
-//                   ISSUE_TO_WB = AHEAD + 2, valid_i, idx_i; with AHEAD + 1,
-//                   pvalid_i, pidx_i)
+//                   (the line's stage in front of early_*_o; the pick if
+//                   ISSUE_TO_WB = AHEAD + 1)
+//   pre2_valid_o, pre2_idx_o  ... in AHEAD + 3 cycles (ISSUE_TO_WB >=
+//                   AHEAD + 2; else as pre_*_o)
+//   pre3_valid_o, pre3_idx_o  ... in AHEAD + 4 cycles (ISSUE_TO_WB >=
+//                   AHEAD + 3; else as pre2_*_o)
 //   early_valid_o, early_idx_o  ... will be written back in AHEAD + 1
 //                   cycles (with ISSUE_TO_WB = AHEAD + 1, valid_i, idx_i)
 //   ahead_valid_o, ahead_idx_o  ... will be written back in AHEAD cycles
@@ -51,6 +59,10 @@ module fp3_wb_tag #(
   input  wire [XW-1:0] pidx_i,
   output wire          pre_valid_o,
   output wire [XW-1:0] pre_idx_o,
+  output wire          pre2_valid_o,
+  output wire [XW-1:0] pre2_idx_o,
+  output wire          pre3_valid_o,
+  output wire [XW-1:0] pre3_idx_o,
   output wire          early_valid_o,
   output wire [XW-1:0] early_idx_o,
   output wire          ahead_valid_o,
@@ -60,33 +72,54 @@ module fp3_wb_tag #(
   output wire          wb_valid_o,
   output wire [XW-1:0] wb_idx_o
 );
+  // The line from the issue to the announcement shown early: stage j
+  // (0 .. D) holds the operation issued j cycles ago; stage D is early_*_o.
+  // A tap k cycles before early_*_o is stage D - k, or the pick for
+  // k = D + 1; taps the line does not reach take the pick (the earliest
+  // the line knows of the operation).
+  localparam integer D = ISSUE_TO_WB - AHEAD - 1;
+  wire [D:0]          line_v;
+  wire [(D+1)*XW-1:0] line_i;
+  assign line_v[0]       = valid_i;
+  assign line_i[0 +: XW] = idx_i;
+  genvar j;
   generate
-    if (ISSUE_TO_WB == AHEAD + 1) begin : g_early_input
-      // The announcement is the issue itself: a cycle before, the pick.
-      assign pre_valid_o   = pvalid_i;
-      assign pre_idx_o     = pidx_i;
-      assign early_valid_o = valid_i;
-      assign early_idx_o   = idx_i;
-    end else begin : g_early_line
-      fp_pipe #(.WIDTH(XW), .DEPTH(ISSUE_TO_WB - AHEAD - 2)) u_to_pre (
+    if (D < 0) begin : g_bad_line
+      // Elaboration error on purpose: ISSUE_TO_WB must exceed AHEAD.
+      fp3_wb_tag_error_ISSUE_TO_WB_must_exceed_AHEAD u_error ();
+    end
+    for (j = 1; j <= D; j = j + 1) begin : g_line
+      fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_stage (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
-        .valid_i (valid_i),
-        .data_i  (idx_i),
-        .valid_o (pre_valid_o),
-        .data_o  (pre_idx_o)
+        .valid_i (line_v[j-1]),
+        .data_i  (line_i[(j-1)*XW +: XW]),
+        .valid_o (line_v[j]),
+        .data_o  (line_i[j*XW +: XW])
       );
-      fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_early (
-        .clk_i   (clk_i),
-        .rst_i   (rst_i),
-        .valid_i (pre_valid_o),
-        .data_i  (pre_idx_o),
-        .valid_o (early_valid_o),
-        .data_o  (early_idx_o)
-      );
-      wire unused_pick = &{1'b0, pvalid_i, pidx_i};  // (the line has the stage)
     end
   endgenerate
+  assign early_valid_o = line_v[D];
+  assign early_idx_o   = line_i[D*XW +: XW];
+  // The taps: k = 1 (pre_*_o), 2 (pre2_*_o), 3 (pre3_*_o).
+  wire [3:1]      tap_v;
+  wire [3*XW-1:0] tap_i;              // tap k in [(k-1)*XW +: XW]
+  generate
+    for (j = 1; j <= 3; j = j + 1) begin : g_tap
+      if (j <= D) begin : g_stage
+        assign tap_v[j]              = line_v[D-j];
+        assign tap_i[(j-1)*XW +: XW] = line_i[(D-j)*XW +: XW];
+      end else begin : g_pick
+        assign tap_v[j]              = pvalid_i;
+        assign tap_i[(j-1)*XW +: XW] = pidx_i;
+      end
+    end
+    if (D >= 3) begin : g_no_pick
+      wire unused_pick = &{1'b0, pvalid_i, pidx_i};  // (the line has every tap)
+    end
+  endgenerate
+  assign {pre3_valid_o, pre2_valid_o, pre_valid_o} = tap_v;
+  assign {pre3_idx_o, pre2_idx_o, pre_idx_o}       = tap_i;
   fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_ahead (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
