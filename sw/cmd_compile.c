@@ -42,9 +42,9 @@ static void usage(FILE *f) {
           "  --add-latency N, --mul-latency N   core latencies (ADD_LATENCY, MUL_LATENCY) to schedule for\n"
           "                   (default %u and %u, sw/fp3_isa.h)\n"
           "  --fmax-pipe      schedule and estimate for the build for clock rate\n"
-          "                   (FMAX_PIPE=1: a move's consumer waits %d cycles more, a\n"
-          "                   context fetches at most every %d cycles; add and mul\n"
-          "                   latencies of at least %d)\n"
+          "                   (FMAX_PIPE=1: a latency counts as at least %d, a context\n"
+          "                   fetches at most every %d cycles and issues at most every\n"
+          "                   %d; add and mul latencies of at least %d)\n"
           "  --json           the report as one JSON object on standard output\n"
           "                   (with -o only)\n"
           "\n"
@@ -55,8 +55,9 @@ static void usage(FILE *f) {
           "Exit status: 0 written; 2 bad arguments, scene or integrator; 1 the\n"
           "output could not be written.\n",
           fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
-          (unsigned)FP3_DEFAULT_MUL_LATENCY, FP3_FMAX_PIPE_PICK_STAGES,
-          FP3_FMAX_PIPE_FETCH_SPACING, FP3_FMAX_PIPE_PICK_STAGES + 1);
+          (unsigned)FP3_DEFAULT_MUL_LATENCY, FP3_FMAX_PIPE_FULL_LEAD_LATENCY,
+          FP3_FMAX_PIPE_FETCH_SPACING, FP3_FMAX_PIPE_ISSUE_SPACING,
+          FP3_FMAX_PIPE_PICK_STAGES + 1);
 }
 
 /* A latency option value 1..64. */

@@ -301,15 +301,23 @@ struct fp3_compiled {
 /* Cycles from the issue of an instruction of `unit` to the issue of a
  * dependent one: the register file's read stage plus the unit's latency
  * (fp3_isa.h FP3_READ_CYCLES; FMAX_PIPE's move path is
- * FP3_FMAX_PIPE_PICK_STAGES longer). */
+ * FP3_FMAX_PIPE_PICK_STAGES longer, and its latencies count as at least
+ * FP3_FMAX_PIPE_FULL_LEAD_LATENCY). */
 static unsigned unit_latency(const fp3_compile_opts *o, unsigned unit) {
+  unsigned lat;
   switch (unit) {
-  case FP3_UNIT_ADD: return FP3_READ_CYCLES + o->add_latency;
-  case FP3_UNIT_MUL: return FP3_READ_CYCLES + o->mul_latency;
-  case FP3_UNIT_MOV:
-    return FP3_READ_CYCLES + o->mov_latency + (o->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0);
+  case FP3_UNIT_ADD: lat = o->add_latency; break;
+  case FP3_UNIT_MUL: lat = o->mul_latency; break;
+  case FP3_UNIT_MOV: lat = o->mov_latency + (o->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0); break;
   default: return 1;
   }
+  if (o->fmax_pipe && lat < FP3_FMAX_PIPE_FULL_LEAD_LATENCY) lat = FP3_FMAX_PIPE_FULL_LEAD_LATENCY;
+  return FP3_READ_CYCLES + lat;
+}
+
+/* Cycles from a context's grant to its next (fp3_isa.h). */
+static int issue_spacing(const fp3_compile_opts *o) {
+  return o->fmax_pipe ? FP3_FMAX_PIPE_ISSUE_SPACING : FP3_ISSUE_SPACING;
 }
 
 static unsigned node_opc(int kind) {
@@ -389,7 +397,7 @@ static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int n
     bi[best].placed = 1;
     bi[best].issue = best_at;
     order[placed] = best;
-    cycle = best_at + FP3_ISSUE_SPACING;
+    cycle = best_at + issue_spacing(o);
   }
   return 0;
 }
@@ -827,7 +835,8 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
   /* Times are cycles of the scheduler's grants (fp3_scheduler.v; the
    * issue of the default build).  Fetch to grant, fetch to fetch, grant to
    * issue: */
-  const long to_grant = FP3_START_CYCLES + (lat->fmax_pipe ? FP3_FMAX_PIPE_FETCH_STAGES : 0);
+  const long to_grant =
+      FP3_START_CYCLES + (lat->fmax_pipe ? FP3_FMAX_PIPE_FETCH_STAGES + FP3_FMAX_PIPE_GRANT_STAGES : 0);
   const long fetch_spacing = lat->fmax_pipe ? FP3_FMAX_PIPE_FETCH_SPACING : FP3_FETCH_SPACING;
   const long pick = lat->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0;
   long ready[256] = {0};   /* a register's earliest grant to read or write it */
@@ -852,7 +861,7 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
     if ((uses & FP3_USES_RD) && ready[fp3_insn_rd(w)] > at) at = ready[fp3_insn_rd(w)];
     if (uses & FP3_USES_RD) ready[fp3_insn_rd(w)] = at + (long)unit_latency(lat, unit);
     *slot = at + 1;
-    t = at + FP3_ISSUE_SPACING;
+    t = at + issue_spacing(lat);
     if (opc == FP3_OP_ENDI) {
       const long issue = at + pick;
       it++;

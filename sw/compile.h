@@ -25,7 +25,8 @@
  *    code elimination) -- all three exact;
  *  - the loop body is list-scheduled for in-order single issue (a
  *    dependent instruction issues FP3_READ_CYCLES + `latency` cycles
- *    after its producer, one context every FP3_ISSUE_SPACING cycles;
+ *    after its producer, one context every FP3_ISSUE_SPACING cycles
+ *    (FP3_FMAX_PIPE_ISSUE_SPACING for the build for clock rate);
  *    priority: the longest latency path to the end of the integration),
  *    registers are allocated within num_regs, least recently written
  *    first (a register written again soon after its previous write would
@@ -55,8 +56,8 @@ typedef struct fp3_compile_opts {
                             FP3_FMAX_PIPE_PICK_STAGES)                    */
   unsigned num_regs;     /* registers per context                         */
   unsigned fmax_pipe;    /* 1: for the build for clock rate (FMAX_PIPE=1,
-                            fp3_config.fmax_pipe): its pick and fetch
-                            stages (fp3_isa.h FP3_FMAX_PIPE_*); needs
+                            fp3_config.fmax_pipe): its pick, fetch and
+                            issue stages (fp3_isa.h FP3_FMAX_PIPE_*); needs
                             add_latency, mul_latency >
                             FP3_FMAX_PIPE_PICK_STAGES; 0: the default   */
 } fp3_compile_opts;
@@ -130,9 +131,11 @@ int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_
  * into a queue of FP3_QUEUE_WORDS, whose slot frees in the cycle after its
  * word's grant; the first fetch in cycle 0 after START (with fmax_pipe
  * FP3_FMAX_PIPE_START_STAGES later); a word granted
- * FP3_START_CYCLES (+ FP3_FMAX_PIPE_FETCH_STAGES) after its fetch at the
- * earliest, at most one grant every FP3_ISSUE_SPACING cycles, a dependent
- * one FP3_READ_CYCLES + `latency` cycles after its producer's, a
+ * FP3_START_CYCLES (+ FP3_FMAX_PIPE_FETCH_STAGES +
+ * FP3_FMAX_PIPE_GRANT_STAGES) after its fetch at the earliest, at most one
+ * grant every FP3_ISSUE_SPACING (FP3_FMAX_PIPE_ISSUE_SPACING) cycles, a
+ * dependent one FP3_READ_CYCLES + `latency` cycles after its producer's
+ * (with fmax_pipe a latency of at least FP3_FMAX_PIPE_FULL_LEAD_LATENCY), a
  * destination written again only when its previous write has landed; an
  * issue FP3_FMAX_PIPE_PICK_STAGES after its grant with fmax_pipe, else in
  * the grant's cycle.  Exact for one context of either build on programs

@@ -42,10 +42,12 @@ typedef struct fp3_config {
   unsigned has_mul;     /* 1: a mul core (HAS_MUL); 0: mul illegal        */
   unsigned fmax_pipe;   /* 1: the pipeline for clock rate (FMAX_PIPE, RTL
                            only): same dependent-issue distances after an
-                           add or mul, a move's consumer 2 cycles later
-                           (FP3_FMAX_PIPE_PICK_STAGES), a beq
+                           add or mul of latency >=
+                           FP3_FMAX_PIPE_FULL_LEAD_LATENCY (shorter ones
+                           and the move path count as that), a beq
                            FP3_FMAX_PIPE_CYCLES longer, a context fetching
-                           every FP3_FMAX_PIPE_FETCH_SPACING cycles, host
+                           every FP3_FMAX_PIPE_FETCH_SPACING cycles and
+                           issuing every FP3_FMAX_PIPE_ISSUE_SPACING, host
                            reads of 4 cycles (fp3_isa.h)                  */
 } fp3_config;
 

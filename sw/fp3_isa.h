@@ -50,8 +50,9 @@
  * latency cycles after its producer: the unit's latency (ADD_LATENCY,
  * MUL_LATENCY, 1 for the move path) plus this.  The same with FMAX_PIPE
  * (rtl/fp3_top.v: two pick stages and four read stages, but
- * write-backs announced five cycles earlier), except that its move path
- * takes FP3_FMAX_PIPE_PICK_STAGES cycles more. */
+ * write-backs announced earlier) for latencies of at least
+ * FP3_FMAX_PIPE_FULL_LEAD_LATENCY, which shorter ones and the move path
+ * count as. */
 #define FP3_READ_CYCLES 1
 
 /* FMAX_PIPE's pick stages (rtl/fp3_top.v PICK, fp3_scheduler.v
@@ -80,11 +81,35 @@
 #define FP3_QUEUE_WORDS 2
 #define FP3_FETCH_SPACING 2
 
+/* FMAX_PIPE's registered issue stages (fp3_scheduler.v "The issue
+ * loop's registered stages"): a context's readiness is registered, and so
+ * is the arbiter's decision, so a word is granted this many cycles later
+ * after it joins its queue, and a write-back reaches the readiness this
+ * many cycles later unless it is announced that much earlier
+ * (FP3_FMAX_PIPE_FULL_LEAD_LATENCY). */
+#define FP3_FMAX_PIPE_GRANT_STAGES 2
+
+/* With FMAX_PIPE a context is granted at most once every
+ * FP3_FMAX_PIPE_ISSUE_SPACING cycles (the grant of the cycle before is
+ * not yet known where the next is decided); two or more contexts still
+ * issue every cycle between them. */
+#define FP3_FMAX_PIPE_ISSUE_SPACING 3
+
+/* With FMAX_PIPE a unit of at least this latency (ADD_LATENCY,
+ * MUL_LATENCY) announces its write-backs early enough for the registered
+ * issue stages: its dependent instruction issues FP3_READ_CYCLES +
+ * latency after it, as on the default build.  A shorter one (and the move
+ * path, of latency 1 + FP3_FMAX_PIPE_PICK_STAGES) counts as this latency:
+ * its announcement passes the write-back tag line's pick taps
+ * (rtl/fp3_wb_tag.v) only when the line is long enough. */
+#define FP3_FMAX_PIPE_FULL_LEAD_LATENCY (FP3_FMAX_PIPE_PICK_STAGES + FP3_FMAX_PIPE_GRANT_STAGES + 1)
+
 /* Cycles FMAX_PIPE = 1 (the build for clock rate, INFO1 bit 18) adds to a
  * beq (FP3_BEQ_CYCLES): the two pick stages, the three more
- * operand-read stages, and the fetch stages (FP3_FMAX_PIPE_FETCH_STAGES).
- * Its host-port reads take 4 cycles instead of 1. */
-#define FP3_FMAX_PIPE_CYCLES (5 + FP3_FMAX_PIPE_FETCH_STAGES)
+ * operand-read stages, the fetch stages (FP3_FMAX_PIPE_FETCH_STAGES) and
+ * the registered issue stages (FP3_FMAX_PIPE_GRANT_STAGES).  Its
+ * host-port reads take 4 cycles instead of 1. */
+#define FP3_FMAX_PIPE_CYCLES (5 + FP3_FMAX_PIPE_FETCH_STAGES + FP3_FMAX_PIPE_GRANT_STAGES)
 
 /* With FMAX_PIPE a context fetches at most every FP3_FMAX_PIPE_FETCH_SPACING
  * cycles (grant, read, word registered, queued), so one context runs
@@ -94,14 +119,16 @@
 
 /* A context issues at most once every FP3_ISSUE_SPACING cycles (its
  * readiness is decided a cycle ahead, for the instruction at the head of
- * its queue); two or more contexts issue every cycle between them. */
+ * its queue; with FMAX_PIPE, FP3_FMAX_PIPE_ISSUE_SPACING); two or more
+ * contexts issue every cycle between them. */
 #define FP3_ISSUE_SPACING 2
 
 /* Cycles from START to the first issue: the first instruction is
  * fetched (in cycle 0, the first after START), lands in its context's
  * queue, and is found ready; so also the fewest cycles from a word's
- * fetch to its issue.  FMAX_PIPE adds FP3_FMAX_PIPE_FETCH_STAGES and
- * FP3_FMAX_PIPE_PICK_STAGES (and, from START, FP3_FMAX_PIPE_START_STAGES). */
+ * fetch to its issue.  FMAX_PIPE adds FP3_FMAX_PIPE_FETCH_STAGES,
+ * FP3_FMAX_PIPE_GRANT_STAGES and FP3_FMAX_PIPE_PICK_STAGES (and, from
+ * START, FP3_FMAX_PIPE_START_STAGES). */
 #define FP3_START_CYCLES 3
 
 /* Cycles from a beq's issue to the next issue of its context: operands
