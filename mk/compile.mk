@@ -11,13 +11,13 @@
 # sw/compile.c and sw/cmd_compile.c reach libfp3.a through mk/sw.mk's
 # wildcard.
 
-# The test models (RTL_TEST_OBJS, mk/rtl.mk) give test_compile the build for
-# clock rate (nc3: FMAX_PIPE 1).
+# The test models (RTL_ENGINE_OBJS, mk/rtl.mk) give test_compile the build
+# for clock rate twice (nc3 and fmax: FMAX_PIPE 1, short and long latencies).
 $(BUILD)/tests/test_compile: tests/test_compile.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) \
-                             $(RTL_TEST_OBJS)
+                             $(RTL_ENGINE_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
-	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) \
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_ENGINE_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_compile
 

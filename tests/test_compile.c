@@ -34,7 +34,8 @@
 #include "objects.h"
 #include "../sim/fp3_model.h"
 
-extern const fp3_model_ops fp3_model_nc3; /* FMAX_PIPE 1 (mk/rtl.mk RTL_CFG_nc3) */
+/* FMAX_PIPE 1 (mk/rtl.mk RTL_CFG_nc3, RTL_CFG_fmax) */
+extern const fp3_model_ops fp3_model_nc3, fp3_model_fmax;
 
 static const char *const integrators[] = {"euler", "symeuler", "rk2", "rk4"};
 #define N_INTEG (sizeof integrators / sizeof integrators[0])
@@ -352,11 +353,15 @@ static void test_rtl(void **state) {
   expect_estimates_exact(fp3_engine_rtl_new(NULL), 0);
 }
 
-/* The same on the build for clock rate (the 3-context test model: FMAX_PIPE,
- * add 6, mul 5): its 3-cycle move path, fetch spacing and pick stages. */
+/* The same on the build for clock rate (FMAX_PIPE): its 3-cycle move path,
+ * fetch spacing, pick stages and registered issue stages, with latencies
+ * below FP3_FMAX_PIPE_FULL_LEAD_LATENCY (the 3-context test model: add 4,
+ * mul 3) and above it (the 8-context build of README "Fmax": add 9,
+ * mul 10). */
 static void test_rtl_fmax_pipe(void **state) {
   (void)state;
   expect_estimates_exact(fp3_engine_rtl_new_model(&fp3_model_nc3, NULL), 1);
+  expect_estimates_exact(fp3_engine_rtl_new_model(&fp3_model_fmax, NULL), 1);
 }
 
 /* ---- inputs, text, errors -------------------------------------------------------- */

@@ -463,11 +463,13 @@ static void test_move_bypass(void **state) {
   capture_free(&b);
 }
 
-/* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 6)
- * keeps the dependent-issue distances of the default pipeline (write-backs
- * are announced earlier, for its pick and second read stages), has a 3-cycle move
- * path, and resolves a beq FP3_FMAX_PIPE_CYCLES later than the default
- * build; every result as the ISS computes it.  fmax_cycles: the cycles of
+/* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 4,
+ * MUL_LATENCY 3) keeps the dependent-issue distances of the default
+ * pipeline (write-backs are announced earlier, for its pick, read and
+ * registered issue stages) for latencies of at least
+ * FP3_FMAX_PIPE_FULL_LEAD_LATENCY, counts shorter ones as that, has a
+ * 3-cycle move path, and resolves a beq FP3_FMAX_PIPE_CYCLES later than
+ * the default build; every result as the ISS computes it.  fmax_cycles: the cycles of
  * one integration of src on e, checked against the ISS. */
 static long fmax_cycles(fp3_engine *e, const char *src) {
   capture a, b;
@@ -758,9 +760,10 @@ static void multi_free(multi_capture *m) {
 }
 
 /* The RTL builds with 1 context (ADD_LATENCY 1, MUL_LATENCY 2), 3 contexts
- * (ADD_LATENCY 6, MUL_LATENCY 5, FMAX_PIPE: every real pipeline stage of
- * the cores), the default build, and the build for clock rate (8
- * contexts, ADD_LATENCY 9, MUL_LATENCY 10, FMAX_PIPE; mk/rtl.mk): the
+ * (ADD_LATENCY 4, MUL_LATENCY 3, FMAX_PIPE: write-back tag lines too short
+ * for the announcement's full lead, fp3_wb_tag), the default build, and
+ * the build for clock rate (8 contexts, ADD_LATENCY 9, MUL_LATENCY 10,
+ * FMAX_PIPE: the full announcement lead; mk/rtl.mk): the
  * FMAX_PIPE scheduler's contexts 3 to 7 run only there (a mutation of
  * context 3's hazard compares passed every test before it was here). */
 static const struct {
