@@ -361,6 +361,31 @@ module fp3_scheduler #(
   // An announcement in this cycle counts as free already.  So the head is
   // ready when it is legal and no used field waits: sources (RAW) and the
   // destination (WAW).  Registered: valid for the pick in the next cycle.
+  //
+  // The issue loop's registered stages (PICK_STAGES = 2).  On the default
+  // build one cycle holds the loop from a grant through the wait bits of
+  // the slots behind it and their readiness (ready_q) to the arbiter and
+  // the next grant.  Here the loop holds two more registers: each slot's
+  // readiness is registered for both outcomes (rk_q: its context was not
+  // granted; rg_q: it was, with the bits by_q sets) and chosen a cycle
+  // later by the grants of the last two cycles (gr_q, gr2_q); and the
+  // arbiter's decision is registered (dec_q, issue step) before it is the
+  // grant.  A context is then granted at most every third cycle, so at
+  // most one of those two grants is its own, and by_q (the destination of
+  // its head a cycle before, the same head unless that head was granted
+  // then) is that grant's either way.  A readiness registered a cycle
+  // early misses only wait bits cleared in that cycle: an instruction may
+  // issue later than its operands allow, never earlier.  The lateness is
+  // given back by hearing of write-backs earlier: an announcement of cycle
+  // z reaches a grant in cycle z + 3 instead of z + 1, so the add and mul
+  // lines' per-context copies are registered from announcements two
+  // cycles ahead (pre3_*_i, as far ahead as the tag line reaches:
+  // fp3_wb_tag), and the lookup of an arriving word takes off those of the
+  // next two cycles, which its slot's compares do not see (bq_q).  The
+  // move line (MOV_LATENCY = 1 + PICK_STAGES) is too short for any lead: a
+  // move's consumer waits two cycles more; so does a word that has just
+  // arrived (its readiness is first registered in the cycle after it
+  // reaches its slot).
   wire [NC-1:0] legal;      // the head is legal
   wire [NC-1:0] ready_d;
   wire [NC-1:0] h_stop;     // the head is a halt or the run's last endi
@@ -430,7 +455,7 @@ module fp3_scheduler #(
   localparam integer RN = 1 << IW;  // flags per context
   // With the issue loop's registered stages (PICK_STAGES = 2) a wait bit
   // may be cleared by an announcement up to two cycles before it is made
-  // (below): the lookup also takes off the add and mul lines'
+  // (above): the lookup also takes off the add and mul lines'
   // announcements of cycles a + 1 and a + 2 (pre_*_i and pre2_*_i now),
   // the ones that the word's compares in its slot, from cycle a + 1 on,
   // see no more.

@@ -30,11 +30,16 @@
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
 // grant before the instruction memory and the word twice after it (the
 // block RAM's output register and one in the fabric; fp3_scheduler
-// FETCH_STAGE).  What it costs: a move's consumer waits two cycles more, a
-// beq resolves 8 cycles later (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a
-// run takes a few cycles more, a context fetches at most every fifth
-// cycle, and host reads take 4 cycles; it needs ADD_LATENCY and
-// MUL_LATENCY of at least 3.
+// FETCH_STAGE), and cuts the scheduler's loop of readiness and grant
+// twice ("The issue loop's registered stages"), for which the add and mul
+// tag lines announce their write-backs two more cycles ahead where their
+// latency (5 or more) leaves room.  What it costs: a consumer of a move,
+// or of an add or mul of latency L < 5, waits 5 - L cycles more (the move
+// path counts as L = 3), a context is granted at most every third cycle
+// and fetches at most every fifth, a beq resolves 10 cycles later
+// (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a run takes a few cycles more,
+// and host reads take 4 cycles; it needs ADD_LATENCY and MUL_LATENCY of
+// at least 3.
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -54,10 +59,10 @@
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
-//                before and after the instruction memory, two between the
-//                scheduler's grant and the issue, and three more
-//                operand-read stages: a LUT-RAM register file (see
-//                "Pipeline" above)
+//                before and after the instruction memory, two in the
+//                scheduler's issue loop, two between its grant and the
+//                issue, and three more operand-read stages: a LUT-RAM
+//                register file (see "Pipeline" above)
 //   CTX_CHECKED  0: a write to CTX of a number >= NUM_CONTEXTS is ignored
 //                here; 1: the host port's writer never makes one
 //                (fp3_axil refuses it with SLVERR, deciding it as the data
