@@ -32,7 +32,12 @@ VERILATOR_ROOT_INC := $(shell $(VERILATOR) --getenv VERILATOR_ROOT 2>/dev/null)/
 # --output-split-cfuncs: Verilator otherwise writes the whole clocked
 # logic as one C++ function of thousands of lines, which g++ -O2 takes
 # many minutes to compile (15 s split, measured on the processor model).
-VFLAGS     := -Wall -O3 --x-assign fast --x-initial fast --noassert -Irtl --output-split-cfuncs 500
+# --unroll-count 256: the scheduler's loops over the queue slots (two per
+# context) must unroll for NUM_CONTEXTS up to 64; past Verilator's default
+# of 64 iterations a loop of delayed assignments to an array is an error
+# (BLKLOOPINIT), which stopped the 64-context build of make bench-parallel.
+VFLAGS     := -Wall -O3 --x-assign fast --x-initial fast --noassert -Irtl --output-split-cfuncs 500 \
+              --unroll-count 256
 VERILATOR_CXXFLAGS := -O2 -std=c++17 -faligned-new -I$(VERILATOR_ROOT_INC) -I$(VERILATOR_ROOT_INC)/vltstd
 
 # The Verilator runtime, compiled once and linked by every Verilated model.
