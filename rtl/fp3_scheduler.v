@@ -735,19 +735,22 @@ module fp3_scheduler #(
   // round-robin position moves with the grant, a cycle after the decision.
   wire [NC-1:0] ipick;
   wire          grant;        // a context is granted (one-hot: gone)
+  wire [NC-1:0] arb_req;      // the arbiter's requests, ...
+  wire          arb_take;     // ... whether its pick is taken, ...
+  wire [NC-1:0] arb_taken;    // ... and which (its position moves there)
+  fp3_rr_arbiter #(.N(NC)) u_issue_arb (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i || !running_o),
+    .req_i   (arb_req),
+    .pick_o  (ipick),
+    .take_i  (arb_take),
+    .taken_i (arb_taken)
+  );
   generate
     if (PICK_STAGES == 2) begin : g_grant_reg
       reg  [NC-1:0] dec_q;
       reg           dec_any_q;
       wire [NC-1:0] cand = ready_q & ~gl_q & ~dec_q;
-      fp3_rr_arbiter #(.N(NC)) u_issue_arb (
-        .clk_i   (clk_i),
-        .rst_i   (rst_i || !running_o),
-        .req_i   (cand),
-        .pick_o  (ipick),
-        .take_i  (dec_any_q),
-        .taken_i (dec_q)
-      );
       // (While stopped ready_q is clear, so cand and ipick are.)
       always @(posedge clk_i) begin
         if (rst_i) begin
@@ -758,20 +761,18 @@ module fp3_scheduler #(
           dec_any_q <= |cand;
         end
       end
-      assign gone  = dec_q;     // the head leaves its queue
-      assign grant = dec_any_q;
+      assign arb_req   = cand;
+      assign arb_take  = dec_any_q;
+      assign arb_taken = dec_q;
+      assign gone      = dec_q;     // the head leaves its queue
+      assign grant     = dec_any_q;
     end else begin : g_grant_now
       wire [NC-1:0] cand = ready_q & ~gl_q;   // (the ready step counts only active contexts)
-      fp3_rr_arbiter #(.N(NC)) u_issue_arb (
-        .clk_i   (clk_i),
-        .rst_i   (rst_i || !running_o),
-        .req_i   (ready_q),
-        .pick_o  (ipick),
-        .take_i  (grant),
-        .taken_i (gone)
-      );
-      assign grant = |cand;
-      assign gone  = ipick & ~gl_q;   // the head leaves its queue
+      assign arb_req   = ready_q;
+      assign arb_take  = grant;
+      assign arb_taken = gone;
+      assign grant     = |cand;
+      assign gone      = ipick & ~gl_q;   // the head leaves its queue
     end
   endgenerate
   wire [CW-1:0] g     = encode(gone);
