@@ -484,8 +484,9 @@ module fp3_scheduler #(
     end
   endfunction
   // With FETCH_STAGE, nctx's copy for bq_q (bctx), kept: placed beside
-  // the flags' multiplexer and the announcements' compares it selects,
-  // not with nctx's other loads (nctx's route to them was a critical
+  // the flags' multiplexer (unless g_mask_ahead, below, selects the flags
+  // a cycle earlier) and the announcements' compares it selects, not with
+  // nctx's other loads (nctx's route to them was a critical
   // path).  nctx is fctx_q a cycle late (u_next), so is the copy.
   wire [CW-1:0] bctx;
   generate
@@ -500,8 +501,13 @@ module fp3_scheduler #(
       assign bctx = nctx;
     end
   endgenerate
+  // The context's flags in cycle a - 1 (bflags) and the announcements of
+  // cycle a (bann), for it: read now (busy_i, early_*_i), or, with
+  // FETCH_STAGE and PICK_STAGES = 2, assembled from registers of cycle
+  // a - 2 (g_mask_ahead, below).
+  wire [RN-1:0] bflags, bann;
   always @(posedge clk_i)
-    bq_q <= (smask | (busy_i[bctx*RN +: RN] & ~cmask)) & ~ann3(early_valid_i, early_idx_i, bctx)
+    bq_q <= (smask | (bflags & ~cmask)) & ~bann
             & ~ann3({1'b0, pre_valid_i[1:0] & {2{LEAD}}}, pre_idx_i, bctx)
             & ~ann3({1'b0, pre2_valid_i & {2{LEAD}}}, {{XW{1'b0}}, pre2_idx_i}, bctx);
   // The lookup: the flags of the arriving word's fields, less the
@@ -893,6 +899,18 @@ module fp3_scheduler #(
   // flip-flops of their own, not the issue register's and the tag lines'
   // compares, and the mask is not behind the pick's multiplexer.  (If no
   // run goes on in a - 2, no word arrives in a.)
+  //   So are the context's flags themselves (bflags) and the
+  // announcements of cycle a (bann): in cycle a - 2 its flags are selected
+  // from busy_i and registered (bsel_q), with the flags set and announced
+  // in a - 2 (sset_q: the issue register now; sclr_q: ahead_*_i) and the
+  // add and mul lines' announcements of cycle a (sann_q: pre_*_i in a - 2,
+  // which shows what early_*_i shows in a - 1: the tag line's stage in
+  // front of it, or its pick, which issues in the next cycle).  The move
+  // line's is still early_*_i in a - 1: its pre_*_i is the pick's
+  // multiplexer (a critical path into sann_q, 7.4 ns).  So bq_q meets no
+  // multiplexer of every context's flags, which are spread with the
+  // register file (the lookup's select bctx -> busy_i -> bq_q was the
+  // critical path of six of sixteen placements, 2026-11-24).
   generate
     if (FETCH_STAGE != 0 && PICK_STAGES == 2) begin : g_mask_ahead
       reg [RN-1:0] smask_q, cmask_q;
@@ -911,11 +929,31 @@ module fp3_scheduler #(
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
-      wire unused_ahead = &{1'b0, ahead_valid_i, ahead_idx_i};  // (early_*_i, a cycle before)
+      // The flags, two cycles ahead: fctx_q's copy for their multiplexer
+      // (kept: placed by the flags, not by the masks' loads above).
+      wire [CW-1:0] fcb_q;
+      fp3_keep #(.W(CW)) u_fctx_flags (
+        .clk_i (clk_i),
+        .d_i   ((!rst_i && running_o) ? fr : fcb_q),
+        .q_o   (fcb_q)
+      );
+      reg [RN-1:0] bsel_q, sset_q, sclr_q, sann_q;
+      always @(posedge clk_i) begin
+        bsel_q <= busy_i[fcb_q*RN +: RN];
+        sset_q <= flag1(issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == fcm_q,
+                        rd_o[IW-1:0]);
+        sclr_q <= ann3(ahead_valid_i, ahead_idx_i, fcm_q);
+        sann_q <= ann3({1'b0, pre_valid_i[1:0]}, pre_idx_i, fcm_q);
+      end
+      // The register file's update of the edge ending a - 2 (the set wins).
+      assign bflags = sset_q | (bsel_q & ~sclr_q);
+      assign bann   = sann_q | ann3({early_valid_i[2], 2'b00}, early_idx_i, bctx);
     end else begin : g_mask_now
       assign smask = flag1(issue_o && issue_unit_o != UNIT_NONE && rd_o[IW +: CW] == nctx,
                            rd_o[IW-1:0]);
       assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx);
+      assign bflags = busy_i[bctx*RN +: RN];
+      assign bann   = ann3(early_valid_i, early_idx_i, bctx);
       wire unused_pg = &{1'b0, pg_w, pg_rd};  // (the issue register, now)
     end
   endgenerate
