@@ -1417,9 +1417,13 @@ module fp3_scheduler #(
   end
 
 `ifdef FORMAL
-  // The granted context is active (with PICK_STAGES = 2, decided a cycle
-  // before: it has not issued since, so it has not stopped).
-  always @(*) if (grant) assert (act[g]);
+  // The granted context is the one granted and active (with PICK_STAGES
+  // = 2, decided a cycle before: it has not issued since, so it has not
+  // stopped); the arbiter picks only among its requests, the candidates
+  // (on the default build ready_q, of which gone masks gl_q: so the grant
+  // is a candidate, as before the registered stages).
+  always @(*) if (grant) assert (gone[g] && act[g]);
+  always @(*) assert ((ipick & ~arb_req) == {NC{1'b0}});
 `endif
 endmodule
 `default_nettype wire
