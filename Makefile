@@ -9,7 +9,7 @@
 #   make wave     Icarus testbench and waveform
 #   make bench    benchmarks (also bench-fp, bench-parallel, bench-cosim,
 #                 bench-compile, bench-sleep)
-#   make help     all targets
+#   make help     every target with one line
 #
 # Missing tools are installed by scripts/setup.sh (Debian and PyPI packages).
 
@@ -23,7 +23,11 @@ YOSYS      ?= yosys
 CSTD       := -std=c11 -D_POSIX_C_SOURCE=200809L
 CWARN      := -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 CFLAGS     ?= -O2 -g
-CFLAGS     += $(CSTD) $(CWARN) -ffp-contract=off -fno-fast-math -frounding-math -Isw
+# sw/ is one folder per layer (README "Layout"); headers are included by
+# bare name, so every layer's folder is on the include path.
+SW_DIRS    := $(sort $(dir $(wildcard sw/*/*.c sw/*/*.h)))
+SW_INC     := $(patsubst %/,-I%,$(SW_DIRS))
+CFLAGS     += $(CSTD) $(CWARN) -ffp-contract=off -fno-fast-math -frounding-math $(SW_INC)
 SAN_FLAGS  ?= -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 LDLIBS_SW  := -lgsl -lgslcblas -lz -lm
 CMOCKA_LIB := -lcmocka
@@ -51,15 +55,26 @@ TEST_BINS    :=
 TEST_SCRIPTS :=
 
 .PHONY: all sim test lint synth setup clean help
+## all: build the command-line tool build/fp3 (the default goal)
 all: $(BUILD)/fp3
 
+## help: this list, generated from the "## target: text" lines of Makefile and mk/*.mk
+# `make help` prints the "## target: text" line written above each
+# target's rule in this file and in mk/*.mk, so the list cannot fall
+# behind the targets (tests/test_make_help.sh checks every .PHONY target
+# has one).
 help:
-	@sed -n '3,13p' Makefile | sed 's/^# \{0,1\}//'
+	@echo "FP3 make targets (parameters as NAME=VALUE, e.g. make sim NUM_CONTEXTS=4;"
+	@echo "see README.md, Parameters):"
+	@awk '/^## [a-z0-9-]+: / { sub(/^## /, ""); t = $$0; sub(/:.*/, "", t); \
+	  d = $$0; sub(/^[^:]*: /, "", d); printf "  make %-16s %s\n", t, d }' \
+	  Makefile $(sort $(wildcard mk/*.mk))
 
 # ---- one set-up script installs what is missing ----------------------------
 SETUP_STAMP := $(BUILD)/.setup-ok
 # The script checks each package and installs only the missing ones; it
 # runs again whenever it changes (a new package).
+## setup: install the missing Debian and PyPI packages (scripts/setup.sh); every target runs it first
 setup $(SETUP_STAMP): scripts/setup.sh
 	@mkdir -p $(BUILD)
 	bash scripts/setup.sh
@@ -75,9 +90,11 @@ MK_BASE := mk/rtl.mk mk/fpu.mk mk/sw.mk
 include $(MK_BASE)
 include $(filter-out $(MK_BASE),$(sort $(wildcard mk/*.mk)))
 
+## clean: remove the build folder (BUILD, default build/)
 clean:
 	rm -rf $(BUILD)
 
 # TEST_BINS / TEST_SCRIPTS are filled in by the mk/*.mk fragments.
+## test: the whole test suite (installs what is missing first); closes with "tests: N passed, M failed"
 test: $(SETUP_STAMP) $(TEST_BINS)
 	@bash scripts/run-tests.sh $(TEST_BINS) $(TEST_SCRIPTS)

@@ -20,6 +20,7 @@ axil_archive = $(call axil_objdir,$(1))/Vfp3_axil_$(1)__ALL.a
 
 # `make lint` also lints the wrapper as a top of its own, in each variant.
 .PHONY: lint-axil
+## lint-axil: verilator --lint-only -Wall on the AXI4-Lite wrapper fp3_axil, each variant (part of make lint)
 lint: lint-axil
 
 define AXIL_MODEL_RULES

@@ -6,7 +6,7 @@
 #                 shows are copied to docs/.  BENCH_ARGS passes options
 #                 (e.g. BENCH_ARGS='--long-steps 1000000').
 #
-# The library sources (sw/integrators.c, sw/gslref.c, sw/bench.c) reach
+# The library sources (sw/ref/integrators.c, sw/ref/gslref.c, sw/bench/bench.c) reach
 # libfp3.a through mk/sw.mk's wildcard.
 
 $(BUILD)/tests/test_integrators: tests/test_integrators.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
@@ -24,6 +24,7 @@ BENCH_ARGS ?=
 BENCH_PLOTS := work-precision.png error-vs-h.png
 
 .PHONY: bench
+## bench: integrators: work-precision sweep, stability bounds, long runs (CSV, Markdown, PNG in build/bench)
 bench: $(BUILD)/fp3
 	@mkdir -p $(BENCH_DIR) docs
 	{ $(BUILD)/fp3 bench --out $(BENCH_DIR) $(BENCH_ARGS); echo $$? >$(BENCH_DIR)/.rc; } \

@@ -8,7 +8,7 @@
 #                        object-step (measured), error of v and s against the
 #                        exact solution -> build/bench/compile.{csv,md}
 #
-# sw/compile.c and sw/cmd_compile.c reach libfp3.a through mk/sw.mk's
+# sw/compiler/compile.c and sw/cli/cmd_compile.c reach libfp3.a through mk/sw.mk's
 # wildcard.
 
 # The test models (RTL_ENGINE_OBJS, mk/rtl.mk) give test_compile the build
@@ -25,6 +25,7 @@ BENCH_COMPILE_OBJECTS ?= 256
 BENCH_COMPILE_STEPS   ?= 2000
 
 .PHONY: bench-compile
+## bench-compile: the scene compiler: literal against compiled program on four scenes (RTL)
 bench-compile: $(BUILD)/fp3
 	@mkdir -p $(BUILD)/bench
 	bash scripts/bench-compile.sh $(BUILD)/fp3 $(BUILD)/bench $(BENCH_COMPILE_OBJECTS) \

@@ -28,6 +28,7 @@ SYNTH_SCENE_FLOWS ?= xc2v
 SYNTH_SCENE_DIR   := $(SYNTH_DIR)/scene
 
 .PHONY: synth-scene
+## synth-scene: area of the build fp3 configure sizes for SCENE=FILE against the full default build
 synth-scene: $(BUILD)/fp3 $(SETUP_STAMP)
 	@test -n "$(SCENE)" || { echo "make synth-scene: give SCENE=FILE (e.g. scenes/harbour.scene)" >&2; exit 2; }
 	bash scripts/synth-scene.sh $(BUILD)/fp3 $(SYNTH_SCENE_DIR) "$(SCENE)" "$(INTEGRATOR)" \

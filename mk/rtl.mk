@@ -3,7 +3,7 @@
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
 # IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL and
-# FMAX_PIPE on the make command line override the defaults of sw/fp3_isa.h
+# FMAX_PIPE on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
@@ -86,17 +86,19 @@ $(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_
                   $(RTL_AXIL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
-# rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
-$(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
+# rtl/fp3_isa.vh is generated from sw/isa/fp3_isa.h (and committed).
+$(BUILD)/gen_isa: sw/isa/gen_isa.c sw/isa/fp3_isa.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(CWARN) -Isw $< -o $@
+	$(CC) $(CSTD) $(CWARN) -Isw/isa $< -o $@
 
 .PHONY: isa
+## isa: regenerate rtl/fp3_isa.vh and the generated ISA tables from sw/isa/fp3_isa.h
 isa: $(BUILD)/gen_isa
 	$(BUILD)/gen_isa > rtl/fp3_isa.vh
 	python3 scripts/readme-tables.py $(BUILD)/gen_isa
 
 # ---- lint ------------------------------------------------------------------
+## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
 lint: $(SETUP_STAMP)
 	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $(RTL_SRC)
 	@echo "lint: verilator -Wall clean"
@@ -114,6 +116,7 @@ lint: $(SETUP_STAMP)
 SYNTH_DIR    := $(BUILD)/synth
 SYNTH_FLOWS  ?= xc2v xc7 ecp5
 SYNTH_PARAMS ?=
+## synth: Yosys synthesis for xc2v, xc7 and ECP5: netlists, area, the FP-core area table
 synth: $(SETUP_STAMP)
 	@echo "synth: Yosys $(SYNTH_FLOWS) for fp3_axil/$(RTL_TOP) $(SYNTH_PARAMS), FP cores on xc2v/xc7; results in $(SYNTH_DIR)/"
 	@set -e; for flow in $(SYNTH_FLOWS); do \
@@ -132,6 +135,7 @@ synth: $(SETUP_STAMP)
 # and 7 CPU minutes of Yosys.  `make synth` runs it last.
 SYNTH_CONTEXTS ?= 1 8 32
 .PHONY: synth-contexts
+## synth-contexts: area of fp3_top (xc2v) against NUM_CONTEXTS (SYNTH_CONTEXTS, default 1 8 32)
 synth-contexts: $(SETUP_STAMP)
 	@set -e; for n in $(SYNTH_CONTEXTS); do \
 	  bash scripts/synth.sh $(SYNTH_DIR)/contexts_$$n $(RTL_TOP) xc2v NUM_CONTEXTS=$$n $(RTL_SRC); \
@@ -166,22 +170,25 @@ test: $(BUILD)/gen_isa
 
 # ---- make sim: the default ship scene on the RTL ----------------------------
 SIM_STEPS ?= 10000
+## sim: build the Verilated RTL and run the default ship scene (SIM_STEPS integrations; parameters as NAME=VALUE)
 sim: $(BUILD)/fp3
 	$(BUILD)/fp3 run --engine rtl --program programs/ship_rk4.s --steps $(SIM_STEPS)
 
 # ---- 10^6 random programs, RTL against ISS (a benchmark, not a test) ---------
 .PHONY: bench-cosim
+## bench-cosim: 10^6 random hazard-dense programs, RTL against the ISS bit for bit
 bench-cosim: $(BUILD)/tests/test_engines
 	FP3_RANDOM_PROGRAMS=1000000 $(BUILD)/tests/test_engines
 
 # ---- throughput of many objects (make bench-parallel) -------------------------
 RTL_BENCH_OBJS := $(foreach c,$(RTL_BENCH_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
-$(BUILD)/bench_parallel: sw/bench_parallel.c $(BUILD)/sw/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS) $(RTL_BENCH_OBJS)
+$(BUILD)/bench_parallel: sw/bench/bench_parallel.c $(BUILD)/sw/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS) $(RTL_BENCH_OBJS)
 	$(CC) $(CFLAGS) -c $< -o $@.o
 	$(CXX) -o $@ $@.o $(BUILD)/sw/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) $(RTL_BENCH_OBJS) \
 	  $(LDLIBS_SW) $(VERILATOR_LDLIBS)
 
 .PHONY: bench-parallel
+## bench-parallel: many-object throughput, cycles per object-step for 1 to 64 contexts
 bench-parallel: $(BUILD)/bench_parallel
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/bench_parallel --steps 200 --csv $(BUILD)/bench/parallel.csv

@@ -12,7 +12,8 @@
 # mk/fpu.mk (RTL_OBJS/RTL_LIBS, FPU_OBJS/FPU_LIBS), with $(CXX) since they
 # are C++.
 
-SW_LIB_SRCS  := $(filter-out sw/fp3.c sw/gen_isa.c sw/bench_parallel.c,$(wildcard sw/*.c))
+SW_MAINS     := sw/cli/fp3.c sw/isa/gen_isa.c sw/bench/bench_parallel.c
+SW_LIB_SRCS  := $(filter-out $(SW_MAINS),$(wildcard sw/*/*.c))
 SW_LIB_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw/%.o,$(SW_LIB_SRCS))
 SW_SAN_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw-san/%.o,$(SW_LIB_SRCS))
 SW_LIB       := $(BUILD)/sw/libfp3.a
@@ -36,11 +37,11 @@ $(SW_SAN_LIB): $(SW_SAN_OBJS)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
--include $(SW_LIB_OBJS:.o=.d) $(SW_SAN_OBJS:.o=.d) $(BUILD)/sw/fp3.d
+-include $(SW_LIB_OBJS:.o=.d) $(SW_SAN_OBJS:.o=.d) $(BUILD)/sw/cli/fp3.d
 
 # ---- the CLI -----------------------------------------------------------------
-$(BUILD)/fp3: $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_DEPS)
-	$(CXX) -o $@ $(BUILD)/sw/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_OBJS) \
+$(BUILD)/fp3: $(BUILD)/sw/cli/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_DEPS)
+	$(CXX) -o $@ $(BUILD)/sw/cli/fp3.o $(SW_LIB) $(RTL_OBJS) $(FPU_OBJS) \
 	  $(RTL_LIBS) $(FPU_LIBS) $(VERILATOR_LDLIBS) $(LDLIBS_SW)
 
 # ---- tests -------------------------------------------------------------------

@@ -35,6 +35,7 @@ WAVE_IVFLAGS := -g2005 -Wall -I$(WAVE_RTL_DIR) -y $(WAVE_RTL_DIR) -s tb_fp3 $(WA
 WAVE_VVPFMT  := $(if $(filter fst,$(WAVE_FORMAT)),-fst,)
 
 .PHONY: wave
+## wave: the self-checking Icarus testbench and its waveform (GTKWave save file sim/fp3.gtkw)
 wave: $(BUILD)/fp3 | $(SETUP_STAMP)
 	@mkdir -p $(WAVE_DIR)
 	$(BUILD)/fp3 tbgen $(WAVE_PROGRAM) -o $(WAVE_DIR) --steps $(WAVE_STEPS) \

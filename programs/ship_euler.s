@@ -5,7 +5,7 @@
 ;   v  = v + h a
 ;
 ; First order in v and s; stable for h/tau < 2 (tau = m/C).  Golden model:
-; euler_step in sw/integrators.c, the same operations in the same order
+; euler_step in sw/ref/integrators.c, the same operations in the same order
 ; per result.  Independent work (h v, s + h v) fills the stalls of the
 ; chain C v -> F -> a -> h a -> v.
 

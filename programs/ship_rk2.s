@@ -6,7 +6,7 @@
 ;   v  = v + h f(vm)
 ;
 ; Second order in v and s; stable for h/tau < 2.  Golden model:
-; rk2_init / rk2_step in sw/integrators.c.
+; rk2_init / rk2_step in sw/ref/integrators.c.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
 

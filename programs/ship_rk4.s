@@ -8,7 +8,7 @@
 ;   s  = s + h v1
 ;
 ; The operations and their operands are exactly those of the golden model
-; (sw/golden.c), so every engine must match it bit for bit.  Only the
+; (sw/ref/golden.c), so every engine must match it bit for bit.  Only the
 ; order of independent instructions differs: the processor issues in
 ; order, one instruction per cycle, and stalls an instruction until its
 ; operands are written (add/sub: 5 cycles issue to dependent issue, mul:

@@ -6,7 +6,7 @@
 ; for v += dv and s += h v1.  c keeps what rounding dropped from x, so a
 ; step smaller than half an ulp of x is not lost: v reaches T/C and s keeps
 ; moving after 10^7 integrations where the plain program stagnates.
-; Golden model: rk4comp_step in sw/integrators.c.
+; Golden model: rk4comp_step in sw/ref/integrators.c.
 ;
 ; Only v and s are results, so the compensation terms c of integration k
 ; are computed at the top of integration k+1 (from the saved x and y),

@@ -8,7 +8,7 @@
 ;
 ; instead of the paper's first-order s = s + h v1.  Fourth order in v and
 ; s; stable for h/tau < 2.785.  Golden model: rk4vs_init / rk4vs_step in
-; sw/integrators.c.  The s work does not wait for v1, so it fills stalls
+; sw/ref/integrators.c.  The s work does not wait for v1, so it fills stalls
 ; of the velocity chain and the integration is shorter than the paper's:
 ; the endi issues right after v1 (107 cycles per integration measured,
 ; ADD_LATENCY 4, MUL_LATENCY 3).

@@ -5,7 +5,7 @@
 ;
 ; for v += dv and s += h/6 (v + 2 vt2 + 2 vt3 + vt4).  Fourth order in v
 ; and s, and no binary32 stagnation over long runs.  Golden model:
-; rk4vscomp_step in sw/integrators.c.  As in ship_rk4comp.s the
+; rk4vscomp_step in sw/ref/integrators.c.  As in ship_rk4comp.s the
 ; compensations c of integration k are computed at the top of integration
 ; k+1 from the saved x and y (they are no results); the prologue makes the
 ; first ones 0.  The dv and y = dv - c of v lie on the chain: 117 cycles

@@ -5,7 +5,7 @@
 ;   s  = s + h v          (the new v)
 ;
 ; First order; stable for h/tau < 2 (the velocity update is Euler's).
-; Golden model: symeuler_step in sw/integrators.c.  One dependent chain:
+; Golden model: symeuler_step in sw/ref/integrators.c.  One dependent chain:
 ; nothing to fill the stalls with.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings

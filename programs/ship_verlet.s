@@ -9,7 +9,7 @@
 ;   a  = f(v)                      f(v) = (T - C v) * minv
 ;
 ; Second order in v and s; the velocity update is Heun's, stable for
-; h/tau < 2.  Golden model: verlet_init / verlet_step, sw/integrators.c.
+; h/tau < 2.  Golden model: verlet_init / verlet_step, sw/ref/integrators.c.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
 

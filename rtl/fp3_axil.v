@@ -1,6 +1,6 @@
 // fp3_axil -- AXI4-Lite slave wrapper of the FP3 processor (fp3_top).
 //
-// Register map: the host-port map of sw/fp3_isa.h (FP3_HOSTREGS, HR_* in
+// Register map: the host-port map of sw/isa/fp3_isa.h (FP3_HOSTREGS, HR_* in
 // the generated rtl/fp3_isa.vh) at byte address = word address x 4.  Data
 // is 32 bits wide; address bits [1:0] and bits above 13 are not decoded
 // (an interconnect decodes the base address).
@@ -32,7 +32,7 @@
 //   - a read of an unmapped address, of the write-only CTRL register or of
 //     the program window (the core has no read path there); RDATA is 0.
 // CTRL is always writable (START while running is ignored by the core).
-// The access of each address follows the table in sw/fp3_isa.h (R, W,
+// The access of each address follows the table in sw/isa/fp3_isa.h (R, W,
 // RW); fp3_isa.vh carries only the addresses, so the list of readable
 // and writable scalar registers is spelled out below (reg_readable,
 // wr_ok) and test_axil checks every one.

@@ -1,6 +1,6 @@
 // fp3_host_dec -- the host port's address decode: which writable register
 // or window of the host-port map (HR_* in rtl/fp3_isa.vh, generated from
-// sw/fp3_isa.h) a 12-bit word address names.  Combinational.
+// sw/isa/fp3_isa.h) a 12-bit word address names.  Combinational.
 //
 // fp3_top decodes its host address with it; fp3_axil decodes a write's
 // address as it is captured from the bus, holds the result with it and

@@ -1,4 +1,4 @@
-// fp3_isa.vh -- GENERATED from sw/fp3_isa.h by sw/gen_isa.c; do not edit.
+// fp3_isa.vh -- GENERATED from sw/isa/fp3_isa.h by sw/isa/gen_isa.c; do not edit.
 // The instruction set, flag bits, error codes and host-port map of FP3,
 // shared by the RTL and the C host.  `include inside a module body.
 // Each module uses a few of these constants, never all of them, so the

@@ -7,7 +7,7 @@
 // appears on host_rdata_o 1 + 3 FMAX_PIPE cycles later (the register
 // window's read stages; INFO1 reports FMAX_PIPE, and reading it with the
 // address held for four cycles works for both).  The map (HR_* in
-// rtl/fp3_isa.vh, generated from sw/fp3_isa.h) holds control, status,
+// rtl/fp3_isa.vh, generated from sw/isa/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
 // CTX selects the context whose status and registers the host sees;
 // CONTEXTS says how many contexts (0 .. CONTEXTS-1) a START runs.
@@ -47,7 +47,7 @@
 // can check every result while the machine runs freely.  It adds no state.
 //
 // Parameters
-//   NUM_CONTEXTS contexts, 1..64                (defaults: sw/fp3_isa.h)
+//   NUM_CONTEXTS contexts, 1..64                (defaults: sw/isa/fp3_isa.h)
 //   NUM_REGS     registers per context, 2..256
 //   IMEM_DEPTH   instruction memory entries, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles (operands to result)

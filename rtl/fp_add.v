@@ -1,7 +1,7 @@
 // fp_add.v -- pipelined IEEE 754 binary32 adder/subtractor.
 //
 // Computes a + b (sub_i = 0) or a - b (sub_i = 1) with the exception flags,
-// bit for bit equal to sw/fpref.h (x86 SSE results, explicit NaN rules).
+// bit for bit equal to sw/ref/fpref.h (x86 SSE results, explicit NaN rules).
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the

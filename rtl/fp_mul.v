@@ -1,6 +1,6 @@
 // fp_mul.v -- pipelined IEEE 754 binary32 multiplier.
 //
-// Computes a * b with the exception flags, bit for bit equal to sw/fpref.h
+// Computes a * b with the exception flags, bit for bit equal to sw/ref/fpref.h
 // (x86 SSE results, explicit NaN rules).
 //
 // Parameters:

@@ -10,7 +10,7 @@
 # --literal (programs/ship_rk4.s) and once compiled (the default).
 # Writes OUTDIR/compile.csv and OUTDIR/compile.md: instructions per
 # integration, measured cycles per object-step, and the error of v and s
-# after STEPS integrations against the exact solution (sw/analytic.h):
+# after STEPS integrations against the exact solution (sw/ref/analytic.h):
 # the largest over the objects, and the mean, of |x - exact| / max(|exact|, 1).
 set -eu
 FP3=$1; OUT=$2; N=$3; STEPS=$4

@@ -7,7 +7,7 @@
 // all run the same scene), write STEPS, CONTEXTS and START, then watch the
 // trace port while the machine runs freely, and read status, counters and
 // registers back when it is done.  All inputs come from `fp3 tbgen`
-// (sw/cmd_tbgen.h) in $readmemh format, in the directory given by +dir=DIR:
+// (sw/cli/cmd_tbgen.h) in $readmemh format, in the directory given by +dir=DIR:
 //
 //   program.hex   the assembled program (64-bit words)
 //   init.hex      the registers before the run
@@ -16,7 +16,7 @@
 //
 // Checks (each mismatch is printed; the last line is PASS or FAIL):
 //   - v and s of every context after every integration, bit for bit,
-//     tagged with their integration exactly as sw/engine_rtl.c does (one
+//     tagged with their integration exactly as sw/engine/engine_rtl.c does (one
 //     FIFO of {context, integration} per unit, pushed at issue, popped at
 //     write-back, which must name the same context);
 //   - every register of every context at the end; STATUS (DONE, ERROR),
@@ -59,7 +59,7 @@ module tb_fp3 #(
   parameter integer HAS_MUL     = 1,
   parameter integer FMAX_PIPE   = 0,
   parameter integer HALF_PERIOD = 5,       // ns: a 100 MHz clock
-  parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cmd_tbgen.h)
+  parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cli/cmd_tbgen.h)
   parameter integer STALL_LIMIT = 1000     // cycles without progress = hang
 );
 `include "fp3_isa.vh"

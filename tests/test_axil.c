@@ -25,7 +25,7 @@
  *  - random delays on every channel, many seeds, against a model of the
  *    register window;
  *  - every word address read and written: OKAY exactly where the access
- *    column of FP3_HOSTREGS (sw/fp3_isa.h) has the access, SLVERR with
+ *    column of FP3_HOSTREGS (sw/isa/fp3_isa.h) has the access, SLVERR with
  *    no effect for every access the core ignores;
  *  - all contexts running the ship at once, each against the golden model.
  */

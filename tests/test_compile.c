@@ -1,11 +1,11 @@
 /*
- * test_compile.c -- the scene compiler (sw/compile.c):
+ * test_compile.c -- the scene compiler (sw/compiler/compile.c):
  *
  *  - exact instruction counts: rk4 literal = the paper's program, folded,
  *    no drag, no thrust; folding never adds instructions;
  *  - dead code elimination removes what nothing reads;
  *  - the literal IR (no folding, no zero removal) is the integrator's
- *    golden model (sw/integrators.c) bit for bit, and removing zero terms
+ *    golden model (sw/ref/integrators.c) bit for bit, and removing zero terms
  *    keeps it so on scenes without exact zeros;
  *  - the IR golden model equals the ISS bit for bit, every object after
  *    every integration, for random scenes and every integrator and option;

@@ -1,6 +1,6 @@
 /*
- * test_configure.c -- hardware sized to the scene (sw/configure.c) and the
- * missing-unit check (fp3_config_check_program, sw/engine.c):
+ * test_configure.c -- hardware sized to the scene (sw/compiler/configure.c) and the
+ * missing-unit check (fp3_config_check_program, sw/engine/engine.c):
  *
  *  - the check names the unit, the pc and the parameter, for each unit and
  *    for sub on an adder without HAS_SUB; a complete build accepts all;

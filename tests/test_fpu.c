@@ -1,7 +1,7 @@
 /*
  * test_fpu.c -- tests of the binary32 FP cores (rtl/fp_add.v, rtl/fp_mul.v)
  * through the Verilated models (sim/fpu_model.h), of the reference
- * sw/fpref.c, and of the TestFloat runner sw/testfloat.c.
+ * sw/ref/fpref.c, and of the TestFloat runner sw/engine/testfloat.c.
  *
  *   - random operand pairs of mixed classes, 10^6 per operation and
  *     rounding configuration: RTL == fpref bit for bit, results and flags;

@@ -1,5 +1,5 @@
 /*
- * test_integrators.c -- the ship integrators (sw/integrators.c,
+ * test_integrators.c -- the ship integrators (sw/ref/integrators.c,
  * programs/ship_<name>.s):
  *
  *  - every program bit-exact with its golden model after every

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_isa_sync.sh -- the Verilog view of the ISA (rtl/fp3_isa.vh) is exactly
-# what sw/gen_isa.c makes of sw/fp3_isa.h: one source of truth.
+# what sw/isa/gen_isa.c makes of sw/isa/fp3_isa.h: one source of truth.
 set -euo pipefail
 gen=${BUILD:-build}/gen_isa
 [ -x "$gen" ] || { echo "FAIL: $gen not built"; exit 1; }
@@ -20,4 +20,4 @@ if missing:
     print("      regenerate with: make isa")
     sys.exit(1)
 PY
-echo "PASS: rtl/fp3_isa.vh and README's tables match sw/fp3_isa.h"
+echo "PASS: rtl/fp3_isa.vh and README's tables match sw/isa/fp3_isa.h"

@@ -1,5 +1,5 @@
 /*
- * gen_isa.c -- print rtl/fp3_isa.vh, the Verilog view of sw/fp3_isa.h, or
+ * gen_isa.c -- print rtl/fp3_isa.vh, the Verilog view of sw/isa/fp3_isa.h, or
  * (with --markdown) the README's instruction and host-port tables.
  *
  * Usage: gen_isa > rtl/fp3_isa.vh
@@ -50,7 +50,7 @@ int main(int argc, char **argv) {
     markdown();
     return 0;
   }
-  printf("// fp3_isa.vh -- GENERATED from sw/fp3_isa.h by sw/gen_isa.c; do not edit.\n");
+  printf("// fp3_isa.vh -- GENERATED from sw/isa/fp3_isa.h by sw/isa/gen_isa.c; do not edit.\n");
   printf("// The instruction set, flag bits, error codes and host-port map of FP3,\n");
   printf("// shared by the RTL and the C host.  `include inside a module body.\n");
   printf("// Each module uses a few of these constants, never all of them, so the\n");

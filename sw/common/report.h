@@ -1,5 +1,7 @@
 /*
- * report.h -- small formatting helpers shared by the CLI's reports.
+ * report.h -- small formatting and file helpers shared by every layer:
+ * exception-flag and error names, ulp distance, JSON values, a growing
+ * string, and atomic writes (the CLI's reports, the compiler's listing).
  */
 #ifndef FP3_REPORT_H
 #define FP3_REPORT_H

@@ -1,5 +1,5 @@
 /*
- * report.c -- formatting helpers shared by the CLI reports (report.h).
+ * report.c -- formatting and file helpers shared by every layer (report.h).
  */
 #include "report.h"
 

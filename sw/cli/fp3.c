@@ -8,11 +8,11 @@
  *                                    model, bit for bit
  *   fp3 testfloat ...                FP cores against TestFloat vectors
  *   fp3 bench [options]              integrators: work-precision benchmark,
- *                                    stability and long runs (sw/bench.c)
+ *                                    stability and long runs (sw/bench/bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
- *   fp3 compile SCENE [-o FILE.s]    the scene compiler (sw/compile.h)
+ *   fp3 compile SCENE [-o FILE.s]    the scene compiler (sw/compiler/compile.h)
  *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
- *                                    (sw/configure.h)
+ *                                    (sw/compiler/configure.h)
  *
  * Exit status: 0 success; 1 the run failed (engine error, golden mismatch);
  * 2 bad arguments or input (usage, parameters, assembly errors).
@@ -36,7 +36,7 @@
 #include "golden.h"
 #include "image.h"
 #include "integrators.h"
-#include "bench.h"
+#include "cmd_bench.h"
 #include "cliopt.h"
 #include "cmd_compile.h"
 #include "cmd_configure.h"
@@ -347,12 +347,12 @@ static void usage_run(FILE *f) {
           "\n"
           "Assemble the program, write its .in registers, run N integrations\n"
           "on the engine and compare the .out results v and s after every\n"
-          "integration with the golden model (sw/golden.c), bit for bit, and\n"
+          "integration with the golden model (sw/ref/golden.c), bit for bit, and\n"
           "with the exact solution of the ship ODE.\n"
           "\n"
           "  --engine E       rtl (Verilated RTL, default) or iss (simulator)\n"
           "  --integrator I   integrator: program programs/ship_I.s and its\n"
-          "                   golden model (sw/integrators.c): euler, symeuler,\n"
+          "                   golden model (sw/ref/integrators.c): euler, symeuler,\n"
           "                   verlet, rk2, rk4 (default, the paper's), rk4vs,\n"
           "                   rk4comp, rk4vscomp.  A warning when h/tau =\n"
           "                   h C/m exceeds its stability bound; divergence\n"

@@ -40,7 +40,7 @@ static void usage(FILE *f) {
           "  --keep-zero      keep terms that are zero in the whole scene\n"
           "  --literal        both: the operations of programs/ship_I.s\n"
           "  --add-latency N, --mul-latency N   core latencies (ADD_LATENCY, MUL_LATENCY) to schedule for\n"
-          "                   (default %u and %u, sw/fp3_isa.h)\n"
+          "                   (default %u and %u, sw/isa/fp3_isa.h)\n"
           "  --fmax-pipe      schedule and estimate for the build for clock rate\n"
           "                   (FMAX_PIPE=1: a latency counts as at least %d, a context\n"
           "                   fetches at most every %d cycles and issues at most every\n"

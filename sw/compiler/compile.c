@@ -3,7 +3,7 @@
  * register allocation, assembly text, and the IR golden model.
  *
  * The golden model evaluates the IR nodes in C binary32, one operation per
- * node, compiled with -ffp-contract=off like sw/integrators.c.
+ * node, compiled with -ffp-contract=off like sw/ref/integrators.c.
  */
 #include "compile.h"
 
@@ -218,7 +218,7 @@ static void build_rk4(builder *b) {
   if (b->fold) { /* (k1 + k4) + 2 (k2 + k3) */
     ref w = nm(b, mul(b, two, nm(b, add(b, k2, k3), "k23")), "w");
     sum = add(b, nm(b, add(b, k1, k4), "k14"), w);
-  } else { /* ((k1 + 2 k2) + 2 k3) + k4, as sw/golden.c */
+  } else { /* ((k1 + 2 k2) + 2 k3) + k4, as sw/ref/golden.c */
     sum = nm(b, add(b, k1, nm(b, mul(b, two, k2), "t2")), "sum12");
     sum = nm(b, add(b, sum, nm(b, mul(b, two, k3), "t3")), "sum123");
     sum = add(b, sum, k4);
@@ -710,7 +710,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
       o->fmax_pipe ? " for FMAX_PIPE=1" : "",
       unit_latency(o, FP3_UNIT_ADD), unit_latency(o, FP3_UNIT_MUL), unit_latency(o, FP3_UNIT_MOV),
       c->stats.est_cycles_first, c->stats.est_cycles_later);
-  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compile.c, fp3_compiled_golden)\n\n");
+  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compiler/compile.c, fp3_compiled_golden)\n\n");
   for (int k = 0; k < FP3_IN_COUNT; k++)
     if (in_reg[k] >= 0) {
       char nm_[16];

@@ -1,7 +1,7 @@
 /*
- * bench.h -- running the integrators (sw/integrators.h) on an engine and
+ * bench.h -- running the integrators (sw/ref/integrators.h) on an engine and
  * in their golden models, measuring their error against the exact
- * solution (sw/analytic.h), their stability bound, and the `fp3 bench`
+ * solution (sw/ref/analytic.h), their stability bound, and the `fp3 bench`
  * subcommand (work-precision sweep, stability, long runs).
  */
 #ifndef FP3_BENCH_H
@@ -70,8 +70,26 @@ int fp3_golden_diverges(const fp3_integrator *ig, const fp3_ship_params *p,
 double fp3_measure_bound(const fp3_integrator *ig, const fp3_ship_params *p,
                          uint32_t n, double lo, double hi);
 
-/* `fp3 bench [options]` (fp3 bench --help).  Exit status 0, 1 when a
- * check failed (an engine not bit-exact), 2 for bad arguments. */
-int fp3_cmd_bench(int argc, char **argv);
+/* What `fp3 bench` measures (fp3 bench --help says the same per option). */
+typedef struct fp3_bench_opts {
+  const char *dir;         /* output directory, created if missing */
+  const char *only;        /* "sweep", "stability", "long" or NULL for all */
+  double from, to;         /* sweep bounds in h/tau, 0 < from <= to */
+  double t_end;            /* end time of the sweep's runs [s] */
+  double single;           /* > 0: one point h/tau = single instead of a sweep */
+  double per_decade;       /* sweep points per decade of h/tau */
+  uint32_t long_steps;     /* ISS integrations of the long runs */
+  uint32_t rtl_long_steps; /* RTL integrations of the long runs */
+  uint32_t repeats;        /* timing repeats, the median taken (1..64) */
+} fp3_bench_opts;
+
+/* The integrator benchmark on the ship's default scene: the sweep
+ * (DIR/sweep.csv, DIR/pareto.md), the stability bounds (DIR/stability.*)
+ * and the long runs (DIR/longrun.*), with progress on stdout.  Returns 0
+ * when every engine run was bit-exact with its golden model, 1 when a
+ * check failed or a file could not be written, 2 when the options
+ * describe no valid sweep (from > to, an end time that is not a whole
+ * number of steps). */
+int fp3_bench_run(const fp3_bench_opts *o);
 
 #endif /* FP3_BENCH_H */

@@ -25,7 +25,7 @@
 /*
  * Parameters the host writes into registers before a run (`.in NAME, rN`):
  * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.  The
- * last three are the folded inputs of compiled programs (sw/compile.h),
+ * last three are the folded inputs of compiled programs (sw/compiler/compile.h),
  * products the host computes once per object, each one binary32 RNE
  * operation in the order shown (fp3_in_values in objects.h).  nv0 wakes an
  * object: the velocity stages run until a `beq v, vp` finds v unchanged

@@ -13,8 +13,6 @@
  */
 #include "bench.h"
 
-#include "cliopt.h"
-
 #include <errno.h>
 #include <float.h>
 #include <inttypes.h>
@@ -294,77 +292,7 @@ static void gsl_err_cb(void *ctx, uint32_t k, double v, double s) {
   g->s_rel = se != 0.0 ? ds / fabs(se) : ds;
 }
 
-/* ---- fp3 bench --------------------------------------------------------------- */
-
-static void usage_bench(FILE *f) {
-  fprintf(f,
-          "usage: fp3 bench [--out DIR] [--from X] [--to Y] [--per-decade K]\n"
-          "                 [--t-end T] [--h-over-tau X] [--only PART]\n"
-          "                 [--long-steps N] [--rtl-long-steps N] [--repeats R]\n"
-          "\n"
-          "The integrators (fp3 run --integrator) on Bourg's ship, default scene\n"
-          "(T = 50 kN, C = 5000 kg/s, m = 10 t: tau = m/C = 2 s, T/C = 10 m/s,\n"
-          "v0 = s0 = 0), against the exact solution and GSL's gsl_odeiv2\n"
-          "steppers rk4, rkf45, rk8pd in double:\n"
-          "\n"
-          "  sweep      h/tau from X to Y, K points a decade, each integrated to\n"
-          "             the end time T: RTL cycles (one short RTL run of each\n"
-          "             program, bit-exact, gives the exact per-integration\n"
-          "             cost), CPU ns per step of the golden model and of GSL\n"
-          "             (median of R runs), final and maximum error of v and s\n"
-          "             -> DIR/sweep.csv, DIR/pareto.md\n"
-          "  stability  measured stability bound in h/tau of each integrator\n"
-          "             (bisection, 20000 golden integrations) and RTL runs at\n"
-          "             0.98 and 1.02 of the theoretical bound -> DIR/stability.*\n"
-          "  long       binary32 stagnation: N integrations on the ISS, M on\n"
-          "             the RTL, bit-exact, plain RK4 against the compensated\n"
-          "             programs (others in the golden model) -> DIR/longrun.*\n"
-          "\n"
-          "  --out DIR          output directory (default build/bench)\n"
-          "  --from X, --to Y   sweep bounds in h/tau, 0 < X <= Y (1e-4, 3)\n"
-          "  --per-decade K     sweep points per decade (default 4)\n"
-          "  --t-end T          end time [s] (default 12 = 6 tau)\n"
-          "  --h-over-tau X     one point instead of the sweep; T must then be\n"
-          "                     a whole number of steps h = X tau\n"
-          "  --only PART        sweep, stability or long (default: all three)\n"
-          "  --long-steps N     ISS integrations of the long runs (10000000)\n"
-          "  --rtl-long-steps M RTL integrations of the long runs (100000)\n"
-          "  --repeats R        timing repeats, median taken (default 7)\n"
-          "\n"
-          "Exit status: 0 done and every engine run bit-exact; 1 a check\n"
-          "failed; 2 bad arguments.\n");
-}
-
-
-static int parse_pos(const char *opt, const char *s, double *x) {
-  char *end;
-  errno = 0;
-  double d = strtod(s, &end);
-  if (end == s || *end != '\0' || errno || !isfinite(d)) {
-    fprintf(stderr, "fp3 bench: %s '%s' is not a number\n", opt, s);
-    return -1;
-  }
-  if (!(d > 0.0)) {
-    fprintf(stderr, "fp3 bench: %s %s: must be > 0\n", opt, s);
-    return -1;
-  }
-  *x = d;
-  return 0;
-}
-
-static int parse_count(const char *opt, const char *s, uint32_t *x, int zero_ok) {
-  char *end;
-  errno = 0;
-  unsigned long long n = strtoull(s, &end, 10);
-  if (s[0] < '0' || s[0] > '9' || *end != '\0' || errno || n > UINT32_MAX ||
-      (!zero_ok && n == 0)) {
-    fprintf(stderr, "fp3 bench: %s '%s': want a whole number %s..%" PRIu32 "\n",
-            opt, s, zero_ok ? "0" : "1", (uint32_t)UINT32_MAX);
-    return -1;
-  }
-  *x = (uint32_t)n;
-  return 0;
-}
+/* ---- the benchmark behind `fp3 bench` ----------------------------------------- */
 
 /* The assembled program of each integrator, found from the working
  * directory or next to the executable (build/fp3 -> programs/). */
@@ -683,54 +611,12 @@ static int bench_long(const char *dir, fp3_engine *iss, fp3_engine *rtl,
   return bad;
 }
 
-int fp3_cmd_bench(int argc, char **argv) {
-  const char *dir = "build/bench", *only = NULL;
+int fp3_bench_run(const fp3_bench_opts *o) {
+  const char *dir = o->dir, *only = o->only;
+  const double from = o->from, to = o->to, t_end = o->t_end, single = o->single,
+               perdec = o->per_decade;
+  const uint32_t nlong = o->long_steps, nrtl = o->rtl_long_steps, reps = o->repeats;
   setvbuf(stdout, NULL, _IOLBF, 0); /* progress through a pipe (tee) */
-  double from = 1e-4, to = 3.0, t_end = 12.0, single = 0.0, perdec = 4.0;
-  uint32_t nlong = 10000000u, nrtl = 100000u, reps = 7;
-  for (int i = 1; i < argc; i++) {
-    const char *v;
-    int r;
-    if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-      usage_bench(stdout);
-      return 0;
-    }
-    if ((r = fp3_opt_value(argc, argv, &i, "bench", "--out", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      dir = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--from", &v)) != 0) {
-      if (r < 0 || parse_pos("--from", v, &from)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--to", &v)) != 0) {
-      if (r < 0 || parse_pos("--to", v, &to)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--per-decade", &v)) != 0) {
-      if (r < 0 || parse_pos("--per-decade", v, &perdec)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--t-end", &v)) != 0) {
-      if (r < 0 || parse_pos("--t-end", v, &t_end)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--h-over-tau", &v)) != 0) {
-      if (r < 0 || parse_pos("--h-over-tau", v, &single)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--only", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      if (strcmp(v, "sweep") && strcmp(v, "stability") && strcmp(v, "long")) {
-        fprintf(stderr, "fp3 bench: --only '%s': sweep, stability or long\n", v);
-        return EXIT_USAGE;
-      }
-      only = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--long-steps", &v)) != 0) {
-      if (r < 0 || parse_count("--long-steps", v, &nlong, 1)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--rtl-long-steps", &v)) != 0) {
-      if (r < 0 || parse_count("--rtl-long-steps", v, &nrtl, 1)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--repeats", &v)) != 0) {
-      if (r < 0 || parse_count("--repeats", v, &reps, 0)) return EXIT_USAGE;
-      if (reps < 1 || reps > 64) {
-        fprintf(stderr, "fp3 bench: --repeats %s: 1..64\n", v);
-        return EXIT_USAGE;
-      }
-    } else {
-      fprintf(stderr, "fp3 bench: unknown argument '%s' (see fp3 bench --help)\n",
-              argv[i]);
-      return EXIT_USAGE;
-    }
-  }
   if (from > to) {
     fprintf(stderr, "fp3 bench: --from %g > --to %g: empty sweep\n", from, to);
     return EXIT_USAGE;

@@ -35,7 +35,7 @@
  * Integrators: euler, symeuler, rk2, rk4 (integrators.h).  With fold = 0
  * and drop_zero = 0 the compiled program performs exactly the operations
  * of programs/ship_<name>.s, so its golden model equals the integrator's
- * (sw/integrators.c) bit for bit.
+ * (sw/ref/integrators.c) bit for bit.
  */
 #ifndef FP3_COMPILE_H
 #define FP3_COMPILE_H

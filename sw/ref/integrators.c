@@ -102,7 +102,7 @@ static void rk2_step(fp3_istate *st) {
   st->v = st->v + k2;
 }
 
-/* ---- RK4, the paper's program (sw/golden.c) ------------------------------ */
+/* ---- RK4, the paper's program (sw/ref/golden.c) ------------------------------ */
 
 static void rk4_step(fp3_istate *st) {
   fp3_ship_state g = {st->T, st->C, st->minv, st->h, st->v, st->s};
@@ -112,7 +112,7 @@ static void rk4_step(fp3_istate *st) {
 }
 
 /* The four RK4 stages of the velocity: trial velocities vt2..vt4 and
- * dv = 0.16666667 (k1 + 2 k2 + 2 k3 + k4), as in sw/golden.c. */
+ * dv = 0.16666667 (k1 + 2 k2 + 2 k3 + k4), as in sw/ref/golden.c. */
 static float rk4_stages(const fp3_istate *st, float *vt2, float *vt3,
                         float *vt4) {
   const float half = FP3_GOLDEN_HALF, two = FP3_GOLDEN_TWO,
