@@ -1,4 +1,4 @@
-# bench.mk -- the ship integrators (issue 6): their test, the CLI checks,
+# bench.mk -- the ship integrators: their test, the CLI checks,
 # and the work-precision benchmark.
 #
 #   make bench    build/fp3 bench: sweep, stability, long runs -> build/bench/

@@ -1,4 +1,4 @@
-# compile.mk -- the scene compiler (issue 7 part 1): its test and its
+# compile.mk -- the scene compiler: its test and its
 # benchmark.
 #
 #   make bench-compile   scenes (all terms, no drag, no thrust, mixed) of

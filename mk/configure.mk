@@ -1,4 +1,4 @@
-# configure.mk -- hardware sized to the scene (issue 7 part 3).
+# configure.mk -- hardware sized to the scene.
 #
 #   make synth-scene SCENE=scenes/harbour.scene [INTEGRATOR=rk4]
 #        build/fp3 configure derives the RTL parameters the scene needs;

@@ -32,7 +32,7 @@ RTL_CFG_nc16    := 0 0 16
 RTL_CFG_nc32    := 0 0 32
 RTL_CFG_nc64    := 0 0 64
 RTL_BENCH_CONFIGS := nc16 nc32 nc64
-# ... and one build sized to a scene (issue 7 part 3, tests/test_configure.c):
+# ... and one build sized to a scene (tests/test_configure.c):
 # words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL.  `build/fp3 configure
 # scenes/drift.scene` derives exactly these parameters (the test checks it).
 RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
@@ -108,7 +108,7 @@ lint: $(SETUP_STAMP)
 # the AXI4-Lite wrapper fp3_axil with the processor $(RTL_TOP) kept as a
 # level of hierarchy (area reported for both), `stat` and a summary
 # (constraints/ has the clock of each flow); then the area of each FP core
-# in each ROUND/FTZ configuration on xc2v and xc7 (issue 3), as a table in
+# in each ROUND/FTZ configuration on xc2v and xc7, as a table in
 # $(SYNTH_DIR)/fp_cores_area.{md,csv}.  scripts/synth.sh fails on any latch
 # or combinational loop.  `make synth SYNTH_FLOWS=ecp5` for one flow;
 # SYNTH_PARAMS="NUM_CONTEXTS=1" overrides parameters of fp3_axil.  Last,
@@ -130,7 +130,7 @@ synth: $(SETUP_STAMP)
 	@bash scripts/synth-report.sh --table $(SYNTH_DIR)
 	@$(MAKE) --no-print-directory synth-contexts
 
-# Area of the processor against NUM_CONTEXTS (issue 4): xc2v, 1, 8 and 32
+# Area of the processor against NUM_CONTEXTS: xc2v, 1, 8 and 32
 # contexts, as a table in $(SYNTH_DIR)/contexts_area.{md,csv}.  About 1, 2
 # and 7 CPU minutes of Yosys.  `make synth` runs it last.
 SYNTH_CONTEXTS ?= 1 8 32

@@ -1,4 +1,4 @@
-# sleep.mk -- sleeping objects (issue 7 part 2): the benchmark.
+# sleep.mk -- sleeping objects: the benchmark.
 #
 #   make bench-sleep [SLEEP_SHIPS=1000] [SLEEP_FRAMES=600]
 #       scripts/bench-sleep.sh: a harbour of SLEEP_SHIPS ships for

@@ -7,8 +7,8 @@
 // hands it to fp3_top (HOST_WSEL = 1), so that the host's write
 // strobes reach the core's register enables from flip-flops through one
 // gate instead of a 12-bit compare (the host address -> a host
-// register's enable was the critical path of two of nine placements of
-// the build for clock rate, 2026-11-23).
+// register's enable is otherwise a critical path of the build for clock
+// rate).
 //
 // Parameters
 //   NUM_REGS    registers per context; IW = clog2(NUM_REGS)

@@ -217,7 +217,7 @@ module fp3_top #(
   // beside its multiplexers: the scheduler's (STATUS's error, FAULT_PC,
   // STEPS_DONE: ctx_sch) and the flags' (FLAGS: ctx_flg).  ctx_q, which
   // also indexes the register file's host port, across the die to the
-  // flags' multiplexer was a critical path (2026-11-23, seed 4 of nine).
+  // flags' multiplexer is otherwise a critical path of the placement.
   wire [CW-1:0] ctx_sch, ctx_flg;
   fp3_keep #(.W(CW)) u_ctx_sch (
     .clk_i (clk_i),

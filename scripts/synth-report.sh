@@ -14,7 +14,7 @@
 # --module NAME counts the cells of module NAME only (a level kept by
 # synth.sh -keep NAME); the default is the whole design.
 #
-# synth-report.sh --table DIR -- the per-core area table of issue 3: reads
+# synth-report.sh --table DIR -- the per-core area table: reads
 # DIR/fp_{add,mul}_ROUND-r_FTZ-f_{xc2v,xc7}_stat.txt (scripts/synth.sh),
 # prints a markdown table and writes it to DIR/fp_cores_area.md and
 # DIR/fp_cores_area.csv.

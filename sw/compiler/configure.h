@@ -1,6 +1,5 @@
 /*
- * configure.h -- hardware sized to the scene (`fp3 configure`, issue 7
- * part 3): from a scene and an integrator, the RTL parameters of a build
+ * configure.h -- hardware sized to the scene (`fp3 configure`): from a scene and an integrator, the RTL parameters of a build
  * that runs the scene's compiled program and nothing more.
  *
  * The scene is compiled as `fp3 run --scene` compiles it (compile.h), and
