@@ -708,7 +708,7 @@ static int cmd_run(int argc, char **argv) {
 
   /* engine */
   if (trace && strcmp(engine_name, "iss") != 0) {
-    char why[600];
+    char why[4096 + 256]; /* a folder name of up to 4095 bytes and the reason */
     if (check_writable(trace, why, sizeof why)) {
       fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", trace, why);
       return EXIT_USAGE;
