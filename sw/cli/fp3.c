@@ -69,7 +69,50 @@ static void print_errors(const char *errs) {
   if (errs[strlen(errs) - 1] != '\n') fputc('\n', stderr);
 }
 
+/* ---- output files ---------------------------------------------------------- */
+
+/* Whether the file `path` can be written (created or replaced): 0, or -1
+ * with "PATH: reason" (the folder's or the file's, from errno) in msg.
+ * Nothing is created: the writer (here the Verilated model's VCD writer,
+ * which says only that it failed) opens it later. */
+static int check_writable(const char *path, char *msg, size_t n) {
+  const char *slash = strrchr(path, '/');
+  char dir[4096];
+  if (!slash) {
+    snprintf(dir, sizeof dir, ".");
+  } else {
+    size_t len = (size_t)(slash - path);
+    if (len == 0) len = 1; /* "/x.vcd" */
+    if (len >= sizeof dir) len = sizeof dir - 1;
+    memcpy(dir, path, len);
+    dir[len] = '\0';
+  }
+  if (access(dir, W_OK | X_OK) != 0) {
+    snprintf(msg, n, "%s: %s", dir, strerror(errno));
+    return -1;
+  }
+  if (access(path, F_OK) == 0 && access(path, W_OK) != 0) {
+    snprintf(msg, n, "%s: %s", path, strerror(errno));
+    return -1;
+  }
+  return 0;
+}
+
 /* ---- fp3 asm ------------------------------------------------------------ */
+
+/* Refuse an assembled program that cannot end (fp3_image_ends): print
+ * "fp3 CMD: FILE: reason" and return nonzero. */
+static int refuse_endless(const char *cmd, const char *path, const fp3_image *img) {
+  if (fp3_image_ends(img)) return 0;
+  if (img->n == 0)
+    fprintf(stderr, "fp3 %s: %s: no instructions: a program needs a loop body ending "
+            "in 'endi LABEL', or 'halt'\n", cmd, path);
+  else
+    fprintf(stderr, "fp3 %s: %s: no 'endi' or 'halt' in its %zu instruction(s): the "
+            "program would run off the end of the instruction memory (a fault)\n",
+            cmd, path, img->n);
+  return 1;
+}
 
 static void usage_asm(FILE *f) {
   fprintf(f,
@@ -121,6 +164,8 @@ static int cmd_asm(int argc, char **argv) {
   int rc = 0;
   if (fp3_asm_file(in, &img, &errs) != 0) {
     print_errors(errs);
+    rc = EXIT_USAGE;
+  } else if (refuse_endless("asm", in, &img)) {
     rc = EXIT_USAGE;
   } else {
     char msg[512];
@@ -651,6 +696,7 @@ static int cmd_run(int argc, char **argv) {
     return EXIT_USAGE;
   }
   free(errs);
+  if (refuse_endless("run", program, &img)) return EXIT_USAGE;
   for (int w = 0; w < FP3_OUT_COUNT; w++)
     if (img.out_reg[w] < 0) {
       fprintf(stderr,
@@ -661,6 +707,13 @@ static int cmd_run(int argc, char **argv) {
     }
 
   /* engine */
+  if (trace && strcmp(engine_name, "iss") != 0) {
+    char why[4096 + 256]; /* a folder name of up to 4095 bytes and the reason */
+    if (check_writable(trace, why, sizeof why)) {
+      fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", trace, why);
+      return EXIT_USAGE;
+    }
+  }
   fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new_mode(mode)
                                                   : fp3_engine_rtl_new_mode(mode, trace);
   if (!e) {

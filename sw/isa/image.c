@@ -364,3 +364,11 @@ int fp3_image_read(const char *path, fp3_image *img, char *msg, size_t n) {
   fclose(f);
   return rc;
 }
+
+int fp3_image_ends(const fp3_image *img) {
+  for (size_t i = 0; i < img->n; i++) {
+    unsigned op = fp3_insn_opc(img->words[i]);
+    if (op == FP3_OP_ENDI || op == FP3_OP_HALT) return 1;
+  }
+  return 0;
+}

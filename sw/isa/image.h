@@ -81,6 +81,12 @@ typedef struct fp3_image {
 /* An empty image: no words, nothing bound. */
 void fp3_image_init(fp3_image *img);
 
+/* Whether the program can end: 1 if one of its n words is an endi or a
+ * halt, else 0 (an empty image, or one whose PC can only run off the end
+ * of the instruction memory, a fault: fp3_scheduler.v).  A program the
+ * CLI assembles must pass (fp3 asm, fp3 run). */
+int fp3_image_ends(const fp3_image *img);
+
 /* Names of the parameters; lookup returns the index or -1. */
 const char *fp3_in_name(int id);
 const char *fp3_out_name(int id);

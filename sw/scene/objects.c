@@ -43,6 +43,8 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
   size_t cap = 0;
   char line[1024];
   int lineno = 0, rc = 0;
+  int h_line = 0;       /* the line of the `h STEP` line, 0 before it */
+  int first_obj = 0;    /* the line of the first object */
   while (rc == 0 && fgets(line, sizeof line, f)) {
     lineno++;
     size_t len = strlen(line);
@@ -62,6 +64,10 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
       if (sc->n > 0) {
         snprintf(msg, n, "%s:%d: 'h' must come before the objects", path, lineno);
         rc = -1;
+      } else if (h_line) {
+        snprintf(msg, n, "%s:%d: a second 'h' line (the first is line %d): the time step "
+                 "comes once", path, lineno, h_line);
+        rc = -1;
       } else if (next_float(&p, &h) || !rest_is_blank(p)) {
         snprintf(msg, n, "%s:%d: 'h' wants one number", path, lineno);
         rc = -1;
@@ -70,6 +76,7 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
                  lineno, (double)h);
         rc = -1;
       }
+      h_line = lineno;
       continue;
     }
     float v[5];
@@ -103,6 +110,7 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
       sc->objs = g;
     }
     sc->objs[sc->n++] = o;
+    if (!first_obj) first_obj = lineno;
   }
   if (rc == 0 && ferror(f)) {
     snprintf(msg, n, "%s: read error", path);
@@ -111,6 +119,12 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
   fclose(f);
   if (rc == 0 && sc->n == 0) {
     snprintf(msg, n, "%s: no objects in the scene", path);
+    rc = -1;
+  }
+  if (rc == 0 && !h_line) {
+    snprintf(msg, n, "%s:%d: no 'h STEP' line before the first object: the scene format "
+             "wants the time step once, before the objects (e.g. 'h 0.0166666675')",
+             path, first_obj);
     rc = -1;
   }
   if (rc == 0) return 0;

