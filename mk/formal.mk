@@ -25,9 +25,11 @@ formal_tasks = $(foreach s,$(1),$(addprefix $(s):,$(shell yowasp-sby --dumptasks
 FORMAL_QUICK = $(call formal_tasks,formal/axil.sby formal/rr_arbiter.sby)
 
 .PHONY: formal formal-quick
+## formal: every SymbiYosys property set (formal/*.sby): PASS/FAIL per task, counterexample VCD and assertion file:line
 formal: $(SETUP_STAMP)
 	bash scripts/formal.sh $(FORMAL_DIR) $(filter-out $(FORMAL_XFAIL),$(call formal_tasks,$(FORMAL_SETS)))
 
+## formal-quick: the AXI4-Lite and arbiter proofs that make test runs (about a minute)
 formal-quick: $(SETUP_STAMP)
 	bash scripts/formal.sh $(FORMAL_DIR) $(filter-out $(FORMAL_XFAIL),$(FORMAL_QUICK))
 
