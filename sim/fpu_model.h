@@ -5,8 +5,8 @@
  * The implementation is sim/fpu_shim.cpp, compiled once per configuration
  * (mk/fpu.mk); link $(FPU_OBJS) $(FPU_LIBS) with g++ to use this header.
  *
- * Cycle model: inputs set with fpu_model_set_add / _set_mul are sampled by
- * the next fpu_model_clock() (one rising edge); an operation sampled by
+ * Cycle model: inputs set with fpu_model_set_add / _mul / _div / _sqrt are
+ * sampled by the next fpu_model_clock() (one rising edge); an operation sampled by
  * edge k shows on the outputs after edge k + LATENCY - 1, i.e. after
  * fpu_model_clock() has been called LATENCY times counting the sampling
  * edge (rtl/fp_add.v "Timing contract").  Inputs stay as set until changed.
@@ -28,10 +28,17 @@ typedef struct fpu_model_info {
   int ftz;              /* parameter FTZ                                  */
   unsigned add_latency; /* parameter ADD_LATENCY                          */
   unsigned mul_latency; /* parameter MUL_LATENCY                          */
+  unsigned div_latency; /* parameter DIV_LATENCY (fp_div and fp_sqrt)     */
 } fpu_model_info;
 
-/* The operations, for fpu_model_run. */
-typedef enum fpu_op { FPU_OP_ADD = 0, FPU_OP_SUB = 1, FPU_OP_MUL = 2 } fpu_op;
+/* The operations, for fpu_model_run (sqrt takes operand a only). */
+typedef enum fpu_op {
+  FPU_OP_ADD = 0,
+  FPU_OP_SUB = 1,
+  FPU_OP_MUL = 2,
+  FPU_OP_DIV = 3,
+  FPU_OP_SQRT = 4
+} fpu_op;
 
 typedef struct fpu_model fpu_model; /* opaque */
 
@@ -56,6 +63,8 @@ void fpu_model_reset(fpu_model *m);
 void fpu_model_set_add(fpu_model *m, int valid, int sub, uint32_t a,
                        uint32_t b);
 void fpu_model_set_mul(fpu_model *m, int valid, uint32_t a, uint32_t b);
+void fpu_model_set_div(fpu_model *m, int valid, uint32_t a, uint32_t b);
+void fpu_model_set_sqrt(fpu_model *m, int valid, uint32_t a);
 
 /* One clock cycle: rising edge, then falling edge. */
 void fpu_model_clock(fpu_model *m);
@@ -64,12 +73,14 @@ void fpu_model_clock(fpu_model *m);
  * (either pointer may be NULL). */
 int fpu_model_add_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 int fpu_model_mul_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_div_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_sqrt_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 
 /* Rising edges since creation. */
 uint64_t fpu_model_cycles(const fpu_model *m);
 
 /* Stream n operations through one core, a new one every cycle, and collect
- * the n results in order (flags may be NULL).  The model must be idle (no
+ * the n results in order (flags may be NULL; b is not read for sqrt).  The model must be idle (no
  * operation in flight); it is idle again on return.  Returns 0, or -1 if
  * a result came out in the wrong cycle or valid_o misbehaved. */
 int fpu_model_run(fpu_model *m, fpu_op op, size_t n, const uint32_t *a,
