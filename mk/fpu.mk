@@ -11,7 +11,7 @@
 #
 #   make bench-fp   10^8 random operations per operation and configuration
 
-FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v \
+FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v rtl/fp_sign.v \
            rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
            rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v

@@ -5,7 +5,8 @@
  * The implementation is sim/fpu_shim.cpp, compiled once per configuration
  * (mk/fpu.mk); link $(FPU_OBJS) $(FPU_LIBS) with g++ to use this header.
  *
- * Cycle model: inputs set with fpu_model_set_add / _mul / _div / _sqrt are
+ * Cycle model: inputs set with fpu_model_set_add / _mul / _div / _sqrt /
+ * _sign are
  * sampled by the next fpu_model_clock() (one rising edge); an operation sampled by
  * edge k shows on the outputs after edge k + LATENCY - 1, i.e. after
  * fpu_model_clock() has been called LATENCY times counting the sampling
@@ -31,14 +32,22 @@ typedef struct fpu_model_info {
   unsigned div_latency; /* parameter DIV_LATENCY (fp_div and fp_sqrt)     */
 } fpu_model_info;
 
-/* The operations, for fpu_model_run (sqrt takes operand a only). */
+/* The operations, for fpu_model_run (sqrt, abs and neg take operand a
+ * only; abs .. max run on fp_sign, latency 1). */
 typedef enum fpu_op {
   FPU_OP_ADD = 0,
   FPU_OP_SUB = 1,
   FPU_OP_MUL = 2,
   FPU_OP_DIV = 3,
-  FPU_OP_SQRT = 4
+  FPU_OP_SQRT = 4,
+  FPU_OP_ABS = 5,
+  FPU_OP_NEG = 6,
+  FPU_OP_MIN = 7,
+  FPU_OP_MAX = 8
 } fpu_op;
+
+/* fp_sign's latency in this harness (the processor's move path). */
+#define FPU_SIGN_LATENCY 1
 
 typedef struct fpu_model fpu_model; /* opaque */
 
@@ -65,6 +74,9 @@ void fpu_model_set_add(fpu_model *m, int valid, int sub, uint32_t a,
 void fpu_model_set_mul(fpu_model *m, int valid, uint32_t a, uint32_t b);
 void fpu_model_set_div(fpu_model *m, int valid, uint32_t a, uint32_t b);
 void fpu_model_set_sqrt(fpu_model *m, int valid, uint32_t a);
+/* fp_sign: op 0 abs, 1 neg, 2 min, 3 max (rtl/fp_sign.v op_i). */
+void fpu_model_set_sign(fpu_model *m, int valid, unsigned op, uint32_t a,
+                        uint32_t b);
 
 /* One clock cycle: rising edge, then falling edge. */
 void fpu_model_clock(fpu_model *m);
@@ -75,6 +87,7 @@ int fpu_model_add_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 int fpu_model_mul_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 int fpu_model_div_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 int fpu_model_sqrt_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_sign_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 
 /* Rising edges since creation. */
 uint64_t fpu_model_cycles(const fpu_model *m);

@@ -20,12 +20,14 @@ struct fpu_model {
   virtual void set_mul(int valid, uint32_t a, uint32_t b) = 0;
   virtual void set_div(int valid, uint32_t a, uint32_t b) = 0;
   virtual void set_sqrt(int valid, uint32_t a) = 0;
+  virtual void set_sign(int valid, unsigned op, uint32_t a, uint32_t b) = 0;
   virtual void set_rst(int rst) = 0;
   virtual void clock() = 0;
   virtual int add_out(uint32_t *y, unsigned *flags) const = 0;
   virtual int mul_out(uint32_t *y, unsigned *flags) const = 0;
   virtual int div_out(uint32_t *y, unsigned *flags) const = 0;
   virtual int sqrt_out(uint32_t *y, unsigned *flags) const = 0;
+  virtual int sign_out(uint32_t *y, unsigned *flags) const = 0;
   virtual int run(fpu_op op, size_t n, const uint32_t *a, const uint32_t *b,
                   uint32_t *y, uint8_t *flags) = 0;
 };
@@ -68,6 +70,10 @@ struct Impl final : fpu_model {
     top->div_b_i = 0;
     top->sqrt_valid_i = 0;
     top->sqrt_a_i = 0;
+    top->sign_valid_i = 0;
+    top->sign_op_i = 0;
+    top->sign_a_i = 0;
+    top->sign_b_i = 0;
     top->eval();
   }
   ~Impl() override {
@@ -93,6 +99,12 @@ struct Impl final : fpu_model {
   void set_sqrt(int valid, uint32_t a) override {
     top->sqrt_valid_i = valid ? 1 : 0;
     top->sqrt_a_i = a;
+  }
+  void set_sign(int valid, unsigned op, uint32_t a, uint32_t b) override {
+    top->sign_valid_i = valid ? 1 : 0;
+    top->sign_op_i = op & 3u;
+    top->sign_a_i = a;
+    top->sign_b_i = b;
   }
   void set_rst(int rst) override { top->rst_i = rst ? 1 : 0; }
   void clock() override {
@@ -122,6 +134,11 @@ struct Impl final : fpu_model {
     if (flags) *flags = top->sqrt_flags_o;
     return top->sqrt_valid_o;
   }
+  int sign_out(uint32_t *y, unsigned *flags) const override {
+    if (y) *y = top->sign_y_o;
+    if (flags) *flags = top->sign_flags_o;
+    return top->sign_valid_o;
+  }
   // Drive the inputs of op's core: valid, operands (b unused by sqrt).
   void drive(fpu_op op, int valid, uint32_t a, uint32_t b) {
     switch (op) {
@@ -129,7 +146,8 @@ struct Impl final : fpu_model {
     case FPU_OP_SUB: set_add(valid, op == FPU_OP_SUB, a, b); break;
     case FPU_OP_MUL: set_mul(valid, a, b); break;
     case FPU_OP_DIV: set_div(valid, a, b); break;
-    default:         set_sqrt(valid, a); break;
+    case FPU_OP_SQRT: set_sqrt(valid, a); break;
+    default: set_sign(valid, (unsigned)(op - FPU_OP_ABS), a, b); break;
     }
   }
   int out(fpu_op op, uint32_t *y, unsigned *flags) const {
@@ -138,13 +156,15 @@ struct Impl final : fpu_model {
     case FPU_OP_SUB: return add_out(y, flags);
     case FPU_OP_MUL: return mul_out(y, flags);
     case FPU_OP_DIV: return div_out(y, flags);
-    default:         return sqrt_out(y, flags);
+    case FPU_OP_SQRT: return sqrt_out(y, flags);
+    default: return sign_out(y, flags);
     }
   }
   int run(fpu_op op, size_t n, const uint32_t *a, const uint32_t *b,
           uint32_t *y, uint8_t *flags) override {
     const size_t lat = op == FPU_OP_MUL ? FPU_MUL_LATENCY
                      : op == FPU_OP_DIV || op == FPU_OP_SQRT ? FPU_DIV_LATENCY
+                     : op >= FPU_OP_ABS ? FPU_SIGN_LATENCY
                      : FPU_ADD_LATENCY;
     int bad = 0;
     for (size_t k = 0; k < n + lat; ++k) {
@@ -260,6 +280,7 @@ void fpu_model_reset(fpu_model *m) {
   m->set_mul(0, 0, 0);
   m->set_div(0, 0, 0);
   m->set_sqrt(0, 0);
+  m->set_sign(0, 0, 0, 0);
   m->set_rst(1);
   m->clock();
   m->set_rst(0);
@@ -282,6 +303,11 @@ void fpu_model_set_sqrt(fpu_model *m, int valid, uint32_t a) {
   m->set_sqrt(valid, a);
 }
 
+void fpu_model_set_sign(fpu_model *m, int valid, unsigned op, uint32_t a,
+                        uint32_t b) {
+  m->set_sign(valid, op, a, b);
+}
+
 void fpu_model_clock(fpu_model *m) { m->clock(); }
 
 int fpu_model_add_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
@@ -298,6 +324,10 @@ int fpu_model_div_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
 
 int fpu_model_sqrt_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
   return m->sqrt_out(y, flags);
+}
+
+int fpu_model_sign_out(const fpu_model *m, uint32_t *y, unsigned *flags) {
+  return m->sign_out(y, flags);
 }
 
 uint64_t fpu_model_cycles(const fpu_model *m) { return m->cycles; }

@@ -1,5 +1,5 @@
-// fpu_top.v -- Verilator test top: one fp_add, fp_mul, fp_div and fp_sqrt
-// side by side, driven from C through sim/fpu_shim.cpp (sim/fpu_model.h).
+// fpu_top.v -- Verilator test top: one fp_add, fp_mul, fp_div, fp_sqrt
+// and fp_sign (latency 1, the move path's) side by side, driven from C through sim/fpu_shim.cpp (sim/fpu_model.h).
 //
 // Parameters (passed through to the cores):
 //   ADD_LATENCY  fp_add LATENCY (issue to result, rising edges)
@@ -10,8 +10,8 @@
 //   FTZ          1: flush-to-zero / denormals-are-zero (every core)
 //
 // Ports: clk_i, rst_i, then each core's ports with prefix add_, mul_,
-// div_ and sqrt_ (see rtl/fp_add.v, rtl/fp_mul.v, rtl/fp_div.v,
-// rtl/fp_sqrt.v for the timing contract).
+// div_, sqrt_ and sign_ (see rtl/fp_add.v, rtl/fp_mul.v, rtl/fp_div.v,
+// rtl/fp_sqrt.v, rtl/fp_sign.v for the timing contract).
 `default_nettype none
 
 module fpu_top #(
@@ -46,7 +46,14 @@ module fpu_top #(
   input  wire [31:0] sqrt_a_i,
   output wire        sqrt_valid_o,
   output wire [31:0] sqrt_y_o,
-  output wire [4:0]  sqrt_flags_o
+  output wire [4:0]  sqrt_flags_o,
+  input  wire        sign_valid_i,
+  input  wire [1:0]  sign_op_i,
+  input  wire [31:0] sign_a_i,
+  input  wire [31:0] sign_b_i,
+  output wire        sign_valid_o,
+  output wire [31:0] sign_y_o,
+  output wire [4:0]  sign_flags_o
 );
 
   fp_add #(
@@ -107,6 +114,20 @@ module fpu_top #(
     .valid_o (sqrt_valid_o),
     .y_o     (sqrt_y_o),
     .flags_o (sqrt_flags_o)
+  );
+
+  fp_sign #(
+    .LATENCY (1)
+  ) u_sign (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (sign_valid_i),
+    .op_i    (sign_op_i),
+    .a_i     (sign_a_i),
+    .b_i     (sign_b_i),
+    .valid_o (sign_valid_o),
+    .y_o     (sign_y_o),
+    .flags_o (sign_flags_o)
   );
 
 endmodule

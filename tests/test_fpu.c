@@ -63,9 +63,12 @@
 #define NX FP3_FLAG_INEXACT
 #define DZ FP3_FLAG_INFINITE
 
+/* The arithmetic operations (TestFloat's, fpu_op 0 .. 4) and, after them,
+ * the sign and compare operations of fp_sign. */
 #define NUM_OPS 5
-static const char *const op_name[NUM_OPS] = {"add", "sub", "mul", "div",
-                                             "sqrt"};
+#define NUM_ALL_OPS 9
+static const char *const op_name[NUM_ALL_OPS] = {
+    "add", "sub", "mul", "div", "sqrt", "abs", "neg", "min", "max"};
 static const fpref_mode modes[4] = {
     {FPREF_RNE, 0}, {FPREF_RTZ, 0}, {FPREF_RNE, 1}, {FPREF_RTZ, 1}};
 static const char *const mode_name[4] = {"rne", "rtz", "ftz", "rtz_ftz"};
@@ -163,6 +166,17 @@ static uint32_t gen_divisor(uint32_t a, uint32_t k) {
 
 /* A pair; b is often derived from a: cancellation, ties, alignment. */
 static void gen_pair(fpu_op op, uint32_t *a, uint32_t *b) {
+  if (op >= FPU_OP_ABS) { /* sign, compare: equal, opposite, +-0 pairs */
+    *a = gen_operand();
+    switch (rng_below(8)) {
+    case 0: *b = *a; break;
+    case 1: *b = *a ^ SIGN; break;
+    case 2: *b = (*a & SIGN) ^ SIGN; *a &= SIGN; break;
+    case 3: *b = *a + rng_below(5) - 2u; break;
+    default: *b = gen_operand(); break;
+    }
+    return;
+  }
   if (op == FPU_OP_SQRT) {
     *a = gen_sqrt_operand();
     *b = 0;
@@ -232,7 +246,11 @@ static uint32_t ref_op(fpu_op op, uint32_t a, uint32_t b, fpref_mode mode,
   case FPU_OP_SUB: return fpref_sub(a, b, mode, flags);
   case FPU_OP_MUL: return fpref_mul(a, b, mode, flags);
   case FPU_OP_DIV: return fpref_div(a, b, mode, flags);
-  default:         return fpref_sqrt(a, mode, flags);
+  case FPU_OP_SQRT: return fpref_sqrt(a, mode, flags);
+  case FPU_OP_ABS: return fpref_abs(a);
+  case FPU_OP_NEG: return fpref_neg(a);
+  case FPU_OP_MIN: return fpref_min(a, b, flags);
+  default:         return fpref_max(a, b, flags);
   }
 }
 
@@ -241,6 +259,9 @@ static uint32_t ref_op(fpu_op op, uint32_t a, uint32_t b, fpref_mode mode,
  * not comparable (not x86: tininess may be detected before rounding). */
 static int host_op(fpu_op op, uint32_t a, uint32_t b, fpref_mode mode,
                    uint32_t *r, int *flags) {
+  /* No host instruction for these (test_sign_compare checks them against
+   * the host's comparisons). */
+  if (op >= FPU_OP_ABS) return 0;
 #if HAVE_MXCSR
   unsigned csr = _mm_getcsr();
   if (mode.ftz) _mm_setcsr(csr | MXCSR_FTZ_DAZ);
@@ -347,7 +368,7 @@ static unsigned long random_check(fpu_model *m, fpu_op op, fpref_mode mode,
 
 static void random_mode(void **state, int mi) {
   fixture *fx = *state;
-  for (int op = 0; op < NUM_OPS; op++) {
+  for (int op = 0; op < NUM_ALL_OPS; op++) {
     unsigned long host = 0;
     unsigned long bad = random_check(fx->model[mi], (fpu_op)op, modes[mi],
                                      mode_name[mi], RANDOM_PER_OP, &host);
@@ -575,12 +596,16 @@ static void test_directed(void **state) {
 
 /* ---- pipelining and latency --------------------------------------------- */
 
-/* The four cores of a model, for the cycle-level tests. */
-#define NUM_UNITS 4
-static const char *const unit_name[NUM_UNITS] = {"add", "mul", "div", "sqrt"};
+/* The five cores of a model, for the cycle-level tests. */
+#define NUM_UNITS 5
+static const char *const unit_name[NUM_UNITS] = {"add", "mul", "div", "sqrt",
+                                                 "sign"};
 
 static unsigned unit_latency(const fpu_model_info *in, int u) {
-  return u == 0 ? in->add_latency : u == 1 ? in->mul_latency : in->div_latency;
+  return u == 0   ? in->add_latency
+         : u == 1 ? in->mul_latency
+         : u == 4 ? FPU_SIGN_LATENCY
+                  : in->div_latency;
 }
 
 /* Present (or, valid 0, withdraw) an operation at core u's inputs. */
@@ -590,7 +615,8 @@ static void unit_set(fpu_model *m, int u, int valid, int sub, uint32_t a,
   case 0: fpu_model_set_add(m, valid, sub, a, b); break;
   case 1: fpu_model_set_mul(m, valid, a, b); break;
   case 2: fpu_model_set_div(m, valid, a, b); break;
-  default: fpu_model_set_sqrt(m, valid, a); break;
+  case 3: fpu_model_set_sqrt(m, valid, a); break;
+  default: fpu_model_set_sign(m, valid, (unsigned)sub, a, b); break;
   }
 }
 
@@ -599,18 +625,20 @@ static int unit_out(const fpu_model *m, int u, uint32_t *y, unsigned *fl) {
   case 0: return fpu_model_add_out(m, y, fl);
   case 1: return fpu_model_mul_out(m, y, fl);
   case 2: return fpu_model_div_out(m, y, fl);
-  default: return fpu_model_sqrt_out(m, y, fl);
+  case 3: return fpu_model_sqrt_out(m, y, fl);
+  default: return fpu_model_sign_out(m, y, fl);
   }
 }
 
-/* Issue one exact operation on core u (2 + 3, 2 * 3, 6 / 3, sqrt(4)),
- * count edges until valid_o: must be the latency, and valid_o must be high
- * for one cycle only. */
+/* Issue one exact operation on core u (2 + 3, 2 * 3, 6 / 3, sqrt(4),
+ * abs(-2)), count edges until valid_o: must be the latency, and valid_o
+ * must be high for one cycle only. */
 static void check_latency(fpu_model *m, int u, unsigned want) {
   static const uint32_t a[NUM_UNITS] = {0x40000000u, 0x40000000u,
-                                        0x40C00000u, 0x40800000u};
+                                        0x40C00000u, 0x40800000u, 0xC0000000u};
   static const uint32_t expect[NUM_UNITS] = {0x40A00000u, 0x40C00000u,
-                                             0x40000000u, 0x40000000u};
+                                             0x40000000u, 0x40000000u,
+                                             0x40000000u};
   unit_set(m, u, 1, 0, a[u], 0x40400000u);
   unsigned got = 0, highs = 0;
   for (unsigned k = 1; k <= want + 4; k++) {
@@ -646,10 +674,14 @@ static void stream_check(fpu_model *m, unsigned cycles) {
     for (int u = 0; u < NUM_UNITS; u++) {
       int valid = issue && rng_below(8) != 0;
       uint32_t a, b;
-      int sub = (int)rng_below(2);
+      /* add: sub or not; sign: the operation 0 .. 3 */
+      int sub = (int)rng_below(u == 4 ? 4 : 2);
       static const fpu_op unit_op[NUM_UNITS] = {FPU_OP_ADD, FPU_OP_MUL,
-                                                FPU_OP_DIV, FPU_OP_SQRT};
-      fpu_op op = (u == 0 && sub) ? FPU_OP_SUB : unit_op[u];
+                                                FPU_OP_DIV, FPU_OP_SQRT,
+                                                FPU_OP_ABS};
+      fpu_op op = (u == 0 && sub) ? FPU_OP_SUB
+                  : u == 4        ? (fpu_op)(FPU_OP_ABS + sub)
+                                  : unit_op[u];
       gen_pair(op, &a, &b);
       unit_set(m, u, valid, sub, a, b);
       if (valid) {
@@ -722,7 +754,8 @@ static void test_pipeline(void **state) {
     fpu_model_free(m);
   }
   print_message("latencies covered: add 0x%llX, mul 0x%llX, div/sqrt 0x%llX "
-                "(bit L = L)\n", (unsigned long long)seen[0],
+                "(bit L = L)\n",
+                (unsigned long long)seen[0],
                 (unsigned long long)seen[1], (unsigned long long)seen[2]);
 }
 
@@ -744,7 +777,7 @@ static void test_latency_variants(void **state) {
     fpu_model *m = fpu_model_new_named(in->name);
     assert_non_null(m);
     fpref_mode mode = {(fpref_round)in->round, in->ftz};
-    for (int op = 0; op < NUM_OPS; op++) {
+    for (int op = 0; op < NUM_ALL_OPS; op++) {
       unsigned long host = 0;
       assert_int_equal(
           random_check(m, (fpu_op)op, mode, in->name, RANDOM_LAT, &host), 0);
@@ -1034,7 +1067,7 @@ static int bench(unsigned long long n) {
       free(rb);
       return 1;
     }
-    for (int op = 0; op < NUM_OPS; op++) {
+    for (int op = 0; op < NUM_ALL_OPS; op++) {
       double gen = 0, t0 = now_seconds();
       for (unsigned long long done = 0; done < n;) {
         size_t k = n - done < BATCH ? (size_t)(n - done) : BATCH;
