@@ -11,7 +11,8 @@
 #
 #   make bench-fp   10^8 random operations per operation and configuration
 
-FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v \
+FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v rtl/fp_sign.v \
+           rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
            rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v
 FPU_DIR := $(BUILD)/fpu
@@ -20,26 +21,31 @@ FPU_INC := -Isim
 # Default latencies: fp3_isa.h FP3_CONFIG (ADD_LATENCY 4, MUL_LATENCY 3).
 FPU_ADD_LAT_DEF := $(shell sed -n 's/.*X(ADD_LATENCY, *\([0-9]*\)).*/\1/p' sw/isa/fp3_isa.h)
 FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/isa/fp3_isa.h)
+# fp_div and fp_sqrt: the latency of the div/sqrt unit (docs/fp-cores.md).
+FPU_DIV_LAT_DEF := 8
 
-# name := ROUND FTZ ADD_LATENCY MUL_LATENCY
-FPU_CFG_rne      := 0 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
-FPU_CFG_rtz      := 1 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
-FPU_CFG_ftz      := 0 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
-FPU_CFG_rtz_ftz  := 1 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF)
-FPU_CFG_lat_1_2  := 0 0 1 2
-FPU_CFG_lat_2_1  := 0 0 2 1
-FPU_CFG_lat_3_8  := 0 0 3 8
-FPU_CFG_lat_8_4  := 0 0 8 4
-FPU_CFG_lat_5_6  := 0 0 5 6
+# name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY
+# (the names give the add and mul latencies; the variants also take the
+# div/sqrt latencies 1 to 33: every register count up to the full 30 and
+# 29 places of fp_div and fp_sqrt, and output delay stages beyond)
+FPU_CFG_rne      := 0 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
+FPU_CFG_rtz      := 1 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
+FPU_CFG_ftz      := 0 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
+FPU_CFG_rtz_ftz  := 1 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
+FPU_CFG_lat_1_2  := 0 0 1 2 1
+FPU_CFG_lat_2_1  := 0 0 2 1 2
+FPU_CFG_lat_3_8  := 0 0 3 8 3
+FPU_CFG_lat_8_4  := 0 0 8 4 15
+FPU_CFG_lat_5_6  := 0 0 5 6 5
 # The fast latencies (150 MHz class on ECP5, README: add 9, mul 10, the
 # multiplier's LUT product, also in RTZ with FTZ), every register place of
 # both cores, and output delay stages beyond them.
-FPU_CFG_lat_9_7  := 0 0 9 7
-FPU_CFG_lat_7_10 := 0 0 7 10
-FPU_CFG_lat_6_9  := 0 0 6 9
-FPU_CFG_lat_10_11 := 0 0 10 11
-FPU_CFG_lat_8_12 := 0 0 8 12
-FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10
+FPU_CFG_lat_9_7  := 0 0 9 7 29
+FPU_CFG_lat_7_10 := 0 0 7 10 12
+FPU_CFG_lat_6_9  := 0 0 6 9 30
+FPU_CFG_lat_10_11 := 0 0 10 11 33
+FPU_CFG_lat_8_12 := 0 0 8 12 20
+FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10 10
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
 FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6 lat_9_7 lat_7_10 \
@@ -58,6 +64,7 @@ $(call fpu_model_lib,$(1)): $(FPU_RTL) sim/fpu_top.v mk/fpu.mk | $(SETUP_STAMP)
 	  -GROUND=$(word 1,$(FPU_CFG_$(1))) -GFTZ=$(word 2,$(FPU_CFG_$(1))) \
 	  -GADD_LATENCY=$(word 3,$(FPU_CFG_$(1))) \
 	  -GMUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
+	  -GDIV_LATENCY=$(word 5,$(FPU_CFG_$(1))) \
 	  -MAKEFLAGS OPT_FAST=-O2 \
 	  --Mdir $(FPU_DIR)/obj_$(1) --prefix Vfpu_$(1) \
 	  sim/fpu_top.v $(FPU_RTL) > $(FPU_DIR)/obj_$(1).log 2>&1 \
@@ -70,6 +77,7 @@ $(call fpu_shim_obj,$(1)): sim/fpu_shim.cpp sim/fpu_model.h mk/fpu.mk $(call fpu
 	  -DFPU_ROUND=$(word 1,$(FPU_CFG_$(1))) -DFPU_FTZ=$(word 2,$(FPU_CFG_$(1))) \
 	  -DFPU_ADD_LATENCY=$(word 3,$(FPU_CFG_$(1))) \
 	  -DFPU_MUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
+	  -DFPU_DIV_LATENCY=$(word 5,$(FPU_CFG_$(1))) \
 	  -c $$< -o $$@
 endef
 $(foreach m,$(FPU_MODELS_ALL),$(eval $(call FPU_MODEL_RULES,$(m))))

@@ -108,7 +108,8 @@ lint: $(SETUP_STAMP)
 # the AXI4-Lite wrapper fp3_axil with the processor $(RTL_TOP) kept as a
 # level of hierarchy (area reported for both), `stat` and a summary
 # (constraints/ has the clock of each flow); then the area of each FP core
-# in each ROUND/FTZ configuration on xc2v and xc7, as a table in
+# (fp_add, fp_mul, fp_div, fp_sqrt at their default latencies) in each
+# ROUND/FTZ configuration on xc2v, xc7 and ECP5, as a table in
 # $(SYNTH_DIR)/fp_cores_area.{md,csv}.  scripts/synth.sh fails on any latch
 # or combinational loop.  `make synth SYNTH_FLOWS=ecp5` for one flow;
 # SYNTH_PARAMS="NUM_CONTEXTS=1" overrides parameters of fp3_axil.  Last,
@@ -116,14 +117,15 @@ lint: $(SETUP_STAMP)
 SYNTH_DIR    := $(BUILD)/synth
 SYNTH_FLOWS  ?= xc2v xc7 ecp5
 SYNTH_PARAMS ?=
+SYNTH_CORES  := fp_add fp_mul fp_div fp_sqrt
 ## synth: Yosys synthesis for xc2v, xc7 and ECP5: netlists, area, the FP-core area table
 synth: $(SETUP_STAMP)
-	@echo "synth: Yosys $(SYNTH_FLOWS) for fp3_axil/$(RTL_TOP) $(SYNTH_PARAMS), FP cores on xc2v/xc7; results in $(SYNTH_DIR)/"
+	@echo "synth: Yosys $(SYNTH_FLOWS) for fp3_axil/$(RTL_TOP) $(SYNTH_PARAMS), FP cores on xc2v/xc7/ecp5; results in $(SYNTH_DIR)/"
 	@set -e; for flow in $(SYNTH_FLOWS); do \
 	  bash scripts/synth.sh $(SYNTH_DIR) fp3_axil $$flow $(SYNTH_PARAMS) -keep $(RTL_TOP) \
 	    $(RTL_SRC); done
-	@set -e; for core in fp_add fp_mul; do for r in 0 1; do for f in 0 1; do \
-	  for flow in xc2v xc7; do \
+	@set -e; for core in $(SYNTH_CORES); do for r in 0 1; do for f in 0 1; do \
+	  for flow in xc2v xc7 ecp5; do \
 	    bash scripts/synth.sh $(SYNTH_DIR) $$core $$flow ROUND=$$r FTZ=$$f $(RTL_SRC); \
 	  done; done; done; done
 	@echo "FP core area (default latencies), $(SYNTH_DIR)/fp_cores_area.md:"

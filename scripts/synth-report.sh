@@ -15,27 +15,28 @@
 # synth.sh -keep NAME); the default is the whole design.
 #
 # synth-report.sh --table DIR -- the per-core area table: reads
-# DIR/fp_{add,mul}_ROUND-r_FTZ-f_{xc2v,xc7}_stat.txt (scripts/synth.sh),
-# prints a markdown table and writes it to DIR/fp_cores_area.md and
-# DIR/fp_cores_area.csv.
+# DIR/fp_{add,mul,div,sqrt}_ROUND-r_FTZ-f_{xc2v,xc7,ecp5}_stat.txt
+# (scripts/synth.sh), prints a markdown table and writes it to
+# DIR/fp_cores_area.md and DIR/fp_cores_area.csv.
 set -euo pipefail
 self=$0
 if [ "${1:-}" = --table ]; then
   dir=$2
   csv="$dir/fp_cores_area.csv"; md="$dir/fp_cores_area.md"
-  echo "core,round,ftz,xc2v_luts,xc2v_ffs,xc2v_mult18x18,xc7_luts,xc7_ffs,xc7_dsp48" > "$csv"
+  echo "core,round,ftz,xc2v_luts,xc2v_ffs,xc2v_mult18x18,xc7_luts,xc7_ffs,xc7_dsp48,ecp5_luts,ecp5_ffs,ecp5_mult18x18" > "$csv"
   {
-    echo "| core | rounding | subnormals | xc2v LUTs | xc2v FFs | xc2v MULT18X18 | xc7 LUTs | xc7 FFs | xc7 DSP48 |"
-    echo "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"
+    echo "| core | rounding | subnormals | xc2v LUTs | xc2v FFs | xc2v MULT18X18 | xc7 LUTs | xc7 FFs | xc7 DSP48 | ECP5 LUT4s | ECP5 FFs | ECP5 MULT18X18 |"
+    echo "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
   } > "$md"
-  for core in fp_add fp_mul; do
+  for core in fp_add fp_mul fp_div fp_sqrt; do
     for cfg in "0 0" "1 0" "0 1" "1 1"; do
       set -- $cfg
       b="$dir/${core}_ROUND-$1_FTZ-$2"
       read -r l2 f2 m2 _ _ _ < <(bash "$self" --fields "${b}_xc2v_stat.txt")
       read -r l7 f7 _ d7 _ _ < <(bash "$self" --fields "${b}_xc7_stat.txt")
-      echo "$core,$1,$2,$l2,$f2,$m2,$l7,$f7,$d7" >> "$csv"
-      echo "| $core | $([ "$1" = 0 ] && echo RNE || echo RTZ) | $([ "$2" = 0 ] && echo IEEE || echo FTZ) | $l2 | $f2 | $m2 | $l7 | $f7 | $d7 |" >> "$md"
+      read -r l5 f5 m5 _ _ _ < <(bash "$self" --fields "${b}_ecp5_stat.txt")
+      echo "$core,$1,$2,$l2,$f2,$m2,$l7,$f7,$d7,$l5,$f5,$m5" >> "$csv"
+      echo "| $core | $([ "$1" = 0 ] && echo RNE || echo RTZ) | $([ "$2" = 0 ] && echo IEEE || echo FTZ) | $l2 | $f2 | $m2 | $l7 | $f7 | $d7 | $l5 | $f5 | $m5 |" >> "$md"
     done
   done
   cat "$md"

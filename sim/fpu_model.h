@@ -5,8 +5,9 @@
  * The implementation is sim/fpu_shim.cpp, compiled once per configuration
  * (mk/fpu.mk); link $(FPU_OBJS) $(FPU_LIBS) with g++ to use this header.
  *
- * Cycle model: inputs set with fpu_model_set_add / _set_mul are sampled by
- * the next fpu_model_clock() (one rising edge); an operation sampled by
+ * Cycle model: inputs set with fpu_model_set_add / _mul / _div / _sqrt /
+ * _sign are
+ * sampled by the next fpu_model_clock() (one rising edge); an operation sampled by
  * edge k shows on the outputs after edge k + LATENCY - 1, i.e. after
  * fpu_model_clock() has been called LATENCY times counting the sampling
  * edge (rtl/fp_add.v "Timing contract").  Inputs stay as set until changed.
@@ -28,10 +29,25 @@ typedef struct fpu_model_info {
   int ftz;              /* parameter FTZ                                  */
   unsigned add_latency; /* parameter ADD_LATENCY                          */
   unsigned mul_latency; /* parameter MUL_LATENCY                          */
+  unsigned div_latency; /* parameter DIV_LATENCY (fp_div and fp_sqrt)     */
 } fpu_model_info;
 
-/* The operations, for fpu_model_run. */
-typedef enum fpu_op { FPU_OP_ADD = 0, FPU_OP_SUB = 1, FPU_OP_MUL = 2 } fpu_op;
+/* The operations, for fpu_model_run (sqrt, abs and neg take operand a
+ * only; abs .. max run on fp_sign, latency 1). */
+typedef enum fpu_op {
+  FPU_OP_ADD = 0,
+  FPU_OP_SUB = 1,
+  FPU_OP_MUL = 2,
+  FPU_OP_DIV = 3,
+  FPU_OP_SQRT = 4,
+  FPU_OP_ABS = 5,
+  FPU_OP_NEG = 6,
+  FPU_OP_MIN = 7,
+  FPU_OP_MAX = 8
+} fpu_op;
+
+/* fp_sign's latency in this harness (the processor's move path). */
+#define FPU_SIGN_LATENCY 1
 
 typedef struct fpu_model fpu_model; /* opaque */
 
@@ -56,6 +72,11 @@ void fpu_model_reset(fpu_model *m);
 void fpu_model_set_add(fpu_model *m, int valid, int sub, uint32_t a,
                        uint32_t b);
 void fpu_model_set_mul(fpu_model *m, int valid, uint32_t a, uint32_t b);
+void fpu_model_set_div(fpu_model *m, int valid, uint32_t a, uint32_t b);
+void fpu_model_set_sqrt(fpu_model *m, int valid, uint32_t a);
+/* fp_sign: op 0 abs, 1 neg, 2 min, 3 max (rtl/fp_sign.v op_i). */
+void fpu_model_set_sign(fpu_model *m, int valid, unsigned op, uint32_t a,
+                        uint32_t b);
 
 /* One clock cycle: rising edge, then falling edge. */
 void fpu_model_clock(fpu_model *m);
@@ -64,12 +85,15 @@ void fpu_model_clock(fpu_model *m);
  * (either pointer may be NULL). */
 int fpu_model_add_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 int fpu_model_mul_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_div_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_sqrt_out(const fpu_model *m, uint32_t *y, unsigned *flags);
+int fpu_model_sign_out(const fpu_model *m, uint32_t *y, unsigned *flags);
 
 /* Rising edges since creation. */
 uint64_t fpu_model_cycles(const fpu_model *m);
 
 /* Stream n operations through one core, a new one every cycle, and collect
- * the n results in order (flags may be NULL).  The model must be idle (no
+ * the n results in order (flags may be NULL; b is not read for sqrt).  The model must be idle (no
  * operation in flight); it is idle again on return.  Returns 0, or -1 if
  * a result came out in the wrong cycle or valid_o misbehaved. */
 int fpu_model_run(fpu_model *m, fpu_op op, size_t n, const uint32_t *a,

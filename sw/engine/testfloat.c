@@ -38,26 +38,33 @@ static int parse_hex(const char **pp, unsigned max_digits, uint32_t *v) {
   return 0;
 }
 
-/* 1: a vector, 0: blank line, -1: malformed. */
-static int parse_line(const char *line, uint32_t v[4]) {
+/* Fields of a line: operands, result and flags; sqrt has one operand. */
+static int op_fields(testfloat_op op) { return op == TESTFLOAT_SQRT ? 3 : 4; }
+
+/* One line of `nfields` hex fields (the last 2 digits, the others 8) into
+ * v[0 .. nfields-1].  1: a vector, 0: blank line, -1: malformed. */
+static int parse_line(const char *line, int nfields, uint32_t v[4]) {
   const char *p = line;
   while (*p == ' ' || *p == '\t') p++;
   if (*p == '\n' || *p == '\r' || *p == '\0') return 0;
-  static const unsigned digits[4] = {8, 8, 8, 2};
-  for (int i = 0; i < 4; i++)
-    if (parse_hex(&p, digits[i], &v[i]) != 0) return -1;
+  for (int i = 0; i < nfields; i++)
+    if (parse_hex(&p, i == nfields - 1 ? 2 : 8, &v[i]) != 0) return -1;
   while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
   return *p == '\0' ? 1 : -1;
 }
 
-static const char *const op_names[3] = {"add", "sub", "mul"};
+#define TF_NUM_OPS 5
+static const char *const op_names[TF_NUM_OPS] = {"add", "sub", "mul", "div",
+                                                  "sqrt"};
 
 static uint32_t ref_apply(testfloat_op op, uint32_t a, uint32_t b,
                           fpref_mode mode, unsigned *flags) {
   switch (op) {
   case TESTFLOAT_ADD: return fpref_add(a, b, mode, flags);
   case TESTFLOAT_SUB: return fpref_sub(a, b, mode, flags);
-  default:            return fpref_mul(a, b, mode, flags);
+  case TESTFLOAT_MUL: return fpref_mul(a, b, mode, flags);
+  case TESTFLOAT_DIV: return fpref_div(a, b, mode, flags);
+  default:            return fpref_sqrt(a, mode, flags);
   }
 }
 
@@ -72,7 +79,8 @@ static int run_batch(tf_batch *bt, testfloat_op op, fpref_mode mode,
                      struct fpu_model *model, FILE *out, unsigned max_print,
                      FILE *err, const char *path, testfloat_stats *st) {
   if (model) {
-    static const fpu_op ops[3] = {FPU_OP_ADD, FPU_OP_SUB, FPU_OP_MUL};
+    static const fpu_op ops[TF_NUM_OPS] = {FPU_OP_ADD, FPU_OP_SUB, FPU_OP_MUL,
+                                           FPU_OP_DIV, FPU_OP_SQRT};
     if (fpu_model_run(model, ops[op], bt->n, bt->a, bt->b, bt->y,
                       bt->flags) != 0) {
       if (err)
@@ -94,14 +102,19 @@ static int run_batch(tf_batch *bt, testfloat_op op, fpref_mode mode,
       st->passed++;
       continue;
     }
-    if (out && st->failed < max_print)
+    if (out && st->failed < max_print) {
+      char operands[32];
+      if (op == TESTFLOAT_SQRT)
+        snprintf(operands, sizeof operands, "%08X", (unsigned)bt->a[i]);
+      else
+        snprintf(operands, sizeof operands, "%08X %08X", (unsigned)bt->a[i],
+                 (unsigned)bt->b[i]);
       fprintf(out,
-              "%s:%lu: %s %08X %08X: expected %08X flags %02X, got %08X "
-              "flags %02X\n",
-              path, bt->line[i], op_names[op], (unsigned)bt->a[i],
-              (unsigned)bt->b[i], (unsigned)bt->want[i],
-              (unsigned)bt->want_flags[i], (unsigned)bt->y[i],
-              (unsigned)bt->flags[i]);
+              "%s:%lu: %s %s: expected %08X flags %02X, got %08X flags %02X\n",
+              path, bt->line[i], op_names[op], operands,
+              (unsigned)bt->want[i], (unsigned)bt->want_flags[i],
+              (unsigned)bt->y[i], (unsigned)bt->flags[i]);
+    }
     st->failed++;
   }
   bt->n = 0;
@@ -113,7 +126,7 @@ int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
                   FILE *err, testfloat_stats *st) {
   st->passed = 0;
   st->failed = 0;
-  if ((unsigned)op > TESTFLOAT_MUL) {
+  if ((unsigned)op >= TF_NUM_OPS) {
     if (err) fprintf(err, "testfloat: bad operation %d\n", (int)op);
     return -1;
   }
@@ -141,19 +154,21 @@ int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
       break;
     }
     uint32_t v[4];
-    int k = parse_line(line, v);
+    int nf = op_fields(op);
+    int k = parse_line(line, nf, v);
     if (k < 0) {
       if (err)
-        fprintf(err, "%s:%lu: malformed line (want \"A B RESULT FLAGS\" in hex)\n",
-                path, lineno);
+        fprintf(err, "%s:%lu: malformed line (want \"%s\" in hex for %s)\n",
+                path, lineno,
+                nf == 3 ? "A RESULT FLAGS" : "A B RESULT FLAGS", op_names[op]);
       rc = -1;
       break;
     }
     if (k == 0) continue;
     bt->a[bt->n] = v[0];
-    bt->b[bt->n] = v[1];
-    bt->want[bt->n] = v[2];
-    bt->want_flags[bt->n] = (uint8_t)v[3];
+    bt->b[bt->n] = nf == 3 ? 0 : v[1];
+    bt->want[bt->n] = v[nf - 2];
+    bt->want_flags[bt->n] = (uint8_t)v[nf - 1];
     bt->line[bt->n] = lineno;
     if (++bt->n == TF_BATCH &&
         run_batch(bt, op, mode, model, out, max_print, err, path, st) != 0) {
@@ -179,9 +194,10 @@ int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
 static void usage(FILE *f) {
   fputs("usage: fp3 testfloat [--round rne|rtz] [--ftz] [--ref] OP FILE\n"
         "  Run Berkeley TestFloat vectors (lines \"A B RESULT FLAGS\" in hex,\n"
-        "  gzip or plain) through the Verilated FP core of that configuration\n"
-        "  and compare results (any NaN matches any NaN) and flags exactly.\n"
-        "  OP               add, sub or mul\n"
+        "  \"A RESULT FLAGS\" for sqrt; gzip or plain) through the Verilated\n"
+        "  FP core of that configuration and compare results (any NaN\n"
+        "  matches any NaN) and flags exactly.\n"
+        "  OP               add, sub, mul, div or sqrt\n"
         "  --round rne|rtz  rounding of the core (default rne)\n"
         "  --ftz            the flush-to-zero core\n"
         "  --ref            check the C reference (sw/fpref) instead\n"
@@ -234,7 +250,7 @@ int fp3_cmd_testfloat(int argc, char **argv) {
     return 2;
   }
   int op = -1;
-  for (int k = 0; k < 3; k++)
+  for (int k = 0; k < TF_NUM_OPS; k++)
     if (strcmp(pos[0], op_names[k]) == 0) op = k;
   if (op < 0) {
     fprintf(stderr, "fp3 testfloat: unknown operation '%s'\n", pos[0]);

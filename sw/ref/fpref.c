@@ -1,5 +1,6 @@
 /*
- * fpref.c -- reference binary32 add, sub and mul (see fpref.h).
+ * fpref.c -- reference binary32 add, sub, mul, div, sqrt and the sign and
+ * compare operations (see fpref.h).
  *
  * The arithmetic is the host's IEEE float under <fenv.h> rounding control;
  * everything a host might do differently is made explicit here:
@@ -23,6 +24,7 @@
 #include "fpref.h"
 
 #include <fenv.h>
+#include <math.h>
 #include <string.h>
 
 #include "fp3_isa.h"
@@ -36,7 +38,7 @@
 
 const fpref_mode FPREF_IEEE = {FPREF_RNE, 0};
 
-enum ref_op { REF_ADD, REF_SUB, REF_MUL };
+enum ref_op { REF_ADD, REF_SUB, REF_MUL, REF_DIV, REF_SQRT };
 
 uint32_t fpref_bits(float f) {
   uint32_t u;
@@ -64,11 +66,25 @@ static uint32_t flush_input(uint32_t bits, int ftz) {
   return bits;
 }
 
+/* Is the quotient x / y (finite, nonzero, RNE), which rounded to 2^-126,
+ * tiny after rounding?  Rounded to 24 bits with an unbounded exponent it
+ * is q * 2^(ea - eb), q the quotient of the significands (in [0.5, 1),
+ * exact) rounded in float: a normal number, so rounded to 24 bits. */
+static int div_tiny_at_min_normal(float x, float y) {
+  int ea, eb;
+  volatile float fa = frexpf(x, &ea);
+  volatile float fb = frexpf(y, &eb);
+  volatile float q = fa / fb;
+  double v = ldexp((double)q, ea - eb);
+  return fabs(v) < 0x1p-126;
+}
+
 static uint32_t ref_op(enum ref_op op, uint32_t a, uint32_t b,
                        fpref_mode mode, unsigned *flags) {
   unsigned fl = 0;
   uint32_t r;
 
+  if (op == REF_SQRT) b = 0; /* one operand */
   if (fpref_is_nan(a) || fpref_is_nan(b)) {
     if (is_snan(a) || is_snan(b)) fl |= FP3_FLAG_INVALID;
     r = (fpref_is_nan(a) ? a : b) | QUIET_BIT;
@@ -88,15 +104,22 @@ static uint32_t ref_op(enum ref_op op, uint32_t a, uint32_t b,
     switch (op) {
     case REF_ADD: z = x + y; break;
     case REF_SUB: z = x - y; break;
-    default:      z = x * y; break;
+    case REF_MUL: z = x * y; break;
+    case REF_DIV: z = x / y; break;
+    default:      z = sqrtf(x); break;
     }
-    int host = fetestexcept(FE_INEXACT | FE_OVERFLOW | FE_INVALID);
+    int host = fetestexcept(FE_INEXACT | FE_OVERFLOW | FE_INVALID |
+                            FE_DIVBYZERO);
+    /* Only RNE can round up to 2^-126 from below (see below). */
+    int div_tiny = op == REF_DIV && mode.round == FPREF_RNE &&
+                   (fpref_bits(z) & ~SIGN_BIT) == MIN_NORMAL &&
+                   (host & FE_INEXACT) && div_tiny_at_min_normal(x, y);
 
     fesetexceptflag(&saved_flags, FE_ALL_EXCEPT);
     fesetround(saved_round);
 
     r = fpref_bits(z);
-    if (fpref_is_nan(r)) { /* inf - inf, 0 * inf */
+    if (fpref_is_nan(r)) { /* inf - inf, 0 * inf, 0 / 0, inf / inf, sqrt(-x) */
       r = DEFAULT_NAN;
       fl |= FP3_FLAG_INVALID;
     } else {
@@ -108,7 +131,8 @@ static uint32_t ref_op(enum ref_op op, uint32_t a, uint32_t b,
        * and inexact: only a product can get there from below (a tiny sum
        * is always exact), and only in RNE; the product of two floats is
        * exact in double, and it rounds to 2^-126 with an unbounded exponent
-       * iff it is at least 2^-126 - 2^-151. */
+       * iff it is at least 2^-126 - 2^-151.  A quotient can get there too
+       * (div_tiny_at_min_normal); a square root is never tiny. */
       int tiny = 0;
       if (mag < MIN_NORMAL) {
         tiny = (mag != 0) || inexact;
@@ -117,9 +141,12 @@ static uint32_t ref_op(enum ref_op op, uint32_t a, uint32_t b,
         double p = (double)x * (double)y;
         double limit = 0x1p-126 - 0x1p-151;
         tiny = (p < 0 ? -p : p) < limit;
+      } else if (op == REF_DIV) {
+        tiny = div_tiny;
       }
       if (inexact) fl |= FP3_FLAG_INEXACT;
       if (host & FE_OVERFLOW) fl |= FP3_FLAG_OVERFLOW;
+      if (host & FE_DIVBYZERO) fl |= FP3_FLAG_INFINITE;
       if (tiny && inexact) fl |= FP3_FLAG_UNDERFLOW;
       if (mode.ftz && tiny) {
         r &= SIGN_BIT;
@@ -141,4 +168,41 @@ uint32_t fpref_sub(uint32_t a, uint32_t b, fpref_mode mode, unsigned *flags) {
 
 uint32_t fpref_mul(uint32_t a, uint32_t b, fpref_mode mode, unsigned *flags) {
   return ref_op(REF_MUL, a, b, mode, flags);
+}
+
+uint32_t fpref_div(uint32_t a, uint32_t b, fpref_mode mode, unsigned *flags) {
+  return ref_op(REF_DIV, a, b, mode, flags);
+}
+
+uint32_t fpref_sqrt(uint32_t a, fpref_mode mode, unsigned *flags) {
+  return ref_op(REF_SQRT, a, 0, mode, flags);
+}
+
+uint32_t fpref_abs(uint32_t a) { return a & ~SIGN_BIT; }
+
+uint32_t fpref_neg(uint32_t a) { return a ^ SIGN_BIT; }
+
+/* The order of IEEE 754-2019 §9.6 on non-NaN bit patterns: -0 below +0.
+ * Sign-magnitude to a monotonic unsigned key. */
+static uint32_t order_key(uint32_t bits) {
+  return (bits & SIGN_BIT) ? ~bits : bits | SIGN_BIT;
+}
+
+/* min (want_max 0) or max (1), fpref.h. */
+static uint32_t ref_minmax(uint32_t a, uint32_t b, int want_max,
+                           unsigned *flags) {
+  if (fpref_is_nan(a) || fpref_is_nan(b)) {
+    if ((is_snan(a) || is_snan(b)) && flags) *flags |= FP3_FLAG_INVALID;
+    return (fpref_is_nan(a) ? a : b) | QUIET_BIT;
+  }
+  int a_below = order_key(a) < order_key(b);
+  return (a_below != want_max) ? a : b;
+}
+
+uint32_t fpref_min(uint32_t a, uint32_t b, unsigned *flags) {
+  return ref_minmax(a, b, 0, flags);
+}
+
+uint32_t fpref_max(uint32_t a, uint32_t b, unsigned *flags) {
+  return ref_minmax(a, b, 1, flags);
 }

@@ -1,0 +1,109 @@
+// fp_sign.v -- the exact binary32 sign and compare operations abs, neg,
+// min and max, for the processor's move path.
+//
+// Bit for bit equal to sw/ref/fpref.h fpref_abs, fpref_neg, fpref_min and
+// fpref_max.  Nothing is rounded, and FTZ does not apply: a subnormal
+// operand is compared by its value and returned as it is (the result is
+// always an operand's bit pattern, a quieted NaN, or abs/neg of a).
+//
+//   op_i = 0  abs: a with bit 31 cleared          (IEEE 754-2019 §5.5.1)
+//   op_i = 1  neg: a with bit 31 flipped          (§5.5.1)
+//             both also for a NaN, and quiet: never a flag
+//   op_i = 2  min: IEEE 754-2019 §9.6 minimum
+//   op_i = 3  max: IEEE 754-2019 §9.6 maximum
+//             a NaN operand gives a NaN: a quieted if a is NaN, else b
+//             quieted (the rule of the arithmetic cores, §6.2); invalid
+//             only when an operand is a signalling NaN; -0 < +0; among
+//             equal operands (the same bit pattern) either
+//
+// Comparison: for numbers of different signs the negative one is the
+// smaller (-0 included); for two positive ones the smaller magnitude
+// field, for two negative ones the larger: one 31-bit magnitude compare
+// and a sign test.
+//
+// Parameters:
+//   LATENCY  register stages from the operands to the result, >= 1
+//            (the move path: 1, or 1 + the pick stages of FMAX_PIPE)
+//
+// Ports:
+//   clk_i, rst_i  clock (rising edge), synchronous reset of the valid bits
+//   valid_i       an operation is presented this cycle
+//   op_i          the operation (above)
+//   a_i, b_i      operands (binary32 bit patterns; b_i unused by abs, neg)
+//   valid_o       a result is presented this cycle (LATENCY after valid_i)
+//   y_o           result
+//   flags_o       {invalid, 0, 0, 0, 0}, the SoftFloat bit order
+//
+// Cost: a 31-bit comparator, two NaN tests and a 32-bit four-way
+// multiplexer (about 60 LUT4s), plus the output register.
+`default_nettype none
+
+module fp_sign #(
+  parameter integer LATENCY = 1 // register stages, >= 1
+) (
+  input  wire        clk_i,
+  input  wire        rst_i,
+  input  wire        valid_i,
+  input  wire [1:0]  op_i,
+  input  wire [31:0] a_i,
+  input  wire [31:0] b_i,
+  output wire        valid_o,
+  output wire [31:0] y_o,
+  output wire [4:0]  flags_o
+);
+
+  localparam [1:0]  OP_ABS    = 2'd0;
+  localparam [1:0]  OP_NEG    = 2'd1;
+  localparam [1:0]  OP_MIN    = 2'd2;
+  localparam [31:0] QUIET_BIT = 32'h0040_0000;
+  localparam [4:0]  FLAG_NV   = 5'b10000;
+
+  generate
+    if (LATENCY < 1) begin : g_bad_latency
+      // Elaboration error on purpose: LATENCY must be at least 1.
+      fp_sign_error_LATENCY_must_be_at_least_1 u_error ();
+    end
+  endgenerate
+
+  wire a_nan  = (a_i[30:23] == 8'hFF) & (|a_i[22:0]);
+  wire b_nan  = (b_i[30:23] == 8'hFF) & (|b_i[22:0]);
+  wire a_snan = a_nan & ~a_i[22];
+  wire b_snan = b_nan & ~b_i[22];
+
+  // a < b in the order of §9.6 (meaningless when either is a NaN).
+  wire mag_lt = a_i[30:0] < b_i[30:0];
+  wire mag_gt = a_i[30:0] > b_i[30:0];
+  wire a_lt_b = (a_i[31] != b_i[31]) ? a_i[31]
+              : (a_i[31] ? mag_gt : mag_lt);
+
+  reg  [31:0] y;
+  reg  [4:0]  flags;
+  always @* begin
+    flags = 5'd0;
+    case (op_i)
+      OP_ABS: y = {1'b0, a_i[30:0]};
+      OP_NEG: y = {~a_i[31], a_i[30:0]};
+      default: begin
+        if (a_nan | b_nan) begin
+          y     = (a_nan ? a_i : b_i) | QUIET_BIT;
+          flags = (a_snan | b_snan) ? FLAG_NV : 5'd0;
+        end else begin
+          // min: a if a < b, else b; max: a unless a < b.
+          y = ((op_i == OP_MIN) == a_lt_b) ? a_i : b_i;
+        end
+      end
+    endcase
+  end
+
+  fp_pipe #(.WIDTH(32 + 5), .DEPTH(LATENCY)) u_pipe_out (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({y, flags}),
+    .valid_o (valid_o),
+    .data_o  ({y_o, flags_o})
+  );
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,279 @@
+// fp_sqrt.v -- pipelined IEEE 754 binary32 square root.
+//
+// Computes sqrt(a), correctly rounded, with the exception flags, bit for
+// bit equal to sw/ref/fpref.h fpref_sqrt (x86 SSE sqrtss results, explicit NaN
+// rules).
+//
+// Algorithm: radix-2 restoring digit recurrence (the integer square root,
+// two radicand bits per step), unrolled into a pipeline.  With Ma the
+// 24-bit significand (leading one at bit 23; a subnormal one normalised by
+// its leading-zero count, fp_mul_unpack_norm) and E its biased exponent,
+// a = Ma 2^(E - 150).  The radicand N = Ma 2^27 for an odd E, Ma 2^28 for
+// an even one (so that the exponent left over is even), a 52-bit integer,
+// and the root Q = floor(sqrt(N)) has 26 bits with the leading one at bit
+// 25: the significand in Q[25:2], guard Q[1], round Q[0], sticky the
+// remainder N - Q^2 being nonzero.  The biased result exponent is
+// (E + 127) >> 1, between 52 and 190: a square root is never tiny and
+// never overflows.  Step j = 0 .. 25 decides root bit 25 - j from the
+// partial root P (j bits) and remainder R (at most 2P, j + 1 bits):
+//     R' = 4R + (next two radicand bits);  T = 4P + 1
+//     R' >= T:  R = R' - T, P = 2P + 1;   else  R = R', P = 2P
+// (the remainder stays N_top - P^2).  Step j subtracts j + 2 bits; the
+// widths grow with j and the bits above them are constant zeros.
+//
+// Datapath steps (the places for a register are between them):
+//   s = 0        unpack: special cases, normalisation of a subnormal
+//                significand, result exponent, radicand alignment
+//   s = 1 .. 26  one root bit each (the recurrence above)
+//   s = 27       rounding increment (fp_round)
+//   s = 28       flags, special result (fp_round_pack); then the output
+//                register
+// The LATENCY - 1 registers besides the output register are spread evenly
+// over the 28 places after steps 0 .. 27: place s holds one iff
+// floor((s + 1) L / 29) differs from floor(s L / 29), L = min(LATENCY,
+// 29).  LATENCY > 29 adds output delay stages.
+//
+// Parameters:
+//   LATENCY  rising clock edges from the operand being sampled to the
+//            result on the outputs; >= 1 (default 8)
+//   ROUND    0: round to nearest, ties to even; 1: round toward zero
+//   FTZ      0: IEEE subnormals; 1: a subnormal operand reads as zero of
+//            its sign, no flag (x86 DAZ; sqrt of a negative subnormal is
+//            then -0).  No result is tiny, so nothing is flushed.
+//
+// Ports:
+//   clk_i    clock, rising edge
+//   rst_i    synchronous reset, active high; clears the valid bits only
+//   valid_i  an operation is presented this cycle
+//   a_i      operand (binary32 bit pattern)
+//   valid_o  a result is presented this cycle
+//   y_o      result
+//   flags_o  {invalid, infinite (0), overflow (0), underflow (0),
+//            inexact}, the Berkeley SoftFloat bit order
+//
+// Timing contract (as fp_add and fp_mul): valid_i high in cycle t gives
+// valid_o high with y_o and flags_o in cycle t + LATENCY.  Fully
+// pipelined: initiation interval 1, results in order.
+//
+// Standards followed (IEEE 754-2019): §4.3 rounding; §5.4.1 squareRoot:
+// sqrt(-0) = -0, sqrt(+inf) = +inf, exact; §6.2 NaN propagation (a NaN
+// operand quieted, sign and payload kept); §7.2 invalid: the operand is
+// below zero (also -inf) or a signalling NaN; the result of a negative
+// operand is the x86 default NaN 0xFFC00000.
+`default_nettype none
+
+module fp_sqrt #(
+  parameter integer LATENCY = 8, // issue to result, rising edges, >= 1
+  parameter integer ROUND   = 0, // 0 RNE, 1 RTZ
+  parameter integer FTZ     = 0  // 1: subnormal operands read as zero
+) (
+  input  wire        clk_i,
+  input  wire        rst_i,
+  input  wire        valid_i,
+  input  wire [31:0] a_i,
+  output wire        valid_o,
+  output wire [31:0] y_o,
+  output wire [4:0]  flags_o
+);
+
+  localparam [7:0]   EXP_MAX     = 8'hFF;
+  localparam [9:0]   EXP_BIAS    = 10'd127;
+  localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
+  localparam integer NITER       = 26;     // root bits
+  localparam integer NPLACE      = 29;     // places for a register, incl. out
+  localparam integer LC          = (LATENCY < NPLACE) ? LATENCY : NPLACE;
+  localparam integer DEPTH_O     = LATENCY - LC + 1;
+
+  generate
+    if (LATENCY < 1) begin : g_bad_latency
+      // Elaboration error on purpose: LATENCY must be at least 1.
+      fp_sqrt_error_LATENCY_must_be_at_least_1 u_error ();
+    end
+  endgenerate
+
+  // Registers after step s (0 .. NPLACE - 2): the header's rule.
+  function integer regs_after(input integer s);
+    begin
+      regs_after = ((s + 1) * LC) / NPLACE - (s * LC) / NPLACE;
+    end
+  endfunction
+
+  // ---------------------------------------------------------------------
+  // s = 0: unpack, special cases, exponent, radicand
+  // ---------------------------------------------------------------------
+  wire       a_sign = a_i[31];
+  wire [7:0] a_exp  = a_i[30:23];
+  wire       a_fnz  = |a_i[22:0];
+
+  wire [23:0] a_man;
+  wire [4:0]  a_lz;
+  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack (
+    .exp_i  (a_exp),
+    .frac_i (a_i[22:0]),
+    .man_o  (a_man),
+    .lz_o   (a_lz)
+  );
+  wire [23:0] a_norm = a_man << a_lz;
+
+  wire a_nan  = (a_exp == EXP_MAX) & a_fnz;
+  wire a_inf  = (a_exp == EXP_MAX) & ~a_fnz;
+  wire a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~a_fnz);
+
+  // The special result: a NaN quieted; +-0 itself; below zero (also -inf)
+  // the default NaN with invalid; +inf itself.
+  wire        spec    = a_nan | a_inf | a_zero | a_sign;
+  wire        neg     = a_sign & ~a_nan & ~a_zero;
+  wire        spec_nv = (a_nan & ~a_i[22]) | neg;
+  reg  [31:0] spec_y;
+  always @* begin
+    if (a_nan) begin
+      spec_y = a_i | 32'h0040_0000;
+    end else if (neg) begin
+      spec_y = DEFAULT_NAN;
+    end else if (a_zero) begin
+      spec_y = {a_sign, 31'd0};
+    end else begin
+      spec_y = a_i; // +inf
+    end
+  end
+
+  // E = field - lz (10-bit two's complement, >= -22); result (E + 127) >> 1;
+  // the radicand's top 26 bits {Ma, 0} (E odd) or {0, Ma} shifted one
+  // more place: N = top << 26.
+  wire [9:0]  e_norm = {2'd0, a_exp} - {5'd0, a_lz};
+  wire [9:0]  e_sum  = e_norm + EXP_BIAS;
+  wire [7:0]  exp_r  = e_sum[8:1];
+  // e_sum is 105 to 381: bit 9 is 0, bit 0 is the halving's remainder.
+  wire unused_e = &{1'b0, e_sum[9], e_sum[0], 1'b0};
+  wire [25:0] n_top  = e_norm[0] ? {1'b0, a_norm, 1'b0} : {a_norm, 2'b00};
+
+  // ---------------------------------------------------------------------
+  // The state between steps: side information, radicand bits not yet
+  // used (top first), remainder (27 bits), partial root (26 bits).
+  // ---------------------------------------------------------------------
+  localparam integer WSIDE = 1 + 32 + 1 + 8;
+  localparam integer WST   = WSIDE + 26 + 27 + NITER;
+
+  wire [NITER:0]           st_valid;
+  wire [WST*(NITER+1)-1:0] st_data;
+
+  fp_pipe #(.WIDTH(WST), .DEPTH(regs_after(0))) u_pipe_unpack (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({spec, spec_y, spec_nv, exp_r, n_top, 27'd0, {NITER{1'b0}}}),
+    .valid_o (st_valid[0]),
+    .data_o  (st_data[0 +: WST])
+  );
+
+  // ---------------------------------------------------------------------
+  // s = 1 .. 26: the recurrence, one root bit per step.  The radicand's
+  // bits below n_top are zero, so step j >= 13 brings in two zero bits.
+  // ---------------------------------------------------------------------
+  genvar j;
+  generate
+    for (j = 0; j < NITER; j = j + 1) begin : g_step
+      wire [WSIDE-1:0] side;
+      wire [25:0]      n;
+      wire [26:0]      r;
+      wire [NITER-1:0] p;
+      assign {side, n, r, p} = st_data[j*WST +: WST];
+
+      // Widths at step j: P has j bits, R at most 2P: j + 1 bits;
+      // R' = 4R + 2 bits and T = 4P + 1: j + 3 bits.
+      localparam integer WT = j + 3;
+      wire [WT-1:0] r_sh  = {r[WT-3:0], n[25:24]};
+      wire [WT-1:0] t     = {p[WT-3:0], 2'b01};
+      wire [WT:0]   diff  = {1'b0, r_sh} - {1'b0, t};
+      wire          p_bit = ~diff[WT];
+      wire [WT-1:0] r_sel = p_bit ? diff[WT-1:0] : r_sh;
+      // R <= 2P after the step: j + 2 bits (the top bit of r_sel is 0).
+      wire [27+WT-2:0] r_ext  = {27'd0, r_sel[WT-2:0]};
+      wire [26:0]      r_next = r_ext[26:0];
+      wire [NITER-1:0] p_next = {p[NITER-2:0], p_bit};
+      wire unused_bits = &{1'b0, r[26:WT-2], p[NITER-1], r_sel[WT-1],
+                           r_ext[27+WT-2:27], 1'b0};
+
+      fp_pipe #(.WIDTH(WST), .DEPTH(regs_after(j + 1))) u_pipe_step (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (st_valid[j]),
+        .data_i  ({side, n[23:0], 2'b00, r_next, p_next}),
+        .valid_o (st_valid[j+1]),
+        .data_o  (st_data[(j+1)*WST +: WST])
+      );
+    end
+  endgenerate
+
+  // ---------------------------------------------------------------------
+  // s = 27: rounding increment
+  // ---------------------------------------------------------------------
+  wire [WSIDE-1:0] f_side;
+  wire [25:0]      f_n;
+  wire [26:0]      f_r;
+  wire [NITER-1:0] f_p;
+  assign {f_side, f_n, f_r, f_p} = st_data[NITER*WST +: WST];
+  wire unused_n = &{1'b0, f_n, 1'b0};
+
+  wire [30:0] r_pack;
+  wire        r_overflow, r_inexact, r_tiny;
+  fp_round #(.ROUND(ROUND)) u_round (
+    .exp_i     ({2'd0, f_side[7:0]}),
+    .mant_i    (f_p[25:2]),
+    .guard_i   (f_p[1]),
+    .round_i   (f_p[0]),
+    .sticky_i  (|f_r),
+    .pack_o    (r_pack),
+    .overflow_o(r_overflow),
+    .inexact_o (r_inexact),
+    .tiny_o    (r_tiny)
+  );
+
+  localparam integer WR = 1 + 32 + 1 + 31 + 3;
+  wire          s_valid;
+  wire [WR-1:0] s_data;
+  fp_pipe #(.WIDTH(WR), .DEPTH(regs_after(NITER + 1))) u_pipe_round (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (st_valid[NITER]),
+    .data_i  ({f_side[WSIDE-1:8], r_pack, r_overflow, r_inexact, r_tiny}),
+    .valid_o (s_valid),
+    .data_o  (s_data)
+  );
+
+  // ---------------------------------------------------------------------
+  // s = 28: flags, special result; output register
+  // ---------------------------------------------------------------------
+  wire        p_spec, p_nv;
+  wire [31:0] p_spec_y;
+  wire [30:0] p_pack;
+  wire        p_overflow, p_inexact, p_tiny;
+  assign {p_spec, p_spec_y, p_nv, p_pack, p_overflow, p_inexact, p_tiny} = s_data;
+
+  wire [31:0] p_y;
+  wire [4:0]  p_flags;
+  fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
+    .sign_i    (1'b0),
+    .pack_i    (p_pack),
+    .overflow_i(p_overflow),
+    .inexact_i (p_inexact),
+    .tiny_i    (p_tiny),
+    .spec_i    (p_spec),
+    .spec_y_i  (p_spec_y),
+    .spec_nv_i (p_nv),
+    .y_o       (p_y),
+    .flags_o   (p_flags)
+  );
+
+  fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s_valid),
+    .data_i  ({p_y, p_flags}),
+    .valid_o (valid_o),
+    .data_o  ({y_o, flags_o})
+  );
+
+endmodule
+
+`default_nettype wire
