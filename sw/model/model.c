@@ -609,7 +609,7 @@ const char *fp3_mexpr_op_name(int kind) {
  * the language's min and max are defined in binary32. */
 static uint32_t order_key(uint32_t x) { return (x & 0x80000000u) ? ~x : x | 0x80000000u; }
 
-static float minmax32(float a, float b, int want_max) {
+float fp3_model_minmax32(float a, float b, int want_max) {
   uint32_t x = fpref_bits(a), y = fpref_bits(b);
   if (fpref_is_nan(x) || fpref_is_nan(y)) return fpref_float((fpref_is_nan(x) ? x : y) | 0x00400000u);
   int a_below = order_key(x) < order_key(y);
@@ -626,8 +626,8 @@ static float op32(const fp3_mexpr *x, float p, float q) {
   case FP3_ME_NEG: return fpref_float(fpref_bits(p) ^ 0x80000000u);
   case FP3_ME_SQRT: return sqrtf(p);
   case FP3_ME_ABS: return fpref_float(fpref_bits(p) & 0x7FFFFFFFu);
-  case FP3_ME_MIN: return minmax32(p, q, 0);
-  case FP3_ME_MAX: return minmax32(p, q, 1);
+  case FP3_ME_MIN: return fp3_model_minmax32(p, q, 0);
+  case FP3_ME_MAX: return fp3_model_minmax32(p, q, 1);
   default: return NAN;
   }
 }

@@ -133,6 +133,13 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
 int fp3_model_step_literal(const fp3_model *m, const char *integrator, const float *in,
                            float *y);
 
+/* min(a, b) (want_max 0) or max(a, b) (1) in binary32: IEEE 754-2019
+ * §9.6 minimum and maximum (a NaN operand gives a NaN: a quieted if a is a
+ * NaN, else b quieted; -0 is below +0; otherwise the smaller or larger
+ * operand, exactly), as the processor's min and max (docs/fp-cores.md).
+ * The one definition every golden model uses. */
+float fp3_model_minmax32(float a, float b, int want_max);
+
 /* ---- double precision ------------------------------------------------------ */
 
 /* f(y) in double, numbers by their strtod value (dval), params in[]. */
