@@ -30,6 +30,8 @@
 
 #include <cmocka.h>
 
+#include "compile.h"
+#include "engine.h"
 #include "fpref.h"
 #include "golden.h"
 #include "model.h"
@@ -250,11 +252,171 @@ static void test_golden_vs_gsl(void **st) {
   }
 }
 
+/* ---- compiled models on the engines ------------------------------------- */
+
+typedef struct obs_hist {
+  unsigned nstate, reg[FP3_MODEL_MAX_VARS];
+  uint32_t steps;
+  uint32_t *v; /* v[(k-1) * nstate + i]: state i written in integration k */
+  unsigned char *seen;
+} obs_hist;
+
+static void hist_write(void *ctx, unsigned reg, uint32_t value, uint32_t k) {
+  obs_hist *h = ctx;
+  for (unsigned i = 0; i < h->nstate; i++)
+    if (h->reg[i] == reg && k >= 1 && k <= h->steps) {
+      h->v[(k - 1) * h->nstate + i] = value;
+      h->seen[(k - 1) * h->nstate + i] = 1;
+    }
+}
+
+/* Per-object inputs of a shipped model (h, params; initial state). */
+static const struct {
+  const char *file;
+  float in[4], y0[6];
+} objs[] = {
+    {"models/ship.fp3m", {1.0f / 64, 50000, 5000, 10000}, {1.5f, -3}},
+    {"models/spring.fp3m", {1.0f / 64, 40, 0.8f, 2}, {0.5f, -0.25f}},
+    {"models/projectile.fp3m", {1.0f / 64, 0.002f, 9.81f}, {0, 2, 0, 30, 40, -5}},
+    {"models/orbit.fp3m", {1.0f / 64, 1.0f}, {1, 0, 0, 1.1f}},
+    {"models/spring3d.fp3m", {1.0f / 64, 30, 1.0f, 1.5f}, {1.5f, 0.2f, -0.3f, 0, 0.8f, 0.1f}},
+};
+
+/* Run the compiled model on engine e for `steps` integrations and compare
+ * every state variable after every integration with the IR golden model
+ * (and, literal, with fp3_model_step_literal). */
+static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const float *in,
+                      const float *y0, uint32_t steps, int literal, const char *what) {
+  unsigned reg[80];
+  uint32_t val[80];
+  size_t nw = fp3_compiled_model_start(c, in, y0, reg, val, 80);
+  const fp3_image *img = fp3_compiled_image(c);
+  if (fp3_engine_load(e, img->words, img->n)) fail_msg("%s: %s", what, fp3_engine_error(e));
+  for (size_t w = 0; w < nw; w++) assert_int_equal(fp3_engine_write_reg(e, reg[w], val[w]), 0);
+  obs_hist h = {m->nstate, {0}, steps, calloc((size_t)steps * m->nstate, 4),
+                calloc((size_t)steps * m->nstate, 1)};
+  assert_non_null(h.v);
+  assert_non_null(h.seen);
+  for (unsigned i = 0; i < m->nstate; i++) h.reg[i] = fp3_compiled_state_reg(c, i);
+  fp3_observer obs = {.ctx = &h, .on_write = hist_write};
+  fp3_status st;
+  if (fp3_engine_run(e, steps, &obs, &st)) fail_msg("%s: %s", what, fp3_engine_error(e));
+  assert_int_equal(st.error, FP3_ERR_NONE);
+  assert_int_equal(st.steps_done, steps);
+  float y[FP3_MODEL_MAX_VARS], yl[FP3_MODEL_MAX_VARS];
+  uint32_t cur[FP3_MODEL_MAX_VARS];
+  for (unsigned i = 0; i < m->nstate; i++) yl[i] = y0[i], cur[i] = fpref_bits(y0[i]);
+  for (uint32_t k = 1; k <= steps; k++) {
+    fp3_compiled_model_step(c, y);
+    if (literal) {
+      const char *integ = strstr(what, "rk4") ? "rk4" : strstr(what, "rk2") ? "rk2"
+                        : strstr(what, "symeuler") ? "symeuler" : "euler";
+      fp3_model_step_literal(m, integ, in, yl);
+    }
+    for (unsigned i = 0; i < m->nstate; i++) {
+      size_t q = (size_t)(k - 1) * m->nstate + i;
+      if (h.seen[q]) cur[i] = h.v[q];
+      if (cur[i] != fpref_bits(y[i]))
+        fail_msg("%s: %s after integration %u: engine 0x%08X golden 0x%08X", what,
+                 m->state[i], k, cur[i], fpref_bits(y[i]));
+      if (literal && fpref_bits(yl[i]) != fpref_bits(y[i]))
+        fail_msg("%s: %s after integration %u: IR golden 0x%08X literal 0x%08X", what,
+                 m->state[i], k, fpref_bits(y[i]), fpref_bits(yl[i]));
+    }
+  }
+  for (unsigned i = 0; i < m->nstate; i++) {
+    uint32_t r;
+    assert_int_equal(fp3_engine_read_reg(e, h.reg[i], &r), 0);
+    assert_int_equal(r, cur[i]);
+  }
+  free(h.v);
+  free(h.seen);
+}
+
+/* Every shipped model, integrators euler, rk2, rk4 (and symeuler where
+ * split), literal and folded, on the ISS (200 integrations) and on the
+ * RTL (rk4 and euler, 60 integrations). */
+static void test_engines(void **st) {
+  (void)st;
+  fp3_engine *iss = fp3_engine_iss_new(), *rtl = fp3_engine_rtl_new(NULL);
+  assert_non_null(iss);
+  assert_non_null(rtl);
+  static const char *const integs[] = {"euler", "rk2", "rk4", "symeuler"};
+  unsigned ran = 0, skipped = 0;
+  for (size_t i = 0; i < sizeof objs / sizeof objs[0]; i++) {
+    fp3_model *m = load(objs[i].file);
+    for (size_t g = 0; g < sizeof integs / sizeof integs[0]; g++)
+      for (int lit = 1; lit >= 0; lit--) {
+        if (strcmp(integs[g], "symeuler") == 0 && !fp3_model_split(m)) continue;
+        fp3_compile_opts o;
+        fp3_compile_defaults(&o);
+        o.fold = o.drop_zero = !lit;
+        fp3_compiled *c = NULL;
+        char msg[512], what[128];
+        snprintf(what, sizeof what, "%s %s %s", m->name, integs[g], lit ? "literal" : "folded");
+        if (fp3_compile_model(m, integs[g], &o, NULL, &c, msg, sizeof msg)) {
+          /* only a missing div or sqrt instruction may stop a shipped model */
+          if (!strstr(msg, "this build has no HAS_SQRT unit") &&
+              !strstr(msg, "this build has no HAS_DIV unit"))
+            fail_msg("%s: %s", what, msg);
+          if (!lit) continue;
+          printf("SKIP (ISS, RTL): %s: %s\n", what, msg);
+          skipped++;
+          continue;
+        }
+        run_check(iss, c, m, objs[i].in, objs[i].y0, 200, lit, what);
+        if (strcmp(integs[g], "rk4") == 0 || strcmp(integs[g], "euler") == 0)
+          run_check(rtl, c, m, objs[i].in, objs[i].y0, 60, lit, what);
+        ran++;
+        fp3_compiled_free(c);
+      }
+    free(m);
+  }
+  printf("compiled models bit-exact on the engines: %u programs, %u skipped\n", ran, skipped);
+  assert_true(ran >= 8);
+  fp3_engine_free(iss);
+  fp3_engine_free(rtl);
+}
+
+/* The compiler's refusals: a missing unit names it; too many words names
+ * IMEM_DEPTH; too few registers names NUM_REGS. */
+static void test_compile_refusals(void **st) {
+  (void)st;
+  fp3_model *m = load("models/projectile.fp3m");
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  fp3_compiled *c = NULL;
+  char msg[512];
+  if (fp3_opc_lookup("sqrt") < 0) {
+    assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+    assert_non_null(strstr(msg, "model projectile needs sqrt: this build has no HAS_SQRT unit"));
+  }
+  free(m);
+  m = parse("param a\nstate x\nx' = x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x"
+            "*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*a\n");
+  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "instructions; IMEM_DEPTH is 256"));
+  free(m);
+  m = load("models/spring.fp3m");
+  o.num_regs = 6;
+  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "NUM_REGS"));
+  o.num_regs = FP3_DEFAULT_NUM_REGS;
+  assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "unknown integrator 'verlet'"));
+  free(m);
+  m = load("models/projectile.fp3m");
+  assert_int_equal(fp3_compile_model(m, "symeuler", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "needs the state split"));
+  free(m);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_shipped_parse), cmocka_unit_test(test_tree),
       cmocka_unit_test(test_errors),        cmocka_unit_test(test_ship_literal),
       cmocka_unit_test(test_gsl_exact),     cmocka_unit_test(test_golden_vs_gsl),
+      cmocka_unit_test(test_engines),       cmocka_unit_test(test_compile_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

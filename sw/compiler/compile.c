@@ -57,7 +57,7 @@ typedef struct node {
   int host;        /* loop invariant computed by the host in binary32
                       (a model's div, sqrt, abs, neg, min, max on
                       params: no unit needed) and bound like an input */
-  char name[16];   /* for comments ("k1", "vt2", ...)             */
+  char name[FP3_MODEL_NAME_LEN]; /* for comments ("k1", "vt2", ...) */
 } node;
 
 /* A reference to a node, possibly negated (zero-term removal). */
@@ -528,7 +528,7 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
   builder *b = &c->b;
   int rc = -1;
   fp3_strbuf t = {0};
-  insn *code = calloc(MAX_INSNS, sizeof *code);
+  insn *code = calloc(MAX_NODES + MAX_STATE + 2, sizeof *code); /* counted, then checked */
   bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
   int *order = calloc(MAX_NODES + 2, sizeof *order);
   regalloc *ra = calloc(1, sizeof *ra);
@@ -863,6 +863,322 @@ void fp3_compiled_free(fp3_compiled *c) {
 const char *fp3_compiled_text(const fp3_compiled *c) { return c->text; }
 const fp3_image *fp3_compiled_image(const fp3_compiled *c) { return &c->img; }
 const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c) { return &c->stats; }
+
+/* ---- models (model.h) -------------------------------------------------- */
+
+/* Exact rewrites only: a + (-b) = a - b, (-a) + b = b - a, a - (-b) =
+ * a + b (IEEE 754 defines subtraction so), (-a) b = -(a b), (-a)/b =
+ * -(a/b), |(-a)| = |a| (sign-symmetric rounding: RNE, RTZ).  A negation
+ * that must exist as a value (an output, sqrt's or min's operand, a sum
+ * of two negated terms) is pushed into an invariant factor of a product
+ * or quotient, -(a b) = (-a) b with -a computed by the host, or else
+ * becomes a neg instruction.  (-a) + (-b) is never rewritten -(a + b):
+ * the two differ in the sign of an exact zero. */
+static ref m_value(builder *b, ref x);
+static void golden_begin(fp3_compiled *c, const float *y0);
+static void golden_advance(fp3_compiled *c, float *y);
+
+/* A node for -x without a neg instruction where an exact form exists, else
+ * -1. */
+static int neg_push(builder *b, int i) {
+  node x = b->nd[i];
+  if (x.kind == NK_CONST) return leaf(b, NK_CONST, -1, x.bits ^ 0x80000000u, "nconst").n;
+  if (x.inv) { /* the host flips it */
+    node z = {NK_NEG, i, -1, -1, 0, 1, 0, 0, ""};
+    int k = new_node(b, z);
+    if (!b->nd[k].name[0]) snprintf(b->nd[k].name, sizeof b->nd[k].name, "-%.24s", x.name);
+    return k;
+  }
+  if (x.kind != NK_MUL && x.kind != NK_DIV) return -1;
+  int na = neg_push(b, x.a);
+  if (na >= 0) x.a = na;
+  else if (x.kind == NK_MUL && (na = neg_push(b, x.b)) >= 0) x.b = na;
+  else return -1;
+  x.name[0] = '\0';
+  x.live = 0;
+  int k = new_node(b, x);
+  if (!b->nd[k].name[0]) {
+    char t_[FP3_MODEL_NAME_LEN];
+    snprintf(t_, sizeof t_, "-%.24s", b->nd[i].name);
+    memcpy(b->nd[k].name, t_, sizeof t_);
+  }
+  return k;
+}
+
+/* x as a value: its negation carried out. */
+static ref m_value(builder *b, ref x) {
+  if (!x.neg) return x;
+  int k = neg_push(b, x.n);
+  if (k < 0) k = op(b, NK_NEG, (ref){x.n, 0}, (ref){-1, 0}).n;
+  return (ref){k, 0};
+}
+
+static ref m_unary(builder *b, int kind, ref x) {
+  node z = {kind, x.n, -1, -1, 0, b->nd[x.n].inv, 0, 0, ""};
+  return (ref){new_node(b, z), 0};
+}
+
+static ref m_add(builder *b, ref x, ref y) {
+  if (x.neg && y.neg) x = m_value(b, x); /* (-a) + (-b): one negation made */
+  return add(b, x, y);
+}
+
+static ref m_div(builder *b, ref x, ref y) {
+  if (is_zero(b, x)) return x;
+  ref r;
+  if (b->fold && b->nd[y.n].inv && !b->nd[x.n].inv) { /* x / p = x * (1/p), host 1/p */
+    ref one = konst(b, 1.0f, "one");
+    node z = {NK_DIV, one.n, y.n, -1, 0, 1, 0, 0, ""};
+    int k = new_node(b, z);
+    if (!b->nd[k].name[0]) {
+      char t_[FP3_MODEL_NAME_LEN];
+      snprintf(t_, sizeof t_, "1/%.24s", b->nd[y.n].name);
+      memcpy(b->nd[k].name, t_, sizeof t_);
+    }
+    r = mul(b, (ref){x.n, 0}, (ref){k, 0});
+    r.neg ^= y.neg;
+    return r;
+  }
+  node z = {NK_DIV, x.n, y.n, -1, 0, b->nd[x.n].inv && b->nd[y.n].inv, 0, 0, ""};
+  r = (ref){new_node(b, z), x.neg ^ y.neg};
+  return r;
+}
+
+/* The model's derivatives at state y (refs): f[i] for each state. */
+static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char *tag) {
+  ref *r = calloc(m->nn ? m->nn : 1, sizeof *r);
+  if (!r) {
+    b->err = 1;
+    return;
+  }
+  for (unsigned i = 0; i < m->nn && !b->err; i++) {
+    const fp3_mexpr *x = &m->node[i];
+    if (x->exact_only) continue;
+    ref a = x->a >= 0 ? r[x->a] : (ref){0, 0}, c = x->b >= 0 ? r[x->b] : (ref){0, 0};
+    switch (x->kind) {
+    case FP3_ME_NUM: {
+      const char *cn = "c";
+      for (unsigned d = 0; d < m->ndef; d++)
+        if (m->def_node[d] == (int)i) cn = m->def[d];
+      if (b->drop_zero && (x->bits & 0x7FFFFFFFu) == 0) {
+        r[i] = konst(b, 0.0f, "zero");
+        b->zero = r[i].n;
+      } else {
+        r[i] = konst(b, fpref_float(x->bits), cn);
+      }
+      break;
+    }
+    case FP3_ME_PARAM:
+      if (b->drop_zero && b->pzero && b->pzero[x->id]) {
+        r[i] = konst(b, 0.0f, "zero");
+        b->zero = r[i].n;
+      } else {
+        r[i] = leaf(b, NK_IN, x->id, 0, m->param[x->id]);
+      }
+      break;
+    case FP3_ME_STATE: r[i] = y[x->id]; break;
+    case FP3_ME_ADD: r[i] = m_add(b, a, c); break;
+    case FP3_ME_SUB: c.neg ^= 1; r[i] = m_add(b, a, c); break;
+    case FP3_ME_MUL: r[i] = mul(b, a, c); break;
+    case FP3_ME_DIV: r[i] = m_div(b, a, c); break;
+    case FP3_ME_NEG: r[i] = a; r[i].neg ^= 1; break;
+    case FP3_ME_SQRT: r[i] = m_unary(b, NK_SQRT, m_value(b, a)); break;
+    case FP3_ME_ABS: a.neg = 0; r[i] = m_unary(b, NK_ABS, a); break;
+    case FP3_ME_MIN:
+    case FP3_ME_MAX:
+      r[i] = op(b, x->kind == FP3_ME_MIN ? NK_MIN : NK_MAX, m_value(b, a), m_value(b, c));
+      break;
+    default: b->err = 1; break;
+    }
+    for (unsigned d = 0; d < m->ndef; d++)
+      if (m->def_is_let[d] && m->def_node[d] == (int)i) nm(b, r[i], m->def[d]);
+  }
+  for (unsigned i = 0; i < m->nstate && !b->err; i++) {
+    f[i] = r[m->deriv[i]];
+    char s_[FP3_MODEL_NAME_LEN];
+    snprintf(s_, sizeof s_, "f%.2s_%.24s", tag, m->state[i]);
+    nm(b, f[i], s_);
+  }
+  free(r);
+}
+
+/* tag_state: "k1_x" etc. for the comments. */
+static ref m_nm(builder *b, ref r, const char *what, unsigned i) {
+  char s_[FP3_MODEL_NAME_LEN];
+  snprintf(s_, sizeof s_, "%.4s_%.24s", what, b->st_name[i]);
+  return nm(b, r, s_);
+}
+
+/* The literal integrators of model.h (fp3_model_step_literal), or folded
+ * (b->fold: RK4's sum as (k1 + k4) + 2 (k2 + k3)). */
+static int m_build(builder *b, const fp3_model *m, const char *integ) {
+  const unsigned ns = m->nstate;
+  ref y[MAX_STATE] = {{0, 0}}, f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}};
+  ref k1[MAX_STATE] = {{0, 0}}, k2[MAX_STATE] = {{0, 0}}, k3[MAX_STATE] = {{0, 0}};
+  for (unsigned i = 0; i < ns; i++) y[i] = state(b, (int)i);
+  ref h = leaf(b, NK_IN, 0, 0, "h");
+  if (strcmp(integ, "euler") == 0) {
+    m_f(b, m, y, f, "");
+    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+  } else if (strcmp(integ, "rk2") == 0) {
+    ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
+    m_f(b, m, y, f, "1");
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, hh, f[j])), "ym", j);
+    m_f(b, m, t, f, "2");
+    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+  } else if (strcmp(integ, "rk4") == 0) {
+    ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
+    ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
+    m_f(b, m, y, f, "1");
+    for (unsigned j = 0; j < ns; j++) k1[j] = m_nm(b, mul(b, h, f[j]), "k1", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k1[j])), "y2", j);
+    m_f(b, m, t, f, "2");
+    for (unsigned j = 0; j < ns; j++) k2[j] = m_nm(b, mul(b, h, f[j]), "k2", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k2[j])), "y3", j);
+    m_f(b, m, t, f, "3");
+    for (unsigned j = 0; j < ns; j++) k3[j] = m_nm(b, mul(b, h, f[j]), "k3", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], k3[j]), "y4", j);
+    m_f(b, m, t, f, "4");
+    for (unsigned i = 0; i < ns; i++) {
+      ref k4 = m_nm(b, mul(b, h, f[i]), "k4", i), sum;
+      if (b->fold) {
+        sum = m_add(b, m_add(b, k1[i], k4), mul(b, two, m_add(b, k2[i], k3[i])));
+      } else {
+        sum = m_add(b, k1[i], mul(b, two, k2[i]));
+        sum = m_add(b, sum, mul(b, two, k3[i]));
+        sum = m_add(b, sum, k4);
+      }
+      sum = m_nm(b, sum, "sum", i);
+      b->out[i] = m_nm(b, m_add(b, y[i], mul(b, sixth, sum)), "n", i);
+    }
+  } else if (strcmp(integ, "symeuler") == 0) {
+    if (!fp3_model_split(m)) return -2;
+    m_f(b, m, y, f, "1");
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_VELOCITY) t[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+      else t[i] = y[i];
+    m_f(b, m, t, f, "2");
+    for (unsigned i = 0; i < ns; i++)
+      b->out[i] = m->role[i] == FP3_MR_POSITION ? m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i)
+                                               : t[i];
+  } else {
+    return -1;
+  }
+  for (unsigned i = 0; i < ns; i++) b->out[i] = m_value(b, b->out[i]);
+  return 0;
+}
+
+static int model_ir(builder *b, const fp3_model *m, const char *integ,
+                    const fp3_compile_opts *o, const unsigned char *pzero, char *msg, size_t n) {
+  memset(b, 0, sizeof *b);
+  b->fold = o->fold;
+  b->drop_zero = o->drop_zero;
+  b->zero = -1;
+  b->model = m;
+  b->pzero = pzero;
+  b->nstate = (int)m->nstate;
+  b->nin = (int)(m->nparam + m->nstate);
+  for (unsigned i = 0; i < m->nstate; i++)
+    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s", m->state[i]);
+  for (int k = 0; k < b->nin; k++) {
+    unsigned q = (unsigned)k;
+    if (q < m->nparam) snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", m->param[q]);
+    else snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s(0)", m->state[q - m->nparam]);
+    b->in_state[k] = q < m->nparam ? -1 : (int)(q - m->nparam);
+  }
+  int rc = m_build(b, m, integ);
+  if (rc == -1) {
+    snprintf(msg, n, "unknown integrator '%s' for a model (%s)", integ, fp3_model_integrators());
+    return -1;
+  }
+  if (rc == -2) {
+    snprintf(msg, n, "%s: integrator %s needs the state split into positions and velocities "
+             "(`position` and `velocity` lines, docs/models.md)", m->file, integ);
+    return -1;
+  }
+  if (b->err) {
+    snprintf(msg, n, "model %s: the IR has more than %d nodes", m->name, MAX_NODES);
+    return -1;
+  }
+  /* invariant operations without an add/sub/mul instruction: the host's */
+  for (int i = 0; i < b->nn; i++) {
+    node *x = &b->nd[i];
+    if (op_kind(x->kind) && x->inv && x->kind != NK_ADD && x->kind != NK_SUB && x->kind != NK_MUL)
+      x->host = 1;
+  }
+  for (int w = 0; w < b->nstate; w++) mark_live(b, b->out[w].n);
+  return 0;
+}
+
+int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                      const unsigned char *param_zero, fp3_compiled **outp, char *msg,
+                      size_t n) {
+  *outp = NULL;
+  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
+      !o->mov_latency || o->fmax_pipe > 1) {
+    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
+    return -1;
+  }
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_strbuf h = {0};
+  int rc = -1;
+  fp3_compile_opts lit = *o;
+  lit.fold = lit.drop_zero = 0;
+  if (model_ir(&c->b, m, integrator, &lit, NULL, msg, n)) goto out;
+  for (int i = 0; i < c->b.nn; i++)
+    if (c->b.nd[i].live && op_kind(c->b.nd[i].kind) && !c->b.nd[i].inv)
+      c->stats.literal_body_insns++;
+  c->stats.literal_body_insns++; /* endi */
+  if (model_ir(&c->b, m, integrator, o, param_zero, msg, n)) goto out;
+  fp3_strbuf_printf(&h, "; model %s (%s) -- compiled by fp3 for integrator %s, %s%s\n;\n",
+                    m->name, m->file, integrator,
+                    o->fold ? "folded" : "literal (docs/models.md, bit for bit)",
+                    o->drop_zero ? ", terms zero in every object removed" : "");
+  if (o->fold)
+    fp3_strbuf_printf(&h, "; folded: divisions by parameter-only values are products with "
+                          "the host's reciprocal\n");
+  if (h.oom) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  rc = backend(c, o, h.s, msg, n);
+out:
+  free(h.s);
+  if (rc) fp3_compiled_free(c);
+  else *outp = c;
+  return rc;
+}
+
+unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i) {
+  return (unsigned)c->state_reg[i];
+}
+
+size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
+                                unsigned *reg, uint32_t *val, size_t max) {
+  const builder *b = &c->b;
+  const fp3_model *m = b->model;
+  for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
+  for (unsigned k = 0; k < m->nstate; k++) c->in[m->nparam + k] = y0[k];
+  golden_begin(c, y0);
+  size_t w = 0;
+  for (int k = 0; k < b->nin && w < max; k++)
+    if (c->in_reg[k] >= 0) {
+      reg[w] = (unsigned)c->in_reg[k];
+      val[w++] = fpref_bits(c->in[k]);
+    }
+  for (int i = 0; i < b->nn && w < max; i++)
+    if (c->host_reg[i] >= 0) {
+      reg[w] = (unsigned)c->host_reg[i];
+      val[w++] = fpref_bits(c->val[i]);
+    }
+  return w;
+}
+
+void fp3_compiled_model_step(fp3_compiled *c, float *y) { golden_advance(c, y); }
 
 /* ---- golden model -------------------------------------------------------- */
 
