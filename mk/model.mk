@@ -8,3 +8,6 @@ $(BUILD)/tests/test_model: tests/test_model.c $(BUILD)/sw-san/libfp3.a $(RTL_DEP
 	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_model
+
+# tests/test_model_cli.sh runs build/fp3 (FP3_BIN, mk/sw.mk).
+TEST_SCRIPTS += tests/test_model_cli.sh
