@@ -519,6 +519,31 @@ static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
   return 0;
 }
 
+/* 0 if the options are usable, else -1 with the reason. */
+static int check_opts(const fp3_compile_opts *o, char *msg, size_t n) {
+  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
+      !o->mov_latency || o->fmax_pipe > 1) {
+    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
+    return -1;
+  }
+  if (o->fmax_pipe &&
+      (o->add_latency <= FP3_FMAX_PIPE_PICK_STAGES || o->mul_latency <= FP3_FMAX_PIPE_PICK_STAGES)) {
+    snprintf(msg, n, "FMAX_PIPE needs add and mul latencies of at least %d (add %u, mul %u)",
+             FP3_FMAX_PIPE_PICK_STAGES + 1, o->add_latency, o->mul_latency);
+    return -1;
+  }
+  return 0;
+}
+
+/* c->stats.literal_body_insns from the literal IR in c->b: its loop's
+ * operations and endi. */
+static void count_literal(fp3_compiled *c) {
+  for (int i = 0; i < c->b.nn; i++)
+    if (c->b.nd[i].live && op_kind(c->b.nd[i].kind) && !c->b.nd[i].inv)
+      c->stats.literal_body_insns++;
+  c->stats.literal_body_insns++; /* endi */
+}
+
 /* The back end: the IR in c->b (live nodes marked), built with options o,
  * to the scheduled, register-allocated program, its text (head: the
  * caller's first comment lines) and image, and c->stats.  0, or -1 with
@@ -800,17 +825,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
     snprintf(msg, n, "the scene has no objects");
     return -1;
   }
-  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
-      !o->mov_latency || o->fmax_pipe > 1) {
-    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
-    return -1;
-  }
-  if (o->fmax_pipe &&
-      (o->add_latency <= FP3_FMAX_PIPE_PICK_STAGES || o->mul_latency <= FP3_FMAX_PIPE_PICK_STAGES)) {
-    snprintf(msg, n, "FMAX_PIPE needs add and mul latencies of at least %d (add %u, mul %u)",
-             FP3_FMAX_PIPE_PICK_STAGES + 1, o->add_latency, o->mul_latency);
-    return -1;
-  }
+  if (check_opts(o, msg, n)) return -1;
   fp3_compiled *c = calloc(1, sizeof *c);
   if (!c) {
     snprintf(msg, n, "out of memory");
@@ -822,9 +837,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   fp3_compile_opts lit = *o;
   lit.fold = lit.drop_zero = 0;
   if (compile_ir(&c->b, sc, integrator, &lit, msg, n)) goto out;
-  for (int i = 0; i < c->b.nn; i++)
-    if (c->b.nd[i].live && op_kind(c->b.nd[i].kind) && !c->b.nd[i].inv) c->stats.literal_body_insns++;
-  c->stats.literal_body_insns++; /* endi */
+  count_literal(c);
   if (compile_ir(&c->b, sc, integrator, o, msg, n)) goto out;
   builder *b = &c->b;
   c->stats.no_drag = b->no_drag;
@@ -1114,11 +1127,7 @@ int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_comp
                       const unsigned char *param_zero, fp3_compiled **outp, char *msg,
                       size_t n) {
   *outp = NULL;
-  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
-      !o->mov_latency || o->fmax_pipe > 1) {
-    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
-    return -1;
-  }
+  if (check_opts(o, msg, n)) return -1;
   fp3_compiled *c = calloc(1, sizeof *c);
   if (!c) {
     snprintf(msg, n, "out of memory");
@@ -1129,10 +1138,7 @@ int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_comp
   fp3_compile_opts lit = *o;
   lit.fold = lit.drop_zero = 0;
   if (model_ir(&c->b, m, integrator, &lit, NULL, msg, n)) goto out;
-  for (int i = 0; i < c->b.nn; i++)
-    if (c->b.nd[i].live && op_kind(c->b.nd[i].kind) && !c->b.nd[i].inv)
-      c->stats.literal_body_insns++;
-  c->stats.literal_body_insns++; /* endi */
+  count_literal(c);
   if (model_ir(&c->b, m, integrator, o, param_zero, msg, n)) goto out;
   fp3_strbuf_printf(&h, "; model %s (%s) -- compiled by fp3 for integrator %s, %s%s\n;\n",
                     m->name, m->file, integrator,

@@ -24,8 +24,8 @@
  * `const` name to a number node.  Evaluating the array in index order
  * evaluates every subexpression once, operands first.
  */
-#ifndef FP3_MODEL_H
-#define FP3_MODEL_H
+#ifndef FP3_MODEL_LANG_H
+#define FP3_MODEL_LANG_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -151,4 +151,4 @@ void fp3_model_eval_f_double(const fp3_model *m, const double *in, const double 
 int fp3_model_exact(const fp3_model *m, unsigned i, const double *in, const double *y0,
                     double t, double *out);
 
-#endif /* FP3_MODEL_H */
+#endif /* FP3_MODEL_LANG_H */
