@@ -3,7 +3,8 @@
 #
 # Each folder of sw/ is one layer, ranked from the bottom up:
 #   common (formatting and file helpers) < isa (assembler, disassembler,
-#   program images) < ref (golden models and references) < engine (ISS,
+#   program images) < ref (golden models and references) < model (the
+#   model language: parser, literal golden model, GSL reference) < engine (ISS,
 #   RTL engine, vector runner) < scene (many objects, sleeping) <
 #   compiler (scene compiler, configurator) < bench < cli (the fp3 tool).
 # A file may include headers of its own layer and of layers below it,
@@ -13,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 python3 - <<'PY'
 import glob, os, re, sys
-order = ["common", "isa", "ref", "engine", "scene", "compiler", "bench", "cli"]
+order = ["common", "isa", "ref", "model", "engine", "scene", "compiler", "bench", "cli"]
 rank = {l: i for i, l in enumerate(order)}
 where = {}
 for f in glob.glob("sw/*/*.[ch]"):

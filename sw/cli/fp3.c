@@ -39,6 +39,7 @@
 #include "cmd_bench.h"
 #include "cliopt.h"
 #include "cmd_compile.h"
+#include "cmd_model.h"
 #include "cmd_configure.h"
 #include "compile.h"
 #include "cmd_frames.h"
@@ -389,6 +390,8 @@ static void usage_run(FILE *f) {
           "               [--program FILE.s] [--steps N]\n"
           "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
           "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
+          "       fp3 run --model FILE.fp3m ...   a model file (fp3 run --model x --help,\n"
+          "                                       docs/models.md)\n"
           "\n"
           "Assemble the program, write its .in registers, run N integrations\n"
           "on the engine and compare the .out results v and s after every\n"
@@ -504,6 +507,7 @@ static void print_row(const checker *c, uint32_t k, uint32_t vb, uint32_t sb) {
 }
 
 static int cmd_run(int argc, char **argv) {
+  if (fp3_args_have_model(argc, argv)) return fp3_cmd_run_model(argc, argv);
   const char *engine_name = "rtl", *program = NULL, *trace = NULL;
   uint64_t win_first = 0, win_count = TRACE_WINDOW_DEFAULT;
   uint32_t steps = DEFAULT_STEPS;
@@ -1015,7 +1019,9 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "testfloat") == 0)
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
-  if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
+  if (strcmp(cmd, "compile") == 0)
+    return fp3_args_have_model(argc - 1, argv + 1) ? fp3_cmd_compile_model(argc - 1, argv + 1)
+                                                   : fp3_cmd_compile(argc - 1, argv + 1);
   if (strcmp(cmd, "configure") == 0) return fp3_cmd_configure(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   if (strcmp(cmd, "frames") == 0) return fp3_cmd_frames(argc - 1, argv + 1);

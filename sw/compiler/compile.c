@@ -8,6 +8,7 @@
 #include "compile.h"
 
 #include <float.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,20 +18,33 @@
 #include "fp3_isa.h"
 #include "fpref.h"
 #include "golden.h"
+#include "model.h"
 #include "report.h"
 
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "the IR golden model needs float expressions evaluated in float"
 #endif
 
-#define MAX_NODES 256
+/* IR nodes: a model's RK4 on six state variables with a square root
+ * builds about 300 (models/projectile.fp3m). */
+#define MAX_NODES 1024
 #define MAX_INSNS FP3_DEFAULT_IMEM_DEPTH
+#define MAX_STATE FP3_MODEL_MAX_VARS
+#define MAX_IN (2 * FP3_MODEL_MAX_VARS)
 #define NOTE_LEN 72
 
 /* ---- the IR ------------------------------------------------------------- */
 
-enum node_kind { NK_IN, NK_CONST, NK_STATE, NK_ADD, NK_SUB, NK_MUL };
-enum { ST_V = 0, ST_S = 1 }; /* loop-carried state */
+/* Operations from NK_ADD on; NK_DIV .. NK_MAX come from models only
+ * (unary ones have b = -1). */
+enum node_kind { NK_IN, NK_CONST, NK_STATE, NK_ADD, NK_SUB, NK_MUL, NK_DIV, NK_SQRT, NK_ABS,
+                 NK_NEG, NK_MIN, NK_MAX, NK_COUNT };
+enum { ST_V = 0, ST_S = 1 }; /* the ship's loop-carried state */
+
+/* The instruction of each operation, by mnemonic: the assembler's table
+ * (fp3_opc_lookup) says whether this ISA has it. */
+static const char *const kind_mnemonic[NK_COUNT] = {
+    NULL, NULL, NULL, "add", "sub", "mul", "div", "sqrt", "abs", "neg", "min", "max"};
 
 typedef struct node {
   int kind;
@@ -38,8 +52,12 @@ typedef struct node {
   int id;          /* NK_IN: enum fp3_in_param; NK_STATE: ST_*       */
   uint32_t bits;   /* NK_CONST                                     */
   int inv;         /* loop invariant: inputs and constants only     */
-  int live;        /* read by an output, directly or not            */
-  char name[16];   /* for comments ("k1", "vt2", ...)             */
+  int live;        /* read by an output, directly or not (not through
+                      a host node: its operands need no register)   */
+  int host;        /* loop invariant computed by the host in binary32
+                      (a model's div, sqrt, abs, neg, min, max on
+                      params: no unit needed) and bound like an input */
+  char name[FP3_MODEL_NAME_LEN]; /* for comments ("k1", "vt2", ...) */
 } node;
 
 /* A reference to a node, possibly negated (zero-term removal). */
@@ -53,11 +71,19 @@ typedef struct builder {
   int nn;
   int fold, drop_zero, no_drag, no_thrust;
   int zero;        /* the +0 constant standing for a removed term, or -1 */
-  ref out[2];      /* next v, next s                                   */
+  int nstate;      /* loop-carried state variables (the ship: v, s)     */
+  ref out[MAX_STATE]; /* their next values                              */
+  int nin;         /* host inputs NK_IN id 0 .. nin-1                   */
+  char in_name[MAX_IN][FP3_MODEL_NAME_LEN];
+  int in_state[MAX_IN]; /* the state variable an input initialises, or -1 */
+  char st_name[MAX_STATE][FP3_MODEL_NAME_LEN];
+  const fp3_model *model;      /* a model's program, else NULL (the ship) */
+  const unsigned char *pzero;  /* model params zero in every object (drop_zero) */
   int err;
 } builder;
 
-static int op_kind(int k) { return k == NK_ADD || k == NK_SUB || k == NK_MUL; }
+static int op_kind(int k) { return k >= NK_ADD && k < NK_COUNT; }
+static int unary_kind(int k) { return k == NK_SQRT || k == NK_ABS || k == NK_NEG; }
 
 static int new_node(builder *b, node x) {
   for (int i = 0; i < b->nn; i++) { /* hash-consing: common subexpressions */
@@ -74,7 +100,7 @@ static int new_node(builder *b, node x) {
 }
 
 static ref leaf(builder *b, int kind, int id, uint32_t bits, const char *name) {
-  node x = {kind, -1, -1, id, bits, kind != NK_STATE, 0, ""};
+  node x = {kind, -1, -1, id, bits, kind != NK_STATE, 0, 0, ""};
   int i = new_node(b, x);
   if (!b->nd[i].name[0]) snprintf(b->nd[i].name, sizeof b->nd[i].name, "%s", name);
   return (ref){i, 0};
@@ -103,11 +129,11 @@ static ref input(builder *b, int id) {
 }
 
 static ref state(builder *b, int which) {
-  return leaf(b, NK_STATE, which, 0, which == ST_V ? "v" : "s");
+  return leaf(b, NK_STATE, which, 0, b->st_name[which]);
 }
 
 static ref op(builder *b, int kind, ref x, ref y) {
-  node z = {kind, x.n, y.n, -1, 0, b->nd[x.n].inv && b->nd[y.n].inv, 0, ""};
+  node z = {kind, x.n, y.n, -1, 0, b->nd[x.n].inv && b->nd[y.n].inv, 0, 0, ""};
   return (ref){new_node(b, z), 0};
 }
 
@@ -264,9 +290,9 @@ static void mark_live(builder *b, int i) {
   node *x = &b->nd[i];
   if (x->live) return;
   x->live = 1;
-  if (op_kind(x->kind)) {
+  if (op_kind(x->kind) && !x->host) {
     mark_live(b, x->a);
-    mark_live(b, x->b);
+    if (x->b >= 0) mark_live(b, x->b);
   }
 }
 
@@ -295,7 +321,10 @@ struct fp3_compiled {
   fp3_image img;
   fp3_compile_stats stats;
   float val[MAX_NODES];    /* golden model: node values               */
-  float in[FP3_IN_COUNT];
+  float in[MAX_IN];        /* host inputs (the ship: fp3_in_values)    */
+  int in_reg[MAX_IN];      /* register of each input, -1: none         */
+  int state_reg[MAX_STATE];/* register of each state variable          */
+  int host_reg[MAX_NODES]; /* register of each host-computed node, -1   */
 };
 
 /* Cycles from the issue of an instruction of `unit` to the issue of a
@@ -320,13 +349,14 @@ static int issue_spacing(const fp3_compile_opts *o) {
   return o->fmax_pipe ? FP3_FMAX_PIPE_ISSUE_SPACING : FP3_ISSUE_SPACING;
 }
 
-static unsigned node_opc(int kind) {
-  return kind == NK_ADD ? FP3_OP_ADD : kind == NK_SUB ? FP3_OP_SUB : FP3_OP_MUL;
+/* The opcode of an operation, or -1 when this ISA lacks it. */
+static int node_opc(int kind) {
+  return op_kind(kind) ? fp3_opc_lookup(kind_mnemonic[kind]) : -1;
 }
 
 static unsigned bins_latency(const builder *b, const fp3_compile_opts *o, const bins *x) {
   if (x->is_mov) return unit_latency(o, FP3_UNIT_MOV);
-  return unit_latency(o, fp3_opc_unit(node_opc(b->nd[x->node].kind)));
+  return unit_latency(o, fp3_opc_unit((unsigned)node_opc(b->nd[x->node].kind)));
 }
 
 /* Body instruction producing node i (-1: none, a prologue value). */
@@ -407,9 +437,15 @@ static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int n
 /* "name = a op b" for a comment. */
 static void describe(const builder *b, int i, char *s, size_t n) {
   const node *x = &b->nd[i];
-  static const char sym[] = {'?', '?', '?', '+', '-', '*'};
-  snprintf(s, n, "%s = %s %c %s", x->name[0] ? x->name : "t", b->nd[x->a].name,
-           sym[x->kind], b->nd[x->b].name);
+  static const char *const sym[NK_COUNT] = {"?", "?", "?", "+", "-", "*", "/"};
+  const char *nm_ = x->name[0] ? x->name : "t";
+  if (sym[x->kind])
+    snprintf(s, n, "%s = %s %s %s", nm_, b->nd[x->a].name, sym[x->kind], b->nd[x->b].name);
+  else if (unary_kind(x->kind))
+    snprintf(s, n, "%s = %s(%s)", nm_, kind_mnemonic[x->kind], b->nd[x->a].name);
+  else
+    snprintf(s, n, "%s = %s(%s, %s)", nm_, kind_mnemonic[x->kind], b->nd[x->a].name,
+             b->nd[x->b].name);
 }
 
 /* ---- compile ---------------------------------------------------------------- */
@@ -452,6 +488,14 @@ static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
   b->fold = o->fold;
   b->drop_zero = o->drop_zero;
   b->zero = -1;
+  b->nstate = 2;
+  snprintf(b->st_name[ST_V], FP3_MODEL_NAME_LEN, "v");
+  snprintf(b->st_name[ST_S], FP3_MODEL_NAME_LEN, "s");
+  b->nin = FP3_IN_COUNT;
+  for (int k = 0; k < FP3_IN_COUNT; k++) {
+    snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", fp3_in_name(k));
+    b->in_state[k] = k == FP3_IN_V0 ? ST_V : k == FP3_IN_S0 ? ST_S : -1;
+  }
   b->no_drag = b->no_thrust = 1;
   for (size_t i = 0; i < sc->n; i++) {
     if (sc->objs[i].C != 0.0f) b->no_drag = 0;
@@ -475,13 +519,8 @@ static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
   return 0;
 }
 
-int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_opts *o,
-                const char *scene_name, fp3_compiled **outp, char *msg, size_t n) {
-  *outp = NULL;
-  if (sc->n == 0) {
-    snprintf(msg, n, "the scene has no objects");
-    return -1;
-  }
+/* 0 if the options are usable, else -1 with the reason. */
+static int check_opts(const fp3_compile_opts *o, char *msg, size_t n) {
   if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
       !o->mov_latency || o->fmax_pipe > 1) {
     snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
@@ -493,15 +532,28 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
              FP3_FMAX_PIPE_PICK_STAGES + 1, o->add_latency, o->mul_latency);
     return -1;
   }
-  fp3_compiled *c = calloc(1, sizeof *c);
-  if (!c) {
-    snprintf(msg, n, "out of memory");
-    return -1;
-  }
+  return 0;
+}
+
+/* c->stats.literal_body_insns from the literal IR in c->b: its loop's
+ * operations and endi. */
+static void count_literal(fp3_compiled *c) {
+  for (int i = 0; i < c->b.nn; i++)
+    if (c->b.nd[i].live && op_kind(c->b.nd[i].kind) && !c->b.nd[i].inv)
+      c->stats.literal_body_insns++;
+  c->stats.literal_body_insns++; /* endi */
+}
+
+/* The back end: the IR in c->b (live nodes marked), built with options o,
+ * to the scheduled, register-allocated program, its text (head: the
+ * caller's first comment lines) and image, and c->stats.  0, or -1 with
+ * a message (c is left for the caller to free). */
+static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head, char *msg,
+                   size_t n) {
   builder *b = &c->b;
   int rc = -1;
   fp3_strbuf t = {0};
-  insn *code = calloc(MAX_INSNS, sizeof *code);
+  insn *code = calloc(MAX_NODES + MAX_STATE + 2, sizeof *code); /* counted, then checked */
   bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
   int *order = calloc(MAX_NODES + 2, sizeof *order);
   regalloc *ra = calloc(1, sizeof *ra);
@@ -509,16 +561,21 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
     snprintf(msg, n, "out of memory");
     goto out;
   }
-  /* the literal program, for the report */
-  fp3_compile_opts lit = *o;
-  lit.fold = lit.drop_zero = 0;
-  if (compile_ir(b, sc, integrator, &lit, msg, n)) goto out;
-  for (int i = 0; i < b->nn; i++)
-    if (b->nd[i].live && op_kind(b->nd[i].kind) && !b->nd[i].inv) c->stats.literal_body_insns++;
-  c->stats.literal_body_insns++; /* endi */
-  if (compile_ir(b, sc, integrator, o, msg, n)) goto out;
-  c->stats.no_drag = b->no_drag;
-  c->stats.no_thrust = b->no_thrust;
+  /* ---- every operation has its instruction ---- */
+  for (int i = 0; i < b->nn; i++) {
+    const node *x = &b->nd[i];
+    if (!op_kind(x->kind) || !x->live || x->host || node_opc(x->kind) >= 0) continue;
+    const char *mn = kind_mnemonic[x->kind];
+    const char *flag = x->kind == NK_DIV ? "HAS_DIV" : x->kind == NK_SQRT ? "HAS_SQRT" : NULL;
+    if (flag)
+      snprintf(msg, n, "%s %s needs %s: this build has no %s unit (the ISA table has no "
+               "'%s' instruction)", b->model ? "model" : "scene",
+               b->model ? b->model->name : "", mn, flag, mn);
+    else
+      snprintf(msg, n, "%s %s needs %s: the ISA table has no '%s' instruction",
+               b->model ? "model" : "scene", b->model ? b->model->name : "", mn, mn);
+    goto out;
+  }
 
   /* ---- body instructions: live non-invariant ops, then moves ---- */
   int nb = 0;
@@ -530,13 +587,13 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
       continue;
     }
     if (x->inv) {
-      c->stats.hoisted++;
+      if (!x->host) c->stats.hoisted++;
       continue;
     }
     bi[nb] = (bins){i, 0, -1, {x->a, x->b}, 0, 0, 0, 0};
     nb++;
   }
-  for (int w = 0; w < 2; w++) {
+  for (int w = 0; w < b->nstate; w++) {
     int src = b->out[w].n;
     if (b->nd[src].kind == NK_STATE && b->nd[src].id == w) continue; /* unchanged */
     int p = producer(bi, nb, src);
@@ -558,14 +615,14 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   ra->nregs = o->num_regs;
   for (int i = 0; i < MAX_NODES; i++) ra->reg[i] = -1;
   for (unsigned r = 0; r < ra->nregs; r++) ra->last_write[r] = -1000000;
-  int in_reg[FP3_IN_COUNT];
-  for (int k = 0; k < FP3_IN_COUNT; k++) in_reg[k] = -1;
-  int state_reg[2] = {-1, -1};
-  /* inputs in .in order, the state with v0 and s0 */
-  for (int k = 0; k < FP3_IN_COUNT; k++) {
+  int *in_reg = c->in_reg, *state_reg = c->state_reg;
+  for (int k = 0; k < MAX_IN; k++) in_reg[k] = -1;
+  for (int k = 0; k < MAX_STATE; k++) state_reg[k] = -1;
+  /* inputs in their order, each state variable with its initial value */
+  for (int k = 0; k < b->nin; k++) {
     int node_i = -1;
-    if (k == FP3_IN_V0 || k == FP3_IN_S0) {
-      state_reg[k == FP3_IN_V0 ? ST_V : ST_S] = in_reg[k] = take_reg(ra);
+    if (b->in_state[k] >= 0) {
+      state_reg[b->in_state[k]] = in_reg[k] = take_reg(ra);
       continue;
     }
     for (int i = 0; i < b->nn; i++)
@@ -574,11 +631,14 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   }
   for (int i = 0; i < b->nn; i++)
     if (b->nd[i].kind == NK_STATE) ra->reg[i] = state_reg[b->nd[i].id];
+  /* values the host computes (a model's div, sqrt, ... on params) */
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].live && b->nd[i].host) ra->reg[i] = take_reg(ra);
   /* constants, then loop invariants: live for the whole run */
   for (int pass = 0; pass < 2; pass++)
     for (int i = 0; i < b->nn; i++) {
       node *x = &b->nd[i];
-      if (x->live && x->inv && (pass == 0 ? x->kind == NK_CONST : op_kind(x->kind)))
+      if (x->live && x->inv && !x->host && (pass == 0 ? x->kind == NK_CONST : op_kind(x->kind)))
         if ((ra->reg[i] = take_reg(ra)) < 0) break;
     }
   /* temporaries of the body, in schedule order */
@@ -608,8 +668,11 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   }
   for (int i = 0; i < b->nn && ok; i++)
     if (b->nd[i].live && ra->reg[i] < 0) ok = 0;
-  if (!ok || state_reg[ST_V] < 0 || state_reg[ST_S] < 0) {
-    snprintf(msg, n, "the program needs more than the %u registers of a context", o->num_regs);
+  for (int w = 0; w < b->nstate; w++)
+    if (state_reg[w] < 0) ok = 0;
+  if (!ok) {
+    snprintf(msg, n, "the program needs more than the %u registers of a context "
+             "(NUM_REGS is %u)", o->num_regs, o->num_regs);
     goto out;
   }
   unsigned regs_used = 0;
@@ -629,14 +692,14 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   for (int pass = 0; pass < 2; pass++)
     for (int i = 0; i < b->nn; i++) {
       node *x = &b->nd[i];
-      if (!x->live || !x->inv) continue;
+      if (!x->live || !x->inv || x->host) continue;
       insn *in = &code[ni];
       if (pass == 0 && x->kind == NK_CONST) {
         *in = (insn){FP3_OP_LI, (unsigned)ra->reg[i], 0, 0, x->bits, ""};
         snprintf(in->note, NOTE_LEN, "%s = %.9g", x->name, (double)fpref_float(x->bits));
       } else if (pass == 1 && op_kind(x->kind)) {
-        *in = (insn){node_opc(x->kind), (unsigned)ra->reg[i], (unsigned)ra->reg[x->a],
-                     (unsigned)ra->reg[x->b], 0, ""};
+        *in = (insn){(unsigned)node_opc(x->kind), (unsigned)ra->reg[i], (unsigned)ra->reg[x->a],
+                     x->b >= 0 ? (unsigned)ra->reg[x->b] : 0, 0, ""};
         describe(b, i, in->note, NOTE_LEN);
         strncat(in->note, " (loop invariant)", NOTE_LEN - strlen(in->note) - 1);
       } else {
@@ -653,29 +716,28 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
                                      : (unsigned)ra->reg[x->node];
     if (x->is_mov) {
       *in = (insn){FP3_OP_MOV, rd, (unsigned)ra->reg[x->node], 0, 0, ""};
-      snprintf(in->note, NOTE_LEN, "%s = %s", x->dest_state == ST_V ? "v" : "s",
-               b->nd[x->node].name);
+      snprintf(in->note, NOTE_LEN, "%s = %s", b->st_name[x->dest_state], b->nd[x->node].name);
     } else {
       const node *y = &b->nd[x->node];
-      *in = (insn){node_opc(y->kind), rd, (unsigned)ra->reg[y->a], (unsigned)ra->reg[y->b], 0,
-                   ""};
+      *in = (insn){(unsigned)node_opc(y->kind), rd, (unsigned)ra->reg[y->a],
+                   y->b >= 0 ? (unsigned)ra->reg[y->b] : 0, 0, ""};
       describe(b, x->node, in->note, NOTE_LEN);
     }
-    if (x->dest_state >= 0)
-      strncat(in->note, x->dest_state == ST_V ? " -> v" : " -> s",
-              NOTE_LEN - strlen(in->note) - 1);
+    if (x->dest_state >= 0) {
+      strncat(in->note, " -> ", NOTE_LEN - strlen(in->note) - 1);
+      strncat(in->note, b->st_name[x->dest_state], NOTE_LEN - strlen(in->note) - 1);
+    }
   }
   code[ni++] = (insn){FP3_OP_ENDI, 0, 0, 0, (uint32_t)body_at, "next integration"};
   if (ni > MAX_INSNS) {
-    snprintf(msg, n, "the program has %zu words, more than the %d of the instruction memory",
-             ni, MAX_INSNS);
+    snprintf(msg, n, "the program needs %zu instructions; IMEM_DEPTH is %d", ni, MAX_INSNS);
     goto out;
   }
   c->stats.prologue_insns = prologue;
   c->stats.body_insns = (unsigned)(ni - body_at);
   c->stats.body_arith = 0;
   for (size_t k = body_at; k < ni; k++)
-    if (code[k].opc == FP3_OP_ADD || code[k].opc == FP3_OP_SUB || code[k].opc == FP3_OP_MUL)
+    if (code[k].opc != FP3_OP_MOV && code[k].opc != FP3_OP_LI && code[k].opc != FP3_OP_ENDI)
       c->stats.body_arith++;
 
   /* ---- estimate, on the words ---- */
@@ -687,19 +749,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
   fp3_estimate_cycles(&est, o, 8, &c->stats.est_cycles_first, &c->stats.est_cycles_later);
 
   /* ---- text ---- */
-  const char *integ_desc = o->fold ? "folded" : "literal (the paper's operations)";
-  fp3_strbuf_printf(&t, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
-      scene_name ? scene_name : "scene", integrator, integ_desc,
-      o->drop_zero ? ", terms zero in the scene removed" : "");
-  fp3_strbuf_printf(&t, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
-      (double)sc->objs[0].h);
-  if (o->fold)
-    fp3_strbuf_printf(&t, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
-            ";   computed by the host in binary32 (RNE) once per object\n");
-  if (o->drop_zero && b->no_drag)
-    fp3_strbuf_printf(&t, "; removed: the drag terms (C = 0 in every object)\n");
-  if (o->drop_zero && b->no_thrust)
-    fp3_strbuf_printf(&t, "; removed: the thrust terms (T = 0 in every object)\n");
+  fp3_strbuf_printf(&t, "%s", head);
   fp3_strbuf_printf(&t, "; loop invariants moved to the prologue: %u; dead operations removed: %u\n",
       c->stats.hoisted, c->stats.dead_removed);
   fp3_strbuf_printf(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
@@ -711,13 +761,28 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
       unit_latency(o, FP3_UNIT_ADD), unit_latency(o, FP3_UNIT_MUL), unit_latency(o, FP3_UNIT_MOV),
       c->stats.est_cycles_first, c->stats.est_cycles_later);
   fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compiler/compile.c, fp3_compiled_golden)\n\n");
-  for (int k = 0; k < FP3_IN_COUNT; k++)
-    if (in_reg[k] >= 0) {
-      char nm_[16];
-      snprintf(nm_, sizeof nm_, "%s,", fp3_in_name(k));
-      fp3_strbuf_printf(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
-    }
-  fp3_strbuf_printf(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
+  if (!b->model) {
+    for (int k = 0; k < b->nin; k++)
+      if (in_reg[k] >= 0) {
+        char nm_[16];
+        snprintf(nm_, sizeof nm_, "%s,", b->in_name[k]);
+        fp3_strbuf_printf(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
+      }
+    fp3_strbuf_printf(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
+  } else {
+    /* a model's names are not the assembler's .in / .out names: the
+     * bindings are comments, and fp3_compiled_model_inputs gives them */
+    fp3_strbuf_printf(&t, "; host inputs (written before the run):\n");
+    for (int k = 0; k < b->nin; k++)
+      if (in_reg[k] >= 0) fp3_strbuf_printf(&t, ";   %-12s r%d\n", b->in_name[k], in_reg[k]);
+    for (int i = 0; i < b->nn; i++)
+      if (b->nd[i].live && b->nd[i].host) {
+        char d[NOTE_LEN];
+        describe(b, i, d, sizeof d);
+        fp3_strbuf_printf(&t, ";   %-12s r%d  (host: %s)\n", b->nd[i].name, ra->reg[i], d);
+      }
+    fp3_strbuf_printf(&t, "; results: the state registers above, after each endi\n\n");
+  }
   for (size_t k = 0; k < ni; k++) {
     const insn *x = &code[k];
     char ops[48];
@@ -741,6 +806,7 @@ int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_o
     goto out;
   }
   free(errs);
+  for (int i = 0; i < b->nn; i++) c->host_reg[i] = b->nd[i].live && b->nd[i].host ? ra->reg[i] : -1;
   rc = 0;
 out:
   free(t.s);
@@ -748,6 +814,54 @@ out:
   free(bi);
   free(order);
   free(ra);
+  return rc;
+}
+
+
+int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_opts *o,
+                const char *scene_name, fp3_compiled **outp, char *msg, size_t n) {
+  *outp = NULL;
+  if (sc->n == 0) {
+    snprintf(msg, n, "the scene has no objects");
+    return -1;
+  }
+  if (check_opts(o, msg, n)) return -1;
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_strbuf h = {0};
+  int rc = -1;
+  /* the literal program, for the report */
+  fp3_compile_opts lit = *o;
+  lit.fold = lit.drop_zero = 0;
+  if (compile_ir(&c->b, sc, integrator, &lit, msg, n)) goto out;
+  count_literal(c);
+  if (compile_ir(&c->b, sc, integrator, o, msg, n)) goto out;
+  builder *b = &c->b;
+  c->stats.no_drag = b->no_drag;
+  c->stats.no_thrust = b->no_thrust;
+  const char *integ_desc = o->fold ? "folded" : "literal (the paper's operations)";
+  fp3_strbuf_printf(&h, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
+      scene_name ? scene_name : "scene", integrator, integ_desc,
+      o->drop_zero ? ", terms zero in the scene removed" : "");
+  fp3_strbuf_printf(&h, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
+      (double)sc->objs[0].h);
+  if (o->fold)
+    fp3_strbuf_printf(&h, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
+            ";   computed by the host in binary32 (RNE) once per object\n");
+  if (o->drop_zero && b->no_drag)
+    fp3_strbuf_printf(&h, "; removed: the drag terms (C = 0 in every object)\n");
+  if (o->drop_zero && b->no_thrust)
+    fp3_strbuf_printf(&h, "; removed: the thrust terms (T = 0 in every object)\n");
+  if (h.oom) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  rc = backend(c, o, h.s, msg, n);
+out:
+  free(h.s);
   if (rc) fp3_compiled_free(c);
   else *outp = c;
   return rc;
@@ -763,44 +877,371 @@ const char *fp3_compiled_text(const fp3_compiled *c) { return c->text; }
 const fp3_image *fp3_compiled_image(const fp3_compiled *c) { return &c->img; }
 const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c) { return &c->stats; }
 
+/* ---- models (model.h) -------------------------------------------------- */
+
+/* Exact rewrites only: a + (-b) = a - b, (-a) + b = b - a, a - (-b) =
+ * a + b (IEEE 754 defines subtraction so), (-a) b = -(a b), (-a)/b =
+ * -(a/b), |(-a)| = |a| (sign-symmetric rounding: RNE, RTZ).  A negation
+ * that must exist as a value (an output, sqrt's or min's operand, a sum
+ * of two negated terms) is pushed into an invariant factor of a product
+ * or quotient, -(a b) = (-a) b with -a computed by the host, or else
+ * becomes a neg instruction.  (-a) + (-b) is never rewritten -(a + b):
+ * the two differ in the sign of an exact zero. */
+static ref m_value(builder *b, ref x);
+static void golden_begin(fp3_compiled *c, const float *y0);
+static void golden_advance(fp3_compiled *c, float *y);
+
+/* A node for -x without a neg instruction where an exact form exists, else
+ * -1. */
+static int neg_push(builder *b, int i) {
+  node x = b->nd[i];
+  if (x.kind == NK_CONST) return leaf(b, NK_CONST, -1, x.bits ^ 0x80000000u, "nconst").n;
+  if (x.inv) { /* the host flips it */
+    node z = {NK_NEG, i, -1, -1, 0, 1, 0, 0, ""};
+    int k = new_node(b, z);
+    if (!b->nd[k].name[0]) snprintf(b->nd[k].name, sizeof b->nd[k].name, "-%.24s", x.name);
+    return k;
+  }
+  if (x.kind != NK_MUL && x.kind != NK_DIV) return -1;
+  int na = neg_push(b, x.a);
+  if (na >= 0) x.a = na;
+  else if (x.kind == NK_MUL && (na = neg_push(b, x.b)) >= 0) x.b = na;
+  else return -1;
+  x.name[0] = '\0';
+  x.live = 0;
+  int k = new_node(b, x);
+  if (!b->nd[k].name[0]) {
+    char t_[FP3_MODEL_NAME_LEN];
+    snprintf(t_, sizeof t_, "-%.24s", b->nd[i].name);
+    memcpy(b->nd[k].name, t_, sizeof t_);
+  }
+  return k;
+}
+
+/* x as a value: its negation carried out. */
+static ref m_value(builder *b, ref x) {
+  if (!x.neg) return x;
+  int k = neg_push(b, x.n);
+  if (k < 0) k = op(b, NK_NEG, (ref){x.n, 0}, (ref){-1, 0}).n;
+  return (ref){k, 0};
+}
+
+static ref m_unary(builder *b, int kind, ref x) {
+  node z = {kind, x.n, -1, -1, 0, b->nd[x.n].inv, 0, 0, ""};
+  return (ref){new_node(b, z), 0};
+}
+
+static ref m_add(builder *b, ref x, ref y) {
+  if (x.neg && y.neg) x = m_value(b, x); /* (-a) + (-b): one negation made */
+  return add(b, x, y);
+}
+
+static ref m_div(builder *b, ref x, ref y) {
+  if (is_zero(b, x)) return x;
+  ref r;
+  if (b->fold && b->nd[y.n].inv && !b->nd[x.n].inv) { /* x / p = x * (1/p), host 1/p */
+    ref one = konst(b, 1.0f, "one");
+    node z = {NK_DIV, one.n, y.n, -1, 0, 1, 0, 0, ""};
+    int k = new_node(b, z);
+    if (!b->nd[k].name[0]) {
+      char t_[FP3_MODEL_NAME_LEN];
+      snprintf(t_, sizeof t_, "1/%.24s", b->nd[y.n].name);
+      memcpy(b->nd[k].name, t_, sizeof t_);
+    }
+    r = mul(b, (ref){x.n, 0}, (ref){k, 0});
+    r.neg ^= y.neg;
+    return r;
+  }
+  node z = {NK_DIV, x.n, y.n, -1, 0, b->nd[x.n].inv && b->nd[y.n].inv, 0, 0, ""};
+  r = (ref){new_node(b, z), x.neg ^ y.neg};
+  return r;
+}
+
+/* The model's derivatives at state y (refs): f[i] for each state. */
+static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char *tag) {
+  ref *r = calloc(m->nn ? m->nn : 1, sizeof *r);
+  if (!r) {
+    b->err = 1;
+    return;
+  }
+  for (unsigned i = 0; i < m->nn && !b->err; i++) {
+    const fp3_mexpr *x = &m->node[i];
+    if (x->exact_only) continue;
+    ref a = x->a >= 0 ? r[x->a] : (ref){0, 0}, c = x->b >= 0 ? r[x->b] : (ref){0, 0};
+    switch (x->kind) {
+    case FP3_ME_NUM: {
+      const char *cn = "c";
+      for (unsigned d = 0; d < m->ndef; d++)
+        if (m->def_node[d] == (int)i) cn = m->def[d];
+      if (b->drop_zero && (x->bits & 0x7FFFFFFFu) == 0) {
+        r[i] = konst(b, 0.0f, "zero");
+        b->zero = r[i].n;
+      } else {
+        r[i] = konst(b, fpref_float(x->bits), cn);
+      }
+      break;
+    }
+    case FP3_ME_PARAM:
+      if (b->drop_zero && b->pzero && b->pzero[x->id]) {
+        r[i] = konst(b, 0.0f, "zero");
+        b->zero = r[i].n;
+      } else {
+        r[i] = leaf(b, NK_IN, x->id, 0, m->param[x->id]);
+      }
+      break;
+    case FP3_ME_STATE: r[i] = y[x->id]; break;
+    case FP3_ME_ADD: r[i] = m_add(b, a, c); break;
+    case FP3_ME_SUB: c.neg ^= 1; r[i] = m_add(b, a, c); break;
+    case FP3_ME_MUL: r[i] = mul(b, a, c); break;
+    case FP3_ME_DIV: r[i] = m_div(b, a, c); break;
+    case FP3_ME_NEG: r[i] = a; r[i].neg ^= 1; break;
+    case FP3_ME_SQRT: r[i] = m_unary(b, NK_SQRT, m_value(b, a)); break;
+    case FP3_ME_ABS: a.neg = 0; r[i] = m_unary(b, NK_ABS, a); break;
+    case FP3_ME_MIN:
+    case FP3_ME_MAX:
+      r[i] = op(b, x->kind == FP3_ME_MIN ? NK_MIN : NK_MAX, m_value(b, a), m_value(b, c));
+      break;
+    default: b->err = 1; break;
+    }
+    for (unsigned d = 0; d < m->ndef; d++)
+      if (m->def_is_let[d] && m->def_node[d] == (int)i) nm(b, r[i], m->def[d]);
+  }
+  for (unsigned i = 0; i < m->nstate && !b->err; i++) {
+    f[i] = r[m->deriv[i]];
+    char s_[FP3_MODEL_NAME_LEN];
+    snprintf(s_, sizeof s_, "f%.2s_%.24s", tag, m->state[i]);
+    nm(b, f[i], s_);
+  }
+  free(r);
+}
+
+/* tag_state: "k1_x" etc. for the comments. */
+static ref m_nm(builder *b, ref r, const char *what, unsigned i) {
+  char s_[FP3_MODEL_NAME_LEN];
+  snprintf(s_, sizeof s_, "%.4s_%.24s", what, b->st_name[i]);
+  return nm(b, r, s_);
+}
+
+/* The literal integrators of model.h (fp3_model_step_literal), or folded
+ * (b->fold: RK4's sum as (k1 + k4) + 2 (k2 + k3)). */
+static int m_build(builder *b, const fp3_model *m, const char *integ) {
+  const unsigned ns = m->nstate;
+  ref y[MAX_STATE] = {{0, 0}}, f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}};
+  ref k1[MAX_STATE] = {{0, 0}}, k2[MAX_STATE] = {{0, 0}}, k3[MAX_STATE] = {{0, 0}};
+  for (unsigned i = 0; i < ns; i++) y[i] = state(b, (int)i);
+  ref h = leaf(b, NK_IN, 0, 0, "h");
+  if (strcmp(integ, "euler") == 0) {
+    m_f(b, m, y, f, "");
+    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+  } else if (strcmp(integ, "rk2") == 0) {
+    ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
+    m_f(b, m, y, f, "1");
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, hh, f[j])), "ym", j);
+    m_f(b, m, t, f, "2");
+    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+  } else if (strcmp(integ, "rk4") == 0) {
+    ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
+    ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
+    m_f(b, m, y, f, "1");
+    for (unsigned j = 0; j < ns; j++) k1[j] = m_nm(b, mul(b, h, f[j]), "k1", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k1[j])), "y2", j);
+    m_f(b, m, t, f, "2");
+    for (unsigned j = 0; j < ns; j++) k2[j] = m_nm(b, mul(b, h, f[j]), "k2", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k2[j])), "y3", j);
+    m_f(b, m, t, f, "3");
+    for (unsigned j = 0; j < ns; j++) k3[j] = m_nm(b, mul(b, h, f[j]), "k3", j);
+    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], k3[j]), "y4", j);
+    m_f(b, m, t, f, "4");
+    for (unsigned i = 0; i < ns; i++) {
+      ref k4 = m_nm(b, mul(b, h, f[i]), "k4", i), sum;
+      if (b->fold) {
+        sum = m_add(b, m_add(b, k1[i], k4), mul(b, two, m_add(b, k2[i], k3[i])));
+      } else {
+        sum = m_add(b, k1[i], mul(b, two, k2[i]));
+        sum = m_add(b, sum, mul(b, two, k3[i]));
+        sum = m_add(b, sum, k4);
+      }
+      sum = m_nm(b, sum, "sum", i);
+      b->out[i] = m_nm(b, m_add(b, y[i], mul(b, sixth, sum)), "n", i);
+    }
+  } else if (strcmp(integ, "symeuler") == 0) {
+    if (!fp3_model_split(m)) return -2;
+    m_f(b, m, y, f, "1");
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_VELOCITY) t[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+      else t[i] = y[i];
+    m_f(b, m, t, f, "2");
+    for (unsigned i = 0; i < ns; i++)
+      b->out[i] = m->role[i] == FP3_MR_POSITION ? m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i)
+                                               : t[i];
+  } else {
+    return -1;
+  }
+  for (unsigned i = 0; i < ns; i++) b->out[i] = m_value(b, b->out[i]);
+  return 0;
+}
+
+static int model_ir(builder *b, const fp3_model *m, const char *integ,
+                    const fp3_compile_opts *o, const unsigned char *pzero, char *msg, size_t n) {
+  memset(b, 0, sizeof *b);
+  b->fold = o->fold;
+  b->drop_zero = o->drop_zero;
+  b->zero = -1;
+  b->model = m;
+  b->pzero = pzero;
+  b->nstate = (int)m->nstate;
+  b->nin = (int)(m->nparam + m->nstate);
+  for (unsigned i = 0; i < m->nstate; i++)
+    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s", m->state[i]);
+  for (int k = 0; k < b->nin; k++) {
+    unsigned q = (unsigned)k;
+    if (q < m->nparam) snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", m->param[q]);
+    else snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s(0)", m->state[q - m->nparam]);
+    b->in_state[k] = q < m->nparam ? -1 : (int)(q - m->nparam);
+  }
+  int rc = m_build(b, m, integ);
+  if (rc == -1) {
+    snprintf(msg, n, "unknown integrator '%s' for a model (%s)", integ, fp3_model_integrators());
+    return -1;
+  }
+  if (rc == -2) {
+    snprintf(msg, n, "%s: integrator %s needs the state split into positions and velocities "
+             "(`position` and `velocity` lines, docs/models.md)", m->file, integ);
+    return -1;
+  }
+  if (b->err) {
+    snprintf(msg, n, "model %s: the IR has more than %d nodes", m->name, MAX_NODES);
+    return -1;
+  }
+  /* invariant operations without an add/sub/mul instruction: the host's */
+  for (int i = 0; i < b->nn; i++) {
+    node *x = &b->nd[i];
+    if (op_kind(x->kind) && x->inv && x->kind != NK_ADD && x->kind != NK_SUB && x->kind != NK_MUL)
+      x->host = 1;
+  }
+  for (int w = 0; w < b->nstate; w++) mark_live(b, b->out[w].n);
+  return 0;
+}
+
+int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                      const unsigned char *param_zero, fp3_compiled **outp, char *msg,
+                      size_t n) {
+  *outp = NULL;
+  if (check_opts(o, msg, n)) return -1;
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_strbuf h = {0};
+  int rc = -1;
+  fp3_compile_opts lit = *o;
+  lit.fold = lit.drop_zero = 0;
+  if (model_ir(&c->b, m, integrator, &lit, NULL, msg, n)) goto out;
+  count_literal(c);
+  if (model_ir(&c->b, m, integrator, o, param_zero, msg, n)) goto out;
+  fp3_strbuf_printf(&h, "; model %s (%s) -- compiled by fp3 for integrator %s, %s%s\n;\n",
+                    m->name, m->file, integrator,
+                    o->fold ? "folded" : "literal (docs/models.md, bit for bit)",
+                    o->drop_zero ? ", terms zero in every object removed" : "");
+  if (o->fold)
+    fp3_strbuf_printf(&h, "; folded: divisions by parameter-only values are products with "
+                          "the host's reciprocal\n");
+  if (h.oom) {
+    snprintf(msg, n, "out of memory");
+    goto out;
+  }
+  rc = backend(c, o, h.s, msg, n);
+out:
+  free(h.s);
+  if (rc) fp3_compiled_free(c);
+  else *outp = c;
+  return rc;
+}
+
+unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i) {
+  return (unsigned)c->state_reg[i];
+}
+
+size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
+                                unsigned *reg, uint32_t *val, size_t max) {
+  const builder *b = &c->b;
+  const fp3_model *m = b->model;
+  for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
+  for (unsigned k = 0; k < m->nstate; k++) c->in[m->nparam + k] = y0[k];
+  golden_begin(c, y0);
+  size_t w = 0;
+  for (int k = 0; k < b->nin && w < max; k++)
+    if (c->in_reg[k] >= 0) {
+      reg[w] = (unsigned)c->in_reg[k];
+      val[w++] = fpref_bits(c->in[k]);
+    }
+  for (int i = 0; i < b->nn && w < max; i++)
+    if (c->host_reg[i] >= 0) {
+      reg[w] = (unsigned)c->host_reg[i];
+      val[w++] = fpref_bits(c->val[i]);
+    }
+  return w;
+}
+
+void fp3_compiled_model_step(fp3_compiled *c, float *y) { golden_advance(c, y); }
+
 /* ---- golden model -------------------------------------------------------- */
 
 static float eval(const builder *b, const float *val, int i) {
   const node *x = &b->nd[i];
-  const float p = val[x->a], q = val[x->b];
+  const float p = val[x->a], q = x->b >= 0 ? val[x->b] : 0.0f;
   float r;
   switch (x->kind) {
   case NK_ADD: r = p + q; break;
   case NK_SUB: r = p - q; break;
-  default: r = p * q; break;
+  case NK_MUL: r = p * q; break;
+  case NK_DIV: r = p / q; break;
+  case NK_SQRT: r = sqrtf(p); break;
+  case NK_ABS: r = fpref_float(fpref_bits(p) & 0x7FFFFFFFu); break; /* IEEE 754 §5.5.1 */
+  case NK_NEG: r = fpref_float(fpref_bits(p) ^ 0x80000000u); break;
+  case NK_MIN: r = fp3_model_minmax32(p, q, 0); break;
+  default: r = fp3_model_minmax32(p, q, 1); break;
   }
   return r;
 }
 
-static void golden_start(void *ctx, const fp3_ship_params *p) {
-  fp3_compiled *c = ctx;
+/* Leaves from c->in and y0, then every invariant node (the prologue and
+ * the host's values). */
+static void golden_begin(fp3_compiled *c, const float *y0) {
   const builder *b = &c->b;
-  fp3_in_values(p, c->in);
   for (int i = 0; i < b->nn; i++) {
     const node *x = &b->nd[i];
     if (x->kind == NK_IN) c->val[i] = c->in[x->id];
     else if (x->kind == NK_CONST) c->val[i] = fpref_float(x->bits);
-    else if (x->kind == NK_STATE) c->val[i] = x->id == ST_V ? p->v0 : p->s0;
-    else if (x->inv && x->live) c->val[i] = eval(b, c->val, i); /* the prologue */
+    else if (x->kind == NK_STATE) c->val[i] = y0[x->id];
+    else if (x->inv) c->val[i] = eval(b, c->val, i);
   }
 }
 
-static void golden_step(void *ctx, float *v, float *s) {
-  fp3_compiled *c = ctx;
+/* One integration: y gets the new state. */
+static void golden_advance(fp3_compiled *c, float *y) {
   const builder *b = &c->b;
   for (int i = 0; i < b->nn; i++)
     if (op_kind(b->nd[i].kind) && b->nd[i].live && !b->nd[i].inv)
       c->val[i] = eval(b, c->val, i);
-  const float nv = c->val[b->out[ST_V].n], ns = c->val[b->out[ST_S].n];
+  for (int w = 0; w < b->nstate; w++) y[w] = c->val[b->out[w].n];
   for (int i = 0; i < b->nn; i++)
-    if (b->nd[i].kind == NK_STATE) c->val[i] = b->nd[i].id == ST_V ? nv : ns;
-  *v = nv;
-  *s = ns;
+    if (b->nd[i].kind == NK_STATE) c->val[i] = y[b->nd[i].id];
+}
+
+static void golden_start(void *ctx, const fp3_ship_params *p) {
+  fp3_compiled *c = ctx;
+  fp3_in_values(p, c->in);
+  const float y0[2] = {p->v0, p->s0};
+  golden_begin(c, y0);
+}
+
+static void golden_step(void *ctx, float *v, float *s) {
+  float y[2];
+  golden_advance(ctx, y);
+  *v = y[ST_V];
+  *s = y[ST_S];
 }
 
 fp3_golden_ref fp3_compiled_golden(fp3_compiled *c) {

@@ -44,6 +44,7 @@
 #include <stdint.h>
 
 #include "image.h"
+#include "model.h"
 #include "objects.h"
 
 /* Compiler options. */
@@ -151,5 +152,45 @@ int fp3_estimate_cycles(const fp3_image *img, const fp3_compile_opts *lat,
 /* Instructions per integration of an image: the words from the target of
  * its last endi through that endi (0 without endi). */
 unsigned fp3_image_body_insns(const fp3_image *img);
+
+/* ---- models (model.h, docs/models.md) ------------------------------------ */
+
+/* Compile model m for integrator `integrator` (fp3_model_integrators()).
+ * With o->fold = o->drop_zero = 0 (--literal) the program performs exactly
+ * the operations of fp3_model_step_literal, so its golden model equals
+ * that one bit for bit; the only rewrites are exact ones (negations
+ * carried into subtractions and products, model.h), and loop-invariant
+ * values are computed once: add, sub, mul in the prologue, the others
+ * (1/m, sqrt(k), -g, ...) by the host in binary32 and written into a
+ * register before the run.  With o->fold, divisions by parameter-only
+ * values become products with the host's reciprocal and RK4's sum is
+ * (k1 + k4) + 2 (k2 + k3); with o->drop_zero, params marked in
+ * param_zero[] (zero in every object; may be NULL) and zero numbers are
+ * removed terms (as fp3_compile).  Returns 0 and *out, or -1 with a
+ * message: unknown integrator, symeuler on an unsplit model, an operation
+ * the ISA table lacks ("model projectile needs sqrt: this build has no
+ * HAS_SQRT unit ..."), more registers than num_regs or words than
+ * IMEM_DEPTH ("the program needs 290 instructions; IMEM_DEPTH is 256").
+ * The text binds inputs and results in comments (the assembler's .in/.out
+ * names are the ship's): fp3_compiled_model_start gives the writes. */
+int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                      const unsigned char *param_zero, fp3_compiled **out, char *msg,
+                      size_t n);
+
+/* Start the golden model of a compiled model for one object: in[] = h and
+ * the params (m->nparam values), y0 the initial state; the host values
+ * are computed in the caller's FP environment (fpenv_enter for the cores'
+ * mode).  reg[], val[] (max entries) get the register writes the host
+ * makes before the run: params, initial states, host-computed values.
+ * Returns the number of writes. */
+size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
+                                unsigned *reg, uint32_t *val, size_t max);
+
+/* One integration of the golden model: y (m->nstate values) gets the new
+ * state. */
+void fp3_compiled_model_step(fp3_compiled *c, float *y);
+
+/* The register holding state variable i. */
+unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
 
 #endif /* FP3_COMPILE_H */

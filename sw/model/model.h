@@ -1,0 +1,154 @@
+/*
+ * model.h -- the model language (.fp3m, docs/models.md): equations of
+ * motion as a file, parsed by hand (recursive descent) into an expression
+ * DAG, with its literal golden model in C binary32 and its double-precision
+ * meaning for the references (modelref.h).
+ *
+ *   model projectile
+ *   param kd, g                  # per-object inputs (h is always one)
+ *   state x, vx                  # or: position x / velocity vx (the split)
+ *   const half = 0.5             # a named binary32 constant
+ *   let sp = sqrt(vx*vx)         # defined before use
+ *   x'  = vx                     # one equation per state variable
+ *   vx' = -kd*sp*vx - g
+ *   exact x = ...                # optional: the analytic solution, in t
+ *
+ * Literal meaning (the one the golden model and `--literal` programs
+ * follow, bit for bit): every binary operator and function is one binary32
+ * operation (IEEE 754-2019 §5.4.1, the cores' rounding) on its operands in
+ * the tree the grammar gives; unary minus flips the sign bit (§5.5.1); a
+ * number is rounded once to binary32 as strtof does (RNE).
+ *
+ * Expressions are stored as a DAG in one array, each node after its
+ * operands: a `let` name is a reference to the node of its expression, a
+ * `const` name to a number node.  Evaluating the array in index order
+ * evaluates every subexpression once, operands first.
+ */
+#ifndef FP3_MODEL_LANG_H
+#define FP3_MODEL_LANG_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FP3_MODEL_NAME_LEN  32    /* longest name + 1                       */
+#define FP3_MODEL_MAX_VARS  32    /* params (h included), state variables   */
+#define FP3_MODEL_MAX_DEFS  128   /* consts, lets                           */
+#define FP3_MODEL_MAX_NODES 2048  /* expression nodes                       */
+
+/* Expression node kinds.  Binary: a, b; unary: a; leaves: id or value. */
+enum fp3_mexpr_kind {
+  FP3_ME_NUM,    /* a number: bits (binary32, strtof) and dval (strtod)   */
+  FP3_ME_PARAM,  /* param id (0 is h)                                     */
+  FP3_ME_STATE,  /* state variable id (in `exact` lines: its initial value) */
+  FP3_ME_TIME,   /* t, in `exact` lines only                              */
+  FP3_ME_ADD, FP3_ME_SUB, FP3_ME_MUL, FP3_ME_DIV,
+  FP3_ME_NEG,    /* unary minus: the sign bit flipped                     */
+  FP3_ME_SQRT, FP3_ME_ABS, FP3_ME_MIN, FP3_ME_MAX,
+  FP3_ME_EXP, FP3_ME_SIN, FP3_ME_COS, /* `exact` lines only (double)       */
+  FP3_ME_KINDS
+};
+
+typedef struct fp3_mexpr {
+  int kind;        /* enum fp3_mexpr_kind                                */
+  int a, b;        /* operand nodes (-1: none)                           */
+  int id;          /* PARAM, STATE                                       */
+  uint32_t bits;   /* NUM: binary32 value                                */
+  double dval;     /* NUM: the number read in double (the references')   */
+  int exact_only;  /* 1: reads t or exp/sin/cos: never evaluated in binary32 */
+} fp3_mexpr;
+
+/* Role of a state variable for the integrators that split the state
+ * (symeuler, verlet): declared by `position` / `velocity` lines. */
+enum fp3_mrole { FP3_MR_STATE, FP3_MR_POSITION, FP3_MR_VELOCITY };
+
+typedef struct fp3_model {
+  char name[FP3_MODEL_NAME_LEN];      /* `model NAME`, else the file's base name */
+  char file[256];                     /* path as given, for messages      */
+  unsigned nparam;                    /* params, h first                  */
+  char param[FP3_MODEL_MAX_VARS][FP3_MODEL_NAME_LEN];
+  int param_line[FP3_MODEL_MAX_VARS]; /* declaring line (0 for h)         */
+  unsigned nstate;
+  char state[FP3_MODEL_MAX_VARS][FP3_MODEL_NAME_LEN];
+  int state_line[FP3_MODEL_MAX_VARS];
+  int role[FP3_MODEL_MAX_VARS];       /* enum fp3_mrole                   */
+  int deriv[FP3_MODEL_MAX_VARS];      /* node of NAME' (every one set)    */
+  int exact[FP3_MODEL_MAX_VARS];      /* node of `exact NAME`, -1: none   */
+  unsigned ndef;                      /* consts and lets, in file order   */
+  char def[FP3_MODEL_MAX_DEFS][FP3_MODEL_NAME_LEN];
+  int def_node[FP3_MODEL_MAX_DEFS];
+  int def_is_let[FP3_MODEL_MAX_DEFS];
+  unsigned nn;
+  fp3_mexpr node[FP3_MODEL_MAX_NODES];
+} fp3_model;
+
+/* Parse model text `src` (NUL-terminated); `file` names it in messages and
+ * in m->file.  Returns 0, or -1 with "FILE:LINE:COL: reason" in msg:
+ * syntax errors, unknown names, a name declared twice or reserved (h, t,
+ * function names), a state variable with no equation or two, a let that
+ * refers to itself or to a later let (a cycle or use before definition),
+ * more names or nodes than the limits above. */
+int fp3_model_parse(const char *src, const char *file, fp3_model *m, char *msg, size_t n);
+
+/* Read and parse a file (fp3_model_parse); "FILE: cannot read" on I/O errors. */
+int fp3_model_load(const char *path, fp3_model *m, char *msg, size_t n);
+
+/* Index of param / state `name`, or -1. */
+int fp3_model_param(const fp3_model *m, const char *name);
+int fp3_model_state(const fp3_model *m, const char *name);
+
+/* 1 if any equation (after lets and consts) uses an operation of `kind`
+ * (e.g. FP3_ME_SQRT), else 0. */
+int fp3_model_uses(const fp3_model *m, int kind);
+
+/* 1 if the state is split into positions and velocities (a `position` and
+ * a `velocity` line, every state variable in one of them). */
+int fp3_model_split(const fp3_model *m);
+
+/* The operation a node kind stands for, as written ("+", "sqrt", ...). */
+const char *fp3_mexpr_op_name(int kind);
+
+/* ---- the literal golden model (C binary32) ------------------------------- */
+
+/* Integrators of the literal golden model: "euler rk2 rk4 symeuler". */
+const char *fp3_model_integrators(void);
+int fp3_model_integrator_known(const char *name);
+
+/* Derivatives f(y) of the model in binary32, the tree's operations in the
+ * literal meaning; in[] holds h and the params (in[0] = h), y the state;
+ * f gets nstate values.  val: scratch of m->nn floats. */
+void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float *f,
+                      float *val);
+
+/* One literal integration of y (nstate values) with integrator `name`
+ * (docs/models.md gives each as C):
+ *   euler:    y_i += h f_i(y)
+ *   rk2:      ym_j = y_j + (0.5 h) f_j(y);  y_i += h f_i(ym)
+ *   rk4:      k1 = h f(y), k2 = h f(y + 0.5 k1), k3 = h f(y + 0.5 k2),
+ *             k4 = h f(y + k3), y_i += 0.16666667 (((k1 + 2 k2) + 2 k3) + k4)
+ *   symeuler: velocities u_i += h f_i(y), then positions
+ *             x_i += h f_i(x, u_new) (needs fp3_model_split)
+ * Each product and sum one binary32 operation, in the order written.
+ * Returns 0, or -1 for an unknown integrator or symeuler on an unsplit
+ * model.  Runs in the caller's FP environment (fpenv_enter for RTZ/FTZ). */
+int fp3_model_step_literal(const fp3_model *m, const char *integrator, const float *in,
+                           float *y);
+
+/* min(a, b) (want_max 0) or max(a, b) (1) in binary32: IEEE 754-2019
+ * §9.6 minimum and maximum (a NaN operand gives a NaN: a quieted if a is a
+ * NaN, else b quieted; -0 is below +0; otherwise the smaller or larger
+ * operand, exactly), as the processor's min and max (docs/fp-cores.md).
+ * The one definition every golden model uses. */
+float fp3_model_minmax32(float a, float b, int want_max);
+
+/* ---- double precision ------------------------------------------------------ */
+
+/* f(y) in double, numbers by their strtod value (dval), params in[]. */
+void fp3_model_eval_f_double(const fp3_model *m, const double *in, const double *y,
+                             double *f, double *val);
+
+/* The `exact` solution of state variable i at time t from initial state
+ * y0, params in[] (double); returns 0, or -1 when the model gives none. */
+int fp3_model_exact(const fp3_model *m, unsigned i, const double *in, const double *y0,
+                    double t, double *out);
+
+#endif /* FP3_MODEL_LANG_H */
