@@ -86,7 +86,8 @@ $(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_
                   $(RTL_AXIL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
-# rtl/fp3_isa.vh is generated from sw/fp3_isa.h (and committed).
+# rtl/fp3_isa.vh and the tables of docs/isa.md are generated from
+# sw/fp3_isa.h (and committed; tests/test_isa_sync.sh checks both).
 $(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(CWARN) -Isw $< -o $@
@@ -94,7 +95,7 @@ $(BUILD)/gen_isa: sw/gen_isa.c sw/fp3_isa.h
 .PHONY: isa
 isa: $(BUILD)/gen_isa
 	$(BUILD)/gen_isa > rtl/fp3_isa.vh
-	python3 scripts/readme-tables.py $(BUILD)/gen_isa
+	python3 scripts/isa-tables.py $(BUILD)/gen_isa docs/isa.md
 
 # ---- lint ------------------------------------------------------------------
 lint: $(SETUP_STAMP)
