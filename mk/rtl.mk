@@ -37,7 +37,7 @@ RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # scenes/drift.scene` derives exactly these parameters (the test checks it).
 RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
 RTL_SCENE_CONFIGS := drift
-# ... and the build for clock rate (README "Fmax"), the processor inside the
+# ... and the build for clock rate (docs/fpga.md), the processor inside the
 # AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which
 # tests/test_axil.c compares with it.
 RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
@@ -103,7 +103,7 @@ lint: $(SETUP_STAMP)
 	@echo "lint: verilator -Wall clean"
 
 # ---- synthesis -------------------------------------------------------------
-# FPGA hand-off (README "FPGA"): in each flow of SYNTH_FLOWS, one netlist of
+# FPGA hand-off (docs/fpga.md): in each flow of SYNTH_FLOWS, one netlist of
 # the AXI4-Lite wrapper fp3_axil with the processor $(RTL_TOP) kept as a
 # level of hierarchy (area reported for both), `stat` and a summary
 # (constraints/ has the clock of each flow); then the area of each FP core
