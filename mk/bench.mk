@@ -2,7 +2,7 @@
 # and the work-precision benchmark.
 #
 #   make bench    build/fp3 bench: sweep, stability, long runs -> build/bench/
-#                 (CSV, Markdown tables, PNG plots); the plots the README
+#                 (CSV, Markdown tables, PNG plots); the plots docs/numerics.md
 #                 shows are copied to docs/.  BENCH_ARGS passes options
 #                 (e.g. BENCH_ARGS='--long-steps 1000000').
 #

@@ -37,7 +37,7 @@ FPU_CFG_lat_2_1  := 0 0 2 1 2
 FPU_CFG_lat_3_8  := 0 0 3 8 3
 FPU_CFG_lat_8_4  := 0 0 8 4 15
 FPU_CFG_lat_5_6  := 0 0 5 6 5
-# The fast latencies (150 MHz class on ECP5, README: add 9, mul 10, the
+# The fast latencies (150 MHz class on ECP5, docs/fpga.md: add 9, mul 10, the
 # multiplier's LUT product, also in RTZ with FTZ), every register place of
 # both cores, and output delay stages beyond them.
 FPU_CFG_lat_9_7  := 0 0 9 7 29

@@ -1,4 +1,4 @@
-# pnr.mk -- `make pnr`: place and route with timing (README "FPGA").
+# pnr.mk -- `make pnr`: place and route with timing (docs/fpga.md).
 #
 #   ECP5   the AXI4-Lite wrapper fp3_axil (the whole processor behind its
 #          bus) built with PNR_PARAMS (default: none, the default build;

@@ -37,7 +37,7 @@ RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # scenes/drift.scene` derives exactly these parameters (the test checks it).
 RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
 RTL_SCENE_CONFIGS := drift
-# ... and the build for clock rate (README "Fmax"), the processor inside the
+# ... and the build for clock rate (docs/fpga.md), the processor inside the
 # AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which
 # tests/test_axil.c compares with it.
 RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
@@ -86,7 +86,8 @@ $(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_
                   $(RTL_AXIL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
-# rtl/fp3_isa.vh is generated from sw/isa/fp3_isa.h (and committed).
+# rtl/fp3_isa.vh and the tables of docs/isa.md are generated from
+# sw/isa/fp3_isa.h (and committed; tests/test_isa_sync.sh checks both).
 $(BUILD)/gen_isa: sw/isa/gen_isa.c sw/isa/fp3_isa.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(CWARN) -Isw/isa $< -o $@
@@ -95,7 +96,7 @@ $(BUILD)/gen_isa: sw/isa/gen_isa.c sw/isa/fp3_isa.h
 ## isa: regenerate rtl/fp3_isa.vh and the generated ISA tables from sw/isa/fp3_isa.h
 isa: $(BUILD)/gen_isa
 	$(BUILD)/gen_isa > rtl/fp3_isa.vh
-	python3 scripts/readme-tables.py $(BUILD)/gen_isa
+	python3 scripts/isa-tables.py $(BUILD)/gen_isa docs/isa.md
 
 # ---- lint ------------------------------------------------------------------
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
@@ -104,7 +105,7 @@ lint: $(SETUP_STAMP)
 	@echo "lint: verilator -Wall clean"
 
 # ---- synthesis -------------------------------------------------------------
-# FPGA hand-off (README "FPGA"): in each flow of SYNTH_FLOWS, one netlist of
+# FPGA hand-off (docs/fpga.md): in each flow of SYNTH_FLOWS, one netlist of
 # the AXI4-Lite wrapper fp3_axil with the processor $(RTL_TOP) kept as a
 # level of hierarchy (area reported for both), `stat` and a summary
 # (constraints/ has the clock of each flow); then the area of each FP core

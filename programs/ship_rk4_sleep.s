@@ -1,4 +1,4 @@
-; ship_rk4_sleep.s -- ship_rk4.s with sleeping (README "Sleeping objects"):
+; ship_rk4_sleep.s -- ship_rk4.s with sleeping (docs/skipping.md "Sleeping objects"):
 ; an object whose velocity reached a fixed point skips the velocity stages.
 ;
 ; RK4 maps v0 to v1 = F(v0) with T, C, 1/m, h fixed.  If one integration

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bench-sleep.sh FP3 OUTDIR SHIPS FRAMES -- what sleeping saves on a harbour
-# (make bench-sleep; README "Sleeping objects").
+# (make bench-sleep; docs/skipping.md "Sleeping objects").
 #
 # `fp3 frames --harbour SHIPS` (60 % moored, 35 % cruising at terminal
 # velocity, 5 % accelerating; h = 1/60 s) for FRAMES frames on the RTL,

@@ -2,12 +2,13 @@
 # pnr-seeds.sh NAME JSON OUTDIR SEED... -- place and route one ECP5 netlist
 # once per nextpnr seed (scripts/pnr.sh; make pnr PNR_SEEDS="1 2 3 4"), a
 # seed sweep: placement alone moves Fmax by 15-20 MHz on the build for
-# clock rate (README "Place and route"), so one seed says little.
+# clock rate (docs/fpga.md "How to sweep seeds"), so one seed says little.
 #
 # PNR_JOBS placements run at a time (default: the CPUs, nproc); each is
 # single-threaded (--threads 1), so its result does not depend on the
 # machine.  A line per seed as it ends, then the table of all seeds, their
-# least, mean and greatest Fmax, and the best seed (ties: the lower seed).
+# least, median, mean and greatest Fmax, and the best seed (ties: the lower
+# seed).
 # Outputs in OUTDIR: seed-K/ per seed (pnr.sh's log, report,
 # configuration); pnr_seeds.csv (seed,fmax_mhz,levels,logic_ns,routing_ns,
 # from,to); pnr_summary.csv gets the best seed's row; NAME_ecp5.config is
@@ -64,10 +65,14 @@ for s in "${seeds[@]}"; do
 done >> "$out/pnr_seeds.csv.tmp"
 mv "$out/pnr_seeds.csv.tmp" "$out/pnr_seeds.csv"
 best=$(tail -n +2 "$out/pnr_seeds.csv" | sort -t, -k2,2gr -k1,1n | head -1 | cut -d, -f1)
-tail -n +2 "$out/pnr_seeds.csv" | awk -F, -v n="$name" -v b="$best" '
-  { s += $2; if (NR == 1 || $2 < lo) lo = $2; if (NR == 1 || $2 > hi) hi = $2 }
-  END { printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
-               n, NR, lo, s / NR, hi, b }'
+# The median (of an even count, the mean of the two middle values) is the
+# figure a placement of this netlist can be expected to reach; the
+# greatest is the best seed's.
+tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g | awk -v n="$name" -v b="$best" '
+  { v[NR] = $1; s += $1 }
+  END { med = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+        printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, median %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
+               n, NR, v[1], med, s / NR, v[NR], b }'
 awk -F, '{ printf "  %-5s %-9s %-7s %-9s %-11s %s\n", $1, $2, $3, $4, $5, $6 " -> " $7 }' \
   "$out/pnr_seeds.csv" | cut -c1-150
 tail -1 "$out/seed-$best/pnr_summary.csv" >> "$out/pnr_summary.csv"

@@ -2,7 +2,7 @@
 """unit-wrap.py MODULE PORTS.json [NAME=VALUE...] -- write (to stdout) the
 Verilog of `fp3_unit`, a wrapper that lets one RTL module be placed and
 routed alone with its ports fed from and into flip-flops (make pnr-unit,
-README "FPGA").
+docs/fpga.md "Place and route").
 
 PORTS.json is Yosys `write_json` of MODULE after `hierarchy -top MODULE
 -chparam ...; proc` (its port widths with these parameters).  The wrapper:

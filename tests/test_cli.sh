@@ -243,7 +243,7 @@ expect 2 "no scene file" -- compile
 expect 2 "unknown option '--bogus'" -- compile "$T/harbour.scene" --bogus
 expect 2 "want 1..64 cycles" -- compile "$T/harbour.scene" --add-latency 0
 # the build for clock rate (FMAX_PIPE=1, add 9, mul 10): the literal rk4's
-# cycles of one ship as the RTL counts them (README "Fmax")
+# cycles of one ship as the RTL counts them (docs/fpga.md "Devices and Fmax")
 expect 0 "estimated 275 cycles per later integration (first 296)" -- compile "$T/harbour.scene" \
   --literal --fmax-pipe --add-latency 9 --mul-latency 10
 expect 2 "FMAX_PIPE needs add and mul latencies of at least 3" -- compile "$T/harbour.scene" \

@@ -356,7 +356,7 @@ static void test_rtl(void **state) {
 /* The same on the build for clock rate (FMAX_PIPE): its 3-cycle move path,
  * fetch spacing, pick stages and registered issue stages, with latencies
  * below FP3_FMAX_PIPE_FULL_LEAD_LATENCY (the 3-context test model: add 4,
- * mul 3) and above it (the 8-context build of README "Fmax": add 9,
+ * mul 3) and above it (the 8-context build of docs/fpga.md: add 9,
  * mul 10). */
 static void test_rtl_fmax_pipe(void **state) {
   (void)state;

@@ -849,7 +849,7 @@ static void test_many_ships(void **state) {
     if (nctx >= 8 && !er->config.fmax_pipe) {
       /* Issue bound: 31 instructions per body, one issued per cycle (the
        * build for clock rate's latencies are longer than 8 contexts hide:
-       * 38.02 cycles per object-step, README "Many objects"). */
+       * 38.02 cycles per object-step, docs/pipeline.md "Many objects"). */
       double bound = (double)sa.issued / ((double)nctx * steps);
       assert_true(per_object_step <= 1.1 * bound);
     }

@@ -96,7 +96,7 @@ static void test_bit_exact(void **state) {
   }
 }
 
-/* The costs the README quotes (ADD_LATENCY 4, MUL_LATENCY 3: a dependent
+/* The costs docs/numerics.md quotes (ADD_LATENCY 4, MUL_LATENCY 3: a dependent
  * add issues 5 cycles after its producer, a dependent mul 4; one context
  * issues at most every other cycle). */
 static void test_cycles(void **state) {

@@ -4,7 +4,7 @@
 # nothing but answers each seed with an Fmax of its own in the report, as
 # nextpnr does, so the sweep's bookkeeping is checked without minutes of
 # place and route: every seed run once, the best one chosen (ties: the
-# lower seed), least / mean / greatest right, the best placement's
+# lower seed), least / median / mean / greatest right, the best placement's
 # configuration kept, bad arguments refused, and a seed that does not
 # place failing the sweep without leaving a "best" configuration.
 set -euo pipefail
@@ -43,8 +43,8 @@ export NEXTPNR_ECP5="$tmp/fake-nextpnr"
 FAKE_FMAX="2:140.5 3:131.0 5:140.5 7:151.3 9:120.0" PNR_JOBS=2 \
   bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/out" 2 3 5 7 9 > "$tmp/log" 2>&1 ||
   { cat "$tmp/log"; fail "pnr-seeds.sh failed on a sweep that places"; }
-grep -q "least 120.0, mean 136.7, greatest 151.3 MHz (seed 7)" "$tmp/log" ||
-  { cat "$tmp/log"; fail "pnr-seeds.sh: wrong least/mean/greatest or best seed"; }
+grep -q "least 120.0, median 140.5, mean 136.7, greatest 151.3 MHz (seed 7)" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: wrong least/median/mean/greatest or best seed"; }
 [ "$(cat "$tmp/out/core_ecp5.config")" = "configuration of seed 7" ] ||
   fail "pnr-seeds.sh: the kept configuration is not the best seed's"
 [ "$(tail -n +2 "$tmp/out/pnr_seeds.csv" | cut -d, -f1,2 | tr '\n' ' ')" = \
@@ -53,6 +53,12 @@ grep -q "least 120.0, mean 136.7, greatest 151.3 MHz (seed 7)" "$tmp/log" ||
 [ "$(tail -1 "$tmp/out/pnr_summary.csv" | cut -d, -f7)" = 151.3 ] ||
   fail "pnr-seeds.sh: pnr_summary.csv does not end with the best seed's row"
 for s in 2 3 5 7 9; do grep -q "seed $s: Fmax" "$tmp/log" || fail "pnr-seeds.sh: no line for seed $s"; done
+
+# An even count of seeds: the median is the mean of the two middle ones.
+FAKE_FMAX="1:130.0 2:150.0 3:142.0 4:120.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/even" 1 2 3 4 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on four seeds"; }
+grep -q "least 120.0, median 136.0, mean 135.5, greatest 150.0 MHz (seed 2)" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: wrong median of an even count"; }
 
 # Ties: the lower seed.
 FAKE_FMAX="4:140.0 2:140.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/tie" 4 2 > "$tmp/log" 2>&1 ||

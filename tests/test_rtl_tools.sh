@@ -14,7 +14,7 @@ if grep -v "^\s*$" "$tmp/iv.log" | grep -qi "warning"; then
   cat "$tmp/iv.log"; echo "FAIL: iverilog warnings"; exit 1; fi
 echo "PASS: verilator -Wall clean, iverilog -g2005 elaborates fp3_top"
 
-# The build for clock rate (FMAX_PIPE, deep FP cores: README "FPGA") is
+# The build for clock rate (FMAX_PIPE, deep FP cores: docs/fpga.md) is
 # lint-clean too.
 out=$(verilator --lint-only -Wall -Irtl --top-module fp3_top -GFMAX_PIPE=1 -GADD_LATENCY=9 \
         -GMUL_LATENCY=10 $src 2>&1) || { echo "$out"; echo "FAIL: verilator lint, FMAX_PIPE=1"; exit 1; }

@@ -426,7 +426,7 @@ static void usage_run(FILE *f) {
           "                   (default 1), or all of --scene FILE; every object\n"
           "                   is checked against its golden model\n"
           "  --scene FILE     scene file: 'h STEP' once, then one object per\n"
-          "                   line 'T C m v0 s0' ('#' comments; see README);\n"
+          "                   line 'T C m v0 s0' ('#' comments; docs/skipping.md);\n"
           "                   runs the scene compiler's program for the scene\n"
           "                   (fp3 compile --help; integrators euler, symeuler,\n"
           "                   rk2, rk4), checked against the IR's golden model\n"

@@ -14,7 +14,7 @@
 #include "image.h"
 
 /* xc2v LUTs of fp_add and fp_mul at the default latencies, per candidate
- * mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ): README "FP cores", `make synth`. */
+ * mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ): docs/fpga.md "FP cores", `make synth`. */
 static const unsigned add_luts[FP3_CONFIGURE_MODES] = {914, 764, 951, 818};
 static const unsigned mul_luts[FP3_CONFIGURE_MODES] = {1356, 1337, 779, 813};
 

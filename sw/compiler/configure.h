@@ -19,9 +19,10 @@
  *  - NUM_CONTEXTS: the fewest contexts that keep the single issue slot
  *    busy, ceil(E / I) for E the estimated cycles of a later integration
  *    of one object and I its instructions (contexts interleave: with that
- *    many objects in flight one instruction issues every cycle; README
- *    "Many objects": more contexts add area, not speed), at most the
- *    objects and FP3_MAX_CONTEXTS; a larger scene runs in batches.  With
+ *    many objects in flight one instruction issues every cycle;
+ *    docs/pipeline.md "Many objects": more contexts add area, not
+ *    speed), at most the objects and FP3_MAX_CONTEXTS; a larger scene
+ *    runs in batches.  With
  *    opts.context_per_object: one context per object, min(objects, 64),
  *    the whole scene in flight at once (64 contexts are several times the
  *    area of the default 8);
@@ -38,7 +39,7 @@
  *    is allowed when, for every object, its error is at most that
  *    object's RNE error + budget.  Of the allowed modes the one with the
  *    fewest LUTs of the units the program needs wins (fp_add and fp_mul on
- *    xc2v, README "FP cores": FTZ saves about 40 % of the multiplier, RTZ
+ *    xc2v, docs/fpga.md "FP cores": FTZ saves about 40 % of the multiplier, RTZ
  *    little); a tie goes to the earlier mode in the order above.
  *
  * IMEM_DEPTH and the latencies stay at their defaults (the compiler

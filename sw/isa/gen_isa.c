@@ -1,10 +1,10 @@
 /*
  * gen_isa.c -- print rtl/fp3_isa.vh, the Verilog view of sw/isa/fp3_isa.h, or
- * (with --markdown) the README's instruction and host-port tables.
+ * (with --markdown) the instruction and host-port tables of docs/isa.md.
  *
  * Usage: gen_isa > rtl/fp3_isa.vh
  *        gen_isa --markdown
- * The committed header must equal this program's output and README.md
+ * The committed header must equal this program's output and docs/isa.md
  * must contain the tables verbatim; tests/test_isa_sync.sh checks both.
  */
 #include <stdio.h>

@@ -29,7 +29,7 @@
  * products the host computes once per object, each one binary32 RNE
  * operation in the order shown (fp3_in_values in objects.h).  nv0 wakes an
  * object: the velocity stages run until a `beq v, vp` finds v unchanged
- * (README "Sleeping objects").
+ * (docs/skipping.md "Sleeping objects").
  */
 #define FP3_IN_PARAMS(X)                                                       \
   X(T,    "T",    "thrust [N]")                                                \

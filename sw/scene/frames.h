@@ -1,6 +1,6 @@
 /*
  * frames.h -- a scene run frame by frame, as a game engine runs it, with
- * sleeping objects (README "Sleeping objects").
+ * sleeping objects (docs/skipping.md "Sleeping objects").
  *
  * Each frame is one integration (step h) of every object.  The host keeps
  * every object's whole register bank (NUM_REGS words) between frames and

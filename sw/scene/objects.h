@@ -45,7 +45,7 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
 int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc);
 
 /* A reproducible harbour of n ships (seeded xorshift), the scene of the
- * sleeping benchmark (README "Sleeping objects"): masses log-uniform in
+ * sleeping benchmark (docs/skipping.md "Sleeping objects"): masses log-uniform in
  * [1e4, 3.2e6] kg, time constants m/C in [2, 20] s, terminal velocities
  * T/C in [2, 12] m/s, s0 in [-2000, 2000] m; 60 % moored (T = 0, v0 = 0),
  * 35 % cruising (v0 = T/C in binary32), 5 % accelerating from rest.
