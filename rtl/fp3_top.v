@@ -29,14 +29,15 @@
 // the value from the bypass: it issues 1 + latency cycles after its
 // producer for either FMAX_PIPE.  FMAX_PIPE = 1 also registers the fetch
 // grant before the instruction memory and the word twice after it (the
-// block RAM's output register and one in the fabric; fp3_scheduler
+// block RAM's output register and one in the fabric; fp3_sched_fetch
 // FETCH_STAGE), and cuts the scheduler's loop of readiness and grant
-// twice ("The issue loop's registered stages"), for which the add and mul
-// tag lines announce their write-backs two more cycles ahead where their
-// latency (5 or more) leaves room.  What it costs: a consumer of a move,
-// or of an add or mul of latency L < 5, waits 5 - L cycles more (the move
-// path counts as L = 3), a context is granted at most every third cycle
-// and fetches at most every fifth, a beq resolves 10 cycles later
+// twice (fp3_sched_queue g_ready_reg, fp3_sched_issue g_grant_reg), for
+// which the add and mul tag lines announce their write-backs two more
+// cycles ahead where their latency (5 or more) leaves room.  What it
+// costs: a consumer of a move, or of an add or mul of latency L < 5,
+// waits 5 - L cycles more (the move path counts as L = 3), a context is
+// granted at most every third cycle and fetches at most every fifth, a
+// beq resolves 10 cycles later
 // (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a run takes a few cycles more,
 // and host reads take 4 cycles; it needs ADD_LATENCY and MUL_LATENCY of
 // at least 3.

@@ -13,7 +13,7 @@
 // is made, on early_*_o in cycle W - AHEAD - 1, so that the scheduler can
 // compare it with its queued instructions' registers a cycle ahead and
 // keep the outcome in a register.  And, for registers that copy the
-// announcement beside groups of its loads (fp3_scheduler's per-context
+// announcement beside groups of its loads (fp3_sched_queue's per-context
 // copies) or that look further ahead (its issue loop's registered stages),
 // one, two and three cycles before that, on pre_*_o, pre2_*_o and
 // pre3_*_o: taps of the line, as far back as it reaches; the pick (the

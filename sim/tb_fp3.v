@@ -181,16 +181,16 @@ module tb_fp3 #(
   // signal of the .gtkw file is in the waveform).  Per-context vectors have
   // bit c for context c; registers and busy flags are shown for context 0.
   wire           dbg_issue     = dut.u_sched.grant;      // granted (issues now; next cycle with FMAX_PIPE)
-  wire [AW-1:0]  dbg_pc        = dut.u_sched.p_q[2*dut.u_sched.g + dut.u_sched.hp_q[dut.u_sched.g]];  // PC of the issuing instruction
-  wire [63:0]    dbg_insn      = dut.u_sched.w_q[2*dut.u_sched.g + dut.u_sched.hp_q[dut.u_sched.g]];  // its word
+  wire [AW-1:0]  dbg_pc        = dut.u_sched.u_queue.p_q[2*dut.u_sched.u_issue.g + dut.u_sched.u_queue.hp_q[dut.u_sched.u_issue.g]];  // PC of the issuing instruction
+  wire [63:0]    dbg_insn      = dut.u_sched.u_queue.w_q[2*dut.u_sched.u_issue.g + dut.u_sched.u_queue.hp_q[dut.u_sched.u_issue.g]];  // its word
   wire [7:0]     dbg_opc       = dbg_insn[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire [AW-1:0]  dbg_pc0       = dut.u_sched.p_q[dut.u_sched.hp_q[0]];  // context 0: PC of its queue's head
+  wire [AW-1:0]  dbg_pc0       = dut.u_sched.u_queue.p_q[dut.u_sched.u_queue.hp_q[0]];  // context 0: PC of its queue's head
   wire [NC-1:0]  dbg_active    = dut.u_sched.act;        // contexts fetching and issuing
   wire [NC-1:0]  dbg_waiting   = dut.u_sched.act & dut.u_sched.holds;  // hold an instruction
-  wire [NC-1:0]  dbg_ready     = dut.u_sched.ready_q;    // ... found ready last cycle
+  wire [NC-1:0]  dbg_ready     = dut.u_sched.u_queue.ready_q;    // ... found ready last cycle
   wire [NC-1:0]  dbg_raw;                                // waits for a source (RAW)
   wire [NC-1:0]  dbg_waw;                                // waits for its destination (WAW)
-  wire [31:0]    dbg_steps_done = dut.u_sched.sdone_q[0];
+  wire [31:0]    dbg_steps_done = dut.u_sched.u_loop.sdone_q[0];
   wire [63:0]    dbg_cycles    = dut.u_sched.cycles_o;
   wire [63:0]    dbg_issued    = dut.u_sched.issued_o;
   wire [63:0]    dbg_stalls    = dut.u_sched.stalls_o;
@@ -222,9 +222,9 @@ module tb_fp3 #(
     for (gs = 0; gs < NC; gs = gs + 1) begin : g_hazard
       // The head: its slot's word and decoded bits (x_q: bit 10 use_rb,
       // 9 use_ra, 8 use_rd).
-      wire        hp  = dut.u_sched.hp_q[gs];
-      wire [63:0] hw  = dut.u_sched.w_q[2*gs+hp];
-      wire [11:0] hx  = dut.u_sched.x_q[2*gs+hp];
+      wire        hp  = dut.u_sched.u_queue.hp_q[gs];
+      wire [63:0] hw  = dut.u_sched.u_queue.w_q[2*gs+hp];
+      wire [11:0] hx  = dut.u_sched.u_queue.x_q[2*gs+hp];
       wire use_ra = hx[9], use_rb = hx[10], use_rd = hx[8];
       wire [31:0] xa = gs * (1 << IW) + hw[ISA_RA_LSB +: IW];
       wire [31:0] xb = gs * (1 << IW) + hw[ISA_RB_LSB +: IW];
@@ -236,9 +236,9 @@ module tb_fp3 #(
                   dut.u_sched.issue_unit_o != UNIT_NONE && dut.u_sched.issue_ctx_o == gs;
       wire [31:0] pend_x = dut.u_sched.rd_o;
       // ... or of the one granted in the last cycle, being picked.
-      wire pick = FMAX_PIPE != 0 && dut.u_sched.p_grant &&
-                  dut.u_sched.g_unit != UNIT_NONE && dut.u_sched.p_g == gs;
-      wire [31:0] pick_x = gs * (1 << IW) + dut.u_sched.g_rd;
+      wire pick = FMAX_PIPE != 0 && dut.u_sched.u_issue.p_grant &&
+                  dut.u_sched.u_issue.g_unit != UNIT_NONE && dut.u_sched.u_issue.p_g == gs;
+      wire [31:0] pick_x = gs * (1 << IW) + dut.u_sched.u_issue.g_rd;
       assign dbg_raw[gs] = dbg_waiting[gs] &&
         ((use_ra && ((dut.u_sched.busy_i[xa] && !wa) || (pend && pend_x == xa) ||
                      (pick && pick_x == xa))) ||
@@ -380,7 +380,7 @@ module tb_fp3 #(
     input [8*80-1:0] why;
     begin
       $display("WATCHDOG: %0s at cycle %0d of the run (clock edge %0d, t = %0t ns): pc %0d (context 0), insn %h, %0d of %0d integrations done (context 0), active contexts %b, busy %h",
-               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.w_q[dut.u_sched.hp_q[0]], dbg_steps_done,
+               why, run_cycle, cycle, $time, dbg_pc0, dut.u_sched.u_queue.w_q[dut.u_sched.u_queue.hp_q[0]], dbg_steps_done,
                steps_run, dbg_active, dbg_busy);
       $display("FAIL: tb_fp3: the run hung (watchdog)");
       finish(2);

@@ -9,7 +9,7 @@
 //           pick (taken = pick & ~last) and taken if any is left: the
 //           scheduler's issue and fetch arbiters.  Their claim that this
 //           takes a grant exactly when a requester other than the last
-//           grant asks (fp3_scheduler: grant, fetch) is checked too.
+//           grant asks (fp3_sched_issue: grant; fp3_sched_fetch: fetch) is checked too.
 // A random reset now and then starts the round at requester 0 again.
 // Prints "PASS: tb_rr_arbiter N=... " or "FAIL: ..." lines and finishes.
 `default_nettype none
