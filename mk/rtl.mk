@@ -2,13 +2,14 @@
 #
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
-# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL and
+# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
+# HAS_SQRT, HAS_SIGN, DIV_LATENCY and
 # FMAX_PIPE on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE,\
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 

@@ -312,14 +312,22 @@ module fp3_scheduler #(
   wire [7:0]    w_ra8   = dwd[ISA_RA_LSB +: ISA_REG_WIDTH];
   wire [7:0]    w_rb8   = dwd[ISA_RB_LSB +: ISA_REG_WIDTH];
   wire [31:0]   w_imm   = dwd[0 +: ISA_IMM_WIDTH];
-  wire [6:0]    w_dec   = isa_decode(w_opc);   // {known, unit, uses: imm rb ra rd}
-  wire          w_built = (w_dec[5:4] != UNIT_ADD || HAS_ADD != 0) &&
+  wire [7:0]    w_dec   = isa_decode(w_opc);   // {known, unit[2:0], uses: imm rb ra rd}
+  // The issue path carries units 0 .. 3 (2 bits: w_dec[5:4]).  The
+  // div/sqrt unit (UNIT_DIV) and the sign group (abs, neg, min, max: move
+  // path opcodes) have no issue path in this scheduler: their words are
+  // illegal (fp3_top builds with HAS_DIV = HAS_SQRT = HAS_SIGN = 0, and the
+  // host refuses such a program first), so their 2-bit unit is never used.
+  wire          w_sign  = w_opc == OP_ABS || w_opc == OP_NEG || w_opc == OP_MIN ||
+                          w_opc == OP_MAX;
+  wire          w_built = (w_dec[6:4] != {1'b0, UNIT_ADD} || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
-                          (w_dec[5:4] != UNIT_MUL || HAS_MUL != 0);
+                          (w_dec[6:4] != {1'b0, UNIT_MUL} || HAS_MUL != 0) &&
+                          w_dec[6:4] != UNIT_DIV && !w_sign;
   // w_imm < IMEM_DEPTH, without a carry chain when IMEM_DEPTH is 2**AW
   wire          w_in    = (w_imm >> AW) == 32'd0 &&
                           (IMEM_DEPTH == (1 << AW) || w_imm < IMEM_DEPTH);
-  wire          w_legal = w_dec[6] && w_built && reg_ok(w_dec[0], w_rd8) &&
+  wire          w_legal = w_dec[7] && w_built && reg_ok(w_dec[0], w_rd8) &&
                           reg_ok(w_dec[1], w_ra8) && reg_ok(w_dec[2], w_rb8) &&
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_in) &&

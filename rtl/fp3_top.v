@@ -58,6 +58,13 @@
 //   HAS_SUB      0: the adder only adds; sub is an illegal instruction
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
+//   HAS_DIV, HAS_SQRT, HAS_SIGN  0: div, sqrt, abs/neg/min/max are illegal
+//                instructions.  Reported in INFO2; must be 0 (1 is an
+//                elaboration error): the issue path has no div/sqrt
+//                write-back port and no sign-group operation select yet
+//                (sw/isa/fp3_isa.h HAS_DIV), so the host refuses programs
+//                with these instructions before running them
+//   DIV_LATENCY  the div/sqrt unit's latency, reported in INFO2[29:22]
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
 //                before and after the instruction memory, two in the
 //                scheduler's issue loop, two between its grant and the
@@ -85,6 +92,10 @@ module fp3_top #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_DIV      = 0,
+  parameter integer HAS_SQRT     = 0,
+  parameter integer HAS_SIGN     = 0,
+  parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0,
   parameter integer CTX_CHECKED  = 0,
   parameter integer HOST_WSEL    = 0
@@ -136,6 +147,15 @@ module fp3_top #(
       // (and the cycle before it, fp3_wb_tag early_*) must come after the
       // issue that sets its busy flag: latency >= PICK + 1.
       fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_3 u_error ();
+    end
+    if (HAS_DIV != 0 || HAS_SQRT != 0 || HAS_SIGN != 0) begin : g_bad_units
+      // Elaboration error on purpose: the div/sqrt unit and the sign group
+      // have no issue path here (see HAS_DIV above).
+      fp3_top_error_HAS_DIV_HAS_SQRT_HAS_SIGN_must_be_0 u_error ();
+    end
+    if (DIV_LATENCY < 1 || DIV_LATENCY > 255) begin : g_bad_div_latency
+      // Elaboration error on purpose: INFO2 reports DIV_LATENCY in 8 bits.
+      fp3_top_error_DIV_LATENCY_must_be_1_to_255 u_error ();
     end
   endgenerate
 
@@ -579,8 +599,9 @@ module fp3_top #(
         HR_ID[4:0]:         hr_four[32*hk +: 32] = ID_VALUE;
         HR_CTX[4:0]:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
         HR_CONTEXTS[4:0]:   hr_four[32*hk +: 32] = contexts_q;
-        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0],
-                                                    NUM_CONTEXTS[15:0]};
+        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {2'd0, DIV_LATENCY[7:0], HAS_SIGN[0],
+                                                    HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0],
+                                                    HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
         default:            hr_four[32*hk +: 32] = 32'd0;
       endcase
     end

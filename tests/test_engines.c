@@ -556,7 +556,7 @@ static void test_errors_agree(void **state) {
   (void)state;
   capture a, b;
   fp3_image img;
-  assemble("li r1, 1.0\n.word 0x0900000000000000\nhalt\n", &img);
+  assemble("li r1, 1.0\n.word 0x0F00000000000000\nhalt\n", &img);
   run_on(rtl, &img, NULL, 0, 1, &a);
   run_on(iss, &img, NULL, 0, 1, &b);
   assert_int_equal(a.st.error, FP3_ERR_ILLEGAL_INSN);
@@ -686,7 +686,7 @@ static void test_random_words(void **state) {
     fp3_image_init(&img);
     uint64_t w = rnd();
     /* Bias towards known opcodes so legal words are exercised too. */
-    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 10) << FP3_OPC_LSB);
+    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 16) << FP3_OPC_LSB);
     /* ... and a beq sometimes to its legal target, the halt */
     if (i % 8 == 3) w = fp3_insn_make(FP3_OP_BEQ, 0, (unsigned)(rnd() % 4), (unsigned)(rnd() % 4), 1);
     if (i % 4 == 1) w &= 0xFF1F1F1F00000000ull | (rnd() & 0xFFFFFFFFull);
@@ -1016,7 +1016,7 @@ static void test_bad_contexts(void **state) {
 static void test_errors_every_context(void **state) {
   (void)state;
   fp3_image img;
-  assemble("beq r1, r2, ok\n.word 0x0900000000000000\nok: halt\n", &img);
+  assemble("beq r1, r2, ok\n.word 0x0F00000000000000\nok: halt\n", &img);
   static multi_capture ma, mb;
   static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
   fp3_engine *fmax = fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
