@@ -67,7 +67,7 @@ module fp3_axil #(
   parameter integer HAS_MUL      = 1,
   parameter integer HAS_DIV      = 0,
   parameter integer HAS_SQRT     = 0,
-  parameter integer HAS_SIGN     = 0,
+  parameter integer HAS_SIGN     = 1,
   parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0
 ) (

@@ -73,7 +73,7 @@ localparam integer DEFAULT_HAS_SUB = 1;
 localparam integer DEFAULT_HAS_MUL = 1;
 localparam integer DEFAULT_HAS_DIV = 0;
 localparam integer DEFAULT_HAS_SQRT = 0;
-localparam integer DEFAULT_HAS_SIGN = 0;
+localparam integer DEFAULT_HAS_SIGN = 1;
 localparam integer DEFAULT_DIV_LATENCY = 8;
 
 // Exception flags (Berkeley SoftFloat bit order)

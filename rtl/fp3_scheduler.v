@@ -82,8 +82,9 @@
 //   NUM_CONTEXTS  contexts (objects in flight), >= 1; CW = clog2, >= 1
 //   NUM_REGS      registers per context; IW = clog2(NUM_REGS) index width
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
-//   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
-//                 missing one is illegal
+//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_SIGN  units built (fp3_top): an
+//                 instruction for a missing one is illegal (HAS_SIGN: abs,
+//                 neg, min, max on the move path)
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
 //                 selected and registered before the instruction memory,
@@ -107,6 +108,7 @@ module fp3_scheduler #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_SIGN     = 1,
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
   parameter integer DRAIN        = 1
@@ -165,6 +167,7 @@ module fp3_scheduler #(
   output wire [CW+IW-1:0]             rd_o,
   output wire [1:0]                   issue_unit_o,
   output wire                         issue_sub_o,
+  output wire [2:0]                   issue_sop_o,   // sign group: {abs/neg/min/max, fp_sign op}
   output wire                         issue_imm_o,   // the move path takes the immediate
   output wire [31:0]                  imm_o,
   output wire                         endi_o,        // the issued instruction is an endi
@@ -182,7 +185,7 @@ module fp3_scheduler #(
   localparam integer NC = NUM_CONTEXTS;
   localparam integer XW = CW + IW;
   localparam [7:0]   LULL8 = DRAIN[7:0] - 8'd1;  // (lull_q, below)
-  localparam integer DW = 12;       // a queue entry's decoded bits (adec)
+  localparam integer DW = 15;       // a queue entry's decoded bits (adec)
 
   // ---- per-context state ---------------------------------------------------
   reg [NC-1:0] active_q;            // fetching and issuing, but for stop_q (act)
@@ -299,8 +302,8 @@ module fp3_scheduler #(
   // Everything the ready and issue steps need of a word beyond its raw
   // fields is decided as it is written into the instruction memory (from
   // the word and its address: a program does not change while it runs),
-  // stored beside it (SW bits: {illegal, use_rb, use_ra, use_rd, unit, sub,
-  // li, endi, beq, halt}; a zero word's are zero), completed as it joins
+  // stored beside it (SW bits: {sop, illegal, use_rb, use_ra, use_rd, unit,
+  // sub, li, endi, beq, halt}; a zero word's are zero), completed as it joins
   // its queue with ovf (it would run off the end of the memory: not a halt
   // or an endi, which leave or jump, at the last address) and kept in its
   // queue entry (DW bits: {legal, ..., halt, ovf}).  So neither the ready
@@ -314,16 +317,20 @@ module fp3_scheduler #(
   wire [31:0]   w_imm   = dwd[0 +: ISA_IMM_WIDTH];
   wire [7:0]    w_dec   = isa_decode(w_opc);   // {known, unit[2:0], uses: imm rb ra rd}
   // The issue path carries units 0 .. 3 (2 bits: w_dec[5:4]).  The
-  // div/sqrt unit (UNIT_DIV) and the sign group (abs, neg, min, max: move
-  // path opcodes) have no issue path in this scheduler: their words are
-  // illegal (fp3_top builds with HAS_DIV = HAS_SQRT = HAS_SIGN = 0, and the
-  // host refuses such a program first), so their 2-bit unit is never used.
+  // div/sqrt unit (UNIT_DIV) has no issue path in this scheduler: its words
+  // are illegal (fp3_top builds with HAS_DIV = HAS_SQRT = 0, and the host
+  // refuses such a program first), so their 2-bit unit is never used.  The
+  // sign group (abs, neg, min, max) runs on the move path: w_sop is
+  // {sign group, fp_sign's op_i: 0 abs, 1 neg, 2 min, 3 max}, carried to
+  // the issue beside the unit (issue_sop_o).
   wire          w_sign  = w_opc == OP_ABS || w_opc == OP_NEG || w_opc == OP_MIN ||
                           w_opc == OP_MAX;
+  wire [2:0]    w_sop   = {w_sign, w_opc == OP_MIN || w_opc == OP_MAX,
+                           w_opc == OP_NEG || w_opc == OP_MAX};
   wire          w_built = (w_dec[6:4] != {1'b0, UNIT_ADD} || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
                           (w_dec[6:4] != {1'b0, UNIT_MUL} || HAS_MUL != 0) &&
-                          w_dec[6:4] != UNIT_DIV && !w_sign;
+                          w_dec[6:4] != UNIT_DIV && (!w_sign || HAS_SIGN != 0);
   // w_imm < IMEM_DEPTH, without a carry chain when IMEM_DEPTH is 2**AW
   wire          w_in    = (w_imm >> AW) == 32'd0 &&
                           (IMEM_DEPTH == (1 << AW) || w_imm < IMEM_DEPTH);
@@ -332,7 +339,7 @@ module fp3_scheduler #(
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_in) &&
                           (!w_beq || (w_in && w_imm[AW-1:0] > dwa));
-  assign wsdec = {!w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
+  assign wsdec = {w_sop, !w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
   wire          avalid;     // a fetched word arrives (fetch step, below)
@@ -350,7 +357,8 @@ module fp3_scheduler #(
   wire          a_beq   = asdec[1];
   wire          a_halt  = asdec[0];
   wire          a_atend;    // ... at the memory's last address (compared a cycle ahead: u_arrive)
-  wire [DW-1:0] adec    = {!asdec[SW-1], asdec[SW-2:0], a_atend && !a_halt && !a_endi};
+  wire [DW-1:0] adec    = {asdec[SW-1 -: 3], !asdec[SW-4], asdec[SW-5:0],
+                           a_atend && !a_halt && !a_endi};
 
   // ---- ready step: the head of every queue ---------------------------------
   // Each queue entry carries three wait bits, one per operand field (ra,
@@ -407,9 +415,9 @@ module fp3_scheduler #(
   wire [NC-1:0] l_endi;     // the last head is an endi
   wire [NC-1:0] l_ovf;      // ... would run off the end of the memory
   wire [NC*AW-1:0] l_pc;    // ... its PC
-  // Issue fields of every slot: {ra, rb, rd, unit, sub, li, immediate,
-  // endi, beq}.
-  localparam integer FW = 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
+  // Issue fields of every slot: {sop, ra, rb, rd, unit, sub, li,
+  // immediate, endi, beq}.
+  localparam integer FW = 3 + 3 * IW + 2 + 1 + 1 + 32 + 1 + 1;
   localparam [FW-1:0] IMM_BITS = {{(FW-34){1'b0}}, {32{1'b1}}, 2'b00};   // the immediate in a field word
   wire [2*NC*FW-1:0] fields;
   wire [NC*FW-1:0]   h_fields;  // ... of the heads
@@ -636,10 +644,11 @@ module fp3_scheduler #(
         wire          unused_insn = &{1'b0, insn};
         wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
         wire [1:0]    d_unit;
-        assign {lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
+        wire [2:0]    d_sop;
+        assign {d_sop, lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
                 d_ovf} = x_q[I];
         wire          unused_x = &{1'b0, d_halt, d_ovf};
-        assign fields[I*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
+        assign fields[I*FW +: FW] = {d_sop, ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
         // This cycle's announcements of the fields the slot holds, compared
         // in the cycle before (early_*_i) and registered; a word arriving
         // in that cycle has its own (fa_q), taken while it is fresh.  So
@@ -866,13 +875,14 @@ module fp3_scheduler #(
   wire [IW-1:0] g_ra, g_rb, g_rd;
   wire [1:0]    g_unit;
   wire          g_sub, g_li, g_endi, g_beq;
+  wire [2:0]    g_sop;
   wire [31:0]   g_imm;
-  assign {g_ra, g_rb, g_rd, g_unit, g_sub, g_li, g_imm, g_endi, g_beq} = gf;
+  assign {g_sop, g_ra, g_rb, g_rd, g_unit, g_sub, g_li, g_imm, g_endi, g_beq} = gf;
 
   // The granted instruction, as it issues: {valid, ctx, ra, rb, rd, unit,
-  // sub, imm (li), immediate, endi, beq}.
-  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 1 + 32 + 1 + 1;
-  wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_li,
+  // sub, sop, imm (li), immediate, endi, beq}.
+  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 3 + 1 + 32 + 1 + 1;
+  wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_sop, g_li,
                           g_imm, p_grant && g_endi, p_grant && g_beq};
   wire [IS_W-1:0] is_w;
   // (The issue register is cleared while stopped, below.)
@@ -895,7 +905,7 @@ module fp3_scheduler #(
       fp3_scheduler_error_PICK_STAGES_must_be_0_or_2 u_error ();
     end
   endgenerate
-  assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
+  assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_sop_o, issue_imm_o,
           imm_o, endi_o, beq_o} = is_w;
 
   // The flags of the arriving word's context set and announced in cycle
