@@ -279,6 +279,10 @@ static void test_sized_rtl(void **state) {
   assert_int_equal(e->config.has_sub, 0);
   assert_int_equal(e->config.has_sub, r.cfg.has_sub);
   assert_int_equal(e->config.has_mul, r.cfg.has_mul);
+  assert_int_equal(e->config.has_div, r.cfg.has_div);
+  assert_int_equal(e->config.has_sqrt, r.cfg.has_sqrt);
+  assert_int_equal(e->config.has_sign, 0);
+  assert_int_equal(e->config.has_sign, r.cfg.has_sign);
   assert_int_equal(e->config.mode.round, r.cfg.mode.round);
   assert_int_equal(e->config.mode.ftz, r.cfg.mode.ftz);
 
