@@ -2,19 +2,21 @@
 #
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
-# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL and
+# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
+# HAS_SQRT, HAS_SIGN, DIV_LATENCY and
 # FMAX_PIPE on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE,\
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
-# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE]]]].  The test
+# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [HAS_DIV HAS_SQRT
+# HAS_SIGN]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
 # (shortest add; FMAX_PIPE, the build for clock rate, with the shortest
 # latencies it takes, whose write-back tag lines are too short for the full
@@ -33,9 +35,10 @@ RTL_CFG_nc32    := 0 0 32
 RTL_CFG_nc64    := 0 0 64
 RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # ... and one build sized to a scene (tests/test_configure.c):
-# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL.  `build/fp3 configure
-# scenes/drift.scene` derives exactly these parameters (the test checks it).
-RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1
+# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL, 10 FMAX_PIPE, 11-13
+# HAS_DIV HAS_SQRT HAS_SIGN.  `build/fp3 configure scenes/drift.scene`
+# derives exactly these parameters (the test checks it).
+RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1 0 0 0 0
 RTL_SCENE_CONFIGS := drift
 # ... and the build for clock rate (docs/fpga.md), the processor inside the
 # AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which
@@ -44,7 +47,8 @@ RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
 RTL_AXIL_CONFIGS := fmax
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
-RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE
+RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE \
+                  HAS_DIV HAS_SQRT HAS_SIGN
 rtl_gparams = $(join $(patsubst %,-G%=,$(wordlist 1,$(words $(RTL_CFG_$(1))),$(RTL_CFG_PARAMS))),$(RTL_CFG_$(1)))
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)

@@ -1,5 +1,6 @@
 // fp3_arith -- the arithmetic unit (paper §4): one pipelined FP add/sub
-// core, one pipelined FP mul core and a move path of MOV_LATENCY cycles,
+// core, one pipelined FP mul core and a move path of MOV_LATENCY cycles
+// (copies, immediates and the sign group abs, neg, min, max: fp_sign),
 // each with its own write-back port.
 //
 // One operation may enter per cycle (single issue).  The destination
@@ -18,14 +19,20 @@
 //   HAS_ADD, HAS_MUL  0: that core is not built (its port never writes);
 //   HAS_SUB      0: the adder's subtract input is tied off (the scheduler
 //                rejects the instructions these leave without a unit)
+//   HAS_SIGN     0: no fp_sign on the move path (abs, neg, min, max are
+//                illegal); 1 costs a 31-bit comparator, NaN tests and a
+//                32-bit 2:1 multiplexer after the path's registers (fp_sign)
 // Ports
+//   sop_i: for the move path, {sign group, fp_sign op_i}: 0xx a copy of
+//   a_i, 1xx fp_sign's abs (00), neg (01), min (10), max (11) of a_i, b_i.
 //   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, a_i, b_i:
 //   an issued operation with its operands from the register file's read
 //   stage (for the move path a_i is the value to write: the source
 //   register or the immediate).
 //   {add,mul,mov}_{valid,data}_o: results, ADD_LATENCY, MUL_LATENCY and
-//   MOV_LATENCY cycles after valid_i; add/mul flags_o are the IEEE exception flags
-//   of the result.
+//   MOV_LATENCY cycles after valid_i; add/mul/mov flags_o are the IEEE
+//   exception flags of the result (the move path's: invalid for a min or
+//   max of a signalling NaN, else 0).
 `default_nettype none
 module fp3_arith #(
   parameter integer ADD_LATENCY = 4,
@@ -35,13 +42,15 @@ module fp3_arith #(
   parameter integer MOV_LATENCY = 1,
   parameter integer HAS_ADD     = 1,
   parameter integer HAS_SUB     = 1,
-  parameter integer HAS_MUL     = 1
+  parameter integer HAS_MUL     = 1,
+  parameter integer HAS_SIGN    = 1
 ) (
   input  wire          clk_i,
   input  wire          rst_i,
   input  wire          valid_i,
   input  wire [1:0]    unit_i,
   input  wire          sub_i,
+  input  wire [2:0]    sop_i,
   input  wire [31:0]   a_i,
   input  wire [31:0]   b_i,
   output wire          add_valid_o,
@@ -51,7 +60,8 @@ module fp3_arith #(
   output wire [31:0]   mul_data_o,
   output wire [4:0]    mul_flags_o,
   output wire          mov_valid_o,
-  output wire [31:0]   mov_data_o
+  output wire [31:0]   mov_data_o,
+  output wire [4:0]    mov_flags_o
 );
 `include "fp3_isa.vh"
 
@@ -103,13 +113,43 @@ module fp3_arith #(
   wire unused_sub = sub_i;
 
   // ---- move path: MOV_LATENCY register stages ------------------------------
+  // A copy goes through fp_pipe, a sign-group operation through fp_sign,
+  // both MOV_LATENCY stages; at most one of them holds a result in a stage.
+  wire        copy_valid;
+  wire [31:0] copy_data;
   fp_pipe #(.WIDTH(32), .DEPTH(MOV_LATENCY)) u_mov (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (mov_go),
+    .valid_i (mov_go && !(HAS_SIGN != 0 && sop_i[2])),
     .data_i  (a_i),
-    .valid_o (mov_valid_o),
-    .data_o  (mov_data_o)
+    .valid_o (copy_valid),
+    .data_o  (copy_data)
   );
+  generate
+    if (HAS_SIGN != 0) begin : g_sign
+      wire        sign_valid;
+      wire [31:0] sign_data;
+      wire [4:0]  sign_flags;
+      fp_sign #(.LATENCY(MOV_LATENCY)) u_sign (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (mov_go && sop_i[2]),
+        .op_i    (sop_i[1:0]),
+        .a_i     (a_i),
+        .b_i     (b_i),
+        .valid_o (sign_valid),
+        .y_o     (sign_data),
+        .flags_o (sign_flags)
+      );
+      assign mov_valid_o = copy_valid || sign_valid;
+      assign mov_data_o  = sign_valid ? sign_data : copy_data;
+      assign mov_flags_o = sign_valid ? sign_flags : 5'd0;
+    end else begin : g_no_sign
+      wire unused_sop = &{1'b0, sop_i};
+      assign mov_valid_o = copy_valid;
+      assign mov_data_o  = copy_data;
+      assign mov_flags_o = 5'd0;
+    end
+  endgenerate
 endmodule
 `default_nettype wire

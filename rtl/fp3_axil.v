@@ -46,7 +46,8 @@
 //   MUL_LATENCY  mul core latency in cycles
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
-//   HAS_ADD, HAS_SUB, HAS_MUL  units built (see fp3_top)
+//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY
+//                units built (see fp3_top)
 //   FMAX_PIPE    pipeline for clock rate (see fp3_top); 1: the host port's
 //                inputs are registered, a read's data are captured three
 //                cycles after its address
@@ -64,6 +65,10 @@ module fp3_axil #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_DIV      = 0,
+  parameter integer HAS_SQRT     = 0,
+  parameter integer HAS_SIGN     = 1,
+  parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0
 ) (
   input  wire                  clk_i,
@@ -325,6 +330,10 @@ module fp3_axil #(
     .HAS_ADD      (HAS_ADD),
     .HAS_SUB      (HAS_SUB),
     .HAS_MUL      (HAS_MUL),
+    .HAS_DIV      (HAS_DIV),
+    .HAS_SQRT     (HAS_SQRT),
+    .HAS_SIGN     (HAS_SIGN),
+    .DIV_LATENCY  (DIV_LATENCY),
     .FMAX_PIPE    (FMAX_PIPE),
     .CTX_CHECKED  (1),              // wr_ok: wd_ctx_q
     .HOST_WSEL    (1)               // host_wsel

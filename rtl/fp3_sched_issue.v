@@ -77,7 +77,7 @@ module fp3_sched_issue #(
   input  wire                    running_i,
   input  wire [NUM_CONTEXTS-1:0] ready_i,
   input  wire [NUM_CONTEXTS-1:0] hp_i,
-  input  wire [2*NUM_CONTEXTS*(3*IW+38)-1:0] fields_i,   // 2 * NC * SCH_FW
+  input  wire [2*NUM_CONTEXTS*(3*IW+41)-1:0] fields_i,   // 2 * NC * SCH_FW
   output wire [NUM_CONTEXTS-1:0] gone_o,
   output wire                    grant_o,
   output wire [NUM_CONTEXTS-1:0] gone_q_o,
@@ -89,6 +89,7 @@ module fp3_sched_issue #(
   output wire [CW+IW-1:0]        rd_o,
   output wire [1:0]              issue_unit_o,
   output wire                    issue_sub_o,
+  output wire [2:0]              issue_sop_o,   // sign group: {abs/neg/min/max, fp_sign op}
   output wire                    issue_imm_o,
   output wire [31:0]             imm_o,
   output wire                    endi_o,
@@ -238,13 +239,14 @@ module fp3_sched_issue #(
   wire [IW-1:0] g_ra, g_rb, g_rd;
   wire [1:0]    g_unit;
   wire          g_sub, g_li, g_endi, g_beq;
+  wire [2:0]    g_sop;
   wire [31:0]   g_imm;
-  assign {g_ra, g_rb, g_rd, g_unit, g_sub, g_li, g_imm, g_endi, g_beq} = gf;
+  assign {g_sop, g_ra, g_rb, g_rd, g_unit, g_sub, g_li, g_imm, g_endi, g_beq} = gf;
 
   // ---- the issue -----------------------------------------------------------
-  // {valid, ctx, ra, rb, rd, unit, sub, imm (li), immediate, endi, beq}
-  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 1 + 32 + 1 + 1;
-  wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_li,
+  // {valid, ctx, ra, rb, rd, unit, sub, sop, imm (li), immediate, endi, beq}
+  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 3 + 1 + 32 + 1 + 1;
+  wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_sop, g_li,
                           g_imm, p_grant && g_endi, p_grant && g_beq};
   wire [IS_W-1:0] is_w;
   // (The issue register is cleared while stopped, below.)
@@ -267,7 +269,7 @@ module fp3_sched_issue #(
       fp3_scheduler_error_PICK_STAGES_must_be_0_or_2 u_error ();
     end
   endgenerate
-  assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_imm_o,
+  assign {issue_o, issue_ctx_o, ra_o, rb_o, rd_o, issue_unit_o, issue_sub_o, issue_sop_o, issue_imm_o,
           imm_o, endi_o, beq_o} = is_w;
 
   assign gone_o    = gone;

@@ -130,7 +130,7 @@ module fp3_sched_queue #(
   input  wire [NUM_CONTEXTS-1:0]      gone_q_i,
   input  wire [CW-1:0]                actx_i,
   input  wire [63:0]                  aword_i,
-  input  wire [11:0]                  adec_i,     // SCH_DW bits
+  input  wire [14:0]                  adec_i,     // SCH_DW bits
   input  wire [AW-1:0]                apc_i,
   input  wire [3*IW-1:0]              lk_fields_i,
   input  wire [NUM_CONTEXTS*3*IW-1:0] cf_i,
@@ -154,7 +154,7 @@ module fp3_sched_queue #(
   input  wire [CW+IW-1:0]             rd_i,
   output wire [NUM_CONTEXTS-1:0]      ready_o,
   output wire [NUM_CONTEXTS-1:0]      hp_o,
-  output wire [2*NUM_CONTEXTS*(3*IW+38)-1:0] fields_o,   // 2 * NC * SCH_FW
+  output wire [2*NUM_CONTEXTS*(3*IW+41)-1:0] fields_o,   // 2 * NC * SCH_FW
   output wire [NUM_CONTEXTS-1:0]      holds_o,
   output wire [NUM_CONTEXTS-1:0]      legal_o,
   output wire [NUM_CONTEXTS-1:0]      h_halt_o,
@@ -405,10 +405,11 @@ module fp3_sched_queue #(
         wire          unused_insn = &{1'b0, insn};
         wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
         wire [1:0]    d_unit;
-        assign {lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
+        wire [2:0]    d_sop;
+        assign {d_sop, lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
                 d_ovf} = x_q[I];
         wire          unused_x = &{1'b0, d_halt, d_ovf};
-        assign fields[I*FW +: FW] = {ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
+        assign fields[I*FW +: FW] = {d_sop, ra, rb, rd, d_unit, d_sub, d_li, imm, d_endi, d_beq};
         // This cycle's announcements of the fields the slot holds, compared
         // in the cycle before and registered; a word arriving in that cycle
         // has its own (fa_q), taken while it is fresh.  So no slot select

@@ -38,8 +38,9 @@
 //   NUM_CONTEXTS  contexts (objects in flight), >= 1; CW = clog2, >= 1
 //   NUM_REGS      registers per context; IW = clog2(NUM_REGS) index width
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
-//   HAS_ADD, HAS_SUB, HAS_MUL  units built (fp3_top): an instruction for a
-//                 missing one is illegal
+//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_SIGN  units built (fp3_top): an
+//                 instruction for a missing one is illegal (HAS_SIGN: abs,
+//                 neg, min, max on the move path)
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
 //                 selected and registered before the instruction memory,
@@ -67,6 +68,7 @@ module fp3_scheduler #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_SIGN     = 1,
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
   parameter integer DRAIN        = 1
@@ -125,6 +127,7 @@ module fp3_scheduler #(
   output wire [CW+IW-1:0]             rd_o,
   output wire [1:0]                   issue_unit_o,
   output wire                         issue_sub_o,
+  output wire [2:0]                   issue_sop_o,   // sign group: {abs/neg/min/max, fp_sign op}
   output wire                         issue_imm_o,   // the move path takes the immediate
   output wire [31:0]                  imm_o,
   output wire                         endi_o,        // the issued instruction is an endi
@@ -163,7 +166,7 @@ module fp3_scheduler #(
 
   fp3_sched_fetch #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                     .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
-                    .HAS_MUL(HAS_MUL), .FETCH_STAGE(FETCH_STAGE)) u_fetch (
+                    .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN), .FETCH_STAGE(FETCH_STAGE)) u_fetch (
     .clk_i        (clk_i),
     .rst_i        (rst_i),
     .running_i    (running_o),
@@ -258,6 +261,7 @@ module fp3_scheduler #(
     .rd_o         (rd_o),
     .issue_unit_o (issue_unit_o),
     .issue_sub_o  (issue_sub_o),
+    .issue_sop_o  (issue_sop_o),
     .issue_imm_o  (issue_imm_o),
     .imm_o        (imm_o),
     .endi_o       (endi_o),

@@ -59,6 +59,14 @@
 //   HAS_SUB      0: the adder only adds; sub is an illegal instruction
 //   HAS_MUL      0: no mul core; mul is an illegal instruction
 //                (hardware sized to a scene: `fp3 configure`)
+//   HAS_SIGN     0: no sign group; abs, neg, min, max are illegal
+//                (1: fp_sign on the move path, fp3_arith)
+//   HAS_DIV, HAS_SQRT  0: div, sqrt are illegal instructions.  Reported
+//                in INFO2; must be 0 (1 is an elaboration error): the
+//                issue path has no div/sqrt write-back port yet
+//                (sw/isa/fp3_isa.h HAS_DIV), so the host refuses programs
+//                with these instructions before running them
+//   DIV_LATENCY  the div/sqrt unit's latency, reported in INFO2[29:22]
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
 //                before and after the instruction memory, two in the
 //                scheduler's issue loop, two between its grant and the
@@ -86,6 +94,10 @@ module fp3_top #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_DIV      = 0,
+  parameter integer HAS_SQRT     = 0,
+  parameter integer HAS_SIGN     = 1,
+  parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0,
   parameter integer CTX_CHECKED  = 0,
   parameter integer HOST_WSEL    = 0
@@ -137,6 +149,15 @@ module fp3_top #(
       // (and the cycle before it, fp3_wb_tag early_*) must come after the
       // issue that sets its busy flag: latency >= PICK + 1.
       fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_3 u_error ();
+    end
+    if (HAS_DIV != 0 || HAS_SQRT != 0) begin : g_bad_units
+      // Elaboration error on purpose: the div/sqrt unit has no issue path
+      // here (see HAS_DIV above).
+      fp3_top_error_HAS_DIV_and_HAS_SQRT_must_be_0 u_error ();
+    end
+    if (DIV_LATENCY < 1 || DIV_LATENCY > 255) begin : g_bad_div_latency
+      // Elaboration error on purpose: INFO2 reports DIV_LATENCY in 8 bits.
+      fp3_top_error_DIV_LATENCY_must_be_1_to_255 u_error ();
     end
   endgenerate
 
@@ -240,6 +261,7 @@ module fp3_top #(
   wire [CW-1:0] issue_ctx;
   wire          idle;
   wire          issue, issue_sub, issue_imm, endi, beq;
+  wire [2:0]    issue_sop;                // sign group: {abs/neg/min/max, fp_sign op}
   reg           br_taken_q;               // beq resolution (read stage)
   reg [NUM_CONTEXTS-1:0] br_q;            // ... its context, one-hot (none: no beq)
   reg [AW-1:0]  br_target_q;
@@ -249,7 +271,7 @@ module fp3_top #(
   wire          add_valid, mul_valid, mov_valid;
   wire [XW-1:0] add_idx, mul_idx, mov_idx;
   wire [31:0]   add_data, mul_data, mov_data;
-  wire [4:0]    add_flags, mul_flags;
+  wire [4:0]    add_flags, mul_flags, mov_flags;
   wire          adda_valid, mula_valid, mova_valid;   // write-backs AHEAD cycles on
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
   wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
@@ -271,7 +293,7 @@ module fp3_top #(
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
-                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .PICK_STAGES(PICK),
+                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
                   .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
@@ -317,6 +339,7 @@ module fp3_top #(
     .rd_o             (rd),
     .issue_unit_o     (issue_unit),
     .issue_sub_o      (issue_sub),
+    .issue_sop_o      (issue_sop),
     .issue_imm_o      (issue_imm),
     .imm_o            (imm),
     .endi_o           (endi),
@@ -377,16 +400,17 @@ module fp3_top #(
   // The register file answers a read of the issue cycle t in cycle t + READ;
   // the rest of the issued operation waits beside it.
   wire          rd_valid, rd_sub, rd_imm, rd_beq;
+  wire [2:0]    rd_sop;
   wire [1:0]    rd_unit;
   wire [31:0]   rd_immval;
   wire [CW-1:0] rd_ctx;
-  fp_pipe #(.WIDTH(1 + 2 + 1 + 1 + 32 + CW), .DEPTH(READ)) u_read (
+  fp_pipe #(.WIDTH(1 + 2 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (issue && issue_unit != UNIT_NONE),
-    .data_i  ({beq, issue_unit, issue_sub, issue_imm, imm, issue_ctx}),
+    .data_i  ({beq, issue_unit, issue_sub, issue_sop, issue_imm, imm, issue_ctx}),
     .valid_o (rd_valid),
-    .data_o  ({rd_beq, rd_unit, rd_sub, rd_imm, rd_immval, rd_ctx})
+    .data_o  ({rd_beq, rd_unit, rd_sub, rd_sop, rd_imm, rd_immval, rd_ctx})
   );
 
   // ---- write-back tag lines ------------------------------------------------
@@ -497,12 +521,13 @@ module fp3_top #(
   wire add_core_valid, mul_core_valid, mov_path_valid;
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
               .MOV_LATENCY(MOV_LATENCY), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
-              .HAS_MUL(HAS_MUL)) u_arith (
+              .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
     .valid_i     (rd_valid),
     .unit_i      (rd_unit),
     .sub_i       (rd_sub),
+    .sop_i       (rd_sop),
     .a_i         (rd_imm ? rd_immval : ra_data),
     .b_i         (rb_data),
     .add_valid_o (add_core_valid),
@@ -512,7 +537,8 @@ module fp3_top #(
     .mul_data_o  (mul_data),
     .mul_flags_o (mul_flags),
     .mov_valid_o (mov_path_valid),
-    .mov_data_o  (mov_data)
+    .mov_data_o  (mov_data),
+    .mov_flags_o (mov_flags)
   );
   wire unused_valid = add_core_valid ^ mul_core_valid ^ mov_path_valid;
 
@@ -528,10 +554,11 @@ module fp3_top #(
       localparam [CW-1:0] FCTX = fc[CW-1:0];
       wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
       wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
+      wire mov_here = mov_valid && mov_idx[XW-1:IW] == FCTX;
       always @(posedge clk_i) begin
         if (rst_i || fclr_q) flags_q[fc] <= 5'd0;
         else flags_q[fc] <= flags_q[fc] | (add_here ? add_flags : 5'd0) |
-                            (mul_here ? mul_flags : 5'd0);
+                            (mul_here ? mul_flags : 5'd0) | (mov_here ? mov_flags : 5'd0);
       end
     end
   endgenerate
@@ -580,8 +607,9 @@ module fp3_top #(
         HR_ID[4:0]:         hr_four[32*hk +: 32] = ID_VALUE;
         HR_CTX[4:0]:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
         HR_CONTEXTS[4:0]:   hr_four[32*hk +: 32] = contexts_q;
-        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0],
-                                                    NUM_CONTEXTS[15:0]};
+        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {2'd0, DIV_LATENCY[7:0], HAS_SIGN[0],
+                                                    HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0],
+                                                    HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
         default:            hr_four[32*hk +: 32] = 32'd0;
       endcase
     end

@@ -548,7 +548,8 @@ module tb_fp3 #(
     host_read(HR_INFO0, rd);
     expect_eq("INFO0", rd, {IMEM_DEPTH[15:0], NUM_REGS[15:0]});
     host_read(HR_INFO2, rd);
-    expect_eq("INFO2", rd, {13'd0, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
+    // (DIV_LATENCY 8, HAS_SIGN 1, HAS_SQRT 0, HAS_DIV 0: fp3_top's defaults)
+    expect_eq("INFO2", rd, {2'd0, 8'd8, 3'b100, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
 
     // program (every entry), registers of each context, steps, start
     for (i = 0; i < IMEM_DEPTH; i = i + 1) begin

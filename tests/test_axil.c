@@ -271,7 +271,9 @@ static void test_id_info(void **state) {
   assert_int_equal((info1 >> 8) & 0xFF, bd->mul_latency);
   assert_int_equal(info1 >> 16, bd->fmax_pipe << 2); /* ROUND 0, FTZ 0, FMAX_PIPE */
   assert_int_equal(info2 & 0xFFFF, bd->num_contexts);
-  assert_int_equal(info2 >> 16, 7); /* HAS_ADD, HAS_SUB, HAS_MUL */
+  /* HAS_ADD, HAS_SUB, HAS_MUL; HAS_DIV 0, HAS_SQRT 0, HAS_SIGN 1; DIV_LATENCY */
+  assert_int_equal((info2 >> 16) & 0x3F, 0x27);
+  assert_int_equal(info2 >> 22, FP3_DEFAULT_DIV_LATENCY);
   assert_int_equal(rd_ok(&b, FP3_HR_STATUS), 0);
   bus_close(&b);
 }

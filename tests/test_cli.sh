@@ -33,6 +33,13 @@ expect() {
 
 ISS=(run --engine iss)
 
+# ---- a program for a unit the hardware lacks: refused before running -------
+sed 's/mul  a, F, minv/div  a, F, minv/; s|"ship_scene.inc"|"'"$PWD"'/programs/ship_scene.inc"|' \
+  programs/ship_euler.s > "$T/div.s"
+expect 1 "the program uses div (pc 4), but this hardware has no divider (built with HAS_DIV=0)" \
+  -- run --program "$T/div.s" --integrator euler --steps 10
+expect 1 "fp3 run: $T/div.s: refused by the rtl engine" -- run --program "$T/div.s" --integrator euler --steps 10
+
 # ---- --help of every command ------------------------------------------------
 expect 0 "usage: fp3 COMMAND" -- --help
 expect 0 "usage: fp3 COMMAND" -- help
@@ -120,7 +127,7 @@ cat >"$T/fault.s" <<'EOF'
 .out v, r5
 .out s, r6
 b:      nop
-        .word 0x0900000000000000
+        .word 0x0F00000000000000
         endi b
 EOF
 expect 1 "FAIL: run error ILLEGAL_INSN" -- "${ISS[@]}" --program "$T/fault.s" --steps 3
@@ -144,8 +151,8 @@ expect 0 "" -- asm "$T/round.s" -o "$T/round.hex"
 if diff <(grep -v '^//' "$T/ship.hex" | cut -c1-16) <(grep -v '^//' "$T/round.hex" | cut -c1-16) >/dev/null; then ok
 else bad "disasm | asm does not give the same words"; fi
 # an image with unknown opcode bits and a nonzero unused field: listed, reported, exit 1
-printf '0900000000000000\n0100000000000001\n0700000000000000\n' > "$T/bad.hex"
-expect 1 "bad.hex: word 0 (0x0900000000000000): illegal instruction: unknown opcode" -- disasm "$T/bad.hex"
+printf '0F00000000000000\n0100000000000001\n0700000000000000\n' > "$T/bad.hex"
+expect 1 "bad.hex: word 0 (0x0f00000000000000): illegal instruction: unknown opcode" -- disasm "$T/bad.hex"
 expect 1 "word 1 (0x0100000000000001): illegal instruction: imm field" -- disasm "$T/bad.hex"
 # default output name
 cp programs/ship_rk4.s "$T/def.s"
@@ -279,23 +286,24 @@ EOF2
 
 # ---- fp3 configure: RTL parameters sized to the scene ------------------------------
 expect 0 "usage: fp3 configure" -- configure --help
-expect 0 "^NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1$" -- configure scenes/drift.scene
+expect 0 "^NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1$" -- configure scenes/drift.scene
 expect 0 "HAS_SUB=0 *the program has no sub" -- configure scenes/drift.scene
-expect 0 "^NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1$" -- configure scenes/harbour.scene
+expect 0 "^NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1$" -- configure scenes/harbour.scene
 expect 0 "^NUM_CONTEXTS=32 NUM_REGS=12 " -- configure scenes/harbour.scene --context-per-object
 expect 0 "^NUM_CONTEXTS=3 NUM_REGS=7 " -- configure scenes/harbour.scene --integrator euler
 expect 0 "ROUND=0 FTZ=1$" -- configure scenes/harbour.scene --error-budget 1e-9
 expect 0 "<- chosen" -- configure "$T/harbour.scene" --literal --steps 50
 out=$("$FP3" configure scenes/drift.scene -o "$T/drift.params" 2>/dev/null); rc=$?
 [ "$rc" -eq 0 ] && [ -z "$out" ] && [ "$(cat "$T/drift.params")" = \
-  "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1" ] \
+  "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1" ] \
   && ! ls "$T"/drift.params.tmp* >/dev/null 2>&1 && ok || bad "configure -o: rc $rc, '$out', $(cat "$T/drift.params")"
 json=$("$FP3" configure scenes/drift.scene --json 2>/dev/null)
 python3 - "$json" <<'EOF2' && ok || bad "configure --json: $json"
 import json, sys
 d = json.loads(sys.argv[1])
 assert d["params"] == {"NUM_CONTEXTS": 4, "NUM_REGS": 11, "HAS_ADD": 1, "HAS_SUB": 0,
-                       "HAS_MUL": 1, "ROUND": 1, "FTZ": 1}, d
+                       "HAS_MUL": 1, "HAS_DIV": 0, "HAS_SQRT": 0, "HAS_SIGN": 0,
+                       "ROUND": 1, "FTZ": 1}, d
 assert d["unit_pc"]["sub"] is None and d["chosen_mode"] == "RTZ+FTZ" and len(d["modes"]) == 4, d
 assert d["modes"][0]["allowed"] and d["modes"][0]["added_error"] == 0, d
 EOF2

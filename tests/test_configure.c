@@ -44,6 +44,7 @@ static fp3_config full_config(void) {
   c.num_regs = 32;
   c.imem_depth = 256;
   c.has_add = c.has_sub = c.has_mul = 1;
+  c.has_div = c.has_sqrt = c.has_sign = 1;
   return c;
 }
 
@@ -86,6 +87,28 @@ static void test_check_units(void **state) {
   assert_int_equal(fp3_config_check_program(&c, sub_only, 2, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "uses sub (pc 1)"));
   assert_non_null(strstr(msg, "HAS_ADD=0"));
+
+  /* div, sqrt and the sign group, each on its own parameter */
+  const uint64_t ext[] = {fp3_insn_make(FP3_OP_SQRT, 1, 2, 0, 0),
+                          fp3_insn_make(FP3_OP_MAX, 2, 1, 1, 0),
+                          fp3_insn_make(FP3_OP_DIV, 3, 2, 1, 0)};
+  c = full_config();
+  assert_int_equal(fp3_config_check_program(&c, ext, 3, msg, sizeof msg), 0);
+  c.has_div = 0;
+  assert_int_equal(fp3_config_check_program(&c, ext, 3, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses div (pc 2), but this hardware has no divider "
+                           "(built with HAS_DIV=0)");
+  assert_int_equal(fp3_config_check_program(&c, ext, 2, msg, sizeof msg), 0);
+  c = full_config();
+  c.has_sqrt = 0;
+  assert_int_equal(fp3_config_check_program(&c, ext, 3, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses sqrt (pc 0), but this hardware has no square root "
+                           "(built with HAS_SQRT=0)");
+  c = full_config();
+  c.has_sign = 0;
+  assert_int_equal(fp3_config_check_program(&c, ext, 3, msg, sizeof msg), -1);
+  assert_string_equal(msg, "the program uses max (pc 1), but this hardware has no sign group "
+                           "(built with HAS_SIGN=0)");
 }
 
 static void test_engine_load_refuses(void **state) {
@@ -130,10 +153,10 @@ static void test_derive_scenes(void **state) {
   static const struct {
     const char *path, *line;
   } cases[] = {
-      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=1 FTZ=1"},
-      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1"},
+      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
       {"scenes/harbour.scene",
-       "NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1"},
+       "NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
     fp3_scene sc;
@@ -183,7 +206,7 @@ static void test_derive_scenes(void **state) {
   /* euler: 6 instructions, 14 cycles: 3 contexts; 7 registers */
   o.integrator = "euler";
   r = configure(&sc, &o);
-  expect_line(&r, "NUM_CONTEXTS=3 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 ROUND=1 FTZ=1");
+  expect_line(&r, "NUM_CONTEXTS=3 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1");
 
   /* bad options and input */
   char msg[300];
@@ -256,6 +279,10 @@ static void test_sized_rtl(void **state) {
   assert_int_equal(e->config.has_sub, 0);
   assert_int_equal(e->config.has_sub, r.cfg.has_sub);
   assert_int_equal(e->config.has_mul, r.cfg.has_mul);
+  assert_int_equal(e->config.has_div, r.cfg.has_div);
+  assert_int_equal(e->config.has_sqrt, r.cfg.has_sqrt);
+  assert_int_equal(e->config.has_sign, 0);
+  assert_int_equal(e->config.has_sign, r.cfg.has_sign);
   assert_int_equal(e->config.mode.round, r.cfg.mode.round);
   assert_int_equal(e->config.mode.ftz, r.cfg.mode.ftz);
 

@@ -463,6 +463,30 @@ static void test_move_bypass(void **state) {
   capture_free(&b);
 }
 
+/* The sign group runs on the move path: each dependent link waits for the
+ * read stage only, as a mov; min of a signalling NaN raises invalid. */
+static void test_sign_chain(void **state) {
+  (void)state;
+  capture a, b;
+  run_both("li r1, -3.0\nabs r2, r1\nneg r3, r2\nmin r4, r3, r2\nmax r5, r4, r2\n"
+           "add r6, r5, r5\nhalt\n", 1, &a, &b);
+  assert_int_equal(a.st.stalls, START_STALLS + 5 * FP3_READ_CYCLES + SPACING_STALLS);
+  assert_int_equal(a.st.issued, 7);
+  assert_int_equal(a.final[4], fpref_bits(-3.0f));
+  assert_int_equal(a.final[5], fpref_bits(3.0f));
+  assert_int_equal(a.final[6], fpref_bits(6.0f));
+  assert_int_equal(a.st.flags, 0);
+  capture_free(&a);
+  capture_free(&b);
+  run_both("li r1, 0x7F800001\nmin r2, r1, r3\nneg r4, r1\nmax r5, r3, r4\nhalt\n", 1, &a, &b);
+  assert_int_equal(a.final[2], 0x7FC00001u);
+  assert_int_equal(a.final[4], 0xFF800001u);
+  assert_int_equal(a.final[5], 0xFFC00001u);
+  assert_int_equal(a.st.flags, FP3_FLAG_INVALID);
+  capture_free(&a);
+  capture_free(&b);
+}
+
 /* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 4,
  * MUL_LATENCY 3) keeps the dependent-issue distances of the default
  * pipeline (write-backs are announced earlier, for its pick, read and
@@ -556,7 +580,7 @@ static void test_errors_agree(void **state) {
   (void)state;
   capture a, b;
   fp3_image img;
-  assemble("li r1, 1.0\n.word 0x0900000000000000\nhalt\n", &img);
+  assemble("li r1, 1.0\n.word 0x0F00000000000000\nhalt\n", &img);
   run_on(rtl, &img, NULL, 0, 1, &a);
   run_on(iss, &img, NULL, 0, 1, &b);
   assert_int_equal(a.st.error, FP3_ERR_ILLEGAL_INSN);
@@ -608,8 +632,24 @@ static uint32_t random_value(void) {
   }
 }
 
-/* Hazard-dense: few registers, all units, a loop. */
-static void random_program(fp3_image *img, unsigned nregs) {
+/* One of the operations a build with configuration c has, for a random
+ * program's register-to-register slot: div, sqrt (HAS_DIV, HAS_SQRT) and
+ * abs, neg, min, max (HAS_SIGN) when built, else an add or a mul. */
+static uint64_t random_ext_op(const fp3_config *c, unsigned rd, unsigned ra, unsigned rb) {
+  switch (rnd() % 6) {
+    case 0: if (c->has_div) return fp3_insn_make(FP3_OP_DIV, rd, ra, rb, 0); break;
+    case 1: if (c->has_sqrt) return fp3_insn_make(FP3_OP_SQRT, rd, ra, 0, 0); break;
+    case 2: if (c->has_sign) return fp3_insn_make(FP3_OP_ABS, rd, ra, 0, 0); break;
+    case 3: if (c->has_sign) return fp3_insn_make(FP3_OP_NEG, rd, ra, 0, 0); break;
+    case 4: if (c->has_sign) return fp3_insn_make(FP3_OP_MIN, rd, ra, rb, 0); break;
+    default: if (c->has_sign) return fp3_insn_make(FP3_OP_MAX, rd, ra, rb, 0); break;
+  }
+  return fp3_insn_make(rnd() % 2 ? FP3_OP_ADD : FP3_OP_MUL, rd, ra, rb, 0);
+}
+
+/* Hazard-dense: few registers, all units of configuration c (every
+ * operation the build has), a loop. */
+static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) {
   fp3_image_init(img);
   size_t n = 0;
   img->words[n++] = fp3_insn_make(FP3_OP_LI, (unsigned)(rnd() % nregs), 0, 0, random_value());
@@ -621,7 +661,8 @@ static void random_program(fp3_image *img, unsigned nregs) {
     /* beq: ahead to any later word up to the endi (body + len); few
      * registers, copies and repeated constants make it taken often. */
     uint32_t target = (uint32_t)(n + 1 + rnd() % (body + len - n));
-    switch (rnd() % 9) {
+    switch (rnd() % 11) {
+      case 9: case 10: img->words[n++] = random_ext_op(c, rd, ra, rb); break;
       case 7: img->words[n++] = fp3_insn_make(FP3_OP_BEQ, 0, ra, rb, target); break;
       case 0: case 1: img->words[n++] = fp3_insn_make(FP3_OP_ADD, rd, ra, rb, 0); break;
       case 2: img->words[n++] = fp3_insn_make(FP3_OP_SUB, rd, ra, rb, 0); break;
@@ -657,7 +698,7 @@ static void test_random_programs(void **state) {
     if (p && p % 100000 == 0) print_message("%ld random programs\n", p);
     fp3_image img;
     unsigned nregs = 2 + (unsigned)(rnd() % 5);
-    random_program(&img, nregs);
+    random_program(&img, nregs, &er[mi]->config);
     uint32_t init[8];
     for (unsigned r = 0; r < 8; r++) init[r] = random_value();
     uint32_t steps = 1 + (uint32_t)(rnd() % 5);
@@ -686,7 +727,7 @@ static void test_random_words(void **state) {
     fp3_image_init(&img);
     uint64_t w = rnd();
     /* Bias towards known opcodes so legal words are exercised too. */
-    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 10) << FP3_OPC_LSB);
+    if (i % 2) w = (w & 0x00FFFFFFFFFFFFFFull) | ((uint64_t)(rnd() % 16) << FP3_OPC_LSB);
     /* ... and a beq sometimes to its legal target, the halt */
     if (i % 8 == 3) w = fp3_insn_make(FP3_OP_BEQ, 0, (unsigned)(rnd() % 4), (unsigned)(rnd() % 4), 1);
     if (i % 4 == 1) w &= 0xFF1F1F1F00000000ull | (rnd() & 0xFFFFFFFFull);
@@ -695,6 +736,18 @@ static void test_random_words(void **state) {
     img.n = 2;
     char why[128];
     int legal = fp3_insn_check_at(w, 0, rtl->config.num_regs, rtl->config.imem_depth, why, sizeof why) == 0;
+    if (fp3_config_check_program(&rtl->config, &w, 1, why, sizeof why) != 0) {
+      /* an opcode of a unit this build lacks (the host looks at the
+       * opcode only): the host refuses it, and past the host's check the
+       * RTL raises ILLEGAL_INSN on it, legal fields or not */
+      assert_int_equal(fp3_engine_load(rtl, img.words, img.n), -1);
+      assert_int_equal(rtl->ops->load_program(rtl, img.words, img.n), 0);
+      fp3_status st;
+      assert_int_equal(fp3_engine_run(rtl, 1, NULL, &st), 0);
+      assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
+      assert_int_equal(st.fault_pc, 0);
+      continue;
+    }
     capture a, b;
     run_on(rtl, &img, NULL, 0, 1, &a);
     run_on(iss, &img, NULL, 0, 1, &b);
@@ -705,6 +758,56 @@ static void test_random_words(void **state) {
     else assert_int_equal(a.st.error, FP3_ERR_ILLEGAL_INSN);
     capture_free(&a);
     capture_free(&b);
+  }
+}
+
+/* Every new operation on the default build: those it has run bit-exact
+ * against the ISS (a dependent chain through each); those it lacks are
+ * refused by the host, naming the parameter, and raise ILLEGAL_INSN at
+ * their pc when loaded past the host's check. */
+static void test_new_ops_or_refusal(void **state) {
+  (void)state;
+  static const struct {
+    const char *src, *mnem, *param;
+    unsigned has_off; /* offset of the fp3_config field */
+  } ops[] = {
+      {"li r1, 2.0\nli r2, 3.0\ndiv r3, r1, r2\nmul r4, r3, r2\nhalt\n", "div", "HAS_DIV",
+       offsetof(fp3_config, has_div)},
+      {"li r1, 2.0\nli r2, 3.0\nsqrt r3, r1\nmul r4, r3, r3\nhalt\n", "sqrt", "HAS_SQRT",
+       offsetof(fp3_config, has_sqrt)},
+      {"li r1, -2.0\nli r2, 3.0\nabs r3, r1\nmul r4, r3, r2\nhalt\n", "abs", "HAS_SIGN",
+       offsetof(fp3_config, has_sign)},
+      {"li r1, -2.0\nli r2, 3.0\nneg r3, r1\nmul r4, r3, r2\nhalt\n", "neg", "HAS_SIGN",
+       offsetof(fp3_config, has_sign)},
+      {"li r1, -2.0\nli r2, 3.0\nmin r3, r1, r2\nmul r4, r3, r2\nhalt\n", "min", "HAS_SIGN",
+       offsetof(fp3_config, has_sign)},
+      {"li r1, -2.0\nli r2, 3.0\nmax r3, r1, r2\nmul r4, r3, r2\nhalt\n", "max", "HAS_SIGN",
+       offsetof(fp3_config, has_sign)},
+  };
+  for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++) {
+    fp3_image img;
+    assemble(ops[i].src, &img);
+    const unsigned has = *(const unsigned *)((const char *)&rtl->config + ops[i].has_off);
+    if (has) {
+      capture a, b;
+      run_on(rtl, &img, NULL, 0, 1, &a);
+      run_on(iss, &img, NULL, 0, 1, &b);
+      compare_captures(&a, &b, ops[i].mnem);
+      capture_free(&a);
+      capture_free(&b);
+      continue;
+    }
+    assert_int_equal(fp3_engine_load(rtl, img.words, img.n), -1);
+    char want[128];
+    snprintf(want, sizeof want, "uses %s (pc 2)", ops[i].mnem);
+    if (!strstr(fp3_engine_error(rtl), want) || !strstr(fp3_engine_error(rtl), ops[i].param))
+      fail_msg("%s: refusal '%s' lacks '%s' or %s", ops[i].mnem, fp3_engine_error(rtl), want,
+               ops[i].param);
+    assert_int_equal(rtl->ops->load_program(rtl, img.words, img.n), 0);
+    fp3_status st;
+    assert_int_equal(fp3_engine_run(rtl, 1, NULL, &st), 0);
+    assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
+    assert_int_equal(st.fault_pc, 2);
   }
 }
 
@@ -871,7 +974,7 @@ static void test_random_programs_contexts(void **state) {
     for (int p = 0; p < 300; p++) {
       uint64_t seed = rng_state;
       fp3_image img;
-      random_program(&img, 2 + (unsigned)(rnd() % 5));
+      random_program(&img, 2 + (unsigned)(rnd() % 5), &er->config);
       memset(init, 0, sizeof init);
       for (unsigned k = 0; k < nctx; k++)
         for (unsigned r = 0; r < 8; r++) init[k][r] = random_value();
@@ -1016,7 +1119,7 @@ static void test_bad_contexts(void **state) {
 static void test_errors_every_context(void **state) {
   (void)state;
   fp3_image img;
-  assemble("beq r1, r2, ok\n.word 0x0900000000000000\nok: halt\n", &img);
+  assemble("beq r1, r2, ok\n.word 0x0F00000000000000\nok: halt\n", &img);
   static multi_capture ma, mb;
   static uint32_t init[FP3_MAX_CONTEXTS][MAX_REGS];
   fp3_engine *fmax = fp3_engine_rtl_new_model(&fp3_model_nc3, NULL);
@@ -1083,6 +1186,8 @@ int main(void) {
       cmocka_unit_test(test_errors_agree),
       cmocka_unit_test(test_random_programs),
       cmocka_unit_test(test_random_words),
+      cmocka_unit_test(test_sign_chain),
+      cmocka_unit_test(test_new_ops_or_refusal),
       cmocka_unit_test(test_many_ships),
       cmocka_unit_test(test_random_programs_contexts),
       cmocka_unit_test(test_bad_contexts),

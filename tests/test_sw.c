@@ -364,7 +364,7 @@ static void test_disasm_roundtrip(void **state) {
            "li r2, -0.0\n li r2, 1e-45\n li r2, 0x007FFFFF\n li r2, -inf\n"
            "li r2, 0.1\n li r2, 3.4028235e38\n li r2, 0.16666667\n"
            "top: mov r31, r0\n"
-           ".word 0x0900000000000000\n .word 0x0100000000000001\n"
+           ".word 0x0F00000000000000\n .word 0x0100000000000001\n"
            ".word 0x0120000000000000\n"
            "endi top\n .word 0x060000000000012C\n endi end\n nop\n halt\nend:\n",
            &img);
@@ -376,7 +376,7 @@ static void test_disasm_roundtrip(void **state) {
     uint64_t w = ((uint64_t)(unsigned)rand() << 33) ^ ((uint64_t)(unsigned)rand() << 11) ^
                  (uint64_t)(unsigned)rand();
     if (i % 2) { /* mostly legal */
-      w = W((unsigned)(rand() % 8), 0, 0, 0, 0);
+      w = W((unsigned)(rand() % 15), 0, 0, 0, 0);
       int uses = fp3_opc_uses(fp3_insn_opc(w));
       w = W(fp3_insn_opc(w), uses & FP3_USES_RD ? (unsigned)rand() % 32 : 0,
             uses & FP3_USES_RA ? (unsigned)rand() % 32 : 0,
@@ -406,8 +406,8 @@ static void test_disasm_word(void **state) {
   assert_string_equal(buf, "halt");
   fp3_disasm_word(W(FP3_OP_BEQ, 0, 5, 24, 9), buf, sizeof buf);
   assert_string_equal(buf, "beq r5, r24, 9");
-  fp3_disasm_word(0x0900000000000000ull, buf, sizeof buf);
-  assert_string_equal(buf, ".word 0x0900000000000000");
+  fp3_disasm_word(0x0F00000000000000ull, buf, sizeof buf);
+  assert_string_equal(buf, ".word 0x0F00000000000000");
   /* the whole image: labels, bindings, hex comments */
   fp3_image img;
   assemble(".in T, r1\nli r2, 2.0\nb: add r3, r1, r2\nendi b\n", &img);
@@ -442,7 +442,7 @@ static void test_insn_check(void **state) {
     uint64_t w;
     const char *why;
   } bad[] = {
-      {0x0900000000000000ull, "unknown opcode 0x09"},
+      {0x0F00000000000000ull, "unknown opcode 0x0f"},
       {0x0800010200000300ull, "beq target 768 outside the 256-entry"},
       {0x0801010200000003ull, "rd field is 1 but beq does not use it"},
       {0xFF00000000000000ull, "unknown opcode 0xff"},
@@ -478,7 +478,7 @@ static void test_insn_check(void **state) {
   assert_int_equal(fp3_opc_uses(code), uses);
   FP3_OPCODES(X)
 #undef X
-  assert_int_equal(fp3_opc_lookup("div"), -1);
+  assert_int_equal(fp3_opc_lookup("fma"), -1);
   assert_null(fp3_opc_mnemonic(0x42));
 }
 
@@ -486,9 +486,9 @@ static void test_image_validate(void **state) {
   (void)state;
   fp3_image img;
   char msg[256];
-  assemble("nop\nadd r1, r2, r3\n.word 0x0900000000000000\nnop\n", &img);
+  assemble("nop\nadd r1, r2, r3\n.word 0x0F00000000000000\nnop\n", &img);
   assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), -1);
-  assert_string_equal(msg, "word 2: unknown opcode 0x09");
+  assert_string_equal(msg, "word 2: unknown opcode 0x0f");
   img.words[2] = W(FP3_OP_NOP, 0, 0, 0, 0);
   assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), 0);
   img.words[3] = 0x0100000000000007ull;
@@ -745,6 +745,58 @@ static void test_iss_flags(void **state) {
   fp3_engine_free(e);
 }
 
+/* div, sqrt, abs, neg, min, max: bit-exact results and their flags. */
+static void test_iss_divsqrt_sign(void **state) {
+  (void)state;
+  fp3_image img;
+  fp3_status st;
+  assemble("li r1, 1.0\nli r2, 3.0\nli r3, -0.0\nli r4, 2.25\n"
+           "div r5, r1, r2\n"   /* 1/3: inexact */
+           "sqrt r6, r4\n"      /* 1.5: exact */
+           "sqrt r7, r3\n"      /* sqrt(-0) = -0 */
+           "abs r8, r3\n"       /* +0 */
+           "neg r9, r2\n"       /* -3 */
+           "min r10, r3, r8\n"  /* -0 < +0 */
+           "max r11, r8, r3\n"  /* +0 */
+           "min r12, r2, r1\n"  /* 1 */
+           "halt\n",
+           &img);
+  fp3_engine *e = run_iss(&img, 1, NULL, &st);
+  assert_int_equal(st.error, FP3_ERR_NONE);
+  assert_int_equal(reg_of(e, 5), fbits(1.0f / 3.0f));
+  assert_int_equal(reg_of(e, 6), fbits(1.5f));
+  assert_int_equal(reg_of(e, 7), 0x80000000u);
+  assert_int_equal(reg_of(e, 8), 0x00000000u);
+  assert_int_equal(reg_of(e, 9), fbits(-3.0f));
+  assert_int_equal(reg_of(e, 10), 0x80000000u);
+  assert_int_equal(reg_of(e, 11), 0x00000000u);
+  assert_int_equal(reg_of(e, 12), fbits(1.0f));
+  assert_int_equal(st.flags, FP3_FLAG_INEXACT);
+  assert_int_equal(st.unit_issued[FP3_UNIT_DIV], 3);
+  assert_int_equal(st.unit_issued[FP3_UNIT_MOV], 4 + 5);
+  fp3_engine_free(e);
+  /* x/0: divide by zero (INFINITE); sqrt(-1): invalid, the default NaN;
+   * min with a signalling NaN: invalid, the NaN quieted; abs of a
+   * signalling NaN: quiet, only the sign bit changes */
+  assemble("li r1, 1.0\nli r2, 0.0\nli r3, -1.0\nli r4, 0xFF800001\n"
+           "div r5, r1, r2\nsqrt r6, r3\nmin r7, r4, r1\nabs r8, r4\nhalt\n", &img);
+  e = run_iss(&img, 1, NULL, &st);
+  assert_int_equal(reg_of(e, 5), 0x7F800000u);
+  assert_int_equal(reg_of(e, 6), 0xFFC00000u);
+  assert_int_equal(reg_of(e, 7), 0xFFC00001u);
+  assert_int_equal(reg_of(e, 8), 0x7F800001u);
+  assert_int_equal(st.flags, FP3_FLAG_INFINITE | FP3_FLAG_INVALID);
+  fp3_engine_free(e);
+  /* the disassembler prints them back */
+  char buf[64];
+  fp3_disasm_word(W(FP3_OP_DIV, 1, 2, 3, 0), buf, sizeof buf);
+  assert_string_equal(buf, "div r1, r2, r3");
+  fp3_disasm_word(W(FP3_OP_SQRT, 4, 5, 0, 0), buf, sizeof buf);
+  assert_string_equal(buf, "sqrt r4, r5");
+  fp3_disasm_word(W(FP3_OP_MAX, 6, 7, 8, 0), buf, sizeof buf);
+  assert_string_equal(buf, "max r6, r7, r8");
+}
+
 static void test_iss_endi_loop(void **state) {
   (void)state;
   fp3_image img;
@@ -812,7 +864,7 @@ static void test_iss_errors(void **state) {
   fp3_status st;
   capture cap;
   /* illegal instruction: unknown opcode at pc 2 */
-  assemble("li r1, 1.0\nnop\n.word 0x0900000000000000\nhalt\n", &img);
+  assemble("li r1, 1.0\nnop\n.word 0x0F00000000000000\nhalt\n", &img);
   fp3_engine *e = run_iss(&img, 3, &cap, &st);
   assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
   assert_int_equal(st.fault_pc, 2);
@@ -1156,6 +1208,7 @@ int main(void) {
       cmocka_unit_test(test_hex_write_fails_cleanly),
       cmocka_unit_test(test_iss_opcodes),
       cmocka_unit_test(test_iss_flags),
+      cmocka_unit_test(test_iss_divsqrt_sign),
       cmocka_unit_test(test_iss_endi_loop),
       cmocka_unit_test(test_iss_halt),
       cmocka_unit_test(test_iss_errors),

@@ -28,8 +28,10 @@ static void usage(FILE *f) {
           "\n"
           "Derive the RTL parameters of a processor sized to the scene: compile the\n"
           "scene as fp3 run --scene does, then\n"
-          "  HAS_ADD, HAS_SUB, HAS_MUL  1 when the program has an add (or sub), a\n"
-          "                   sub, a mul (a missing unit is an illegal instruction)\n"
+          "  HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN  1 when the\n"
+          "                   program has an add (or sub), a sub, a mul, a div, a\n"
+          "                   sqrt, an abs/neg/min/max (a missing unit is an\n"
+          "                   illegal instruction)\n"
           "  NUM_REGS         the fewest registers the compiler fits the program\n"
           "                   into without losing a cycle (at least 4)\n"
           "  NUM_CONTEXTS     the fewest that keep the issue slot busy: ceil(cycles\n"
@@ -55,7 +57,8 @@ static void usage(FILE *f) {
           "  --json           the parameters and the reasons as JSON on stdout\n"
           "\n"
           "Output: one line of make variables, e.g.\n"
-          "  NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=0 FTZ=1\n"
+          "  NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0\n"
+          "  HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1\n"
           "and the reason for each parameter on standard error.  `make synth-scene\n"
           "SCENE=FILE` synthesizes the full and the sized build and compares.\n"
           "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget;\n"
@@ -63,7 +66,8 @@ static void usage(FILE *f) {
           fp3_compile_integrators());
 }
 
-static const char *const unit_name[3] = {"add", "sub", "mul"};
+static const char *const unit_name[FP3_CONFIGURE_UNITS] = {"add", "sub", "mul", "div", "sqrt",
+                                                             "abs/neg/min/max"};
 
 static void mode_name(fpref_mode m, char *buf, size_t n) {
   snprintf(buf, n, "%s%s", m.round == FPREF_RTZ ? "RTZ" : "RNE", m.ftz ? "+FTZ" : "");
@@ -82,11 +86,13 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
   printf(", \"make\": ");
   fp3_json_string(stdout, line);
   printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_REGS\": %u, \"HAS_ADD\": %u, "
-         "\"HAS_SUB\": %u, \"HAS_MUL\": %u, \"ROUND\": %d, \"FTZ\": %d}",
+         "\"HAS_SUB\": %u, \"HAS_MUL\": %u, \"HAS_DIV\": %u, \"HAS_SQRT\": %u, "
+         "\"HAS_SIGN\": %u, \"ROUND\": %d, \"FTZ\": %d}",
          r->cfg.num_contexts, r->cfg.num_regs, r->cfg.has_add, r->cfg.has_sub, r->cfg.has_mul,
+         r->cfg.has_div, r->cfg.has_sqrt, r->cfg.has_sign,
          r->cfg.mode.round == FPREF_RTZ, r->cfg.mode.ftz ? 1 : 0);
   printf(", \"unit_pc\": {");
-  for (int u = 0; u < 3; u++) {
+  for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) {
     printf("%s\"%s\": ", u ? ", " : "", unit_name[u]);
     if (r->unit_pc[u] >= 0) printf("%d", r->unit_pc[u]);
     else printf("null");
@@ -135,9 +141,11 @@ static void print_reasons(const char *scene, const char *integ, const fp3_config
   fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
                   "(it names %u; compiled for the default %u it names %u)\n",
           param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
-  const unsigned has[3] = {c->has_add, c->has_sub, c->has_mul};
-  const char *const param[3] = {"HAS_ADD", "HAS_SUB", "HAS_MUL"};
-  for (int u = 0; u < 3; u++) {
+  const unsigned has[FP3_CONFIGURE_UNITS] = {c->has_add, c->has_sub, c->has_mul,
+                                             c->has_div, c->has_sqrt, c->has_sign};
+  const char *const param[FP3_CONFIGURE_UNITS] = {"HAS_ADD", "HAS_SUB", "HAS_MUL",
+                                                  "HAS_DIV", "HAS_SQRT", "HAS_SIGN"};
+  for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) {
     if (r->unit_pc[u] >= 0)
       fprintf(stderr, "  %-16s the program has %s (first at pc %d)\n",
               param_text(param[u], has[u], p0, sizeof p0), unit_name[u], r->unit_pc[u]);

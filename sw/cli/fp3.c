@@ -764,6 +764,12 @@ static int cmd_run(int argc, char **argv) {
   fp3_status st;
   memset(&st, 0, sizeof st);
   int erc = fp3_engine_load(e, img.words, img.n);
+  if (erc != 0) { /* the program does not fit this build: name it */
+    fprintf(stderr, "fp3 run: %s: refused by the %s engine: %s\n", program, engine_name,
+            fp3_engine_error(e));
+    fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
+    goto out;
+  }
   for (int i = 0; i < FP3_IN_COUNT && erc == 0; i++)
     if (img.in_reg[i] >= 0)
       erc = fp3_engine_write_reg(e, (unsigned)img.in_reg[i],

@@ -28,8 +28,10 @@ void fp3_configure_defaults(fp3_configure_opts *o) {
 
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
   return snprintf(buf, n,
-                  "NUM_CONTEXTS=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u ROUND=%d FTZ=%d",
+                  "NUM_CONTEXTS=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u HAS_DIV=%u "
+                  "HAS_SQRT=%u HAS_SIGN=%u ROUND=%d FTZ=%d",
                   c->num_contexts, c->num_regs, c->has_add, c->has_sub, c->has_mul,
+                  c->has_div, c->has_sqrt, c->has_sign,
                   c->mode.round == FPREF_RTZ ? 1 : 0, c->mode.ftz ? 1 : 0);
 }
 
@@ -153,15 +155,27 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   r->regs_used = regs_named(img);
 
   /* units */
-  r->unit_pc[0] = r->unit_pc[1] = r->unit_pc[2] = -1;
+  for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) r->unit_pc[u] = -1;
   for (size_t pc = 0; pc < img->n; pc++) {
     const unsigned opc = fp3_insn_opc(img->words[pc]);
-    const int u = opc == FP3_OP_ADD ? 0 : opc == FP3_OP_SUB ? 1 : opc == FP3_OP_MUL ? 2 : -1;
+    int u = -1;
+    switch (opc) {
+    case FP3_OP_ADD: u = 0; break;
+    case FP3_OP_SUB: u = 1; break;
+    case FP3_OP_MUL: u = 2; break;
+    case FP3_OP_DIV: u = 3; break;
+    case FP3_OP_SQRT: u = 4; break;
+    case FP3_OP_ABS: case FP3_OP_NEG: case FP3_OP_MIN: case FP3_OP_MAX: u = 5; break;
+    }
     if (u >= 0 && r->unit_pc[u] < 0) r->unit_pc[u] = (int)pc;
   }
   r->cfg.has_add = r->unit_pc[0] >= 0 || r->unit_pc[1] >= 0;
   r->cfg.has_sub = r->unit_pc[1] >= 0;
   r->cfg.has_mul = r->unit_pc[2] >= 0;
+  r->cfg.has_div = r->unit_pc[3] >= 0;
+  r->cfg.has_sqrt = r->unit_pc[4] >= 0;
+  r->cfg.has_sign = r->unit_pc[5] >= 0;
+  r->cfg.div_latency = FP3_DEFAULT_DIV_LATENCY;
 
   r->objects = sc->n;
   /* contexts that keep the issue slot busy: one object's integration

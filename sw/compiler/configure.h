@@ -5,8 +5,9 @@
  * The scene is compiled as `fp3 run --scene` compiles it (compile.h), and
  * each parameter follows from the compiled program or the scene:
  *
- *  - HAS_ADD, HAS_SUB, HAS_MUL: 1 when the program has an add (or sub), a
- *    sub, a mul instruction (the prologue included);
+ *  - HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN: 1 when the
+ *    program has an add (or sub), a sub, a mul, a div, a sqrt, an abs, neg,
+ *    min or max instruction (the prologue included);
  *  - NUM_REGS: the fewest registers k (at least 4, the compiler's minimum)
  *    into which the compiler schedules the program without losing a cycle:
  *    its estimated cycles of the first and of each later integration of one
@@ -55,6 +56,11 @@
 #include "engine.h"
 #include "objects.h"
 
+/* The instruction groups a build may leave out, in the order of unit_pc:
+ * add (or sub), sub, mul, div, sqrt, the sign group (abs, neg, min, max);
+ * their parameters HAS_ADD .. HAS_SIGN. */
+#define FP3_CONFIGURE_UNITS 6
+
 /* The candidate FP core modes, in tie-break order. */
 #define FP3_CONFIGURE_MODES 4
 
@@ -77,7 +83,8 @@ typedef struct fp3_configure_result {
   fp3_config cfg;          /* the parameters; imem_depth and latencies at  */
                            /* their defaults                               */
   size_t objects;          /* objects in the scene                         */
-  int unit_pc[3];          /* first pc of an add, sub, mul; -1: none        */
+  int unit_pc[FP3_CONFIGURE_UNITS]; /* first pc of an add, sub, mul, div,  */
+                           /* sqrt, abs/neg/min/max; -1: none              */
   unsigned regs_default;   /* registers named (highest + 1) when compiled  */
                            /* for the default NUM_REGS                     */
   unsigned regs_used;      /* ... when compiled for cfg.num_regs           */
@@ -104,7 +111,8 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
                   fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n);
 
 /* The parameters as one line of make variables, no newline:
- * "NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 ROUND=0 FTZ=1".
+ * "NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0
+ * HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1".
  * Returns the length (as snprintf). */
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n);
 

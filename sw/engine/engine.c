@@ -30,6 +30,16 @@ int fp3_config_check_program(const fp3_config *c, const uint64_t *words, size_t 
     } else if (opc == FP3_OP_MUL && !c->has_mul) {
       missing = "no multiplier";
       param = "HAS_MUL";
+    } else if (opc == FP3_OP_DIV && !c->has_div) {
+      missing = "no divider";
+      param = "HAS_DIV";
+    } else if (opc == FP3_OP_SQRT && !c->has_sqrt) {
+      missing = "no square root";
+      param = "HAS_SQRT";
+    } else if ((opc == FP3_OP_ABS || opc == FP3_OP_NEG || opc == FP3_OP_MIN ||
+                opc == FP3_OP_MAX) && !c->has_sign) {
+      missing = "no sign group";
+      param = "HAS_SIGN";
     }
     if (missing) {
       snprintf(msg, len, "the program uses %s (pc %zu), but this hardware has %s "

@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "fp3_isa.h"
 #include "fpref.h"
 
 /* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
@@ -40,6 +41,11 @@ typedef struct fp3_config {
   unsigned has_add;     /* 1: an add/sub core (HAS_ADD); 0: add, sub illegal */
   unsigned has_sub;     /* 1: the adder subtracts (HAS_SUB); 0: sub illegal */
   unsigned has_mul;     /* 1: a mul core (HAS_MUL); 0: mul illegal        */
+  unsigned has_div;     /* 1: a divider (HAS_DIV); 0: div illegal         */
+  unsigned has_sqrt;    /* 1: a square root (HAS_SQRT); 0: sqrt illegal   */
+  unsigned has_sign;    /* 1: the sign group (HAS_SIGN); 0: abs, neg, min,
+                           max illegal                                    */
+  unsigned div_latency; /* div/sqrt unit, cycles (RTL only; INFO2)        */
   unsigned fmax_pipe;   /* 1: the pipeline for clock rate (FMAX_PIPE, RTL
                            only): same dependent-issue distances after an
                            add or mul of latency >=
@@ -51,9 +57,10 @@ typedef struct fp3_config {
                            reads of 4 cycles (fp3_isa.h)                  */
 } fp3_config;
 
-/* Check that a program only needs the units a build has: every add, sub
- * and mul in words[0..n) has its unit (has_add, has_sub, has_mul of c;
- * sub needs has_add and has_sub).  Register fields are not checked here:
+/* Check that a program only needs the units a build has: every add, sub,
+ * mul, div, sqrt, abs, neg, min and max in words[0..n) has its unit
+ * (has_add, has_sub, has_mul, has_div, has_sqrt, has_sign of c; sub needs
+ * has_add and has_sub; abs, neg, min, max need has_sign).  Register fields are not checked here:
  * an out-of-range one stays an illegal instruction of the run.  The RTL raises
  * ILLEGAL_INSN on an instruction for a missing unit; the host refuses
  * before running instead.  Returns 0, or -1 with the first offence in msg,
@@ -73,7 +80,7 @@ typedef struct fp3_status {
   uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
   uint64_t issued;       /* instructions issued                           */
   uint64_t stalls;       /* cycles an instruction waited on a hazard      */
-  uint64_t unit_issued[4]; /* instructions issued per unit, FP3_UNIT_*    */
+  uint64_t unit_issued[FP3_NUM_UNITS]; /* instructions issued per unit, FP3_UNIT_* */
 } fp3_status;
 
 /* Status of one context after a run. */

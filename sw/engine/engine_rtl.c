@@ -276,6 +276,10 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->base.config.has_add = (info2 >> 16) & 1;
   r->base.config.has_sub = (info2 >> 17) & 1;
   r->base.config.has_mul = (info2 >> 18) & 1;
+  r->base.config.has_div = (info2 >> 19) & 1;
+  r->base.config.has_sqrt = (info2 >> 20) & 1;
+  r->base.config.has_sign = (info2 >> 21) & 1;
+  r->base.config.div_latency = (info2 >> 22) & 0xFF;
   if (r->base.config.num_contexts > FP3_MAX_CONTEXTS) {
     fprintf(stderr, "fp3: the RTL model has %u contexts, more than %d\n",
             r->base.config.num_contexts, FP3_MAX_CONTEXTS);

@@ -2,10 +2,12 @@
  * iss.c -- the FP3 instruction-set simulator: the architectural model of
  * the processor, one instruction at a time, as an engine (engine.h).
  *
- * Registers hold binary32 bit patterns; add/sub/mul are fpref_add/sub/mul
- * in the engine's core configuration (default RNE with subnormals; RTZ and
- * FTZ as the RTL's ROUND and FTZ parameters), whose flags accumulate into
- * the run's sticky FLAGS.  There is no timing: every instruction
+ * Registers hold binary32 bit patterns; add/sub/mul/div/sqrt are
+ * fpref_add/sub/mul/div/sqrt in the engine's core configuration (default
+ * RNE with subnormals; RTZ and FTZ as the RTL's ROUND and FTZ parameters),
+ * abs/neg/min/max are fpref_abs/neg/min/max (exact, never flushed); their
+ * flags accumulate into the run's sticky FLAGS.  The ISS has every unit
+ * (HAS_DIV, HAS_SQRT, HAS_SIGN all 1).  There is no timing: every instruction
  * takes one "cycle", so cycles = issued = instructions executed and
  * stalls = 0.
  *
@@ -113,6 +115,12 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
     case FP3_OP_ADD: result = fpref_add(a, b, mode, flags); break;
     case FP3_OP_SUB: result = fpref_sub(a, b, mode, flags); break;
     case FP3_OP_MUL: result = fpref_mul(a, b, mode, flags); break;
+    case FP3_OP_DIV: result = fpref_div(a, b, mode, flags); break;
+    case FP3_OP_SQRT: result = fpref_sqrt(a, mode, flags); break;
+    case FP3_OP_ABS: result = fpref_abs(a); break;
+    case FP3_OP_NEG: result = fpref_neg(a); break;
+    case FP3_OP_MIN: result = fpref_min(a, b, flags); break;
+    case FP3_OP_MAX: result = fpref_max(a, b, flags); break;
     case FP3_OP_LI: result = imm; break;
     case FP3_OP_MOV: result = a; break;
     case FP3_OP_NOP: writes = 0; break;
@@ -203,6 +211,8 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   s->base.config.mul_latency = 0;
   s->base.config.mode = mode;
   s->base.config.has_add = s->base.config.has_sub = s->base.config.has_mul = 1; /* every unit */
+  s->base.config.has_div = s->base.config.has_sqrt = s->base.config.has_sign = 1;
+  s->base.config.div_latency = 0;
   return &s->base;
 }
 

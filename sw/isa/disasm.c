@@ -35,11 +35,17 @@ int fp3_disasm_word(uint64_t w, char *buf, size_t n) {
   case FP3_OP_ADD:
   case FP3_OP_SUB:
   case FP3_OP_MUL:
+  case FP3_OP_DIV:
+  case FP3_OP_MIN:
+  case FP3_OP_MAX:
     return snprintf(buf, n, "%s r%u, r%u, r%u", mn, rd, ra, rb);
   case FP3_OP_LI:
     format_imm(imm, lit, sizeof lit);
     return snprintf(buf, n, "%s r%u, %s", mn, rd, lit);
   case FP3_OP_MOV:
+  case FP3_OP_SQRT:
+  case FP3_OP_ABS:
+  case FP3_OP_NEG:
     return snprintf(buf, n, "%s r%u, r%u", mn, rd, ra);
   case FP3_OP_ENDI:
     return snprintf(buf, n, "%s %lu", mn, (unsigned long)imm);

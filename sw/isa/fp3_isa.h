@@ -43,7 +43,9 @@
 #define FP3_UNIT_NONE 0   /* no register result: nop, endi, halt          */
 #define FP3_UNIT_ADD  1   /* FP add/sub core, ADD_LATENCY cycles          */
 #define FP3_UNIT_MUL  2   /* FP mul core, MUL_LATENCY cycles              */
-#define FP3_UNIT_MOV  3   /* move/immediate path, latency 1               */
+#define FP3_UNIT_MOV  3   /* move/immediate path and sign group, latency 1 */
+#define FP3_UNIT_DIV  4   /* FP div/sqrt unit, DIV_LATENCY cycles          */
+#define FP3_NUM_UNITS 5   /* units counted per run (fp3_status.unit_issued) */
 
 /* Cycles from issue to the operands leaving the register file (the
  * block-RAM read stage).  A dependent instruction issues FP3_READ_CYCLES +
@@ -163,7 +165,19 @@
   X(HALT, 0x07, "halt", 0,                                                     \
     FP3_UNIT_NONE, "stop issuing; the run ends when results drain")         \
   X(BEQ,  0x08, "beq",  FP3_USES_RA | FP3_USES_RB | FP3_USES_IMM,              \
-    FP3_UNIT_NONE, "continue at imm (ahead) if ra, rb are bit-identical")
+    FP3_UNIT_NONE, "continue at imm (ahead) if ra, rb are bit-identical")     \
+  X(DIV,  0x09, "div",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_DIV,  "rd = ra / rb (binary32)")                                  \
+  X(SQRT, 0x0A, "sqrt", FP3_USES_RD | FP3_USES_RA,                             \
+    FP3_UNIT_DIV,  "rd = sqrt(ra) (binary32; sqrt(-0) = -0)")                  \
+  X(ABS,  0x0B, "abs",  FP3_USES_RD | FP3_USES_RA,                             \
+    FP3_UNIT_MOV,  "rd = ra with bit 31 cleared (quiet)")                      \
+  X(NEG,  0x0C, "neg",  FP3_USES_RD | FP3_USES_RA,                             \
+    FP3_UNIT_MOV,  "rd = ra with bit 31 flipped (quiet)")                      \
+  X(MIN,  0x0D, "min",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_MOV,  "rd = minimum(ra, rb), IEEE 754-2019 9.6 (-0 < +0)")        \
+  X(MAX,  0x0E, "max",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
+    FP3_UNIT_MOV,  "rd = maximum(ra, rb), IEEE 754-2019 9.6 (-0 < +0)")
 
 /*
  * Build configuration: X(NAME, default).  The RTL top takes these as
@@ -178,7 +192,21 @@
   X(MUL_LATENCY, 3)    /* mul core: operands to result, cycles         */      \
   X(HAS_ADD,     1)    /* 0: no add/sub core (add, sub are illegal)    */      \
   X(HAS_SUB,     1)    /* 0: the adder only adds (sub is illegal)      */      \
-  X(HAS_MUL,     1)    /* 0: no mul core (mul is illegal)              */
+  X(HAS_MUL,     1)    /* 0: no mul core (mul is illegal)              */      \
+  X(HAS_DIV,     0)    /* 1: a divider (else div is illegal)           */      \
+  X(HAS_SQRT,    0)    /* 1: a square root (else sqrt is illegal)      */      \
+  X(HAS_SIGN,    1)    /* 1: the sign group (else abs, neg, min, max   */      \
+                       /*    are illegal)                              */      \
+  X(DIV_LATENCY, 8)    /* div/sqrt unit: operands to result, cycles    */
+
+/* HAS_DIV, HAS_SQRT and HAS_SIGN: the ISS (iss.c) executes div, sqrt, abs,
+ * neg, min and max bit-exactly (fpref_div .. fpref_max).  The processor
+ * runs the sign group on its move path (rtl/fp3_arith.v, fp_sign; latency
+ * 1 like mov).  It has the div and sqrt cores (rtl/fp_div.v, fp_sqrt.v)
+ * but no issue path to them yet: it is built with HAS_DIV = HAS_SQRT = 0
+ * (it refuses 1 at elaboration) and reports them in INFO2, so the host
+ * refuses a program that uses div or sqrt before running it, naming the
+ * parameter (fp3_config_check_program). */
 
 /* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
  * 6-bit context numbers). */
@@ -227,7 +255,8 @@
                              "FAULT_PC and the register window")              \
   X(CONTEXTS,   0x010, "RW", "contexts a START runs, 1 .. NUM_CONTEXTS "       \
                              "(reset value 1)")                               \
-  X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18]") \
+  X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18], "  \
+                             "HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], DIV_LATENCY[29:22]") \
   X(REG_BASE,   0x100, "RW", "register r of context CTX at REG_BASE + r "     \
                              "(stopped only)")                                \
   X(IMEM_BASE,  0x800, "W",  "instruction i: low word at IMEM_BASE + 2i, "    \

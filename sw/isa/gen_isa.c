@@ -17,6 +17,7 @@ static const char *unit_name(int unit) {
     case FP3_UNIT_ADD: return "add";
     case FP3_UNIT_MUL: return "mul";
     case FP3_UNIT_MOV: return "move";
+    case FP3_UNIT_DIV: return "div/sqrt";
     default: return "—";
   }
 }
@@ -69,24 +70,30 @@ int main(int argc, char **argv) {
 
   printf("// Opcodes and the operand fields each one uses\n");
   printf("// (bit 0 rd, bit 1 ra, bit 2 rb, bit 3 imm; unused fields must be 0).\n");
-  printf("// Unit: 0 none, 1 add/sub core, 2 mul core, 3 move path.\n");
+  printf("// Unit: 0 none, 1 add/sub core, 2 mul core, 3 move path (and sign group),\n");
+  printf("// 4 div/sqrt unit.\n");
 #define X(name, code, mnem, uses, unit, desc)                                  \
   printf("localparam [7:0] OP_%-4s = 8'h%02X; localparam [3:0] OPUSES_%-4s = " \
-         "4'h%X; localparam [1:0] OPUNIT_%-4s = 2'd%d; // %s: %s\n",           \
+         "4'h%X; localparam [2:0] OPUNIT_%-4s = 3'd%d; // %s: %s\n",           \
          #name, code, #name, uses, #name, unit, mnem, desc);
   FP3_OPCODES(X)
 #undef X
-  printf("\n// Decode an opcode: {known, unit[1:0], uses[3:0]}; 0 for an unknown one.\n");
-  printf("function [6:0] isa_decode;\n  input [7:0] opc;\n  begin\n    case (opc)\n");
+  printf("\n// Decode an opcode: {known, unit[2:0], uses[3:0]}; 0 for an unknown one.\n");
+  printf("function [7:0] isa_decode;\n  input [7:0] opc;\n  begin\n    case (opc)\n");
 #define X(name, code, mnem, uses, unit, desc)                                  \
   printf("      OP_%-4s: isa_decode = {1'b1, OPUNIT_%-4s, OPUSES_%-4s};\n",    \
          #name, #name, #name);
   FP3_OPCODES(X)
 #undef X
-  printf("      default: isa_decode = 7'd0;\n    endcase\n  end\nendfunction\n");
+  printf("      default: isa_decode = 8'd0;\n    endcase\n  end\nendfunction\n");
+  /* The issue path's unit field (scheduler, trace port, arith) carries the
+   * units 0 .. 3 in 2 bits; the div/sqrt unit (decode value UNIT_DIV) has
+   * no write-back port in that field, so its instructions are refused
+   * where they are decoded (fp3_scheduler w_built). */
   printf("localparam [1:0] UNIT_NONE = 2'd%d, UNIT_ADD = 2'd%d, UNIT_MUL = 2'd%d, "
-         "UNIT_MOV = 2'd%d;\n\n",
+         "UNIT_MOV = 2'd%d;\n",
          FP3_UNIT_NONE, FP3_UNIT_ADD, FP3_UNIT_MUL, FP3_UNIT_MOV);
+  printf("localparam [2:0] UNIT_DIV = 3'd%d;\n\n", FP3_UNIT_DIV);
 
   printf("// Build configuration defaults\n");
 #define X(name, def) printf("localparam integer DEFAULT_%s = %d;\n", #name, def);

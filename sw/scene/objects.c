@@ -361,7 +361,7 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     res->cycles += st.cycles;
     res->issued += st.issued;
     res->stalls += st.stalls;
-    for (int u = 0; u < 4; u++) res->unit_issued[u] += st.unit_issued[u];
+    for (int u = 0; u < FP3_NUM_UNITS; u++) res->unit_issued[u] += st.unit_issued[u];
     res->flags |= st.flags;
 
     for (unsigned c = 0; c < k; c++) {

@@ -94,7 +94,7 @@ typedef struct fp3_objects_result {
   size_t batches;
   uint64_t cycles;         /* sum over batches                             */
   uint64_t issued, stalls;
-  uint64_t unit_issued[4]; /* per unit, FP3_UNIT_*                          */
+  uint64_t unit_issued[FP3_NUM_UNITS]; /* per unit, FP3_UNIT_*              */
   uint32_t flags;          /* sticky exception flags, all batches          */
   unsigned error;          /* first context error (enum fp3_error)         */
   size_t error_object;     /* ... of this object                           */
