@@ -7,7 +7,9 @@
 # PNR_JOBS placements run at a time (default: the CPUs, nproc); each is
 # single-threaded (--threads 1), so its result does not depend on the
 # machine.  A line per seed as it ends, then the table of all seeds, their
-# least, mean and greatest Fmax, and the best seed (ties: the lower seed).
+# least, median, mean and greatest Fmax, and the best seed (ties: the lower
+# seed); the median (of an even count, the mean of the middle two) also
+# alone in OUTDIR/fmax_median.txt.
 # Outputs in OUTDIR: seed-K/ per seed (pnr.sh's log, report,
 # configuration); pnr_seeds.csv (seed,fmax_mhz,levels,logic_ns,routing_ns,
 # from,to); pnr_summary.csv gets the best seed's row; NAME_ecp5.config is
@@ -68,6 +70,11 @@ tail -n +2 "$out/pnr_seeds.csv" | awk -F, -v n="$name" -v b="$best" '
   { s += $2; if (NR == 1 || $2 < lo) lo = $2; if (NR == 1 || $2 > hi) hi = $2 }
   END { printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
                n, NR, lo, s / NR, hi, b }'
+median=$(tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g |
+  awk '{ f[NR] = $1 } END { if (NR % 2) printf "%.1f", f[(NR + 1) / 2];
+                            else printf "%.1f", (f[NR / 2] + f[NR / 2 + 1]) / 2 }')
+echo "pnr-seeds: $name: median Fmax $median MHz"
+echo "$median" > "$out/fmax_median.txt"
 awk -F, '{ printf "  %-5s %-9s %-7s %-9s %-11s %s\n", $1, $2, $3, $4, $5, $6 " -> " $7 }' \
   "$out/pnr_seeds.csv" | cut -c1-150
 tail -1 "$out/seed-$best/pnr_summary.csv" >> "$out/pnr_summary.csv"
