@@ -371,7 +371,11 @@ module tb_fp3 #(
         if (cur[i2] !== want) begin
           mismatches = mismatches + 1;
           errors = errors + 1;
-          if (mismatches <= MAX_REPORT)
+          if (mismatches <= MAX_REPORT && NL == 1)
+            $display("MISMATCH: context %0d, integration %0d: %s = %h (%g), expected %h (%g)",
+                     c, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
+                     f32_real(want));
+          else if (mismatches <= MAX_REPORT)
             $display("MISMATCH: context %0d, lane %0d, integration %0d: %s = %h (%g), expected %h (%g)",
                      c, l, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
                      f32_real(want));
@@ -656,8 +660,12 @@ module tb_fp3 #(
           host_read(HR_REG_BASE + i[11:0], rd);
           if (rd !== expect_[i]) begin
             errors = errors + 1;
-            $display("ERROR: context %0d, lane %0d: r%0d = %h (%g) at the end, expected %h (%g)",
-                     c, l, i, rd, f32_real(rd), expect_[i], f32_real(expect_[i]));
+            if (NL == 1)
+              $display("ERROR: context %0d: r%0d = %h (%g) at the end, expected %h (%g)",
+                       c, i, rd, f32_real(rd), expect_[i], f32_real(expect_[i]));
+            else
+              $display("ERROR: context %0d, lane %0d: r%0d = %h (%g) at the end, expected %h (%g)",
+                       c, l, i, rd, f32_real(rd), expect_[i], f32_real(expect_[i]));
           end
         end
       end
