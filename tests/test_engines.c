@@ -324,8 +324,8 @@ static void test_ship_rk4_cycles(void **state) {
 /* A harbour frame by frame (frames.h): awake, sleeping in the program,
  * and sleeping with the host skipping objects at rest, with a wake; every
  * object equals the RK4 golden model after every frame in each. */
-static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
-                        uint32_t wake_frame, fp3_frames_result *res) {
+static void run_harbour_on(fp3_engine *e, const char *program, const fp3_integrator *ig,
+                           int rest_skip, uint32_t wake_frame, fp3_frames_result *res) {
   fp3_image img;
   char *errors = NULL, msg[256];
   fp3_image_init(&img);
@@ -333,11 +333,42 @@ static void run_harbour(const char *program, const fp3_integrator *ig, int rest_
   fp3_scene sc;
   assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &sc), 0);
   fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f, 0};
-  if (fp3_run_frames(rtl, &img, &sc, ig, rtl->config.mode, &o, res, msg, sizeof msg))
+  if (fp3_run_frames(e, &img, &sc, ig, e->config.mode, &o, res, msg, sizeof msg))
     fail_msg("%s", msg);
   fp3_scene_free(&sc);
   assert_int_equal(res->error, FP3_ERR_NONE);
   assert_int_equal(res->object_frames + res->skipped, 48 * 40);
+}
+
+static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
+                        uint32_t wake_frame, fp3_frames_result *res) {
+  run_harbour_on(rtl, program, ig, rest_skip, wake_frame, res);
+}
+
+/* fp3 frames on the lanes build (8 contexts x 4 lanes): the awake
+ * objects packed into 32 slots a batch; the sleeping program's beq is
+ * taken only where every lane of a context sleeps, and every object stays
+ * bit-exact with its golden model in every frame either way. */
+static void test_frames_lanes(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_l4, NULL);
+  assert_non_null(e);
+  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
+  fp3_frames_result awake, beq, rest;
+  run_harbour_on(e, "programs/ship_rk4.s", rk4, 0, 0, &awake);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 0, 0, &beq);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 1, 0, &rest);
+  assert_int_equal(awake.lanes, 4);
+  assert_int_equal(awake.contexts, 8);
+  assert_int_equal(awake.mismatches, 0);
+  assert_int_equal(beq.mismatches, 0);
+  assert_int_equal(rest.mismatches, 0);
+  assert_int_equal(awake.batches, 2 * 40);   /* 48 objects in slots of 32 */
+  assert_true(rest.issued < awake.issued && rest.skipped > 0);
+  print_message("harbour of 48 on 8 x 4 lanes, 40 frames: %.1f, %.1f, %.1f cycles per frame "
+                "(awake, beq, beq + rest)\n", awake.cycles / 40.0, beq.cycles / 40.0,
+                rest.cycles / 40.0);
+  fp3_engine_free(e);
 }
 
 static void test_frames_sleeping(void **state) {
@@ -1140,6 +1171,7 @@ int main(void) {
       cmocka_unit_test(test_ship_rk4_sleep),
       cmocka_unit_test(test_sleep_at_rest),
       cmocka_unit_test(test_frames_sleeping),
+      cmocka_unit_test(test_frames_lanes),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
       cmocka_unit_test(test_independent_ops_spacing),

@@ -31,7 +31,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "asm.h"
+#include "bench.h"
 #include "compile.h"
 #include "cpu_ship.h"
 #include "engine.h"
@@ -179,23 +179,12 @@ int main(int argc, char **argv) {
                 {"l8", &fp3_model_l8},  {"l16", &fp3_model_l16}, {"chip", &fp3_model_chip}};
   const size_t nbuilds = sizeof builds / sizeof builds[0];
   fp3_image lit;
-  char *errs = NULL;
-  fp3_image_init(&lit);
-  if (fp3_asm_file("programs/ship_rk4.s", &lit, &errs)) {
-    fprintf(stderr, "%s", errs ? errs : "assembly failed\n");
-    free(errs);
-    return 2;
-  }
   fp3_integ_golden rk4_store;
-  const fp3_golden_ref rk4 = fp3_golden_of_integrator(&rk4_store, fp3_integrator_find("rk4"));
-
+  fp3_golden_ref rk4;
+  if (fp3_bench_ship_rk4(&lit, &rk4_store, &rk4)) return 2;
   char tmp[4200];
-  snprintf(tmp, sizeof tmp, "%s.tmp", csv_path);
-  FILE *csv = fopen(tmp, "w");
-  if (!csv) {
-    perror(tmp);
-    return 1;
-  }
+  FILE *csv = fp3_bench_csv_open(csv_path, tmp, sizeof tmp);
+  if (!csv) return 1;
   fprintf(csv, "build,num_contexts,num_lanes,fmax_pipe,program,objects,steps,cycles,"
                "cycles_per_object_step,issued_per_object_step,ratio,host_object_steps_per_s,"
                "golden_mismatches\n");
@@ -261,11 +250,7 @@ int main(int argc, char **argv) {
     fp3_compiled_free(comp);
     fp3_engine_free(e);
   }
-  if (fclose(csv) || rename(tmp, csv_path)) {
-    perror(csv_path);
-    remove(tmp);
-    return 1;
-  }
+  if (fp3_bench_csv_close(csv, tmp, csv_path)) return 1;
   if (host_l1_64 > 0.0 && host_chip_256 > 0.0)
     printf("\nVerilated model speed on this host: the 8-context build, 64 ships: %.0f "
            "object-steps/s; the chip build, 256 ships: %.0f object-steps/s; ratio %.2f\n",
