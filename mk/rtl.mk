@@ -211,12 +211,22 @@ bench-parallel: $(BUILD)/bench_parallel
 # cpu_ship.c, the CPU reference, is built as the issue's comparison asks:
 # -O3 -march=native, no contraction into fused multiply-adds.
 CPU_SHIP_FLAGS := -O3 -march=native -ffp-contract=off
-RTL_CHIP_OBJS := $(foreach c,l4 $(RTL_CHIP_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+# BENCH_CHIP_MODELS: the lane builds bench_chip links (the chip's 24
+# lanes take an hour and more to Verilate and compile on two cores); the
+# others are reported as not linked.
+BENCH_CHIP_MODELS ?= l2 l4 l8 l16 fmax chip
+RTL_CHIP_OBJS := $(foreach c,$(BENCH_CHIP_MODELS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 $(BUILD)/bench/cpu_ship.o: sw/bench/cpu_ship.c sw/bench/cpu_ship.h sw/ref/golden.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(CWARN) $(CPU_SHIP_FLAGS) -DCPU_SHIP_FLAGS='"$(CPU_SHIP_FLAGS)"' -Isw/ref -c $< -o $@
-$(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw/libfp3.a $(RTL_DEPS) $(RTL_CHIP_OBJS)
-	$(CC) $(CFLAGS) -c $< -o $@.o
+BENCH_CHIP_STAMP = $(BUILD)/bench_chip.models.$(shell echo '$(BENCH_CHIP_MODELS)' | md5sum | cut -c1-8)
+$(BENCH_CHIP_STAMP):
+	@mkdir -p $(BUILD)
+	@rm -f $(BUILD)/bench_chip.models.*
+	@touch $@
+$(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw/libfp3.a $(RTL_DEPS) \
+                     $(RTL_CHIP_OBJS) $(BENCH_CHIP_STAMP)
+	$(CC) $(CFLAGS) $(SW_CPPFLAGS) -c $< -o $@.o
 	$(CXX) -o $@ $@.o $(BUILD)/bench/cpu_ship.o $(BUILD)/sw/libfp3.a $(RTL_OBJS) $(RTL_CHIP_OBJS) \
 	  $(LDLIBS_SW) $(VERILATOR_LDLIBS)
 
@@ -224,7 +234,7 @@ $(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw
 # CHIP=ecp5-85 PNR_SEEDS=... has measured it (else cycles only).
 CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/pnr/chip_fmax_median.txt)
 .PHONY: bench-chip
-## bench-chip: lanes 1-16 and the chip build: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run
+## bench-chip: lanes 1-16 and the chip build: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
 bench-chip: $(BUILD)/bench_chip
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX))
