@@ -271,7 +271,8 @@ static void test_id_info(void **state) {
   assert_int_equal((info1 >> 8) & 0xFF, bd->mul_latency);
   assert_int_equal(info1 >> 16, bd->fmax_pipe << 2); /* ROUND 0, FTZ 0, FMAX_PIPE */
   assert_int_equal(info2 & 0xFFFF, bd->num_contexts);
-  assert_int_equal(info2 >> 16, 7); /* HAS_ADD, HAS_SUB, HAS_MUL */
+  assert_int_equal((info2 >> 16) & 0xFF, 7); /* HAS_ADD, HAS_SUB, HAS_MUL */
+  assert_int_equal(info2 >> 24, 1);          /* NUM_LANES */
   assert_int_equal(rd_ok(&b, FP3_HR_STATUS), 0);
   bus_close(&b);
 }

@@ -273,7 +273,8 @@ static void test_sized_rtl(void **state) {
                       sizeof msg))
     fail_msg("%s", msg);
   assert_int_equal(res.objects, 8);
-  assert_int_equal(res.batches, 2);
+  assert_int_equal(res.batches, 1);   /* 4 contexts x 2 lanes: all 8 at once */
+  assert_int_equal(res.lanes, 2);
   assert_int_equal(res.error, FP3_ERR_NONE);
   assert_int_equal(res.mismatches, 0);
   fp3_objects_result_free(&res);

@@ -42,7 +42,7 @@
 #include "../sim/fp3_model.h"
 
 /* The lane builds are linked as make bench-chip's BENCH_CHIP_MODELS say
- * (a 24-lane model takes long to Verilate and compile): weak, a build not
+ * (a model of many lanes takes long to Verilate and compile): weak, a build not
  * linked is reported and skipped. */
 extern const fp3_model_ops fp3_model_l2 __attribute__((weak)),
     fp3_model_l4 __attribute__((weak)), fp3_model_l8 __attribute__((weak)),

@@ -60,9 +60,10 @@
 #include "engine.h"
 #include "objects.h"
 
-/* Default upper bound of the derived NUM_LANES: 16 lanes beside up to 8
- * contexts fit the LFE5U-85F (64 of its 156 MULT18X18D, 96 of its 208
- * EBR; docs/lanes.md). */
+/* Default upper bound of the derived NUM_LANES, a bound on the hardware
+ * a scene may ask for (16 lanes: 16 adders, multipliers and register
+ * banks of 6 EBR); the LFE5U-85F holds about 8 lanes of the build for
+ * clock rate (docs/lanes.md "Chip build"). */
 #define FP3_CONFIGURE_MAX_LANES 16
 
 /* The candidate FP core modes, in tie-break order. */
