@@ -24,8 +24,13 @@ using model = vmodel<VTOP>;
 model *of(fp3_model *m) { return reinterpret_cast<model *>(m); }
 
 // A write-back port's data, lane l in bits [32l +: 32] (fp3_top trace
-// port), into dst[0 .. lanes-1]: one lane is a 32-bit port, more a wide one.
+// port), into dst[0 .. lanes-1]: Verilator gives one lane as a 32-bit
+// IData, two as a 64-bit QData, more as a VlWide of 32-bit words.
 void lanes_out(uint32_t *dst, IData v) { dst[0] = v; }
+void lanes_out(uint32_t *dst, QData v) {
+  dst[0] = static_cast<uint32_t>(v);
+  dst[1] = static_cast<uint32_t>(v >> 32);
+}
 template <std::size_t N>
 void lanes_out(uint32_t *dst, const VlWide<N> &v) {
   static_assert(N <= FP3_MODEL_MAX_LANES, "more lanes than fp3_model_out holds");
