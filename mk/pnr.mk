@@ -16,7 +16,7 @@
 # JSON reports, the ECP5 text configuration and the iCE40 .asc.
 # Not part of `make test`: the processor's place and route takes minutes.
 #
-#   make pnr [PNR_PARAMS="NUM_CONTEXTS=2 ADD_LATENCY=6"] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
+#   make pnr [PNR_PARAMS="NUM_CONTEXTS=2 ADD_LATENCY=6" | CHIP=ecp5-85] [PNR_SEED=n] [PNR_ECP5_PACKAGE=CABGA756]
 #            [PNR_SEEDS="1 2 3 4" [PNR_JOBS=n]: the ECP5 placed once per seed,
 #             PNR_JOBS at a time (scripts/pnr-seeds.sh): each seed's Fmax,
 #             their least, mean and greatest, the best placement kept]
@@ -25,6 +25,15 @@
 PNR_DIR         := $(BUILD)/pnr
 PNR_SYNTH_DIR   := $(BUILD)/synth
 PNR_PARAMS      ?=
+# CHIP=ecp5-85: the chip build, lanes that fill the LFE5U-85F
+# (CHIP_PARAMS of mk/rtl.mk, docs/lanes.md); its seeds' median Fmax goes
+# to $(PNR_DIR)/chip_fmax_median.txt for make bench-chip.
+CHIP            ?=
+ifeq ($(CHIP),ecp5-85)
+PNR_PARAMS      := $(CHIP_PARAMS)
+else ifneq ($(CHIP),)
+$(error CHIP=$(CHIP): the chip builds are: ecp5-85)
+endif
 # scripts/synth.sh names a netlist TOP_NAME-VALUE..._FLOW
 PNR_EMPTY       :=
 PNR_SPACE       := $(PNR_EMPTY) $(PNR_EMPTY)
@@ -55,6 +64,7 @@ pnr: pnr-tools $(PNR_ECP5_BASE).json \
 	@echo "name,device,luts,ffs,dsps,brams,fmax_mhz,target_mhz,levels,logic_ns,routing_ns,from,to" \
 	  > $(PNR_DIR)/pnr_summary.csv
 	@$(if $(strip $(PNR_SEEDS)),bash scripts/pnr-seeds.sh fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR) $(PNR_SEEDS),bash scripts/pnr.sh ecp5 fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR))
+	@$(if $(and $(CHIP),$(strip $(PNR_SEEDS))),cp $(PNR_DIR)/fmax_median.txt $(PNR_DIR)/chip_fmax_median.txt)
 	@set -- $$(bash scripts/synth-report.sh --fields --module fp3_top \
 	    $(PNR_ECP5_BASE)_stat.txt); l=$$1; f=$$2; \
 	  echo "pnr: fp3_top ($(PNR_PARAMS)) on iCE40: $$l LUT4s and $$f flip-flops (ECP5 netlist) against" \

@@ -1,22 +1,22 @@
 # rtl.mk -- the Verilated processor model, lint and synthesis.
 #
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
-# models of all four FP core configurations) and RTL_DEPS.  NUM_REGS,
-# IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
-# HAS_SQRT, HAS_SIGN, DIV_LATENCY and
-# FMAX_PIPE on the make command line override the defaults of sw/isa/fp3_isa.h
+# models of all four FP core configurations) and RTL_DEPS.  NUM_CONTEXTS,
+# NUM_LANES, NUM_REGS, IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD,
+# HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY and FMAX_PIPE
+# on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE,\
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE,\
                   $(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
-# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [HAS_DIV HAS_SQRT
-# HAS_SIGN]]]]].  The test
+# MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [NUM_LANES [HAS_DIV
+# HAS_SQRT HAS_SIGN]]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
 # (shortest add; FMAX_PIPE, the build for clock rate, with the shortest
 # latencies it takes, whose write-back tag lines are too short for the full
@@ -28,27 +28,47 @@ RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
 RTL_CFG_nc1     := 0 0 1 1 2
 RTL_CFG_nc3     := 0 0 3 4 3 32 1 1 1 1
-RTL_TEST_CONFIGS := nc1 nc3
+# ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
+RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
+RTL_TEST_CONFIGS := nc1 nc3 l4
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
 RTL_CFG_nc32    := 0 0 32
 RTL_CFG_nc64    := 0 0 64
 RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # ... and one build sized to a scene (tests/test_configure.c):
-# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL, 10 FMAX_PIPE, 11-13
-# HAS_DIV HAS_SQRT HAS_SIGN.  `build/fp3 configure scenes/drift.scene`
+# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL, 10 FMAX_PIPE, 11 NUM_LANES,
+# 12-14 HAS_DIV HAS_SQRT HAS_SIGN.  `build/fp3 configure scenes/drift.scene`
 # derives exactly these parameters (the test checks it).
-RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1 0 0 0 0
+RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1 0 2 0 0 0
 RTL_SCENE_CONFIGS := drift
 # ... and the build for clock rate (docs/fpga.md), the processor inside the
 # AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which
 # tests/test_axil.c compares with it.
 RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
 RTL_AXIL_CONFIGS := fmax
+# ... and the lanes benchmark (make bench-chip, docs/lanes.md): 8 contexts
+# of 2, 8 and 16 lanes (1 and 4: rne, l4), and the chip build, the build
+# for clock rate with CHIP_LANES lanes sized to the LFE5U-85F (mk/pnr.mk
+# CHIP=ecp5-85 places the same parameters).  The limit is LUT4s: the
+# build for clock rate's multiplier is built of LUTs (no MULT18X18D), and
+# one lane alone synthesizes to 7,223 LUT4 + 439 CCU2C, 4,569 flip-flops
+# and 6 EBR (scripts/synth.sh fp3_lane ecp5, its busy flags and live
+# value table included, which the chip's lanes 1 .. 7 share with lane 0),
+# beside the one-lane processor's 12,433 LUT4: 8 lanes are at most about
+# 83 % of the 83,640 LUT4s (docs/lanes.md "Chip build").
+CHIP_CONTEXTS   := 8
+CHIP_LANES      := 8
+CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=10 FMAX_PIPE=1
+RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
+RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
+RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
+RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 10 32 1 1 1 1 $(CHIP_LANES)
+RTL_CHIP_CONFIGS := l2 l8 l16 chip
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
 RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE \
-                  HAS_DIV HAS_SQRT HAS_SIGN
+                  NUM_LANES HAS_DIV HAS_SQRT HAS_SIGN
 rtl_gparams = $(join $(patsubst %,-G%=,$(wordlist 1,$(words $(RTL_CFG_$(1))),$(RTL_CFG_PARAMS))),$(RTL_CFG_$(1)))
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
@@ -87,7 +107,7 @@ $(call rtl_shim,$(1)): sim/fp3_shim.cpp sim/fp3_model.h sim/vmodel.h $(call rtl_
 	$(CXX) $(VERILATOR_CXXFLAGS) -Isim -I$(call rtl_objdir,$(1)) -DFP3_CFG=$(1) -c $$< -o $$@
 endef
 $(foreach c,$(RTL_CONFIGS) $(RTL_TEST_CONFIGS) $(RTL_BENCH_CONFIGS) $(RTL_SCENE_CONFIGS) \
-                  $(RTL_AXIL_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
+                  $(RTL_AXIL_CONFIGS) $(RTL_CHIP_CONFIGS),$(eval $(call RTL_MODEL_RULES,$(c))))
 RTL_TEST_OBJS := $(foreach c,$(RTL_TEST_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 # rtl/fp3_isa.vh and the tables of docs/isa.md are generated from
@@ -199,3 +219,35 @@ $(BUILD)/bench_parallel: sw/bench/bench_parallel.c $(BUILD)/sw/libfp3.a $(RTL_DE
 bench-parallel: $(BUILD)/bench_parallel
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/bench_parallel --steps 200 --csv $(BUILD)/bench/parallel.csv
+
+# ---- lanes against the CPU (make bench-chip) ----------------------------------
+# cpu_ship.c, the CPU reference, is built as the issue's comparison asks:
+# -O3 -march=native, no contraction into fused multiply-adds.
+CPU_SHIP_FLAGS := -O3 -march=native -ffp-contract=off
+# BENCH_CHIP_MODELS: the lane builds bench_chip links (the chip's 24
+# lanes take an hour and more to Verilate and compile on two cores); the
+# others are reported as not linked.
+BENCH_CHIP_MODELS ?= l2 l4 l8 l16 fmax chip
+RTL_CHIP_OBJS := $(foreach c,$(BENCH_CHIP_MODELS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+$(BUILD)/bench/cpu_ship.o: sw/bench/cpu_ship.c sw/bench/cpu_ship.h sw/ref/golden.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(CWARN) $(CPU_SHIP_FLAGS) -DCPU_SHIP_FLAGS='"$(CPU_SHIP_FLAGS)"' -Isw/ref -c $< -o $@
+BENCH_CHIP_STAMP = $(BUILD)/bench_chip.models.$(shell echo '$(BENCH_CHIP_MODELS)' | md5sum | cut -c1-8)
+$(BENCH_CHIP_STAMP):
+	@mkdir -p $(BUILD)
+	@rm -f $(BUILD)/bench_chip.models.*
+	@touch $@
+$(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw/libfp3.a $(RTL_DEPS) \
+                     $(RTL_CHIP_OBJS) $(BENCH_CHIP_STAMP)
+	$(CC) $(CFLAGS) $(SW_CPPFLAGS) -c $< -o $@.o
+	$(CXX) -o $@ $@.o $(BUILD)/bench/cpu_ship.o $(BUILD)/sw/libfp3.a $(RTL_OBJS) $(RTL_CHIP_OBJS) \
+	  $(LDLIBS_SW) $(VERILATOR_LDLIBS)
+
+# The chip build's median Fmax over the placement seeds, when make pnr
+# CHIP=ecp5-85 PNR_SEEDS=... has measured it (else cycles only).
+CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/pnr/chip_fmax_median.txt)
+.PHONY: bench-chip
+## bench-chip: lanes 1-16 and the chip build: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
+bench-chip: $(BUILD)/bench_chip
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX))

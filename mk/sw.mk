@@ -12,7 +12,8 @@
 # mk/fpu.mk (RTL_OBJS/RTL_LIBS, FPU_OBJS/FPU_LIBS), with $(CXX) since they
 # are C++.
 
-SW_MAINS     := sw/cli/fp3.c sw/isa/gen_isa.c sw/bench/bench_parallel.c
+SW_MAINS     := sw/cli/fp3.c sw/isa/gen_isa.c sw/bench/bench_parallel.c sw/bench/bench_chip.c \
+                sw/bench/cpu_ship.c
 SW_LIB_SRCS  := $(filter-out $(SW_MAINS),$(wildcard sw/*/*.c))
 SW_LIB_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw/%.o,$(SW_LIB_SRCS))
 SW_SAN_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw-san/%.o,$(SW_LIB_SRCS))

@@ -11,7 +11,8 @@
 #    $(WAVE_DIR); an assembler error stops make here.
 # 2. iverilog -g2005 compiles the testbench and the modules it needs from
 #    rtl/ (a library directory, -y), with the model parameters
-#    NUM_CONTEXTS NUM_REGS ... FTZ HAS_ADD HAS_SUB HAS_MUL of mk/rtl.mk when given.
+#    NUM_CONTEXTS NUM_LANES NUM_REGS ... FTZ HAS_ADD HAS_SUB HAS_MUL of mk/rtl.mk when given
+#    (with NUM_LANES every lane runs the scene and is checked).
 # 3. vvp runs it: PASS or FAIL, the watchdog ends a hung run; make fails
 #    unless the last word is PASS.  The waveform is $(WAVE_DIR)/fp3.vcd
 #    (or .fst): gtkwave $(WAVE_DIR)/fp3.vcd sim/fp3.gtkw
@@ -27,7 +28,7 @@ IVERILOG     ?= iverilog
 VVP          ?= vvp
 WAVE_PROGRAM  = $(or $(PROGRAM),programs/ship_rk4.s)
 WAVE_STEPS    = $(or $(STEPS),10)
-WAVE_PARAMS  := $(foreach p,NUM_CONTEXTS NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
+WAVE_PARAMS  := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
                   $(if $($(p)),-Ptb_fp3.$(p)=$($(p))))
 # Every module gets 1 ns units (neither the RTL nor the testbench has a
 # `timescale); Icarus takes that from a command file.

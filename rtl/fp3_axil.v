@@ -25,9 +25,10 @@
 // with no effect on the core for
 //   - a write to an unmapped or read-only address (STATUS .. ID, INFO2, a
 //     register or instruction index beyond NUM_REGS / IMEM_DEPTH);
-//   - a write to STEPS, CONTEXTS, CTX, the register window or the program
-//     window while a run is in progress (the core ignores those), and a
-//     write of a context number >= NUM_CONTEXTS to CTX (ignored too);
+//   - a write to STEPS, CONTEXTS, CTX, LANE, the register window or the
+//     program window while a run is in progress (the core ignores those),
+//     a write of a context number >= NUM_CONTEXTS to CTX and one of a lane
+//     number >= NUM_LANES to LANE (ignored too);
 //   - a write whose WSTRB is not 4'b1111 (the host port has no byte lanes);
 //   - a read of an unmapped address, of the write-only CTRL register or of
 //     the program window (the core has no read path there); RDATA is 0.
@@ -40,6 +41,7 @@
 // Parameters
 //   ADDR_WIDTH   AXI address bits, at least 14 (12-bit word address x 4)
 //   NUM_CONTEXTS contexts of fp3_top, 1..64
+//   NUM_LANES    lanes per context of fp3_top, 1..64
 //   NUM_REGS     registers per context of fp3_top, 2..256
 //   IMEM_DEPTH   instruction memory entries of fp3_top, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles
@@ -56,6 +58,7 @@
 module fp3_axil #(
   parameter integer ADDR_WIDTH   = 14,
   parameter integer NUM_CONTEXTS = 8,
+  parameter integer NUM_LANES    = 1,
   parameter integer NUM_REGS     = 32,
   parameter integer IMEM_DEPTH   = 256,
   parameter integer ADD_LATENCY  = 4,
@@ -156,7 +159,7 @@ module fp3_axil #(
         HR_STATUS, HR_STEPS, HR_STEPS_DONE, HR_FAULT_PC, HR_FLAGS,
         HR_CYCLES_LO, HR_CYCLES_HI, HR_ISSUED_LO, HR_ISSUED_HI,
         HR_STALLS_LO, HR_STALLS_HI, HR_INFO0, HR_INFO1, HR_ID,
-        HR_CTX, HR_CONTEXTS, HR_INFO2: reg_readable = 1'b1;
+        HR_CTX, HR_CONTEXTS, HR_INFO2, HR_LANE: reg_readable = 1'b1;
         default:                       reg_readable = reg_win;
       endcase
     end
@@ -174,26 +177,28 @@ module fp3_axil #(
   // The register or window the address names (fp3_host_dec), decoded
   // once, as it is captured: for these checks and, held with the word,
   // for the core's write (fp3_top HOST_WSEL).
-  wire [6:0] aw_wsel;
+  wire [7:0] aw_wsel;
   wire       aw_imem_ok;   // its program index is below IMEM_DEPTH
   fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_aw_dec (
     .addr_i    (aw_in),
     .wsel_o    (aw_wsel),
     .imem_ok_o (aw_imem_ok)
   );
-  reg [6:0] wa_wsel_q;  // aw_wsel of the held address: bit 0 CTRL, bit 3 CTX
-  reg wa_stop_q;    // ... a register written only while stopped (not CTX)
+  reg [7:0] wa_wsel_q;  // aw_wsel of the held address: bit 0 CTRL, 3 CTX, 7 LANE
+  reg wa_stop_q;    // ... a register written only while stopped (not CTX, LANE)
   reg wd_ctx_q;     // the data name a context (for CTX)
+  reg wd_lane_q;    // the data name a lane (for LANE)
   wire wr_ok = w_all_q &&
-               (wa_wsel_q[0] || (!running && (wa_stop_q || (wa_wsel_q[3] && wd_ctx_q))));
-  wire [6:0] ar_wsel;      // the read's address, decoded (its register window)
+               (wa_wsel_q[0] || (!running && (wa_stop_q || (wa_wsel_q[3] && wd_ctx_q) ||
+                                              (wa_wsel_q[7] && wd_lane_q))));
+  wire [7:0] ar_wsel;      // the read's address, decoded (its register window)
   wire       ar_imem_ok;
   fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_ar_dec (
     .addr_i    (ar_addr_q),
     .wsel_o    (ar_wsel),
     .imem_ok_o (ar_imem_ok)
   );
-  wire unused_ar_dec = &{1'b0, ar_wsel[6:5], ar_wsel[3:0], ar_imem_ok};
+  wire unused_ar_dec = &{1'b0, ar_wsel[7:5], ar_wsel[3:0], ar_imem_ok};
   wire rd_ok = reg_readable(ar_addr_q, ar_wsel[4]);
 
   // ---- host-port arbitration -----------------------------------------------
@@ -213,8 +218,8 @@ module fp3_axil #(
   wire               host_we;
   wire [WA_BITS-1:0] host_addr;
   wire [31:0]        host_wdata;
-  wire [6:0]         host_wsel;
-  fp_pipe #(.WIDTH(WA_BITS + 32 + 7), .DEPTH(FMAX_PIPE != 0 ? 1 : 0)) u_host_in (
+  wire [7:0]         host_wsel;
+  fp_pipe #(.WIDTH(WA_BITS + 32 + 8), .DEPTH(FMAX_PIPE != 0 ? 1 : 0)) u_host_in (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (host_we_c),
@@ -304,7 +309,8 @@ module fp3_axil #(
       wa_stop_q <= aw_wsel[1] || aw_wsel[2] || aw_wsel[4] || aw_wsel[6] ||
                    (aw_wsel[5] && aw_imem_ok);
     end
-    if (w_take) wd_ctx_q <= s_axil_wdata_i < NUM_CONTEXTS;
+    if (w_take) wd_ctx_q  <= s_axil_wdata_i < NUM_CONTEXTS;
+    if (w_take) wd_lane_q <= s_axil_wdata_i < NUM_LANES;
     b_resp_q  <= b_resp_d;
     ar_addr_q <= ar_addr_d;
     rd_err_q  <= rd_err_d;
@@ -317,10 +323,11 @@ module fp3_axil #(
   wire [1:0] tr_issue_unit;
   wire [5:0] tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx;
   wire [7:0] tr_add_reg, tr_mul_reg, tr_mov_reg;
-  wire [31:0] tr_add_data, tr_mul_data, tr_mov_data;
+  wire [32*NUM_LANES-1:0] tr_add_data, tr_mul_data, tr_mov_data;
 
   fp3_top #(
     .NUM_CONTEXTS (NUM_CONTEXTS),
+    .NUM_LANES    (NUM_LANES),
     .NUM_REGS     (NUM_REGS),
     .IMEM_DEPTH   (IMEM_DEPTH),
     .ADD_LATENCY  (ADD_LATENCY),
@@ -335,7 +342,7 @@ module fp3_axil #(
     .HAS_SIGN     (HAS_SIGN),
     .DIV_LATENCY  (DIV_LATENCY),
     .FMAX_PIPE    (FMAX_PIPE),
-    .CTX_CHECKED  (1),              // wr_ok: wd_ctx_q
+    .CTX_CHECKED  (1),              // wr_ok: wd_ctx_q, wd_lane_q
     .HOST_WSEL    (1)               // host_wsel
   ) u_fp3 (
     .clk_i           (clk_i),

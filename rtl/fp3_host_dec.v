@@ -15,12 +15,13 @@
 //   IMEM_DEPTH  instruction memory entries; AW = clog2(IMEM_DEPTH)
 // Ports
 //   addr_i   host word address, 12 bits
-//   wsel_o   one-hot (or zero: no writable register), 7 bits:
+//   wsel_o   one-hot (or zero: no writable register), 8 bits:
 //            0 CTRL, 1 STEPS, 2 CONTEXTS, 3 CTX,
 //            4 the register window, register index < NUM_REGS,
 //            5 the program window, a low word (any index: the core
 //              stores it only with its high word),
-//            6 the program window, a high word, index < IMEM_DEPTH
+//            6 the program window, a high word, index < IMEM_DEPTH,
+//            7 LANE
 //   imem_ok_o  addr_i[10:1], as a program window's index, is below
 //            IMEM_DEPTH (whatever the window; fp3_axil's check of a low
 //            word)
@@ -32,7 +33,7 @@ module fp3_host_dec #(
   parameter integer AW         = 8
 ) (
   input  wire [11:0] addr_i,
-  output wire [6:0]  wsel_o,
+  output wire [7:0]  wsel_o,
   output wire        imem_ok_o
 );
 `include "fp3_isa.vh"
@@ -47,7 +48,8 @@ module fp3_host_dec #(
   wire       imem_ok  = (imem_idx >> AW) == 10'd0 &&
                         (IMEM_DEPTH == (1 << AW) || {22'd0, imem_idx} < IMEM_DEPTH);
   assign imem_ok_o = imem_ok;
-  assign wsel_o = {win_imem && imem_ok && addr_i[0], win_imem && !addr_i[0],
+  assign wsel_o = {addr_i == HR_LANE,
+                   win_imem && imem_ok && addr_i[0], win_imem && !addr_i[0],
                    win_reg && reg_ok, addr_i == HR_CTX, addr_i == HR_CONTEXTS,
                    addr_i == HR_STEPS, addr_i == HR_CTRL};
 endmodule

@@ -27,7 +27,7 @@ localparam [7:0] OP_LI   = 8'h04; localparam [3:0] OPUSES_LI   = 4'h9; localpara
 localparam [7:0] OP_MOV  = 8'h05; localparam [3:0] OPUSES_MOV  = 4'h3; localparam [2:0] OPUNIT_MOV  = 3'd3; // mov: rd = ra (bit copy)
 localparam [7:0] OP_ENDI = 8'h06; localparam [3:0] OPUSES_ENDI = 4'h8; localparam [2:0] OPUNIT_ENDI = 3'd0; // endi: end of integration; loop to imm unless the last
 localparam [7:0] OP_HALT = 8'h07; localparam [3:0] OPUSES_HALT = 4'h0; localparam [2:0] OPUNIT_HALT = 3'd0; // halt: stop issuing; the run ends when results drain
-localparam [7:0] OP_BEQ  = 8'h08; localparam [3:0] OPUSES_BEQ  = 4'hE; localparam [2:0] OPUNIT_BEQ  = 3'd0; // beq: continue at imm (ahead) if ra, rb are bit-identical
+localparam [7:0] OP_BEQ  = 8'h08; localparam [3:0] OPUSES_BEQ  = 4'hE; localparam [2:0] OPUNIT_BEQ  = 3'd0; // beq: continue at imm (ahead) if ra, rb are bit-identical in every lane of the context
 localparam [7:0] OP_DIV  = 8'h09; localparam [3:0] OPUSES_DIV  = 4'h7; localparam [2:0] OPUNIT_DIV  = 3'd4; // div: rd = ra / rb (binary32)
 localparam [7:0] OP_SQRT = 8'h0A; localparam [3:0] OPUSES_SQRT = 4'h3; localparam [2:0] OPUNIT_SQRT = 3'd4; // sqrt: rd = sqrt(ra) (binary32; sqrt(-0) = -0)
 localparam [7:0] OP_ABS  = 8'h0B; localparam [3:0] OPUSES_ABS  = 4'h3; localparam [2:0] OPUNIT_ABS  = 3'd3; // abs: rd = ra with bit 31 cleared (quiet)
@@ -64,6 +64,7 @@ localparam [2:0] UNIT_DIV = 3'd4;
 
 // Build configuration defaults
 localparam integer DEFAULT_NUM_CONTEXTS = 8;
+localparam integer DEFAULT_NUM_LANES = 1;
 localparam integer DEFAULT_NUM_REGS = 32;
 localparam integer DEFAULT_IMEM_DEPTH = 256;
 localparam integer DEFAULT_ADD_LATENCY = 4;
@@ -75,6 +76,7 @@ localparam integer DEFAULT_HAS_DIV = 0;
 localparam integer DEFAULT_HAS_SQRT = 0;
 localparam integer DEFAULT_HAS_SIGN = 1;
 localparam integer DEFAULT_DIV_LATENCY = 8;
+localparam integer MAX_CONTEXTS = 64, MAX_LANES = 64;
 
 // Exception flags (Berkeley SoftFloat bit order)
 localparam [4:0] FLAG_INEXACT = 5'h01;
@@ -96,7 +98,7 @@ localparam [11:0] HR_STATUS = 12'h001; // R bit0 RUNNING, bit1 DONE, bit2 some c
 localparam [11:0] HR_STEPS = 12'h002; // RW integrations to run
 localparam [11:0] HR_STEPS_DONE = 12'h003; // R integrations completed by context CTX
 localparam [11:0] HR_FAULT_PC = 12'h004; // R PC of the instruction that raised context CTX's ERROR
-localparam [11:0] HR_FLAGS = 12'h005; // R sticky exception flags of context CTX's run
+localparam [11:0] HR_FLAGS = 12'h005; // R sticky exception flags of context CTX, lane LANE in the last run
 localparam [11:0] HR_CYCLES_LO = 12'h006; // R cycles from START to DONE, low word
 localparam [11:0] HR_CYCLES_HI = 12'h007; // R cycles, high word
 localparam [11:0] HR_ISSUED_LO = 12'h008; // R instructions issued, low word
@@ -104,12 +106,13 @@ localparam [11:0] HR_ISSUED_HI = 12'h009; // R instructions issued, high word
 localparam [11:0] HR_STALLS_LO = 12'h00A; // R cycles an instruction waited on a hazard, low
 localparam [11:0] HR_STALLS_HI = 12'h00B; // R stall cycles, high word
 localparam [11:0] HR_INFO0 = 12'h00C; // R NUM_REGS[15:0], IMEM_DEPTH[31:16]
-localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17], FMAX_PIPE[18]
+localparam [11:0] HR_INFO1 = 12'h00D; // R ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17], FMAX_PIPE[18], DIV_LATENCY[26:19]
 localparam [11:0] HR_ID = 12'h00E; // R 0x46503301: 'FP3', version 1
 localparam [11:0] HR_CTX = 12'h00F; // RW context selected for STATUS.ERROR, STEPS_DONE, FAULT_PC and the register window
 localparam [11:0] HR_CONTEXTS = 12'h010; // RW contexts a START runs, 1 .. NUM_CONTEXTS (reset value 1)
-localparam [11:0] HR_INFO2 = 12'h011; // R NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18], HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], DIV_LATENCY[29:22]
-localparam [11:0] HR_REG_BASE = 12'h100; // RW register r of context CTX at REG_BASE + r (stopped only)
+localparam [11:0] HR_INFO2 = 12'h011; // R NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18], HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], NUM_LANES[31:24]
+localparam [11:0] HR_LANE = 12'h012; // RW lane selected for FLAGS and the register window, 0 .. NUM_LANES-1 (a larger value: ignored; SLVERR over AXI)
+localparam [11:0] HR_REG_BASE = 12'h100; // RW register r of context CTX, lane LANE at REG_BASE + r (stopped only)
 localparam [11:0] HR_IMEM_BASE = 12'h800; // W instruction i: low word at IMEM_BASE + 2i, high word at IMEM_BASE + 2i + 1 (writing the high word stores both halves)
 localparam [31:0] STATUS_RUNNING = 32'h1, STATUS_DONE = 32'h2;
 localparam integer STATUS_ERROR_LSB = 8;

@@ -1,6 +1,18 @@
 // fp3_top -- the FP3 processor: workload scheduler with NUM_CONTEXTS
-// contexts sharing one arithmetic unit (paper §6.3), register banks with
-// busy flags, a host port and a write-back trace port.
+// contexts sharing one issue slot (paper §6.3), NUM_LANES lanes that each
+// execute every issued instruction on their own register bank and
+// arithmetic unit (fp3_lane), busy flags, a host port and a write-back
+// trace port.
+//
+// Lanes: the scheduler, the instruction memory, the decode, the busy flags
+// (scoreboard) and the write-back tag lines exist once; the register banks
+// and the FP cores are replicated NUM_LANES times (fp3_lane).  Each issue
+// of context c runs on lane 0 .. NUM_LANES-1 of c in the same cycle, so
+// NUM_CONTEXTS x NUM_LANES objects are in flight, and the timing of a
+// context does not depend on NUM_LANES.  A beq is taken only when its
+// operands are bit-identical in every lane of its context (the lanes of a
+// context share one PC); otherwise every lane falls through.  Exception
+// flags are sticky per context and lane.
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
@@ -9,8 +21,9 @@
 // address held for four cycles works for both).  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/isa/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
-// CTX selects the context whose status and registers the host sees;
-// CONTEXTS says how many contexts (0 .. CONTEXTS-1) a START runs.
+// CTX selects the context whose status and registers the host sees, LANE
+// the lane whose registers and flags it sees; CONTEXTS says how many
+// contexts (0 .. CONTEXTS-1) a START runs (every lane of each).
 // Registers and instruction memory accept writes only while no run is in
 // progress; a write while running is ignored, and the register window
 // reads as zero while running (the register file's read ports belong to
@@ -46,9 +59,13 @@
 // stop"): every issue (with its context and unit), every endi and every
 // write-back (context, register, value) is visible each cycle, so a host
 // can check every result while the machine runs freely.  It adds no state.
+// A write-back's data carry every lane: lane l in bits [32l +: 32] (the
+// context, register and valid are the lanes' common ones).
 //
 // Parameters
 //   NUM_CONTEXTS contexts, 1..64                (defaults: sw/isa/fp3_isa.h)
+//   NUM_LANES    lanes per context, 1..64 (MAX_LANES): objects in flight
+//                NUM_CONTEXTS x NUM_LANES; 1 is the processor without lanes
 //   NUM_REGS     registers per context, 2..256
 //   IMEM_DEPTH   instruction memory entries, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles (operands to result)
@@ -66,17 +83,18 @@
 //                issue path has no div/sqrt write-back port yet
 //                (sw/isa/fp3_isa.h HAS_DIV), so the host refuses programs
 //                with these instructions before running them
-//   DIV_LATENCY  the div/sqrt unit's latency, reported in INFO2[29:22]
+//   DIV_LATENCY  the div/sqrt unit's latency, reported in INFO1[26:19]
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
 //                before and after the instruction memory, two in the
 //                scheduler's issue loop, two between its grant and the
 //                issue, and three more operand-read stages: a LUT-RAM
 //                register file (see "Pipeline" above)
-//   CTX_CHECKED  0: a write to CTX of a number >= NUM_CONTEXTS is ignored
-//                here; 1: the host port's writer never makes one
-//                (fp3_axil refuses it with SLVERR, deciding it as the data
-//                arrive), so the 32-bit compare is left out: it was in
-//                front of CTX's enable, a critical path
+//   CTX_CHECKED  0: a write to CTX of a number >= NUM_CONTEXTS, or to LANE
+//                of one >= NUM_LANES, is ignored here; 1: the host port's
+//                writer never makes one (fp3_axil refuses it with SLVERR,
+//                deciding it as the data arrive), so the 32-bit compares
+//                are left out: CTX's was in front of its enable, a
+//                critical path
 //   HOST_WSEL    0: a write's register is decoded here from host_addr_i;
 //                1: the writer decodes it and gives it on host_wsel_i
 //                (fp3_axil: decoded as the address is captured, held
@@ -85,6 +103,7 @@
 `default_nettype none
 module fp3_top #(
   parameter integer NUM_CONTEXTS = 8,
+  parameter integer NUM_LANES    = 1,
   parameter integer NUM_REGS     = 32,
   parameter integer IMEM_DEPTH   = 256,
   parameter integer ADD_LATENCY  = 4,
@@ -108,11 +127,11 @@ module fp3_top #(
   input  wire        host_we_i,
   input  wire [11:0] host_addr_i,
   input  wire [31:0] host_wdata_i,
-  input  wire [6:0]  host_wsel_i,   // HOST_WSEL = 1: fp3_host_dec of host_addr_i (else unused)
+  input  wire [7:0]  host_wsel_i,   // HOST_WSEL = 1: fp3_host_dec of host_addr_i (else unused)
   output wire [31:0] host_rdata_o,
   output wire        running_o,
   output wire        done_o,
-  // trace port (contexts as 6-bit numbers)
+  // trace port (contexts as 6-bit numbers; data: lane l in [32l +: 32])
   output wire        tr_issue_o,
   output wire [5:0]  tr_issue_ctx_o,
   output wire [1:0]  tr_issue_unit_o,
@@ -120,20 +139,22 @@ module fp3_top #(
   output wire        tr_add_valid_o,
   output wire [5:0]  tr_add_ctx_o,
   output wire [7:0]  tr_add_reg_o,
-  output wire [31:0] tr_add_data_o,
+  output wire [32*NUM_LANES-1:0] tr_add_data_o,
   output wire        tr_mul_valid_o,
   output wire [5:0]  tr_mul_ctx_o,
   output wire [7:0]  tr_mul_reg_o,
-  output wire [31:0] tr_mul_data_o,
+  output wire [32*NUM_LANES-1:0] tr_mul_data_o,
   output wire        tr_mov_valid_o,
   output wire [5:0]  tr_mov_ctx_o,
   output wire [7:0]  tr_mov_reg_o,
-  output wire [31:0] tr_mov_data_o
+  output wire [32*NUM_LANES-1:0] tr_mov_data_o
 );
 `include "fp3_isa.vh"
 
   localparam integer IW = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);
   localparam integer CW = (NUM_CONTEXTS <= 2) ? 1 : $clog2(NUM_CONTEXTS);
+  localparam integer LW = (NUM_LANES <= 2) ? 1 : $clog2(NUM_LANES);   // LANE's width
+  localparam integer NL = NUM_LANES;
   localparam integer XW = CW + IW;
   localparam integer AW = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
   localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
@@ -144,6 +165,11 @@ module fp3_top #(
   localparam integer MOV_LATENCY = 1 + PICK;
 
   generate
+    if (NUM_LANES < 1 || NUM_LANES > MAX_LANES) begin : g_bad_lanes
+      // Elaboration error on purpose: LANE, INFO2[31:24] and the trace
+      // port's data are sized for 1 .. MAX_LANES lanes.
+      fp3_top_error_NUM_LANES_must_be_1_to_64 u_error ();
+    end
     if (FMAX_PIPE != 0 && (ADD_LATENCY < 3 || MUL_LATENCY < 3)) begin : g_bad_latency
       // Elaboration error on purpose: the announcement of a write-back
       // (and the cycle before it, fp3_wb_tag early_*) must come after the
@@ -156,7 +182,7 @@ module fp3_top #(
       fp3_top_error_HAS_DIV_and_HAS_SQRT_must_be_0 u_error ();
     end
     if (DIV_LATENCY < 1 || DIV_LATENCY > 255) begin : g_bad_div_latency
-      // Elaboration error on purpose: INFO2 reports DIV_LATENCY in 8 bits.
+      // Elaboration error on purpose: INFO1 reports DIV_LATENCY in 8 bits.
       fp3_top_error_DIV_LATENCY_must_be_1_to_255 u_error ();
     end
   endgenerate
@@ -164,9 +190,9 @@ module fp3_top #(
   // ---- host port decode ----------------------------------------------------
   // The register or window host_addr_i names (hsel: reads, and writes
   // with HOST_WSEL = 0), and the one a write takes (wsel): fp3_host_dec's
-  // one-hot {program high word, program low word, register window, CTX,
-  // CONTEXTS, STEPS, CTRL}.
-  wire [6:0]  hsel, wsel;
+  // one-hot {LANE, program high word, program low word, register window,
+  // CTX, CONTEXTS, STEPS, CTRL}.
+  wire [7:0]  hsel, wsel;
   wire        hsel_imem_ok;   // (hsel[6] has it for the writes)
   fp3_host_dec #(.NUM_REGS(NUM_REGS), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH), .AW(AW)) u_host_dec (
     .addr_i    (host_addr_i),
@@ -176,7 +202,7 @@ module fp3_top #(
   generate
     if (HOST_WSEL != 0) begin : g_wsel_in
       assign wsel = host_wsel_i;
-      wire unused_hsel = &{1'b0, hsel[6:5], hsel[3:0], hsel_imem_ok};   // (reads use hsel[4])
+      wire unused_hsel = &{1'b0, hsel[7:5], hsel[3:0], hsel_imem_ok};   // (reads use hsel[4])
     end else begin : g_wsel_here
       assign wsel = hsel;
       wire unused_wsel = &{1'b0, host_wsel_i, hsel_imem_ok};
@@ -188,13 +214,17 @@ module fp3_top #(
   reg  [31:0] steps_q;
   reg  [31:0] contexts_q;
   reg  [CW-1:0] ctx_q;     // context the host sees
+  reg  [LW-1:0] lane_q;    // lane the host sees
   reg  [31:0] imem_lo_q;   // low half of an instruction being written
-  reg  [4:0]  flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags per context
+  reg  [4:0]  flags_q [0:NUM_CONTEXTS*NL-1];  // sticky exception flags, [context * NL + lane]
 
   wire host_idle   = !running;
   // A write to CTX taken (ctx_q and its copies, below)
   wire ctx_we      = host_we_i && host_idle && wsel[3] &&
                      (CTX_CHECKED != 0 || host_wdata_i < NUM_CONTEXTS);
+  // ... and to LANE
+  wire lane_we     = host_we_i && host_idle && wsel[7] &&
+                     (CTX_CHECKED != 0 || host_wdata_i < NUM_LANES);
   wire wr_ctrl     = host_we_i && wsel[0];
   wire start       = wr_ctrl && host_wdata_i[0];
   wire clear       = wr_ctrl && host_wdata_i[1];
@@ -219,6 +249,7 @@ module fp3_top #(
       contexts_bad_q <= 1'b0;
       contexts_run_q <= {{(NUM_CONTEXTS-1){1'b0}}, 1'b1};
       ctx_q          <= {CW{1'b0}};
+      lane_q         <= {LW{1'b0}};
     end else if (host_we_i && host_idle) begin
       if (wsel[1]) begin
         steps_q       <= host_wdata_i;
@@ -232,6 +263,7 @@ module fp3_top #(
         for (k = 0; k < NUM_CONTEXTS; k = k + 1) contexts_run_q[k] <= k < host_wdata_i;
       end
       if (ctx_we)                     ctx_q      <= host_wdata_i[CW-1:0];
+      if (lane_we)                    lane_q     <= host_wdata_i[LW-1:0];
     end
     if (host_we_i && wsel[5]) imem_lo_q <= host_wdata_i;
   end
@@ -270,8 +302,6 @@ module fp3_top #(
   wire [(1<<XW)-1:0] busy;
   wire          add_valid, mul_valid, mov_valid;
   wire [XW-1:0] add_idx, mul_idx, mov_idx;
-  wire [31:0]   add_data, mul_data, mov_data;
-  wire [4:0]    add_flags, mul_flags, mov_flags;
   wire          adda_valid, mula_valid, mova_valid;   // write-backs AHEAD cycles on
   wire [XW-1:0] adda_idx, mula_idx, mova_idx;
   wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
@@ -349,61 +379,88 @@ module fp3_top #(
     .pick_unit_o      (pick_unit)
   );
 
-  // ---- register banks ------------------------------------------------------
-  wire [31:0] ra_data, rb_data;
-
+  // ---- lanes: register banks and arithmetic units -------------------------
   // Banks are indexed {context, register}: 2**XW entries; the banks of
   // contexts >= NUM_CONTEXTS are never written and synthesize away.
   // With the pick stages the busy flags take their set and clear a cycle
   // ahead (fp3_regfile FLAGS_AHEAD): the instruction picked and the tag
-  // lines' early announcements.
-  fp3_regfile #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ),
-                .FLAGS_AHEAD(FMAX_PIPE)) u_regs (
-    .clk_i        (clk_i),
-    .rst_i        (rst_i),
-    .ra_i         (ra),
-    .rb_i         (rb),
-    .ra_data_o    (ra_data),
-    .rb_data_o    (rb_data),
-    .busy_o       (busy),
-    .set_i        (pick_wr),
-    .set_idx_i    (pick_rd),
-    .clr0_valid_i (FMAX_PIPE != 0 ? adde_valid : adda_valid),
-    .clr0_idx_i   (FMAX_PIPE != 0 ? adde_idx   : adda_idx),
-    .clr1_valid_i (FMAX_PIPE != 0 ? mule_valid : mula_valid),
-    .clr1_idx_i   (FMAX_PIPE != 0 ? mule_idx   : mula_idx),
-    .clr2_valid_i (FMAX_PIPE != 0 ? move_valid : mova_valid),
-    .clr2_idx_i   (FMAX_PIPE != 0 ? move_idx   : mova_idx),
-    .wb0_valid_i  (add_valid),
-    .wb0_idx_i    (add_idx),
-    .wb0_data_i   (add_data),
-    .wb1_valid_i  (mul_valid),
-    .wb1_idx_i    (mul_idx),
-    .wb1_data_i   (mul_data),
-    .wb2_valid_i  (mov_valid),
-    .wb2_idx_i    (mov_idx),
-    .wb2_data_i   (mov_data),
-    .wb0_in2_valid_i (addn_valid),
-    .wb0_in2_idx_i   (addn_idx),
-    .wb1_in2_valid_i (muln_valid),
-    .wb1_in2_idx_i   (muln_idx),
-    .wb2_in2_valid_i (movn_valid),
-    .wb2_in2_idx_i   (movn_idx),
-    .host_sel_i   (host_idle),
-    .host_we_i    (host_reg_we),
-    .host_idx_i   ({ctx_q, host_addr_i[IW-1:0]}),
-    .host_wdata_i (host_wdata_i),
-    .idle_o       (idle)
-  );
-
-  // ---- operand-read stages ------------------------------------------------
-  // The register file answers a read of the issue cycle t in cycle t + READ;
-  // the rest of the issued operation waits beside it.
+  // lines' early announcements.  Every lane sees the same indices; lane
+  // 0's busy flags are the scoreboard (fp3_lane).  The host writes the
+  // lane LANE names.
+  wire [32*NL-1:0] ra_data_l, rb_data_l;            // lane l in [32l +: 32]
+  wire [32*NL-1:0] add_data_l, mul_data_l, mov_data_l;
+  wire [5*NL-1:0]  add_flags_l, mul_flags_l, mov_flags_l;
+  wire [(1<<XW)*NL-1:0] busy_l;
+  wire [NL-1:0]    idle_l;
+  // The read stage's operation, for every lane (below)
   wire          rd_valid, rd_sub, rd_imm, rd_beq;
   wire [2:0]    rd_sop;
   wire [1:0]    rd_unit;
   wire [31:0]   rd_immval;
   wire [CW-1:0] rd_ctx;
+  genvar ln;
+  generate
+    for (ln = 0; ln < NL; ln = ln + 1) begin : g_lane
+      fp3_lane #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE),
+                 .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
+                 .MOV_LATENCY(MOV_LATENCY), .ROUND(ROUND), .FTZ(FTZ), .HAS_ADD(HAS_ADD),
+                 .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN)) u_lane (
+        .clk_i           (clk_i),
+        .rst_i           (rst_i),
+        .ra_i            (ra),
+        .rb_i            (rb),
+        .ra_data_o       (ra_data_l[32*ln +: 32]),
+        .rb_data_o       (rb_data_l[32*ln +: 32]),
+        .busy_o          (busy_l[(1<<XW)*ln +: (1<<XW)]),
+        .set_i           (pick_wr),
+        .set_idx_i       (pick_rd),
+        .clr0_valid_i    (FMAX_PIPE != 0 ? adde_valid : adda_valid),
+        .clr0_idx_i      (FMAX_PIPE != 0 ? adde_idx   : adda_idx),
+        .clr1_valid_i    (FMAX_PIPE != 0 ? mule_valid : mula_valid),
+        .clr1_idx_i      (FMAX_PIPE != 0 ? mule_idx   : mula_idx),
+        .clr2_valid_i    (FMAX_PIPE != 0 ? move_valid : mova_valid),
+        .clr2_idx_i      (FMAX_PIPE != 0 ? move_idx   : mova_idx),
+        .wb0_valid_i     (add_valid),
+        .wb0_idx_i       (add_idx),
+        .wb1_valid_i     (mul_valid),
+        .wb1_idx_i       (mul_idx),
+        .wb2_valid_i     (mov_valid),
+        .wb2_idx_i       (mov_idx),
+        .wb0_in2_valid_i (addn_valid),
+        .wb0_in2_idx_i   (addn_idx),
+        .wb1_in2_valid_i (muln_valid),
+        .wb1_in2_idx_i   (muln_idx),
+        .wb2_in2_valid_i (movn_valid),
+        .wb2_in2_idx_i   (movn_idx),
+        .host_sel_i      (host_idle),
+        .host_we_i       (host_reg_we && lane_q == ln[LW-1:0]),
+        .host_idx_i      ({ctx_q, host_addr_i[IW-1:0]}),
+        .host_wdata_i    (host_wdata_i),
+        .idle_o          (idle_l[ln]),
+        .valid_i         (rd_valid),
+        .unit_i          (rd_unit),
+        .sub_i           (rd_sub),
+        .sop_i           (rd_sop),
+        .imm_i           (rd_imm),
+        .imm_val_i       (rd_immval),
+        .add_data_o      (add_data_l[32*ln +: 32]),
+        .add_flags_o     (add_flags_l[5*ln +: 5]),
+        .mul_data_o      (mul_data_l[32*ln +: 32]),
+        .mul_flags_o     (mul_flags_l[5*ln +: 5]),
+        .mov_data_o      (mov_data_l[32*ln +: 32]),
+        .mov_flags_o     (mov_flags_l[5*ln +: 5])
+      );
+    end
+  endgenerate
+  assign busy = busy_l[(1<<XW)-1:0];
+  assign idle = idle_l[0];
+  // (lanes 1 .. NL-1 repeat lane 0's flags: synthesis removes them)
+  wire unused_lane_flags = &{1'b0, busy_l, idle_l};
+
+  // ---- operand-read stages ------------------------------------------------
+  // The register file answers a read of the issue cycle t in cycle t + READ;
+  // the rest of the issued operation waits beside it (one copy for all
+  // lanes).
   fp_pipe #(.WIDTH(1 + 2 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
@@ -505,64 +562,59 @@ module fp3_top #(
 
   // ---- branch resolution -------------------------------------------------
   // A beq's operands, read like any others, are compared here (a 32-bit
-  // equality of bit patterns) and the outcome registered: the scheduler
-  // sees it READ + 1 cycles after the issue, its context decoded.
-  integer bc;
+  // equality of bit patterns in each lane) and the outcome registered:
+  // taken only if equal in every lane.  The scheduler sees it READ + 1
+  // cycles after the issue, its context decoded.
+  reg [NL-1:0] lane_eq;
+  integer bc, bl;
+  always @(*) begin
+    for (bl = 0; bl < NL; bl = bl + 1)
+      lane_eq[bl] = ra_data_l[32*bl +: 32] == rb_data_l[32*bl +: 32];
+  end
   always @(posedge clk_i) begin
     for (bc = 0; bc < NUM_CONTEXTS; bc = bc + 1)
       br_q[bc] <= !rst_i && rd_beq && rd_ctx == bc[CW-1:0];
-    br_taken_q  <= ra_data == rb_data;
+    br_taken_q  <= &lane_eq;
     br_target_q <= rd_immval[AW-1:0];
   end
 
-  // ---- arithmetic unit -----------------------------------------------------
-  // The units' own valid bits equal their tag lines' (same depth from the
-  // same issue); the tag lines' are used.
-  wire add_core_valid, mul_core_valid, mov_path_valid;
-  fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .MOV_LATENCY(MOV_LATENCY), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
-              .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN)) u_arith (
-    .clk_i       (clk_i),
-    .rst_i       (rst_i),
-    .valid_i     (rd_valid),
-    .unit_i      (rd_unit),
-    .sub_i       (rd_sub),
-    .sop_i       (rd_sop),
-    .a_i         (rd_imm ? rd_immval : ra_data),
-    .b_i         (rb_data),
-    .add_valid_o (add_core_valid),
-    .add_data_o  (add_data),
-    .add_flags_o (add_flags),
-    .mul_valid_o (mul_core_valid),
-    .mul_data_o  (mul_data),
-    .mul_flags_o (mul_flags),
-    .mov_valid_o (mov_path_valid),
-    .mov_data_o  (mov_data),
-    .mov_flags_o (mov_flags)
-  );
-  wire unused_valid = add_core_valid ^ mul_core_valid ^ mov_path_valid;
-
-  // ---- sticky exception flags of the run, per context ----------------------
+  // ---- sticky exception flags of the run, per context and lane -------------
   // Cleared in the run's first cycle, a cycle after its START (fclr_q; as
   // the scheduler clears its counters), in which nothing has issued yet:
   // so the host port's decode does not reach the flags.
   reg fclr_q;
   always @(posedge clk_i) fclr_q <= start && host_idle;
-  genvar fc;
+  genvar fc, fl;
   generate
     for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
       localparam [CW-1:0] FCTX = fc[CW-1:0];
       wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
       wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
       wire mov_here = mov_valid && mov_idx[XW-1:IW] == FCTX;
-      always @(posedge clk_i) begin
-        if (rst_i || fclr_q) flags_q[fc] <= 5'd0;
-        else flags_q[fc] <= flags_q[fc] | (add_here ? add_flags : 5'd0) |
-                            (mul_here ? mul_flags : 5'd0) | (mov_here ? mov_flags : 5'd0);
+      for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
+        always @(posedge clk_i) begin
+          if (rst_i || fclr_q) flags_q[fc*NL+fl] <= 5'd0;
+          else flags_q[fc*NL+fl] <= flags_q[fc*NL+fl] |
+                                    (add_here ? add_flags_l[5*fl +: 5] : 5'd0) |
+                                    (mul_here ? mul_flags_l[5*fl +: 5] : 5'd0) |
+                                    (mov_here ? mov_flags_l[5*fl +: 5] : 5'd0);
+        end
       end
     end
   endgenerate
-  wire [4:0] flags_sel = flags_q[ctx_flg];
+  // The selected context's flags, of lane LANE.
+  wire [4:0] flags_sel;
+  generate
+    if (NL == 1) begin : g_flags_one
+      assign flags_sel = flags_q[ctx_flg];
+    end else begin : g_flags_lane
+      wire [4:0] flags_ctx [0:NL-1];
+      for (fl = 0; fl < NL; fl = fl + 1) begin : g_sel
+        assign flags_ctx[fl] = flags_q[{{(32-CW){1'b0}}, ctx_flg} * NL + fl];
+      end
+      assign flags_sel = flags_ctx[lane_q];
+    end
+  endgenerate
 
   // ---- host read mux (registered) ------------------------------------------
   // The words of the four addresses host_addr_i[11:2] names (hr_four),
@@ -602,20 +654,21 @@ module fp3_top #(
         HR_STALLS_LO[4:0]:  hr_four[32*hk +: 32] = stalls[31:0];
         HR_STALLS_HI[4:0]:  hr_four[32*hk +: 32] = stalls[63:32];
         HR_INFO0[4:0]:      hr_four[32*hk +: 32] = {IMEM_DEPTH[15:0], NUM_REGS[15:0]};
-        HR_INFO1[4:0]:      hr_four[32*hk +: 32] = {13'd0, FMAX_PIPE[0], FTZ[0], ROUND[0],
-                                                    MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
+        HR_INFO1[4:0]:      hr_four[32*hk +: 32] = {5'd0, DIV_LATENCY[7:0], FMAX_PIPE[0], FTZ[0],
+                                                    ROUND[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]};
         HR_ID[4:0]:         hr_four[32*hk +: 32] = ID_VALUE;
         HR_CTX[4:0]:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
         HR_CONTEXTS[4:0]:   hr_four[32*hk +: 32] = contexts_q;
-        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {2'd0, DIV_LATENCY[7:0], HAS_SIGN[0],
+        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {NUM_LANES[7:0], 2'd0, HAS_SIGN[0],
                                                     HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0],
                                                     HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
+        HR_LANE[4:0]:       hr_four[32*hk +: 32] = {{(32-LW){1'b0}}, lane_q};
         default:            hr_four[32*hk +: 32] = 32'd0;
       endcase
     end
   end
   generate
-    if (HR_INFO2 > 12'h01F) begin : g_bad_map
+    if (HR_INFO2 > 12'h01F || HR_LANE > 12'h01F) begin : g_bad_map
       // Elaboration error on purpose: the scalar map outgrew host_addr_i[4:0].
       fp3_top_error_scalar_registers_must_be_words_0_to_31 u_error ();
     end
@@ -665,7 +718,8 @@ module fp3_top #(
     .valid_o (reg_read_q),
     .data_o  (rdata_q)
   );
-  assign host_rdata_o = reg_read_q ? ra_data : rdata_q;
+  wire [31:0] ra_data_sel = ra_data_l[32*lane_q +: 32];   // lane LANE's port A
+  assign host_rdata_o = reg_read_q ? ra_data_sel : rdata_q;
 
   // ---- outputs -------------------------------------------------------------
   assign running_o       = running;
@@ -677,15 +731,15 @@ module fp3_top #(
   assign tr_add_valid_o  = add_valid;
   assign tr_add_ctx_o    = {{(6-CW){1'b0}}, add_idx[XW-1:IW]};
   assign tr_add_reg_o    = {{(8-IW){1'b0}}, add_idx[IW-1:0]};
-  assign tr_add_data_o   = add_data;
+  assign tr_add_data_o   = add_data_l;
   assign tr_mul_valid_o  = mul_valid;
   assign tr_mul_ctx_o    = {{(6-CW){1'b0}}, mul_idx[XW-1:IW]};
   assign tr_mul_reg_o    = {{(8-IW){1'b0}}, mul_idx[IW-1:0]};
-  assign tr_mul_data_o   = mul_data;
+  assign tr_mul_data_o   = mul_data_l;
   assign tr_mov_valid_o  = mov_valid;
   assign tr_mov_ctx_o    = {{(6-CW){1'b0}}, mov_idx[XW-1:IW]};
   assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_idx[IW-1:0]};
-  assign tr_mov_data_o   = mov_data;
+  assign tr_mov_data_o   = mov_data_l;
 
   // Host address bits that select windows but are not register indices.
   wire unused_addr = &{1'b0, host_addr_i};

@@ -8,7 +8,8 @@
 # single-threaded (--threads 1), so its result does not depend on the
 # machine.  A line per seed as it ends, then the table of all seeds, their
 # least, median, mean and greatest Fmax, and the best seed (ties: the lower
-# seed).
+# seed); the median (of an even count, the mean of the middle two) also
+# alone in OUTDIR/fmax_median.txt.
 # Outputs in OUTDIR: seed-K/ per seed (pnr.sh's log, report,
 # configuration); pnr_seeds.csv (seed,fmax_mhz,levels,logic_ns,routing_ns,
 # from,to); pnr_summary.csv gets the best seed's row; NAME_ecp5.config is
@@ -73,6 +74,10 @@ tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g | awk -v n="$name" -v b=
   END { med = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
         printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, median %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
                n, NR, v[1], med, s / NR, v[NR], b }'
+median=$(tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g |
+  awk '{ f[NR] = $1 } END { if (NR % 2) printf "%.1f", f[(NR + 1) / 2];
+                            else printf "%.1f", (f[NR / 2] + f[NR / 2 + 1]) / 2 }')
+echo "$median" > "$out/fmax_median.txt"
 awk -F, '{ printf "  %-5s %-9s %-7s %-9s %-11s %s\n", $1, $2, $3, $4, $5, $6 " -> " $7 }' \
   "$out/pnr_seeds.csv" | cut -c1-150
 tail -1 "$out/seed-$best/pnr_summary.csv" >> "$out/pnr_summary.csv"

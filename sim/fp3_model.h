@@ -25,6 +25,9 @@ typedef struct fp3_model_in {
   uint32_t wdata;  /* write data                          */
 } fp3_model_in;
 
+/* Lanes a model may have (FP3_MAX_LANES of sw/isa/fp3_isa.h). */
+#define FP3_MODEL_MAX_LANES 64
+
 /* Outputs of one cycle. */
 typedef struct fp3_model_out {
   uint32_t rdata;       /* host read data for this cycle's addr   */
@@ -36,7 +39,8 @@ typedef struct fp3_model_out {
   int wb_valid[3];      /* write-back ports: 0 add, 1 mul, 2 move */
   unsigned wb_ctx[3];
   unsigned wb_reg[3];
-  uint32_t wb_data[3];
+  uint32_t wb_data[3][FP3_MODEL_MAX_LANES]; /* [port][lane]: the model's
+                                           NUM_LANES lanes are filled */
 } fp3_model_out;
 
 /*

@@ -23,6 +23,20 @@ using model = vmodel<VTOP>;
 
 model *of(fp3_model *m) { return reinterpret_cast<model *>(m); }
 
+// A write-back port's data, lane l in bits [32l +: 32] (fp3_top trace
+// port), into dst[0 .. lanes-1]: Verilator gives one lane as a 32-bit
+// IData, two as a 64-bit QData, more as a VlWide of 32-bit words.
+void lanes_out(uint32_t *dst, IData v) { dst[0] = v; }
+void lanes_out(uint32_t *dst, QData v) {
+  dst[0] = static_cast<uint32_t>(v);
+  dst[1] = static_cast<uint32_t>(v >> 32);
+}
+template <std::size_t N>
+void lanes_out(uint32_t *dst, const VlWide<N> &v) {
+  static_assert(N <= FP3_MODEL_MAX_LANES, "more lanes than fp3_model_out holds");
+  for (std::size_t l = 0; l < N; l++) dst[l] = v[l];
+}
+
 }  // namespace
 
 static void trace_window(fp3_model *handle, uint64_t first, uint64_t count) {
@@ -61,15 +75,15 @@ static void cycle(fp3_model *handle, const fp3_model_in *in, fp3_model_out *out)
     out->wb_valid[0] = t->tr_add_valid_o;
     out->wb_ctx[0] = t->tr_add_ctx_o;
     out->wb_reg[0] = t->tr_add_reg_o;
-    out->wb_data[0] = t->tr_add_data_o;
+    lanes_out(out->wb_data[0], t->tr_add_data_o);
     out->wb_valid[1] = t->tr_mul_valid_o;
     out->wb_ctx[1] = t->tr_mul_ctx_o;
     out->wb_reg[1] = t->tr_mul_reg_o;
-    out->wb_data[1] = t->tr_mul_data_o;
+    lanes_out(out->wb_data[1], t->tr_mul_data_o);
     out->wb_valid[2] = t->tr_mov_valid_o;
     out->wb_ctx[2] = t->tr_mov_ctx_o;
     out->wb_reg[2] = t->tr_mov_reg_o;
-    out->wb_data[2] = t->tr_mov_data_o;
+    lanes_out(out->wb_data[2], t->tr_mov_data_o);
   }
   m->half_cycle(1);  // the rising edge
   if (out) out->rdata = t->host_rdata_o;

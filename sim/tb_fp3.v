@@ -4,7 +4,8 @@
 // It does what a driver does, through the host port only: reset, check
 // the ID register, load the program into every instruction-memory entry,
 // write every register of every context it runs (+contexts=N, default 1;
-// all run the same scene), write STEPS, CONTEXTS and START, then watch the
+// every lane of each, NUM_LANES; all run the same scene), write STEPS,
+// CONTEXTS and START, then watch the
 // trace port while the machine runs freely, and read status, counters and
 // registers back when it is done.  All inputs come from `fp3 tbgen`
 // (sw/cli/cmd_tbgen.h) in $readmemh format, in the directory given by +dir=DIR:
@@ -15,13 +16,13 @@
 //   expected.hex  final registers, then v and s after every integration
 //
 // Checks (each mismatch is printed; the last line is PASS or FAIL):
-//   - v and s of every context after every integration, bit for bit,
+//   - v and s of every context and lane after every integration, bit for bit,
 //     tagged with their integration exactly as sw/engine/engine_rtl.c does (one
 //     FIFO of {context, integration} per unit, pushed at issue, popped at
 //     write-back, which must name the same context);
-//   - every register of every context at the end; STATUS (DONE, ERROR),
-//     FAULT_PC, STEPS_DONE per context, ISSUED (contexts x the ISS's) and
-//     FLAGS against the instruction-set simulator;
+//   - every register of every context and lane at the end; STATUS (DONE,
+//     ERROR), FAULT_PC, STEPS_DONE per context, ISSUED (contexts x the
+//     ISS's) and FLAGS per lane against the instruction-set simulator;
 //   - CYCLES and STALLS against the Verilated model of the same RTL, when
 //     it was built with the same latencies (one context only);
 //   - no write-back without an issue, nothing left in flight at the end.
@@ -48,6 +49,7 @@
 `default_nettype none
 module tb_fp3 #(
   parameter integer NUM_CONTEXTS = 8,      // as rtl/fp3_top.v
+  parameter integer NUM_LANES   = 1,
   parameter integer NUM_REGS    = 32,
   parameter integer IMEM_DEPTH  = 256,
   parameter integer ADD_LATENCY = 4,
@@ -66,6 +68,7 @@ module tb_fp3 #(
 
   localparam integer AW       = (IMEM_DEPTH <= 2) ? 1 : $clog2(IMEM_DEPTH);
   localparam integer NC       = NUM_CONTEXTS;
+  localparam integer NL       = NUM_LANES;
   localparam integer IW       = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);  // as fp3_top
   localparam integer MAX_LAT  = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
   localparam integer READ     = 1 + 3 * FMAX_PIPE;   // host read cycles, operand-read stages
@@ -92,10 +95,11 @@ module tb_fp3 #(
   wire [1:0]  tr_issue_unit;
   wire        tr_add_valid, tr_mul_valid, tr_mov_valid;
   wire [7:0]  tr_add_reg, tr_mul_reg, tr_mov_reg;
-  wire [31:0] tr_add_data, tr_mul_data, tr_mov_data;
+  wire [32*NL-1:0] tr_add_data, tr_mul_data, tr_mov_data;   // lane l: [32l +: 32]
 
   fp3_top #(
     .NUM_CONTEXTS (NUM_CONTEXTS),
+    .NUM_LANES   (NUM_LANES),
     .NUM_REGS    (NUM_REGS),
     .IMEM_DEPTH  (IMEM_DEPTH),
     .ADD_LATENCY (ADD_LATENCY),
@@ -112,7 +116,7 @@ module tb_fp3 #(
     .host_we_i       (host_we),
     .host_addr_i     (host_addr),
     .host_wdata_i    (host_wdata),
-    .host_wsel_i     (7'd0),        // (HOST_WSEL = 0: decoded in the core)
+    .host_wsel_i     (8'd0),        // (HOST_WSEL = 0: decoded in the core)
     .host_rdata_o    (host_rdata),
     .running_o       (running),
     .done_o          (done),
@@ -179,7 +183,9 @@ module tb_fp3 #(
   // above and these dbg_* probes.  When the RTL's internals change, this
   // block is what follows them (tests/test_wave.sh checks that every
   // signal of the .gtkw file is in the waveform).  Per-context vectors have
-  // bit c for context c; registers and busy flags are shown for context 0.
+  // bit c for context c; registers and busy flags are shown for context 0,
+  // values for lane 0 and for the last lane (NUM_LANES - 1: lane 0 again
+  // without lanes), as the trace port carries every lane.
   wire           dbg_issue     = dut.u_sched.grant;      // granted (issues now; next cycle with FMAX_PIPE)
   wire [AW-1:0]  dbg_pc        = dut.u_sched.u_queue.p_q[2*dut.u_sched.u_issue.g + dut.u_sched.u_queue.hp_q[dut.u_sched.u_issue.g]];  // PC of the issuing instruction
   wire [63:0]    dbg_insn      = dut.u_sched.u_queue.w_q[2*dut.u_sched.u_issue.g + dut.u_sched.u_queue.hp_q[dut.u_sched.u_issue.g]];  // its word
@@ -194,7 +200,14 @@ module tb_fp3 #(
   wire [63:0]    dbg_cycles    = dut.u_sched.cycles_o;
   wire [63:0]    dbg_issued    = dut.u_sched.issued_o;
   wire [63:0]    dbg_stalls    = dut.u_sched.stalls_o;
-  wire [NUM_REGS-1:0] dbg_busy = dut.u_regs.busy_q[NUM_REGS-1:0];  // context 0
+  wire [NUM_REGS-1:0] dbg_busy = dut.g_lane[0].u_lane.u_regs.busy_q[NUM_REGS-1:0];  // context 0
+  wire [7:0]     dbg_lanes     = NUM_LANES[7:0];         // lanes per context
+  wire [31:0]    dbg_add_data  = tr_add_data[31:0];      // lane 0's results
+  wire [31:0]    dbg_mul_data  = tr_mul_data[31:0];
+  wire [31:0]    dbg_mov_data  = tr_mov_data[31:0];
+  wire [31:0]    dbg_add_last  = tr_add_data[32*(NL-1) +: 32];   // the last lane's results
+  wire [31:0]    dbg_mul_last  = tr_mul_data[32*(NL-1) +: 32];
+  wire [31:0]    dbg_mov_last  = tr_mov_data[32*(NL-1) +: 32];
   wire           wbn0_v = dut.adda_valid;   // write-backs announced (fp3_wb_tag)
   wire           wbn1_v = dut.mula_valid;
   wire           wbn2_v = dut.mova_valid;
@@ -248,7 +261,7 @@ module tb_fp3 #(
         ((dut.u_sched.busy_i[xd] && !wd) || (pend && pend_x == xd) || (pick && pick_x == xd));
     end
   endgenerate
-  function [31:0] dbg_reg;  // register r of context c (after the clock edge)
+  function [31:0] dbg_reg;  // register r of context c, lane 0 (after the clock edge)
     input integer c;
     input [31:0]  r;
     integer x;
@@ -256,9 +269,27 @@ module tb_fp3 #(
       // The RAM of the write-back port that wrote it last (the LVT).
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg = 32'd0;
-      else if (dut.u_regs.lvt_q[x] == 2'd0)   dbg_reg = dut.u_regs.u_ram00.g_any.mem[x];
-      else if (dut.u_regs.lvt_q[x] == 2'd1)   dbg_reg = dut.u_regs.u_ram10.g_any.mem[x];
-      else                                     dbg_reg = dut.u_regs.u_ram20.g_any.mem[x];
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_q[x] == 2'd0)
+        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_q[x] == 2'd1)
+        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
+      else
+        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
+    end
+  endfunction
+  function [31:0] dbg_reg_last;  // ... of the last lane
+    input integer c;
+    input [31:0]  r;
+    integer x;
+    begin
+      x = c*(1 << IW) + r;
+      if (r >= NUM_REGS)                       dbg_reg_last = 32'd0;
+      else if (dut.g_lane[NL-1].u_lane.u_regs.lvt_q[x] == 2'd0)
+        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
+      else if (dut.g_lane[NL-1].u_lane.u_regs.lvt_q[x] == 2'd1)
+        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
+      else
+        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];
     end
   endfunction
 
@@ -283,15 +314,18 @@ module tb_fp3 #(
   wire [8*4-1:0] dbg_op        = dbg_issue ? mnemonic(dbg_opc) : "";
   real       dbg_add_real, dbg_mul_real, dbg_mov_real, dbg_v_real, dbg_s_real;
   reg [31:0] dbg_v, dbg_s;         // the .out registers v and s of context 0
+  reg [31:0] dbg_v_last, dbg_s_last;   // ... of its last lane
   always @(*) begin
-    dbg_add_real = f32_real(tr_add_data);
-    dbg_mul_real = f32_real(tr_mul_data);
-    dbg_mov_real = f32_real(tr_mov_data);
+    dbg_add_real = f32_real(tr_add_data[31:0]);
+    dbg_mul_real = f32_real(tr_mul_data[31:0]);
+    dbg_mov_real = f32_real(tr_mov_data[31:0]);
   end
   always @(posedge clk) begin      // after the edge, like the register file
     #1;
     dbg_v = dbg_reg(0, run[R_REG_V]);
     dbg_s = dbg_reg(0, run[R_REG_S]);
+    dbg_v_last = dbg_reg_last(0, run[R_REG_V]);
+    dbg_s_last = dbg_reg_last(0, run[R_REG_S]);
     dbg_v_real = f32_real(dbg_v);
     dbg_s_real = f32_real(dbg_s);
   end
@@ -305,8 +339,8 @@ module tb_fp3 #(
   integer endis_total = 0, cyc_first = 0, cyc_last = 0;
   integer contexts;                // contexts run
   reg         started = 1'b0;
-  reg [31:0]  cur     [0:2*NC-1];  // latest v (2c), s (2c+1) of context c
-  integer     next_k  [0:2*NC-1];  // next integration to finalise
+  reg [31:0]  cur     [0:2*NC*NL-1];  // latest v, s of context c, lane l: [(2c + w) NL + l]
+  integer     next_k  [0:2*NC*NL-1];  // next integration to finalise
   integer     endis   [0:NC-1];    // endi issued per context
   reg [31:0]  tagq    [0:4*FIFO_DEPTH-1];  // unit u: u*FIFO_DEPTH ..
   integer     tag_head [0:3];
@@ -320,25 +354,30 @@ module tb_fp3 #(
     end
   endtask
 
-  // Result w (0 v, 1 s) of context c after integrations next_k .. upto-1
-  // is its latest value.
+  // Result w (0 v, 1 s) of context c, lane l after integrations
+  // next_k .. upto-1 is its latest value.
   task finalise;
     input integer c;
+    input integer l;
     input integer w;
     input integer upto;
     reg [31:0] want;
     integer i2;
     begin
-      i2 = 2*c + w;
+      i2 = (2*c + w) * NL + l;
       while (next_k[i2] < upto && next_k[i2] <= run[R_NCHECK]) begin
         want = expect_[NUM_REGS + 2*(next_k[i2]-1) + w];
         checked = checked + 1;
         if (cur[i2] !== want) begin
           mismatches = mismatches + 1;
           errors = errors + 1;
-          if (mismatches <= MAX_REPORT)
+          if (mismatches <= MAX_REPORT && NL == 1)
             $display("MISMATCH: context %0d, integration %0d: %s = %h (%g), expected %h (%g)",
                      c, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
+                     f32_real(want));
+          else if (mismatches <= MAX_REPORT)
+            $display("MISMATCH: context %0d, lane %0d, integration %0d: %s = %h (%g), expected %h (%g)",
+                     c, l, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
                      f32_real(want));
         end
         next_k[i2] = next_k[i2] + 1;
@@ -346,13 +385,13 @@ module tb_fp3 #(
     end
   endtask
 
-  task write_back;  // a result leaves unit u (1 add, 2 mul, 3 move)
+  task write_back;  // a result leaves unit u (1 add, 2 mul, 3 move), every lane
     input integer u;
     input [5:0]   ctx;
     input [7:0]   r;
-    input [31:0]  value;
+    input [32*NL-1:0] value;
     reg [31:0] tag;
-    integer w;
+    integer w, l;
     begin
       if (tag_cnt[u] == 0) begin
         fail_msg("write-back without an issue");
@@ -367,10 +406,11 @@ module tb_fp3 #(
                    tag >> TAG_CTX, run_cycle);
         end else begin
           for (w = 0; w < 2; w = w + 1)
-            if ({24'd0, r} == run[R_REG_V + w]) begin
-              finalise(ctx, w, tag & ((32'd1 << TAG_CTX) - 1));
-              cur[2*ctx + w] = value;
-            end
+            if ({24'd0, r} == run[R_REG_V + w])
+              for (l = 0; l < NL; l = l + 1) begin
+                finalise(ctx, l, w, tag & ((32'd1 << TAG_CTX) - 1));
+                cur[(2*ctx + w) * NL + l] = value[32*l +: 32];
+              end
         end
       end
     end
@@ -488,7 +528,7 @@ module tb_fp3 #(
   endtask
 
   // ---- the test --------------------------------------------------------------
-  integer i, u, c;
+  integer i, u, c, l;
   reg [31:0] rd, status, cycles_lo, stalls_lo, issued_want;
   reg [63:0] w;
   initial begin
@@ -525,10 +565,11 @@ module tb_fp3 #(
     need_file({dir, "/expected.hex"});
     $readmemh({dir, "/expected.hex"}, expect_, 0, NUM_REGS + 2*run[R_NCHECK] - 1);
     for (c = 0; c < NC; c = c + 1)
-      for (u = 0; u < 2; u = u + 1) begin
-        cur[2*c + u] = run[R_REG_V + u] < NUM_REGS ? init[run[R_REG_V + u]] : 32'd0;
-        next_k[2*c + u] = 1;
-      end
+      for (u = 0; u < 2; u = u + 1)
+        for (l = 0; l < NL; l = l + 1) begin
+          cur[(2*c + u) * NL + l] = run[R_REG_V + u] < NUM_REGS ? init[run[R_REG_V + u]] : 32'd0;
+          next_k[(2*c + u) * NL + l] = 1;
+        end
     if (!$value$plusargs("steps=%d", steps_run)) steps_run = run[R_STEPS];
     issued_want = run[R_ISSUED] * contexts;
     if (!$value$plusargs("watchdog=%d", watchdog_limit))
@@ -548,8 +589,8 @@ module tb_fp3 #(
     host_read(HR_INFO0, rd);
     expect_eq("INFO0", rd, {IMEM_DEPTH[15:0], NUM_REGS[15:0]});
     host_read(HR_INFO2, rd);
-    // (DIV_LATENCY 8, HAS_SIGN 1, HAS_SQRT 0, HAS_DIV 0: fp3_top's defaults)
-    expect_eq("INFO2", rd, {2'd0, 8'd8, 3'b100, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
+    // (HAS_SIGN 1, HAS_SQRT 0, HAS_DIV 0: fp3_top's defaults)
+    expect_eq("INFO2", rd, {NL[7:0], 2'd0, 3'b100, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
 
     // program (every entry), registers of each context, steps, start
     for (i = 0; i < IMEM_DEPTH; i = i + 1) begin
@@ -559,15 +600,18 @@ module tb_fp3 #(
     end
     for (c = 0; c < contexts; c = c + 1) begin
       host_write(HR_CTX, c);
-      for (i = 0; i < NUM_REGS; i = i + 1) host_write(HR_REG_BASE + i[11:0], init[i]);
+      for (l = 0; l < NL; l = l + 1) begin
+        host_write(HR_LANE, l);
+        for (i = 0; i < NUM_REGS; i = i + 1) host_write(HR_REG_BASE + i[11:0], init[i]);
+      end
     end
     host_write(HR_CONTEXTS, contexts);
     host_write(HR_STEPS, steps_run);
     host_read(HR_STEPS, rd);
     expect_eq("STEPS read back", rd, steps_run);
     if (wave != 0) $dumpon;
-    $display("tb_fp3: %0d program words, %0d context(s) of %0d registers, STEPS %0d, ADD_LATENCY %0d, MUL_LATENCY %0d; START at t = %0t ns",
-             run[R_NWORDS], contexts, NUM_REGS, steps_run, ADD_LATENCY, MUL_LATENCY, $time);
+    $display("tb_fp3: %0d program words, %0d context(s) x %0d lane(s) of %0d registers, STEPS %0d, ADD_LATENCY %0d, MUL_LATENCY %0d; START at t = %0t ns",
+             run[R_NWORDS], contexts, NL, NUM_REGS, steps_run, ADD_LATENCY, MUL_LATENCY, $time);
     host_write(HR_CTRL, CTRL_START);
     started = 1'b1;
 
@@ -576,7 +620,8 @@ module tb_fp3 #(
     while (running) @(posedge clk);
     #1;
     for (c = 0; c < contexts; c = c + 1)
-      for (u = 0; u < 2; u = u + 1) finalise(c, u, run[R_NCHECK] + 1);
+      for (l = 0; l < NL; l = l + 1)
+        for (u = 0; u < 2; u = u + 1) finalise(c, l, u, run[R_NCHECK] + 1);
     for (u = 1; u < 4; u = u + 1)
       if (tag_cnt[u] != 0) begin
         errors = errors + 1;
@@ -586,8 +631,11 @@ module tb_fp3 #(
     // status, counters, registers
     host_read(HR_ISSUED_LO, rd);
     expect_eq("ISSUED", rd, issued_want);
-    host_read(HR_FLAGS, rd);
-    expect_eq("FLAGS", rd, run[R_FLAGS]);
+    for (l = 0; l < NL; l = l + 1) begin   // (of context CTX, each lane)
+      host_write(HR_LANE, l);
+      host_read(HR_FLAGS, rd);
+      expect_eq("FLAGS", rd, run[R_FLAGS]);
+    end
     host_read(HR_CYCLES_LO, cycles_lo);
     host_read(HR_STALLS_LO, stalls_lo);
     expect_eq("CYCLES vs the trace", cycles_lo, run_cycle);
@@ -607,12 +655,19 @@ module tb_fp3 #(
       end
       host_read(HR_STEPS_DONE, rd);
       expect_eq("STEPS_DONE", rd, run[R_STEPS_DONE]);
-      for (i = 0; i < NUM_REGS; i = i + 1) begin
-        host_read(HR_REG_BASE + i[11:0], rd);
-        if (rd !== expect_[i]) begin
-          errors = errors + 1;
-          $display("ERROR: context %0d: r%0d = %h (%g) at the end, expected %h (%g)", c, i, rd,
-                   f32_real(rd), expect_[i], f32_real(expect_[i]));
+      for (l = 0; l < NL; l = l + 1) begin
+        host_write(HR_LANE, l);
+        for (i = 0; i < NUM_REGS; i = i + 1) begin
+          host_read(HR_REG_BASE + i[11:0], rd);
+          if (rd !== expect_[i]) begin
+            errors = errors + 1;
+            if (NL == 1)
+              $display("ERROR: context %0d: r%0d = %h (%g) at the end, expected %h (%g)",
+                       c, i, rd, f32_real(rd), expect_[i], f32_real(expect_[i]));
+            else
+              $display("ERROR: context %0d, lane %0d: r%0d = %h (%g) at the end, expected %h (%g)",
+                       c, l, i, rd, f32_real(rd), expect_[i], f32_real(expect_[i]));
+          end
         end
       end
     end
@@ -631,8 +686,8 @@ module tb_fp3 #(
     else
       $display("tb_fp3: no Verilator cycle count for this configuration: cycles not compared");
     if (errors == 0) begin
-      $display("PASS: tb_fp3: %0d context(s) x %0d integrations, v and s bit-exact after each (%0d values), %0d registers each, status and counters as expected",
-               contexts, run[R_STEPS_DONE], checked, NUM_REGS);
+      $display("PASS: tb_fp3: %0d context(s) x %0d integrations, v and s bit-exact after each (%0d values), %0d registers each, status and counters as expected, %0d lane(s) per context",
+               contexts, run[R_STEPS_DONE], checked, NUM_REGS, NL);
       finish(0);
     end else begin
       $display("FAIL: tb_fp3: %0d errors (%0d v/s mismatches in %0d values)", errors, mismatches, checked);

@@ -269,11 +269,12 @@ static void test_id_info(void **state) {
   assert_int_equal(info0 >> 16, FP3_DEFAULT_IMEM_DEPTH);
   assert_int_equal(info1 & 0xFF, bd->add_latency);
   assert_int_equal((info1 >> 8) & 0xFF, bd->mul_latency);
-  assert_int_equal(info1 >> 16, bd->fmax_pipe << 2); /* ROUND 0, FTZ 0, FMAX_PIPE */
+  assert_int_equal((info1 >> 16) & 7, bd->fmax_pipe << 2); /* ROUND 0, FTZ 0, FMAX_PIPE */
+  assert_int_equal(info1 >> 19, FP3_DEFAULT_DIV_LATENCY);   /* DIV_LATENCY */
   assert_int_equal(info2 & 0xFFFF, bd->num_contexts);
-  /* HAS_ADD, HAS_SUB, HAS_MUL; HAS_DIV 0, HAS_SQRT 0, HAS_SIGN 1; DIV_LATENCY */
+  /* HAS_ADD, HAS_SUB, HAS_MUL; HAS_DIV 0, HAS_SQRT 0, HAS_SIGN 1 */
   assert_int_equal((info2 >> 16) & 0x3F, 0x27);
-  assert_int_equal(info2 >> 22, FP3_DEFAULT_DIV_LATENCY);
+  assert_int_equal(info2 >> 24, 1);          /* NUM_LANES */
   assert_int_equal(rd_ok(&b, FP3_HR_STATUS), 0);
   bus_close(&b);
 }
@@ -700,12 +701,21 @@ static void test_slverr(void **state) {
   /* A context the build does not have: refused, CTX unchanged. */
   assert_int_equal(axil_write(&b, FP3_HR_CTX, num_ctx), RESP_SLVERR);
   assert_int_equal(rd_ok(&b, FP3_HR_CTX), 0);
+  /* ... nor a lane: refused, LANE unchanged; the last lane taken. */
+  unsigned num_lanes = rd_ok(&b, FP3_HR_INFO2) >> 24;
+  assert_true(num_lanes >= 1);
+  assert_int_equal(axil_write(&b, FP3_HR_LANE, num_lanes), RESP_SLVERR);
+  assert_int_equal(axil_write(&b, FP3_HR_LANE, 0xFFFFFFFFu), RESP_SLVERR);
+  assert_int_equal(rd_ok(&b, FP3_HR_LANE), 0);
+  assert_int_equal(axil_write(&b, FP3_HR_LANE, num_lanes - 1), RESP_OKAY);
+  assert_int_equal(rd_ok(&b, FP3_HR_LANE), num_lanes - 1);
+  assert_int_equal(axil_write(&b, FP3_HR_LANE, 0), RESP_OKAY);
   /* Byte addresses: the word address times 4; byte offsets ignored. */
   axi_rd rr = {BYTE(FP3_HR_ID) + 2, 0, 99};
   axi_do(&b, NULL, 0, &rr, 1);
   assert_int_equal(rr.data, FP3_ID_VALUE);
 
-  /* While running: STEPS, CONTEXTS, CTX, registers and program are
+  /* While running: STEPS, CONTEXTS, CTX, LANE, registers and program are
    * refused, CTRL is not. */
   char *errors = NULL;
   fp3_image img;
@@ -723,6 +733,7 @@ static void test_slverr(void **state) {
   assert_int_equal(axil_write(&b, FP3_HR_STEPS, 5), RESP_SLVERR);
   assert_int_equal(axil_write(&b, FP3_HR_CONTEXTS, 2), RESP_SLVERR);
   assert_int_equal(axil_write(&b, FP3_HR_CTX, 0), RESP_SLVERR);
+  assert_int_equal(axil_write(&b, FP3_HR_LANE, 0), RESP_SLVERR);
   assert_int_equal(axil_write(&b, FP3_HR_IMEM_BASE, 0), RESP_SLVERR);
   assert_int_equal(axil_write(&b, FP3_HR_IMEM_BASE + 1, 0), RESP_SLVERR);
   assert_int_equal(axil_write(&b, FP3_HR_CTRL, FP3_CTRL_START), RESP_OKAY);

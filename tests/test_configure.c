@@ -153,10 +153,10 @@ static void test_derive_scenes(void **state) {
   static const struct {
     const char *path, *line;
   } cases[] = {
-      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
-      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
       {"scenes/harbour.scene",
-       "NUM_CONTEXTS=4 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+       "NUM_CONTEXTS=4 NUM_LANES=8 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
     fp3_scene sc;
@@ -200,13 +200,19 @@ static void test_derive_scenes(void **state) {
   o.context_per_object = 1;
   r = configure(&sc, &o);
   assert_int_equal(r.cfg.num_contexts, 64);
+  assert_int_equal(r.cfg.num_lanes, 2);   /* ceil(100 / 64) */
   o.context_per_object = 0;
   r = configure(&sc, &o);
   assert_int_equal(r.cfg.num_contexts, 4);
+  assert_int_equal(r.cfg.num_lanes, FP3_CONFIGURE_MAX_LANES);   /* ceil(100 / 4) = 25, capped */
+  o.max_lanes = 5;
+  r = configure(&sc, &o);
+  assert_int_equal(r.cfg.num_lanes, 5);
+  o.max_lanes = FP3_CONFIGURE_MAX_LANES;
   /* euler: 6 instructions, 14 cycles: 3 contexts; 7 registers */
   o.integrator = "euler";
   r = configure(&sc, &o);
-  expect_line(&r, "NUM_CONTEXTS=3 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1");
+  expect_line(&r, "NUM_CONTEXTS=3 NUM_LANES=16 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1");
 
   /* bad options and input */
   char msg[300];
@@ -274,6 +280,7 @@ static void test_sized_rtl(void **state) {
   assert_int_equal(fp3_configure(&sc, "scenes/drift.scene", &o, &r, &c, msg, sizeof msg), 0);
   /* the model reports the derived parameters */
   assert_int_equal(e->config.num_contexts, r.cfg.num_contexts);
+  assert_int_equal(e->config.num_lanes, r.cfg.num_lanes);
   assert_int_equal(e->config.num_regs, r.cfg.num_regs);
   assert_int_equal(e->config.has_add, r.cfg.has_add);
   assert_int_equal(e->config.has_sub, 0);
@@ -293,7 +300,8 @@ static void test_sized_rtl(void **state) {
                       sizeof msg))
     fail_msg("%s", msg);
   assert_int_equal(res.objects, 8);
-  assert_int_equal(res.batches, 2);
+  assert_int_equal(res.batches, 1);   /* 4 contexts x 2 lanes: all 8 at once */
+  assert_int_equal(res.lanes, 2);
   assert_int_equal(res.error, FP3_ERR_NONE);
   assert_int_equal(res.mismatches, 0);
   fp3_objects_result_free(&res);

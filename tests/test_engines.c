@@ -34,7 +34,7 @@
 #include "../sim/fp3_model.h"
 
 /* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */
-extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3, fp3_model_fmax;
+extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3, fp3_model_fmax, fp3_model_l4;
 
 #define MAX_REGS 256
 
@@ -324,8 +324,8 @@ static void test_ship_rk4_cycles(void **state) {
 /* A harbour frame by frame (frames.h): awake, sleeping in the program,
  * and sleeping with the host skipping objects at rest, with a wake; every
  * object equals the RK4 golden model after every frame in each. */
-static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
-                        uint32_t wake_frame, fp3_frames_result *res) {
+static void run_harbour_on(fp3_engine *e, const char *program, const fp3_integrator *ig,
+                           int rest_skip, uint32_t wake_frame, fp3_frames_result *res) {
   fp3_image img;
   char *errors = NULL, msg[256];
   fp3_image_init(&img);
@@ -333,11 +333,42 @@ static void run_harbour(const char *program, const fp3_integrator *ig, int rest_
   fp3_scene sc;
   assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &sc), 0);
   fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f, 0};
-  if (fp3_run_frames(rtl, &img, &sc, ig, rtl->config.mode, &o, res, msg, sizeof msg))
+  if (fp3_run_frames(e, &img, &sc, ig, e->config.mode, &o, res, msg, sizeof msg))
     fail_msg("%s", msg);
   fp3_scene_free(&sc);
   assert_int_equal(res->error, FP3_ERR_NONE);
   assert_int_equal(res->object_frames + res->skipped, 48 * 40);
+}
+
+static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
+                        uint32_t wake_frame, fp3_frames_result *res) {
+  run_harbour_on(rtl, program, ig, rest_skip, wake_frame, res);
+}
+
+/* fp3 frames on the lanes build (8 contexts x 4 lanes): the awake
+ * objects packed into 32 slots a batch; the sleeping program's beq is
+ * taken only where every lane of a context sleeps, and every object stays
+ * bit-exact with its golden model in every frame either way. */
+static void test_frames_lanes(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_l4, NULL);
+  assert_non_null(e);
+  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
+  fp3_frames_result awake, beq, rest;
+  run_harbour_on(e, "programs/ship_rk4.s", rk4, 0, 0, &awake);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 0, 0, &beq);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 1, 0, &rest);
+  assert_int_equal(awake.lanes, 4);
+  assert_int_equal(awake.contexts, 8);
+  assert_int_equal(awake.mismatches, 0);
+  assert_int_equal(beq.mismatches, 0);
+  assert_int_equal(rest.mismatches, 0);
+  assert_int_equal(awake.batches, 2 * 40);   /* 48 objects in slots of 32 */
+  assert_true(rest.issued < awake.issued && rest.skipped > 0);
+  print_message("harbour of 48 on 8 x 4 lanes, 40 frames: %.1f, %.1f, %.1f cycles per frame "
+                "(awake, beq, beq + rest)\n", awake.cycles / 40.0, beq.cycles / 40.0,
+                rest.cycles / 40.0);
+  fp3_engine_free(e);
 }
 
 static void test_frames_sleeping(void **state) {
@@ -831,14 +862,17 @@ static void on_ctx_endi(void *ctx, unsigned context, uint32_t integ, uint64_t cy
   on_endi(&m->c[context], integ, cycle);
 }
 
-/* Run `contexts` contexts, context k starting from init[k]; per-context
- * captures hold the context's status, the totals go to *st. */
+/* Run `contexts` object slots (engine.h: contexts x lanes), slot k
+ * starting from init[k]; per-slot captures hold the slot's status, the
+ * totals go to *st. */
 static void run_contexts_on(fp3_engine *e, const fp3_image *img, uint32_t (*init)[MAX_REGS],
                             unsigned contexts, uint32_t steps, multi_capture *m,
                             fp3_status *st) {
   memset(m, 0, sizeof *m);
   /* A bad count (tested) still reads back the contexts that exist. */
-  m->contexts = contexts < e->config.num_contexts ? contexts : e->config.num_contexts;
+  const unsigned slots = fp3_config_slots(&e->config);
+  assert_true(slots <= FP3_MAX_CONTEXTS);   /* (the captures' size) */
+  m->contexts = contexts < slots ? contexts : slots;
   if (fp3_engine_load(e, img->words, img->n) != 0) fail_msg("%s", fp3_engine_error(e));
   for (unsigned k = 0; k < m->contexts; k++)
     for (unsigned r = 0; r < e->config.num_regs; r++)
@@ -868,16 +902,19 @@ static void multi_free(multi_capture *m) {
  * the build for clock rate (8 contexts, ADD_LATENCY 9, MUL_LATENCY 10,
  * FMAX_PIPE: the full announcement lead; mk/rtl.mk): the
  * FMAX_PIPE scheduler's contexts 3 to 7 run only there (a mutation of
- * context 3's hazard compares passed every test before it was here). */
+ * context 3's hazard compares passed every test before it was here);
+ * and the lanes build (8 contexts x 4 lanes, the default latencies). */
 static const struct {
   const fp3_model_ops *model;  /* NULL: the default build */
   unsigned contexts;           /* what the build must report */
+  unsigned lanes;
   int fmax_pipe;
 } context_builds[] = {
-  {&fp3_model_nc1, 1, 0},
-  {&fp3_model_nc3, 3, 1},
-  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 0},
-  {&fp3_model_fmax, 8, 1},
+  {&fp3_model_nc1, 1, 1, 0},
+  {&fp3_model_nc3, 3, 1, 1},
+  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0},
+  {&fp3_model_fmax, 8, 1, 1},
+  {&fp3_model_l4, 8, 4, 0},
 };
 #define CONTEXT_BUILDS (int)(sizeof context_builds / sizeof context_builds[0])
 static fp3_engine *context_build(int which) {
@@ -885,10 +922,10 @@ static fp3_engine *context_build(int which) {
   return m ? fp3_engine_rtl_new_model(m, NULL) : fp3_engine_rtl_new(NULL);
 }
 
-/* Different ships in every context: each context bit-exact with the ISS
- * and with its own golden model after every integration; no context
- * starves; with enough contexts an object-step costs about one cycle per
- * instruction of the loop body. */
+/* Different ships in every object slot (context and lane): each bit-exact
+ * with the ISS and with its own golden model after every integration; no
+ * context starves; with enough contexts an object-step costs about one
+ * cycle per instruction of the loop body, divided by the lanes. */
 static void test_many_ships(void **state) {
   (void)state;
   fp3_image img;
@@ -901,9 +938,12 @@ static void test_many_ships(void **state) {
   for (int which = 0; which < CONTEXT_BUILDS; which++) {
     fp3_engine *er = context_build(which);
     assert_non_null(er);
-    unsigned nctx = er->config.num_contexts;
-    assert_int_equal(nctx, context_builds[which].contexts);
+    assert_int_equal(er->config.num_contexts, context_builds[which].contexts);
+    assert_int_equal(er->config.num_lanes, context_builds[which].lanes);
     assert_int_equal(er->config.fmax_pipe, context_builds[which].fmax_pipe);
+    fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
+    assert_non_null(is);
+    unsigned nctx = fp3_config_slots(&er->config);
     memset(init, 0, sizeof init);
     for (unsigned k = 0; k < nctx; k++) {
       const ship_case *sc = &ship_cases[k % NCASES];
@@ -914,14 +954,14 @@ static void test_many_ships(void **state) {
     }
     fp3_status sa, sb;
     run_contexts_on(er, &img, init, nctx, steps, &ma, &sa);
-    run_contexts_on(iss, &img, init, nctx, steps, &mb, &sb);
+    run_contexts_on(is, &img, init, nctx, steps, &mb, &sb);
     assert_int_equal(sa.any_error, 0);
     assert_int_equal(sa.flags, sb.flags);
     assert_int_equal(sa.issued, sb.issued);
     uint64_t first_done = UINT64_MAX, last_done = 0;
     for (unsigned k = 0; k < nctx; k++) {
       char what[64];
-      snprintf(what, sizeof what, "%u contexts, context %u", nctx, k);
+      snprintf(what, sizeof what, "%u objects, object %u", nctx, k);
       assert_int_equal(ma.c[k].st.steps_done, steps);
       compare_captures(&ma.c[k], &mb.c[k], what);
       /* golden model of this context's ship */
@@ -947,22 +987,26 @@ static void test_many_ships(void **state) {
      * number of contexts). */
     double per_object_step = (double)sa.cycles / ((double)nctx * steps);
     assert_true((double)(last_done - first_done) <= per_object_step * nctx);
-    print_message("%u contexts: %.2f cycles per object-step, %llu stalls\n", nctx,
-                  per_object_step, (unsigned long long)sa.stalls);
-    if (nctx >= 8 && !er->config.fmax_pipe) {
-      /* Issue bound: 31 instructions per body, one issued per cycle (the
-       * build for clock rate's latencies are longer than 8 contexts hide:
-       * 38.02 cycles per object-step, docs/pipeline.md "Many objects"). */
+    print_message("%u contexts x %u lanes: %.2f cycles per object-step, %llu stalls\n",
+                  er->config.num_contexts, er->config.num_lanes, per_object_step,
+                  (unsigned long long)sa.stalls);
+    if (er->config.num_contexts >= 8 && !er->config.fmax_pipe) {
+      /* Issue bound: 31 instructions per body, one issued per cycle for
+       * all lanes of a context (the build for clock rate's latencies are
+       * longer than 8 contexts hide: 38.02 cycles per object-step,
+       * docs/pipeline.md "Many objects"). */
       double bound = (double)sa.issued / ((double)nctx * steps);
       assert_true(per_object_step <= 1.1 * bound);
     }
     multi_free(&ma);
     multi_free(&mb);
+    fp3_engine_free(is);
     fp3_engine_free(er);
   }
 }
 
-/* Hazard-dense random programs, every context with its own values. */
+/* Hazard-dense random programs, every object slot (context and lane)
+ * with its own values: the lanes of a context disagree on most beqs. */
 static void test_random_programs_contexts(void **state) {
   (void)state;
   static multi_capture ma, mb;
@@ -970,8 +1014,14 @@ static void test_random_programs_contexts(void **state) {
   for (int which = 0; which < CONTEXT_BUILDS; which++) {
     fp3_engine *er = context_build(which);
     assert_non_null(er);
-    unsigned nctx = er->config.num_contexts;
-    for (int p = 0; p < 300; p++) {
+    fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
+    assert_non_null(is);
+    unsigned nctx = fp3_config_slots(&er->config);
+    /* make bench-cosim's count on the lanes build, else 300 a build */
+    const long programs = er->config.num_lanes > 1 && random_programs > 10000 ? random_programs
+                                                                               : 300;
+    for (long p = 0; p < programs; p++) {
+      if (p && p % 100000 == 0) print_message("%ld random programs on lanes\n", p);
       uint64_t seed = rng_state;
       fp3_image img;
       random_program(&img, 2 + (unsigned)(rnd() % 5), &er->config);
@@ -982,18 +1032,19 @@ static void test_random_programs_contexts(void **state) {
       uint32_t steps = 1 + (uint32_t)(rnd() % 4);
       fp3_status sa, sb;
       run_contexts_on(er, &img, init, contexts, steps, &ma, &sa);
-      run_contexts_on(iss, &img, init, contexts, steps, &mb, &sb);
+      run_contexts_on(is, &img, init, contexts, steps, &mb, &sb);
       assert_int_equal(sa.flags, sb.flags);
       assert_int_equal(sa.issued, sb.issued);
       for (unsigned k = 0; k < contexts; k++) {
-        char what[96];
-        snprintf(what, sizeof what, "random program %d on %u contexts (seed 0x%016llx), context %u",
-                 p, nctx, (unsigned long long)seed, k);
+        char what[112];
+        snprintf(what, sizeof what, "random program %ld on %u x %u slots (seed 0x%016llx), slot %u",
+                 p, er->config.num_contexts, er->config.num_lanes, (unsigned long long)seed, k);
         compare_captures(&ma.c[k], &mb.c[k], what);
       }
       multi_free(&ma);
       multi_free(&mb);
     }
+    fp3_engine_free(is);
     fp3_engine_free(er);
   }
 }
@@ -1029,6 +1080,53 @@ static void test_host_map_reads(void **state) {
     }
     cfg[i].ops->destroy(m);
   }
+}
+
+/* LANE on the lanes build (8 contexts x 4 lanes), straight at the host
+ * port: INFO2 reports the lanes; LANE takes 0 .. 3 and ignores 4 and more;
+ * the register window writes and reads only the lane LANE names (and the
+ * context CTX names); the C host refuses a slot beyond contexts x lanes. */
+static void test_host_lane(void **state) {
+  (void)state;
+  const fp3_model_ops *ops = &fp3_model_l4;
+  fp3_model *m = ops->create(NULL);
+  assert_non_null(m);
+  fp3_model_in in = {1, 0, 0};
+#define HOST_WRITE(a, v) (in.addr = (uint16_t)(a), in.wdata = (uint32_t)(v), ops->cycle(m, &in, NULL))
+  assert_int_equal(model_read(ops, m, 1, FP3_HR_INFO2) >> 24, 4);
+  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 0);
+  HOST_WRITE(FP3_HR_LANE, 3);
+  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  HOST_WRITE(FP3_HR_LANE, 4);
+  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  HOST_WRITE(FP3_HR_LANE, 0xFFFFFFFFu);
+  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  for (unsigned c = 0; c < 8; c++)
+    for (unsigned l = 0; l < 4; l++) {
+      HOST_WRITE(FP3_HR_CTX, c);
+      HOST_WRITE(FP3_HR_LANE, l);
+      HOST_WRITE(FP3_HR_REG_BASE + 5, 0x1000u * c + l + 1);
+    }
+  for (unsigned c = 0; c < 8; c++)
+    for (unsigned l = 0; l < 4; l++) {
+      HOST_WRITE(FP3_HR_CTX, c);
+      HOST_WRITE(FP3_HR_LANE, l);
+      assert_int_equal(model_read(ops, m, 1, FP3_HR_REG_BASE + 5), 0x1000u * c + l + 1);
+      assert_int_equal(model_read(ops, m, 1, FP3_HR_REG_BASE + 4), 0);
+    }
+#undef HOST_WRITE
+  ops->destroy(m);
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_l4, NULL);
+  assert_non_null(e);
+  assert_int_equal(fp3_config_slots(&e->config), 32);
+  uint32_t v;
+  assert_int_equal(fp3_engine_write_ctx_reg(e, 31, 0, 1), 0);
+  assert_int_equal(fp3_engine_read_ctx_reg(e, 31, 0, &v), 0);
+  assert_int_equal(v, 1);
+  assert_int_not_equal(fp3_engine_write_ctx_reg(e, 32, 0, 1), 0);
+  assert_non_null(strstr(fp3_engine_error(e), "slot 32"));
+  assert_int_not_equal(fp3_engine_read_ctx_reg(e, 32, 0, &v), 0);
+  fp3_engine_free(e);
 }
 
 /* START in the cycle right after the last program write, straight at the
@@ -1176,6 +1274,7 @@ int main(void) {
       cmocka_unit_test(test_ship_rk4_sleep),
       cmocka_unit_test(test_sleep_at_rest),
       cmocka_unit_test(test_frames_sleeping),
+      cmocka_unit_test(test_frames_lanes),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
       cmocka_unit_test(test_independent_ops_spacing),
@@ -1193,6 +1292,7 @@ int main(void) {
       cmocka_unit_test(test_bad_contexts),
       cmocka_unit_test(test_errors_every_context),
       cmocka_unit_test(test_host_map_reads),
+      cmocka_unit_test(test_host_lane),
       cmocka_unit_test(test_start_after_program),
   };
   return cmocka_run_group_tests(tests, setup, teardown);

@@ -62,6 +62,11 @@ start=$(date +%s)
 [ $rc -eq 0 ] && ok || { bad "fusesoc sim exited $rc"; tail -20 "$T/sim.log"; }
 grep -q "^PASS: tb_fp3: 1 context(s) x 2 integrations" "$T/sim.log" && ok || bad "fusesoc sim: no PASS"
 echo "fusesoc sim: $(( $(date +%s) - start ))s"
+# ... with lanes (NUM_LANES, a parameter of the core): every lane checked
+"${FS[@]}" --target sim fp3 --dir "$T/wave" --NUM_LANES 2 >"$T/sim_lanes.log" 2>&1; rc=$?
+[ $rc -eq 0 ] && ok || { bad "fusesoc sim --NUM_LANES 2 exited $rc"; tail -20 "$T/sim_lanes.log"; }
+grep -q "^PASS: tb_fp3: 1 context(s) x 2 integrations.*2 lane(s) per context" "$T/sim_lanes.log" \
+  && ok || bad "fusesoc sim --NUM_LANES 2: no PASS with 2 lanes"
 # a FAIL of the testbench fails the target
 cp -r "$T/wave" "$T/wave_bad"
 line=$(grep -n -- '// 1: v' "$T/wave/expected.hex" | head -1)    # v after integration 1

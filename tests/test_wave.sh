@@ -102,6 +102,31 @@ has "$T/nodir.log" "FAIL: tb_fp3: cannot open $T/nowhere/run.hex" "missing files
 [ $rc -eq 0 ] && ok || bad "+contexts=4: vvp exited $rc"
 has "$T/ctx.log" "^PASS: tb_fp3: 4 context(s) x 3 integrations, v and s bit-exact after each (24 values)" "+contexts=4" && ok
 
+# ---- lanes: 2 contexts x 3 lanes, every lane checked; the sleeping
+# program's beq taken in every lane (the same scene in each).  The
+# testbench is compiled here with the lane parameters (make wave
+# NUM_LANES=3 would rebuild build/fp3's Verilated models with them) and
+# runs the inputs generated above. ------------------------------------------
+LANES_VVP=$T/tb_lanes.vvp
+iverilog -g2005 -Wall -Irtl -y rtl -s tb_fp3 -Ptb_fp3.NUM_CONTEXTS=2 -Ptb_fp3.NUM_LANES=3 \
+  -c "$W/iverilog.cmd" -o "$LANES_VVP" sim/tb_fp3.v >"$T/lanes_iv.log" 2>&1 \
+  && ok || { bad "iverilog NUM_LANES=3"; tail -5 "$T/lanes_iv.log"; }
+vvp -n "$LANES_VVP" +dir="$W" +contexts=2 >"$T/lanes.log" 2>&1 || bad "NUM_LANES=3: vvp failed"
+has "$T/lanes.log" "^PASS: tb_fp3: 2 context(s) x 3 integrations, v and s bit-exact after each (36 values).*3 lane(s) per context" \
+  "NUM_LANES=3" && ok
+vvp -n "$LANES_VVP" +dir="$T/wsleep" >"$T/lsleep.log" 2>&1 || bad "NUM_LANES=3 (sleeping) failed"
+has "$T/lsleep.log" "^tb_fp3: first integration 129 cycles, later 14.00 per integration" \
+  "NUM_LANES=3 (sleeping)" && ok
+# a corrupted expected value fails in every lane (lane 2 reported)
+cp -r "$W" "$T/wlbad"
+line=$(grep -n -- '// 3: v' "$W/expected.hex" | head -1)    # v after integration 3
+n=${line%%:*}; line=${line#*:}; word=${line%% *}
+sed "${n}s/^$word/$(printf '%08x' $(( 16#$word ^ 1 )))/" "$W/expected.hex" >"$T/wlbad/expected.hex"
+cmp -s "$W/expected.hex" "$T/wlbad/expected.hex" && bad "could not corrupt expected.hex"
+vvp -n "$LANES_VVP" +dir="$T/wlbad" +contexts=2 >"$T/lbad.log" 2>&1; rc=$?
+[ $rc -ne 0 ] && ok || bad "NUM_LANES=3, a corrupted value: vvp exited 0"
+has "$T/lbad.log" "MISMATCH: context 1, lane 2, integration 3" "NUM_LANES=3, corrupted" && ok
+
 # ---- FST -----------------------------------------------------------------
 vvp -n "$W/tb_fp3.vvp" -fst +dir="$W" +wave="$T/fp3.fst" >"$T/fst.log" 2>&1; rc=$?
 [ $rc -eq 0 ] && [ -s "$T/fst.log" ] && [ -s "$T/fp3.fst" ] && ok || bad "vvp -fst: exit $rc, no FST"

@@ -9,10 +9,12 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "engine.h"
 #include "image.h"
 #include "integrators.h"
+#include "objects.h"
 
 /* Result of one integrator program run on an engine. */
 typedef struct fp3_irun {
@@ -91,5 +93,18 @@ typedef struct fp3_bench_opts {
  * describe no valid sweep (from > to, an end time that is not a whole
  * number of steps). */
 int fp3_bench_run(const fp3_bench_opts *o);
+
+/* What the throughput benchmarks (bench_parallel, bench_chip) run: the
+ * paper's RK4 ship program, programs/ship_rk4.s, assembled into *img, and
+ * the rk4 golden model (*golden, which keeps *store).  Returns 0, or -1
+ * with the assembler's message on stderr. */
+int fp3_bench_ship_rk4(fp3_image *img, fp3_integ_golden *store, fp3_golden_ref *golden);
+
+/* A CSV file written whole under a temporary name, PATH.tmp (in tmp, n
+ * bytes), renamed to PATH by fp3_bench_csv_close: a failed run leaves no
+ * half-written PATH.  NULL (perror) if it cannot be opened. */
+FILE *fp3_bench_csv_open(const char *path, char *tmp, size_t n);
+/* Close and rename; 0, or -1 (perror, the temporary removed). */
+int fp3_bench_csv_close(FILE *f, const char *tmp, const char *path);
 
 #endif /* FP3_BENCH_H */

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "asm.h"
+#include "bench.h"
 #include "engine.h"
 #include "integrators.h"
 #include "objects.h"
@@ -50,23 +50,13 @@ int main(int argc, char **argv) {
                 {"nc8", NULL},             {"nc16", &fp3_model_nc16},
                 {"nc32", &fp3_model_nc32}, {"nc64", &fp3_model_nc64}};
   fp3_image img;
-  char *errs = NULL;
-  fp3_image_init(&img);
-  if (fp3_asm_file("programs/ship_rk4.s", &img, &errs)) {
-    fprintf(stderr, "%s", errs ? errs : "assembly failed\n");
-    free(errs);
-    return 2;
-  }
   fp3_integ_golden rk4_store;
-  const fp3_golden_ref rk4 = fp3_golden_of_integrator(&rk4_store, fp3_integrator_find("rk4"));
+  fp3_golden_ref rk4;
+  if (fp3_bench_ship_rk4(&img, &rk4_store, &rk4)) return 2;
   /* Written whole to a temporary name, renamed at the end. */
   char tmp[4200];
-  snprintf(tmp, sizeof tmp, "%s.tmp", csv_path);
-  FILE *csv = fopen(tmp, "w");
-  if (!csv) {
-    perror(tmp);
-    return 1;
-  }
+  FILE *csv = fp3_bench_csv_open(csv_path, tmp, sizeof tmp);
+  if (!csv) return 1;
   fprintf(csv, "num_contexts,add_latency,mul_latency,objects,steps,cycles,cycles_per_object_step,"
                "issued_per_object_step,add_utilization,mul_utilization,golden_mismatches\n");
   printf("%12s %9s %8s %14s %12s %8s %8s\n", "NUM_CONTEXTS", "latencies", "objects",
@@ -107,11 +97,7 @@ int main(int argc, char **argv) {
     }
     fp3_engine_free(e);
   }
-  if (fclose(csv) || rename(tmp, csv_path)) {
-    perror(csv_path);
-    remove(tmp);
-    return 1;
-  }
+  if (fp3_bench_csv_close(csv, tmp, csv_path)) return 1;
   printf("CSV: %s\n", csv_path);
   return rc;
 }

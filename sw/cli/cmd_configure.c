@@ -24,6 +24,7 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 configure SCENE [--integrator NAME] [--literal]\n"
           "                     [--error-budget REL] [--steps N] [--context-per-object]\n"
+          "                     [--max-lanes L]\n"
           "                     [-o FILE] [--json]\n"
           "\n"
           "Derive the RTL parameters of a processor sized to the scene: compile the\n"
@@ -38,6 +39,10 @@ static void usage(FILE *f) {
           "                   of one object's integration / its instructions), at\n"
           "                   most the objects (more objects run in batches);\n"
           "                   --context-per-object: min(objects, 64)\n"
+          "  NUM_LANES        the rest of the scene in flight: ceil(objects /\n"
+          "                   NUM_CONTEXTS), at most L (--max-lanes, default %d;\n"
+          "                   a lane is an adder, a multiplier and a register\n"
+          "                   bank, no scheduler logic)\n"
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
@@ -53,17 +58,19 @@ static void usage(FILE *f) {
           "  --error-budget R relative error a mode may add to RNE's (default 1e-4)\n"
           "  --steps N        integrations of the accuracy check (default 1000)\n"
           "  --context-per-object  NUM_CONTEXTS = min(objects, 64)\n"
+          "  --max-lanes L    NUM_LANES at most L, 1 .. %d (default %d)\n"
           "  -o FILE          write the line to FILE (atomically) instead of stdout\n"
           "  --json           the parameters and the reasons as JSON on stdout\n"
           "\n"
           "Output: one line of make variables, e.g.\n"
-          "  NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0\n"
-          "  HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1\n"
+          "  NUM_CONTEXTS=8 NUM_LANES=2 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1\n"
+          "  HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1\n"
           "and the reason for each parameter on standard error.  `make synth-scene\n"
           "SCENE=FILE` synthesizes the full and the sized build and compares.\n"
           "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget;\n"
           "1 the output could not be written.\n",
-          fp3_compile_integrators());
+          FP3_CONFIGURE_MAX_LANES, fp3_compile_integrators(), FP3_MAX_LANES,
+          FP3_CONFIGURE_MAX_LANES);
 }
 
 static const char *const unit_name[FP3_CONFIGURE_UNITS] = {"add", "sub", "mul", "div", "sqrt",
@@ -85,11 +92,11 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
          o->context_per_object ? "true" : "false", r->contexts_issue);
   printf(", \"make\": ");
   fp3_json_string(stdout, line);
-  printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_REGS\": %u, \"HAS_ADD\": %u, "
-         "\"HAS_SUB\": %u, \"HAS_MUL\": %u, \"HAS_DIV\": %u, \"HAS_SQRT\": %u, "
-         "\"HAS_SIGN\": %u, \"ROUND\": %d, \"FTZ\": %d}",
-         r->cfg.num_contexts, r->cfg.num_regs, r->cfg.has_add, r->cfg.has_sub, r->cfg.has_mul,
-         r->cfg.has_div, r->cfg.has_sqrt, r->cfg.has_sign,
+  printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_LANES\": %u, \"NUM_REGS\": %u, "
+         "\"HAS_ADD\": %u, \"HAS_SUB\": %u, \"HAS_MUL\": %u, \"HAS_DIV\": %u, "
+         "\"HAS_SQRT\": %u, \"HAS_SIGN\": %u, \"ROUND\": %d, \"FTZ\": %d}",
+         r->cfg.num_contexts, r->cfg.num_lanes, r->cfg.num_regs, r->cfg.has_add, r->cfg.has_sub,
+         r->cfg.has_mul, r->cfg.has_div, r->cfg.has_sqrt, r->cfg.has_sign,
          r->cfg.mode.round == FPREF_RTZ, r->cfg.mode.ftz ? 1 : 0);
   printf(", \"unit_pc\": {");
   for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) {
@@ -138,6 +145,11 @@ static void print_reasons(const char *scene, const char *integ, const fp3_config
                     "/ %u instructions) = %u, at most the %zu object%s\n",
             param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0), r->est_later,
             r->body_insns, r->contexts_issue, r->objects, r->objects == 1 ? "" : "s");
+  fprintf(stderr, "  %-16s ceil(%zu object%s / %u contexts), at most %u (--max-lanes): "
+                  "%u object%s in flight\n",
+          param_text("NUM_LANES", c->num_lanes, p0, sizeof p0), r->objects,
+          r->objects == 1 ? "" : "s", c->num_contexts, o->max_lanes,
+          c->num_contexts * c->num_lanes, c->num_contexts * c->num_lanes == 1 ? "" : "s");
   fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
                   "(it names %u; compiled for the default %u it names %u)\n",
           param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
@@ -215,6 +227,14 @@ int fp3_cmd_configure(int argc, char **argv) {
       o.steps = (uint32_t)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
       o.literal = 1;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--max-lanes", &v)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      unsigned long long k;
+      if (fp3_parse_count(v, 1, FP3_MAX_LANES, &k)) {
+        fprintf(stderr, "fp3 configure: --max-lanes '%s': want 1..%d lanes\n", v, FP3_MAX_LANES);
+        return EXIT_USAGE;
+      }
+      o.max_lanes = (unsigned)k;
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
       o.context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {

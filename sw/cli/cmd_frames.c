@@ -201,20 +201,20 @@ int fp3_cmd_frames(int argc, char **argv) {
     printf(", \"scene\": ");
     fp3_json_string(stdout, scene_path ? scene_path : "harbour");
     printf(", \"seed\": %" PRIu64 ", \"objects\": %zu, \"frames\": %u, \"contexts\": %u, "
-           "\"rest_skip\": %s, \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", "
+           "\"lanes\": %u, \"rest_skip\": %s, \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", "
            "\"cycles_per_frame\": %.2f, \"issued_per_frame\": %.2f, "
            "\"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64 ", "
            "\"asleep_at_end\": %zu, \"woken\": %zu, \"host_words_per_frame\": %.1f, "
            "\"fmax_mhz\": %.1f, \"frames_per_second\": %.1f, \"golden_mismatches\": %" PRIu64
            ", \"error\": \"%s\", \"pass\": %s}\n",
-           seed, res.objects, res.frames, res.contexts, o.rest_skip ? "true" : "false",
+           seed, res.objects, res.frames, res.contexts, res.lanes, o.rest_skip ? "true" : "false",
            res.batches, res.cycles, per, (double)res.issued / res.frames, res.object_frames,
            res.skipped, res.asleep_last, res.woken, (double)res.host_words / res.frames, fmax,
            fps, res.mismatches, fp3_error_name(res.error), pass ? "true" : "false");
   } else {
-    printf("fp3 frames: %zu objects (%s), %u frames, %s, %s engine, %u contexts%s\n",
+    printf("fp3 frames: %zu objects (%s), %u frames, %s, %s engine, %u contexts x %u lanes%s\n",
            res.objects, scene_path ? scene_path : "harbour", res.frames, program, engine_name,
-           res.contexts, o.rest_skip ? "" : ", no rest skip");
+           res.contexts, res.lanes, o.rest_skip ? "" : ", no rest skip");
     printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
            res.batches);
     printf("  instructions per frame    %.2f\n", (double)res.issued / res.frames);

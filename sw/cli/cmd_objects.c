@@ -104,8 +104,8 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
              fp3_compiled_stats(comp)->est_cycles_later);
     printf(", \"integrator\": ");
     fp3_json_string(stdout, c->integ_name);
-    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
-           c->steps, res.objects, res.contexts, res.batches);
+    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"lanes\": %u, "
+           "\"batches\": %zu", c->steps, res.objects, res.contexts, res.lanes, res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
            res.cycles, res.issued, res.stalls);
     printf(", \"cycles_per_object_step\": %.9g, \"issued_per_object_step\": %.9g",
@@ -146,9 +146,9 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
              fp3_compiled_stats(comp)->literal_body_insns,
              fp3_compiled_stats(comp)->est_cycles_later);
     printf("\n");
-    printf("scene: %s; %u contexts per batch, %zu batch%s\n\n",
-           c->scene_path ? c->scene_path : "generated (--seed)", res.contexts, res.batches,
-           res.batches == 1 ? "" : "es");
+    printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n",
+           c->scene_path ? c->scene_path : "generated (--seed)", res.contexts, res.lanes,
+           res.batches, res.batches == 1 ? "" : "es");
     printf("  object          T          C          m          v    v exact          s    s exact\n");
     for (size_t i = 0; i < res.objects && i < SHOW_OBJECTS; i++) {
       const fp3_ship_params *o = &sc.objs[i];

@@ -24,14 +24,15 @@ void fp3_configure_defaults(fp3_configure_opts *o) {
   o->budget = 1e-4;
   o->steps = 1000;
   o->context_per_object = 0;
+  o->max_lanes = FP3_CONFIGURE_MAX_LANES;
 }
 
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
   return snprintf(buf, n,
-                  "NUM_CONTEXTS=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u HAS_DIV=%u "
-                  "HAS_SQRT=%u HAS_SIGN=%u ROUND=%d FTZ=%d",
-                  c->num_contexts, c->num_regs, c->has_add, c->has_sub, c->has_mul,
-                  c->has_div, c->has_sqrt, c->has_sign,
+                  "NUM_CONTEXTS=%u NUM_LANES=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u "
+                  "HAS_DIV=%u HAS_SQRT=%u HAS_SIGN=%u ROUND=%d FTZ=%d",
+                  c->num_contexts, c->num_lanes ? c->num_lanes : 1, c->num_regs, c->has_add,
+                  c->has_sub, c->has_mul, c->has_div, c->has_sqrt, c->has_sign,
                   c->mode.round == FPREF_RTZ ? 1 : 0, c->mode.ftz ? 1 : 0);
 }
 
@@ -121,6 +122,10 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
     snprintf(msg, n, "the accuracy check needs at least one integration");
     return -1;
   }
+  if (o->max_lanes < 1 || o->max_lanes > FP3_MAX_LANES) {
+    snprintf(msg, n, "NUM_LANES at most %u: want 1 .. %d lanes", o->max_lanes, FP3_MAX_LANES);
+    return -1;
+  }
   const char *integ = o->integrator ? o->integrator : "rk4";
   fp3_compile_opts co;
   fp3_compile_defaults(&co);
@@ -186,6 +191,10 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   if (nc > FP3_MAX_CONTEXTS) nc = FP3_MAX_CONTEXTS;
   if (nc > sc->n) nc = sc->n;
   r->cfg.num_contexts = (unsigned)nc;
+  /* lanes: the rest of the scene in flight beside the contexts */
+  size_t nl = (sc->n + nc - 1) / nc;
+  if (nl > o->max_lanes) nl = o->max_lanes;
+  r->cfg.num_lanes = (unsigned)nl;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;
   r->cfg.mul_latency = FP3_DEFAULT_MUL_LATENCY;

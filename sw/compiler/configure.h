@@ -27,6 +27,12 @@
  *    opts.context_per_object: one context per object, min(objects, 64),
  *    the whole scene in flight at once (64 contexts are several times the
  *    area of the default 8);
+ *  - NUM_LANES: the lanes that put the whole scene in flight beside those
+ *    contexts, ceil(objects / NUM_CONTEXTS), at most opts.max_lanes
+ *    (default FP3_CONFIGURE_MAX_LANES); a lane adds an adder, a
+ *    multiplier and a register bank but no scheduler logic, so lanes,
+ *    not contexts, grow with the scene (docs/lanes.md); a larger scene
+ *    runs in batches of NUM_CONTEXTS x NUM_LANES objects;
  *  - ROUND, FTZ: the cheapest FP core mode whose results stay within the
  *    error budget.  Each candidate mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ) runs
  *    the program's golden model (fp3_compiled_golden, in that mode through
@@ -60,6 +66,11 @@
  * add (or sub), sub, mul, div, sqrt, the sign group (abs, neg, min, max);
  * their parameters HAS_ADD .. HAS_SIGN. */
 #define FP3_CONFIGURE_UNITS 6
+/* Default upper bound of the derived NUM_LANES, a bound on the hardware
+ * a scene may ask for (16 lanes: 16 adders, multipliers and register
+ * banks of 6 EBR); the LFE5U-85F holds about 8 lanes of the build for
+ * clock rate (docs/lanes.md "Chip build"). */
+#define FP3_CONFIGURE_MAX_LANES 16
 
 /* The candidate FP core modes, in tie-break order. */
 #define FP3_CONFIGURE_MODES 4
@@ -72,10 +83,11 @@ typedef struct fp3_configure_opts {
   double budget;          /* error budget, relative (> 0)                  */
   uint32_t steps;         /* integrations of the accuracy check (>= 1)     */
   int context_per_object; /* 1: NUM_CONTEXTS = min(objects, 64)            */
+  unsigned max_lanes;     /* NUM_LANES at most (1 .. FP3_MAX_LANES)        */
 } fp3_configure_opts;
 
 /* integrator "rk4", literal 0, budget 1e-4, steps 1000, contexts by the
- * issue rule. */
+ * issue rule, max_lanes FP3_CONFIGURE_MAX_LANES. */
 void fp3_configure_defaults(fp3_configure_opts *o);
 
 /* What fp3_configure derived, and why. */
@@ -104,14 +116,15 @@ typedef struct fp3_configure_result {
 
 /* Derive the parameters for scene sc (scene_name: for the program's
  * header).  Returns 0 and *r, or -1 with a message: unknown integrator,
- * empty scene, bad options (budget not a positive finite number, steps 0),
+ * empty scene, bad options (budget not a positive finite number, steps 0,
+ * max_lanes outside 1 .. FP3_MAX_LANES),
  * out of memory.  *compiled (if not NULL) receives the program compiled
  * for the derived NUM_REGS (free with fp3_compiled_free). */
 int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
                   fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n);
 
 /* The parameters as one line of make variables, no newline:
- * "NUM_CONTEXTS=8 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0
+ * "NUM_CONTEXTS=8 NUM_LANES=2 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0
  * HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1".
  * Returns the length (as snprintf). */
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n);

@@ -16,6 +16,10 @@ fp3_engine *fp3_engine_new(const char *name) {
   return NULL;
 }
 
+unsigned fp3_config_slots(const fp3_config *c) {
+  return c->num_contexts * (c->num_lanes ? c->num_lanes : 1);
+}
+
 int fp3_config_check_program(const fp3_config *c, const uint64_t *words, size_t n,
                              char *msg, size_t len) {
   for (size_t pc = 0; pc < n; pc++) {

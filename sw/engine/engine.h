@@ -17,9 +17,22 @@
  *
  * Contexts: a run may start several contexts (objects) at once, each with
  * its own registers, all running the same program for the same number of
- * integrations (paper §6.3).  The RTL interleaves them on one arithmetic
- * unit; the ISS runs them one after another.  Contexts never interact, so
+ * integrations (paper §6.3).  The RTL interleaves them on one issue slot;
+ * the ISS runs them one after another.  Contexts never interact, so
  * each one's results are the same on both.
+ *
+ * Lanes and object slots: a build with NUM_LANES lanes runs every
+ * instruction of a context on each of its lanes, each lane one object
+ * with registers of its own (fp3_isa.h FP3_MAX_LANES).  Every "context"
+ * argument of this interface (registers, status, observer events, the
+ * count a run starts) is an object slot: slot s is lane s / num_contexts
+ * of context s % num_contexts, so slots 0 .. num_contexts-1 are lane 0
+ * (without lanes, slot = context) and a build holds fp3_config_slots()
+ * objects.  A run of n slots starts contexts 0 .. min(n, num_contexts)-1,
+ * every lane of each; events of slots >= n are not reported.  The lanes
+ * of a context share its PC: a beq is taken only if its operands are
+ * bit-identical in every lane; errors, steps done and fault PC are the
+ * context's, flags the slot's own.
  */
 #ifndef FP3_ENGINE_H
 #define FP3_ENGINE_H
@@ -33,6 +46,7 @@
 /* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
 typedef struct fp3_config {
   unsigned num_contexts;/* contexts a run may start                      */
+  unsigned num_lanes;   /* lanes per context (NUM_LANES; 0 counts as 1)   */
   unsigned num_regs;    /* registers per context                         */
   unsigned imem_depth;  /* instruction memory entries                    */
   unsigned add_latency; /* add core, cycles (RTL only); a dependent     */
@@ -57,6 +71,9 @@ typedef struct fp3_config {
                            reads of 4 cycles (fp3_isa.h)                  */
 } fp3_config;
 
+/* Objects a build holds at once: num_contexts x num_lanes (slots). */
+unsigned fp3_config_slots(const fp3_config *c);
+
 /* Check that a program only needs the units a build has: every add, sub,
  * mul, div, sqrt, abs, neg, min and max in words[0..n) has its unit
  * (has_add, has_sub, has_mul, has_div, has_sqrt, has_sign of c; sub needs
@@ -76,19 +93,19 @@ typedef struct fp3_status {
   uint32_t fault_pc;     /* PC of the faulting instruction if error != 0  */
   uint32_t steps_done;   /* integrations completed (endi issued), ctx 0   */
   unsigned any_error;    /* 1 if any context ended with an error          */
-  uint32_t flags;        /* sticky exception flags of all contexts (OR)   */
+  uint32_t flags;        /* sticky exception flags of all slots (OR)      */
   uint64_t cycles;       /* clock cycles START..DONE (ISS: instructions)  */
   uint64_t issued;       /* instructions issued                           */
   uint64_t stalls;       /* cycles an instruction waited on a hazard      */
   uint64_t unit_issued[FP3_NUM_UNITS]; /* instructions issued per unit, FP3_UNIT_* */
 } fp3_status;
 
-/* Status of one context after a run. */
+/* Status of one object slot after a run (its context's, its own flags). */
 typedef struct fp3_ctx_status {
   unsigned error;       /* enum fp3_error                                 */
   uint32_t fault_pc;    /* PC of the faulting instruction if error != 0   */
   uint32_t steps_done;  /* integrations completed                         */
-  uint32_t flags;       /* sticky exception flags of this context         */
+  uint32_t flags;       /* sticky exception flags of this slot (lane)      */
 } fp3_ctx_status;
 
 /* Observer callbacks; any may be NULL.  on_write and on_endi report
@@ -125,7 +142,8 @@ typedef struct fp3_engine_ops {
                    uint32_t value);
   int (*read_reg)(fp3_engine *e, unsigned context, unsigned reg,
                   uint32_t *value);
-  /* Run contexts 0 .. contexts-1 for `steps` integrations each. */
+  /* Run slots 0 .. contexts-1 for `steps` integrations each (see
+   * "Lanes and object slots" above). */
   int (*run)(fp3_engine *e, uint32_t steps, unsigned contexts,
              const fp3_observer *obs, fp3_status *st);
   int (*ctx_status)(fp3_engine *e, unsigned context, fp3_ctx_status *cs);
@@ -142,8 +160,14 @@ struct fp3_engine {
 /* Constructors.  Return NULL when out of memory (or, for the RTL, when the
  * model does not answer with FP3_ID_VALUE; a message goes to stderr). */
 fp3_engine *fp3_engine_iss_new(void);
-/* An ISS whose FP operations follow core options `mode` (RTZ, FTZ). */
+/* An ISS whose FP operations follow core options `mode` (RTZ, FTZ);
+ * FP3_MAX_CONTEXTS contexts of one lane. */
 fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode);
+/* An ISS shaped like a build: num_contexts, num_lanes and mode of c
+ * (the lanes of a context run in lock step, as the RTL's: beq across
+ * lanes), every unit.  NULL when out of memory or when c has no context
+ * or more than FP3_MAX_CONTEXTS contexts or FP3_MAX_LANES lanes. */
+fp3_engine *fp3_engine_iss_new_config(const fp3_config *c);
 /* trace_path: waveform file to write (NULL: none). */
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);
 /* The RTL built with core options `mode` (parameters ROUND, FTZ). */

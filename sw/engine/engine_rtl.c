@@ -9,7 +9,8 @@
  * integration it belongs to without any help from the hardware.  A
  * write-back with an empty FIFO or for another context than the FIFO
  * says, or a FIFO not empty when the run ends, is a hardware fault and
- * fails the run.
+ * fails the run.  A write-back carries every lane's value (fp3_top trace
+ * port); each lane's is reported as its object slot's (engine.h).
  */
 #include <limits.h>
 #include <stdio.h>
@@ -19,6 +20,8 @@
 #include "engine.h"
 #include "fp3_isa.h"
 #include "../sim/fp3_model.h"
+
+_Static_assert(FP3_MODEL_MAX_LANES == FP3_MAX_LANES, "fp3_model_out holds every lane");
 
 #define TAG_FIFO 64 /* > deepest unit latency + 1 */
 
@@ -32,8 +35,9 @@ typedef struct rtl_engine {
   fp3_engine base;
   const fp3_model_ops *mops; /* the model of the configuration */
   fp3_model *model;
-  fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
+  fp3_ctx_status cs[FP3_MAX_CONTEXTS * FP3_MAX_LANES]; /* [slot], of the last run */
   unsigned ctx_sel;              /* CTX as last written (UINT_MAX: unknown) */
+  unsigned lane_sel;             /* LANE as last written (UINT_MAX: unknown) */
   unsigned read_cycles;          /* host-port read latency, 1 + 3 FMAX_PIPE */
   int win_set;                   /* waveform window, in cycles of a run */
   uint64_t win_first, win_count;
@@ -61,6 +65,19 @@ static void select_ctx(rtl_engine *m, unsigned c) {
   m->ctx_sel = c;
 }
 
+/* Select lane l for the register window and FLAGS (written when it changes). */
+static void select_lane(rtl_engine *m, unsigned l) {
+  if (m->lane_sel == l) return;
+  host_write(m, FP3_HR_LANE, l);
+  m->lane_sel = l;
+}
+
+/* Select the context and lane of object slot s (engine.h). */
+static void select_slot(rtl_engine *m, unsigned s) {
+  select_ctx(m, s % m->base.config.num_contexts);
+  select_lane(m, s / m->base.config.num_contexts);
+}
+
 static uint64_t host_read64(const rtl_engine *m, unsigned lo_addr) {
   uint64_t lo = host_read(m, lo_addr);
   uint64_t hi = host_read(m, lo_addr + 1);
@@ -85,9 +102,10 @@ static int rtl_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
 }
 
 static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
-  if (context >= e->config.num_contexts) {
-    snprintf(e->error, sizeof e->error, "context %u out of range (the model has %u)",
-             context, e->config.num_contexts);
+  if (context >= fp3_config_slots(&e->config)) {
+    snprintf(e->error, sizeof e->error,
+             "object slot %u out of range (the model has %u contexts x %u lanes)", context,
+             e->config.num_contexts, e->config.num_lanes);
     return -1;
   }
   if (reg >= e->config.num_regs) {
@@ -100,14 +118,14 @@ static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
 
 static int rtl_write_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t value) {
   if (check_reg(e, context, reg)) return -1;
-  select_ctx((rtl_engine *)e, context);
+  select_slot((rtl_engine *)e, context);
   host_write((rtl_engine *)e, FP3_HR_REG_BASE + reg, value);
   return 0;
 }
 
 static int rtl_read_reg(fp3_engine *e, unsigned context, unsigned reg, uint32_t *value) {
   if (check_reg(e, context, reg)) return -1;
-  select_ctx((rtl_engine *)e, context);
+  select_slot((rtl_engine *)e, context);
   *value = host_read((rtl_engine *)e, FP3_HR_REG_BASE + reg);
   return 0;
 }
@@ -137,9 +155,13 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
   memset(fifo, 0, sizeof fifo);
   memset(st, 0, sizeof *st);
   memset(r->cs, 0, sizeof r->cs);
+  const unsigned nc = e->config.num_contexts, nl = e->config.num_lanes;
+  /* Contexts started: every lane of each; a count beyond the slots is
+   * given as it is, for the RTL to refuse (BAD_CONTEXTS). */
+  const unsigned hw = contexts <= nc || contexts > nc * nl ? contexts : nc;
 
   host_write(r, FP3_HR_STEPS, steps);
-  host_write(r, FP3_HR_CONTEXTS, contexts);
+  host_write(r, FP3_HR_CONTEXTS, hw);
   /* run cycle 0 is the one after the START write */
   if (r->win_set)
     r->mops->trace_window(r->model,
@@ -148,7 +170,7 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
   host_write(r, FP3_HR_CTRL, FP3_CTRL_START);
 
   uint32_t endis[FP3_MAX_CONTEXTS] = {0};
-  uint64_t limit = cycle_limit(&e->config, steps, contexts);
+  uint64_t limit = cycle_limit(&e->config, steps, hw);
   fp3_model_out out;
   for (uint64_t cycle = 0;; cycle++) {
     r->mops->cycle(r->model, NULL, &out);
@@ -178,7 +200,8 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
                  "issued by context %u", u, (unsigned long long)cycle, out.wb_ctx[u], ctx);
         return -1;
       }
-      fp3_observe_write(obs, ctx, out.wb_reg[u], out.wb_data[u], integ);
+      for (unsigned l = 0, s = ctx; l < nl && s < contexts; l++, s += nc)
+        fp3_observe_write(obs, s, out.wb_reg[u], out.wb_data[u][l], integ);
     }
     if (out.issue) st->unit_issued[out.issue_unit & 3]++;
     if (out.issue && out.issue_unit != FP3_UNIT_NONE) {
@@ -196,7 +219,8 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
     if (out.endi) {
       unsigned ctx = out.issue_ctx % FP3_MAX_CONTEXTS;
       endis[ctx]++;
-      fp3_observe_endi(obs, ctx, endis[ctx], cycle);
+      for (unsigned l = 0, s = ctx; l < nl && s < contexts; l++, s += nc)
+        fp3_observe_endi(obs, s, endis[ctx], cycle);
     }
   }
   for (unsigned u = 1; u < 4; u++) {
@@ -207,13 +231,18 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
     }
   }
 
-  for (unsigned c = 0; c < e->config.num_contexts; c++) {
+  for (unsigned c = 0; c < nc; c++) {
     select_ctx(r, c);
-    r->cs[c].error = (host_read(r, FP3_HR_STATUS) >> FP3_STATUS_ERROR_LSB) & 0xF;
-    r->cs[c].fault_pc = host_read(r, FP3_HR_FAULT_PC);
-    r->cs[c].steps_done = host_read(r, FP3_HR_STEPS_DONE);
-    r->cs[c].flags = host_read(r, FP3_HR_FLAGS);
-    st->flags |= r->cs[c].flags;
+    fp3_ctx_status cs;
+    cs.error = (host_read(r, FP3_HR_STATUS) >> FP3_STATUS_ERROR_LSB) & 0xF;
+    cs.fault_pc = host_read(r, FP3_HR_FAULT_PC);
+    cs.steps_done = host_read(r, FP3_HR_STEPS_DONE);
+    for (unsigned l = 0; l < nl; l++) {
+      select_lane(r, l);
+      cs.flags = host_read(r, FP3_HR_FLAGS);
+      r->cs[l * nc + c] = cs;
+      if (l * nc + c < contexts) st->flags |= cs.flags;
+    }
   }
   select_ctx(r, 0);
   uint32_t status = host_read(r, FP3_HR_STATUS);
@@ -259,6 +288,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   if (!r) return NULL;
   r->mops = model_ops;
   r->ctx_sel = UINT_MAX;
+  r->lane_sel = UINT_MAX;
   r->read_cycles = 4; /* the longest, until INFO1 tells */
   r->model = r->mops->create(trace_path);
   if (!r->model) {
@@ -279,10 +309,13 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->base.config.has_div = (info2 >> 19) & 1;
   r->base.config.has_sqrt = (info2 >> 20) & 1;
   r->base.config.has_sign = (info2 >> 21) & 1;
-  r->base.config.div_latency = (info2 >> 22) & 0xFF;
-  if (r->base.config.num_contexts > FP3_MAX_CONTEXTS) {
-    fprintf(stderr, "fp3: the RTL model has %u contexts, more than %d\n",
-            r->base.config.num_contexts, FP3_MAX_CONTEXTS);
+  r->base.config.div_latency = (info1 >> 19) & 0xFF;
+  r->base.config.num_lanes = info2 >> 24;
+  if (r->base.config.num_contexts > FP3_MAX_CONTEXTS || r->base.config.num_lanes == 0 ||
+      r->base.config.num_lanes > FP3_MAX_LANES) {
+    fprintf(stderr, "fp3: the RTL model has %u contexts and %u lanes, outside 1 .. %d and "
+            "1 .. %d\n", r->base.config.num_contexts, r->base.config.num_lanes,
+            FP3_MAX_CONTEXTS, FP3_MAX_LANES);
     rtl_destroy(&r->base);
     return NULL;
   }

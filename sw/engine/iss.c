@@ -13,7 +13,13 @@
  *
  * Contexts are independent (their own registers, the same program), so a
  * run of several contexts runs them one after another; the ISS has
- * FP3_MAX_CONTEXTS of them.  A run of N integrations starts at PC 0.  endi counts an integration,
+ * FP3_MAX_CONTEXTS of them, or the contexts and lanes of a build
+ * (fp3_engine_iss_new_config).  The lanes of a context run in lock step:
+ * each instruction executes on every lane before the next, and a beq is
+ * taken only if ra and rb are bit-identical in every lane (fp3_isa.h).
+ * Object slot s is lane s / num_contexts of context s % num_contexts
+ * (engine.h); "cycles" and "issued" count a context's instruction once,
+ * whatever its lanes.  A run of N integrations starts at PC 0.  endi counts an integration,
  * reports it, and stops the run if it was the N-th, else jumps to its imm.
  * halt stops the run.  beq continues at its imm if ra and rb hold the same
  * bit pattern.  Errors end the run with status.error set (the
@@ -34,8 +40,8 @@
 typedef struct iss_engine {
   fp3_engine base;
   uint64_t imem[FP3_DEFAULT_IMEM_DEPTH];
-  uint32_t regs[FP3_MAX_CONTEXTS][FP3_DEFAULT_NUM_REGS];
-  fp3_ctx_status cs[FP3_MAX_CONTEXTS]; /* of the last run */
+  uint32_t regs[FP3_MAX_CONTEXTS * FP3_MAX_LANES][FP3_DEFAULT_NUM_REGS]; /* [slot] */
+  fp3_ctx_status cs[FP3_MAX_CONTEXTS * FP3_MAX_LANES]; /* [slot], of the last run */
 } iss_engine;
 
 static int iss_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
@@ -52,10 +58,10 @@ static int iss_load_program(fp3_engine *e, const uint64_t *words, size_t n) {
 }
 
 static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
-  if (context >= e->config.num_contexts) {
+  if (context >= fp3_config_slots(&e->config)) {
     snprintf(e->error, sizeof e->error,
-             "context %u out of range (the ISS has %u)", context,
-             e->config.num_contexts);
+             "object slot %u out of range (the ISS has %u contexts x %u lanes)", context,
+             e->config.num_contexts, e->config.num_lanes);
     return -1;
   }
   if (reg >= e->config.num_regs) {
@@ -88,14 +94,15 @@ static void fail(fp3_engine *e, fp3_ctx_status *cs, unsigned err, uint32_t pc,
   snprintf(e->error, sizeof e->error, "%s", why);
 }
 
-/* Run one context to its end; *n counts the instructions executed. */
-static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
+/* Run context ctx, every lane in lock step, to its end; slots below
+ * `report` are reported to obs; *n counts the instructions executed. */
+static void run_context(iss_engine *s, unsigned ctx, uint32_t steps, unsigned report,
                         const fp3_observer *obs, fp3_ctx_status *cs,
                         unsigned *flags, uint64_t *n, uint64_t *unit_issued) {
   fp3_engine *e = &s->base;
   const uint32_t depth = e->config.imem_depth;
   const fpref_mode mode = e->config.mode;
-  uint32_t *regs = s->regs[ctx];
+  const unsigned nc = e->config.num_contexts, nl = e->config.num_lanes;
   uint32_t pc = 0, integ = 0;
   char why[200];
   for (;;) {
@@ -107,39 +114,48 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
       break;
     }
     unsigned opc = fp3_insn_opc(w), rd = fp3_insn_rd(w);
-    uint32_t a = regs[fp3_insn_ra(w)], b = regs[fp3_insn_rb(w)];
     uint32_t imm = fp3_insn_imm(w);
-    int writes = 1, stop = 0;
-    uint32_t result = 0, next = pc + 1;
+    int stop = 0, all_equal = 1;
+    uint32_t next = pc + 1;
+    for (unsigned l = 0; l < nl; l++) {
+      const unsigned slot = l * nc + ctx;
+      uint32_t *regs = s->regs[slot];
+      uint32_t a = regs[fp3_insn_ra(w)], b = regs[fp3_insn_rb(w)];
+      int writes = 1;
+      uint32_t result = 0;
+      switch ((enum fp3_opcode)opc) {
+      case FP3_OP_ADD: result = fpref_add(a, b, mode, &flags[l]); break;
+      case FP3_OP_SUB: result = fpref_sub(a, b, mode, &flags[l]); break;
+      case FP3_OP_MUL: result = fpref_mul(a, b, mode, &flags[l]); break;
+      case FP3_OP_DIV: result = fpref_div(a, b, mode, &flags[l]); break;
+      case FP3_OP_SQRT: result = fpref_sqrt(a, mode, &flags[l]); break;
+      case FP3_OP_ABS: result = fpref_abs(a); break;
+      case FP3_OP_NEG: result = fpref_neg(a); break;
+      case FP3_OP_MIN: result = fpref_min(a, b, &flags[l]); break;
+      case FP3_OP_MAX: result = fpref_max(a, b, &flags[l]); break;
+      case FP3_OP_LI: result = imm; break;
+      case FP3_OP_MOV: result = a; break;
+      case FP3_OP_BEQ: writes = 0; all_equal &= a == b; break;
+      case FP3_OP_NOP: case FP3_OP_HALT: case FP3_OP_ENDI: writes = 0; break;
+      }
+      if (writes) {
+        regs[rd] = result;
+        if (slot < report) fp3_observe_write(obs, slot, rd, result, integ + 1);
+      }
+    }
     switch ((enum fp3_opcode)opc) {
-    case FP3_OP_ADD: result = fpref_add(a, b, mode, flags); break;
-    case FP3_OP_SUB: result = fpref_sub(a, b, mode, flags); break;
-    case FP3_OP_MUL: result = fpref_mul(a, b, mode, flags); break;
-    case FP3_OP_DIV: result = fpref_div(a, b, mode, flags); break;
-    case FP3_OP_SQRT: result = fpref_sqrt(a, mode, flags); break;
-    case FP3_OP_ABS: result = fpref_abs(a); break;
-    case FP3_OP_NEG: result = fpref_neg(a); break;
-    case FP3_OP_MIN: result = fpref_min(a, b, flags); break;
-    case FP3_OP_MAX: result = fpref_max(a, b, flags); break;
-    case FP3_OP_LI: result = imm; break;
-    case FP3_OP_MOV: result = a; break;
-    case FP3_OP_NOP: writes = 0; break;
     case FP3_OP_BEQ: /* the target is checked above: ahead, inside memory */
-      writes = 0;
-      if (a == b) next = imm;
+      if (all_equal) next = imm;
       break;
-    case FP3_OP_HALT: writes = 0; stop = 1; break;
+    case FP3_OP_HALT: stop = 1; break;
     case FP3_OP_ENDI:
-      writes = 0;
       integ++;
-      fp3_observe_endi(obs, ctx, integ, *n);
+      for (unsigned l = 0; l < nl; l++)
+        if (l * nc + ctx < report) fp3_observe_endi(obs, l * nc + ctx, integ, *n);
       if (integ == steps) stop = 1;
       else next = imm;
       break;
-    }
-    if (writes) {
-      regs[rd] = result;
-      fp3_observe_write(obs, ctx, rd, result, integ + 1);
+    default: break;
     }
     (*n)++;
     unit_issued[fp3_opc_unit(opc)]++;
@@ -157,28 +173,39 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps,
 static int iss_run(fp3_engine *e, uint32_t steps, unsigned contexts,
                    const fp3_observer *obs, fp3_status *st) {
   iss_engine *s = (iss_engine *)e;
+  const unsigned nc = e->config.num_contexts, nl = e->config.num_lanes;
+  const unsigned slots = fp3_config_slots(&e->config);
   memset(st, 0, sizeof *st);
   memset(s->cs, 0, sizeof s->cs);
   e->error[0] = '\0';
   st->done = 1;
-  if (steps == 0 || contexts == 0 || contexts > e->config.num_contexts) {
+  if (steps == 0 || contexts == 0 || contexts > slots) {
     unsigned err = steps == 0 ? FP3_ERR_BAD_STEPS : FP3_ERR_BAD_CONTEXTS;
-    for (unsigned c = 0; c < e->config.num_contexts; c++)
+    for (unsigned c = 0; c < slots; c++)
       fail(e, &s->cs[c], err, 0,
            steps == 0 ? "run started with STEPS = 0"
-                      : "run started with CONTEXTS = 0 or > NUM_CONTEXTS");
+                      : "run started with CONTEXTS = 0 or > NUM_CONTEXTS x NUM_LANES");
   } else {
     uint64_t n = 0; /* instructions executed */
-    for (unsigned c = 0; c < contexts; c++) {
-      unsigned flags = 0;
-      run_context(s, c, steps, obs, &s->cs[c], &flags, &n, st->unit_issued);
-      s->cs[c].flags = flags;
-      st->flags |= flags;
+    const unsigned hw = contexts < nc ? contexts : nc;   /* contexts started */
+    for (unsigned c = 0; c < hw; c++) {
+      unsigned flags[FP3_MAX_LANES] = {0};
+      run_context(s, c, steps, contexts, obs, &s->cs[c], flags, &n, st->unit_issued);
+      for (unsigned l = 0; l < nl; l++) {
+        fp3_ctx_status *cs = &s->cs[l * nc + c];
+        if (l) { /* the context's status, the lane's flags */
+          cs->error = s->cs[c].error;
+          cs->fault_pc = s->cs[c].fault_pc;
+          cs->steps_done = s->cs[c].steps_done;
+        }
+        cs->flags = flags[l];
+        if (l * nc + c < contexts) st->flags |= flags[l];
+      }
     }
     st->cycles = n;
     st->issued = n;
   }
-  for (unsigned c = 0; c < e->config.num_contexts; c++)
+  for (unsigned c = 0; c < slots; c++)
     if (s->cs[c].error != FP3_ERR_NONE) st->any_error = 1;
   st->error = s->cs[0].error;
   st->fault_pc = s->cs[0].fault_pc;
@@ -205,6 +232,7 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   if (!s) return NULL;
   s->base.ops = &iss_ops;
   s->base.config.num_contexts = FP3_MAX_CONTEXTS;
+  s->base.config.num_lanes = 1;
   s->base.config.num_regs = FP3_DEFAULT_NUM_REGS;
   s->base.config.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   s->base.config.add_latency = 0; /* no timing model */
@@ -217,3 +245,14 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
 }
 
 fp3_engine *fp3_engine_iss_new(void) { return fp3_engine_iss_new_mode(FPREF_IEEE); }
+
+fp3_engine *fp3_engine_iss_new_config(const fp3_config *c) {
+  if (!c || c->num_contexts == 0 || c->num_contexts > FP3_MAX_CONTEXTS ||
+      c->num_lanes > FP3_MAX_LANES)
+    return NULL;
+  fp3_engine *e = fp3_engine_iss_new_mode(c->mode);
+  if (!e) return NULL;
+  e->config.num_contexts = c->num_contexts;
+  e->config.num_lanes = c->num_lanes ? c->num_lanes : 1;
+  return e;
+}

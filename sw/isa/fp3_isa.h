@@ -165,7 +165,8 @@
   X(HALT, 0x07, "halt", 0,                                                     \
     FP3_UNIT_NONE, "stop issuing; the run ends when results drain")         \
   X(BEQ,  0x08, "beq",  FP3_USES_RA | FP3_USES_RB | FP3_USES_IMM,              \
-    FP3_UNIT_NONE, "continue at imm (ahead) if ra, rb are bit-identical")     \
+    FP3_UNIT_NONE, "continue at imm (ahead) if ra, rb are bit-identical "     \
+                   "in every lane of the context")                            \
   X(DIV,  0x09, "div",  FP3_USES_RD | FP3_USES_RA | FP3_USES_RB,               \
     FP3_UNIT_DIV,  "rd = ra / rb (binary32)")                                  \
   X(SQRT, 0x0A, "sqrt", FP3_USES_RD | FP3_USES_RA,                             \
@@ -185,7 +186,9 @@
  * built with back from the INFO host registers.
  */
 #define FP3_CONFIG(X)                                                          \
-  X(NUM_CONTEXTS, 8)   /* contexts: objects in flight (1 .. 64)        */      \
+  X(NUM_CONTEXTS, 8)   /* contexts: instruction streams (1 .. 64)      */      \
+  X(NUM_LANES,    1)   /* lanes per context (1 .. 64); objects in      */      \
+                       /* flight: NUM_CONTEXTS x NUM_LANES             */      \
   X(NUM_REGS,    32)   /* registers per context (at most 256)          */      \
   X(IMEM_DEPTH,  256)  /* instruction memory words (at most 1024)      */      \
   X(ADD_LATENCY, 4)    /* add/sub core: operands to result, cycles     */      \
@@ -204,13 +207,29 @@
  * runs the sign group on its move path (rtl/fp3_arith.v, fp_sign; latency
  * 1 like mov).  It has the div and sqrt cores (rtl/fp_div.v, fp_sqrt.v)
  * but no issue path to them yet: it is built with HAS_DIV = HAS_SQRT = 0
- * (it refuses 1 at elaboration) and reports them in INFO2, so the host
+ * (it refuses 1 at elaboration) and reports them in INFO2 (DIV_LATENCY in
+ * INFO1), so the host
  * refuses a program that uses div or sqrt before running it, naming the
  * parameter (fp3_config_check_program). */
 
 /* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
  * 6-bit context numbers). */
 #define FP3_MAX_CONTEXTS 64
+
+/* The most lanes a build may have (NUM_LANES): the trace port carries
+ * 32 x NUM_LANES bits per write-back port, and INFO2[31:24] and LANE hold
+ * the lane count and number.
+ *
+ * Lanes (rtl/fp3_lane.v): every instruction a context issues runs on all
+ * NUM_LANES lanes of that context at once, each lane with its own
+ * register bank and its own add/sub core, mul core and move path; fetch,
+ * decode, the scoreboard and the issue arbiter are shared.  Lane l of
+ * context c is one object: the C side numbers it as object slot
+ * l x NUM_CONTEXTS + c (engine.h).  A beq is taken only when its operands
+ * are bit-identical in every lane of the context (all NUM_LANES lanes
+ * always execute); else every lane falls through.  Exception flags are
+ * kept per lane. */
+#define FP3_MAX_LANES 64
 
 /* Exception flags, Berkeley SoftFloat / TestFloat bit order. */
 #define FP3_FLAGS(X)                                                           \
@@ -241,7 +260,8 @@
   X(STEPS_DONE, 0x003, "R",  "integrations completed by context CTX")         \
   X(FAULT_PC,   0x004, "R",  "PC of the instruction that raised context "     \
                              "CTX's ERROR")                                   \
-  X(FLAGS,      0x005, "R",  "sticky exception flags of context CTX's run")   \
+  X(FLAGS,      0x005, "R",  "sticky exception flags of context CTX, lane "  \
+                             "LANE in the last run")                          \
   X(CYCLES_LO,  0x006, "R",  "cycles from START to DONE, low word")           \
   X(CYCLES_HI,  0x007, "R",  "cycles, high word")                             \
   X(ISSUED_LO,  0x008, "R",  "instructions issued, low word")                 \
@@ -249,16 +269,20 @@
   X(STALLS_LO,  0x00A, "R",  "cycles an instruction waited on a hazard, low") \
   X(STALLS_HI,  0x00B, "R",  "stall cycles, high word")                       \
   X(INFO0,      0x00C, "R",  "NUM_REGS[15:0], IMEM_DEPTH[31:16]")             \
-  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17], FMAX_PIPE[18]") \
+  X(INFO1,      0x00D, "R",  "ADD_LATENCY[7:0], MUL_LATENCY[15:8], ROUND[16], FTZ[17], FMAX_PIPE[18], " \
+                             "DIV_LATENCY[26:19]")                            \
   X(ID,         0x00E, "R",  "0x46503301: 'FP3', version 1")                  \
   X(CTX,        0x00F, "RW", "context selected for STATUS.ERROR, STEPS_DONE, " \
                              "FAULT_PC and the register window")              \
   X(CONTEXTS,   0x010, "RW", "contexts a START runs, 1 .. NUM_CONTEXTS "       \
                              "(reset value 1)")                               \
   X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18], "  \
-                             "HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], DIV_LATENCY[29:22]") \
-  X(REG_BASE,   0x100, "RW", "register r of context CTX at REG_BASE + r "     \
-                             "(stopped only)")                                \
+                             "HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], NUM_LANES[31:24]") \
+  X(LANE,       0x012, "RW", "lane selected for FLAGS and the register "      \
+                             "window, 0 .. NUM_LANES-1 (a larger value: "      \
+                             "ignored; SLVERR over AXI)")                     \
+  X(REG_BASE,   0x100, "RW", "register r of context CTX, lane LANE at "       \
+                             "REG_BASE + r (stopped only)")                   \
   X(IMEM_BASE,  0x800, "W",  "instruction i: low word at IMEM_BASE + 2i, "    \
                              "high word at IMEM_BASE + 2i + 1 (writing the "  \
                              "high word stores both halves)")

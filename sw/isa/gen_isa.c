@@ -99,6 +99,8 @@ int main(int argc, char **argv) {
 #define X(name, def) printf("localparam integer DEFAULT_%s = %d;\n", #name, def);
   FP3_CONFIG(X)
 #undef X
+  printf("localparam integer MAX_CONTEXTS = %d, MAX_LANES = %d;\n", FP3_MAX_CONTEXTS,
+         FP3_MAX_LANES);
 
   printf("\n// Exception flags (Berkeley SoftFloat bit order)\n");
 #define X(name, bit) printf("localparam [4:0] FLAG_%s = 5'h%02X;\n", #name, bit);

@@ -123,7 +123,7 @@ int fp3_run_frames(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     return -1;
   }
   frames_run r = {e, img, sc, ig, mode, e->config.num_regs, NULL, NULL, NULL, NULL, NULL, NULL};
-  const unsigned nctx = e->config.num_contexts;
+  const unsigned nctx = fp3_config_slots(&e->config);   /* objects per batch */
   r.bank = calloc(sc->n * r.nregs, sizeof *r.bank);
   r.fresh = calloc((size_t)nctx * r.nregs, sizeof *r.fresh);
   r.asleep = calloc(sc->n, 1);
@@ -148,7 +148,8 @@ int fp3_run_frames(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
 
   res->objects = sc->n;
   res->frames = o->frames;
-  res->contexts = nctx;
+  res->contexts = e->config.num_contexts;
+  res->lanes = e->config.num_lanes ? e->config.num_lanes : 1;
   res->first_object = SIZE_MAX;
   res->error_object = SIZE_MAX;
   int rc = 0;

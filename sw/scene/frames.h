@@ -47,6 +47,8 @@ typedef struct fp3_frames_result {
   size_t objects;
   uint32_t frames;
   unsigned contexts;       /* contexts per batch (the engine's)              */
+  unsigned lanes;          /* lanes per context: a batch packs the awake
+                              objects into contexts x lanes slots          */
   uint64_t batches;        /* STARTs                                         */
   uint64_t cycles;         /* START to DONE, summed over batches             */
   uint64_t issued;

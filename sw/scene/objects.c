@@ -302,12 +302,12 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
                     uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
                     fp3_objects_result *res, char *msg, size_t n) {
   memset(res, 0, sizeof *res);
-  const unsigned nctx = e->config.num_contexts;
+  const unsigned nctx = fp3_config_slots(&e->config);   /* objects per batch */
   if (fp3_objects_check(e, img, mode, msg, n)) return -1;
   /* Two values and two flags per context and integration. */
   double bytes = 10.0 * nctx * ((double)steps + 1.0);
   if (bytes > 2e9) {
-    snprintf(msg, n, "%u contexts x %u integrations is too much to record (%.0f MB)",
+    snprintf(msg, n, "%u objects x %u integrations is too much to record (%.0f MB)",
              nctx, steps, bytes / 1e6);
     return -1;
   }
@@ -331,7 +331,8 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     goto out;
   }
   res->objects = sc->n;
-  res->contexts = nctx;
+  res->contexts = e->config.num_contexts;
+  res->lanes = e->config.num_lanes ? e->config.num_lanes : 1;
   res->first_object = SIZE_MAX;
   res->error_object = SIZE_MAX;
   for (size_t first = 0; first < sc->n; first += nctx) {

@@ -91,6 +91,8 @@ fp3_golden_ref fp3_golden_of_integrator(fp3_integ_golden *storage,
 typedef struct fp3_objects_result {
   size_t objects;
   unsigned contexts;       /* contexts per batch (the engine's)            */
+  unsigned lanes;          /* lanes per context (the engine's): a batch is
+                              contexts x lanes objects (engine.h slots)    */
   size_t batches;
   uint64_t cycles;         /* sum over batches                             */
   uint64_t issued, stalls;
@@ -113,7 +115,7 @@ int fp3_objects_check(const fp3_engine *e, const fp3_image *img, fpref_mode mode
                       size_t n);
 
 /* Run every object of the scene for `steps` integrations on the engine, in
- * batches of e->config.num_contexts contexts, writing each object's `.in`
+ * batches of fp3_config_slots(&e->config) objects (contexts x lanes), writing each object's `.in`
  * registers (fp3_in_registers), and compare v and s of every object after
  * every integration with the golden model (run in core options `mode`).
  * Returns 0 when the runs took place (mismatches and errors are in *res),

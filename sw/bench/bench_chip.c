@@ -1,0 +1,302 @@
+/*
+ * bench_chip.c -- lanes against the CPU (make bench-chip, docs/lanes.md).
+ *
+ * For each Verilated build of the lane series (8 contexts, NUM_LANES 1,
+ * 2, 4, 8, 16; the default pipeline), the build for clock rate with one
+ * lane (fmax) and the chip build (the same with the LFE5U-85F's lanes,
+ * mk/pnr.mk CHIP=ecp5-85) that are linked in, run the ship RK4 step on
+ * NUM_CONTEXTS x NUM_LANES ships (a generated scene), once with the
+ * literal program (programs/ship_rk4.s, the paper's operations) and once
+ * with the compiled one (fp3 compile, folded, for the build's latencies);
+ * every object is checked against its golden model after every
+ * integration (fp3_run_objects).  Reported: cycles per object-step, the
+ * issue bound (instructions issued per object-step: the instructions of
+ * one integration / NUM_LANES), their ratio (target <= 1.1), and how fast
+ * the Verilated model runs on this host (object-steps per host second).
+ *
+ * Then, in the same run, the same binary32 step on this machine's CPU
+ * (cpu_ship.c, -O3 -march=native -ffp-contract=off): one ship alone (a
+ * dependent chain) and 1,024 ships in arrays; ns per object-step (median
+ * of 5), every result checked bit for bit against the golden model.
+ *
+ * Last, the chip build's ns per object-step at the Fmax given with
+ * --fmax-mhz (the median of the placement seeds, mk/pnr.mk; without it,
+ * the table gives cycles only), against the paper's FPGA and Pentium 4
+ * and this CPU.
+ *
+ * Usage: bench_chip [--steps N] [--fmax-mhz F] [--csv FILE]
+ */
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench.h"
+#include "compile.h"
+#include "cpu_ship.h"
+#include "engine.h"
+#include "golden.h"
+#include "integrators.h"
+#include "objects.h"
+#include "../sim/fp3_model.h"
+
+/* The lane builds are linked as make bench-chip's BENCH_CHIP_MODELS say
+ * (a model of many lanes takes long to Verilate and compile): weak, a build not
+ * linked is reported and skipped. */
+extern const fp3_model_ops fp3_model_l2 __attribute__((weak)),
+    fp3_model_l4 __attribute__((weak)), fp3_model_l8 __attribute__((weak)),
+    fp3_model_l16 __attribute__((weak)), fp3_model_fmax __attribute__((weak)),
+    fp3_model_chip __attribute__((weak));
+
+/* The paper's figures (§5): ns per later integration of one ship on its
+ * XC2V6000-4 at 8.888 ns, and the same step in software on a 3.4 GHz
+ * Pentium 4. */
+#define PAPER_FPGA_NS 3715.184
+#define PAPER_P4_NS 56.11
+
+static double now_s(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* One measured run: a build, a program, n ships. */
+typedef struct row {
+  const char *build;
+  unsigned contexts, lanes, fmax_pipe;
+  const char *program;
+  size_t objects;
+  uint64_t cycles;
+  double cpos, bound, host_osps;  /* cycles and issues per object-step, host speed */
+  uint64_t mismatches;
+  unsigned error;
+} row;
+
+/* Run img on e for n generated ships (seed 1), every object checked. */
+static int measure(fp3_engine *e, const char *build, const char *prog_name, const fp3_image *img,
+                   const fp3_golden_ref *golden, size_t n, uint32_t steps, row *r) {
+  fp3_scene sc;
+  fp3_objects_result res;
+  char msg[512];
+  if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc)) {
+    fprintf(stderr, "bench_chip: cannot generate %zu ships\n", n);
+    return -1;
+  }
+  double t0 = now_s();
+  int rc = fp3_run_objects(e, img, &sc, steps, e->config.mode, golden, &res, msg, sizeof msg);
+  double dt = now_s() - t0;
+  fp3_scene_free(&sc);
+  if (rc) {
+    fprintf(stderr, "bench_chip: %s, %s, %zu ships: %s\n", build, prog_name, n, msg);
+    return -1;
+  }
+  const double os = (double)n * steps;
+  *r = (row){build, e->config.num_contexts, e->config.num_lanes, e->config.fmax_pipe,
+             prog_name, n, res.cycles, (double)res.cycles / os, (double)res.issued / os,
+             os / dt, res.mismatches, res.error};
+  fp3_objects_result_free(&res);
+  return 0;
+}
+
+/* The CPU reference over n ships of a generated scene: ns per object-step
+ * (median of 5) of the array form (all n) and of one ship alone; -1 if a
+ * result differs from the golden model's. */
+static int cpu_reference(size_t n, uint32_t steps, double *array_ns, double *scalar_ns) {
+  fp3_scene sc;
+  if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc)) return -1;
+  float *mem = malloc(6 * n * sizeof *mem);
+  fp3_ship_state *g = malloc(n * sizeof *g);
+  if (!mem || !g) {
+    free(mem);
+    free(g);
+    fp3_scene_free(&sc);
+    return -1;
+  }
+  cpu_ships a = {mem, mem + n, mem + 2 * n, mem + 3 * n, mem + 4 * n, mem + 5 * n, n};
+  int rc = 0;
+  /* bit-exact check first: 100 steps of every ship against the golden model */
+  for (size_t i = 0; i < n; i++) {
+    fp3_golden_init(&g[i], &sc.objs[i]);
+    a.T[i] = g[i].T, a.C[i] = g[i].C, a.minv[i] = g[i].minv, a.h[i] = g[i].h;
+    a.v[i] = g[i].v, a.s[i] = g[i].s;
+  }
+  cpu_ship_steps_array(&a, 100);
+  for (size_t i = 0; i < n; i++) {
+    for (int k = 0; k < 100; k++) fp3_golden_step(&g[i]);
+    if (memcmp(&a.v[i], &g[i].v, sizeof(float)) || memcmp(&a.s[i], &g[i].s, sizeof(float))) {
+      fprintf(stderr, "bench_chip: the CPU reference differs from the golden model (ship %zu)\n",
+              i);
+      rc = -1;
+    }
+  }
+  double t_arr[5], t_one[5];
+  const uint32_t one_steps = steps * 100;
+  for (int r = 0; r < 5; r++) {
+    double t0 = now_s();
+    cpu_ship_steps_array(&a, steps);
+    t_arr[r] = (now_s() - t0) * 1e9 / ((double)n * steps);
+    t0 = now_s();
+    cpu_ship_steps_scalar(&a, 0, one_steps);
+    t_one[r] = (now_s() - t0) * 1e9 / one_steps;
+  }
+  qsort(t_arr, 5, sizeof t_arr[0], cmp_double);
+  qsort(t_one, 5, sizeof t_one[0], cmp_double);
+  *array_ns = t_arr[2];
+  *scalar_ns = t_one[2];
+  /* keep the results live */
+  volatile float sink = a.v[0] + a.s[n - 1];
+  (void)sink;
+  free(mem);
+  free(g);
+  fp3_scene_free(&sc);
+  return rc;
+}
+
+int main(int argc, char **argv) {
+  uint32_t steps = 200;
+  double fmax_mhz = 0.0;
+  const char *csv_path = "build/bench/chip.csv";
+  for (int i = 1; i < argc; i++) {
+    if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
+      steps = (uint32_t)strtoul(argv[++i], NULL, 10);
+    } else if (strcmp(argv[i], "--fmax-mhz") == 0 && i + 1 < argc) {
+      fmax_mhz = strtod(argv[++i], NULL);
+    } else if (strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
+      csv_path = argv[++i];
+    } else {
+      fprintf(stderr, "usage: bench_chip [--steps N] [--fmax-mhz F] [--csv FILE]\n");
+      return strcmp(argv[i], "--help") == 0 ? 0 : 2;
+    }
+  }
+  if (steps == 0 || fmax_mhz < 0.0) {
+    fprintf(stderr, "bench_chip: --steps must be >= 1 and --fmax-mhz >= 0\n");
+    return 2;
+  }
+  const struct {
+    const char *name;
+    const fp3_model_ops *ops; /* NULL: the default build (or not linked) */
+    int is_default;
+  } builds[] = {{"l1", NULL, 1},           {"l2", &fp3_model_l2, 0},
+                {"l4", &fp3_model_l4, 0},   {"l8", &fp3_model_l8, 0},
+                {"l16", &fp3_model_l16, 0}, {"fmax", &fp3_model_fmax, 0},
+                {"chip", &fp3_model_chip, 0}};
+  const size_t nbuilds = sizeof builds / sizeof builds[0];
+  fp3_image lit;
+  fp3_integ_golden rk4_store;
+  fp3_golden_ref rk4;
+  if (fp3_bench_ship_rk4(&lit, &rk4_store, &rk4)) return 2;
+  char tmp[4200];
+  FILE *csv = fp3_bench_csv_open(csv_path, tmp, sizeof tmp);
+  if (!csv) return 1;
+  fprintf(csv, "build,num_contexts,num_lanes,fmax_pipe,program,objects,steps,cycles,"
+               "cycles_per_object_step,issued_per_object_step,ratio,host_object_steps_per_s,"
+               "golden_mismatches\n");
+  printf("%-5s %4s %5s %4s %-9s %7s %15s %12s %6s %14s\n", "build", "ctx", "lanes", "fmax",
+         "program", "objects", "cycles/obj-step", "issue bound", "ratio", "host obj-st/s");
+  int rc = 0;
+  row chip_lit = {0}, chip_comp = {0};
+  double host_l1_64 = 0.0, host_big_256 = 0.0;
+  const char *host_big = NULL;   /* the build with the most lanes linked */
+  unsigned host_big_lanes = 1;
+  for (size_t b = 0; b < nbuilds; b++) {
+    if (!builds[b].is_default && !builds[b].ops) {
+      printf("%-5s (not linked: make bench-chip BENCH_CHIP_MODELS)\n", builds[b].name);
+      continue;
+    }
+    fp3_engine *e = builds[b].ops ? fp3_engine_rtl_new_model(builds[b].ops, NULL)
+                                  : fp3_engine_rtl_new(NULL);
+    if (!e) {
+      fprintf(stderr, "bench_chip: cannot create build %s\n", builds[b].name);
+      rc = 1;
+      continue;
+    }
+    const size_t n = fp3_config_slots(&e->config);
+    /* the compiled program, for this build's latencies and pipeline */
+    fp3_scene sc;
+    fp3_compiled *comp = NULL;
+    char msg[512];
+    fp3_compile_opts o;
+    fp3_compile_defaults(&o);
+    o.add_latency = e->config.add_latency;
+    o.mul_latency = e->config.mul_latency;
+    o.num_regs = e->config.num_regs;
+    o.fmax_pipe = e->config.fmax_pipe;
+    if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc) ||
+        fp3_compile(&sc, "rk4", &o, "generated", &comp, msg, sizeof msg)) {
+      fprintf(stderr, "bench_chip: %s: compiling: %s\n", builds[b].name, msg);
+      fp3_scene_free(&sc);
+      fp3_engine_free(e);
+      rc = 1;
+      continue;
+    }
+    fp3_scene_free(&sc);
+    fp3_golden_ref comp_golden = fp3_compiled_golden(comp);
+    for (int p = 0; p < 2; p++) {
+      row r;
+      if (measure(e, builds[b].name, p ? "compiled" : "literal",
+                  p ? fp3_compiled_image(comp) : &lit, p ? &comp_golden : &rk4, n, steps, &r)) {
+        rc = 1;
+        continue;
+      }
+      const double ratio = r.cpos / r.bound;
+      printf("%-5s %4u %5u %4u %-9s %7zu %15.3f %12.3f %6.3f %14.0f%s\n", r.build, r.contexts,
+             r.lanes, r.fmax_pipe, r.program, r.objects, r.cpos, r.bound, ratio, r.host_osps,
+             r.mismatches || r.error ? "  GOLDEN MISMATCH OR ERROR" : "");
+      fprintf(csv, "%s,%u,%u,%u,%s,%zu,%" PRIu32 ",%" PRIu64 ",%.4f,%.4f,%.4f,%.0f,%" PRIu64 "\n",
+              r.build, r.contexts, r.lanes, r.fmax_pipe, r.program, r.objects, steps, r.cycles,
+              r.cpos, r.bound, ratio, r.host_osps, r.mismatches);
+      if (r.mismatches || r.error) rc = 1;
+      if (strcmp(r.build, "chip") == 0) *(p ? &chip_comp : &chip_lit) = r;
+    }
+    /* host speed of the Verilated models: the 8-context build on 64
+     * ships against the chip build on 256 (fp3 run --objects) */
+    row h;
+    if (strcmp(builds[b].name, "l1") == 0 && measure(e, "l1", "literal", &lit, &rk4, 64, steps, &h) == 0)
+      host_l1_64 = h.host_osps;
+    if (e->config.num_lanes > host_big_lanes &&
+        measure(e, builds[b].name, "literal", &lit, &rk4, 256, steps, &h) == 0) {
+      host_big_256 = h.host_osps;
+      host_big = builds[b].name;
+      host_big_lanes = e->config.num_lanes;
+    }
+    fp3_compiled_free(comp);
+    fp3_engine_free(e);
+  }
+  if (fp3_bench_csv_close(csv, tmp, csv_path)) return 1;
+  if (host_l1_64 > 0.0 && host_big)
+    printf("\nVerilated model speed on this host: the 8-context build, 64 ships: %.0f "
+           "object-steps/s; %s (%u lanes), 256 ships: %.0f object-steps/s; ratio %.2f\n",
+           host_l1_64, host_big, host_big_lanes, host_big_256, host_big_256 / host_l1_64);
+
+  double cpu_arr = 0.0, cpu_one = 0.0;
+  if (cpu_reference(1024, 2000, &cpu_arr, &cpu_one)) rc = 1;
+  printf("\nCPU reference (cpu_ship.c, %s), the same binary32 step, bit-exact with the golden "
+         "model:\n  one ship alone:      %.3f ns per object-step\n  1,024 ships, arrays: %.3f ns "
+         "per object-step\n", cpu_ship_flags(), cpu_one, cpu_arr);
+
+  printf("\n| machine | ns per object-step |\n| --- | ---: |\n");
+  printf("| paper: FPGA (XC2V6000-4, one ship, 8.888 ns clock) | %.2f |\n", PAPER_FPGA_NS);
+  printf("| paper: Pentium 4 | %.2f |\n", PAPER_P4_NS);
+  printf("| this machine's CPU, one core, 1,024 ships | %.3f |\n", cpu_arr);
+  printf("| this machine's CPU, one ship | %.3f |\n", cpu_one);
+  if (fmax_mhz > 0.0 && chip_lit.cpos > 0.0) {
+    printf("| FP3 chip build (%u x %u), literal RK4: %.3f cycles at %.1f MHz | %.2f |\n",
+           chip_lit.contexts, chip_lit.lanes, chip_lit.cpos, fmax_mhz,
+           chip_lit.cpos * 1e3 / fmax_mhz);
+    printf("| FP3 chip build (%u x %u), compiled RK4: %.3f cycles at %.1f MHz | %.2f |\n",
+           chip_comp.contexts, chip_comp.lanes, chip_comp.cpos, fmax_mhz,
+           chip_comp.cpos * 1e3 / fmax_mhz);
+  } else if (chip_lit.cpos > 0.0) {
+    printf("| FP3 chip build (%u x %u): %.3f (literal), %.3f (compiled) cycles; give "
+           "--fmax-mhz for ns | |\n", chip_lit.contexts, chip_lit.lanes, chip_lit.cpos,
+           chip_comp.cpos);
+  }
+  printf("CSV: %s\n", csv_path);
+  return rc;
+}
