@@ -11,3 +11,7 @@ TEST_BINS += $(BUILD)/tests/test_model
 
 # tests/test_model_cli.sh runs build/fp3 (FP3_BIN, mk/sw.mk).
 TEST_SCRIPTS += tests/test_model_cli.sh
+
+# tests/test_mscene.sh: model scenes through build/fp3 (run, compile,
+# configure, frames, bench --model; bad scenes).
+TEST_SCRIPTS += tests/test_mscene.sh

@@ -87,6 +87,7 @@ static int resolve(const char *scene, const char *rel, char *out, size_t n) {
 static int grow(fp3_mscene *s, size_t need, size_t *cap) {
   if (need <= *cap) return 0;
   size_t c = *cap ? 2 * *cap : 16;
+  while (c < need) c *= 2;
   const fp3_model *m = s->model;
   float *in = realloc(s->in, c * m->nparam * sizeof *in);
   if (!in) return -1;
