@@ -57,7 +57,7 @@ static void usage(FILE *f) {
           "  --objects N       with --model: N objects, object 0 the --set values, the\n"
           "                    others each value (h excepted) times its own factor in\n"
           "                    [0.75, 1.25] from --seed S (default 1)\n"
-          "  --integrator I    %s (default rk4; symeuler needs `position`\n"
+          "  --integrator I    %s (default rk4; symeuler and verlet need `position`\n"
           "                    and `velocity` lines)\n"
           "  --literal         the integrator exactly as docs/models.md writes it, bit for\n"
           "                    bit (default: folded: parameter-only divisions become\n"
@@ -1033,7 +1033,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   unsigned rows = 0;
   for (char *save = NULL, *ig = strtok_r(names, " ", &save); ig;
        ig = strtok_r(NULL, " ", &save)) {
-    if (strcmp(ig, "symeuler") == 0 && !fp3_model_split(m) && !a.integ_given) continue;
+    if (!a.integ_given && ((strcmp(ig, "symeuler") == 0 && !fp3_model_split(m)) ||
+                           (strcmp(ig, "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL))))
+      continue;
     margs ai = a;
     ai.integ = ig;
     fp3_compiled *c = compile_for(m, &ai, zero, &e->config, "bench");
