@@ -14,6 +14,7 @@
 
 #include "fp3_isa.h"
 #include "fpenv.h"
+#include "objects.h"
 
 /* Skip blanks. */
 static char *skip_blank(char *p) {
@@ -199,25 +200,7 @@ int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n) {
       break;
     }
     if (p[0] == 'h' && (p[1] == ' ' || p[1] == '\t' || p[1] == '\0')) {
-      char *end;
-      p++;
-      if (s->n > 0) {
-        snprintf(msg, n, "%s:%d: 'h' must come before the objects", path, lineno);
-        rc = -1;
-      } else if (h_line) {
-        snprintf(msg, n, "%s:%d: a second 'h' line (the first is line %d): the time step "
-                 "comes once", path, lineno, h_line);
-        rc = -1;
-      } else if (next_token(&p, tok, sizeof tok) || *skip_blank(p) ||
-                 (h = strtof(tok, &end), *end != '\0')) {
-        snprintf(msg, n, "%s:%d: 'h' wants one number", path, lineno);
-        rc = -1;
-      } else if (!(h > 0.0f) || !isfinite(h)) {
-        snprintf(msg, n, "%s:%d: h = %g: the time step must be finite and > 0", path, lineno,
-                 (double)h);
-        rc = -1;
-      }
-      h_line = lineno;
+      rc = fp3_scene_h_line(p + 1, path, lineno, s->n, &h_line, &h, msg, n);
       continue;
     }
     if (!s->header_line) {
@@ -292,13 +275,6 @@ int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n) {
   return -1;
 }
 
-static uint64_t xorshift(uint64_t *x) {
-  *x ^= *x << 13;
-  *x ^= *x >> 7;
-  *x ^= *x << 17;
-  return *x;
-}
-
 int fp3_mscene_generate(fp3_model *m, const float *in, const float *y0, size_t n,
                         uint64_t seed, fp3_mscene *s) {
   memset(s, 0, sizeof *s);
@@ -314,7 +290,7 @@ int fp3_mscene_generate(fp3_model *m, const float *in, const float *y0, size_t n
   for (size_t i = 0; i < n; i++) {
     float *oi = s->in + i * m->nparam, *oy = s->y0 + i * m->nstate;
     for (unsigned k = 0; k < m->nparam + m->nstate; k++) {
-      double f = 0.75 + 0.5 * (double)(xorshift(&x) >> 11) / 9007199254740992.0;
+      double f = 0.75 + 0.5 * (double)(fp3_scene_xorshift(&x) >> 11) / 9007199254740992.0;
       int st = k >= m->nparam;
       float base = st ? y0[k - m->nparam] : in[k];
       float v = (i == 0 || k == 0) ? base : (float)((double)base * f);
@@ -336,6 +312,85 @@ void fp3_mscene_free(fp3_mscene *s) {
 }
 
 /* ---- running ---------------------------------------------------------------- */
+
+#define MAX_WRITES 512 /* register writes of one object's start */
+
+int fp3_ctx_write_bank(fp3_engine *e, unsigned c, const uint32_t *regs, unsigned nregs,
+                       char *msg, size_t n) {
+  for (unsigned r = 0; r < nregs; r++)
+    if (fp3_engine_write_ctx_reg(e, c, r, regs[r])) {
+      snprintf(msg, n, "%s", fp3_engine_error(e));
+      return -1;
+    }
+  return 0;
+}
+
+int fp3_ctx_check(fp3_engine *e, unsigned c, size_t obj, fp3_ctx_status *cs, unsigned *error,
+                  size_t *error_object, uint32_t *error_pc, char *msg, size_t n) {
+  if (fp3_engine_ctx_status(e, c, cs)) {
+    snprintf(msg, n, "%s", fp3_engine_error(e));
+    return -1;
+  }
+  if (cs->error != FP3_ERR_NONE && *error == FP3_ERR_NONE) {
+    *error = cs->error;
+    *error_object = obj;
+    *error_pc = cs->fault_pc;
+  }
+  return 0;
+}
+
+int fp3_ctx_run_batch(fp3_engine *e, uint32_t steps, unsigned k, const fp3_observer *obs,
+                      const int *bad_tag, fp3_status *st, char *msg, size_t n) {
+  if (fp3_engine_run_contexts(e, steps, k, obs, st)) {
+    snprintf(msg, n, "%s", fp3_engine_error(e));
+    return -1;
+  }
+  if (bad_tag && *bad_tag) {
+    snprintf(msg, n, "engine fault: a write tagged with an integration past the run");
+    return -1;
+  }
+  return 0;
+}
+
+/* The registers of object obj before its run: zero, then the writes of
+ * start() (in the cores' mode).  0, or -1 for a write beyond nregs. */
+static int start_bank(size_t (*start)(void *, size_t, unsigned *, uint32_t *, size_t),
+                      void *ctx, size_t obj, fpref_mode mode, uint32_t *bank, unsigned nregs,
+                      char *msg, size_t n) {
+  unsigned wreg[MAX_WRITES];
+  uint32_t wval[MAX_WRITES];
+  fpenv_saved env;
+  memset(bank, 0, nregs * sizeof *bank);
+  fpenv_enter(mode, &env);
+  size_t nw = start(ctx, obj, wreg, wval, MAX_WRITES);
+  fpenv_leave(&env);
+  for (size_t w = 0; w < nw; w++) {
+    if (wreg[w] >= nregs) {
+      snprintf(msg, n, "register r%u is beyond this hardware's %u registers per context",
+               wreg[w], nregs);
+      return -1;
+    }
+    bank[wreg[w]] = wval[w];
+  }
+  return 0;
+}
+
+/* What both runners need of the golden model and the host: the mode, and
+ * the state registers inside NUM_REGS.  0, or -1 with the reason. */
+static int golden_fits(fpref_mode mode, unsigned ns, const unsigned *reg, unsigned nregs,
+                       char *msg, size_t n) {
+  if (!fpenv_supported(mode)) {
+    snprintf(msg, n, "this host cannot run the golden model in that mode");
+    return -1;
+  }
+  for (unsigned i = 0; i < ns; i++)
+    if (reg[i] >= nregs) {
+      snprintf(msg, n, "state register r%u is beyond this hardware's %u registers per context",
+               reg[i], nregs);
+      return -1;
+    }
+  return 0;
+}
 
 /* Per context, integration and state variable: the last value written. */
 typedef struct srec {
@@ -362,8 +417,6 @@ static void srec_write(void *ctx, unsigned context, unsigned reg, uint32_t value
   }
 }
 
-#define MAX_WRITES 512
-
 int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                           uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
                           fp3_state_result *res, char *msg, size_t n) {
@@ -376,22 +429,11 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
              "much to record (%.0f MB)", nctx, ns, steps, bytes / 1e6);
     return -1;
   }
-  if (!fpenv_supported(mode)) {
-    snprintf(msg, n, "this host cannot run the golden model in that mode");
-    return -1;
-  }
-  for (unsigned i = 0; i < ns; i++)
-    if (golden->reg[i] >= nregs) {
-      snprintf(msg, n, "state register r%u is beyond this hardware's %u registers per context",
-               golden->reg[i], nregs);
-      return -1;
-    }
+  if (golden_fits(mode, ns, golden->reg, nregs, msg, n)) return -1;
   size_t slots = (size_t)nctx * (steps + 1) * ns;
   srec b = {golden, steps, malloc(slots * sizeof(uint32_t)), malloc(slots), 0};
   res->y = calloc(nobj * (ns ? ns : 1), sizeof *res->y);
   uint32_t *regs = calloc(nregs, sizeof *regs);
-  unsigned wreg[MAX_WRITES];
-  uint32_t wval[MAX_WRITES];
   float y[FP3_MODEL_MAX_VARS];
   int rc = -1;
   fpenv_saved env;
@@ -408,36 +450,14 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
   res->first_object = res->error_object = res->nonfinite_object = SIZE_MAX;
   for (size_t first = 0; first < nobj; first += nctx) {
     unsigned k = (unsigned)(nobj - first < nctx ? nobj - first : nctx);
-    for (unsigned c = 0; c < k; c++) {
-      memset(regs, 0, nregs * sizeof *regs);
-      fpenv_enter(mode, &env);
-      size_t nw = golden->start(golden->ctx, first + c, wreg, wval, MAX_WRITES);
-      fpenv_leave(&env);
-      for (size_t w = 0; w < nw; w++) {
-        if (wreg[w] >= nregs) {
-          snprintf(msg, n, "register r%u is beyond this hardware's %u registers per context",
-                   wreg[w], nregs);
-          goto out;
-        }
-        regs[wreg[w]] = wval[w];
-      }
-      for (unsigned r = 0; r < nregs; r++)
-        if (fp3_engine_write_ctx_reg(e, c, r, regs[r])) {
-          snprintf(msg, n, "%s", fp3_engine_error(e));
-          goto out;
-        }
-    }
+    for (unsigned c = 0; c < k; c++)
+      if (start_bank(golden->start, golden->ctx, first + c, mode, regs, nregs, msg, n) ||
+          fp3_ctx_write_bank(e, c, regs, nregs, msg, n))
+        goto out;
     memset(b.seen, 0, slots);
     fp3_observer obs = {.ctx = &b, .on_ctx_write = srec_write};
     fp3_status st;
-    if (fp3_engine_run_contexts(e, steps, k, &obs, &st)) {
-      snprintf(msg, n, "%s", fp3_engine_error(e));
-      goto out;
-    }
-    if (b.bad_tag) {
-      snprintf(msg, n, "engine fault: a write tagged with an integration past the run");
-      goto out;
-    }
+    if (fp3_ctx_run_batch(e, steps, k, &obs, &b.bad_tag, &st, msg, n)) goto out;
     res->batches++;
     res->cycles += st.cycles;
     res->issued += st.issued;
@@ -446,23 +466,13 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
     for (unsigned c = 0; c < k; c++) {
       size_t obj = first + c;
       fp3_ctx_status cs;
-      if (fp3_engine_ctx_status(e, c, &cs)) {
-        snprintf(msg, n, "%s", fp3_engine_error(e));
+      if (fp3_ctx_check(e, c, obj, &cs, &res->error, &res->error_object, &res->error_pc, msg,
+                        n))
         goto out;
-      }
-      if (cs.error != FP3_ERR_NONE && res->error == FP3_ERR_NONE) {
-        res->error = cs.error;
-        res->error_object = obj;
-        res->error_pc = cs.fault_pc;
-      }
       /* the golden model restarted on this object; the state before the
        * first integration is what the host wrote into its registers */
       uint32_t cur[FP3_MODEL_MAX_VARS];
-      memset(regs, 0, nregs * sizeof *regs);
-      fpenv_enter(mode, &env);
-      size_t nw = golden->start(golden->ctx, obj, wreg, wval, MAX_WRITES);
-      fpenv_leave(&env);
-      for (size_t w = 0; w < nw; w++) regs[wreg[w]] = wval[w];
+      if (start_bank(golden->start, golden->ctx, obj, mode, regs, nregs, msg, n)) goto out;
       for (unsigned i = 0; i < ns; i++) cur[i] = regs[golden->reg[i]];
       size_t base = (size_t)c * (steps + 1);
       for (uint32_t t = 1; t <= steps && t <= cs.steps_done; t++) {
@@ -524,23 +534,12 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
     snprintf(msg, n, "no frames to run");
     return -1;
   }
-  if (!fpenv_supported(mode)) {
-    snprintf(msg, n, "this host cannot run the golden model in that mode");
-    return -1;
-  }
-  for (unsigned i = 0; i < ns; i++)
-    if (golden->reg[i] >= nregs) {
-      snprintf(msg, n, "state register r%u is beyond this hardware's %u registers per context",
-               golden->reg[i], nregs);
-      return -1;
-    }
+  if (golden_fits(mode, ns, golden->reg, nregs, msg, n)) return -1;
   uint32_t *bank = calloc(nobj * nregs, sizeof *bank);  /* every object's bank */
   uint32_t *before = malloc((size_t)nctx * nregs * sizeof *before);
   float *gy = malloc(nobj * (ns ? ns : 1) * sizeof *gy); /* golden state */
   unsigned char *asleep = calloc(nobj ? nobj : 1, 1);
   size_t *awake = malloc((nobj ? nobj : 1) * sizeof *awake);
-  unsigned wreg[MAX_WRITES];
-  uint32_t wval[MAX_WRITES];
   int rc = -1;
   fpenv_saved env;
   if (!bank || !before || !gy || !asleep || !awake) {
@@ -548,17 +547,8 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
     goto out;
   }
   for (size_t o = 0; o < nobj; o++) {
-    fpenv_enter(mode, &env);
-    size_t nw = golden->start(golden->ctx, o, wreg, wval, MAX_WRITES);
-    fpenv_leave(&env);
-    for (size_t w = 0; w < nw; w++) {
-      if (wreg[w] >= nregs) {
-        snprintf(msg, n, "register r%u is beyond this hardware's %u registers per context",
-                 wreg[w], nregs);
-        goto out;
-      }
-      bank[o * nregs + wreg[w]] = wval[w];
-    }
+    if (start_bank(golden->start, golden->ctx, o, mode, bank + o * nregs, nregs, msg, n))
+      goto out;
     for (unsigned i = 0; i < ns; i++) gy[o * ns + i] = fpref_float(bank[o * nregs + golden->reg[i]]);
   }
   if (fp3_engine_load(e, words, nwords)) {
@@ -579,17 +569,10 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
       for (unsigned c = 0; c < k; c++) {
         const uint32_t *b = bank + awake[first + c] * nregs;
         memcpy(before + (size_t)c * nregs, b, nregs * sizeof *b);
-        for (unsigned r = 0; r < nregs; r++)
-          if (fp3_engine_write_ctx_reg(e, c, r, b[r])) {
-            snprintf(msg, n, "%s", fp3_engine_error(e));
-            goto out;
-          }
+        if (fp3_ctx_write_bank(e, c, b, nregs, msg, n)) goto out;
       }
       fp3_status st;
-      if (fp3_engine_run_contexts(e, 1, k, NULL, &st)) {
-        snprintf(msg, n, "%s", fp3_engine_error(e));
-        goto out;
-      }
+      if (fp3_ctx_run_batch(e, 1, k, NULL, NULL, &st, msg, n)) goto out;
       res->batches++;
       res->cycles += st.cycles;
       res->issued += st.issued;
@@ -598,15 +581,9 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
         size_t o = awake[first + c];
         uint32_t *b = bank + o * nregs;
         fp3_ctx_status cs;
-        if (fp3_engine_ctx_status(e, c, &cs)) {
-          snprintf(msg, n, "%s", fp3_engine_error(e));
+        if (fp3_ctx_check(e, c, o, &cs, &res->error, &res->error_object, &res->error_pc, msg,
+                          n))
           goto out;
-        }
-        if (cs.error != FP3_ERR_NONE && res->error == FP3_ERR_NONE) {
-          res->error = cs.error;
-          res->error_object = o;
-          res->error_pc = cs.fault_pc;
-        }
         for (unsigned r = 0; r < nregs; r++)
           if (fp3_engine_read_ctx_reg(e, c, r, &b[r])) {
             snprintf(msg, n, "%s", fp3_engine_error(e));

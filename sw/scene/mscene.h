@@ -64,6 +64,25 @@ int fp3_mscene_generate(fp3_model *m, const float *in, const float *y0, size_t n
 
 void fp3_mscene_free(fp3_mscene *s);
 
+/* Write regs[0..nregs) into the registers of context c of engine e.
+ * Returns 0, or -1 with the engine's message. */
+int fp3_ctx_write_bank(fp3_engine *e, unsigned c, const uint32_t *regs, unsigned nregs,
+                       char *msg, size_t n);
+
+/* The status of context c after a run (*cs), its object obj: the first
+ * context error of a run is kept in *error (enum fp3_error, left alone
+ * once set), *error_object and *error_pc.  Returns 0, or -1 with the
+ * engine's message. */
+int fp3_ctx_check(fp3_engine *e, unsigned c, size_t obj, fp3_ctx_status *cs, unsigned *error,
+                  size_t *error_object, uint32_t *error_pc, char *msg, size_t n);
+
+/* Run contexts 0..k-1 of engine e for `steps` integrations (observer obs,
+ * may be NULL).  Returns 0, or -1 with the engine's message, or when
+ * *bad_tag (if not NULL) was set by the observer: a write tagged with an
+ * integration past the run (an engine fault). */
+int fp3_ctx_run_batch(fp3_engine *e, uint32_t steps, unsigned k, const fp3_observer *obs,
+                      const int *bad_tag, fp3_status *st, char *msg, size_t n);
+
 /* A golden model of a program with nstate state registers, one object at
  * a time.  start() sets object `obj` and gives the register writes the
  * host makes before the run (at most max: returns how many); step() runs
