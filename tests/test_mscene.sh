@@ -72,4 +72,11 @@ check "frames --no-rest-skip: nothing skipped" \
   --set x=0.5 --set v=-0.25 --points 3 --engine iss -o "$tmp/wp.csv" 2>/dev/null
 check "bench --model: 4 integrators x 3 points, rk4's error falls with h" \
   "[ \$(grep -c '^spring,' $tmp/wp.csv) -eq 12 ] && awk -F, '\$2==\"rk4\"{e[n++]=\$10} END{exit !(e[0]>e[1] && e[0]<1e-5)}' $tmp/wp.csv"
+# stability bounds against theory for x'' = -w^2 x, w = 3: symplectic Euler
+# and Verlet stable for h w < 2, RK4 for h w < 2 sqrt(2)
+"$FP3" bench --model models/oscillator.fp3m --set h=0.015625 --set w=3 --set x=0.75 \
+  --set v=-0.5 --points 1 --engine iss --stability "$tmp/stab.csv" -o "$tmp/wp1.csv" 2>/dev/null
+check "bench --stability: verlet, symeuler at 2/w, rk4 at 2 sqrt(2)/w (1e-3)" \
+  "awk -F, '\$2==\"verlet\"||\$2==\"symeuler\"{if (\$3<0.6657||\$3>0.6677) bad=1; n++} \
+    \$2==\"rk4\"{if (\$3<0.9418||\$3>0.9438) bad=1; n++} END{exit bad || n!=3}' $tmp/stab.csv"
 [ $fail -eq 0 ]

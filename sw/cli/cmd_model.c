@@ -83,6 +83,7 @@ typedef struct margs {
   int integ_given;     /* --integrator given                      */
   double t_end;        /* bench: --t-end (0: 600 h)               */
   unsigned points;     /* bench: --points                         */
+  const char *stab;    /* bench: --stability FILE.csv             */
   fpref_mode mode;     /* --round, --ftz (model scenes)           */
   uint32_t steps;
   const char *set[2 * FP3_MODEL_MAX_VARS + 8];
@@ -191,6 +192,10 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         fprintf(stderr, "fp3 %s: --t-end '%s': a positive time\n", cmd, v);
         return -1;
       }
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--stability", &v)) != 0) {
+      if (r < 0) return -1;
+      a->stab = v;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--points", &v)) != 0) {
       unsigned long long k;
@@ -990,6 +995,53 @@ static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, cons
   return 0;
 }
 
+#define STAB_STEPS 20000u  /* integrations of one stability trial        */
+#define STAB_GROWTH 1e3     /* a trial is unstable when a state exceeds
+                               STAB_GROWTH (1 + max |initial state|)      */
+
+/* 1 if the golden model of c stays finite and bounded for STAB_STEPS
+ * integrations of step h (the other inputs in[]). */
+static int stable_at(fp3_compiled *c, const fp3_model *m, const float *in, const float *y0,
+                     float h) {
+  float hin[FP3_MODEL_MAX_VARS], y[FP3_MODEL_MAX_VARS];
+  unsigned wr[512];
+  uint32_t wv[512];
+  double bound = 0.0;
+  memcpy(hin, in, sizeof hin);
+  hin[0] = h;
+  for (unsigned k = 0; k < m->nstate; k++) bound = fmax(bound, fabs((double)y0[k]));
+  bound = STAB_GROWTH * (1.0 + bound);
+  fp3_compiled_model_start(c, hin, y0, wr, wv, 512);
+  for (uint32_t t = 0; t < STAB_STEPS; t++) {
+    fp3_compiled_model_step(c, y);
+    for (unsigned k = 0; k < m->nstate; k++)
+      if (!(fabs((double)y[k]) <= bound)) return 0;
+  }
+  return 1;
+}
+
+/* The largest stable step of c near in[0]: a bracket by doubling or
+ * halving h, then 40 bisections.  Returns it, or NAN when no bracket is
+ * found within 2^+-60 of in[0]. */
+static double stability_bound(fp3_compiled *c, const fp3_model *m, const float *in,
+                              const float *y0) {
+  double lo = in[0], hi = in[0];
+  int k;
+  if (stable_at(c, m, in, y0, in[0])) {
+    for (k = 0; k < 60 && stable_at(c, m, in, y0, (float)hi); k++) lo = hi, hi *= 2.0;
+  } else {
+    for (k = 0; k < 60 && !stable_at(c, m, in, y0, (float)lo); k++) hi = lo, lo *= 0.5;
+  }
+  if (k == 60) return NAN;
+  for (int i = 0; i < 40; i++) {
+    double mid = 0.5 * (lo + hi);
+    if ((float)mid == (float)lo || (float)mid == (float)hi) break;
+    if (stable_at(c, m, in, y0, (float)mid)) lo = mid;
+    else hi = mid;
+  }
+  return (float)lo;
+}
+
 int fp3_cmd_bench_model(int argc, char **argv) {
   margs a;
   int r = parse_args(argc, argv, "bench", &a);
@@ -1005,8 +1057,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   int rc = EXIT_USAGE;
   fp3_engine *e = NULL;
   char *text = NULL;
-  size_t tlen = 0;
-  FILE *csv = NULL;
+  size_t tlen = 0, slen = 0;
+  FILE *csv = NULL, *scsv = NULL; /* the sweep, the stability bounds */
+  char *stext = NULL;
   float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
   if (fp3_model_load(a.file, m, msg, sizeof msg)) {
     fprintf(stderr, "fp3 bench: %s\n", msg);
@@ -1021,6 +1074,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     fprintf(stderr, "fp3 bench: cannot create the %s engine\n", a.engine);
     goto out;
   }
+  if (a.stab && !(scsv = open_memstream(&stext, &slen))) goto out;
+  if (scsv)
+    fprintf(scsv, "model,integrator,h_stable,trial_steps,growth_bound\n");
   fprintf(csv, "model,integrator,h,steps,t_end,insns_per_step,cycles_per_step,work_cycles,"
                "engine_mismatches,error_max");
   for (unsigned k = 0; k < m->nstate; k++) fprintf(csv, ",%s,%s_ref", m->state[k], m->state[k]);
@@ -1052,6 +1108,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
       goto out;
     }
     bad += mism;
+    if (scsv)
+      fprintf(scsv, "%s,%s,%.9g,%u,%g\n", m->name, ig, stability_bound(c, m, in, y0), STAB_STEPS,
+              STAB_GROWTH);
     for (unsigned p = 0; p < a.points; p++) {
       float hin[FP3_MODEL_MAX_VARS];
       memcpy(hin, in, sizeof hin);
@@ -1086,6 +1145,14 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   }
   fclose(csv);
   csv = NULL;
+  if (scsv) {
+    fclose(scsv);
+    scsv = NULL;
+    if (fp3_write_text_atomic(a.stab, stext, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 bench: %s\n", msg);
+      goto out;
+    }
+  }
   if (a.out) {
     if (fp3_write_text_atomic(a.out, text, msg, sizeof msg)) {
       fprintf(stderr, "fp3 bench: %s\n", msg);
@@ -1102,7 +1169,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   rc = bad ? EXIT_FAIL : 0;
 out:
   if (csv) fclose(csv);
+  if (scsv) fclose(scsv);
   free(text);
+  free(stext);
   fp3_engine_free(e);
   free(m);
   return rc;

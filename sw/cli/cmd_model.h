@@ -42,7 +42,11 @@ int fp3_cmd_frames_model(int argc, char **argv);
  * state is compared with the GSL reference.  CSV: model, integrator, h,
  * steps, t_end, insns_per_step, cycles_per_step, work_cycles,
  * engine_mismatches, error_max, then NAME and NAME_ref per state
- * variable.  Exit status: 0 written and every engine run bit-exact, 1 a
+ * variable.  With --stability FILE.csv also the stability bound of each
+ * integrator: the largest h (bisection) whose golden run of 20000
+ * integrations stays finite and within 1e3 (1 + max |initial state|);
+ * columns model, integrator, h_stable, trial_steps, growth_bound.
+ * Exit status: 0 written and every engine run bit-exact, 1 a
  * mismatch or failure, 2 bad arguments or model. */
 int fp3_cmd_bench_model(int argc, char **argv);
 
