@@ -84,6 +84,8 @@ typedef struct margs {
   double t_end;        /* bench: --t-end (0: 600 h)               */
   unsigned points;     /* bench: --points                         */
   const char *stab;    /* bench: --stability FILE.csv             */
+  const char *long_out; /* bench: --long FILE.csv                 */
+  uint32_t long_steps; /* bench: --long-steps                     */
   fpref_mode mode;     /* --round, --ftz (model scenes)           */
   uint32_t steps;
   const char *set[2 * FP3_MODEL_MAX_VARS + 8];
@@ -97,6 +99,7 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
   a->steps = DEFAULT_STEPS;
   a->seed = 1;
   a->mode = FPREF_IEEE;
+  a->long_steps = 100000u;
   for (int i = 1; i < argc; i++) {
     const char *v;
     int r;
@@ -192,6 +195,19 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         fprintf(stderr, "fp3 %s: --t-end '%s': a positive time\n", cmd, v);
         return -1;
       }
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--long-steps", &v)) != 0) {
+      unsigned long long k;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 2, 10000000u, &k)) {
+        fprintf(stderr, "fp3 %s: --long-steps '%s': 2..10000000\n", cmd, v);
+        return -1;
+      }
+      a->long_steps = (uint32_t)k;
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--long", &v)) != 0) {
+      if (r < 0) return -1;
+      a->long_out = v;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--stability", &v)) != 0) {
       if (r < 0) return -1;
@@ -954,23 +970,24 @@ out:
 
 #define BENCH_RTL_STEPS 16u /* integrations of the timed, checked engine run */
 
-/* One object of compiled program c on engine e for BENCH_RTL_STEPS
- * integrations: cycles per later integration, and the number of state
- * values that differ from the golden model (every integration).  0, or -1
- * with the engine's message. */
+/* One object of compiled program c on engine e for `steps` integrations:
+ * cycles per later integration, the number of state values that differ
+ * from the golden model (every integration), the final golden state in
+ * y[].  0, or -1 (the engine's message; out of memory: msg empty). */
 static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const float *in,
-                        const float *y0, double *cyc, uint64_t *mism) {
+                        const float *y0, uint32_t steps, double *cyc, uint64_t *mism,
+                        float *y) {
   unsigned regs[512];
   uint32_t vals[512];
-  uint32_t v[BENCH_RTL_STEPS * FP3_MODEL_MAX_VARS];
-  unsigned char seen[BENCH_RTL_STEPS * FP3_MODEL_MAX_VARS];
+  const size_t cells = (size_t)steps * m->nstate;
   runobs ob;
   memset(&ob, 0, sizeof ob);
   ob.nstate = m->nstate;
-  ob.steps = BENCH_RTL_STEPS;
-  ob.v = v;
-  ob.seen = seen;
-  memset(seen, 0, sizeof seen);
+  ob.steps = steps;
+  ob.v = malloc(cells * sizeof *ob.v);
+  ob.seen = calloc(cells, 1);
+  int rc = -1;
+  if (!ob.v || !ob.seen) goto done;
   for (unsigned i = 0; i < m->nstate; i++) ob.reg[i] = fp3_compiled_state_reg(c, i);
   size_t nw = fp3_compiled_model_start(c, in, y0, regs, vals, 512);
   const fp3_image *img = fp3_compiled_image(c);
@@ -978,21 +995,24 @@ static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, cons
   for (size_t w = 0; w < nw && erc == 0; w++) erc = fp3_engine_write_reg(e, regs[w], vals[w]);
   fp3_status st;
   fp3_observer obs = {.ctx = &ob, .on_write = on_write, .on_endi = on_endi};
-  if (erc || fp3_engine_run(e, BENCH_RTL_STEPS, &obs, &st)) return -1;
+  if (erc || fp3_engine_run(e, steps, &obs, &st)) goto done;
   uint32_t cur[FP3_MODEL_MAX_VARS];
-  float g[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < m->nstate; i++) cur[i] = fpref_bits(y0[i]);
-  *mism = st.steps_done == BENCH_RTL_STEPS && st.error == FP3_ERR_NONE ? 0 : 1;
-  for (uint32_t k = 1; k <= st.steps_done && k <= BENCH_RTL_STEPS; k++) {
-    fp3_compiled_model_step(c, g);
+  for (unsigned i = 0; i < m->nstate; i++) cur[i] = fpref_bits(y0[i]), y[i] = y0[i];
+  *mism = st.steps_done == steps && st.error == FP3_ERR_NONE ? 0 : 1;
+  for (uint32_t k = 1; k <= st.steps_done && k <= steps; k++) {
+    fp3_compiled_model_step(c, y);
     for (unsigned i = 0; i < m->nstate; i++) {
       size_t q = (size_t)(k - 1) * m->nstate + i;
-      if (seen[q]) cur[i] = v[q];
-      *mism += cur[i] != fpref_bits(g[i]);
+      if (ob.seen[q]) cur[i] = ob.v[q];
+      *mism += cur[i] != fpref_bits(y[i]);
     }
   }
   *cyc = ob.endis >= 2 ? (double)(ob.cyc_last - ob.cyc_first) / (ob.endis - 1) : NAN;
-  return 0;
+  rc = 0;
+done:
+  free(ob.v);
+  free(ob.seen);
+  return rc;
 }
 
 #define STAB_STEPS 20000u  /* integrations of one stability trial        */
@@ -1058,8 +1078,9 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   fp3_engine *e = NULL;
   char *text = NULL;
   size_t tlen = 0, slen = 0;
-  FILE *csv = NULL, *scsv = NULL; /* the sweep, the stability bounds */
-  char *stext = NULL;
+  FILE *csv = NULL, *scsv = NULL, *lcsv = NULL; /* sweep, stability, long runs */
+  char *stext = NULL, *ltext = NULL;
+  size_t llen = 0;
   float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
   if (fp3_model_load(a.file, m, msg, sizeof msg)) {
     fprintf(stderr, "fp3 bench: %s\n", msg);
@@ -1077,6 +1098,13 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   if (a.stab && !(scsv = open_memstream(&stext, &slen))) goto out;
   if (scsv)
     fprintf(scsv, "model,integrator,h_stable,trial_steps,growth_bound\n");
+  if (a.long_out && !(lcsv = open_memstream(&ltext, &llen))) goto out;
+  if (lcsv) {
+    fprintf(lcsv, "model,integrator,engine,steps,cycles_per_step,engine_mismatches,error_max");
+    for (unsigned k = 0; k < m->nstate; k++)
+      fprintf(lcsv, ",%s,%s_ref", m->state[k], m->state[k]);
+    fprintf(lcsv, "\n");
+  }
   fprintf(csv, "model,integrator,h,steps,t_end,insns_per_step,cycles_per_step,work_cycles,"
                "engine_mismatches,error_max");
   for (unsigned k = 0; k < m->nstate; k++) fprintf(csv, ",%s,%s_ref", m->state[k], m->state[k]);
@@ -1102,7 +1130,8 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     const unsigned insns = fp3_compiled_stats(c)->body_insns;
     double cyc;
     uint64_t mism;
-    if (bench_engine(e, c, m, in, y0, &cyc, &mism)) {
+    float yb[FP3_MODEL_MAX_VARS];
+    if (bench_engine(e, c, m, in, y0, BENCH_RTL_STEPS, &cyc, &mism, yb)) {
       fprintf(stderr, "fp3 bench: %s engine: %s\n", a.engine, fp3_engine_error(e));
       fp3_compiled_free(c);
       goto out;
@@ -1111,6 +1140,28 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     if (scsv)
       fprintf(scsv, "%s,%s,%.9g,%u,%g\n", m->name, ig, stability_bound(c, m, in, y0), STAB_STEPS,
               STAB_GROWTH);
+    if (lcsv) { /* the long run: on the engine, every integration checked */
+      double lcyc, din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], ref[FP3_MODEL_MAX_VARS];
+      uint64_t lm;
+      if (bench_engine(e, c, m, in, y0, a.long_steps, &lcyc, &lm, yb)) {
+        fprintf(stderr, "fp3 bench: %s engine: %s\n", a.engine, fp3_engine_error(e));
+        fp3_compiled_free(c);
+        goto out;
+      }
+      bad += lm;
+      for (unsigned k = 0; k < m->nparam; k++) din[k] = in[k];
+      for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k];
+      char rmsg[256];
+      int have = fp3_model_gsl(m, din, dy0, a.long_steps, NULL, NULL, ref, rmsg, sizeof rmsg) == 0;
+      double emax = have ? 0.0 : NAN;
+      for (unsigned k = 0; have && k < m->nstate; k++)
+        if (!(fabs((double)yb[k] - ref[k]) <= emax)) emax = fabs((double)yb[k] - ref[k]);
+      fprintf(lcsv, "%s,%s,%s,%" PRIu32 ",%.2f,%" PRIu64 ",%.6g", m->name, ig, a.engine,
+              a.long_steps, lcyc, lm, emax);
+      for (unsigned k = 0; k < m->nstate; k++)
+        fprintf(lcsv, ",%.9g,%.15g", (double)yb[k], have ? ref[k] : NAN);
+      fprintf(lcsv, "\n");
+    }
     for (unsigned p = 0; p < a.points; p++) {
       float hin[FP3_MODEL_MAX_VARS];
       memcpy(hin, in, sizeof hin);
@@ -1153,6 +1204,14 @@ int fp3_cmd_bench_model(int argc, char **argv) {
       goto out;
     }
   }
+  if (lcsv) {
+    fclose(lcsv);
+    lcsv = NULL;
+    if (fp3_write_text_atomic(a.long_out, ltext, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 bench: %s\n", msg);
+      goto out;
+    }
+  }
   if (a.out) {
     if (fp3_write_text_atomic(a.out, text, msg, sizeof msg)) {
       fprintf(stderr, "fp3 bench: %s\n", msg);
@@ -1170,8 +1229,10 @@ int fp3_cmd_bench_model(int argc, char **argv) {
 out:
   if (csv) fclose(csv);
   if (scsv) fclose(scsv);
+  if (lcsv) fclose(lcsv);
   free(text);
   free(stext);
+  free(ltext);
   fp3_engine_free(e);
   free(m);
   return rc;

@@ -45,7 +45,10 @@ int fp3_cmd_frames_model(int argc, char **argv);
  * variable.  With --stability FILE.csv also the stability bound of each
  * integrator: the largest h (bisection) whose golden run of 20000
  * integrations stays finite and within 1e3 (1 + max |initial state|);
- * columns model, integrator, h_stable, trial_steps, growth_bound.
+ * columns model, integrator, h_stable, trial_steps, growth_bound.  With
+ * --long FILE.csv [--long-steps N] a long run of each integrator on the
+ * engine (N integrations, default 100000, every one checked) and its
+ * final error against GSL.
  * Exit status: 0 written and every engine run bit-exact, 1 a
  * mismatch or failure, 2 bad arguments or model. */
 int fp3_cmd_bench_model(int argc, char **argv);
