@@ -118,8 +118,8 @@ typedef struct fp3_state_result {
   uint32_t *y;             /* final state, objects x nstate (malloc'd)     */
 } fp3_state_result;
 
-/* Run `nobj` objects for `steps` integrations on engine e with program
- * img, in batches of e->config.num_contexts contexts: each context's
+/* Run `nobj` objects for `steps` integrations on engine e with the
+ * program words[0..nwords) (assembled, image.h), in batches of e->config.num_contexts contexts: each context's
  * registers zeroed, then golden->start's writes; after the batch, every
  * state register of every object after every integration compared bit for
  * bit with golden->step (run in `mode`).  Returns 0 when the runs took
