@@ -11,3 +11,23 @@ TEST_BINS += $(BUILD)/tests/test_model
 
 # tests/test_model_cli.sh runs build/fp3 (FP3_BIN, mk/sw.mk).
 TEST_SCRIPTS += tests/test_model_cli.sh
+
+# tests/test_mscene.sh: model scenes through build/fp3 (run, compile,
+# configure, frames, bench --model; bad scenes).
+TEST_SCRIPTS += tests/test_mscene.sh
+
+# make bench-model: the work-precision sweep and the stability bounds of
+# models/spring.fp3m and models/oscillator.fp3m (fp3 bench --model; CSV
+# and PNG in build/bench/).
+.PHONY: bench-model
+## bench-model: models' work-precision sweep (fp3 bench --model; CSV, PNG in build/bench)
+bench-model: $(BUILD)/fp3
+	@mkdir -p $(BUILD)/bench
+	$(BUILD)/fp3 bench --model models/spring.fp3m --set h=0.015625 --set k=40 --set c=0.8 \
+	  --set m=2 --set x=0.5 --set v=-0.25 --points 8 -o $(BUILD)/bench/model-spring.csv \
+	  --stability $(BUILD)/bench/model-spring-stability.csv
+	$(BUILD)/fp3 bench --model models/oscillator.fp3m --set h=0.015625 --set w=3 \
+	  --set x=0.75 --set v=-0.5 --t-end 100 --points 8 -o $(BUILD)/bench/model-oscillator.csv \
+	  --stability $(BUILD)/bench/model-oscillator-stability.csv
+	for m in spring oscillator; do gnuplot -e "csv='$(BUILD)/bench/model-$$m.csv'; \
+	  png='$(BUILD)/bench/model-$$m.png'" scripts/plot-model-bench.gp || exit 1; done

@@ -39,7 +39,7 @@
 
 static const char *const shipped[] = {"models/ship.fp3m", "models/spring.fp3m",
                                       "models/projectile.fp3m", "models/orbit.fp3m",
-                                      "models/spring3d.fp3m"};
+                                      "models/spring3d.fp3m", "models/oscillator.fp3m"};
 
 static fp3_model *load(const char *path) {
   fp3_model *m = malloc(sizeof *m);
@@ -280,6 +280,7 @@ static const struct {
     {"models/projectile.fp3m", {1.0f / 64, 0.002f, 9.81f}, {0, 2, 0, 30, 40, -5}},
     {"models/orbit.fp3m", {1.0f / 64, 1.0f}, {1, 0, 0, 1.1f}},
     {"models/spring3d.fp3m", {1.0f / 64, 30, 1.0f, 1.5f}, {1.5f, 0.2f, -0.3f, 0, 0.8f, 0.1f}},
+    {"models/oscillator.fp3m", {1.0f / 64, 3.0f}, {0.75f, -0.5f}},
 };
 
 /* Run the compiled model on engine e for `steps` integrations and compare
@@ -310,7 +311,8 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
     fp3_compiled_model_step(c, y);
     if (literal) {
       const char *integ = strstr(what, "rk4") ? "rk4" : strstr(what, "rk2") ? "rk2"
-                        : strstr(what, "symeuler") ? "symeuler" : "euler";
+                        : strstr(what, "symeuler") ? "symeuler"
+                        : strstr(what, "verlet") ? "verlet" : "euler";
       fp3_model_step_literal(m, integ, in, yl);
     }
     for (unsigned i = 0; i < m->nstate; i++) {
@@ -334,20 +336,22 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
 }
 
 /* Every shipped model, integrators euler, rk2, rk4 (and symeuler where
- * split), literal and folded, on the ISS (200 integrations) and on the
- * RTL (rk4 and euler, 60 integrations). */
+ * split, verlet where its accelerations read no velocity), literal and
+ * folded, on the ISS (200 integrations) and on the RTL (rk4, euler and
+ * verlet, 60 integrations). */
 static void test_engines(void **st) {
   (void)st;
   fp3_engine *iss = fp3_engine_iss_new(), *rtl = fp3_engine_rtl_new(NULL);
   assert_non_null(iss);
   assert_non_null(rtl);
-  static const char *const integs[] = {"euler", "rk2", "rk4", "symeuler"};
+  static const char *const integs[] = {"euler", "rk2", "rk4", "symeuler", "verlet"};
   unsigned ran = 0, skipped = 0;
   for (size_t i = 0; i < sizeof objs / sizeof objs[0]; i++) {
     fp3_model *m = load(objs[i].file);
     for (size_t g = 0; g < sizeof integs / sizeof integs[0]; g++)
       for (int lit = 1; lit >= 0; lit--) {
         if (strcmp(integs[g], "symeuler") == 0 && !fp3_model_split(m)) continue;
+        if (strcmp(integs[g], "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL)) continue;
         fp3_compile_opts o;
         fp3_compile_defaults(&o);
         o.fold = o.drop_zero = !lit;
@@ -365,7 +369,8 @@ static void test_engines(void **st) {
           continue;
         }
         run_check(iss, c, m, objs[i].in, objs[i].y0, 200, lit, what);
-        if (strcmp(integs[g], "rk4") == 0 || strcmp(integs[g], "euler") == 0)
+        if (strcmp(integs[g], "rk4") == 0 || strcmp(integs[g], "euler") == 0 ||
+            strcmp(integs[g], "verlet") == 0)
           run_check(rtl, c, m, objs[i].in, objs[i].y0, 60, lit, what);
         ran++;
         fp3_compiled_free(c);
@@ -403,10 +408,14 @@ static void test_compile_refusals(void **st) {
   assert_non_null(strstr(msg, "NUM_REGS"));
   o.num_regs = FP3_DEFAULT_NUM_REGS;
   assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
-  assert_non_null(strstr(msg, "unknown integrator 'verlet'"));
+  assert_non_null(strstr(msg, "verlet needs accelerations that do not read velocities: v' "
+                             "reads velocity v"));
+  assert_int_equal(fp3_compile_model(m, "leapfrog", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "unknown integrator 'leapfrog'"));
   free(m);
   m = load("models/projectile.fp3m");
   assert_int_equal(fp3_compile_model(m, "symeuler", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "needs the state split"));
   free(m);
 }

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "cliopt.h"
+#include "cmd_model.h"
 
 #define EXIT_USAGE 2
 
@@ -54,6 +55,10 @@ static void usage_bench(FILE *f) {
           "  --rtl-long-steps M RTL integrations of the long runs (100000)\n"
           "  --repeats R        timing repeats, median taken (default 7)\n"
           "\n"
+          "fp3 bench --model FILE --set NAME=VALUE ... [--integrator I] [--t-end T]\n"
+          "          [--points K] [--engine rtl|iss] [-o FILE.csv]: a model's\n"
+          "  work-precision sweep (fp3 bench --model x --help, docs/models.md)\n"
+          "\n"
           "Exit status: 0 done and every engine run bit-exact; 1 a check\n"
           "failed; 2 bad arguments.\n");
 }
@@ -90,6 +95,7 @@ static int parse_count(const char *opt, const char *s, uint32_t *x, int zero_ok)
 }
 
 int fp3_cmd_bench(int argc, char **argv) {
+  if (fp3_args_have_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
   const char *dir = "build/bench", *only = NULL;
   double from = 1e-4, to = 3.0, t_end = 12.0, single = 0.0, perdec = 4.0;
   uint32_t nlong = 10000000u, nrtl = 100000u, reps = 7;

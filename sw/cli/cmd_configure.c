@@ -13,6 +13,8 @@
 #include "cliopt.h"
 #include "configure.h"
 #include "fpenv.h"
+#include "model.h"
+#include "mscene.h"
 #include "objects.h"
 #include "report.h"
 
@@ -46,9 +48,11 @@ static void usage(FILE *f) {
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
-          "                   RTZ+FTZ against the exact solution, every object, N\n"
+          "                   RTZ+FTZ against the exact solution (a model scene:\n"
+          "                   the model's GSL reference), every object, N\n"
           "                   integrations; error = max over objects of\n"
-          "                   max|x - exact| / max(max|exact|, 1), x = v and s.\n"
+          "                   max|x - exact| / max(max|exact|, 1), x = v and s\n"
+          "                   (a model: every state variable).\n"
           "                   RNE (the default build) is always allowed, another\n"
           "                   mode when it adds at most REL to each object's RNE\n"
           "                   error (the integrator's own error is not the mode's).\n"
@@ -128,7 +132,8 @@ static const char *param_text(const char *name, unsigned v, char *buf, size_t n)
   return buf;
 }
 
-static void print_reasons(const char *scene, const char *integ, const fp3_configure_opts *o,
+static void print_reasons(const char *scene, const char *integ, const char *against,
+                          const fp3_configure_opts *o,
                           const fp3_configure_result *r) {
   const fp3_config *c = &r->cfg;
   char p0[32];
@@ -171,8 +176,8 @@ static void print_reasons(const char *scene, const char *integ, const fp3_config
   char chosen[16];
   mode_name(c->mode, chosen, sizeof chosen);
   fprintf(stderr, "  ROUND=%d FTZ=%d    %s: the cheapest mode that adds at most %g to each object's "
-                  "RNE error (v and s against the exact solution, %u integrations):\n",
-          c->mode.round == FPREF_RTZ, c->mode.ftz ? 1 : 0, chosen, o->budget, o->steps);
+                  "RNE error (%s, %u integrations):\n",
+          c->mode.round == FPREF_RTZ, c->mode.ftz ? 1 : 0, chosen, o->budget, against, o->steps);
   for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
     char name[16];
     mode_name(r->mode[m], name, sizeof name);
@@ -200,12 +205,7 @@ int fp3_cmd_configure(int argc, char **argv) {
       outp = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--integrator", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (!fp3_compile_knows(v)) {
-        fprintf(stderr, "fp3 configure: unknown integrator '%s' (the compiler knows: %s)\n", v,
-                fp3_compile_integrators());
-        return EXIT_USAGE;
-      }
-      o.integrator = v;
+      o.integrator = v; /* checked below: ship scenes and models know different ones */
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--error-budget", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       char *end;
@@ -248,18 +248,45 @@ int fp3_cmd_configure(int argc, char **argv) {
     return EXIT_USAGE;
   }
   char msg[512];
-  fp3_scene sc;
-  if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 configure: %s\n", msg);
-    return EXIT_USAGE;
-  }
   fp3_configure_result res;
-  if (fp3_configure(&sc, scene, &o, &res, NULL, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
+  const char *against = "v and s against the exact solution";
+  if (fp3_scene_is_model(scene)) { /* a model scene (mscene.h) */
+    fp3_mscene ms;
+    if (fp3_mscene_read(scene, &ms, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 configure: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    if (!fp3_model_integrator_known(o.integrator)) {
+      fprintf(stderr, "fp3 configure: unknown integrator '%s' for a model (%s)\n", o.integrator,
+              fp3_model_integrators());
+      fp3_mscene_free(&ms);
+      return EXIT_USAGE;
+    }
+    against = "every state variable against the model's GSL reference";
+    int rc = fp3_configure_model(&ms, &o, &res, NULL, msg, sizeof msg);
+    fp3_mscene_free(&ms);
+    if (rc) {
+      fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
+      return EXIT_USAGE;
+    }
+  } else {
+    if (!fp3_compile_knows(o.integrator)) {
+      fprintf(stderr, "fp3 configure: unknown integrator '%s' (the compiler knows: %s)\n",
+              o.integrator, fp3_compile_integrators());
+      return EXIT_USAGE;
+    }
+    fp3_scene sc;
+    if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 configure: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    if (fp3_configure(&sc, scene, &o, &res, NULL, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
+      fp3_scene_free(&sc);
+      return EXIT_USAGE;
+    }
     fp3_scene_free(&sc);
-    return EXIT_USAGE;
   }
-  fp3_scene_free(&sc);
   char line[256];
   fp3_configure_line(&res.cfg, line, sizeof line);
   if (outp) {
@@ -273,7 +300,7 @@ int fp3_cmd_configure(int argc, char **argv) {
   if (json) print_json(scene, o.integrator, &o, &res, line);
   else {
     if (!outp) printf("%s\n", line);
-    print_reasons(scene, o.integrator, &o, &res);
+    print_reasons(scene, o.integrator, against, &o, &res);
   }
   return 0;
 }

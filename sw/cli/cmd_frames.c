@@ -13,6 +13,7 @@
 
 #include "asm.h"
 #include "cliopt.h"
+#include "cmd_model.h"
 #include "frames.h"
 #include "report.h"
 
@@ -37,7 +38,9 @@ static void usage(FILE *f) {
           "rest and is not run again until woken.  Every object is compared after\n"
           "every frame, bit for bit, with its golden model, which runs every stage.\n"
           "\n"
-          "  --scene FILE     scene file (fp3 run --help); or\n"
+          "  --scene FILE     scene file (fp3 run --help); a model scene (docs/models.md)\n"
+          "                   runs its compiled model, options --frames, --integrator,\n"
+          "                   --literal, --no-rest-skip, --engine, --json; or\n"
           "  --harbour N      a generated harbour of N ships (default 1000): 60 %%\n"
           "                   moored, 35 %% cruising at terminal velocity, 5 %%\n"
           "                   accelerating; h = 1/60 s\n"
@@ -59,6 +62,7 @@ static void usage(FILE *f) {
 }
 
 int fp3_cmd_frames(int argc, char **argv) {
+  if (fp3_args_have_model(argc, argv)) return fp3_cmd_frames_model(argc, argv);
   const char *scene_path = NULL, *program = DEFAULT_PROGRAM, *engine_name = "rtl";
   unsigned long long ships = 1000, frames = 600;
   uint64_t seed = 1;

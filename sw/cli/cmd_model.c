@@ -12,9 +12,11 @@
 #include "cliopt.h"
 #include "compile.h"
 #include "engine.h"
+#include "fpenv.h"
 #include "fpref.h"
 #include "model.h"
 #include "modelref.h"
+#include "mscene.h"
 #include "report.h"
 
 #define EXIT_FAIL 1
@@ -22,10 +24,18 @@
 #define DEFAULT_STEPS 1000u
 /* object-steps x state variables the bit-for-bit check keeps */
 #define MAX_CHECKED (1u << 26)
+#define MAX_MODEL_OBJECTS 1000000u /* --objects */
 
 int fp3_args_have_model(int argc, char **argv) {
-  for (int i = 1; i < argc; i++)
+  for (int i = 1; i < argc; i++) {
     if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
+    if (strcmp(argv[i], "--scene") == 0 && i + 1 < argc && fp3_scene_is_model(argv[i + 1]))
+      return 1;
+    if (strncmp(argv[i], "--scene=", 8) == 0 && fp3_scene_is_model(argv[i] + 8)) return 1;
+    /* a positional SCENE (fp3 compile, fp3 configure, fp3 frames) */
+    if (argv[i][0] != '-' && (i == 1 || argv[i - 1][0] != '-') && fp3_scene_is_model(argv[i]))
+      return 1;
+  }
   return 0;
 }
 
@@ -33,10 +43,25 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 run --model FILE [--integrator NAME] [--literal]\n"
           "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss] [--json]\n"
+          "       fp3 run --scene MODEL_SCENE [--objects N] [--integrator NAME] [--literal]\n"
+          "               [--steps N] [--engine rtl|iss] [--json]\n"
+          "       fp3 run --model FILE --objects N [--seed S] --set NAME=VALUE ...\n"
           "       fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]\n"
+          "       fp3 compile MODEL_SCENE [--integrator NAME] [--literal] [-o OUT.s]\n"
+          "       fp3 frames --scene MODEL_SCENE [--frames F] [--no-rest-skip] [...]\n"
+          "       fp3 bench --model FILE --set NAME=VALUE ... [--points K] [--t-end T]\n"
+          "               [--stability FILE.csv] [--long FILE.csv [--long-steps N]]\n"
+          "               [-o FILE.csv]  (docs/models.md)\n"
           "\n"
           "  --model FILE      a model file (.fp3m, docs/models.md; models/ has examples)\n"
-          "  --integrator I    %s (default rk4; symeuler needs `position`\n"
+          "  --scene FILE      a model scene: 'model FILE', 'h STEP', a header naming the\n"
+          "                    columns (every param and state variable), one object per\n"
+          "                    line (scenes/springs.scene); all objects on the contexts,\n"
+          "                    in batches, each checked bit for bit every integration\n"
+          "  --objects N       with --model: N objects, object 0 the --set values, the\n"
+          "                    others each value (h excepted) times its own factor in\n"
+          "                    [0.75, 1.25] from --seed S (default 1)\n"
+          "  --integrator I    %s (default rk4; symeuler and verlet need `position`\n"
           "                    and `velocity` lines)\n"
           "  --literal         the integrator exactly as docs/models.md writes it, bit for\n"
           "                    bit (default: folded: parameter-only divisions become\n"
@@ -44,6 +69,8 @@ static void usage(FILE *f) {
           "  --set NAME=VALUE  h, every param and every state variable's initial value\n"
           "                    (binary32; each one required)\n"
           "  --steps N         integrations (default %u)\n"
+          "  --round rne|rtz, --ftz  the cores' rounding and subnormal mode (with a scene\n"
+          "                    or --objects; host values computed in the same mode)\n"
           "  --engine E        rtl (default) or iss\n"
           "  --json            one JSON object: results[0] has every state variable by\n"
           "                    name and NAME_ref, its GSL reference value\n",
@@ -52,7 +79,18 @@ static void usage(FILE *f) {
 
 typedef struct margs {
   const char *file, *integ, *engine, *out;
-  int literal, json;
+  const char *scene;   /* --scene, or compile's positional SCENE */
+  size_t objects;      /* --objects (0: none)                     */
+  uint64_t seed;       /* --seed                                  */
+  int literal, json, seeded;
+  int no_rest_skip;    /* frames: --no-rest-skip                  */
+  int integ_given;     /* --integrator given                      */
+  double t_end;        /* bench: --t-end (0: 600 h)               */
+  unsigned points;     /* bench: --points                         */
+  const char *stab;    /* bench: --stability FILE.csv             */
+  const char *long_out; /* bench: --long FILE.csv                 */
+  uint32_t long_steps; /* bench: --long-steps                     */
+  fpref_mode mode;     /* --round, --ftz (model scenes)           */
   uint32_t steps;
   const char *set[2 * FP3_MODEL_MAX_VARS + 8];
   int nset;
@@ -63,6 +101,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
   a->integ = "rk4";
   a->engine = "rtl";
   a->steps = DEFAULT_STEPS;
+  a->seed = 1;
+  a->mode = FPREF_IEEE;
+  a->long_steps = 100000u;
   for (int i = 1; i < argc; i++) {
     const char *v;
     int r;
@@ -76,7 +117,8 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
     } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--integrator", &v)) != 0) {
       if (r < 0) return -1;
       a->integ = v;
-    } else if (strcmp(cmd, "run") == 0 &&
+      a->integ_given = 1;
+    } else if (strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
       if (r < 0) return -1;
       if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
@@ -93,7 +135,7 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         return -1;
       }
       a->steps = (uint32_t)s;
-    } else if (strcmp(cmd, "run") == 0 &&
+    } else if (strcmp(cmd, "frames") != 0 && strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
       if (r < 0) return -1;
       if (a->nset == (int)(sizeof a->set / sizeof a->set[0])) {
@@ -101,11 +143,94 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         return -1;
       }
       a->set[a->nset++] = v;
-    } else if (strcmp(cmd, "compile") == 0 &&
+    } else if (strcmp(cmd, "run") != 0 && strcmp(cmd, "frames") != 0 &&
                ((r = fp3_opt_value(argc, argv, &i, cmd, "-o", &v)) != 0 ||
                 (r = fp3_opt_value(argc, argv, &i, cmd, "--output", &v)) != 0)) {
       if (r < 0) return -1;
       a->out = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--scene", &v)) != 0) {
+      if (r < 0) return -1;
+      a->scene = v;
+    } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
+      a->scene = argv[i];
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--objects", &v)) != 0) {
+      unsigned long long k;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 1, MAX_MODEL_OBJECTS, &k)) {
+        fprintf(stderr, "fp3 %s: --objects '%s': want 1..%u\n", cmd, v, MAX_MODEL_OBJECTS);
+        return -1;
+      }
+      a->objects = (size_t)k;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--seed", &v)) != 0) {
+      unsigned long long k;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 0, UINT64_MAX, &k)) {
+        fprintf(stderr, "fp3 %s: --seed '%s' is not a number\n", cmd, v);
+        return -1;
+      }
+      a->seed = k;
+      a->seeded = 1;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--round", &v)) != 0) {
+      if (r < 0) return -1;
+      if (strcmp(v, "rne") == 0) a->mode.round = FPREF_RNE;
+      else if (strcmp(v, "rtz") == 0) a->mode.round = FPREF_RTZ;
+      else {
+        fprintf(stderr, "fp3 %s: unknown rounding '%s' (rne or rtz)\n", cmd, v);
+        return -1;
+      }
+    } else if (strcmp(cmd, "frames") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--frames", &v)) != 0) {
+      unsigned long long f;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 1, 10000000u, &f)) {
+        fprintf(stderr, "fp3 %s: --frames '%s': a count 1..10000000\n", cmd, v);
+        return -1;
+      }
+      a->steps = (uint32_t)f;
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--t-end", &v)) != 0) {
+      char *end;
+      if (r < 0) return -1;
+      a->t_end = strtod(v, &end);
+      if (*end || !(a->t_end > 0.0) || !isfinite(a->t_end)) {
+        fprintf(stderr, "fp3 %s: --t-end '%s': a positive time\n", cmd, v);
+        return -1;
+      }
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--long-steps", &v)) != 0) {
+      unsigned long long k;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 2, 10000000u, &k)) {
+        fprintf(stderr, "fp3 %s: --long-steps '%s': 2..10000000\n", cmd, v);
+        return -1;
+      }
+      a->long_steps = (uint32_t)k;
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--long", &v)) != 0) {
+      if (r < 0) return -1;
+      a->long_out = v;
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--stability", &v)) != 0) {
+      if (r < 0) return -1;
+      a->stab = v;
+    } else if (strcmp(cmd, "bench") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--points", &v)) != 0) {
+      unsigned long long k;
+      if (r < 0) return -1;
+      if (fp3_parse_count(v, 1, 24, &k)) {
+        fprintf(stderr, "fp3 %s: --points '%s': 1..24\n", cmd, v);
+        return -1;
+      }
+      a->points = (unsigned)k;
+    } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
+      a->no_rest_skip = 1;
+    } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--json") == 0) {
+      a->json = 1;
+    } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--ftz") == 0) {
+      a->mode.ftz = 1;
     } else if (strcmp(argv[i], "--literal") == 0) {
       a->literal = 1;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--json") == 0) {
@@ -116,8 +241,33 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
       return -1;
     }
   }
-  if (!a->file || !a->file[0]) {
+  if (strcmp(cmd, "frames") == 0 && !a->scene) {
+    fprintf(stderr, "fp3 frames: a model needs --scene MODEL_SCENE\n");
+    return -1;
+  }
+  if (a->scene && a->file) {
+    fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
+    return -1;
+  }
+  if (!a->scene && (!a->file || !a->file[0])) {
     fprintf(stderr, "fp3 %s: --model needs a file\n", cmd);
+    return -1;
+  }
+  if (a->seeded && (!a->objects || a->scene)) {
+    fprintf(stderr, "fp3 %s: --seed goes with --model FILE --objects N\n", cmd);
+    return -1;
+  }
+  if ((a->mode.round != FPREF_RNE || a->mode.ftz) && !a->scene && !a->objects) {
+    fprintf(stderr, "fp3 %s: --round and --ftz go with a model scene or --objects N\n", cmd);
+    return -1;
+  }
+  if (!fpenv_supported(a->mode)) {
+    fprintf(stderr, "fp3 %s: this host cannot run the golden model in that mode\n", cmd);
+    return -1;
+  }
+  if (a->scene && a->nset) {
+    fprintf(stderr, "fp3 %s: --set does not go with a scene: its objects give the values\n",
+            cmd);
     return -1;
   }
   return 0;
@@ -126,9 +276,15 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
 /* Compile the model for a's integrator (folded: params zero in this
  * object, zero[], removed). */
 static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsigned char *zero,
-                                 const char *cmd) {
+                                 const fp3_config *hw, const char *cmd) {
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
+  if (hw) { /* the engine's build: its latencies, registers, pipeline */
+    if (hw->add_latency) o.add_latency = hw->add_latency;
+    if (hw->mul_latency) o.mul_latency = hw->mul_latency;
+    if (hw->num_regs) o.num_regs = hw->num_regs;
+    o.fmax_pipe = hw->fmax_pipe;
+  }
   o.fold = o.drop_zero = !a->literal;
   fp3_compiled *c = NULL;
   char msg[512];
@@ -144,19 +300,41 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
   return c;
 }
 
+/* zero[k] = 1 for the params that are zero in every object of sc. */
+static void scene_zero(const fp3_mscene *sc, unsigned char *zero) {
+  const fp3_model *m = sc->model;
+  for (unsigned k = 0; k < m->nparam; k++) {
+    zero[k] = sc->n > 0;
+    for (size_t i = 0; i < sc->n && zero[k]; i++) zero[k] = sc->in[i * m->nparam + k] == 0.0f;
+  }
+}
+
 int fp3_cmd_compile_model(int argc, char **argv) {
   margs a;
   int r = parse_args(argc, argv, "compile", &a);
   if (r) return r > 0 ? 0 : EXIT_USAGE;
-  fp3_model *m = malloc(sizeof *m);
+  fp3_model *m = NULL;
   char msg[512];
-  if (!m) return EXIT_FAIL;
-  if (fp3_model_load(a.file, m, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 compile: %s\n", msg);
-    free(m);
-    return EXIT_USAGE;
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  if (a.scene) { /* a model scene: params zero in every object are removed */
+    fp3_mscene sc;
+    if (fp3_mscene_read(a.scene, &sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    scene_zero(&sc, zero);
+    m = sc.model;
+    sc.model = NULL;
+    fp3_mscene_free(&sc);
+  } else {
+    if (!(m = malloc(sizeof *m))) return EXIT_FAIL;
+    if (fp3_model_load(a.file, m, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      free(m);
+      return EXIT_USAGE;
+    }
   }
-  fp3_compiled *c = compile_for(m, &a, NULL, "compile");
+  fp3_compiled *c = compile_for(m, &a, zero, NULL, "compile");
   int rc = c ? 0 : EXIT_USAGE;
   if (c && a.out && fp3_compiled_write(c, a.out, msg, sizeof msg)) {
     fprintf(stderr, "fp3 compile: %s\n", msg);
@@ -240,10 +418,35 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
   return -1;
 }
 
+/* Every --set into in[] and y0[]; each param, h and state variable must
+ * be given (else FILE:LINE of its declaration), h > 0.  0 or -1. */
+static int gather_values(const fp3_model *m, const margs *a, float *in, float *y0) {
+  unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
+  for (int i = 0; i < a->nset; i++)
+    if (apply_set(m, a->set[i], in, y0, given)) return -1;
+  for (unsigned k = 0; k < m->nparam + m->nstate; k++)
+    if (!given[k]) {
+      int st = k >= m->nparam;
+      const char *nm = st ? m->state[k - m->nparam] : m->param[k];
+      fprintf(stderr, "fp3 run: %s:%d: %s '%s' has no value: give --set %s=VALUE\n", m->file,
+              st ? m->state_line[k - m->nparam] : m->param_line[k] ? m->param_line[k] : 1,
+              st ? "state variable" : k == 0 ? "the step" : "param", nm, nm);
+      return -1;
+    }
+  if (!(in[0] > 0.0f)) {
+    fprintf(stderr, "fp3 run: --set h=%g: the step must be above 0\n", (double)in[0]);
+    return -1;
+  }
+  return 0;
+}
+
+static int run_many(const margs *a);
+
 int fp3_cmd_run_model(int argc, char **argv) {
   margs a;
   int r = parse_args(argc, argv, "run", &a);
   if (r) return r > 0 ? 0 : EXIT_USAGE;
+  if (a.scene || a.objects) return run_many(&a);
   fp3_model *m = malloc(sizeof *m);
   char msg[512];
   int rc = EXIT_USAGE;
@@ -257,25 +460,10 @@ int fp3_cmd_run_model(int argc, char **argv) {
     goto out;
   }
   float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
-  unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
-  for (int i = 0; i < a.nset; i++)
-    if (apply_set(m, a.set[i], in, y0, given)) goto out;
-  for (unsigned k = 0; k < m->nparam + m->nstate; k++)
-    if (!given[k]) {
-      int st = k >= m->nparam;
-      const char *nm = st ? m->state[k - m->nparam] : m->param[k];
-      fprintf(stderr, "fp3 run: %s:%d: %s '%s' has no value: give --set %s=VALUE\n", m->file,
-              st ? m->state_line[k - m->nparam] : m->param_line[k] ? m->param_line[k] : 1,
-              st ? "state variable" : k == 0 ? "the step" : "param", nm, nm);
-      goto out;
-    }
-  if (!(in[0] > 0.0f)) {
-    fprintf(stderr, "fp3 run: --set h=%g: the step must be above 0\n", (double)in[0]);
-    goto out;
-  }
+  if (gather_values(m, &a, in, y0)) goto out;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
-  if (!(c = compile_for(m, &a, zero, "run"))) goto out;
+  if (!(c = compile_for(m, &a, zero, NULL, "run"))) goto out;
   rc = EXIT_FAIL;
   e = fp3_engine_new(a.engine);
   if (!e || fp3_engine_error(e)[0]) {
@@ -448,6 +636,608 @@ out:
   free(ob.seen);
   fp3_engine_free(e);
   fp3_compiled_free(c);
+  free(m);
+  return rc;
+}
+
+/* ---- many objects: a model scene, or --objects N ------------------------ */
+
+#define SHOW_OBJECTS 8 /* rows of the human report */
+
+/* The compiled program's golden model over the objects of a scene. */
+typedef struct mgold {
+  fp3_compiled *c;
+  const fp3_mscene *sc;
+} mgold;
+
+static size_t mg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
+  mgold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam,
+                                  g->sc->y0 + obj * m->nstate, reg, val, max);
+}
+
+static void mg_step(void *ctx, float *y) {
+  mgold *g = ctx;
+  fp3_compiled_model_step(g->c, y);
+}
+
+/* The scene of a: read from a->scene, or --objects N generated from the
+ * --set values.  0, or the exit status of the failure (message printed). */
+static int many_scene(const margs *a, fp3_mscene *sc) {
+  char msg[512];
+  if (a->scene) {
+    if (fp3_mscene_read(a->scene, sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 run: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    if (a->objects && a->objects != sc->n) {
+      fprintf(stderr, "fp3 run: --objects %zu, but %s has %zu objects\n", a->objects, a->scene,
+              sc->n);
+      fp3_mscene_free(sc);
+      return EXIT_USAGE;
+    }
+    return 0;
+  }
+  fp3_model *m = malloc(sizeof *m);
+  float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
+  if (!m) return EXIT_FAIL;
+  if (fp3_model_load(a->file, m, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 run: %s\n", msg);
+    free(m);
+    return EXIT_USAGE;
+  }
+  if (gather_values(m, a, in, y0)) {
+    free(m);
+    return EXIT_USAGE;
+  }
+  if (fp3_mscene_generate(m, in, y0, a->objects, a->seed, sc)) {
+    fprintf(stderr, "fp3 run: out of memory for %zu objects\n", a->objects);
+    return EXIT_FAIL;
+  }
+  return 0;
+}
+
+static int run_many(const margs *a) {
+  fp3_mscene sc;
+  int rc = many_scene(a, &sc);
+  if (rc) return rc;
+  const fp3_model *m = sc.model;
+  const unsigned np = m->nparam, ns = m->nstate;
+  char msg[512];
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  fp3_compiled *c = NULL;
+  fp3_state_result res;
+  double *ref = NULL;
+  memset(&res, 0, sizeof res);
+  scene_zero(&sc, zero);
+  rc = EXIT_FAIL;
+  fp3_engine *e = strcmp(a->engine, "iss") == 0 ? fp3_engine_iss_new_mode(a->mode)
+                                                : fp3_engine_rtl_new_mode(a->mode, NULL);
+  if (!e || fp3_engine_error(e)[0]) {
+    fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a->engine, e ? ": " : "",
+            e ? fp3_engine_error(e) : "");
+    goto out;
+  }
+  if (!(c = compile_for(m, a, zero, &e->config, "run"))) {
+    rc = EXIT_USAGE;
+    goto out;
+  }
+  unsigned sreg[FP3_MODEL_MAX_VARS];
+  for (unsigned i = 0; i < ns; i++) sreg[i] = fp3_compiled_state_reg(c, i);
+  mgold mg = {c, &sc};
+  fp3_state_golden g = {&mg, ns, sreg, mg_start, mg_step};
+  const fp3_image *img = fp3_compiled_image(c);
+  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &g, &res, msg,
+                            sizeof msg)) {
+    fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
+    goto out;
+  }
+  /* the GSL reference of every object (rk8pd, 1e-12) and the largest error */
+  ref = malloc(sc.n * ns * sizeof *ref);
+  if (!ref) {
+    fprintf(stderr, "fp3 run: out of memory\n");
+    goto out;
+  }
+  double max_err = 0.0;
+  size_t ref_fail = 0;
+  for (size_t o = 0; o < sc.n; o++) {
+    double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS];
+    for (unsigned k = 0; k < np; k++) din[k] = sc.in[o * np + k];
+    for (unsigned k = 0; k < ns; k++) dy0[k] = sc.y0[o * ns + k];
+    char rmsg[256];
+    if (res.nonfinite_object != SIZE_MAX ||
+        fp3_model_gsl(m, din, dy0, a->steps, NULL, NULL, ref + o * ns, rmsg, sizeof rmsg)) {
+      for (unsigned k = 0; k < ns; k++) ref[o * ns + k] = NAN;
+      ref_fail++;
+      continue;
+    }
+    for (unsigned k = 0; k < ns; k++) {
+      double d = fabs((double)fpref_float(res.y[o * ns + k]) - ref[o * ns + k]);
+      if (d > max_err || d != d) max_err = d;
+    }
+  }
+  const double object_steps = (double)res.objects * (double)a->steps;
+  const double per = (double)res.cycles / object_steps;
+  const int nonfinite = res.nonfinite_object != SIZE_MAX;
+  const int ok = res.mismatches == 0 && res.error == FP3_ERR_NONE && !nonfinite;
+  const fp3_compile_stats *cs = fp3_compiled_stats(c);
+  char flags[96];
+  fp3_flags_text(res.flags, flags, sizeof flags);
+  const char *where = a->scene ? a->scene : "generated (--objects, --seed)";
+  if (a->json) {
+    printf("{\"engine\": ");
+    fp3_json_string(stdout, a->engine);
+    printf(", \"model\": ");
+    fp3_json_string(stdout, m->name);
+    printf(", \"model_file\": ");
+    fp3_json_string(stdout, sc.model_path);
+    printf(", \"scene\": ");
+    fp3_json_string(stdout, where);
+    printf(", \"integrator\": ");
+    fp3_json_string(stdout, a->integ);
+    printf(", \"literal\": %s, \"insns_per_step\": %u, \"registers\": %u",
+           a->literal ? "true" : "false", cs->body_insns, cs->regs);
+    printf(", \"est_cycles_per_step\": %u", cs->est_cycles_later);
+    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
+           a->steps, res.objects, res.contexts, res.batches);
+    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64
+           ", \"cycles_per_object_step\": %.9g", res.cycles, res.issued, res.stalls, per);
+    printf(", \"golden_mismatches\": %" PRIu64, res.mismatches);
+    if (res.mismatches)
+      printf(", \"first_mismatch\": {\"object\": %zu, \"integration\": %" PRIu32
+             ", \"variable\": \"%s\", \"got\": \"0x%08" PRIX32 "\", \"want\": \"0x%08" PRIX32
+             "\"}", res.first_object, res.first_step, m->state[res.first_var], res.first_got,
+             res.first_want);
+    else
+      printf(", \"first_mismatch\": null");
+    printf(", \"nonfinite_from\": ");
+    if (nonfinite)
+      printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\"}",
+             res.nonfinite_object, res.nonfinite_step, m->state[res.nonfinite_var]);
+    else
+      printf("null");
+    printf(", \"error\": \"%s\"", fp3_error_name(res.error));
+    if (res.error)
+      printf(", \"error_object\": %zu, \"fault_pc\": %" PRIu32, res.error_object, res.error_pc);
+    printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
+           a->mode.ftz ? "true" : "false");
+    printf(", \"flags\": \"%s\", \"max_error_ref\": ", flags);
+    fp3_json_double(stdout, ref_fail == sc.n ? NAN : max_err);
+    printf(", \"results\": [");
+    for (size_t o = 0; o < sc.n; o++) {
+      printf("%s{", o ? ", " : "");
+      for (unsigned k = 0; k < ns; k++) {
+        printf("%s\"%s\": ", k ? ", " : "", m->state[k]);
+        fp3_json_float(stdout, fpref_float(res.y[o * ns + k]));
+        printf(", \"%s_ref\": ", m->state[k]);
+        fp3_json_double(stdout, ref[o * ns + k]);
+      }
+      printf("}");
+    }
+    printf("], \"pass\": %s}\n", ok ? "true" : "false");
+  } else {
+    printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %zu objects, %" PRIu32
+           " integrations each\n", a->engine, m->name, sc.model_path, a->integ,
+           a->literal ? "literal" : "folded", res.objects, a->steps);
+    printf("program: %u instructions per integration, %u registers; scheduler estimate %u "
+           "cycles per integration of one object\n", cs->body_insns, cs->regs,
+           cs->est_cycles_later);
+    printf("scene: %s; %u contexts per batch, %zu batch%s\n\n", where, res.contexts,
+           res.batches, res.batches == 1 ? "" : "es");
+    printf("  object");
+    for (unsigned k = 0; k < ns; k++) printf(" %14s %14s", m->state[k], "reference");
+    printf("\n");
+    for (size_t o = 0; o < sc.n && o < SHOW_OBJECTS; o++) {
+      printf("%8zu", o);
+      for (unsigned k = 0; k < ns; k++)
+        printf(" %14.7g %14.7g", (double)fpref_float(res.y[o * ns + k]), ref[o * ns + k]);
+      printf("\n");
+    }
+    if (sc.n > SHOW_OBJECTS) printf("     ... (%zu more)\n", sc.n - SHOW_OBJECTS);
+    printf("\ngolden model: %" PRIu64 " mismatches in %.0f object-steps (every state variable, "
+           "bit for bit)\n", res.mismatches, object_steps);
+    if (res.mismatches)
+      printf("  first: object %zu, integration %" PRIu32 ", %s = 0x%08" PRIX32
+             ", golden 0x%08" PRIX32 "\n", res.first_object, res.first_step,
+             m->state[res.first_var], res.first_got, res.first_want);
+    if (ref_fail < sc.n)
+      printf("error against the GSL reference (rk8pd, 1e-12): largest %.3g over %zu objects\n",
+             max_err, sc.n - ref_fail);
+    printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
+           res.cycles, per, (double)res.issued / object_steps);
+    printf("flags: %s\n", flags);
+    if (res.error)
+      printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
+             fp3_error_text(res.error), res.error_pc);
+    if (ok)
+      printf("PASS: %zu objects x %" PRIu32 " integrations on %s bit-exact with the golden "
+             "model\n", res.objects, a->steps, a->engine);
+    else
+      printf("FAIL\n");
+  }
+  if (nonfinite) {
+    size_t o = res.nonfinite_object;
+    char line[32] = "";
+    if (sc.line && sc.line[o]) snprintf(line, sizeof line, ":%d", sc.line[o]);
+    fprintf(stderr, "fp3 run: %s%s: object %zu: state variable %s is not finite after "
+            "integration %" PRIu32 " of %s\n", a->scene ? a->scene : m->file, line, o,
+            m->state[res.nonfinite_var], res.nonfinite_step, a->integ);
+  }
+  rc = ok ? 0 : EXIT_FAIL;
+out:
+  free(ref);
+  fp3_state_result_free(&res);
+  fp3_compiled_free(c);
+  fp3_engine_free(e);
+  fp3_mscene_free(&sc);
+  return rc;
+}
+
+/* ---- frames ------------------------------------------------------------------ */
+
+/* One integration of object obj from state y: the golden model restarted
+ * on that state (its only loop-carried values are the state variables). */
+static void mg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
+  mgold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  unsigned reg[512];
+  uint32_t val[512];
+  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 512);
+  fp3_compiled_model_step(g->c, ynew);
+}
+
+int fp3_cmd_frames_model(int argc, char **argv) {
+  margs a;
+  int r = parse_args(argc, argv, "frames", &a);
+  if (r) return r > 0 ? 0 : EXIT_USAGE;
+  if (a.steps == DEFAULT_STEPS) a.steps = 600;
+  fp3_mscene sc;
+  char msg[512];
+  if (fp3_mscene_read(a.scene, &sc, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 frames: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  const fp3_model *m = sc.model;
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  scene_zero(&sc, zero);
+  int rc = EXIT_FAIL;
+  fp3_compiled *c = NULL;
+  fp3_engine *e = fp3_engine_new(a.engine);
+  if (!e || fp3_engine_error(e)[0]) {
+    fprintf(stderr, "fp3 frames: cannot create the %s engine\n", a.engine);
+    goto out;
+  }
+  if (!(c = compile_for(m, &a, zero, &e->config, "frames"))) {
+    rc = EXIT_USAGE;
+    goto out;
+  }
+  unsigned sreg[FP3_MODEL_MAX_VARS];
+  for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
+  mgold mg = {c, &sc};
+  fp3_state_stepper g = {&mg, m->nstate, sreg, mg_start, mg_step_from};
+  const fp3_image *img = fp3_compiled_image(c);
+  fp3_state_frames_result res;
+  if (fp3_run_state_frames(e, img->words, img->n, sc.n, a.steps, !a.no_rest_skip, FPREF_IEEE,
+                           &g, &res, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 frames: %s\n", msg);
+    goto out;
+  }
+  const int pass = res.mismatches == 0 && res.error == FP3_ERR_NONE;
+  const double per = (double)res.cycles / res.frames;
+  const uint64_t all = (uint64_t)res.objects * res.frames;
+  if (a.json) {
+    printf("{\"model\": ");
+    fp3_json_string(stdout, m->name);
+    printf(", \"scene\": ");
+    fp3_json_string(stdout, a.scene);
+    printf(", \"integrator\": ");
+    fp3_json_string(stdout, a.integ);
+    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"rest_skip\": %s"
+           ", \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", \"cycles_per_frame\": %.2f"
+           ", \"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64
+           ", \"asleep_at_end\": %zu, \"golden_mismatches\": %" PRIu64 ", \"error\": \"%s\""
+           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts,
+           a.no_rest_skip ? "false" : "true", res.batches, res.cycles, per, res.object_frames,
+           res.skipped, res.asleep_last, res.mismatches, fp3_error_name(res.error),
+           pass ? "true" : "false");
+  } else {
+    printf("fp3 frames: %zu objects of model %s (%s), %" PRIu32 " frames, %s %s, %s engine, "
+           "%u contexts%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
+           a.literal ? "literal" : "folded", a.engine, res.contexts,
+           a.no_rest_skip ? ", no rest skip" : "");
+    printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
+           res.batches);
+    printf("  object-frames run         %" PRIu64 " of %" PRIu64 " (%" PRIu64
+           " skipped at rest); %zu at rest at the end\n", res.object_frames, all, res.skipped,
+           res.asleep_last);
+    if (res.error != FP3_ERR_NONE)
+      printf("  ERROR %s in object %zu at pc %" PRIu32 "\n", fp3_error_name(res.error),
+             res.error_object, res.error_pc);
+    if (res.mismatches)
+      printf("  FAIL: %" PRIu64 " mismatches against the golden model, first object %zu frame "
+             "%" PRIu32 " variable %s\n", res.mismatches, res.first_object, res.first_frame,
+             m->state[res.first_var]);
+    else
+      printf("  golden model: bit-identical, every state variable of every object after every "
+             "frame\n");
+  }
+  rc = pass ? 0 : EXIT_FAIL;
+out:
+  fp3_compiled_free(c);
+  fp3_engine_free(e);
+  fp3_mscene_free(&sc);
+  return rc;
+}
+
+/* ---- bench: the work-precision sweep of a model ---------------------------- */
+
+#define BENCH_RTL_STEPS 16u /* integrations of the timed, checked engine run */
+
+/* One object of compiled program c on engine e for `steps` integrations:
+ * cycles per later integration, the number of state values that differ
+ * from the golden model (every integration), the final golden state in
+ * y[].  0, or -1 (the engine's message; out of memory: msg empty). */
+static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const float *in,
+                        const float *y0, uint32_t steps, double *cyc, uint64_t *mism,
+                        float *y) {
+  unsigned regs[512];
+  uint32_t vals[512];
+  const size_t cells = (size_t)steps * m->nstate;
+  runobs ob;
+  memset(&ob, 0, sizeof ob);
+  ob.nstate = m->nstate;
+  ob.steps = steps;
+  ob.v = malloc(cells * sizeof *ob.v);
+  ob.seen = calloc(cells, 1);
+  int rc = -1;
+  if (!ob.v || !ob.seen) goto done;
+  for (unsigned i = 0; i < m->nstate; i++) ob.reg[i] = fp3_compiled_state_reg(c, i);
+  size_t nw = fp3_compiled_model_start(c, in, y0, regs, vals, 512);
+  const fp3_image *img = fp3_compiled_image(c);
+  int erc = fp3_engine_load(e, img->words, img->n);
+  for (size_t w = 0; w < nw && erc == 0; w++) erc = fp3_engine_write_reg(e, regs[w], vals[w]);
+  fp3_status st;
+  fp3_observer obs = {.ctx = &ob, .on_write = on_write, .on_endi = on_endi};
+  if (erc || fp3_engine_run(e, steps, &obs, &st)) goto done;
+  uint32_t cur[FP3_MODEL_MAX_VARS];
+  for (unsigned i = 0; i < m->nstate; i++) cur[i] = fpref_bits(y0[i]), y[i] = y0[i];
+  *mism = st.steps_done == steps && st.error == FP3_ERR_NONE ? 0 : 1;
+  for (uint32_t k = 1; k <= st.steps_done && k <= steps; k++) {
+    fp3_compiled_model_step(c, y);
+    for (unsigned i = 0; i < m->nstate; i++) {
+      size_t q = (size_t)(k - 1) * m->nstate + i;
+      if (ob.seen[q]) cur[i] = ob.v[q];
+      *mism += cur[i] != fpref_bits(y[i]);
+    }
+  }
+  *cyc = ob.endis >= 2 ? (double)(ob.cyc_last - ob.cyc_first) / (ob.endis - 1) : NAN;
+  rc = 0;
+done:
+  free(ob.v);
+  free(ob.seen);
+  return rc;
+}
+
+#define STAB_STEPS 20000u  /* integrations of one stability trial        */
+#define STAB_GROWTH 1e3     /* a trial is unstable when a state exceeds
+                               STAB_GROWTH (1 + max |initial state|)      */
+
+/* 1 if the golden model of c stays finite and bounded for STAB_STEPS
+ * integrations of step h (the other inputs in[]). */
+static int stable_at(fp3_compiled *c, const fp3_model *m, const float *in, const float *y0,
+                     float h) {
+  float hin[FP3_MODEL_MAX_VARS], y[FP3_MODEL_MAX_VARS];
+  unsigned wr[512];
+  uint32_t wv[512];
+  double bound = 0.0;
+  memcpy(hin, in, sizeof hin);
+  hin[0] = h;
+  for (unsigned k = 0; k < m->nstate; k++) bound = fmax(bound, fabs((double)y0[k]));
+  bound = STAB_GROWTH * (1.0 + bound);
+  fp3_compiled_model_start(c, hin, y0, wr, wv, 512);
+  for (uint32_t t = 0; t < STAB_STEPS; t++) {
+    fp3_compiled_model_step(c, y);
+    for (unsigned k = 0; k < m->nstate; k++)
+      if (!(fabs((double)y[k]) <= bound)) return 0;
+  }
+  return 1;
+}
+
+/* The largest stable step of c near in[0]: a bracket by doubling or
+ * halving h, then 40 bisections.  Returns it, or NAN when no bracket is
+ * found within 2^+-60 of in[0]. */
+static double stability_bound(fp3_compiled *c, const fp3_model *m, const float *in,
+                              const float *y0) {
+  double lo = in[0], hi = in[0];
+  int k;
+  if (stable_at(c, m, in, y0, in[0])) {
+    for (k = 0; k < 60 && stable_at(c, m, in, y0, (float)hi); k++) lo = hi, hi *= 2.0;
+  } else {
+    for (k = 0; k < 60 && !stable_at(c, m, in, y0, (float)lo); k++) hi = lo, lo *= 0.5;
+  }
+  if (k == 60) return NAN;
+  for (int i = 0; i < 40; i++) {
+    double mid = 0.5 * (lo + hi);
+    if ((float)mid == (float)lo || (float)mid == (float)hi) break;
+    if (stable_at(c, m, in, y0, (float)mid)) lo = mid;
+    else hi = mid;
+  }
+  return (float)lo;
+}
+
+int fp3_cmd_bench_model(int argc, char **argv) {
+  margs a;
+  int r = parse_args(argc, argv, "bench", &a);
+  if (r) return r > 0 ? 0 : EXIT_USAGE;
+  if (a.scene) {
+    fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
+    return EXIT_USAGE;
+  }
+  if (!a.points) a.points = 6;
+  fp3_model *m = malloc(sizeof *m);
+  char msg[512];
+  if (!m) return EXIT_FAIL;
+  int rc = EXIT_USAGE;
+  fp3_engine *e = NULL;
+  char *text = NULL;
+  size_t tlen = 0, slen = 0;
+  FILE *csv = NULL, *scsv = NULL, *lcsv = NULL; /* sweep, stability, long runs */
+  char *stext = NULL, *ltext = NULL;
+  size_t llen = 0;
+  float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
+  if (fp3_model_load(a.file, m, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 bench: %s\n", msg);
+    goto out;
+  }
+  if (gather_values(m, &a, in, y0)) goto out;
+  const double t_end = a.t_end > 0.0 ? a.t_end : 600.0 * (double)in[0];
+  rc = EXIT_FAIL;
+  e = fp3_engine_new(a.engine);
+  csv = open_memstream(&text, &tlen);
+  if (!e || fp3_engine_error(e)[0] || !csv) {
+    fprintf(stderr, "fp3 bench: cannot create the %s engine\n", a.engine);
+    goto out;
+  }
+  if (a.stab && !(scsv = open_memstream(&stext, &slen))) goto out;
+  if (scsv)
+    fprintf(scsv, "model,integrator,h_stable,trial_steps,growth_bound\n");
+  if (a.long_out && !(lcsv = open_memstream(&ltext, &llen))) goto out;
+  if (lcsv) {
+    fprintf(lcsv, "model,integrator,engine,steps,cycles_per_step,engine_mismatches,error_max");
+    for (unsigned k = 0; k < m->nstate; k++)
+      fprintf(lcsv, ",%s,%s_ref", m->state[k], m->state[k]);
+    fprintf(lcsv, "\n");
+  }
+  fprintf(csv, "model,integrator,h,steps,t_end,insns_per_step,cycles_per_step,work_cycles,"
+               "engine_mismatches,error_max");
+  for (unsigned k = 0; k < m->nstate; k++) fprintf(csv, ",%s,%s_ref", m->state[k], m->state[k]);
+  fprintf(csv, "\n");
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
+  char names[256];
+  snprintf(names, sizeof names, "%s", a.integ_given ? a.integ : fp3_model_integrators());
+  uint64_t bad = 0;
+  unsigned rows = 0;
+  for (char *save = NULL, *ig = strtok_r(names, " ", &save); ig;
+       ig = strtok_r(NULL, " ", &save)) {
+    if (!a.integ_given && ((strcmp(ig, "symeuler") == 0 && !fp3_model_split(m)) ||
+                           (strcmp(ig, "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL))))
+      continue;
+    margs ai = a;
+    ai.integ = ig;
+    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, "bench");
+    if (!c) {
+      rc = EXIT_USAGE;
+      goto out;
+    }
+    const unsigned insns = fp3_compiled_stats(c)->body_insns;
+    double cyc;
+    uint64_t mism;
+    float yb[FP3_MODEL_MAX_VARS];
+    if (bench_engine(e, c, m, in, y0, BENCH_RTL_STEPS, &cyc, &mism, yb)) {
+      fprintf(stderr, "fp3 bench: %s engine: %s\n", a.engine, fp3_engine_error(e));
+      fp3_compiled_free(c);
+      goto out;
+    }
+    bad += mism;
+    if (scsv)
+      fprintf(scsv, "%s,%s,%.9g,%u,%g\n", m->name, ig, stability_bound(c, m, in, y0), STAB_STEPS,
+              STAB_GROWTH);
+    if (lcsv) { /* the long run: on the engine, every integration checked */
+      double lcyc, din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], ref[FP3_MODEL_MAX_VARS];
+      uint64_t lm;
+      if (bench_engine(e, c, m, in, y0, a.long_steps, &lcyc, &lm, yb)) {
+        fprintf(stderr, "fp3 bench: %s engine: %s\n", a.engine, fp3_engine_error(e));
+        fp3_compiled_free(c);
+        goto out;
+      }
+      bad += lm;
+      for (unsigned k = 0; k < m->nparam; k++) din[k] = in[k];
+      for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k];
+      char rmsg[256];
+      int have = fp3_model_gsl(m, din, dy0, a.long_steps, NULL, NULL, ref, rmsg, sizeof rmsg) == 0;
+      double emax = have ? 0.0 : NAN;
+      for (unsigned k = 0; have && k < m->nstate; k++)
+        if (!(fabs((double)yb[k] - ref[k]) <= emax)) emax = fabs((double)yb[k] - ref[k]);
+      fprintf(lcsv, "%s,%s,%s,%" PRIu32 ",%.2f,%" PRIu64 ",%.6g", m->name, ig, a.engine,
+              a.long_steps, lcyc, lm, emax);
+      for (unsigned k = 0; k < m->nstate; k++)
+        fprintf(lcsv, ",%.9g,%.15g", (double)yb[k], have ? ref[k] : NAN);
+      fprintf(lcsv, "\n");
+    }
+    for (unsigned p = 0; p < a.points; p++) {
+      float hin[FP3_MODEL_MAX_VARS];
+      memcpy(hin, in, sizeof hin);
+      hin[0] = (float)ldexp((double)in[0], -(int)p); /* h, h/2, h/4, ...: exact */
+      double steps_d = floor(t_end / (double)hin[0] + 0.5);
+      if (steps_d < 1 || steps_d > 1e8) continue;
+      uint32_t steps = (uint32_t)steps_d;
+      unsigned wr[512];
+      uint32_t wv[512];
+      float y[FP3_MODEL_MAX_VARS];
+      fp3_compiled_model_start(c, hin, y0, wr, wv, 512);
+      for (uint32_t k = 0; k < steps; k++) fp3_compiled_model_step(c, y);
+      double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], ref[FP3_MODEL_MAX_VARS];
+      for (unsigned k = 0; k < m->nparam; k++) din[k] = hin[k];
+      for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k];
+      char rmsg[256];
+      int have = fp3_model_gsl(m, din, dy0, steps, NULL, NULL, ref, rmsg, sizeof rmsg) == 0;
+      double emax = 0.0;
+      for (unsigned k = 0; k < m->nstate; k++) {
+        double d = fabs((double)y[k] - ref[k]);
+        if (!have || !(d <= emax)) emax = have ? d : NAN;
+      }
+      fprintf(csv, "%s,%s,%.9g,%" PRIu32 ",%.9g,%u,%.2f,%.0f,%" PRIu64 ",%.6g", m->name, ig,
+              (double)hin[0], steps, (double)steps * hin[0], insns, cyc, cyc * steps, mism,
+              emax);
+      for (unsigned k = 0; k < m->nstate; k++)
+        fprintf(csv, ",%.9g,%.15g", (double)y[k], have ? ref[k] : NAN);
+      fprintf(csv, "\n");
+      rows++;
+    }
+    fp3_compiled_free(c);
+  }
+  fclose(csv);
+  csv = NULL;
+  if (scsv) {
+    fclose(scsv);
+    scsv = NULL;
+    if (fp3_write_text_atomic(a.stab, stext, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 bench: %s\n", msg);
+      goto out;
+    }
+  }
+  if (lcsv) {
+    fclose(lcsv);
+    lcsv = NULL;
+    if (fp3_write_text_atomic(a.long_out, ltext, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 bench: %s\n", msg);
+      goto out;
+    }
+  }
+  if (a.out) {
+    if (fp3_write_text_atomic(a.out, text, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 bench: %s\n", msg);
+      goto out;
+    }
+    fprintf(stderr, "fp3 bench: %s: %u rows (model %s, t_end %.6g)\n", a.out, rows, m->name,
+            t_end);
+  } else {
+    fputs(text, stdout);
+  }
+  if (bad)
+    fprintf(stderr, "fp3 bench: FAIL: %" PRIu64 " state values of the %s runs differ from the "
+            "golden model\n", bad, a.engine);
+  rc = bad ? EXIT_FAIL : 0;
+out:
+  if (csv) fclose(csv);
+  if (scsv) fclose(scsv);
+  if (lcsv) fclose(lcsv);
+  free(text);
+  free(stext);
+  free(ltext);
+  fp3_engine_free(e);
   free(m);
   return rc;
 }

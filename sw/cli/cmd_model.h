@@ -25,4 +25,32 @@ int fp3_cmd_run_model(int argc, char **argv);
  * stdout).  argv[0] is "compile".  Exit status as fp3_cmd_compile. */
 int fp3_cmd_compile_model(int argc, char **argv);
 
+/* `fp3 frames --scene MODEL_SCENE [--frames F] [--integrator NAME]
+ * [--literal] [--no-rest-skip] [--engine rtl|iss] [--json]`: a model
+ * scene frame by frame with rest skipping (mscene.h
+ * fp3_run_state_frames).  argv[0] is "frames".  Exit status: 0 all
+ * bit-identical, 1 a mismatch or error, 2 bad usage or scene. */
+int fp3_cmd_frames_model(int argc, char **argv);
+
+/* `fp3 bench --model FILE --set NAME=VALUE ... [--integrator NAME]
+ * [--t-end T] [--points K] [--literal] [--engine rtl|iss] [-o FILE.csv]`:
+ * the work-precision sweep of one object: for each integrator (all that
+ * apply, or --integrator) the compiled program runs BENCH_RTL_STEPS
+ * integrations on the engine (cycles per integration, checked bit for bit
+ * against its golden model), then the golden model integrates to T
+ * (default 600 h) with h, h/2, ... h/2^(K-1) (K default 6) and the final
+ * state is compared with the GSL reference.  CSV: model, integrator, h,
+ * steps, t_end, insns_per_step, cycles_per_step, work_cycles,
+ * engine_mismatches, error_max, then NAME and NAME_ref per state
+ * variable.  With --stability FILE.csv also the stability bound of each
+ * integrator: the largest h (bisection) whose golden run of 20000
+ * integrations stays finite and within 1e3 (1 + max |initial state|);
+ * columns model, integrator, h_stable, trial_steps, growth_bound.  With
+ * --long FILE.csv [--long-steps N] a long run of each integrator on the
+ * engine (N integrations, default 100000, every one checked) and its
+ * final error against GSL.
+ * Exit status: 0 written and every engine run bit-exact, 1 a
+ * mismatch or failure, 2 bad arguments or model. */
+int fp3_cmd_bench_model(int argc, char **argv);
+
 #endif /* FP3_CMD_MODEL_H */

@@ -1074,6 +1074,23 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     for (unsigned i = 0; i < ns; i++)
       b->out[i] = m->role[i] == FP3_MR_POSITION ? m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i)
                                                : t[i];
+  } else if (strcmp(integ, "verlet") == 0) {
+    /* kick, drift, kick (fp3_model_step_literal); each evaluation of f
+     * keeps only the derivatives its update reads (dead code elimination) */
+    if (!fp3_model_split(m)) return -2;
+    if (!fp3_model_verlet_ok(m, NULL, NULL)) return -3;
+    ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
+    m_f(b, m, y, f, "1");
+    for (unsigned i = 0; i < ns; i++)
+      t[i] = m->role[i] == FP3_MR_VELOCITY ? m_nm(b, m_add(b, y[i], mul(b, hh, f[i])), "uh", i)
+                                           : y[i];
+    m_f(b, m, t, f, "2");
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_POSITION) t[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+    m_f(b, m, t, f, "3");
+    for (unsigned i = 0; i < ns; i++)
+      b->out[i] = m->role[i] == FP3_MR_VELOCITY ? m_nm(b, m_add(b, t[i], mul(b, hh, f[i])), "n", i)
+                                               : t[i];
   } else {
     return -1;
   }
@@ -1102,6 +1119,14 @@ static int model_ir(builder *b, const fp3_model *m, const char *integ,
   int rc = m_build(b, m, integ);
   if (rc == -1) {
     snprintf(msg, n, "unknown integrator '%s' for a model (%s)", integ, fp3_model_integrators());
+    return -1;
+  }
+  if (rc == -3) {
+    unsigned vel = 0, reads = 0;
+    fp3_model_verlet_ok(m, &vel, &reads);
+    snprintf(msg, n, "integrator verlet needs accelerations that do not read velocities: "
+             "%s' reads velocity %s (symeuler, rk2 or rk4 take it)", m->state[vel],
+             m->state[reads]);
     return -1;
   }
   if (rc == -2) {

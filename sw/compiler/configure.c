@@ -12,6 +12,7 @@
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "image.h"
+#include "modelref.h"
 
 /* xc2v LUTs of fp_add and fp_mul at the default latencies, per candidate
  * mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ): docs/fpga.md "FP cores", `make synth`. */
@@ -110,9 +111,125 @@ static int measure_modes(fp3_compiled *c, const fp3_scene *sc, uint32_t steps,
   return 0;
 }
 
+/* Reference states of one model object at every integration (GSL). */
+typedef struct refrec {
+  unsigned ns;
+  double *y;   /* steps x ns */
+  double *ymax;
+} refrec;
+
+static void ref_cb(void *ctx, uint32_t k, const double *y) {
+  refrec *rr = ctx;
+  for (unsigned i = 0; i < rr->ns; i++) {
+    rr->y[(size_t)(k - 1) * rr->ns + i] = y[i];
+    if (fabs(y[i]) > rr->ymax[i]) rr->ymax[i] = fabs(y[i]);
+  }
+}
+
+/* The error of every candidate mode for a model scene: the compiled
+ * program's golden model in each mode (host values in the same mode)
+ * against the GSL reference (modelref.h) at every integration, the same
+ * relative measure as measure_modes over every state variable. */
+static int measure_model_modes(fp3_compiled *c, const fp3_mscene *sc, uint32_t steps,
+                               fp3_configure_result *r, char *msg, size_t n) {
+  const fp3_model *m = sc->model;
+  const unsigned ns = m->nstate, np = m->nparam;
+  double ymax[FP3_MODEL_MAX_VARS];
+  refrec rr = {ns, malloc((size_t)steps * ns * sizeof(double)), ymax};
+  if (!rr.y) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  for (int k = 0; k < FP3_CONFIGURE_MODES; k++)
+    r->err[k] = r->added[k] = fpenv_supported(r->mode[k]) ? 0.0 : NAN;
+  for (size_t i = 0; i < sc->n; i++) {
+    double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], yend[FP3_MODEL_MAX_VARS];
+    for (unsigned k = 0; k < np; k++) din[k] = sc->in[i * np + k];
+    for (unsigned k = 0; k < ns; k++) dy0[k] = sc->y0[i * ns + k], ymax[k] = 0.0;
+    char rmsg[256];
+    if (fp3_model_gsl(m, din, dy0, steps, ref_cb, &rr, yend, rmsg, sizeof rmsg)) {
+      snprintf(msg, n, "object %zu: the reference failed: %s", i, rmsg);
+      free(rr.y);
+      return -1;
+    }
+    double e_rne = 0;
+    for (int md = 0; md < FP3_CONFIGURE_MODES; md++) {
+      if (isnan(r->err[md])) continue;
+      fpenv_saved env;
+      if (fpenv_enter(r->mode[md], &env)) continue;
+      unsigned wr[512];
+      uint32_t wv[512];
+      double d[FP3_MODEL_MAX_VARS] = {0};
+      float y[FP3_MODEL_MAX_VARS];
+      fp3_compiled_model_start(c, sc->in + i * np, sc->y0 + i * ns, wr, wv, 512);
+      for (uint32_t k = 1; k <= steps; k++) {
+        fp3_compiled_model_step(c, y);
+        for (unsigned v = 0; v < ns; v++) { /* non-finite: infinitely wrong */
+          double ev = isfinite(y[v]) ? fabs((double)y[v] - rr.y[(size_t)(k - 1) * ns + v])
+                                     : INFINITY;
+          if (ev > d[v]) d[v] = ev;
+        }
+      }
+      fpenv_leave(&env);
+      double e = 0;
+      for (unsigned v = 0; v < ns; v++) e = fmax(e, rel_error(d[v], ymax[v]));
+      if (md == 0) e_rne = e;
+      if (e > r->err[md]) r->err[md] = e;
+      if (md > 0 && e - e_rne > r->added[md]) r->added[md] = e - e_rne;
+    }
+  }
+  free(rr.y);
+  return 0;
+}
+
+/* What is configured: a ship scene or a model scene, compiled and measured
+ * by its own front end. */
+typedef struct cfg_src {
+  const fp3_scene *ship;   /* a ship scene, or NULL                         */
+  const fp3_mscene *ms;    /* a model scene, or NULL                        */
+  const char *name;        /* the ship scene's name (program header)        */
+  unsigned char zero[FP3_MODEL_MAX_VARS]; /* model params zero everywhere  */
+} cfg_src;
+
+static int src_compile(const cfg_src *s, const char *integ, const fp3_compile_opts *co,
+                       fp3_compiled **c, char *msg, size_t n) {
+  if (s->ship) return fp3_compile(s->ship, integ, co, s->name, c, msg, n);
+  return fp3_compile_model(s->ms->model, integ, co, s->zero, c, msg, n);
+}
+
+static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
+                         fp3_configure_result *r, fp3_compiled **compiled, char *msg,
+                         size_t n);
+
 int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
                   fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n) {
+  cfg_src src;
+  memset(&src, 0, sizeof src);
+  src.ship = sc;
+  src.name = scene_name;
+  return configure_src(&src, o, r, compiled, msg, n);
+}
+
+int fp3_configure_model(const fp3_mscene *sc, const fp3_configure_opts *o,
+                        fp3_configure_result *r, fp3_compiled **compiled, char *msg,
+                        size_t n) {
+  cfg_src src;
+  memset(&src, 0, sizeof src);
+  src.ms = sc;
+  const fp3_model *m = sc->model;
+  for (unsigned k = 0; k < m->nparam; k++) {
+    src.zero[k] = sc->n > 0;
+    for (size_t i = 0; i < sc->n && src.zero[k]; i++)
+      src.zero[k] = sc->in[i * m->nparam + k] == 0.0f;
+  }
+  return configure_src(&src, o, r, compiled, msg, n);
+}
+
+static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
+                         fp3_configure_result *r, fp3_compiled **compiled, char *msg,
+                         size_t n) {
   memset(r, 0, sizeof *r);
+  const size_t nobj = src->ship ? src->ship->n : src->ms->n;
   if (compiled) *compiled = NULL;
   if (!(o->budget > 0.0) || !isfinite(o->budget)) {
     snprintf(msg, n, "the error budget must be a positive number");
@@ -133,7 +250,7 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
 
   /* the program as fp3 run --scene compiles it for the default build */
   fp3_compiled *c = NULL;
-  if (fp3_compile(sc, integ, &co, scene_name, &c, msg, n)) return -1;
+  if (src_compile(src, integ, &co, &c, msg, n)) return -1;
   r->regs_default = regs_named(fp3_compiled_image(c));
   r->est_first = fp3_compiled_stats(c)->est_cycles_first;
   r->est_later = fp3_compiled_stats(c)->est_cycles_later;
@@ -146,7 +263,7 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
     ko.num_regs = k;
     fp3_compiled *ck = NULL;
     char kmsg[256];
-    if (fp3_compile(sc, integ, &ko, scene_name, &ck, kmsg, sizeof kmsg)) continue;
+    if (src_compile(src, integ, &ko, &ck, kmsg, sizeof kmsg)) continue;
     const fp3_compile_stats *st = fp3_compiled_stats(ck);
     if (st->est_cycles_first == r->est_first && st->est_cycles_later == r->est_later) {
       fp3_compiled_free(c);
@@ -182,14 +299,14 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
   r->cfg.has_sign = r->unit_pc[5] >= 0;
   r->cfg.div_latency = FP3_DEFAULT_DIV_LATENCY;
 
-  r->objects = sc->n;
+  r->objects = nobj;
   /* contexts that keep the issue slot busy: one object's integration
    * takes est_later cycles for body_insns issues */
   r->contexts_issue = (r->est_later + r->body_insns - 1) / r->body_insns;
   if (r->contexts_issue < 1) r->contexts_issue = 1;
   size_t nc = o->context_per_object ? FP3_MAX_CONTEXTS : r->contexts_issue;
   if (nc > FP3_MAX_CONTEXTS) nc = FP3_MAX_CONTEXTS;
-  if (nc > sc->n) nc = sc->n;
+  if (nc > nobj) nc = nobj;
   r->cfg.num_contexts = (unsigned)nc;
   /* lanes: the rest of the scene in flight beside the contexts */
   size_t nl = (sc->n + nc - 1) / nc;
@@ -205,7 +322,8 @@ int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configu
     r->mode[m].ftz = (m & 2) ? 1 : 0;
     r->luts[m] = (r->cfg.has_add ? add_luts[m] : 0) + (r->cfg.has_mul ? mul_luts[m] : 0);
   }
-  if (measure_modes(c, sc, o->steps, r, msg, n)) {
+  if (src->ship ? measure_modes(c, src->ship, o->steps, r, msg, n)
+                : measure_model_modes(c, src->ms, o->steps, r, msg, n)) {
     fp3_compiled_free(c);
     return -1;
   }

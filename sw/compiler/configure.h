@@ -60,6 +60,7 @@
 
 #include "compile.h"
 #include "engine.h"
+#include "mscene.h"
 #include "objects.h"
 
 /* The instruction groups a build may leave out, in the order of unit_pc:
@@ -122,6 +123,17 @@ typedef struct fp3_configure_result {
  * for the derived NUM_REGS (free with fp3_compiled_free). */
 int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
                   fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n);
+
+/* The same for a model scene (mscene.h): its model compiled as `fp3 run
+ * --scene` compiles it (params zero in every object removed unless
+ * o->literal), the units, NUM_REGS and NUM_CONTEXTS by the rules above;
+ * ROUND and FTZ by the same error measure, with the model's GSL reference
+ * (modelref.h, rk8pd at 1e-12) at every integration in place of the exact
+ * solution, over every state variable.  Errors as fp3_configure, and a
+ * reference that fails (a message naming the object). */
+int fp3_configure_model(const fp3_mscene *sc, const fp3_configure_opts *o,
+                        fp3_configure_result *r, fp3_compiled **compiled, char *msg,
+                        size_t n);
 
 /* The parameters as one line of make variables, no newline:
  * "NUM_CONTEXTS=8 NUM_LANES=2 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0

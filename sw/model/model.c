@@ -593,6 +593,23 @@ int fp3_model_split(const fp3_model *m) {
   return m->nstate > 0 && m->role[0] != FP3_MR_STATE;
 }
 
+int fp3_model_verlet_ok(const fp3_model *m, unsigned *vel, unsigned *reads) {
+  if (!fp3_model_split(m)) return 0;
+  for (unsigned i = 0; i < m->nstate; i++) {
+    if (m->role[i] != FP3_MR_VELOCITY) continue;
+    unsigned char seen[FP3_MODEL_MAX_NODES] = {0};
+    mark(m, m->deriv[i], seen);
+    for (unsigned k = 0; k < m->nn; k++)
+      if (seen[k] && m->node[k].kind == FP3_ME_STATE &&
+          m->role[m->node[k].id] == FP3_MR_VELOCITY) {
+        if (vel) *vel = i;
+        if (reads) *reads = (unsigned)m->node[k].id;
+        return 0;
+      }
+  }
+  return 1;
+}
+
 const char *fp3_mexpr_op_name(int kind) {
   static const char *const names[FP3_ME_KINDS] = {
       "number", "param", "state", "t", "+", "-", "*", "/", "unary -",
@@ -647,11 +664,11 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
   for (unsigned i = 0; i < m->nstate; i++) f[i] = val[m->deriv[i]];
 }
 
-const char *fp3_model_integrators(void) { return "euler rk2 rk4 symeuler"; }
+const char *fp3_model_integrators(void) { return "euler rk2 rk4 symeuler verlet"; }
 
 int fp3_model_integrator_known(const char *name) {
   return strcmp(name, "euler") == 0 || strcmp(name, "rk2") == 0 || strcmp(name, "rk4") == 0 ||
-         strcmp(name, "symeuler") == 0;
+         strcmp(name, "symeuler") == 0 || strcmp(name, "verlet") == 0;
 }
 
 int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *in,
@@ -692,6 +709,17 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
     fp3_model_eval_f(m, in, y, f, val);
     for (unsigned i = 0; i < ns; i++)
       if (m->role[i] == FP3_MR_POSITION) y[i] = y[i] + h * f[i];
+  } else if (strcmp(integ, "verlet") == 0 && fp3_model_verlet_ok(m, NULL, NULL)) {
+    const float hh = 0.5f * h;
+    fp3_model_eval_f(m, in, y, f, val); /* kick: half a step of velocity */
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_VELOCITY) y[i] = y[i] + hh * f[i];
+    fp3_model_eval_f(m, in, y, f, val); /* drift: positions with those velocities */
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_POSITION) y[i] = y[i] + h * f[i];
+    fp3_model_eval_f(m, in, y, f, val); /* kick at the new positions */
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_VELOCITY) y[i] = y[i] + hh * f[i];
   } else {
     return -1;
   }

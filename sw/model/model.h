@@ -104,12 +104,19 @@ int fp3_model_uses(const fp3_model *m, int kind);
  * a `velocity` line, every state variable in one of them). */
 int fp3_model_split(const fp3_model *m);
 
+/* 1 if velocity Verlet applies: the state is split (fp3_model_split) and
+ * no velocity's derivative (the acceleration) reads a velocity, directly
+ * or through lets.  Else 0, and (if not NULL) *vel the first velocity
+ * whose derivative reads velocity *reads (an unsplit model: 0 with
+ * neither set). */
+int fp3_model_verlet_ok(const fp3_model *m, unsigned *vel, unsigned *reads);
+
 /* The operation a node kind stands for, as written ("+", "sqrt", ...). */
 const char *fp3_mexpr_op_name(int kind);
 
 /* ---- the literal golden model (C binary32) ------------------------------- */
 
-/* Integrators of the literal golden model: "euler rk2 rk4 symeuler". */
+/* Integrators of the literal golden model: "euler rk2 rk4 symeuler verlet". */
 const char *fp3_model_integrators(void);
 int fp3_model_integrator_known(const char *name);
 
@@ -127,9 +134,14 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
  *             k4 = h f(y + k3), y_i += 0.16666667 (((k1 + 2 k2) + 2 k3) + k4)
  *   symeuler: velocities u_i += h f_i(y), then positions
  *             x_i += h f_i(x, u_new) (needs fp3_model_split)
+ *   verlet:   velocity Verlet (kick, drift, kick; Verlet 1967, Swope et
+ *             al. 1982): hh = 0.5 h; u_i += hh f_i(y); x_i += h f_i(x,
+ *             u); u_i += hh f_i(x, u) at the new x (needs
+ *             fp3_model_verlet_ok: accelerations free of velocities;
+ *             second order, symplectic, time-reversible)
  * Each product and sum one binary32 operation, in the order written.
- * Returns 0, or -1 for an unknown integrator or symeuler on an unsplit
- * model.  Runs in the caller's FP environment (fpenv_enter for RTZ/FTZ). */
+ * Returns 0, or -1 for an unknown integrator, symeuler on an unsplit
+ * model or verlet where fp3_model_verlet_ok is 0.  Runs in the caller's FP environment (fpenv_enter for RTZ/FTZ). */
 int fp3_model_step_literal(const fp3_model *m, const char *integrator, const float *in,
                            float *y);
 

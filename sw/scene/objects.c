@@ -12,6 +12,7 @@
 
 #include "fpenv.h"
 #include "fpref.h"
+#include "mscene.h"
 
 /* ---- scene files --------------------------------------------------------- */
 
@@ -31,6 +32,28 @@ static int next_float(char **p, float *out) {
 static int rest_is_blank(const char *s) {
   while (*s == ' ' || *s == '\t') s++;
   return *s == '\0';
+}
+
+int fp3_scene_h_line(char *p, const char *path, int lineno, size_t nobj, int *h_line,
+                     float *h, char *msg, size_t n) {
+  int rc = 0;
+  if (nobj > 0) {
+    snprintf(msg, n, "%s:%d: 'h' must come before the objects", path, lineno);
+    rc = -1;
+  } else if (*h_line) {
+    snprintf(msg, n, "%s:%d: a second 'h' line (the first is line %d): the time step "
+             "comes once", path, lineno, *h_line);
+    rc = -1;
+  } else if (next_float(&p, h) || !rest_is_blank(p)) {
+    snprintf(msg, n, "%s:%d: 'h' wants one number", path, lineno);
+    rc = -1;
+  } else if (!(*h > 0.0f) || !isfinite(*h)) {
+    snprintf(msg, n, "%s:%d: h = %g: the time step must be finite and > 0", path, lineno,
+             (double)*h);
+    rc = -1;
+  }
+  *h_line = lineno;
+  return rc;
 }
 
 int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n) {
@@ -60,23 +83,7 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
     while (*p == ' ' || *p == '\t') p++;
     if (*p == '\0') continue;
     if (p[0] == 'h' && (p[1] == ' ' || p[1] == '\t')) {
-      p++;
-      if (sc->n > 0) {
-        snprintf(msg, n, "%s:%d: 'h' must come before the objects", path, lineno);
-        rc = -1;
-      } else if (h_line) {
-        snprintf(msg, n, "%s:%d: a second 'h' line (the first is line %d): the time step "
-                 "comes once", path, lineno, h_line);
-        rc = -1;
-      } else if (next_float(&p, &h) || !rest_is_blank(p)) {
-        snprintf(msg, n, "%s:%d: 'h' wants one number", path, lineno);
-        rc = -1;
-      } else if (!(h > 0.0f) || !isfinite(h)) {
-        snprintf(msg, n, "%s:%d: h = %g: the time step must be finite and > 0", path,
-                 lineno, (double)h);
-        rc = -1;
-      }
-      h_line = lineno;
+      rc = fp3_scene_h_line(p + 1, path, lineno, sc->n, &h_line, &h, msg, n);
       continue;
     }
     float v[5];
@@ -134,7 +141,7 @@ int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n
 
 /* ---- generated scenes -------------------------------------------------- */
 
-static uint64_t xorshift(uint64_t *s) {
+uint64_t fp3_scene_xorshift(uint64_t *s) {
   *s ^= *s << 13;
   *s ^= *s >> 7;
   *s ^= *s << 17;
@@ -143,7 +150,7 @@ static uint64_t xorshift(uint64_t *s) {
 
 /* Uniform in [lo, hi]. */
 static double uniform(uint64_t *s, double lo, double hi) {
-  return lo + (hi - lo) * (double)(xorshift(s) >> 11) / 9007199254740992.0;
+  return lo + (hi - lo) * (double)(fp3_scene_xorshift(s) >> 11) / 9007199254740992.0;
 }
 
 /* An empty scene with room for n objects, and the generator state of seed
@@ -164,7 +171,7 @@ int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc) {
     double m = pow(10.0, uniform(&s, 0.0, 6.0));
     double tau = uniform(&s, 0.5, 50.0);
     double vinf = uniform(&s, -5.0, 30.0);
-    double C = (xorshift(&s) % 8 == 0) ? 0.0 : m / tau;
+    double C = (fp3_scene_xorshift(&s) % 8 == 0) ? 0.0 : m / tau;
     double T = C > 0.0 ? vinf * C : m * uniform(&s, -0.5, 0.5);
     fp3_ship_params *o = &sc->objs[i];
     o->T = (float)T;
@@ -185,7 +192,7 @@ int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc) {
     double m = pow(10.0, uniform(&s, 4.0, 6.5));
     double C = m / uniform(&s, 2.0, 20.0);
     double vinf = uniform(&s, 2.0, 12.0);
-    unsigned kind = (unsigned)(xorshift(&s) % 100); /* 60 / 35 / 5 */
+    unsigned kind = (unsigned)(fp3_scene_xorshift(&s) % 100); /* 60 / 35 / 5 */
     fp3_ship_params *o = &sc->objs[i];
     o->C = (float)C;
     o->m = (float)m;
@@ -340,24 +347,12 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     for (unsigned c = 0; c < k; c++) {
       memset(regs, 0, e->config.num_regs * sizeof *regs);
       fp3_in_registers(img, &sc->objs[first + c], regs);
-      for (unsigned r = 0; r < e->config.num_regs; r++) {
-        if (fp3_engine_write_ctx_reg(e, c, r, regs[r])) {
-          snprintf(msg, n, "%s", fp3_engine_error(e));
-          goto out;
-        }
-      }
+      if (fp3_ctx_write_bank(e, c, regs, e->config.num_regs, msg, n)) goto out;
     }
     for (int w = 0; w < 2; w++) memset(b.seen[w], 0, slots);
     fp3_observer obs = {.ctx = &b, .on_ctx_write = rec_write};
     fp3_status st;
-    if (fp3_engine_run_contexts(e, steps, k, &obs, &st)) {
-      snprintf(msg, n, "%s", fp3_engine_error(e));
-      goto out;
-    }
-    if (b.bad_tag) {
-      snprintf(msg, n, "engine fault: a write tagged with an integration past the run");
-      goto out;
-    }
+    if (fp3_ctx_run_batch(e, steps, k, &obs, &b.bad_tag, &st, msg, n)) goto out;
     res->batches++;
     res->cycles += st.cycles;
     res->issued += st.issued;
@@ -368,15 +363,9 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     for (unsigned c = 0; c < k; c++) {
       size_t obj = first + c;
       fp3_ctx_status cs;
-      if (fp3_engine_ctx_status(e, c, &cs)) {
-        snprintf(msg, n, "%s", fp3_engine_error(e));
+      if (fp3_ctx_check(e, c, obj, &cs, &res->error, &res->error_object, &res->error_pc, msg,
+                        n))
         goto out;
-      }
-      if (cs.error != FP3_ERR_NONE && res->error == FP3_ERR_NONE) {
-        res->error = cs.error;
-        res->error_object = obj;
-        res->error_pc = cs.fault_pc;
-      }
       /* Golden model of this object, every integration. */
       const fp3_ship_params *o = &sc->objs[obj];
       fpenv_saved env;

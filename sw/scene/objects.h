@@ -38,6 +38,14 @@ typedef struct fp3_scene {
  * reason" in msg (nothing allocated). */
 int fp3_scene_read(const char *path, float h, fp3_scene *sc, char *msg, size_t n);
 
+/* The `h STEP` line of a scene file (ship or model scene): p is the text
+ * after the `h`, nobj the objects read so far, *h_line the line of an
+ * earlier `h` (0: none; set to lineno).  Returns 0 with the step in *h, or
+ * -1 with "FILE:LINE: reason": after an object, a second `h`, not one
+ * number, not finite and > 0. */
+int fp3_scene_h_line(char *p, const char *path, int lineno, size_t nobj, int *h_line,
+                     float *h, char *msg, size_t n);
+
 /* A reproducible random scene of n ships (seeded xorshift): masses
  * log-uniform in [1, 1e6] kg, time constants m/C in [0.5, 50] s (one ship
  * in eight without drag), terminal velocities in [-5, 30] m/s, v0 in
@@ -53,6 +61,10 @@ int fp3_scene_generate(uint64_t seed, size_t n, float h, fp3_scene *sc);
 int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc);
 
 void fp3_scene_free(fp3_scene *sc);
+
+/* The scene generators' xorshift64 (Marsaglia 2003, shifts 13, 7, 17):
+ * advances *s (never 0) and returns it. */
+uint64_t fp3_scene_xorshift(uint64_t *s);
 
 /* The value of every `.in` parameter (enum fp3_in_param) for object p:
  * the scene values, minv = 1.0f/m, and the folded inputs hm = h*minv,

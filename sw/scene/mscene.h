@@ -1,0 +1,182 @@
+/*
+ * mscene.h -- scenes of many objects of one model (the model language,
+ * docs/models.md), and running them on the contexts of an engine, every
+ * object checked bit for bit against a golden model after every
+ * integration.
+ *
+ * Scene file (text, `#` starts a comment):
+ *
+ *   model ../models/spring.fp3m     (the model, relative to this file)
+ *   h 0.015625                      (time step [s], once, before objects)
+ *   k    c    m    x     v          (header: the per-object columns)
+ *   40   0.8  2    0.5   -0.25      (one object per line)
+ *   10   0    1    1     0
+ *
+ * The header names every param of the model (h excepted: it is the `h`
+ * line) and every state variable (its initial value), each once, in any
+ * order.  Numbers are read as binary32 (strtof) and must be finite.
+ */
+#ifndef FP3_MSCENE_H
+#define FP3_MSCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine.h"
+#include "fpref.h"
+#include "model.h"
+
+/* A model scene: n objects of one model. */
+typedef struct fp3_mscene {
+  fp3_model *model;      /* malloc'd; model->file is model_path           */
+  char model_path[1024]; /* the model file, resolved against the scene's
+                            folder                                         */
+  int model_line;        /* line of the `model` line                       */
+  int header_line;       /* line of the column header                      */
+  size_t n;              /* objects                                         */
+  float *in;             /* n x model->nparam: h, then the params          */
+  float *y0;             /* n x model->nstate: initial states              */
+  int *line;             /* source line of each object (0: generated)      */
+} fp3_mscene;
+
+/* 1 if the file's first line that is not blank or a comment is a `model`
+ * line (a model scene), 0 otherwise (a ship scene, or unreadable: the ship
+ * reader then gives the error). */
+int fp3_scene_is_model(const char *path);
+
+/* Read a model scene.  Returns 0, or -1 with "FILE:LINE: reason" in msg
+ * (nothing allocated): no `model` line or two, the model's own errors
+ * (its FILE:LINE:COL), no `h` line or two, h not finite and > 0, no
+ * header before the first object, a header name that is neither a param
+ * nor a state variable, named twice, or `h`; a param or state variable the
+ * header leaves out (named with the model file and its declaring line); a
+ * row with fewer or more numbers than columns, or a number that is bad or
+ * not finite; no objects. */
+int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n);
+
+/* n objects of model m (loaded by the caller, owned by s afterwards), all
+ * from base values in[] (h and params) and y0[] (states), each non-h value
+ * of object i >= 1 scaled by its own factor uniform in [0.75, 1.25] from a
+ * seeded xorshift (object 0 has the base values exactly; h is never
+ * varied).  Returns 0 or -1 (out of memory; m is freed). */
+int fp3_mscene_generate(fp3_model *m, const float *in, const float *y0, size_t n,
+                        uint64_t seed, fp3_mscene *s);
+
+void fp3_mscene_free(fp3_mscene *s);
+
+/* Write regs[0..nregs) into the registers of context c of engine e.
+ * Returns 0, or -1 with the engine's message. */
+int fp3_ctx_write_bank(fp3_engine *e, unsigned c, const uint32_t *regs, unsigned nregs,
+                       char *msg, size_t n);
+
+/* The status of context c after a run (*cs), its object obj: the first
+ * context error of a run is kept in *error (enum fp3_error, left alone
+ * once set), *error_object and *error_pc.  Returns 0, or -1 with the
+ * engine's message. */
+int fp3_ctx_check(fp3_engine *e, unsigned c, size_t obj, fp3_ctx_status *cs, unsigned *error,
+                  size_t *error_object, uint32_t *error_pc, char *msg, size_t n);
+
+/* Run contexts 0..k-1 of engine e for `steps` integrations (observer obs,
+ * may be NULL).  Returns 0, or -1 with the engine's message, or when
+ * *bad_tag (if not NULL) was set by the observer: a write tagged with an
+ * integration past the run (an engine fault). */
+int fp3_ctx_run_batch(fp3_engine *e, uint32_t steps, unsigned k, const fp3_observer *obs,
+                      const int *bad_tag, fp3_status *st, char *msg, size_t n);
+
+/* A golden model of a program with nstate state registers, one object at
+ * a time.  start() sets object `obj` and gives the register writes the
+ * host makes before the run (at most max: returns how many); step() runs
+ * one integration and gives the new state.  Both run inside the cores' FP
+ * environment (fpenv_enter(mode)). */
+typedef struct fp3_state_golden {
+  void *ctx;
+  unsigned nstate;
+  const unsigned *reg; /* nstate registers holding the state            */
+  size_t (*start)(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max);
+  void (*step)(void *ctx, float *y);
+} fp3_state_golden;
+
+/* Outcome of fp3_run_state_objects. */
+typedef struct fp3_state_result {
+  size_t objects;
+  unsigned contexts;       /* contexts per batch                           */
+  size_t batches;
+  uint64_t cycles, issued, stalls;
+  uint32_t flags;          /* sticky exception flags, all batches          */
+  unsigned error;          /* first context error (enum fp3_error)         */
+  size_t error_object;
+  uint32_t error_pc;
+  uint64_t mismatches;     /* (object, integration, variable) != golden   */
+  size_t first_object;     /* first mismatch: object, integration, variable */
+  uint32_t first_step;
+  unsigned first_var;
+  uint32_t first_got, first_want;
+  size_t nonfinite_object; /* first object whose golden state is not finite
+                              (SIZE_MAX: none), its integration, variable */
+  uint32_t nonfinite_step;
+  unsigned nonfinite_var;
+  uint32_t *y;             /* final state, objects x nstate (malloc'd)     */
+} fp3_state_result;
+
+/* Run `nobj` objects for `steps` integrations on engine e with the
+ * program words[0..nwords) (assembled, image.h), in batches of e->config.num_contexts contexts: each context's
+ * registers zeroed, then golden->start's writes; after the batch, every
+ * state register of every object after every integration compared bit for
+ * bit with golden->step (run in `mode`).  Returns 0 when the runs took
+ * place (mismatches, errors and non-finite states are in *res), or -1 with
+ * a message (engine failure, out of memory, a register beyond NUM_REGS,
+ * too much to record). */
+int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
+                          uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
+                          fp3_state_result *res, char *msg, size_t n);
+
+void fp3_state_result_free(fp3_state_result *res);
+
+/* ---- frame by frame, with rest skipping (frames.h for ships) ------------- */
+
+/* A golden model that steps any object from any state: step_from() runs
+ * one integration of object `obj` from state y (nstate values) into ynew,
+ * in the cores' FP environment; start() as in fp3_state_golden gives the
+ * host's register writes of the object's first frame. */
+typedef struct fp3_state_stepper {
+  void *ctx;
+  unsigned nstate;
+  const unsigned *reg;
+  size_t (*start)(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max);
+  void (*step_from)(void *ctx, size_t obj, const float *y, float *ynew);
+} fp3_state_stepper;
+
+/* Outcome of fp3_run_state_frames. */
+typedef struct fp3_state_frames_result {
+  size_t objects;
+  uint32_t frames;
+  unsigned contexts;
+  uint64_t batches, cycles, issued;
+  uint64_t object_frames;  /* object-frames run on the engine              */
+  uint64_t skipped;        /* object-frames skipped at rest                 */
+  size_t asleep_last;      /* objects at rest after the last frame          */
+  unsigned error;
+  size_t error_object;
+  uint32_t error_pc;
+  uint64_t mismatches;     /* (object, frame, variable) != golden          */
+  size_t first_object;
+  uint32_t first_frame;
+  unsigned first_var;
+} fp3_state_frames_result;
+
+/* Run nobj objects frame by frame: each frame one integration (STEPS = 1)
+ * of every awake object, in batches of the contexts; the host keeps every
+ * object's whole register bank between frames (written before, read after
+ * each batch).  With rest_skip, an object whose frame left its whole bank
+ * bit-identical is at a fixed point of the program (a frame reads nothing
+ * but its bank and the instruction memory) and is not run again: every
+ * later frame would leave it so.  Every object, awake or asleep, is
+ * compared after every frame with golden->step_from, which steps it every
+ * frame: the evidence that skipping changes no bit.  Returns 0 when the
+ * frames ran (results in *res), or -1 with a message. */
+int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
+                         uint32_t frames, int rest_skip, fpref_mode mode,
+                         const fp3_state_stepper *golden, fp3_state_frames_result *res,
+                         char *msg, size_t n);
+
+#endif /* FP3_MSCENE_H */
