@@ -309,7 +309,8 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   if (nc > nobj) nc = nobj;
   r->cfg.num_contexts = (unsigned)nc;
   /* lanes: the rest of the scene in flight beside the contexts */
-  size_t nl = (nobj + nc - 1) / nc;
+  size_t nl = nc ? (nobj + nc - 1) / nc : 1;
+  if (nl < 1) nl = 1;
   if (nl > o->max_lanes) nl = o->max_lanes;
   r->cfg.num_lanes = (unsigned)nl;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
