@@ -5,28 +5,29 @@
 #   bash scripts/fuzz.sh SECONDS BINDIR NAME...
 #
 # Each harness BINDIR/fuzz_NAME starts from a working copy of its seeds,
-# BINDIR/corpus/NAME (seeded from fuzz/corpus/NAME and fuzz/regress/NAME,
-# and kept between runs so that a longer campaign resumes), and runs
-# SECONDS.  One line per harness: "fuzz NAME: N executions in S s (E
+# WORK/corpus/NAME (seeded from fuzz/corpus/NAME and fuzz/regress/NAME,
+# and kept between runs so that a longer campaign resumes; WORK is
+# $FUZZ_WORK, default BINDIR), and runs SECONDS.  One line per harness: "fuzz NAME: N executions in S s (E
 # exec/s), corpus K inputs, 0 crashes", from libFuzzer's final statistics.
 # A crash, leak, timeout or sanitizer report ends that harness: the script
-# prints the reproducer's path (BINDIR/crashes/NAME/...) and the command
+# prints the reproducer's path (WORK/crashes/NAME/...) and the command
 # that replays it, goes on with the other harnesses, and exits 1.
-# libFuzzer's log of each run is BINDIR/logs/NAME.log.
+# libFuzzer's log of each run is WORK/logs/NAME.log.
 set -u
 if [ $# -lt 3 ]; then
   echo "usage: fuzz.sh SECONDS BINDIR NAME..." >&2
   exit 2
 fi
 secs=$1 bindir=$2
+workdir=${FUZZ_WORK:-$bindir}
 shift 2
 here=$(cd "$(dirname "$0")/.." && pwd)
 failed=0
 for name in "$@"; do
   bin=$bindir/fuzz_$name
-  work=$bindir/corpus/$name
-  crashes=$bindir/crashes/$name
-  log=$bindir/logs/$name.log
+  work=$workdir/corpus/$name
+  crashes=$workdir/crashes/$name
+  log=$workdir/logs/$name.log
   mkdir -p "$work" "$crashes" "$(dirname "$log")"
   if [ ! -x "$bin" ]; then
     echo "fuzz $name: no harness $bin (make fuzz-build)"

@@ -560,6 +560,15 @@ static void test_asm_include(void **state) {
   assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
   assert_non_null(strstr(err, "nested more than 8 deep"));
   free(err);
+  /* a file including itself ten times: refused after 64 reads, not 10^8 */
+  write_file("fan.inc", ".include \"fan.inc\"\n.include \"fan.inc\"\n.include \"fan.inc\"\n"
+                        ".include \"fan.inc\"\n.include \"fan.inc\"\n.include \"fan.inc\"\n"
+                        ".include \"fan.inc\"\n.include \"fan.inc\"\n.include \"fan.inc\"\n"
+                        ".include \"fan.inc\"\n");
+  snprintf(top, sizeof top, "%s/fan.inc", tmpdir);
+  assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
+  assert_non_null(strstr(err, "more than 64 .include directives in one program"));
+  free(err);
 }
 
 static void test_hex_roundtrip(void **state) {
