@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # test_fuzz.sh -- the fuzz harnesses in make test (mk/fuzz.mk).
 #
-# 1. Replay: every file of fuzz/regress/NAME/ (inputs that once crashed a
-#    parser, kept after the fix) and fuzz/corpus/NAME/ (the seeds) runs
-#    once through build/fuzz/fuzz_NAME, which is built with ASan and UBSan:
-#    a crash, leak or sanitizer report fails the test.
+# 1. Replay: every seed (scripts/fuzz.sh --seeds NAME: fuzz/regress/NAME/,
+#    inputs that once made a parser fail, kept after the fix; fuzz/corpus/
+#    NAME/; the project's programs, scenes or models) runs once through
+#    build/fuzz/fuzz_NAME, which is built with ASan and UBSan: a crash,
+#    leak, hang (10 s) or sanitizer report fails the test.
 # 2. Fuzz: each harness FUZZ_TEST_SECONDS (default 20) from its seeds in a
 #    fresh working folder (scripts/fuzz.sh); a crash fails the test and
 #    the reproducer's path is printed (the folder is then kept).
@@ -25,10 +26,7 @@ for name in $names; do
     continue
   fi
   files=()
-  for d in fuzz/regress/$name fuzz/corpus/$name; do
-    [ -d "$d" ] || continue
-    while IFS= read -r f; do files+=("$f"); done < <(find "$d" -maxdepth 1 -type f ! -name '.*' | sort)
-  done
+  while IFS= read -r f; do files+=("$f"); done < <(bash scripts/fuzz.sh --seeds "$name")
   if [ ${#files[@]} -eq 0 ]; then # libFuzzer given no file would fuzz
     echo "FAIL $name: no seed or regression input"
     fail=1
