@@ -560,6 +560,22 @@ static void test_asm_include(void **state) {
   assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
   assert_non_null(strstr(err, "nested more than 8 deep"));
   free(err);
+  /* a file including another ten times, which includes a third ten
+   * times: refused after 64 reads (without the bound, a file including
+   * itself ten times would be read 10^8 times within the nesting limit) */
+  write_file("fan1.inc", ".include \"fan2.inc\"\n.include \"fan2.inc\"\n.include \"fan2.inc\"\n"
+                         ".include \"fan2.inc\"\n.include \"fan2.inc\"\n.include \"fan2.inc\"\n"
+                         ".include \"fan2.inc\"\n.include \"fan2.inc\"\n.include \"fan2.inc\"\n"
+                         ".include \"fan2.inc\"\n");
+  write_file("fan2.inc", ".include \"fan3.inc\"\n.include \"fan3.inc\"\n.include \"fan3.inc\"\n"
+                         ".include \"fan3.inc\"\n.include \"fan3.inc\"\n.include \"fan3.inc\"\n"
+                         ".include \"fan3.inc\"\n.include \"fan3.inc\"\n.include \"fan3.inc\"\n"
+                         ".include \"fan3.inc\"\n");
+  write_file("fan3.inc", "nop\n");
+  snprintf(top, sizeof top, "%s/fan1.inc", tmpdir);
+  assert_int_not_equal(fp3_asm_file(top, &img, &err), 0);
+  assert_non_null(strstr(err, "more than 64 .include directives in one program"));
+  free(err);
 }
 
 static void test_hex_roundtrip(void **state) {

@@ -42,6 +42,10 @@ typedef struct {
 } fixup;
 
 #define MAX_INCLUDE_DEPTH 8
+/* .include directives read in one assembly, all files together.  The
+ * nesting limit alone bounds the depth, not the fan-out: a file that
+ * includes itself k times would be read k^8 times (hours for k = 10). */
+#define MAX_INCLUDES 64
 
 typedef struct {
   const char *fname;
@@ -573,6 +577,11 @@ static void do_include(asm_state *st, char **ops, int nops, int line) {
   if (st->depth >= MAX_INCLUDE_DEPTH) {
     add_error(st, line, ".include nested more than %d deep (does a file include itself?)",
               MAX_INCLUDE_DEPTH);
+    return;
+  }
+  if (st->nnames >= MAX_INCLUDES) {
+    add_error(st, line, "more than %d .include directives in one program (does a file include itself?)",
+              MAX_INCLUDES);
     return;
   }
   const char *name = ops[0] + 1;

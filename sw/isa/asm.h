@@ -20,7 +20,7 @@
  *   .word 0xHHHHHHHHHHHHHHHH   a raw 64-bit word, not checked (tests)
  *   .include "FILE"            FILE's lines in place (a relative FILE is
  *                              found beside the including file; at most 8
- *                              deep); errors name FILE:LINE.  An image's
+ *                              deep and 64 in all); errors name FILE:LINE.  An image's
  *                              line numbers are the top file's: a word
  *                              from an included file has the line of the
  *                              .include

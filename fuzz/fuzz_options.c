@@ -1,0 +1,65 @@
+/*
+ * fuzz_options.c -- libFuzzer harness for the command-line option parser:
+ * sw/cli/cliopt.c (fp3_opt_value, fp3_opt_positional, fp3_parse_count,
+ * fp3_is_help) as the model subcommands use it, i.e. the whole argument
+ * parsing of `fp3 run --model` and `fp3 compile --model` (parse_args and
+ * apply_set of sw/cli/cmd_model.c) without compiling or running anything.
+ *
+ * The input is an argument vector, one argument per line: the first line
+ * picks the subcommand ("compile", anything else "run"), the others are
+ * its arguments.  When parse_args accepts them, each --set NAME=VALUE is
+ * applied to a fixed model (a damped spring, parsed once), as the
+ * subcommand does before it compiles.
+ *
+ * cmd_model.c is included, not linked, to reach its static functions; the
+ * functions of it that run an engine are never called (the fuzz build
+ * links with --gc-sections, which drops them and what only they need).
+ */
+#include "cmd_model.c"
+
+#include "fuzz_common.h"
+
+#define MAX_ARGS 64
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  static fp3_model model;
+  static int ready;
+  if (!ready) {
+    static const char spring[] = "model spring\n"
+                                 "param k, c\n"
+                                 "position x\n"
+                                 "velocity v\n"
+                                 "x' = v\n"
+                                 "v' = -k*x - c*v\n";
+    char msg[256];
+    if (fp3_model_parse(spring, "spring.fp3m", &model, msg, sizeof msg) != 0) {
+      fprintf(stderr, "fuzz_options: %s\n", msg);
+      abort();
+    }
+    ready = 1;
+  }
+  char *text = fuzz_strdup(data, size);
+  char *argv[MAX_ARGS + 1];
+  int argc = 0;
+  for (char *p = text; argc < MAX_ARGS;) {
+    argv[argc++] = p;
+    char *nl = strchr(p, '\n');
+    if (!nl) break;
+    *nl = '\0';
+    p = nl + 1;
+  }
+  argv[argc] = NULL;
+  const char *cmd = strcmp(argv[0], "compile") == 0 ? "compile" : "run";
+  fp3_args_have_model(argc, argv);
+  margs a;
+  if (parse_args(argc, argv, cmd, &a) == 0 && strcmp(cmd, "run") == 0) {
+    float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
+    unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
+    for (int i = 0; i < a.nset; i++)
+      if (apply_set(&model, a.set[i], in, y0, given) != 0) break;
+  }
+  free(text);
+  return 0;
+}
