@@ -44,16 +44,14 @@ enum { RV = 0, RS = 1 };
 typedef struct irun_ctx {
   const fp3_integrator *ig;
   fp3_istate g[2]; /* golden state advanced for v and for s separately */
-  int reg[2];
-  uint32_t cur[2];
-  uint32_t next_k[2];
-  uint32_t steps;
+  fp3_track t;     /* v and s after every integration */
   fp3_irun *r;
   uint64_t first_cyc, prev_cyc, per0;
   uint32_t endis;
 } irun_ctx;
 
-static void irun_final(irun_ctx *c, int which, uint32_t k, uint32_t bits) {
+static void irun_final(void *ctx, int which, uint32_t k, uint32_t bits) {
+  irun_ctx *c = ctx;
   c->ig->step(&c->g[which]);
   float want = which == RV ? c->g[which].v : c->g[which].s;
   if (bits != fpref_bits(want)) {
@@ -71,21 +69,9 @@ static void irun_final(irun_ctx *c, int which, uint32_t k, uint32_t bits) {
   }
 }
 
-static void irun_advance(irun_ctx *c, int which, uint32_t upto) {
-  while (c->next_k[which] < upto && c->next_k[which] <= c->steps) {
-    irun_final(c, which, c->next_k[which], c->cur[which]);
-    c->next_k[which]++;
-  }
-}
-
 static void irun_write(void *ctx, unsigned reg, uint32_t value,
                        uint32_t integration) {
-  irun_ctx *c = ctx;
-  for (int w = 0; w < 2; w++)
-    if ((int)reg == c->reg[w]) {
-      irun_advance(c, w, integration);
-      c->cur[w] = value;
-    }
+  fp3_track_write(&((irun_ctx *)ctx)->t, reg, value, integration);
 }
 
 static void irun_endi(void *ctx, uint32_t integration, uint64_t cycle) {
@@ -111,7 +97,9 @@ int fp3_irun_program(fp3_engine *e, const fp3_integrator *ig,
   memset(&c, 0, sizeof c);
   c.ig = ig;
   c.r = r;
-  c.steps = steps;
+  c.t.last = steps;
+  c.t.final = irun_final;
+  c.t.ctx = &c;
   ig->init(&c.g[RV], p);
   ig->init(&c.g[RS], p);
   fp3_diverge_init(&r->div, p);
@@ -122,11 +110,11 @@ int fp3_irun_program(fp3_engine *e, const fp3_integrator *ig,
     if (img->in_reg[i] >= 0)
       erc = fp3_engine_write_reg(e, (unsigned)img->in_reg[i],
                                  fpref_bits(inval[i]));
-  c.reg[RV] = img->out_reg[FP3_OUT_V];
-  c.reg[RS] = img->out_reg[FP3_OUT_S];
+  c.t.reg[RV] = img->out_reg[FP3_OUT_V];
+  c.t.reg[RS] = img->out_reg[FP3_OUT_S];
   for (int w = 0; w < 2 && erc == 0; w++) {
-    c.next_k[w] = 1;
-    erc = fp3_engine_read_reg(e, (unsigned)c.reg[w], &c.cur[w]);
+    c.t.next_k[w] = 1;
+    erc = fp3_engine_read_reg(e, (unsigned)c.t.reg[w], &c.t.cur[w]);
   }
   if (erc == 0) {
     fp3_observer obs = {.ctx = &c, .on_write = irun_write, .on_endi = irun_endi};
@@ -137,7 +125,7 @@ int fp3_irun_program(fp3_engine *e, const fp3_integrator *ig,
     return -1;
   }
   uint32_t done = r->st.steps_done < steps ? r->st.steps_done : steps;
-  for (int w = 0; w < 2; w++) irun_advance(&c, w, done + 1);
+  for (int w = 0; w < 2; w++) fp3_track_advance(&c.t, w, done + 1);
   r->steps_done = done;
   if (c.endis >= 1) r->cycles_first = (double)c.first_cyc + 1.0;
   if (c.endis >= 2)

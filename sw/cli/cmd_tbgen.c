@@ -101,28 +101,17 @@ static int make_dirs(const char *dir) {
 /* ---- recording v and s after every integration -------------------------- */
 
 typedef struct recorder {
-  int reg[2];         /* registers of v, s (-1: not bound) */
-  uint32_t cur[2];    /* latest value written               */
-  uint32_t next_k[2]; /* next integration to finalise       */
-  uint32_t n;         /* integrations recorded (array size) */
+  fp3_track t;        /* v, s (registers -1: not bound)     */
   uint32_t *val[2];   /* val[w][k-1]: after integration k   */
 } recorder;
 
-static void rec_advance(recorder *r, int w, uint32_t upto) {
-  while (r->next_k[w] < upto && r->next_k[w] <= r->n) {
-    r->val[w][r->next_k[w] - 1] = r->cur[w];
-    r->next_k[w]++;
-  }
+static void rec_final(void *ctx, int w, uint32_t k, uint32_t bits) {
+  ((recorder *)ctx)->val[w][k - 1] = bits;
 }
 
 static void rec_write(void *ctx, unsigned reg, uint32_t value,
                       uint32_t integration) {
-  recorder *r = ctx;
-  for (int w = 0; w < 2; w++)
-    if ((int)reg == r->reg[w]) {
-      rec_advance(r, w, integration);
-      r->cur[w] = value;
-    }
+  fp3_track_write(&((recorder *)ctx)->t, reg, value, integration);
 }
 
 /* ---- writing the files --------------------------------------------------- */
@@ -219,11 +208,13 @@ int fp3_cmd_tbgen(int argc, char **argv) {
   /* the reference run on the ISS */
   recorder rec;
   memset(&rec, 0, sizeof rec);
-  rec.n = steps;
+  rec.t.last = steps;
+  rec.t.final = rec_final;
+  rec.t.ctx = &rec;
   for (int w = 0; w < 2; w++) {
-    rec.reg[w] = img.out_reg[w == 0 ? FP3_OUT_V : FP3_OUT_S];
-    rec.next_k[w] = 1;
-    if (rec.reg[w] >= 0) rec.cur[w] = init[rec.reg[w]];
+    rec.t.reg[w] = img.out_reg[w == 0 ? FP3_OUT_V : FP3_OUT_S];
+    rec.t.next_k[w] = 1;
+    if (rec.t.reg[w] >= 0) rec.t.cur[w] = init[rec.t.reg[w]];
     rec.val[w] = calloc(steps, sizeof *rec.val[w]);
     if (!rec.val[w]) {
       fprintf(stderr, "fp3 tbgen: out of memory\n");
@@ -253,8 +244,8 @@ int fp3_cmd_tbgen(int argc, char **argv) {
   }
   fp3_engine_free(iss);
   uint32_t ncheck = st.steps_done < steps ? st.steps_done : steps;
-  if (rec.reg[0] < 0 && rec.reg[1] < 0) ncheck = 0;
-  for (int w = 0; w < 2; w++) rec_advance(&rec, w, ncheck + 1);
+  if (rec.t.reg[0] < 0 && rec.t.reg[1] < 0) ncheck = 0;
+  for (int w = 0; w < 2; w++) fp3_track_advance(&rec.t, w, ncheck + 1);
 
   /* cycles and stalls on the Verilated RTL */
   uint32_t rtl_lat = 0, rtl_cycles = 0, rtl_stalls = 0;
@@ -310,8 +301,8 @@ int fp3_cmd_tbgen(int argc, char **argv) {
   run[TBGEN_RUN_STEPS_DONE] = st.steps_done;
   run[TBGEN_RUN_ISSUED] = (uint32_t)st.issued;
   run[TBGEN_RUN_FLAGS] = st.flags;
-  run[TBGEN_RUN_REG_V] = rec.reg[0] >= 0 ? (uint32_t)rec.reg[0] : NO_REG;
-  run[TBGEN_RUN_REG_S] = rec.reg[1] >= 0 ? (uint32_t)rec.reg[1] : NO_REG;
+  run[TBGEN_RUN_REG_V] = rec.t.reg[0] >= 0 ? (uint32_t)rec.t.reg[0] : NO_REG;
+  run[TBGEN_RUN_REG_S] = rec.t.reg[1] >= 0 ? (uint32_t)rec.t.reg[1] : NO_REG;
   run[TBGEN_RUN_NCHECK] = ncheck;
   run[TBGEN_RUN_RTL_LAT] = rtl_lat;
   run[TBGEN_RUN_RTL_CYCLES] = rtl_cycles;

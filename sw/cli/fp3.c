@@ -241,10 +241,7 @@ static int cmd_disasm(int argc, char **argv) {
 enum { OV = 0, OS = 1 }; /* the two checked results */
 
 typedef struct checker {
-  uint32_t steps;         /* integrations requested            */
-  int reg[2];             /* registers of v and s              */
-  uint32_t cur[2];        /* latest value written              */
-  uint32_t next_k[2];     /* next integration to finalise      */
+  fp3_track t;            /* v and s after every integration (t.last: integrations requested) */
   /* golden values of integrations base .. base+count-1 */
   fp3_istate gst;                 /* golden state of the integrator */
   const fp3_integrator *integ;    /* --integrator (default rk4)     */
@@ -275,7 +272,7 @@ typedef struct checker {
 
 /* Golden (v, s) after integration k >= 1, computed on demand. */
 static int golden_at(checker *c, uint32_t k, float *v, float *s) {
-  uint32_t lo = c->next_k[OV] < c->next_k[OS] ? c->next_k[OV] : c->next_k[OS];
+  uint32_t lo = c->t.next_k[OV] < c->t.next_k[OS] ? c->t.next_k[OV] : c->t.next_k[OS];
   if (k < c->base) return -1; /* cannot happen: finalised in order */
   while (k >= c->base + c->count) {
     if (c->count == c->cap) {
@@ -318,7 +315,8 @@ static void exact_at(const checker *c, uint32_t k, double *v, double *s) {
 }
 
 /* Result `which` after integration k is `bits`. */
-static void finalise(checker *c, int which, uint32_t k, uint32_t bits) {
+static void finalise(void *ctx, int which, uint32_t k, uint32_t bits) {
+  checker *c = ctx;
   float gv, gs;
   if (golden_at(c, k, &gv, &gs)) {
     c->oom = 1;
@@ -356,21 +354,9 @@ static void finalise(checker *c, int which, uint32_t k, uint32_t bits) {
   c->last_k[which] = k;
 }
 
-static void advance(checker *c, int which, uint32_t upto) {
-  while (c->next_k[which] < upto && c->next_k[which] <= c->steps) {
-    finalise(c, which, c->next_k[which], c->cur[which]);
-    c->next_k[which]++;
-  }
-}
-
 static void obs_write(void *ctx, unsigned reg, uint32_t value,
                       uint32_t integration) {
-  checker *c = ctx;
-  for (int w = 0; w < 2; w++)
-    if ((int)reg == c->reg[w]) {
-      advance(c, w, integration); /* integrations before this one are over */
-      c->cur[w] = value;
-    }
+  fp3_track_write(&((checker *)ctx)->t, reg, value, integration);
 }
 
 static void obs_endi(void *ctx, uint32_t integration, uint64_t cycle) {
@@ -747,7 +733,9 @@ static int cmd_run(int argc, char **argv) {
   memset(&c, 0, sizeof c);
   c.p = p;
   c.mode = mode;
-  c.steps = steps;
+  c.t.last = steps;
+  c.t.final = finalise;
+  c.t.ctx = &c;
   c.base = 1;
   c.integ = integ;
   fp3_diverge_init(&c.div, &p);
@@ -777,9 +765,9 @@ static int cmd_run(int argc, char **argv) {
       erc = fp3_engine_write_reg(e, (unsigned)img.in_reg[i],
                                  fpref_bits(inval[i]));
   for (int w = 0; w < 2 && erc == 0; w++) {
-    c.reg[w] = img.out_reg[w];
-    c.next_k[w] = 1;
-    erc = fp3_engine_read_reg(e, (unsigned)c.reg[w], &c.cur[w]);
+    c.t.reg[w] = img.out_reg[w];
+    c.t.next_k[w] = 1;
+    erc = fp3_engine_read_reg(e, (unsigned)c.t.reg[w], &c.t.cur[w]);
   }
   if (erc == 0) {
     fp3_observer obs = {.ctx = &c, .on_write = obs_write, .on_endi = obs_endi};
@@ -804,7 +792,7 @@ static int cmd_run(int argc, char **argv) {
   }
   /* the results of the last integrations are the values left at the end */
   uint32_t done = st.steps_done < steps ? st.steps_done : steps;
-  for (int w = 0; w < 2; w++) advance(&c, w, done + 1);
+  for (int w = 0; w < 2; w++) fp3_track_advance(&c.t, w, done + 1);
   if (c.oom) {
     fprintf(stderr, "fp3 run: out of memory\n");
     goto out;

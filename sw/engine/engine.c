@@ -112,3 +112,18 @@ void fp3_engine_free(fp3_engine *e) {
 const char *fp3_engine_error(const fp3_engine *e) {
   return e ? e->error : "no engine";
 }
+
+void fp3_track_advance(fp3_track *t, int which, uint32_t upto) {
+  while (t->next_k[which] < upto && t->next_k[which] <= t->last) {
+    t->final(t->ctx, which, t->next_k[which], t->cur[which]);
+    t->next_k[which]++;
+  }
+}
+
+void fp3_track_write(fp3_track *t, unsigned reg, uint32_t value, uint32_t integration) {
+  for (int w = 0; w < 2; w++)
+    if ((int)reg == t->reg[w]) {
+      fp3_track_advance(t, w, integration); /* integrations before this one are over */
+      t->cur[w] = value;
+    }
+}

@@ -125,6 +125,31 @@ typedef struct fp3_observer {
                       uint64_t cycle);
 } fp3_observer;
 
+/* The values two watched registers hold after each integration, rebuilt
+ * from a run's write events (fp3_observer.on_write): a register keeps its
+ * value until it is written again, so its value after integration k is
+ * the last one an instruction of integration k or earlier wrote.  Each
+ * integration 1 .. last is handed to final(ctx, which, k, bits) once per
+ * watched register, in order, as soon as a write of a later integration
+ * shows that k is over, and by fp3_track_advance at the end of the run.
+ * Set reg, cur (the registers' values at START), next_k = 1, last, final
+ * and ctx before the run. */
+typedef struct fp3_track {
+  int reg[2];         /* the registers watched (-1: none)            */
+  uint32_t cur[2];    /* the value each holds now                    */
+  uint32_t next_k[2]; /* the next integration to hand over           */
+  uint32_t last;      /* the last integration to hand over           */
+  void (*final)(void *ctx, int which, uint32_t k, uint32_t bits);
+  void *ctx;
+} fp3_track;
+
+/* Hand over register `which`'s integrations before `upto` (its current
+ * value stands for each). */
+void fp3_track_advance(fp3_track *t, int which, uint32_t upto);
+
+/* A write event: integration `integration` wrote `value` to `reg`. */
+void fp3_track_write(fp3_track *t, unsigned reg, uint32_t value, uint32_t integration);
+
 /* Deliver one event to an observer (engines call these). */
 void fp3_observe_write(const fp3_observer *obs, unsigned context, unsigned reg,
                        uint32_t value, uint32_t integration);
