@@ -29,10 +29,17 @@ err=$("$FP3" run --model models/spring.fp3m --set h=0.01 --set k=1 --set m=1 --s
 check "missing param named with its line" "[ $rc -eq 2 ] && grep -q \"models/spring.fp3m:3: param 'c' has no value\" <<<\"\$err\""
 err=$("$FP3" run --model models/spring.fp3m $spring --set q=1 2>&1); rc=$?
 check "unknown --set name" "[ $rc -eq 2 ] && grep -q \"no param or state 'q'\" <<<\"\$err\""
-if ! "$FP3" asm /dev/stdin -o "$tmp/x.hex" <<<"sqrt r1, r2" >/dev/null 2>&1; then
+if ! printf 'sqrt r1, r2\nhalt\n' | "$FP3" asm /dev/stdin -o "$tmp/x.hex" >/dev/null 2>&1; then
   err=$("$FP3" compile --model models/projectile.fp3m -o "$tmp/p.s" 2>&1); rc=$?
   check "projectile refused naming HAS_SQRT, no file" \
     "[ $rc -eq 2 ] && grep -q 'needs sqrt: this build has no HAS_SQRT unit' <<<\"\$err\" && [ ! -e $tmp/p.s ]"
+else
+  proj="--set h=0.015625 --set kd=0.002 --set g=9.81 --set x=0 --set y=2 --set z=0 --set vx=30 --set vy=40 --set vz=-5"
+  err=$("$FP3" run --model models/projectile.fp3m $proj --integrator euler --steps 50 2>&1); rc=$?
+  check "projectile on an RTL without sqrt: refused naming HAS_SQRT" \
+    "[ $rc -ne 0 ] && grep -q 'HAS_SQRT=0' <<<\"\$err\""
+  "$FP3" run --model models/projectile.fp3m $proj --integrator euler --steps 50 --engine iss >/dev/null 2>&1
+  check "projectile on the ISS: bit-exact with its golden model" "[ $? -eq 0 ]"
 fi
 "$FP3" compile --model models/spring.fp3m --literal -o "$tmp/s.s" 2>/dev/null
 check "compile --model writes the program" "grep -q 'model spring' $tmp/s.s && grep -q endi $tmp/s.s"

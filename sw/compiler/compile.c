@@ -790,6 +790,8 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     if (x->opc == FP3_OP_LI) snprintf(ops, sizeof ops, "r%u, 0x%08X", x->rd, (unsigned)x->imm);
     else if (x->opc == FP3_OP_MOV) snprintf(ops, sizeof ops, "r%u, r%u", x->rd, x->ra);
     else if (x->opc == FP3_OP_ENDI) snprintf(ops, sizeof ops, "body");
+    else if (!(fp3_opc_uses((unsigned)x->opc) & FP3_USES_RB)) /* sqrt, abs, neg */
+      snprintf(ops, sizeof ops, "r%u, r%u", x->rd, x->ra);
     else snprintf(ops, sizeof ops, "r%u, r%u, r%u", x->rd, x->ra, x->rb);
     fp3_strbuf_printf(&t, "        %-4s %-16s ; %s\n", fp3_opc_mnemonic(x->opc), ops, x->note);
   }
