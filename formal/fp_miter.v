@@ -1,7 +1,7 @@
 // fp_miter -- miter of two builds of one binary32 core (formal only): the
 // shortest latency (LAT_S, every register place empty) and a deeper one
-// (LAT_D; the deepest build, every place registered, is fp_add 9 and
-// fp_mul 11), fed the same operands every cycle.  The short build's
+// (LAT_D; the deepest build, every place registered, is fp_add 9, fp_mul
+// 11, fp_div 30 and fp_sqrt 29), fed the same operands every cycle.  The short build's
 // outputs are delayed by LAT_D - LAT_S cycles and compared with the deep
 // build's:
 //   M1  valid_o agree in every cycle after reset;
@@ -13,7 +13,8 @@
 // (FTZ = 0) a subnormal result, so the compare is not vacuous.
 //
 // Parameters
-//   CORE     0 fp_add (valid_i with sub_i), 1 fp_mul
+//   CORE     0 fp_add (valid_i with sub_i), 1 fp_mul, 2 fp_div, 3 fp_sqrt
+//            (b_i unused)
 //   LAT_S    the short build's LATENCY (1)
 //   LAT_D    the deep build's LATENCY (> LAT_S)
 //   ROUND    0 RNE, 1 RTZ;  FTZ 0 IEEE subnormals, 1 flush (DAZ + FTZ)
@@ -46,7 +47,7 @@ module fp_miter #(
       fp_add #(.LATENCY(LAT_D), .ROUND(ROUND), .FTZ(FTZ)) u_d (
         .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i), .sub_i (sub_i),
         .a_i (a_i), .b_i (b_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
-    end else begin : g_mul
+    end else if (CORE == 1) begin : g_mul
       fp_mul #(.LATENCY(LAT_S), .ROUND(ROUND), .FTZ(FTZ)) u_s (
         .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
         .a_i (a_i), .b_i (b_i), .valid_o (vs), .y_o (ys), .flags_o (fs));
@@ -54,6 +55,22 @@ module fp_miter #(
         .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
         .a_i (a_i), .b_i (b_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
       wire unused_sub = sub_i;
+    end else if (CORE == 2) begin : g_div
+      fp_div #(.LATENCY(LAT_S), .ROUND(ROUND), .FTZ(FTZ)) u_s (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vs), .y_o (ys), .flags_o (fs));
+      fp_div #(.LATENCY(LAT_D), .ROUND(ROUND), .FTZ(FTZ)) u_d (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .b_i (b_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
+      wire unused_sub = sub_i;
+    end else begin : g_sqrt
+      fp_sqrt #(.LATENCY(LAT_S), .ROUND(ROUND), .FTZ(FTZ)) u_s (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .valid_o (vs), .y_o (ys), .flags_o (fs));
+      fp_sqrt #(.LATENCY(LAT_D), .ROUND(ROUND), .FTZ(FTZ)) u_d (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (valid_i),
+        .a_i (a_i), .valid_o (vd), .y_o (yd), .flags_o (fd));
+      wire unused_ops = &{1'b0, sub_i, b_i};
     end
   endgenerate
 

@@ -743,5 +743,46 @@ module fp3_top #(
 
   // Host address bits that select windows but are not register indices.
   wire unused_addr = &{1'b0, host_addr_i};
+`ifdef FP3_SCHED_CHECK
+  // The scheduler's scoreboard and issue properties (formal/sched.sby),
+  // checked on this processor's own tag lines, flags and bypass.
+  fp3_sched_check #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
+                    .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .READ(READ), .AHEAD(AHEAD),
+                    .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
+                    .MOV_LATENCY(MOV_LATENCY), .FLAGS_AHEAD(FMAX_PIPE)) u_sched_check (
+    .clk_i            (clk_i),
+    .rst_i            (rst_i),
+    .imem_we_i        (imem_we),
+    .imem_waddr_i     (imem_idx),
+    .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
+    .start_i          (start),
+    .running_i        (running),
+    .contexts_run_i   (contexts_run_q),
+    .steps_i          (steps_q),
+    .sel_ctx_i        (ctx_sch),
+    .steps_done_sel_i (steps_done),
+    .issued_i         (issued),
+    .stalls_i         (stalls),
+    .issue_i          (issue),
+    .issue_ctx_i      (issue_ctx),
+    .ra_i             (ra),
+    .rb_i             (rb),
+    .rd_i             (rd),
+    .issue_unit_i     (issue_unit),
+    .issue_imm_i      (issue_imm),
+    .imm_i            (imm),
+    .endi_i           (endi),
+    .beq_i            (beq),
+    .busy_i           (busy),
+    .add_valid_i      (add_valid),
+    .add_idx_i        (add_idx),
+    .mul_valid_i      (mul_valid),
+    .mul_idx_i        (mul_idx),
+    .mov_valid_i      (mov_valid),
+    .mov_idx_i        (mov_idx),
+    .br_i             (br_q),
+    .br_taken_i       (br_taken_q)
+  );
+`endif
 endmodule
 `default_nettype wire

@@ -120,6 +120,13 @@ module fp3_wb_tag #(
   endgenerate
   assign {pre3_valid_o, pre2_valid_o, pre_valid_o} = tap_v;
   assign {pre3_idx_o, pre2_idx_o, pre_idx_o}       = tap_i;
+`ifdef FP3_MUTANT_ANNOUNCE_EARLY
+  // A broken line for formal/sched.sby's mutant: the announcement a cycle
+  // early (the early stage itself), so that a consumer issues a cycle
+  // before its operand's write-back reaches the bypass.
+  assign ahead_valid_o = early_valid_o;
+  assign ahead_idx_o   = early_idx_o;
+`else
   fp_pipe #(.WIDTH(XW), .DEPTH(1)) u_to_ahead (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
@@ -128,6 +135,7 @@ module fp3_wb_tag #(
     .valid_o (ahead_valid_o),
     .data_o  (ahead_idx_o)
   );
+`endif
   // Two cycles before the write-back: the announcement a cycle early
   // (AHEAD = 1), or a stage of the line after the announcement.
   wire          next_valid;

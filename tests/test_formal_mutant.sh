@@ -1,24 +1,40 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail: formal/rr_arbiter.sby's task
-# `mutant` reads rtl/fp3_rr_arbiter.v with FP3_MUTANT_RR_STUCK (the
-# round-robin position never moves, so a context behind others that keep
-# requesting starves).  The proof must FAIL, and scripts/formal.sh must
-# name the counterexample trace (an existing VCD) and the failing
-# assertion's file:line in the repository.
+# test_formal_mutant.sh -- the proofs can fail.  Two broken copies, each of
+# which must FAIL its property set, and scripts/formal.sh must name the
+# counterexample trace (an existing VCD) and the failing assertion's
+# file:line in the repository:
+#   rr_arbiter.sby:mutant  rtl/fp3_rr_arbiter.v with FP3_MUTANT_RR_STUCK
+#                          (the round-robin position never moves, so a
+#                          context behind others that keep requesting
+#                          starves): the fairness or one-hot assertion
+#   sched.sby:mutant       rtl/fp3_wb_tag.v with FP3_MUTANT_ANNOUNCE_EARLY
+#                          (every write-back announced a cycle early, so
+#                          the scoreboard frees a register, and the
+#                          scheduler issues its consumer, a cycle before
+#                          the bypass can give the value): an assertion of
+#                          formal/fp3_sched_check.v (RAW or busy flag)
 set -u
 cd "$(dirname "$0")/.."
 out=${FORMAL_OUT:-build/formal}/mutant
-log=$(mktemp)
-trap 'rm -f "$log"' EXIT
-bash scripts/formal.sh "$out" --expect-fail formal/rr_arbiter.sby:mutant | tee "$log"
-rc=${PIPESTATUS[0]}
 fail() { echo "test_formal_mutant: $*"; exit 1; }
-[ "$rc" -eq 0 ] || fail "the mutant's proof did not fail"
-grep -q '^formal: FAIL' "$log" || fail "no FAIL verdict"
-vcd=$(sed -n 's/^ *trace: \(.*\.vcd\)$/\1/p' "$log" | head -1)
-[ -n "$vcd" ] || fail "no counterexample trace named"
-[ -s "$vcd" ] || fail "the trace $vcd does not exist"
-grep -Eq 'failed assertion: [^ ]+ at (rtl|formal)/[a-z0-9_]+\.v:[0-9]+$' "$log" ||
-  fail "no failing assertion with file:line"
-grep -Eq 'f2_served_within_n|rr_taken_onehot' "$log" || fail "not the expected assertion"
-echo "test_formal_mutant: the mutant fails its proof, trace $vcd"
+
+# check TASK REGEX: TASK must fail with a trace and an assertion matching REGEX
+check() {
+  local log rc vcd
+  log=$(mktemp)
+  bash scripts/formal.sh "$out" --expect-fail "$1" | tee "$log"
+  rc=${PIPESTATUS[0]}
+  [ "$rc" -eq 0 ] || { rm -f "$log"; fail "$1: the mutant's proof did not fail"; }
+  grep -q '^formal: FAIL' "$log" || { rm -f "$log"; fail "$1: no FAIL verdict"; }
+  vcd=$(sed -n 's/^ *trace: \(.*\.vcd\)$/\1/p' "$log" | head -1)
+  [ -n "$vcd" ] || { rm -f "$log"; fail "$1: no counterexample trace named"; }
+  [ -s "$vcd" ] || { rm -f "$log"; fail "$1: the trace $vcd does not exist"; }
+  grep -Eq 'failed assertion: [^ ]+ at (rtl|formal)/[a-z0-9_]+\.v:[0-9]+$' "$log" ||
+    { rm -f "$log"; fail "$1: no failing assertion with file:line"; }
+  grep -Eq "$2" "$log" || { rm -f "$log"; fail "$1: not the expected assertion"; }
+  rm -f "$log"
+  echo "test_formal_mutant: $1 fails its proof, trace $vcd"
+}
+
+check formal/rr_arbiter.sby:mutant 'f2_served_within_n|rr_taken_onehot'
+check formal/sched.sby:mutant 'raw_r[ab]|formal/fp3_sched_check\.v:2[0-9][0-9]$'
