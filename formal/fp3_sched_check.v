@@ -10,7 +10,9 @@
 // .sby script: their results are free values, so the branches' outcomes
 // (a compare of register values) are free too.
 //
-// Environment (assumptions): reset in the first cycle; the host's inputs
+// Environment (assumptions): reset in the first cycle only (a write to the
+// instruction memory still in its write pipeline when a later reset came
+// would be lost, which the model's copy does not follow); the host's inputs
 // are free, except that a START comes only once every word of the
 // instruction memory has been written (so that the model's copy of the
 // program is the memory's).  The program, STEPS, CONTEXTS, CTX, the
@@ -33,11 +35,12 @@
 //   WAW     a destination's new write-back comes after its pending one
 //           (rem < READ + L): register writes land in program order
 //   busy    the busy flag of every register is set exactly while its last
-//           write is claimed and not yet announced: rem >= AHEAD (the flag
-//           clears as the tag line announces the write AHEAD cycles before
-//           it), and with FLAGS_AHEAD (FMAX_PIPE: set from the pick, a
-//           cycle before the issue; cleared from the early announcement)
-//           rem > AHEAD or the issue of this cycle writes it
+//           write is claimed and not yet announced: rem >= AHEAD, from the
+//           cycle after the issue to the cycle of the announcement AHEAD
+//           cycles before the write-back (with FLAGS_AHEAD, FMAX_PIPE, the
+//           register file takes the set from the pick and the clear from
+//           the early announcement, a cycle ahead, and registers both: the
+//           same cycles)
 //   wb      the write-back port of the claiming unit writes the register
 //           in cycle W
 //   drain   no write-back is pending while no run is in progress
@@ -50,10 +53,10 @@
 //
 // Parameters: fp3_top's, as it derives them (CW, IW, AW; READ, AHEAD, the
 // latencies in cycles; FLAGS_AHEAD = FMAX_PIPE).
-// Mutants (tests/test_formal_mutant.sh): FP3_MUTANT_ANNOUNCE_EARLY in
-// rtl/fp3_wb_tag.v announces every write-back a cycle early, so that the
-// scheduler issues a consumer a cycle before the bypass can give it its
-// operand: the RAW and busy properties must fail.
+// Mutant (tests/test_formal_mutant.sh): FP3_MUTANT_ANNOUNCE_EARLY makes
+// rtl/fp3_wb_tag.v's line a stage short, so every write-back is announced
+// (and its index written back) a cycle early: the busy and write-back
+// properties fail within 20 cycles.
 `default_nettype none
 module fp3_sched_check #(
   parameter integer NUM_CONTEXTS = 2,
@@ -125,7 +128,7 @@ module fp3_sched_check #(
 
   reg f_past_valid = 1'b0;
   always @(posedge clk_i) f_past_valid <= 1'b1;
-  always @(*) if (!f_past_valid) assume (rst_i);
+  always @(*) assume (rst_i == !f_past_valid);   // reset in the first cycle only
   always @(*) if (start_i) assume (&written_q);
 
   // ---- the issued word, by the model's program counter --------------------
@@ -232,12 +235,10 @@ module fp3_sched_check #(
   genvar gx;
   generate
     for (gx = 0; gx < NX; gx = gx + 1) begin : g_reg
-      wire claim = iwr && rd_i == gx[XW-1:0];
       always @(*) begin
         if (f_past_valid && !rst_i) begin
           // busy: set by exactly the claim, cleared by exactly its announcement
-          if (FLAGS_AHEAD != 0) assert (busy_i[gx] == (rem_q[gx] > AHEAD || claim));
-          else                  assert (busy_i[gx] == (rem_q[gx] >= AHEAD));
+          assert (busy_i[gx] == (rem_q[gx] >= AHEAD));
           // wb: the claiming unit writes the register back in cycle W
           if (due_q[gx])
             case (due_unit_q[gx])

@@ -121,9 +121,10 @@ module fp3_wb_tag #(
   assign {pre3_valid_o, pre2_valid_o, pre_valid_o} = tap_v;
   assign {pre3_idx_o, pre2_idx_o, pre_idx_o}       = tap_i;
 `ifdef FP3_MUTANT_ANNOUNCE_EARLY
-  // A broken line for formal/sched.sby's mutant: the announcement a cycle
-  // early (the early stage itself), so that a consumer issues a cycle
-  // before its operand's write-back reaches the bypass.
+  // A broken line for formal/sched.sby's mutant: one stage short, so the
+  // announcement (and the write-back index behind it) comes a cycle
+  // early: the busy flag clears, and a consumer may issue, a cycle before
+  // the operand's value exists.
   assign ahead_valid_o = early_valid_o;
   assign ahead_idx_o   = early_idx_o;
 `else
