@@ -279,9 +279,11 @@ module fp3_sched_check #(
   // ---- covers ------------------------------------------------------------------
   reg [CW-1:0] last_ctx_q;
   reg          last_issue_q;
+  reg          ran_q = 1'b0;   // an instruction has issued since reset
   always @(posedge clk_i) begin
     last_ctx_q   <= issue_ctx_i;
     last_issue_q <= issue_i && !rst_i;
+    ran_q        <= !rst_i && (ran_q || issue_i);
   end
   always @(posedge clk_i) begin
     if (f_past_valid && !rst_i) begin
@@ -290,8 +292,8 @@ module fp3_sched_check #(
       c_bypass: cover (issue_i && u_ra && (rem_q[ra_i] != 0 || due_q[ra_i]));
       c_two_contexts: cover (issue_i && last_issue_q && issue_ctx_i != last_ctx_q);
       c_second_step: cover (issue_i && cnt_q[issue_ctx_i] == 32'd1);
-      c_beq_taken: cover (|br_i && br_taken_i);
-      c_run_ends: cover ($past(running_i) && !running_i);
+      c_beq_taken: cover (|(br_i & pend_q) && br_taken_i);     // a beq of the run taken
+      c_run_ends: cover ($past(running_i) && !running_i && ran_q); // a run that issued ends
     end
   end
 endmodule
