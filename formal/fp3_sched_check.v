@@ -56,7 +56,7 @@
 // Mutant (tests/test_formal_mutant.sh): FP3_MUTANT_ANNOUNCE_EARLY makes
 // rtl/fp3_wb_tag.v's line a stage short, so every write-back is announced
 // (and its index written back) a cycle early: the busy and write-back
-// properties fail within 20 cycles.
+// properties fail at cycle 12.
 `default_nettype none
 module fp3_sched_check #(
   parameter integer NUM_CONTEXTS = 2,
