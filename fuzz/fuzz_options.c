@@ -1,21 +1,35 @@
 /*
- * fuzz_options.c -- libFuzzer harness for the command-line option parser:
+ * fuzz_options.c -- libFuzzer harness for the command-line option parsers:
  * sw/cli/cliopt.c (fp3_opt_value, fp3_opt_positional, fp3_parse_count,
  * fp3_is_help) as the model subcommands use it, i.e. the whole argument
  * parsing of `fp3 run --model` and `fp3 compile --model` (parse_args and
- * apply_set of sw/cli/cmd_model.c) without compiling or running anything.
+ * apply_set of sw/cli/cmd_model.c) without compiling or running anything;
+ * and the option-value parsers of the other subcommands: `fp3 bench`'s
+ * numbers and counts (parse_pos, parse_count of sw/cli/cmd_bench.c),
+ * `fp3 tbgen --set NAME=VALUE` (set_scene of sw/cli/cmd_tbgen.c) and
+ * `fp3 compile`'s latencies (latency_arg of sw/cli/cmd_compile.c).
  *
- * The input is an argument vector, one argument per line: the first line
- * picks the subcommand ("compile", anything else "run"), the others are
- * its arguments.  When parse_args accepts them, each --set NAME=VALUE is
- * applied to a fixed model (a damped spring, parsed once), as the
- * subcommand does before it compiles.
+ * The input is an argument vector, one argument per line.  The first line
+ * picks what is parsed: "bench", "tbgen" and "latency" give each further
+ * line to that subcommand's value parsers; "compile" runs parse_args as
+ * `fp3 compile --model`, anything else as `fp3 run --model`.  When
+ * parse_args accepts them, each --set NAME=VALUE is applied to a fixed
+ * model (a damped spring, parsed once), as the subcommand does before it
+ * compiles.
  *
- * cmd_model.c is included, not linked, to reach its static functions; the
- * functions of it that run an engine are never called (the fuzz build
+ * The subcommands' sources are included, not linked, to reach their
+ * static functions (each file's own `usage` renamed, as they clash); the
+ * functions of them that run an engine are never called (the fuzz build
  * links with --gc-sections, which drops them and what only they need).
+ * The subcommands' loops over argv (fp3_cmd_bench, fp3_cmd_tbgen, ...) go
+ * on to run engines and write files, so they are not fuzzed here.
  */
 #include "cmd_model.c"
+#include "cmd_bench.c"
+#include "cmd_tbgen.c"
+#define usage compile_usage
+#include "cmd_compile.c"
+#undef usage
 
 #include "fuzz_common.h"
 
@@ -51,6 +65,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     p = nl + 1;
   }
   argv[argc] = NULL;
+  if (strcmp(argv[0], "bench") == 0 || strcmp(argv[0], "tbgen") == 0 ||
+      strcmp(argv[0], "latency") == 0) {
+    fp3_ship_params p;
+    memset(&p, 0, sizeof p);
+    for (int i = 1; i < argc; i++) {
+      double x;
+      uint32_t n;
+      unsigned l;
+      if (argv[0][0] == 'b') {
+        (void)parse_pos("--from", argv[i], &x);
+        (void)parse_count("--steps", argv[i], &n, i & 1);
+      } else if (argv[0][0] == 't') {
+        (void)set_scene(&p, argv[i]);
+      } else {
+        (void)latency_arg("--add-latency", argv[i], &l);
+      }
+    }
+    free(text);
+    return 0;
+  }
   const char *cmd = strcmp(argv[0], "compile") == 0 ? "compile" : "run";
   fp3_args_have_model(argc, argv);
   margs a;
