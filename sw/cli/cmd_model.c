@@ -274,9 +274,13 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
 }
 
 /* Compile the model for a's integrator (folded: params zero in this
- * object, zero[], removed). */
+ * object, zero[], removed) for the build hw (NULL: the default build).
+ * grow: the build may have more registers (the ISS, a model of any build,
+ * and `fp3 compile`): a program that needs more than hw's NUM_REGS is
+ * compiled for the fewest that run it (fp3_compile_opts.max_regs); else
+ * it is refused with the numbers. */
 static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsigned char *zero,
-                                 const fp3_config *hw, const char *cmd) {
+                                 const fp3_config *hw, int grow, const char *cmd) {
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
   if (hw) { /* the engine's build: its latencies, registers, pipeline */
@@ -285,6 +289,7 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
     if (hw->num_regs) o.num_regs = hw->num_regs;
     o.fmax_pipe = hw->fmax_pipe;
   }
+  if (grow) o.max_regs = FP3_MAX_REGS;
   o.fold = o.drop_zero = !a->literal;
   fp3_compiled *c = NULL;
   char msg[512];
@@ -294,10 +299,35 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
     return NULL;
   }
   if (fp3_compile_model(m, a->integ, &o, zero, &c, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 %s: %s: %s\n", cmd, m->file, msg);
+    fprintf(stderr, "fp3 %s: %s: %s%s\n", cmd, m->file, msg,
+            strstr(msg, "NUM_REGS is") && hw && !grow
+                ? "; --engine iss models such a build, `make build/fp3 NUM_REGS=N BUILD=DIR` "
+                  "builds the RTL"
+                : "");
     return NULL;
   }
   return c;
+}
+
+/* The ISS reshaped for program c when c was compiled for more registers
+ * than it has (compile_for with grow): same contexts, lanes and mode,
+ * NUM_REGS the program's, said on stderr.  0, or -1 (message printed). */
+static int fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd) {
+  const unsigned need = fp3_compiled_stats(c)->num_regs;
+  if (need <= (*e)->config.num_regs) return 0;
+  fp3_config cfg = (*e)->config;
+  cfg.num_regs = need;
+  fp3_engine *ne = fp3_engine_iss_new_config(&cfg);
+  if (!ne) {
+    fprintf(stderr, "fp3 %s: out of memory for an ISS of %u registers per context\n", cmd, need);
+    return -1;
+  }
+  fprintf(stderr, "fp3 %s: the program needs %u registers (NUM_REGS is %u): the ISS runs it as "
+          "a build with NUM_REGS=%u\n", cmd, fp3_compiled_stats(c)->regs_needed,
+          (*e)->config.num_regs, need);
+  fp3_engine_free(*e);
+  *e = ne;
+  return 0;
 }
 
 /* zero[k] = 1 for the params that are zero in every object of sc. */
@@ -334,7 +364,7 @@ int fp3_cmd_compile_model(int argc, char **argv) {
       return EXIT_USAGE;
     }
   }
-  fp3_compiled *c = compile_for(m, &a, zero, NULL, "compile");
+  fp3_compiled *c = compile_for(m, &a, zero, NULL, 1, "compile");
   int rc = c ? 0 : EXIT_USAGE;
   if (c && a.out && fp3_compiled_write(c, a.out, msg, sizeof msg)) {
     fprintf(stderr, "fp3 compile: %s\n", msg);
@@ -345,9 +375,10 @@ int fp3_cmd_compile_model(int argc, char **argv) {
   if (c && a.out && rc == 0) {
     const fp3_compile_stats *s = fp3_compiled_stats(c);
     fprintf(stderr, "fp3 compile: %s: model %s, %s %s: %u instructions per integration, "
-            "prologue %u, %u registers, about %u cycles per integration (one object)\n",
-            a.out, m->name, a.integ, a.literal ? "literal" : "folded", s->body_insns,
-            s->prologue_insns, s->regs, s->est_cycles_later);
+            "prologue %u, %u registers needed (NUM_REGS %u), about %u cycles per "
+            "integration (one object)\n", a.out, m->name, a.integ,
+            a.literal ? "literal" : "folded", s->body_insns, s->prologue_insns, s->regs_needed,
+            s->num_regs, s->est_cycles_later);
   }
   fp3_compiled_free(c);
   free(m);
@@ -463,14 +494,17 @@ int fp3_cmd_run_model(int argc, char **argv) {
   if (gather_values(m, &a, in, y0)) goto out;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
-  if (!(c = compile_for(m, &a, zero, NULL, "run"))) goto out;
-  rc = EXIT_FAIL;
   e = fp3_engine_new(a.engine);
   if (!e || fp3_engine_error(e)[0]) {
     fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a.engine, e ? ": " : "",
             e ? fp3_engine_error(e) : "");
+    rc = EXIT_FAIL;
     goto out;
   }
+  const int iss = strcmp(a.engine, "iss") == 0;
+  if (!(c = compile_for(m, &a, zero, &e->config, iss, "run"))) goto out;
+  rc = EXIT_FAIL;
+  if (iss && fit_engine(&e, c, "run")) goto out;
   unsigned regs[4 * FP3_MODEL_MAX_VARS];
   uint32_t vals[4 * FP3_MODEL_MAX_VARS];
   size_t nw = fp3_compiled_model_start(c, in, y0, regs, vals, 4 * FP3_MODEL_MAX_VARS);
@@ -545,6 +579,8 @@ int fp3_cmd_run_model(int argc, char **argv) {
     printf(", \"program\": ");
     fp3_json_string(stdout, m->file);
     printf(", \"words\": %zu, \"body_insns\": %u", img->n, cs->body_insns);
+    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
+           e->config.num_regs);
     printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, a.steps, st.steps_done);
     printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, fp3_error_name(st.error), st.fault_pc);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
@@ -594,8 +630,8 @@ int fp3_cmd_run_model(int argc, char **argv) {
   } else {
     printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %" PRIu32 " integrations\n",
            a.engine, m->name, m->file, a.integ, a.literal ? "literal" : "folded", a.steps);
-    printf("program: %zu words, %u instructions per integration, %u registers\n", img->n,
-           cs->body_insns, cs->regs);
+    printf("program: %zu words, %u instructions per integration, %u registers needed "
+           "(NUM_REGS %u)\n", img->n, cs->body_insns, cs->regs_needed, e->config.num_regs);
     printf("\n%-12s %16s %16s %22s %12s\n", "state", "value", "golden", "reference (GSL)", "error");
     for (unsigned k = 0; k < m->nstate; k++) {
       printf("%-12s %16.9g %16.9g", m->state[k], (double)fpref_float(cur[k]), (double)gl[k]);
@@ -719,10 +755,12 @@ static int run_many(const margs *a) {
             e ? fp3_engine_error(e) : "");
     goto out;
   }
-  if (!(c = compile_for(m, a, zero, &e->config, "run"))) {
+  const int iss = strcmp(a->engine, "iss") == 0;
+  if (!(c = compile_for(m, a, zero, &e->config, iss, "run"))) {
     rc = EXIT_USAGE;
     goto out;
   }
+  if (iss && fit_engine(&e, c, "run")) goto out;
   unsigned sreg[FP3_MODEL_MAX_VARS];
   for (unsigned i = 0; i < ns; i++) sreg[i] = fp3_compiled_state_reg(c, i);
   mgold mg = {c, &sc};
@@ -778,6 +816,8 @@ static int run_many(const margs *a) {
     fp3_json_string(stdout, a->integ);
     printf(", \"literal\": %s, \"insns_per_step\": %u, \"registers\": %u",
            a->literal ? "true" : "false", cs->body_insns, cs->regs);
+    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
+           e->config.num_regs);
     printf(", \"est_cycles_per_step\": %u", cs->est_cycles_later);
     printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
            a->steps, res.objects, res.contexts, res.batches);
@@ -820,9 +860,9 @@ static int run_many(const margs *a) {
     printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %zu objects, %" PRIu32
            " integrations each\n", a->engine, m->name, sc.model_path, a->integ,
            a->literal ? "literal" : "folded", res.objects, a->steps);
-    printf("program: %u instructions per integration, %u registers; scheduler estimate %u "
-           "cycles per integration of one object\n", cs->body_insns, cs->regs,
-           cs->est_cycles_later);
+    printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
+           "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
+           cs->regs_needed, e->config.num_regs, cs->est_cycles_later);
     printf("scene: %s; %u contexts per batch, %zu batch%s\n\n", where, res.contexts,
            res.batches, res.batches == 1 ? "" : "es");
     printf("  object");
@@ -908,10 +948,12 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     fprintf(stderr, "fp3 frames: cannot create the %s engine\n", a.engine);
     goto out;
   }
-  if (!(c = compile_for(m, &a, zero, &e->config, "frames"))) {
+  const int iss = strcmp(a.engine, "iss") == 0;
+  if (!(c = compile_for(m, &a, zero, &e->config, iss, "frames"))) {
     rc = EXIT_USAGE;
     goto out;
   }
+  if (iss && fit_engine(&e, c, "frames")) goto out;
   unsigned sreg[FP3_MODEL_MAX_VARS];
   for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
   mgold mg = {c, &sc};
@@ -1126,9 +1168,14 @@ int fp3_cmd_bench_model(int argc, char **argv) {
       continue;
     margs ai = a;
     ai.integ = ig;
-    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, "bench");
+    const int iss = strcmp(a.engine, "iss") == 0;
+    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, iss, "bench");
     if (!c) {
       rc = EXIT_USAGE;
+      goto out;
+    }
+    if (iss && fit_engine(&e, c, "bench")) {
+      fp3_compiled_free(c);
       goto out;
     }
     const unsigned insns = fp3_compiled_stats(c)->body_insns;
