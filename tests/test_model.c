@@ -41,8 +41,61 @@ static const char *const shipped[] = {"models/ship.fp3m", "models/spring.fp3m",
                                       "models/projectile.fp3m", "models/orbit.fp3m",
                                       "models/spring3d.fp3m", "models/oscillator.fp3m"};
 
+/* What a test allocates is owned here and freed by drop(), or by
+ * teardown() after the test: cmocka runs teardown after a failed test
+ * too (fail_msg and the asserts leave the test by longjmp), so a failure
+ * path leaks nothing under ASan. */
+#define MAX_OWNED 64
+static struct {
+  void *p;
+  void (*fn)(void *);
+} owned[MAX_OWNED];
+static size_t n_owned;
+
+static void free_engine(void *p) { fp3_engine_free(p); }
+static void free_compiled(void *p) { fp3_compiled_free(p); }
+
+/* Take p (NULL: nothing) to be freed by fn; returns p. */
+static void *own(void *p, void (*fn)(void *)) {
+  if (!p) return NULL;
+  if (n_owned == MAX_OWNED) {
+    fn(p);
+    fail_msg("more than %d owned allocations", MAX_OWNED);
+  }
+  owned[n_owned].p = p;
+  owned[n_owned++].fn = fn;
+  return p;
+}
+
+/* Free p now (it must be owned, or NULL). */
+static void drop(void *p) {
+  for (size_t i = n_owned; i-- > 0;)
+    if (owned[i].p == p) {
+      owned[i].fn(p);
+      owned[i] = owned[--n_owned];
+      return;
+    }
+}
+
+static int teardown(void **st) {
+  (void)st;
+  while (n_owned > 0) {
+    n_owned--;
+    owned[n_owned].fn(owned[n_owned].p);
+  }
+  return 0;
+}
+
+/* fp3_compile_model, the program (if any) owned. */
+static int compile(const fp3_model *m, const char *integ, const fp3_compile_opts *o,
+                   fp3_compiled **c, char *msg, size_t n) {
+  int rc = fp3_compile_model(m, integ, o, NULL, c, msg, n);
+  own(*c, free_compiled);
+  return rc;
+}
+
 static fp3_model *load(const char *path) {
-  fp3_model *m = malloc(sizeof *m);
+  fp3_model *m = own(malloc(sizeof *m), free);
   assert_non_null(m);
   char msg[512];
   if (fp3_model_load(path, m, msg, sizeof msg)) fail_msg("%s", msg);
@@ -50,7 +103,7 @@ static fp3_model *load(const char *path) {
 }
 
 static fp3_model *parse(const char *src) {
-  fp3_model *m = malloc(sizeof *m);
+  fp3_model *m = own(malloc(sizeof *m), free);
   assert_non_null(m);
   char msg[512];
   if (fp3_model_parse(src, "t.fp3m", m, msg, sizeof msg)) fail_msg("%s", msg);
@@ -62,7 +115,7 @@ static void test_shipped_parse(void **st) {
   for (size_t i = 0; i < sizeof shipped / sizeof shipped[0]; i++) {
     fp3_model *m = load(shipped[i]);
     assert_true(m->nstate >= 2);
-    free(m);
+    drop(m);
   }
   fp3_model *m = load("models/projectile.fp3m");
   assert_string_equal(m->name, "projectile");
@@ -72,11 +125,11 @@ static void test_shipped_parse(void **st) {
   assert_string_equal(m->state[3], "vx");
   assert_true(fp3_model_uses(m, FP3_ME_SQRT));
   assert_false(fp3_model_uses(m, FP3_ME_DIV));
-  free(m);
+  drop(m);
   m = load("models/ship.fp3m");
   assert_true(fp3_model_split(m));
   assert_true(fp3_model_uses(m, FP3_ME_DIV)); /* 1/m: host-computed when compiled */
-  free(m);
+  drop(m);
 }
 
 /* The tree: precedence, left associativity, unary minus, numbers. */
@@ -95,13 +148,13 @@ static void test_tree(void **st) {
   want = want - fmaxf(a, -b);
   want = want + fabsf(-c);
   assert_int_equal(fpref_bits(f), fpref_bits(want));
-  free(m);
+  drop(m);
   /* unary minus flips the sign exactly: -(0) is -0 */
   m = parse("state x\nx' = -x\n");
   y = 0.0f;
   fp3_model_eval_f(m, in, &y, &f, val);
   assert_int_equal(fpref_bits(f), 0x80000000u);
-  free(m);
+  drop(m);
   /* min and max: -0 below +0, a NaN propagates */
   m = parse("state x, y\nx' = min(x, y)\ny' = max(y, x)\n");
   float yy[2] = {0.0f, -0.0f}, ff[2];
@@ -111,7 +164,7 @@ static void test_tree(void **st) {
   yy[0] = NAN;
   fp3_model_eval_f(m, in, yy, ff, val);
   assert_true(isnan(ff[0]) && isnan(ff[1]));
-  free(m);
+  drop(m);
 }
 
 /* Bad input: each message starts FILE:LINE:COL and names the reason. */
@@ -142,12 +195,13 @@ static void test_errors(void **st) {
       {"state x\nx' = foo(x)\n", "t.fp3m:2:6: unknown function 'foo'"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-    fp3_model *m = malloc(sizeof *m);
+    fp3_model *m = own(malloc(sizeof *m), free);
+    assert_non_null(m);
     char msg[512] = "";
     assert_int_equal(fp3_model_parse(cases[i].src, "t.fp3m", m, msg, sizeof msg), -1);
     if (!strstr(msg, cases[i].want))
       fail_msg("case %zu: got \"%s\", want \"%s\"", i, msg, cases[i].want);
-    free(m);
+    drop(m);
   }
   char msg[512];
   fp3_model m;
@@ -188,7 +242,7 @@ static void test_ship_literal(void **st) {
     assert_int_equal(fpref_bits(ye[1]), fpref_bits(s));
   }
   assert_int_equal(fp3_model_step_literal(m, "verlet", in, ye), -1);
-  free(m);
+  drop(m);
 }
 
 /* GSL rk8pd against the `exact` lines (ship, damped spring). */
@@ -213,7 +267,7 @@ static void test_gsl_exact(void **st) {
       if (!(fabs(y[k] - ex) <= 1e-9 * (1 + fabs(ex))))
         fail_msg("%s %s: gsl %.17g exact %.17g", cases[i].file, m->state[k], y[k], ex);
     }
-    free(m);
+    drop(m);
   }
 }
 
@@ -248,7 +302,7 @@ static void test_golden_vs_gsl(void **st) {
     for (unsigned k = 0; k < m->nstate; k++)
       if (!(fabs(y[k] - ref[k]) <= cases[i].tol * scale))
         fail_msg("%s %s: golden %.9g gsl %.17g", cases[i].file, m->state[k], (double)y[k], ref[k]);
-    free(m);
+    drop(m);
   }
 }
 
@@ -294,8 +348,8 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
   const fp3_image *img = fp3_compiled_image(c);
   if (fp3_engine_load(e, img->words, img->n)) fail_msg("%s: %s", what, fp3_engine_error(e));
   for (size_t w = 0; w < nw; w++) assert_int_equal(fp3_engine_write_reg(e, reg[w], val[w]), 0);
-  obs_hist h = {m->nstate, {0}, steps, calloc((size_t)steps * m->nstate, 4),
-                calloc((size_t)steps * m->nstate, 1)};
+  obs_hist h = {m->nstate, {0}, steps, own(calloc((size_t)steps * m->nstate, 4), free),
+                own(calloc((size_t)steps * m->nstate, 1), free)};
   assert_non_null(h.v);
   assert_non_null(h.seen);
   for (unsigned i = 0; i < m->nstate; i++) h.reg[i] = fp3_compiled_state_reg(c, i);
@@ -331,8 +385,8 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
     assert_int_equal(fp3_engine_read_reg(e, h.reg[i], &r), 0);
     assert_int_equal(r, cur[i]);
   }
-  free(h.v);
-  free(h.seen);
+  drop(h.v);
+  drop(h.seen);
 }
 
 /* Every shipped model x every integrator that applies (symeuler where
@@ -346,7 +400,7 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
  * shipped program may be refused. */
 static void test_engines(void **st) {
   (void)st;
-  fp3_engine *rtl = fp3_engine_rtl_new(NULL);
+  fp3_engine *rtl = own(fp3_engine_rtl_new(NULL), free_engine);
   assert_non_null(rtl);
   static const char *const integs[] = {"euler", "rk2", "rk4", "symeuler", "verlet"};
   unsigned ran = 0, on_rtl = 0, iss_only = 0;
@@ -366,21 +420,17 @@ static void test_engines(void **st) {
         fp3_compiled *c = NULL;
         char msg[512], what[128];
         snprintf(what, sizeof what, "%s %s %s", m->name, integs[g], lit ? "literal" : "folded");
-        if (fp3_compile_model(m, integs[g], &o, NULL, &c, msg, sizeof msg)) {
-          free(m);
-          fp3_engine_free(rtl);
-          fail_msg("%s: %s", what, msg);
-        }
+        if (compile(m, integs[g], &o, &c, msg, sizeof msg)) fail_msg("%s: %s", what, msg);
         const fp3_compile_stats *cs = fp3_compiled_stats(c);
         assert_true(cs->regs_needed <= cs->num_regs);
         fp3_config icfg = rtl->config;
         icfg.num_contexts = FP3_MAX_CONTEXTS;
         icfg.num_lanes = 1;
         icfg.num_regs = cs->num_regs;
-        fp3_engine *iss = fp3_engine_iss_new_config(&icfg);
+        fp3_engine *iss = own(fp3_engine_iss_new_config(&icfg), free_engine);
         assert_non_null(iss);
         run_check(iss, c, m, objs[i].in, objs[i].y0, 200, lit, what);
-        fp3_engine_free(iss);
+        drop(iss);
         const fp3_image *img = fp3_compiled_image(c);
         if (cs->num_regs > rtl->config.num_regs) {
           printf("ISS only: %s: needs %u registers, the RTL build has NUM_REGS=%u\n", what,
@@ -399,9 +449,9 @@ static void test_engines(void **st) {
           on_rtl++;
         }
         ran++;
-        fp3_compiled_free(c);
+        drop(c);
       }
-    free(m);
+    drop(m);
   }
   printf("compiled models bit-exact with their golden models: %u programs on the ISS, %u of "
          "them also on the RTL (HAS_DIV=%u HAS_SQRT=%u NUM_REGS=%u), %u on the ISS only\n",
@@ -411,11 +461,12 @@ static void test_engines(void **st) {
   assert_int_equal(ran, 2 * (6 * 3 + 5 + 3));
   if (rtl->config.has_div && rtl->config.has_sqrt && rtl->config.num_regs >= 34)
     assert_int_equal(iss_only, 0);
-  fp3_engine_free(rtl);
+  drop(rtl);
 }
 
 /* The compiler's refusals: a missing unit names it; too many words names
- * IMEM_DEPTH; too few registers names NUM_REGS. */
+ * IMEM_DEPTH; too few registers names NUM_REGS and the registers needed;
+ * bounded register pressure and builds with more registers. */
 static void test_compile_refusals(void **st) {
   (void)st;
   fp3_model *m = load("models/projectile.fp3m");
@@ -424,69 +475,60 @@ static void test_compile_refusals(void **st) {
   fp3_compiled *c = NULL;
   char msg[512];
   if (fp3_opc_lookup("sqrt") < 0) {
-    assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+    assert_int_equal(compile(m, "rk4", &o, &c, msg, sizeof msg), -1);
     assert_non_null(strstr(msg, "model projectile needs sqrt: this build has no HAS_SQRT unit"));
   }
-  free(m);
+  drop(m);
   m = parse("param a\nstate x\nx' = x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x"
             "*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*x*a\n");
-  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "rk4", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "instructions; IMEM_DEPTH is 256"));
-  free(m);
+  drop(m);
   m = load("models/spring.fp3m");
   o.num_regs = 6;
-  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "rk4", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, " registers; NUM_REGS is 6 ("));
   o.num_regs = FP3_DEFAULT_NUM_REGS;
-  assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "verlet", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "verlet needs accelerations that do not read velocities: v' "
                              "reads velocity v"));
-  assert_int_equal(fp3_compile_model(m, "leapfrog", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "leapfrog", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "unknown integrator 'leapfrog'"));
-  free(m);
+  drop(m);
   m = load("models/projectile.fp3m");
-  assert_int_equal(fp3_compile_model(m, "symeuler", &o, NULL, &c, msg, sizeof msg), -1);
-  assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "symeuler", &o, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "verlet", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "needs the state split"));
-  free(m);
-}
 
-/* Registers without spilling.  Latency first, RK4 of the projectile
- * needs more than 32 registers; bounded register pressure fits it into
- * the default 32.  Folded RK4 of the 3-D spring needs 34 even so: refused
- * with the numbers, or, with max_regs, compiled for a build of 34
- * (`.regs 34`). */
-static void test_registers(void **st) {
-  (void)st;
-  fp3_model *m = load("models/projectile.fp3m");
-  fp3_compile_opts o;
-  fp3_compile_defaults(&o);
-  fp3_compiled *c = NULL;
-  char msg[512];
+  /* Registers without spilling.  Latency first, RK4 of the projectile
+   * needs more than 32 registers; bounded register pressure fits it into
+   * the default 32.  Folded RK4 of the 3-D spring needs 34 even so:
+   * refused with the numbers, or, with max_regs, compiled for a build of
+   * 34 (`.regs 34`). */
   o.fold = o.drop_zero = 0;
   o.num_regs = FP3_MAX_REGS; /* room for the latency-first schedule */
-  if (fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  if (compile(m, "rk4", &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
   const unsigned latency_first = fp3_compiled_stats(c)->regs_needed;
-  fp3_compiled_free(c);
+  drop(c);
   printf("projectile rk4 literal: latency first needs %u registers\n", latency_first);
   assert_true(latency_first > FP3_DEFAULT_NUM_REGS);
   o.num_regs = FP3_DEFAULT_NUM_REGS;
-  if (fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  if (compile(m, "rk4", &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
   assert_true(fp3_compiled_stats(c)->regs_needed <= FP3_DEFAULT_NUM_REGS);
   assert_int_equal(fp3_compiled_stats(c)->num_regs, FP3_DEFAULT_NUM_REGS);
   assert_null(strstr(fp3_compiled_text(c), ".regs"));
-  fp3_compiled_free(c);
-  free(m);
+  drop(c);
+  drop(m);
 
   m = load("models/spring3d.fp3m");
   fp3_compile_defaults(&o);
-  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "rk4", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "the program needs 34 registers; NUM_REGS is 32"));
   o.max_regs = 33;
-  assert_int_equal(fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_int_equal(compile(m, "rk4", &o, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "the program needs 34 registers; NUM_REGS is 32"));
   o.max_regs = FP3_MAX_REGS;
-  if (fp3_compile_model(m, "rk4", &o, NULL, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  if (compile(m, "rk4", &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
   assert_int_equal(fp3_compiled_stats(c)->regs_needed, 34);
   assert_int_equal(fp3_compiled_stats(c)->num_regs, 34);
   assert_non_null(strstr(fp3_compiled_text(c), "\n.regs 34\n"));
@@ -500,17 +542,16 @@ static void test_registers(void **st) {
       if (r[q] > top) top = r[q];
   }
   assert_int_equal(top, 33);
-  fp3_compiled_free(c);
-  free(m);
+  drop(c);
+  drop(m);
 }
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      cmocka_unit_test(test_shipped_parse), cmocka_unit_test(test_tree),
-      cmocka_unit_test(test_errors),        cmocka_unit_test(test_ship_literal),
-      cmocka_unit_test(test_gsl_exact),     cmocka_unit_test(test_golden_vs_gsl),
-      cmocka_unit_test(test_engines),       cmocka_unit_test(test_compile_refusals),
-      cmocka_unit_test(test_registers),
+      cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
+      cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_ship_literal, teardown),
+      cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
+      cmocka_unit_test_teardown(test_engines, teardown),       cmocka_unit_test_teardown(test_compile_refusals, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

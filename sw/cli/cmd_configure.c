@@ -194,6 +194,7 @@ int fp3_cmd_configure(int argc, char **argv) {
   fp3_configure_defaults(&o);
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage(stdout);
@@ -217,23 +218,15 @@ int fp3_cmd_configure(int argc, char **argv) {
         return EXIT_USAGE;
       }
       o.budget = b;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--steps", 1, MAX_STEPS,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      unsigned long long k;
-      if (fp3_parse_count(v, 1, MAX_STEPS, &k)) {
-        fprintf(stderr, "fp3 configure: --steps '%s': want 1..%u integrations\n", v, MAX_STEPS);
-        return EXIT_USAGE;
-      }
       o.steps = (uint32_t)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
       o.literal = 1;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--max-lanes", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--max-lanes", 1, FP3_MAX_LANES,
+                                  "lanes", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      unsigned long long k;
-      if (fp3_parse_count(v, 1, FP3_MAX_LANES, &k)) {
-        fprintf(stderr, "fp3 configure: --max-lanes '%s': want 1..%d lanes\n", v, FP3_MAX_LANES);
-        return EXIT_USAGE;
-      }
       o.max_lanes = (unsigned)k;
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
       o.context_per_object = 1;

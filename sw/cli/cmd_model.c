@@ -106,6 +106,7 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
   a->long_steps = 100000u;
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage(stdout);
@@ -127,14 +128,10 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
       }
       a->engine = v;
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--steps", &v)) != 0) {
-      unsigned long long s;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--steps", 1, UINT32_MAX,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, UINT32_MAX, &s)) {
-        fprintf(stderr, "fp3 %s: --steps '%s': want 1..%" PRIu32 "\n", cmd, v, UINT32_MAX);
-        return -1;
-      }
-      a->steps = (uint32_t)s;
+      a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "frames") != 0 && strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
       if (r < 0) return -1;
@@ -154,42 +151,21 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
     } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
       a->scene = argv[i];
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--objects", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--objects", 1, MAX_MODEL_OBJECTS,
+                                  "objects", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, MAX_MODEL_OBJECTS, &k)) {
-        fprintf(stderr, "fp3 %s: --objects '%s': want 1..%u\n", cmd, v, MAX_MODEL_OBJECTS);
-        return -1;
-      }
       a->objects = (size_t)k;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--seed", &v)) != 0) {
-      unsigned long long k;
+    } else if (strcmp(cmd, "run") == 0 && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 0, UINT64_MAX, &k)) {
-        fprintf(stderr, "fp3 %s: --seed '%s' is not a number\n", cmd, v);
-        return -1;
-      }
-      a->seed = k;
       a->seeded = 1;
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--round", &v)) != 0) {
+               (r = fp3_opt_round(argc, argv, &i, cmd, &a->mode)) != 0) {
       if (r < 0) return -1;
-      if (strcmp(v, "rne") == 0) a->mode.round = FPREF_RNE;
-      else if (strcmp(v, "rtz") == 0) a->mode.round = FPREF_RTZ;
-      else {
-        fprintf(stderr, "fp3 %s: unknown rounding '%s' (rne or rtz)\n", cmd, v);
-        return -1;
-      }
     } else if (strcmp(cmd, "frames") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--frames", &v)) != 0) {
-      unsigned long long f;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--frames", 1, 10000000u, "frames",
+                                  &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, 10000000u, &f)) {
-        fprintf(stderr, "fp3 %s: --frames '%s': a count 1..10000000\n", cmd, v);
-        return -1;
-      }
-      a->steps = (uint32_t)f;
+      a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--t-end", &v)) != 0) {
       char *end;
@@ -200,13 +176,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         return -1;
       }
     } else if (strcmp(cmd, "bench") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--long-steps", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--long-steps", 2, 10000000u,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 2, 10000000u, &k)) {
-        fprintf(stderr, "fp3 %s: --long-steps '%s': 2..10000000\n", cmd, v);
-        return -1;
-      }
       a->long_steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--long", &v)) != 0) {
@@ -217,13 +189,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
       if (r < 0) return -1;
       a->stab = v;
     } else if (strcmp(cmd, "bench") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--points", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--points", 1, 24, "step sizes",
+                                  &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, 24, &k)) {
-        fprintf(stderr, "fp3 %s: --points '%s': 1..24\n", cmd, v);
-        return -1;
-      }
       a->points = (unsigned)k;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
       a->no_rest_skip = 1;
