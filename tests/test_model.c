@@ -36,6 +36,12 @@
 #include "golden.h"
 #include "model.h"
 #include "modelref.h"
+#include "mscene.h"
+#include "../sim/fp3_model.h"
+
+/* The RTL build with lanes that make test already builds (mk/rtl.mk
+ * RTL_CFG_l4: 8 contexts x 4 lanes). */
+extern const fp3_model_ops fp3_model_l4;
 
 static const char *const shipped[] = {"models/ship.fp3m", "models/spring.fp3m",
                                       "models/projectile.fp3m", "models/orbit.fp3m",
@@ -546,12 +552,115 @@ static void test_compile_refusals(void **st) {
   drop(m);
 }
 
+/* ---- lanes ------------------------------------------------------------------ */
+
+/* The golden model of a compiled model over the objects of a scene. */
+typedef struct lane_gold {
+  fp3_compiled *c;
+  const fp3_mscene *sc;
+} lane_gold;
+
+static size_t lg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
+  lane_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, g->sc->y0 + obj * m->nstate,
+                                  reg, val, max);
+}
+
+static void lg_step(void *ctx, float *y) { fp3_compiled_model_step(((lane_gold *)ctx)->c, y); }
+
+static void lg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
+  lane_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  unsigned reg[80];
+  uint32_t val[80];
+  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 80);
+  fp3_compiled_model_step(g->c, ynew);
+}
+
+static void free_mscene(void *p) {
+  fp3_mscene_free(p);
+  free(p);
+}
+
+/* A model scene on a build with lanes packs its objects into contexts x
+ * lanes (object slot s = lane s / NUM_CONTEXTS of context s %
+ * NUM_CONTEXTS, engine.h), as ship scenes do: scenes/springs.scene's 24
+ * objects run in one batch on the RTL build l4 (8 contexts x 4 lanes)
+ * and on the ISS shaped so, where the one-lane default build needs 3;
+ * every object bit-exact with the golden model after every integration,
+ * its final state the one of the one-lane run; frame by frame (rest
+ * skipping) the same. */
+static void test_lanes(void **st) {
+  (void)st;
+  char msg[512];
+  fp3_mscene *sc = own(calloc(1, sizeof *sc), free_mscene);
+  assert_non_null(sc);
+  if (fp3_mscene_read("scenes/springs.scene", sc, msg, sizeof msg)) fail_msg("%s", msg);
+  const fp3_model *m = sc->model;
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  fp3_compiled *c = NULL;
+  if (compile(m, "rk4", &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  unsigned sreg[FP3_MODEL_MAX_VARS];
+  for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
+  lane_gold lg = {c, sc};
+  fp3_state_golden g = {&lg, m->nstate, sreg, lg_start, lg_step};
+  fp3_state_stepper gs = {&lg, m->nstate, sreg, lg_start, lg_step_from};
+  const fp3_image *img = fp3_compiled_image(c);
+  const uint32_t steps = 40;
+  fp3_engine *one = own(fp3_engine_rtl_new(NULL), free_engine);
+  fp3_engine *l4 = own(fp3_engine_rtl_new_model(&fp3_model_l4, NULL), free_engine);
+  assert_non_null(one);
+  assert_non_null(l4);
+  assert_int_equal(l4->config.num_lanes, 4);
+  fp3_engine *iss = own(fp3_engine_iss_new_config(&l4->config), free_engine);
+  assert_non_null(iss);
+  fp3_state_result base, r;
+  if (fp3_run_state_objects(one, img->words, img->n, sc->n, steps, FPREF_IEEE, &g, &base, msg,
+                            sizeof msg))
+    fail_msg("%s", msg);
+  own(base.y, free);
+  assert_int_equal(base.mismatches, 0);
+  assert_int_equal(base.batches, 3);
+  fp3_engine *lanes[2] = {l4, iss};
+  for (int k = 0; k < 2; k++) {
+    if (fp3_run_state_objects(lanes[k], img->words, img->n, sc->n, steps, FPREF_IEEE, &g, &r,
+                              msg, sizeof msg))
+      fail_msg("%s", msg);
+    own(r.y, free);
+    if (r.mismatches)
+      fail_msg("%s: object %zu, integration %u, %s: 0x%08X, golden 0x%08X",
+               lanes[k]->ops->name, r.first_object, r.first_step, m->state[r.first_var],
+               r.first_got, r.first_want);
+    assert_int_equal(r.error, FP3_ERR_NONE);
+    assert_int_equal(r.contexts, 8);
+    assert_int_equal(r.lanes, 4);
+    assert_int_equal(r.batches, 1);
+    assert_memory_equal(r.y, base.y, sc->n * m->nstate * sizeof *r.y);
+    printf("lanes: springs.scene on %s, 8 contexts x 4 lanes: %zu objects in %zu batch, "
+           "%.2f cycles per object-step (one lane: %zu batches, %.2f)\n", lanes[k]->ops->name,
+           r.objects, r.batches, (double)r.cycles / ((double)sc->n * steps), base.batches,
+           (double)base.cycles / ((double)sc->n * steps));
+    drop(r.y);
+  }
+  fp3_state_frames_result fr;
+  if (fp3_run_state_frames(l4, img->words, img->n, sc->n, 20, 1, FPREF_IEEE, &gs, &fr, msg,
+                           sizeof msg))
+    fail_msg("%s", msg);
+  assert_int_equal(fr.mismatches, 0);
+  assert_int_equal(fr.error, FP3_ERR_NONE);
+  assert_int_equal(fr.lanes, 4);
+  assert_int_equal(fr.batches, 20); /* one batch a frame: every spring moves */
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
       cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_ship_literal, teardown),
       cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
       cmocka_unit_test_teardown(test_engines, teardown),       cmocka_unit_test_teardown(test_compile_refusals, teardown),
+      cmocka_unit_test_teardown(test_lanes, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

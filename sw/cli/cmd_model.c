@@ -787,8 +787,8 @@ static int run_many(const margs *a) {
     printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
            e->config.num_regs);
     printf(", \"est_cycles_per_step\": %u", cs->est_cycles_later);
-    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
-           a->steps, res.objects, res.contexts, res.batches);
+    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"lanes\": %u"
+           ", \"batches\": %zu", a->steps, res.objects, res.contexts, res.lanes, res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64
            ", \"cycles_per_object_step\": %.9g", res.cycles, res.issued, res.stalls, per);
     printf(", \"golden_mismatches\": %" PRIu64, res.mismatches);
@@ -831,8 +831,8 @@ static int run_many(const margs *a) {
     printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
            "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
            cs->regs_needed, e->config.num_regs, cs->est_cycles_later);
-    printf("scene: %s; %u contexts per batch, %zu batch%s\n\n", where, res.contexts,
-           res.batches, res.batches == 1 ? "" : "es");
+    printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n", where, res.contexts,
+           res.lanes, res.batches, res.batches == 1 ? "" : "es");
     printf("  object");
     for (unsigned k = 0; k < ns; k++) printf(" %14s %14s", m->state[k], "reference");
     printf("\n");
@@ -943,18 +943,19 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     fp3_json_string(stdout, a.scene);
     printf(", \"integrator\": ");
     fp3_json_string(stdout, a.integ);
-    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"rest_skip\": %s"
+    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"lanes\": %u"
+           ", \"rest_skip\": %s"
            ", \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", \"cycles_per_frame\": %.2f"
            ", \"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64
            ", \"asleep_at_end\": %zu, \"golden_mismatches\": %" PRIu64 ", \"error\": \"%s\""
-           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts,
+           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts, res.lanes,
            a.no_rest_skip ? "false" : "true", res.batches, res.cycles, per, res.object_frames,
            res.skipped, res.asleep_last, res.mismatches, fp3_error_name(res.error),
            pass ? "true" : "false");
   } else {
     printf("fp3 frames: %zu objects of model %s (%s), %" PRIu32 " frames, %s %s, %s engine, "
-           "%u contexts%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
-           a.literal ? "literal" : "folded", a.engine, res.contexts,
+           "%u contexts x %u lanes%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
+           a.literal ? "literal" : "folded", a.engine, res.contexts, res.lanes,
            a.no_rest_skip ? ", no rest skip" : "");
     printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
            res.batches);
