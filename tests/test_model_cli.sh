@@ -57,6 +57,15 @@ check "spring3d rk4 folded on a 32-register RTL: refused with the numbers" \
   "[ $rc -eq 2 ] && grep -q 'the program needs 34 registers; NUM_REGS is 32' <<<\"\$err\""
 "$FP3" compile --model models/spring3d.fp3m -o "$tmp/s3.s" 2>/dev/null
 check "compile --model for 34 registers: .regs 34" "grep -q '^.regs 34$' $tmp/s3.s"
+# rk4comp: RK4 with Kahan-compensated updates, a compensation carried per
+# state variable; bit-exact on both engines; fp3 frames refuses it
+for eng in iss rtl; do
+  out=$("$FP3" run --model models/spring.fp3m $spring --steps 300 --engine $eng --integrator rk4comp --json)
+  check "spring rk4comp $eng: pass" \
+    "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"golden_mismatches\"]==0 else 1)'"
+done
+err=$("$FP3" frames --scene scenes/springs.scene --integrator rk4comp --frames 3 2>&1); rc=$?
+check "frames refuses rk4comp, naming the compensation" "[ $rc -eq 2 ] && grep -q 'Kahan compensation' <<<\"\$err\""
 "$FP3" compile --model models/spring.fp3m --literal -o "$tmp/s.s" 2>/dev/null
 check "compile --model writes the program" "grep -q 'model spring' $tmp/s.s && grep -q endi $tmp/s.s"
 [ $fail -eq 0 ]

@@ -922,6 +922,14 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     goto out;
   }
   if (iss && fit_engine(&e, c, "frames")) goto out;
+  if (fp3_compiled_carried(c) > m->nstate) {
+    /* the frame golden model restarts each object from its state alone */
+    fprintf(stderr, "fp3 frames: integrator %s carries a Kahan compensation per state "
+            "variable from one integration to the next; fp3 frames restarts the golden model "
+            "from the state alone: run it with fp3 run --scene\n", a.integ);
+    rc = EXIT_USAGE;
+    goto out;
+  }
   unsigned sreg[FP3_MODEL_MAX_VARS];
   for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
   mgold mg = {c, &sc};

@@ -29,9 +29,14 @@
  * builds about 300 (models/projectile.fp3m). */
 #define MAX_NODES 1024
 #define MAX_INSNS FP3_DEFAULT_IMEM_DEPTH
-#define MAX_STATE FP3_MODEL_MAX_VARS
-#define MAX_IN (2 * FP3_MODEL_MAX_VARS)
+/* loop-carried values: the state variables and, for rk4comp, one Kahan
+ * compensation each; inputs: the params, then each carried value's
+ * initial value */
+#define MAX_STATE (2 * FP3_MODEL_MAX_VARS)
+#define MAX_IN (3 * FP3_MODEL_MAX_VARS)
 #define NOTE_LEN 72
+/* body instructions: operations and a mov per carried value, at most */
+#define BODY_MAX (MAX_NODES + MAX_STATE + 2)
 
 /* ---- the IR ------------------------------------------------------------- */
 
@@ -381,6 +386,31 @@ static int order_edge(const builder *b, const bins *bi, int j, int k) {
   return 0;
 }
 
+/* Does instruction k read the value of instruction p, directly or
+ * through others?  (A search of the data edges from p, each instruction
+ * visited once.) */
+static int feeds(const bins *bi, int nb, int p, int k) {
+  unsigned char *seen = calloc((size_t)nb + 1, 1);
+  int *todo = malloc(((size_t)nb + 1) * sizeof *todo);
+  int n = 0, found = !seen || !todo; /* out of memory: assume it does (a mov, always right) */
+  if (!found) {
+    todo[n++] = p;
+    seen[p] = 1;
+  }
+  while (n > 0 && !found) {
+    int j = todo[--n];
+    if (j == k) found = 1;
+    for (int q = 0; q < nb && !found; q++)
+      if (!seen[q] && data_edge(bi, j, q)) {
+        seen[q] = 1;
+        todo[n++] = q;
+      }
+  }
+  free(seen);
+  free(todo);
+  return found;
+}
+
 /* Longest latency path from j to the end of the integration; -1 on a
  * dependence cycle. */
 static int height(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int j) {
@@ -721,8 +751,8 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
   int rc = -1;
   fp3_strbuf t = {0};
   insn *code = calloc(MAX_NODES + MAX_STATE + 2, sizeof *code); /* counted, then checked */
-  bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
-  int *order = calloc(MAX_NODES + 2, sizeof *order);
+  bins *bi = calloc(BODY_MAX, sizeof *bi);
+  int *order = calloc(BODY_MAX, sizeof *order);
   regalloc *ra = calloc(1, sizeof *ra);
   if (!code || !bi || !order || !ra) {
     snprintf(msg, n, "out of memory");
@@ -765,6 +795,15 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     if (b->nd[src].kind == NK_STATE && b->nd[src].id == w) continue; /* unchanged */
     int p = producer(bi, nb, src);
     int taken = p >= 0 && bi[p].dest_state >= 0;
+    /* the producer writes the state register itself unless a reader of
+     * the old value depends on the new one (Kahan's (t - y) after t):
+     * then t goes to a temporary and a mov follows */
+    for (int k = 0; k < nb && p >= 0 && !taken; k++)
+      for (int q = 0; q < 2; q++) {
+        int sn = bi[k].srcs[q];
+        if (sn >= 0 && b->nd[sn].kind == NK_STATE && b->nd[sn].id == w && feeds(bi, nb, p, k))
+          taken = 1;
+      }
     if (p >= 0 && !taken) {
       bi[p].dest_state = w;
     } else {
@@ -783,8 +822,8 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     goto out;
   }
   if (need > nregs) { /* bound the pressure; keep the order that needs fewer */
-    int *order2 = calloc(MAX_NODES + 2, sizeof *order2);
-    int *best2 = calloc(MAX_NODES + 2, sizeof *best2);
+    int *order2 = calloc(BODY_MAX, sizeof *order2);
+    int *best2 = calloc(BODY_MAX, sizeof *best2);
     if (!order2 || !best2) {
       free(order2);
       free(best2);
@@ -800,12 +839,12 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
         k = allocate(b, o, bi, nb, order2, FP3_MAX_REGS, ra, c->in_reg, c->state_reg);
       if (k && (!need2 || k < need2)) {
         need2 = k;
-        memcpy(best2, order2, (MAX_NODES + 2) * sizeof *order2);
+        memcpy(best2, order2, (BODY_MAX) * sizeof *order2);
       }
     }
-    memcpy(order2, best2, (MAX_NODES + 2) * sizeof *order2);
+    memcpy(order2, best2, (BODY_MAX) * sizeof *order2);
     if (need2 && need2 < need) { /* the pressure-bounded order needs fewer */
-      memcpy(order, order2, (MAX_NODES + 2) * sizeof *order);
+      memcpy(order, order2, (BODY_MAX) * sizeof *order);
       need = need2;
     }
     if (need > nregs && need <= o->max_regs) nregs = need; /* a larger build */
@@ -1207,7 +1246,8 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, hh, f[j])), "ym", j);
     m_f(b, m, t, f, "2");
     for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
-  } else if (strcmp(integ, "rk4") == 0) {
+  } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
+    const int comp = strcmp(integ, "rk4comp") == 0;
     ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
     ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
     m_f(b, m, y, f, "1");
@@ -1230,7 +1270,22 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
         sum = m_add(b, sum, k4);
       }
       sum = m_nm(b, sum, "sum", i);
-      b->out[i] = m_nm(b, m_add(b, y[i], mul(b, sixth, sum)), "n", i);
+      ref d = mul(b, sixth, sum);
+      if (!comp) {
+        b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
+        continue;
+      }
+      /* y += d, Kahan-compensated: the carried c holds -(what the
+       * rounding of the sums has lost so far) (integrators.c rk4comp) */
+      ref cst = state(b, (int)(ns + i)), nc = cst, ny = y[i];
+      nc.neg ^= 1;
+      ny.neg ^= 1;
+      ref yk = m_nm(b, m_add(b, d, nc), "yk", i);
+      ref t_ = m_nm(b, m_add(b, y[i], yk), "n", i);
+      ref z = m_nm(b, m_add(b, t_, ny), "z", i);
+      yk.neg ^= 1;
+      b->out[ns + i] = m_add(b, z, yk);
+      b->out[i] = t_;
     }
   } else if (strcmp(integ, "symeuler") == 0) {
     if (!fp3_model_split(m)) return -2;
@@ -1274,14 +1329,22 @@ static int model_ir(builder *b, const fp3_model *m, const char *integ,
   b->zero = -1;
   b->model = m;
   b->pzero = pzero;
-  b->nstate = (int)m->nstate;
-  b->nin = (int)(m->nparam + m->nstate);
-  for (unsigned i = 0; i < m->nstate; i++)
-    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s", m->state[i]);
+  /* rk4comp carries a compensation per state variable (c_NAME, 0 at
+   * the start) beside it */
+  const unsigned carried = m->nstate * (strcmp(integ, "rk4comp") == 0 ? 2u : 1u);
+  b->nstate = (int)carried;
+  b->nin = (int)(m->nparam + carried);
+  for (unsigned i = 0; i < carried; i++)
+    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s%.24s", i < m->nstate ? "" : "c_",
+             m->state[i % m->nstate]);
   for (int k = 0; k < b->nin; k++) {
     unsigned q = (unsigned)k;
     if (q < m->nparam) snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", m->param[q]);
-    else snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s(0)", m->state[q - m->nparam]);
+    else {
+      char st_[FP3_MODEL_NAME_LEN];
+      memcpy(st_, b->st_name[q - m->nparam], sizeof st_);
+      snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%.24s(0)", st_);
+    }
     b->in_state[k] = q < m->nparam ? -1 : (int)(q - m->nparam);
   }
   int rc = m_build(b, m, integ);
@@ -1360,9 +1423,11 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
                                 unsigned *reg, uint32_t *val, size_t max) {
   const builder *b = &c->b;
   const fp3_model *m = b->model;
+  float yc[MAX_STATE] = {0}; /* the carried values: the state, compensations 0 */
   for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
-  for (unsigned k = 0; k < m->nstate; k++) c->in[m->nparam + k] = y0[k];
-  golden_begin(c, y0);
+  for (unsigned k = 0; k < m->nstate; k++) yc[k] = y0[k];
+  for (int k = 0; k < b->nstate; k++) c->in[m->nparam + (unsigned)k] = yc[k];
+  golden_begin(c, yc);
   size_t w = 0;
   for (int k = 0; k < b->nin && w < max; k++)
     if (c->in_reg[k] >= 0) {
@@ -1377,7 +1442,13 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
   return w;
 }
 
-void fp3_compiled_model_step(fp3_compiled *c, float *y) { golden_advance(c, y); }
+void fp3_compiled_model_step(fp3_compiled *c, float *y) {
+  float yc[MAX_STATE];
+  golden_advance(c, yc);
+  for (unsigned i = 0; i < c->b.model->nstate; i++) y[i] = yc[i];
+}
+
+unsigned fp3_compiled_carried(const fp3_compiled *c) { return (unsigned)c->b.nstate; }
 
 /* ---- golden model -------------------------------------------------------- */
 

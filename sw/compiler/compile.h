@@ -210,10 +210,17 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
                                 unsigned *reg, uint32_t *val, size_t max);
 
 /* One integration of the golden model: y (m->nstate values) gets the new
- * state. */
+ * state (the compensations of rk4comp stay inside c). */
 void fp3_compiled_model_step(fp3_compiled *c, float *y);
 
-/* The register holding state variable i. */
+/* The values a model's program carries from one integration to the next:
+ * its state variables, then (rk4comp) one Kahan compensation each, so
+ * m->nstate or 2 m->nstate.  The registers of the compensations start at
+ * 0 (fp3_compiled_model_start writes them). */
+unsigned fp3_compiled_carried(const fp3_compiled *c);
+
+/* The register holding carried value i (state variable i for i <
+ * m->nstate). */
 unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
 
 #endif /* FP3_COMPILE_H */
