@@ -584,30 +584,6 @@ static void test_rk4comp_long(void **st) {
 
 /* ---- lanes ------------------------------------------------------------------ */
 
-/* The golden model of a compiled model over the objects of a scene. */
-typedef struct lane_gold {
-  fp3_compiled *c;
-  const fp3_mscene *sc;
-} lane_gold;
-
-static size_t lg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
-  lane_gold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, g->sc->y0 + obj * m->nstate,
-                                  reg, val, max);
-}
-
-static void lg_step(void *ctx, float *y) { fp3_compiled_model_step(((lane_gold *)ctx)->c, y); }
-
-static void lg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
-  lane_gold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  unsigned reg[80];
-  uint32_t val[80];
-  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 80);
-  fp3_compiled_model_step(g->c, ynew);
-}
-
 static void free_mscene(void *p) {
   fp3_mscene_free(p);
   free(p);
@@ -632,11 +608,8 @@ static void test_lanes(void **st) {
   fp3_compile_defaults(&o);
   fp3_compiled *c = NULL;
   if (compile(m, "rk4", &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
-  unsigned sreg[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
-  lane_gold lg = {c, sc};
-  fp3_state_golden g = {&lg, m->nstate, sreg, lg_start, lg_step};
-  fp3_state_stepper gs = {&lg, m->nstate, sreg, lg_start, lg_step_from};
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, c, sc);
   const fp3_image *img = fp3_compiled_image(c);
   const uint32_t steps = 20;
   fp3_engine *one = own(fp3_engine_rtl_new(NULL), free_engine);
@@ -647,7 +620,7 @@ static void test_lanes(void **st) {
   fp3_engine *iss = own(fp3_engine_iss_new_config(&l4->config), free_engine);
   assert_non_null(iss);
   fp3_state_result base, r;
-  if (fp3_run_state_objects(one, img->words, img->n, sc->n, steps, FPREF_IEEE, &g, &base, msg,
+  if (fp3_run_state_objects(one, img->words, img->n, sc->n, steps, FPREF_IEEE, &sg.golden, &base, msg,
                             sizeof msg))
     fail_msg("%s", msg);
   own(base.y, free);
@@ -655,7 +628,7 @@ static void test_lanes(void **st) {
   assert_int_equal(base.batches, 3);
   fp3_engine *lanes[2] = {l4, iss};
   for (int k = 0; k < 2; k++) {
-    if (fp3_run_state_objects(lanes[k], img->words, img->n, sc->n, steps, FPREF_IEEE, &g, &r,
+    if (fp3_run_state_objects(lanes[k], img->words, img->n, sc->n, steps, FPREF_IEEE, &sg.golden, &r,
                               msg, sizeof msg))
       fail_msg("%s", msg);
     own(r.y, free);
@@ -675,7 +648,7 @@ static void test_lanes(void **st) {
     drop(r.y);
   }
   fp3_state_frames_result fr;
-  if (fp3_run_state_frames(l4, img->words, img->n, sc->n, 8, 1, FPREF_IEEE, &gs, &fr, msg,
+  if (fp3_run_state_frames(l4, img->words, img->n, sc->n, 8, 1, FPREF_IEEE, &sg.stepper, &fr, msg,
                            sizeof msg))
     fail_msg("%s", msg);
   assert_int_equal(fr.mismatches, 0);

@@ -648,23 +648,6 @@ out:
 
 #define SHOW_OBJECTS 8 /* rows of the human report */
 
-/* The compiled program's golden model over the objects of a scene. */
-typedef struct mgold {
-  fp3_compiled *c;
-  const fp3_mscene *sc;
-} mgold;
-
-static size_t mg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
-  mgold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam,
-                                  g->sc->y0 + obj * m->nstate, reg, val, max);
-}
-
-static void mg_step(void *ctx, float *y) {
-  mgold *g = ctx;
-  fp3_compiled_model_step(g->c, y);
-}
 
 /* The scene of a: read from a->scene, or --objects N generated from the
  * --set values.  0, or the exit status of the failure (message printed). */
@@ -729,12 +712,10 @@ static int run_many(const margs *a) {
     goto out;
   }
   if (iss && fit_engine(&e, c, "run")) goto out;
-  unsigned sreg[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < ns; i++) sreg[i] = fp3_compiled_state_reg(c, i);
-  mgold mg = {c, &sc};
-  fp3_state_golden g = {&mg, ns, sreg, mg_start, mg_step};
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, c, &sc);
   const fp3_image *img = fp3_compiled_image(c);
-  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &g, &res, msg,
+  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &sg.golden, &res, msg,
                             sizeof msg)) {
     fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
     goto out;
@@ -884,17 +865,6 @@ out:
 
 /* ---- frames ------------------------------------------------------------------ */
 
-/* One integration of object obj from state y: the golden model restarted
- * on that state (its only loop-carried values are the state variables). */
-static void mg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
-  mgold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  unsigned reg[512];
-  uint32_t val[512];
-  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 512);
-  fp3_compiled_model_step(g->c, ynew);
-}
-
 int fp3_cmd_frames_model(int argc, char **argv) {
   margs a;
   int r = parse_args(argc, argv, "frames", &a);
@@ -930,14 +900,12 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     rc = EXIT_USAGE;
     goto out;
   }
-  unsigned sreg[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
-  mgold mg = {c, &sc};
-  fp3_state_stepper g = {&mg, m->nstate, sreg, mg_start, mg_step_from};
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, c, &sc);
   const fp3_image *img = fp3_compiled_image(c);
   fp3_state_frames_result res;
   if (fp3_run_state_frames(e, img->words, img->n, sc.n, a.steps, !a.no_rest_skip, FPREF_IEEE,
-                           &g, &res, msg, sizeof msg)) {
+                           &sg.stepper, &res, msg, sizeof msg)) {
     fprintf(stderr, "fp3 frames: %s\n", msg);
     goto out;
   }

@@ -1450,6 +1450,38 @@ void fp3_compiled_model_step(fp3_compiled *c, float *y) {
 
 unsigned fp3_compiled_carried(const fp3_compiled *c) { return (unsigned)c->b.nstate; }
 
+/* ---- a model scene's golden model (mscene.h runners) ---------------------- */
+
+static size_t sg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
+  fp3_scene_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam,
+                                  g->sc->y0 + obj * m->nstate, reg, val, max);
+}
+
+static void sg_step(void *ctx, float *y) {
+  fp3_scene_gold *g = ctx;
+  fp3_compiled_model_step(g->c, y);
+}
+
+static void sg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
+  fp3_scene_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  unsigned reg[2 * MAX_IN];
+  uint32_t val[2 * MAX_IN];
+  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 2 * MAX_IN);
+  fp3_compiled_model_step(g->c, ynew);
+}
+
+void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc) {
+  const unsigned ns = sc->model->nstate;
+  g->c = c;
+  g->sc = sc;
+  for (unsigned i = 0; i < ns; i++) g->reg[i] = fp3_compiled_state_reg(c, i);
+  g->golden = (fp3_state_golden){g, ns, g->reg, sg_start, sg_step};
+  g->stepper = (fp3_state_stepper){g, ns, g->reg, sg_start, sg_step_from};
+}
+
 /* ---- golden model -------------------------------------------------------- */
 
 static float eval(const builder *b, const float *val, int i) {

@@ -53,6 +53,7 @@
 
 #include "image.h"
 #include "model.h"
+#include "mscene.h"
 #include "objects.h"
 
 /* Compiler options. */
@@ -222,5 +223,22 @@ unsigned fp3_compiled_carried(const fp3_compiled *c);
 /* The register holding carried value i (state variable i for i <
  * m->nstate). */
 unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
+
+/* The golden model of compiled model c over the objects of model scene sc,
+ * as the runners of mscene.h want it: g->golden for
+ * fp3_run_state_objects, g->stepper (each object stepped from any state:
+ * the golden model restarted on it, for fp3_run_state_frames; right for
+ * programs whose only carried values are the state variables,
+ * fp3_compiled_carried).  g keeps c, sc and the state registers; it must
+ * outlive the runs. */
+typedef struct fp3_scene_gold {
+  fp3_compiled *c;
+  const fp3_mscene *sc;
+  unsigned reg[FP3_MODEL_MAX_VARS];
+  fp3_state_golden golden;
+  fp3_state_stepper stepper;
+} fp3_scene_gold;
+
+void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc);
 
 #endif /* FP3_COMPILE_H */
