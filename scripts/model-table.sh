@@ -3,19 +3,21 @@
 # docs/models.md ("Shipped models"): for every model of models/ and every
 # integrator that applies, folded (the default) and literal, the
 # instructions per integration, the registers the program needs, the
-# scheduler's cycles per integration of one object (fp3 compile: exact for
-# one context of the default build), the engine's cycles per object-step
-# of one object (600 integrations) and of 64 objects (--objects 64 --seed 1,
-# 200 integrations), and the largest |state - GSL rk8pd (1e-12)| of one
-# object at t = 600 h.  Every run is checked bit for bit against the golden
-# model; a failed run stops the script.
+# engine (the default RTL build where it runs the program; else the ISS
+# shaped as a build that does: HAS_DIV, HAS_SQRT, NUM_REGS), its cycles
+# per object-step of one object (600 integrations) and of 64 objects
+# (--objects 64 --seed 1, 200 integrations; the ISS counts one cycle an
+# instruction), the scheduler's estimate for one object on the default
+# build (fp3 compile; div and sqrt latencies not modelled), and the
+# largest |state - GSL rk8pd (1e-12)| of one object at t = 600 h.  Every
+# run is checked bit for bit against the golden model after every
+# integration; a failed check stops the script.
 #
-#   scripts/model-table.sh [ENGINE]     ENGINE: iss (default) or rtl
-# Uses build/fp3 (FP3_BIN to override).  Prints Markdown rows.
+#   scripts/model-table.sh           prints Markdown rows
+# Uses build/fp3 (FP3_BIN to override).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 FP3=${FP3_BIN:-build/fp3}
-eng=${1:-iss}
 declare -A set=(
   [ship]="--set h=0.0166666675 --set T=50000 --set C=5000 --set m=10000 --set v=0 --set s=0"
   [spring]="--set h=0.015625 --set k=40 --set c=0.8 --set m=2 --set x=0.5 --set v=-0.25"
@@ -24,28 +26,34 @@ declare -A set=(
   [orbit]="--set h=0.015625 --set mu=1 --set x=1 --set y=0 --set vx=0 --set vy=1.1"
   [spring3d]="--set h=0.015625 --set k=30 --set L=1 --set m=1.5 --set x=1.5 --set y=0.2 --set z=-0.3 --set vx=0 --set vy=0.8 --set vz=0.1"
 )
-echo "| model | integrator | instructions / step | registers needed | cycles / step, one object (scheduler, default build) | $eng cycles / object-step, one object | $eng cycles / object-step, 64 objects | error vs GSL |"
-echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+echo "| model | integrator | instructions / step | registers needed | engine | cycles / object-step, one object | 64 objects | scheduler estimate, one object | error vs GSL |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for m in ship spring oscillator projectile orbit spring3d; do
-  for ig in euler rk2 rk4 symeuler verlet; do
+  for ig in euler rk2 rk4 rk4comp symeuler verlet; do
     for lit in "" --literal; do
       "$FP3" compile --model models/$m.fp3m --integrator $ig $lit -o /dev/null 2>/tmp/fp3-table.$$ || continue
       est=$(sed -n 's/.*about \([0-9]*\) cycles per integration.*/\1/p' /tmp/fp3-table.$$)
-      one=$("$FP3" run --model models/$m.fp3m ${set[$m]} --integrator $ig $lit --engine $eng \
-            --steps 600 --json 2>/dev/null)
+      eng=rtl
+      one=$("$FP3" run --model models/$m.fp3m ${set[$m]} --integrator $ig $lit --engine rtl \
+            --steps 600 --json 2>/dev/null) || {
+        [ $? -eq 2 ] || { echo "$m $ig $lit: rtl run failed" >&2; exit 1; }
+        eng=iss
+        one=$("$FP3" run --model models/$m.fp3m ${set[$m]} --integrator $ig $lit --engine iss \
+              --steps 600 --json 2>/dev/null); }
       many=$("$FP3" run --model models/$m.fp3m ${set[$m]} --integrator $ig $lit --engine $eng \
              --objects 64 --seed 1 --steps 200 --json 2>/dev/null)
-      python3 - "$m" "$ig" "${lit:+literal}" "$est" "$one" "$many" <<'PY'
+      python3 - "$m" "$ig" "${lit:+literal}" "$est" "$eng" "$one" "$many" <<'PY'
 import json, sys
-m, ig, lit, est, one, many = sys.argv[1:]
+m, ig, lit, est, eng, one, many = sys.argv[1:]
 a, b = json.loads(one), json.loads(many)
 if not (a["pass"] and b["pass"]):
     sys.exit("%s %s %s: not bit-exact" % (m, ig, lit))
 r = a["results"][0]
 err = max(abs(r[k] - r[k + "_ref"]) for k in r if k + "_ref" in r)
-print("| %s | %s%s | %d | %d | %s | %.2f | %.2f | %.2g |" % (
-    m, ig, " literal" if lit else "", a["body_insns"], a["registers_needed"], est,
-    a["cycles_per_step"], b["cycles_per_object_step"], err))
+print("| %s | %s%s | %d | %d | %s | %.2f | %.2f | %s | %.2g |" % (
+    m, ig, " literal" if lit else "", a["body_insns"], a["registers_needed"],
+    eng.upper() + ("" if eng == "rtl" else " (NUM_REGS %d)" % a["num_regs"]),
+    a["cycles_per_step"], b["cycles_per_object_step"], est, err))
 PY
     done
   done

@@ -431,6 +431,13 @@ static void test_engines(void **st) {
         const fp3_compile_stats *cs = fp3_compiled_stats(c);
         assert_true(cs->regs_needed <= cs->num_regs);
         if (cs->num_regs > most_regs) most_regs = cs->num_regs;
+        /* each new state value is written into its register by the
+         * instruction that makes it: no mov, except rk4comp's new y_i,
+         * which (t - y_i) must not overwrite before reading y_i */
+        if (cs->body_insns != cs->body_arith + 1 +
+                                  (strcmp(integs[g], "rk4comp") == 0 ? m->nstate : 0))
+          fail_msg("%s: %u instructions per integration, %u arithmetic", what, cs->body_insns,
+                   cs->body_arith);
         fp3_config icfg = rtl->config;
         icfg.num_contexts = FP3_MAX_CONTEXTS;
         icfg.num_lanes = 1;

@@ -801,7 +801,8 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     for (int k = 0; k < nb && p >= 0 && !taken; k++)
       for (int q = 0; q < 2; q++) {
         int sn = bi[k].srcs[q];
-        if (sn >= 0 && b->nd[sn].kind == NK_STATE && b->nd[sn].id == w && feeds(bi, nb, p, k))
+        if (sn >= 0 && b->nd[sn].kind == NK_STATE && b->nd[sn].id == w && k != p &&
+            feeds(bi, nb, p, k))
           taken = 1;
       }
     if (p >= 0 && !taken) {
