@@ -155,9 +155,15 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
           param_text("NUM_LANES", c->num_lanes, p0, sizeof p0), r->objects,
           r->objects == 1 ? "" : "s", c->num_contexts, o->max_lanes,
           c->num_contexts * c->num_lanes, c->num_contexts * c->num_lanes == 1 ? "" : "s");
-  fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
-                  "(it names %u; compiled for the default %u it names %u)\n",
-          param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
+  if (r->regs_default > FP3_DEFAULT_NUM_REGS)
+    fprintf(stderr, "  %-16s the fewest registers the compiler schedules the program into "
+                    "(more than the default %u; no spilling)\n",
+            param_text("NUM_REGS", c->num_regs, p0, sizeof p0), (unsigned)FP3_DEFAULT_NUM_REGS);
+  else
+    fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
+                    "(it names %u; compiled for the default %u it names %u)\n",
+            param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used,
+            (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
   const unsigned has[FP3_CONFIGURE_UNITS] = {c->has_add, c->has_sub, c->has_mul,
                                              c->has_div, c->has_sqrt, c->has_sign};
   const char *const param[FP3_CONFIGURE_UNITS] = {"HAS_ADD", "HAS_SUB", "HAS_MUL",
