@@ -14,10 +14,18 @@
  *    literal rk4 golden model stays within a bound of it;
  *  - the compiled program (sw/compiler/compile.c, fp3_compile_model): its
  *    IR golden model in literal mode equals the literal golden model bit
- *    for bit; literal and folded programs bit-exact on the ISS and the RTL
- *    after every integration; a model that needs an instruction the ISA
- *    lacks is refused naming the unit (and its ISS/RTL runs are skipped,
- *    with the reason printed, while the ISA lacks it).
+ *    for bit; every shipped model x every integrator that applies
+ *    (rk4comp included), literal and folded, bit-exact after every
+ *    integration on the ISS shaped as the build it needs, and on the RTL
+ *    when the Verilated build has its units and registers (the output
+ *    says which ran on the ISS only, and why);
+ *  - registers: bounded register pressure fits 3-D RK4 into 32 where the
+ *    latency-first schedule needs more; what does not fit is refused with
+ *    the numbers, or compiled for a larger build (`.regs N`);
+ *  - a model scene on lanes (the l4 build, 8 contexts x 4 lanes): one
+ *    batch where the one-lane build needs three, the same bits;
+ *  - rk4comp keeps the low bits RK4 loses over many small steps.
+ * Everything a test allocates is freed by its teardown, failed or not.
  */
 #include <math.h>
 #include <setjmp.h>

@@ -195,6 +195,8 @@ unsigned fp3_image_body_insns(const fp3_image *img);
  * IMEM_DEPTH ("the program needs 290 instructions; IMEM_DEPTH is 256").
  * A program compiled for more than FP3_DEFAULT_NUM_REGS registers starts
  * with `.regs N` (asm.h). 
+ * Integrator rk4comp carries a Kahan compensation per state variable in a
+ * register of its own (fp3_compiled_carried), 0 at the start.
  * The text binds inputs and results in comments (the assembler's .in/.out
  * names are the ship's): fp3_compiled_model_start gives the writes. */
 int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,

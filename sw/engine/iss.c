@@ -2,7 +2,8 @@
  * iss.c -- the FP3 instruction-set simulator: the architectural model of
  * the processor, one instruction at a time, as an engine (engine.h).
  *
- * Registers hold binary32 bit patterns; add/sub/mul/div/sqrt are
+ * Registers hold binary32 bit patterns, NUM_REGS per object slot (32, or
+ * the build's: fp3_engine_iss_new_config); add/sub/mul/div/sqrt are
  * fpref_add/sub/mul/div/sqrt in the engine's core configuration (default
  * RNE with subnormals; RTZ and FTZ as the RTL's ROUND and FTZ parameters),
  * abs/neg/min/max are fpref_abs/neg/min/max (exact, never flushed); their
