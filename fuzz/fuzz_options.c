@@ -4,22 +4,23 @@
  * fp3_is_help) as the model subcommands use it, i.e. the whole argument
  * parsing of `fp3 run --model` and `fp3 compile --model` (parse_args and
  * apply_set of sw/cli/cmd_model.c) without compiling or running anything;
- * and the option-value parsers of the other subcommands: `fp3 bench`'s
- * numbers and counts (parse_pos, parse_count of sw/cli/cmd_bench.c),
- * `fp3 tbgen --set NAME=VALUE` (set_scene of sw/cli/cmd_tbgen.c) and
- * `fp3 compile`'s latencies (latency_arg of sw/cli/cmd_compile.c).
+ * and the option-value parsers the other subcommands share or keep:
+ * cliopt.c's counts, --seed, --round and A:B pairs (fp3_opt_count,
+ * fp3_opt_seed, fp3_opt_round, fp3_parse_pair), `fp3 bench`'s positive
+ * numbers (parse_pos of sw/cli/cmd_bench.c) and `fp3 tbgen --set
+ * NAME=VALUE` (set_scene of sw/cli/cmd_tbgen.c).
  *
  * The input is an argument vector, one argument per line.  The first line
- * picks what is parsed: "bench", "tbgen" and "latency" give each further
- * line to that subcommand's value parsers; "compile" runs parse_args as
+ * picks what is parsed: "bench" and "tbgen" give each further line to
+ * that subcommand's value parser, "counts" the vector to the shared
+ * count, seed, rounding and pair parsers; "compile" runs parse_args as
  * `fp3 compile --model`, anything else as `fp3 run --model`.  When
  * parse_args accepts them, each --set NAME=VALUE is applied to a fixed
  * model (a damped spring, parsed once), as the subcommand does before it
  * compiles.
  *
  * The subcommands' sources are included, not linked, to reach their
- * static functions (each file's own `usage` renamed, as they clash); the
- * functions of them that run an engine are never called (the fuzz build
+ * static functions; the functions of them that run an engine are never called (the fuzz build
  * links with --gc-sections, which drops them and what only they need).
  * The subcommands' loops over argv (fp3_cmd_bench, fp3_cmd_tbgen, ...) go
  * on to run engines and write files, so they are not fuzzed here.
@@ -27,9 +28,6 @@
 #include "cmd_model.c"
 #include "cmd_bench.c"
 #include "cmd_tbgen.c"
-#define usage compile_usage
-#include "cmd_compile.c"
-#undef usage
 
 #include "fuzz_common.h"
 
@@ -66,20 +64,27 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   }
   argv[argc] = NULL;
   if (strcmp(argv[0], "bench") == 0 || strcmp(argv[0], "tbgen") == 0 ||
-      strcmp(argv[0], "latency") == 0) {
+      strcmp(argv[0], "counts") == 0) {
     fp3_ship_params p;
     memset(&p, 0, sizeof p);
     for (int i = 1; i < argc; i++) {
       double x;
-      uint32_t n;
-      unsigned l;
+      unsigned long long n, a, b;
+      uint64_t seed;
+      fpref_mode mode;
+      memset(&mode, 0, sizeof mode);
       if (argv[0][0] == 'b') {
         (void)parse_pos("--from", argv[i], &x);
-        (void)parse_count("--steps", argv[i], &n, i & 1);
       } else if (argv[0][0] == 't') {
         (void)set_scene(&p, argv[i]);
       } else {
-        (void)latency_arg("--add-latency", argv[i], &l);
+        /* the shared shapes: a count, --seed, --round, a pair A:B */
+        int j = i;
+        if (fp3_opt_count(argc, argv, &j, "counts", "--steps", 1, 1000000, "steps", &n) != 0 ||
+            fp3_opt_seed(argc, argv, &j, "counts", &seed) != 0 ||
+            fp3_opt_round(argc, argv, &j, "counts", &mode) != 0)
+          i = j;
+        (void)fp3_parse_pair(argv[i], 0, 64, 1, 1000, "all", &a, &b);
       }
     }
     free(text);
