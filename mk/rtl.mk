@@ -18,15 +18,16 @@ RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP
 # MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [NUM_LANES [HAS_DIV
 # HAS_SQRT HAS_SIGN]]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
-# (shortest add; FMAX_PIPE, the build for clock rate, with the shortest
-# latencies it takes, whose write-back tag lines are too short for the full
-# announcement lead: fp3_wb_tag).
+# (shortest add, and no div/sqrt unit: HAS_DIV = HAS_SQRT = 0, the build a
+# program with div or sqrt is refused on; FMAX_PIPE, the build for clock
+# rate, with the shortest latencies it takes, whose write-back tag lines
+# are too short for the full announcement lead: fp3_wb_tag).
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
-RTL_CFG_nc1     := 0 0 1 1 2
+RTL_CFG_nc1     := 0 0 1 1 2 32 1 1 1 0 1 0 0
 RTL_CFG_nc3     := 0 0 3 4 3 32 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
