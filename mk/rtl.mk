@@ -124,9 +124,16 @@ isa: $(BUILD)/gen_isa
 	python3 scripts/isa-tables.py $(BUILD)/gen_isa docs/isa.md
 
 # ---- lint ------------------------------------------------------------------
+# The processor in the default build (every unit, the div/sqrt unit
+# included), with lanes, without the div/sqrt unit and in the build for
+# clock rate; the wrapper's variants: lint-axil (mk/axil.mk).
+LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
+               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
 lint: $(SETUP_STAMP)
-	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $(RTL_SRC)
+	@set -e; for p in $(LINT_PARAMS); do \
+	  echo "$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $$p"; \
+	  $(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $$p $(RTL_SRC); done
 	@echo "lint: verilator -Wall clean"
 
 # ---- synthesis -------------------------------------------------------------
