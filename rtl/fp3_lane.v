@@ -19,15 +19,18 @@
 // 2**XW x 32 bits (block RAM: fp3_ram; the div/sqrt port's two are never
 // written without the unit and synthesize away), plus the read stages'
 // bypass.  The register file's busy flags and live value table
-// are identical in every lane (they see the same indices): fp3_top uses
-// lane 0's busy flags (busy_o, idle_o); the other lanes' are left
-// unconnected and synthesis removes them (opt_clean), and merges their
-// identical live value tables (opt_merge).
+// would be identical in every lane (they see the same indices), so only
+// lane 0 has them (CTRL = 1): fp3_top uses its busy flags (busy_o,
+// idle_o) as the scoreboard, and lanes 1 .. (CTRL = 0) take its LVT
+// choice of each read (lvt_*_o of lane 0 into their lvt_*_i) and have no
+// flags of their own (fp3_regfile CTRL).  With more than one lane the
+// host's register writes, which reach one lane, leave the shared LVT alone
+// (fp3_regfile HOST_ALL).
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
-// FLAGS_AHEAD) and fp3_arith (ADD_LATENCY, MUL_LATENCY, MOV_LATENCY,
-// DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT,
-// HAS_SIGN), passed through unchanged.
+// FLAGS_AHEAD, CTRL, HOST_ALL) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
+// MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
+// HAS_SQRT, HAS_SIGN), passed through unchanged.
 // Ports: fp3_regfile's (index ports shared by all lanes) and fp3_arith's
 // operation inputs; imm_i/imm_val_i choose the immediate as the first
 // operand (li), as the read stage gives it.  ra_data_o/rb_data_o are this
@@ -40,6 +43,8 @@ module fp3_lane #(
   parameter integer XW          = 8,
   parameter integer READ_STAGES = 1,
   parameter integer FLAGS_AHEAD = 0,
+  parameter integer CTRL        = 1,
+  parameter integer HOST_ALL    = 0,
   parameter integer ADD_LATENCY = 4,
   parameter integer MUL_LATENCY = 3,
   parameter integer MOV_LATENCY = 1,
@@ -92,6 +97,10 @@ module fp3_lane #(
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
   output wire               idle_o,
+  output wire [3:0]         lvt_a_o,
+  output wire [3:0]         lvt_b_o,
+  input  wire [3:0]         lvt_a_i,
+  input  wire [3:0]         lvt_b_i,
   // arithmetic unit (see fp3_arith), operands from this lane's read stage
   input  wire               valid_i,
   input  wire [2:0]         unit_i,
@@ -112,7 +121,8 @@ module fp3_lane #(
   wire [31:0] add_data, mul_data, mov_data, div_data;
 
   fp3_regfile #(.ENTRIES(ENTRIES), .XW(XW), .READ_STAGES(READ_STAGES),
-                .FLAGS_AHEAD(FLAGS_AHEAD)) u_regs (
+                .FLAGS_AHEAD(FLAGS_AHEAD), .CTRL(CTRL),
+                .HOST_ALL(HOST_ALL)) u_regs (
     .clk_i           (clk_i),
     .rst_i           (rst_i),
     .ra_i            (ra_i),
@@ -154,7 +164,11 @@ module fp3_lane #(
     .host_we_i       (host_we_i),
     .host_idx_i      (host_idx_i),
     .host_wdata_i    (host_wdata_i),
-    .idle_o          (idle_o)
+    .idle_o          (idle_o),
+    .lvt_a_o         (lvt_a_o),
+    .lvt_b_o         (lvt_b_o),
+    .lvt_a_i         (lvt_a_i),
+    .lvt_b_i         (lvt_b_i)
   );
 
   // The units' own valid bits equal the shared tag lines' (same depth from

@@ -65,6 +65,10 @@
 //                lines' early_*) and registered (the clears decoded in two
 //                halves first, the set after), and change the flags at
 //                the same edge as with 0.
+//   CTRL         1: busy flags and LVT (the whole bank); 0: data only, the
+//                LVT's choice from lvt_*_i (lanes 1 .., see "Lanes" below)
+//   HOST_ALL     1: the host's write goes into all four ports' RAMs and
+//                not into the LVT (banks that share an LVT); 0: port 2's
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set
@@ -84,12 +88,35 @@
 //     ahead (fp3_wb_tag next2_*; read with READ_STAGES = 4).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
+//   lvt_a_o/lvt_b_o: the RAM each read takes unless bypassed, one-hot
+//     {port 3, 2, 1, 0}: the LVT entry of the read's index, in the cycle the
+//     read stages use it (READ_STAGES = 1: cycle t + 1, = 4: cycle t + 2).
+//   lvt_a_i/lvt_b_i: the same, from a CTRL = 1 bank (CTRL = 0 only).
+//
+// Lanes (fp3_lane): every lane's bank sees the same indices in the same
+// cycles, so its busy flags and LVT equal every other lane's; only the
+// data differ.  CTRL = 1 builds the whole bank (lane 0); CTRL = 0 a bank of
+// data only (lanes 1 ..): the RAMs and the bypass, without busy flags
+// (busy_o all zero, idle_o 1) and without LVT, whose choice it takes from
+// lane 0 (lvt_*_i).  Its read data equal those of a CTRL = 1 bank with the
+// same writes, provided the LVT changes alike in every lane: the host
+// writes one lane at a time, so with lanes (HOST_ALL = 1) its write goes
+// into the RAMs of all four ports of the lane it selects (ports 0, 1 and 3
+// are idle while the machine is stopped, as port 2 is) and leaves the LVT
+// alone, which then names a RAM holding the host's word whatever it says.
+// With HOST_ALL = 0 (one lane) the host writes port 2's RAMs only and its
+// LVT entry names port 2.  Synthesis would remove or merge the repeated flags and
+// tables anyway; a Verilated model does not (every register is kept and
+// evaluated each cycle: 256 flags, LVT entries and their decoders per lane
+// of the 8-context build), so CTRL = 0 is what keeps many-lane models fast.
 `default_nettype none
 module fp3_regfile #(
   parameter integer ENTRIES     = 32,
   parameter integer XW          = 5,
   parameter integer READ_STAGES = 1,
-  parameter integer FLAGS_AHEAD = 0
+  parameter integer FLAGS_AHEAD = 0,
+  parameter integer CTRL        = 1,
+  parameter integer HOST_ALL    = 0
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -132,10 +159,12 @@ module fp3_regfile #(
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
-  output wire               idle_o
+  output wire               idle_o,
+  output wire [3:0]         lvt_a_o,
+  output wire [3:0]         lvt_b_o,
+  input  wire [3:0]         lvt_a_i,
+  input  wire [3:0]         lvt_b_i
 );
-  reg [ENTRIES-1:0] busy_q;
-  reg [1:0]         lvt_q [0:ENTRIES-1];  // write port that wrote last
 
   // Port 2 carries the move path, or the host's write while stopped.  The
   // host's write is registered first (it lands a cycle later; a read in
@@ -152,6 +181,19 @@ module fp3_regfile #(
   wire          w2_valid = wb2_valid_i || hwe_q;
   wire [XW-1:0] w2_idx   = wb2_valid_i ? wb2_idx_i  : hidx_q;
   wire [31:0]   w2_data  = wb2_valid_i ? wb2_data_i : hdata_q;
+  // ... and with HOST_ALL, ports 0 and 1 carry it too (their RAMs only;
+  // the bypass takes the host's word from port 2).
+  wire          hwe_all  = HOST_ALL != 0 && hwe_q;
+  wire          w0_valid = wb0_valid_i || hwe_all;
+  wire [XW-1:0] w0_idx   = wb0_valid_i || !hwe_all ? wb0_idx_i  : hidx_q;
+  wire [31:0]   w0_data  = wb0_valid_i || !hwe_all ? wb0_data_i : hdata_q;
+  wire          w1_valid = wb1_valid_i || hwe_all;
+  wire [XW-1:0] w1_idx   = wb1_valid_i || !hwe_all ? wb1_idx_i  : hidx_q;
+  wire [31:0]   w1_data  = wb1_valid_i || !hwe_all ? wb1_data_i : hdata_q;
+  wire          w3_valid = wb3_valid_i || hwe_all;
+  wire [XW-1:0] w3_idx   = wb3_valid_i || !hwe_all ? wb3_idx_i  : hidx_q;
+  wire [31:0]   w3_data  = wb3_valid_i || !hwe_all ? wb3_data_i : hdata_q;
+  wire          hwe_lvt  = HOST_ALL == 0 && hwe_q;   // the host's write in the LVT
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
@@ -159,16 +201,16 @@ module fp3_regfile #(
   localparam integer RAM_READ = (READ_STAGES == 4) ? 2 : 1;
   wire [31:0] q00, q01, q10, q11, q20, q21, q30, q31;
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram00 (
-    .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
+    .clk_i(clk_i), .we_i(w0_valid), .waddr_i(w0_idx), .wdata_i(w0_data),
     .raddr_i(a_idx), .rdata_o(q00));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram01 (
-    .clk_i(clk_i), .we_i(wb0_valid_i), .waddr_i(wb0_idx_i), .wdata_i(wb0_data_i),
+    .clk_i(clk_i), .we_i(w0_valid), .waddr_i(w0_idx), .wdata_i(w0_data),
     .raddr_i(rb_i), .rdata_o(q01));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram10 (
-    .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
+    .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
     .raddr_i(a_idx), .rdata_o(q10));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram11 (
-    .clk_i(clk_i), .we_i(wb1_valid_i), .waddr_i(wb1_idx_i), .wdata_i(wb1_data_i),
+    .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
     .raddr_i(rb_i), .rdata_o(q11));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram20 (
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
@@ -177,10 +219,10 @@ module fp3_regfile #(
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram30 (
-    .clk_i(clk_i), .we_i(wb3_valid_i), .waddr_i(wb3_idx_i), .wdata_i(wb3_data_i),
+    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
     .raddr_i(a_idx), .rdata_o(q30));
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram31 (
-    .clk_i(clk_i), .we_i(wb3_valid_i), .waddr_i(wb3_idx_i), .wdata_i(wb3_data_i),
+    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
     .raddr_i(rb_i), .rdata_o(q31));
 
   // The write-back ports' valid and index of the next cycle (READ_STAGES
@@ -252,19 +294,25 @@ module fp3_regfile #(
    (wv_q[1] && wi1_q == (x)) ? {1'b1, wd1_q} : \
    (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : \
    (wv_q[3] && wi3_q == (x)) ? {1'b1, wd3_q} : {33{1'b0}})
-      wire [1:0]  a_lvt = lvt_q[a_idx_q];   // one LVT read per port
-      wire [1:0]  b_lvt = lvt_q[b_idx_q];
+      wire [3:0]  a_lvt, b_lvt;             // one LVT read per port, one-hot
+      if (CTRL != 0) begin : g_lvt_own
+        assign a_lvt = lvt1h(lvt_flat[2*a_idx_q +: 2]);
+        assign b_lvt = lvt1h(lvt_flat[2*b_idx_q +: 2]);
+        wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
+      end else begin : g_lvt_lane0
+        assign a_lvt = lvt_a_i;
+        assign b_lvt = lvt_b_i;
+      end
       wire [32:0] a_byp = `FP3_BYPASS(a_idx_q);
       wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
 `undef FP3_BYPASS
-      wire unused_flat = &{1'b0, lvt_flat};     // read whole, as lvt_q
       wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2, nx_i3};   // no stage looks ahead
-      assign ra_data_o = a_byp[32] ? a_byp[31:0] :
-                         (a_lvt == 2'd0) ? q00 : (a_lvt == 2'd1) ? q10 :
-                         (a_lvt == 2'd2) ? q20 : q30;
-      assign rb_data_o = b_byp[32] ? b_byp[31:0] :
-                         (b_lvt == 2'd0) ? q01 : (b_lvt == 2'd1) ? q11 :
-                         (b_lvt == 2'd2) ? q21 : q31;
+      assign ra_data_o = a_byp[32] ? a_byp[31:0] : a_lvt[0] ? q00 : a_lvt[1] ? q10 :
+                         a_lvt[2] ? q20 : q30;
+      assign rb_data_o = b_byp[32] ? b_byp[31:0] : b_lvt[0] ? q01 : b_lvt[1] ? q11 :
+                         b_lvt[2] ? q21 : q31;
+      assign lvt_a_o   = a_lvt;
+      assign lvt_b_o   = b_lvt;
     end else if (READ_STAGES == 4) begin : g_read4
       // Cycle t: the read indices compared with the writes known then,
       // registered (*_hits_q): those of cycle t (the ports' inputs, the
@@ -333,7 +381,11 @@ module fp3_regfile #(
       // high bits pick the group (a multiplexer per bit, nothing behind it
       // but the gate with a_ram_q).
       wire [3:0] a_lvt2, b_lvt2;
-      if (XW > 4) begin : g_lvt_split
+      if (CTRL == 0) begin : g_lvt_lane0
+        assign a_lvt2 = lvt_a_i;
+        assign b_lvt2 = lvt_b_i;
+        wire unused_lvt = &{1'b0, a_idx_qq, b_idx_qq};
+      end else if (XW > 4) begin : g_lvt_split
         localparam integer NG = ENTRIES / 16;
         // The low index bits for this read from copies of a_idx_q[3:0]
         // and b_idx_q[3:0] of their own (kept apart as in fp3_ram): they
@@ -364,10 +416,14 @@ module fp3_regfile #(
       end else begin : g_lvt_whole
         // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
         // read of such a register takes the bypass word.
-        assign a_lvt2 = lvt1h(lvt_q[a_idx_qq]);
-        assign b_lvt2 = lvt1h(lvt_q[b_idx_qq]);
-        wire unused_flat = &{1'b0, lvt_flat};   // read whole, as lvt_q
+        assign a_lvt2 = lvt1h(lvt_flat[2*a_idx_qq +: 2]);
+        assign b_lvt2 = lvt1h(lvt_flat[2*b_idx_qq +: 2]);
       end
+      if (CTRL != 0) begin : g_lvt_in
+        wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
+      end
+      assign lvt_a_o = a_lvt2;
+      assign lvt_b_o = b_lvt2;
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
       // bypass word (a write of cycle t, t + 1 or t + 2, chosen by the
       // hits of cycle t + 1), and a one-hot choice of the word for cycle
@@ -421,20 +477,6 @@ module fp3_regfile #(
     end
   endgenerate
 
-  assign busy_o = busy_q;
-  // idle_o, a cycle late: the flags ORed in groups of 16 and registered
-  // (any_q), then joined.  (No flag set, one NOR of every flag from across
-  // the die in front of the scheduler's register, was a critical path.)
-  localparam integer GN = (ENTRIES + 15) / 16;
-  reg [GN-1:0] any_d, any_q;
-  integer ai;
-  always @(*) begin
-    any_d = {GN{1'b0}};
-    for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_q[ai];
-  end
-  always @(posedge clk_i) any_q <= rst_i ? {GN{1'b0}} : any_d;
-  assign idle_o = !(|any_q);
-
   // ---- LVT and busy flags, one register at a time --------------------------
   // This cycle's writes per port, one-hot over the registers.  With
   // READ_STAGES = 4 they are decoded a cycle ahead (from nx_*) and
@@ -471,7 +513,9 @@ module fp3_regfile #(
   endfunction
   wire [ENTRIES-1:0] h0, h1, h2, h3;
   generate
-    if (READ_STAGES == 4) begin : g_hit_ahead
+    if (CTRL == 0) begin : g_hit_none           // no LVT (lanes 1 ..)
+      assign {h0, h1, h2, h3} = {4*ENTRIES{1'b0}};
+    end else if (READ_STAGES == 4) begin : g_hit_ahead
       // Decoded in two halves from the indices nx_* and hidx_q register:
       // the index's high bits (a write-back's with its valid bit), one-hot
       // over 2**(XW - XW/2), and its low bits, one-hot over 2**(XW/2)
@@ -501,7 +545,7 @@ module fp3_regfile #(
           h0_q[e] <= !rst_i && hh0_q[e >> LW] && hl0_q[e % (1 << LW)];
           h1_q[e] <= !rst_i && hh1_q[e >> LW] && hl1_q[e % (1 << LW)];
           h2_q[e] <= !rst_i && (hh2_q[e >> LW] && hl2_q[e % (1 << LW)] ||
-                                hwe_q && hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
+                                hwe_lvt && hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
           h3_q[e] <= !rst_i && hh3_q[e >> LW] && hl3_q[e % (1 << LW)];
         end
       end
@@ -509,7 +553,7 @@ module fp3_regfile #(
     end else begin : g_hit_now
       assign h0 = dec(wb0_valid_i, wb0_idx_i);
       assign h1 = dec(wb1_valid_i, wb1_idx_i);
-      assign h2 = dec(wb2_valid_i, wb2_idx_i) | dec(hwe_q, hidx_q);
+      assign h2 = dec(wb2_valid_i, wb2_idx_i) | dec(hwe_lvt, hidx_q);
       assign h3 = dec(wb3_valid_i, wb3_idx_i);
     end
   endgenerate
@@ -517,7 +561,9 @@ module fp3_regfile #(
   // The busy flags' set and clear, one-hot over the registers.
   wire [ENTRIES-1:0] fset, fclr;
   generate
-    if (FLAGS_AHEAD != 0) begin : g_flags_ahead
+    if (CTRL == 0) begin : g_flags_none         // no busy flags (lanes 1 ..)
+      assign {fset, fclr} = {2*ENTRIES{1'b0}};
+    end else if (FLAGS_AHEAD != 0) begin : g_flags_ahead
       // The clears from the announcements of the next cycle, decoded in
       // two halves (as the write hits above) and registered.  The set
       // from the instruction picked, registered as it is (a copy of the
@@ -569,24 +615,50 @@ module fp3_regfile #(
   // so the priority below never matters for a legal sequence.
   genvar r;
   generate
-    for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
-      wire hit0 = h0[r];
-      wire hit1 = h1[r];
-      wire hit2 = h2[r];
-      wire hit3 = h3[r];
-      always @(posedge clk_i) begin
-        if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
-        else if (hit0) lvt_q[r] <= 2'd0;
-        else if (hit1) lvt_q[r] <= 2'd1;
-        else if (hit2) lvt_q[r] <= 2'd2;
-        else if (hit3) lvt_q[r] <= 2'd3;
+    if (CTRL != 0) begin : g_ctrl
+      reg [ENTRIES-1:0] busy_q;
+      reg [1:0]         lvt_q [0:ENTRIES-1];  // write port that wrote last
+      for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
+        wire hit0 = h0[r];
+        wire hit1 = h1[r];
+        wire hit2 = h2[r];
+        wire hit3 = h3[r];
+        always @(posedge clk_i) begin
+          if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
+          else if (hit0) lvt_q[r] <= 2'd0;
+          else if (hit1) lvt_q[r] <= 2'd1;
+          else if (hit2) lvt_q[r] <= 2'd2;
+          else if (hit3) lvt_q[r] <= 2'd3;
+        end
+        assign lvt_flat[2*r +: 2] = lvt_q[r];
+        always @(posedge clk_i) begin
+          if (rst_i)                               busy_q[r] <= 1'b0;
+          else if (fset[r])                        busy_q[r] <= 1'b1;
+          else if (fclr[r])                        busy_q[r] <= 1'b0;
+        end
       end
-      assign lvt_flat[2*r +: 2] = lvt_q[r];
-      always @(posedge clk_i) begin
-        if (rst_i)                               busy_q[r] <= 1'b0;
-        else if (fset[r])                        busy_q[r] <= 1'b1;
-        else if (fclr[r])                        busy_q[r] <= 1'b0;
+      assign busy_o = busy_q;
+      // idle_o, a cycle late: the flags ORed in groups of 16 and registered
+      // (any_q), then joined.  (No flag set, one NOR of every flag from
+      // across the die in front of the scheduler's register, was a
+      // critical path.)
+      localparam integer GN = (ENTRIES + 15) / 16;
+      reg [GN-1:0] any_d, any_q;
+      integer ai;
+      always @(*) begin
+        any_d = {GN{1'b0}};
+        for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_q[ai];
       end
+      always @(posedge clk_i) any_q <= rst_i ? {GN{1'b0}} : any_d;
+      assign idle_o = !(|any_q);
+    end else begin : g_data_only
+      // Lanes 1 ..: lane 0's flags are the scoreboard, its LVT chooses.
+      assign busy_o   = {ENTRIES{1'b0}};
+      assign idle_o   = 1'b1;
+      assign lvt_flat = {2*ENTRIES{1'b0}};
+      wire unused_ctrl = &{1'b0, lvt_flat, h0, h1, h2, h3, fset, fclr, hwe_lvt, set_i,
+                           set_idx_i, clr0_valid_i, clr0_idx_i, clr1_valid_i, clr1_idx_i,
+                           clr2_valid_i, clr2_idx_i, clr3_valid_i, clr3_idx_i};
     end
   endgenerate
 endmodule

@@ -392,13 +392,15 @@ module fp3_top #(
   // With the pick stages the busy flags take their set and clear a cycle
   // ahead (fp3_regfile FLAGS_AHEAD): the instruction picked and the tag
   // lines' early announcements.  Every lane sees the same indices; lane
-  // 0's busy flags are the scoreboard (fp3_lane).  The host writes the
-  // lane LANE names.
+  // 0's busy flags are the scoreboard, and its live value table chooses
+  // the RAM of every lane's reads (fp3_lane; lanes 1 .. have neither).
+  // The host writes the lane LANE names.
   wire [32*NL-1:0] ra_data_l, rb_data_l;            // lane l in [32l +: 32]
   wire [32*NL-1:0] add_data_l, mul_data_l, mov_data_l, div_data_l;
   wire [5*NL-1:0]  add_flags_l, mul_flags_l, mov_flags_l, div_flags_l;
   wire [(1<<XW)*NL-1:0] busy_l;
   wire [NL-1:0]    idle_l;
+  wire [4*NL-1:0]  lvt_a_l, lvt_b_l;                 // LVT choices (lane 0's used)
   // The read stage's operation, for every lane (below)
   wire          rd_valid, rd_sub, rd_imm, rd_beq;
   wire [2:0]    rd_sop;
@@ -409,6 +411,7 @@ module fp3_top #(
   generate
     for (ln = 0; ln < NL; ln = ln + 1) begin : g_lane
       fp3_lane #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE),
+                 .CTRL(ln == 0 ? 1 : 0), .HOST_ALL(NL > 1 ? 1 : 0),
                  .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
                  .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND),
                  .FTZ(FTZ), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL),
@@ -451,6 +454,10 @@ module fp3_top #(
         .host_idx_i      ({ctx_q, host_addr_i[IW-1:0]}),
         .host_wdata_i    (host_wdata_i),
         .idle_o          (idle_l[ln]),
+        .lvt_a_o         (lvt_a_l[4*ln +: 4]),
+        .lvt_b_o         (lvt_b_l[4*ln +: 4]),
+        .lvt_a_i         (lvt_a_l[3:0]),
+        .lvt_b_i         (lvt_b_l[3:0]),
         .valid_i         (rd_valid),
         .unit_i          (rd_unit),
         .sub_i           (rd_sub),
@@ -470,8 +477,9 @@ module fp3_top #(
   endgenerate
   assign busy = busy_l[(1<<XW)-1:0];
   assign idle = idle_l[0];
-  // (lanes 1 .. NL-1 repeat lane 0's flags: synthesis removes them)
-  wire unused_lane_flags = &{1'b0, busy_l, idle_l};
+  // (lanes 1 .. NL-1 have no flags: constant; their LVT outputs repeat
+  // lane 0's choice)
+  wire unused_lane_flags = &{1'b0, busy_l, idle_l, lvt_a_l, lvt_b_l};
 
   // ---- operand-read stages ------------------------------------------------
   // The register file answers a read of the issue cycle t in cycle t + READ;

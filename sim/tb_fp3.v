@@ -211,7 +211,7 @@ module tb_fp3 #(
   wire [63:0]    dbg_cycles    = dut.u_sched.cycles_o;
   wire [63:0]    dbg_issued    = dut.u_sched.issued_o;
   wire [63:0]    dbg_stalls    = dut.u_sched.stalls_o;
-  wire [NUM_REGS-1:0] dbg_busy = dut.g_lane[0].u_lane.u_regs.busy_q[NUM_REGS-1:0];  // context 0
+  wire [NUM_REGS-1:0] dbg_busy = dut.busy[NUM_REGS-1:0];  // context 0
   wire [7:0]     dbg_lanes     = NUM_LANES[7:0];         // lanes per context
   wire [31:0]    dbg_add_data  = tr_add_data[31:0];      // lane 0's results
   wire [31:0]    dbg_mul_data  = tr_mul_data[31:0];
@@ -280,12 +280,14 @@ module tb_fp3 #(
       // The RAM of the write-back port that wrote it last (the LVT).
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg = 32'd0;
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_q[x] == 2'd0)
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd0)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_q[x] == 2'd1)
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
+      else
+        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram30.g_any.mem[x];
     end
   endfunction
   function [31:0] dbg_reg_last;  // ... of the last lane
@@ -293,14 +295,17 @@ module tb_fp3 #(
     input [31:0]  r;
     integer x;
     begin
+      // Its RAMs; the LVT is lane 0's, which chooses for every lane.
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg_last = 32'd0;
-      else if (dut.g_lane[NL-1].u_lane.u_regs.lvt_q[x] == 2'd0)
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd0)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if (dut.g_lane[NL-1].u_lane.u_regs.lvt_q[x] == 2'd1)
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];
+      else
+        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram30.g_any.mem[x];
     end
   endfunction
 
