@@ -49,7 +49,7 @@ VERILATED_OBJS := $(BUILD)/verilated/verilated.o $(BUILD)/verilated/verilated_th
 VERILATOR_LDLIBS := -pthread -latomic
 
 RTL_SRC    := $(wildcard rtl/*.v)
-RTL_INC    := rtl/fp3_isa.vh rtl/fp3_sched.vh
+RTL_INC    := rtl/fp3_isa.vh rtl/fp3_sched.vh rtl/fp_recur.vh
 
 TEST_BINS    :=
 TEST_SCRIPTS :=

@@ -15,6 +15,7 @@ FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v rtl/fp_sign.v \
            rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
            rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v
+FPU_RTL_INC := rtl/fp_recur.vh
 FPU_DIR := $(BUILD)/fpu
 FPU_INC := -Isim
 
@@ -58,7 +59,7 @@ FPU_RUNTIME    := $(FPU_DIR)/libfpu_verilated.a
 
 # Verilated model + shim object of one configuration.
 define FPU_MODEL_RULES
-$(call fpu_model_lib,$(1)): $(FPU_RTL) sim/fpu_top.v mk/fpu.mk | $(SETUP_STAMP)
+$(call fpu_model_lib,$(1)): $(FPU_RTL) $(FPU_RTL_INC) sim/fpu_top.v mk/fpu.mk | $(SETUP_STAMP)
 	@mkdir -p $(FPU_DIR)
 	$(VERILATOR) --cc --build -j 2 $(VFLAGS) --top-module fpu_top \
 	  -GROUND=$(word 1,$(FPU_CFG_$(1))) -GFTZ=$(word 2,$(FPU_CFG_$(1))) \

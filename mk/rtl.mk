@@ -18,15 +18,16 @@ RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP
 # MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [NUM_LANES [HAS_DIV
 # HAS_SQRT HAS_SIGN]]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
-# (shortest add; FMAX_PIPE, the build for clock rate, with the shortest
-# latencies it takes, whose write-back tag lines are too short for the full
-# announcement lead: fp3_wb_tag).
+# (shortest add, and no div/sqrt unit: HAS_DIV = HAS_SQRT = 0, the build a
+# program with div or sqrt is refused on; FMAX_PIPE, the build for clock
+# rate, with the shortest latencies it takes, whose write-back tag lines
+# are too short for the full announcement lead: fp3_wb_tag).
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
-RTL_CFG_nc1     := 0 0 1 1 2
+RTL_CFG_nc1     := 0 0 1 1 2 32 1 1 1 0 1 0 0
 RTL_CFG_nc3     := 0 0 3 4 3 32 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
@@ -123,9 +124,16 @@ isa: $(BUILD)/gen_isa
 	python3 scripts/isa-tables.py $(BUILD)/gen_isa docs/isa.md
 
 # ---- lint ------------------------------------------------------------------
+# The processor in the default build (every unit, the div/sqrt unit
+# included), with lanes, without the div/sqrt unit and in the build for
+# clock rate; the wrapper's variants: lint-axil (mk/axil.mk).
+LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
+               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
 lint: $(SETUP_STAMP)
-	$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $(RTL_SRC)
+	@set -e; for p in $(LINT_PARAMS); do \
+	  echo "$(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $$p"; \
+	  $(VERILATOR) --lint-only -Wall -Irtl --top-module $(RTL_TOP) $$p $(RTL_SRC); done
 	@echo "lint: verilator -Wall clean"
 
 # ---- synthesis -------------------------------------------------------------

@@ -1,7 +1,15 @@
 // fp3_arith -- the arithmetic unit (paper §4): one pipelined FP add/sub
-// core, one pipelined FP mul core and a move path of MOV_LATENCY cycles
-// (copies, immediates and the sign group abs, neg, min, max: fp_sign),
+// core, one pipelined FP mul core, a move path of MOV_LATENCY cycles
+// (copies, immediates and the sign group abs, neg, min, max: fp_sign) and
+// a div/sqrt unit of DIV_LATENCY cycles (fp_div and fp_sqrt side by side),
 // each with its own write-back port.
+//
+// The div/sqrt unit: fp_div and fp_sqrt have the same latency and at most
+// one operation enters either per cycle (single issue), so their results
+// never leave in the same cycle and share one write-back port (a
+// multiplexer on the valid bit of fp_sqrt's result) and one tag line.
+// Both are fully pipelined (initiation interval 1): no structural hazard,
+// the scheduler issues a div or sqrt in any cycle.
 //
 // One operation may enter per cycle (single issue).  The destination
 // register indices travel beside the data path in fp3_top's tag lines
@@ -15,24 +23,28 @@
 //                producer, thanks to the register-file bypass)
 //   MUL_LATENCY  the same for fp_mul
 //   MOV_LATENCY  the same for the move path, >= 1
+//   DIV_LATENCY  the same for fp_div and fp_sqrt (their LATENCY), >= 1
 //   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
 //   HAS_ADD, HAS_MUL  0: that core is not built (its port never writes);
 //   HAS_SUB      0: the adder's subtract input is tied off (the scheduler
 //                rejects the instructions these leave without a unit)
+//   HAS_DIV, HAS_SQRT  0: fp_div / fp_sqrt not built (div / sqrt illegal;
+//                with neither the div/sqrt port never writes)
 //   HAS_SIGN     0: no fp_sign on the move path (abs, neg, min, max are
 //                illegal); 1 costs a 31-bit comparator, NaN tests and a
 //                32-bit 2:1 multiplexer after the path's registers (fp_sign)
 // Ports
 //   sop_i: for the move path, {sign group, fp_sign op_i}: 0xx a copy of
 //   a_i, 1xx fp_sign's abs (00), neg (01), min (10), max (11) of a_i, b_i.
-//   valid_i, unit_i (UNIT_ADD/MUL/MOV of rtl/fp3_isa.vh), sub_i, a_i, b_i:
-//   an issued operation with its operands from the register file's read
-//   stage (for the move path a_i is the value to write: the source
-//   register or the immediate).
-//   {add,mul,mov}_{valid,data}_o: results, ADD_LATENCY, MUL_LATENCY and
-//   MOV_LATENCY cycles after valid_i; add/mul/mov flags_o are the IEEE
-//   exception flags of the result (the move path's: invalid for a min or
-//   max of a signalling NaN, else 0).
+//   valid_i, unit_i (UNIT_ADD/MUL/MOV/DIV of rtl/fp3_isa.vh), sub_i, a_i,
+//   b_i: an issued operation with its operands from the register file's
+//   read stage (for the move path a_i is the value to write: the source
+//   register or the immediate; sub_i: a sub on the add/sub core, a sqrt
+//   of a_i on the div/sqrt unit, else a_i / b_i).
+//   {add,mul,mov,div}_{valid,data}_o: results, ADD_LATENCY, MUL_LATENCY,
+//   MOV_LATENCY and DIV_LATENCY cycles after valid_i; *_flags_o are the
+//   IEEE exception flags of the result (the move path's: invalid for a min
+//   or max of a signalling NaN, else 0).
 `default_nettype none
 module fp3_arith #(
   parameter integer ADD_LATENCY = 4,
@@ -40,15 +52,18 @@ module fp3_arith #(
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
   parameter integer MOV_LATENCY = 1,
+  parameter integer DIV_LATENCY = 8,
   parameter integer HAS_ADD     = 1,
   parameter integer HAS_SUB     = 1,
   parameter integer HAS_MUL     = 1,
+  parameter integer HAS_DIV     = 1,
+  parameter integer HAS_SQRT    = 1,
   parameter integer HAS_SIGN    = 1
 ) (
   input  wire          clk_i,
   input  wire          rst_i,
   input  wire          valid_i,
-  input  wire [1:0]    unit_i,
+  input  wire [2:0]    unit_i,
   input  wire          sub_i,
   input  wire [2:0]    sop_i,
   input  wire [31:0]   a_i,
@@ -61,7 +76,10 @@ module fp3_arith #(
   output wire [4:0]    mul_flags_o,
   output wire          mov_valid_o,
   output wire [31:0]   mov_data_o,
-  output wire [4:0]    mov_flags_o
+  output wire [4:0]    mov_flags_o,
+  output wire          div_valid_o,
+  output wire [31:0]   div_data_o,
+  output wire [4:0]    div_flags_o
 );
 `include "fp3_isa.vh"
 
@@ -109,8 +127,50 @@ module fp3_arith #(
     end
   endgenerate
 
-  // sub_i is read only when the adder subtracts.
-  wire unused_sub = sub_i;
+  // ---- div/sqrt unit: one write-back port ---------------------------------
+  wire        dq_valid, sq_valid;
+  wire [31:0] dq_data, sq_data;
+  wire [4:0]  dq_flags, sq_flags;
+  generate
+    if (HAS_DIV != 0) begin : g_div
+      wire div_go = valid_i && unit_i == UNIT_DIV && !sub_i;
+      fp_div #(.LATENCY(DIV_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_div (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (div_go),
+        .a_i     (a_i),
+        .b_i     (b_i),
+        .valid_o (dq_valid),
+        .y_o     (dq_data),
+        .flags_o (dq_flags)
+      );
+    end else begin : g_no_div
+      assign dq_valid = 1'b0;
+      assign dq_data  = 32'd0;
+      assign dq_flags = 5'd0;
+    end
+    if (HAS_SQRT != 0) begin : g_sqrt
+      wire sqrt_go = valid_i && unit_i == UNIT_DIV && sub_i;
+      fp_sqrt #(.LATENCY(DIV_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_sqrt (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (sqrt_go),
+        .a_i     (a_i),
+        .valid_o (sq_valid),
+        .y_o     (sq_data),
+        .flags_o (sq_flags)
+      );
+    end else begin : g_no_sqrt
+      assign sq_valid = 1'b0;
+      assign sq_data  = 32'd0;
+      assign sq_flags = 5'd0;
+    end
+  endgenerate
+  // At most one of them has a result in a cycle (same latency, one issue
+  // per cycle).
+  assign div_valid_o = dq_valid || sq_valid;
+  assign div_data_o  = sq_valid ? sq_data : dq_data;
+  assign div_flags_o = sq_valid ? sq_flags : dq_flags;
 
   // ---- move path: MOV_LATENCY register stages ------------------------------
   // A copy goes through fp_pipe, a sign-group operation through fp_sign,

@@ -68,8 +68,8 @@ module fp3_axil #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
-  parameter integer HAS_DIV      = 0,
-  parameter integer HAS_SQRT     = 0,
+  parameter integer HAS_DIV      = 1,
+  parameter integer HAS_SQRT     = 1,
   parameter integer HAS_SIGN     = 1,
   parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0
@@ -319,11 +319,11 @@ module fp3_axil #(
   end
 
   // ---- the processor -----------------------------------------------------------
-  wire       tr_issue, tr_endi, tr_add_valid, tr_mul_valid, tr_mov_valid;
-  wire [1:0] tr_issue_unit;
-  wire [5:0] tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx;
-  wire [7:0] tr_add_reg, tr_mul_reg, tr_mov_reg;
-  wire [32*NUM_LANES-1:0] tr_add_data, tr_mul_data, tr_mov_data;
+  wire       tr_issue, tr_endi, tr_add_valid, tr_mul_valid, tr_mov_valid, tr_div_valid;
+  wire [2:0] tr_issue_unit;
+  wire [5:0] tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx, tr_div_ctx;
+  wire [7:0] tr_add_reg, tr_mul_reg, tr_mov_reg, tr_div_reg;
+  wire [32*NUM_LANES-1:0] tr_add_data, tr_mul_data, tr_mov_data, tr_div_data;
 
   fp3_top #(
     .NUM_CONTEXTS (NUM_CONTEXTS),
@@ -369,7 +369,11 @@ module fp3_axil #(
     .tr_mov_valid_o  (tr_mov_valid),
     .tr_mov_ctx_o    (tr_mov_ctx),
     .tr_mov_reg_o    (tr_mov_reg),
-    .tr_mov_data_o   (tr_mov_data)
+    .tr_mov_data_o   (tr_mov_data),
+    .tr_div_valid_o  (tr_div_valid),
+    .tr_div_ctx_o    (tr_div_ctx),
+    .tr_div_reg_o    (tr_div_reg),
+    .tr_div_data_o   (tr_div_data)
   );
 
   // ---- outputs -------------------------------------------------------------------
@@ -391,7 +395,7 @@ module fp3_axil #(
                   tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx,
                   tr_add_valid, tr_add_reg, tr_add_data, tr_mul_valid,
                   tr_mul_reg, tr_mul_data, tr_mov_valid, tr_mov_reg,
-                  tr_mov_data};
+                  tr_mov_data, tr_div_valid, tr_div_ctx, tr_div_reg, tr_div_data};
 
 `ifdef FORMAL
   // The AXI4-Lite slave property set (formal/fp3_axil_check.v, from the

@@ -59,8 +59,7 @@ function [7:0] isa_decode;
     endcase
   end
 endfunction
-localparam [1:0] UNIT_NONE = 2'd0, UNIT_ADD = 2'd1, UNIT_MUL = 2'd2, UNIT_MOV = 2'd3;
-localparam [2:0] UNIT_DIV = 3'd4;
+localparam [2:0] UNIT_NONE = 3'd0, UNIT_ADD = 3'd1, UNIT_MUL = 3'd2, UNIT_MOV = 3'd3, UNIT_DIV = 3'd4;
 
 // Build configuration defaults
 localparam integer DEFAULT_NUM_CONTEXTS = 8;
@@ -72,8 +71,8 @@ localparam integer DEFAULT_MUL_LATENCY = 3;
 localparam integer DEFAULT_HAS_ADD = 1;
 localparam integer DEFAULT_HAS_SUB = 1;
 localparam integer DEFAULT_HAS_MUL = 1;
-localparam integer DEFAULT_HAS_DIV = 0;
-localparam integer DEFAULT_HAS_SQRT = 0;
+localparam integer DEFAULT_HAS_DIV = 1;
+localparam integer DEFAULT_HAS_SQRT = 1;
 localparam integer DEFAULT_HAS_SIGN = 1;
 localparam integer DEFAULT_DIV_LATENCY = 8;
 localparam integer MAX_CONTEXTS = 64, MAX_LANES = 64;

@@ -1,6 +1,6 @@
 // fp3_lane -- one lane of the FP3 processor: a register bank
 // (fp3_regfile: RAMs, live value table, bypass) and an arithmetic unit
-// (fp3_arith: add/sub core, mul core, move path) of its own.
+// (fp3_arith: add/sub core, mul core, move path, div/sqrt unit) of its own.
 //
 // fp3_top instantiates NUM_LANES of these side by side.  Every lane
 // receives the same operation stream: the same register indices, unit,
@@ -14,9 +14,11 @@
 // read port A.
 //
 // Cost per lane: one fp_add, one fp_mul (4 MULT18X18D on ECP5 for a
-// binary32 significand product), the move path's registers and six
-// register RAMs of 2**XW x 32 bits (block RAM: fp3_ram), plus the read
-// stages' bypass.  The register file's busy flags and live value table
+// binary32 significand product), the move path's registers, fp_div and
+// fp_sqrt when built (HAS_DIV, HAS_SQRT), and eight register RAMs of
+// 2**XW x 32 bits (block RAM: fp3_ram; the div/sqrt port's two are never
+// written without the unit and synthesize away), plus the read stages'
+// bypass.  The register file's busy flags and live value table
 // would be identical in every lane (they see the same indices), so only
 // lane 0 has them (CTRL = 1): fp3_top uses its busy flags (busy_o,
 // idle_o) as the scoreboard, and lanes 1 .. (CTRL = 0) take its LVT
@@ -26,13 +28,14 @@
 // (fp3_regfile HOST_ALL).
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
-// FLAGS_AHEAD, CTRL, HOST_ALL) and fp3_arith (ADD_LATENCY, MUL_LATENCY, MOV_LATENCY,
-// ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_SIGN), passed through unchanged.
+// FLAGS_AHEAD, CTRL, HOST_ALL) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
+// MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
+// HAS_SQRT, HAS_SIGN), passed through unchanged.
 // Ports: fp3_regfile's (index ports shared by all lanes) and fp3_arith's
 // operation inputs; imm_i/imm_val_i choose the immediate as the first
 // operand (li), as the read stage gives it.  ra_data_o/rb_data_o are this
 // lane's operands READ_STAGES cycles after the issue (for beq and the
-// host's read); {add,mul,mov}_data_o and {add,mul}_flags_o are its results,
+// host's read); {add,mul,mov,div}_data_o and _flags_o are its results,
 // in the cycle the tag lines' write-back valid names.
 `default_nettype none
 module fp3_lane #(
@@ -45,11 +48,14 @@ module fp3_lane #(
   parameter integer ADD_LATENCY = 4,
   parameter integer MUL_LATENCY = 3,
   parameter integer MOV_LATENCY = 1,
+  parameter integer DIV_LATENCY = 8,
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
   parameter integer HAS_ADD     = 1,
   parameter integer HAS_SUB     = 1,
   parameter integer HAS_MUL     = 1,
+  parameter integer HAS_DIV     = 1,
+  parameter integer HAS_SQRT    = 1,
   parameter integer HAS_SIGN    = 1
 ) (
   input  wire               clk_i,
@@ -68,30 +74,36 @@ module fp3_lane #(
   input  wire [XW-1:0]      clr1_idx_i,
   input  wire               clr2_valid_i,
   input  wire [XW-1:0]      clr2_idx_i,
+  input  wire               clr3_valid_i,
+  input  wire [XW-1:0]      clr3_idx_i,
   input  wire               wb0_valid_i,
   input  wire [XW-1:0]      wb0_idx_i,
   input  wire               wb1_valid_i,
   input  wire [XW-1:0]      wb1_idx_i,
   input  wire               wb2_valid_i,
   input  wire [XW-1:0]      wb2_idx_i,
+  input  wire               wb3_valid_i,
+  input  wire [XW-1:0]      wb3_idx_i,
   input  wire               wb0_in2_valid_i,
   input  wire [XW-1:0]      wb0_in2_idx_i,
   input  wire               wb1_in2_valid_i,
   input  wire [XW-1:0]      wb1_in2_idx_i,
   input  wire               wb2_in2_valid_i,
   input  wire [XW-1:0]      wb2_in2_idx_i,
+  input  wire               wb3_in2_valid_i,
+  input  wire [XW-1:0]      wb3_in2_idx_i,
   input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
   output wire               idle_o,
-  output wire [2:0]         lvt_a_o,
-  output wire [2:0]         lvt_b_o,
-  input  wire [2:0]         lvt_a_i,
-  input  wire [2:0]         lvt_b_i,
+  output wire [3:0]         lvt_a_o,
+  output wire [3:0]         lvt_b_o,
+  input  wire [3:0]         lvt_a_i,
+  input  wire [3:0]         lvt_b_i,
   // arithmetic unit (see fp3_arith), operands from this lane's read stage
   input  wire               valid_i,
-  input  wire [1:0]         unit_i,
+  input  wire [2:0]         unit_i,
   input  wire               sub_i,
   input  wire [2:0]         sop_i,
   input  wire               imm_i,
@@ -101,10 +113,12 @@ module fp3_lane #(
   output wire [31:0]        mul_data_o,
   output wire [4:0]         mul_flags_o,
   output wire [31:0]        mov_data_o,
-  output wire [4:0]         mov_flags_o
+  output wire [4:0]         mov_flags_o,
+  output wire [31:0]        div_data_o,
+  output wire [4:0]         div_flags_o
 );
   wire [31:0] ra_data, rb_data;
-  wire [31:0] add_data, mul_data, mov_data;
+  wire [31:0] add_data, mul_data, mov_data, div_data;
 
   fp3_regfile #(.ENTRIES(ENTRIES), .XW(XW), .READ_STAGES(READ_STAGES),
                 .FLAGS_AHEAD(FLAGS_AHEAD), .CTRL(CTRL),
@@ -124,6 +138,8 @@ module fp3_lane #(
     .clr1_idx_i      (clr1_idx_i),
     .clr2_valid_i    (clr2_valid_i),
     .clr2_idx_i      (clr2_idx_i),
+    .clr3_valid_i    (clr3_valid_i),
+    .clr3_idx_i      (clr3_idx_i),
     .wb0_valid_i     (wb0_valid_i),
     .wb0_idx_i       (wb0_idx_i),
     .wb0_data_i      (add_data),
@@ -133,12 +149,17 @@ module fp3_lane #(
     .wb2_valid_i     (wb2_valid_i),
     .wb2_idx_i       (wb2_idx_i),
     .wb2_data_i      (mov_data),
+    .wb3_valid_i     (wb3_valid_i),
+    .wb3_idx_i       (wb3_idx_i),
+    .wb3_data_i      (div_data),
     .wb0_in2_valid_i (wb0_in2_valid_i),
     .wb0_in2_idx_i   (wb0_in2_idx_i),
     .wb1_in2_valid_i (wb1_in2_valid_i),
     .wb1_in2_idx_i   (wb1_in2_idx_i),
     .wb2_in2_valid_i (wb2_in2_valid_i),
     .wb2_in2_idx_i   (wb2_in2_idx_i),
+    .wb3_in2_valid_i (wb3_in2_valid_i),
+    .wb3_in2_idx_i   (wb3_in2_idx_i),
     .host_sel_i      (host_sel_i),
     .host_we_i       (host_we_i),
     .host_idx_i      (host_idx_i),
@@ -152,10 +173,11 @@ module fp3_lane #(
 
   // The units' own valid bits equal the shared tag lines' (same depth from
   // the same issue); fp3_top uses the tag lines'.
-  wire add_valid, mul_valid, mov_valid;
+  wire add_valid, mul_valid, mov_valid, div_valid;
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .MOV_LATENCY(MOV_LATENCY), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
-              .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN)) u_arith (
+              .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .HAS_ADD(HAS_ADD),
+              .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
+              .HAS_SIGN(HAS_SIGN)) u_arith (
     .clk_i       (clk_i),
     .rst_i       (rst_i),
     .valid_i     (valid_i),
@@ -172,14 +194,18 @@ module fp3_lane #(
     .mul_flags_o (mul_flags_o),
     .mov_valid_o (mov_valid),
     .mov_data_o  (mov_data),
-    .mov_flags_o (mov_flags_o)
+    .mov_flags_o (mov_flags_o),
+    .div_valid_o (div_valid),
+    .div_data_o  (div_data),
+    .div_flags_o (div_flags_o)
   );
-  wire unused_valid = add_valid ^ mul_valid ^ mov_valid;
+  wire unused_valid = add_valid ^ mul_valid ^ mov_valid ^ div_valid;
 
   assign ra_data_o  = ra_data;
   assign rb_data_o  = rb_data;
   assign add_data_o = add_data;
   assign mul_data_o = mul_data;
   assign mov_data_o = mov_data;
+  assign div_data_o = div_data;
 endmodule
 `default_nettype wire

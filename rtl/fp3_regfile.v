@@ -15,10 +15,13 @@
 // Storage: RAM with a registered read (one write port per RAM): FPGA block
 // RAM for the banks of many contexts, or RAM read over two cycles for
 // clock rate (READ_STAGES = 4; fp3_ram READ_STAGES 2: LUT RAM, or in ECP5
-// synthesis block RAM with its output register).  The three write-back
-// ports (add core, mul core, move path) each write a RAM of their own,
-// replicated once per read port, and a live value table (LVT, 2 bits per
-// register, in flip-flops) records which port wrote each register last
+// synthesis block RAM with its output register).  The four write-back
+// ports (add core, mul core, move path, div/sqrt unit) each write a RAM of
+// their own, replicated once per read port, and a live value table (LVT,
+// 2 bits per register, in flip-flops) records which port wrote each
+// register last.  A port that is never written (a build without its unit:
+// its valid input tied to 0) leaves RAMs that synthesis removes; the
+// compares of its index remain and cost a little logic
 // (LaForest & Steffan,
 // "Efficient Multi-Ported Memories for FPGAs", FPGA 2010).  A read
 // presented in cycle t (the issue cycle) returns its data in cycle
@@ -35,7 +38,7 @@
 // not count the operand as free).
 //
 //   READ_STAGES = 1  cycle t + 1: bypass of cycle t's writes, LVT select
-//                    of the three RAMs' data (one stage; the default)
+//                    of the four RAMs' data (one stage; the default)
 //   READ_STAGES = 4  for clock rate.  Cycle t: the RAMs register the read
 //                    address, and the index is compared with the writes
 //                    of cycle t and the write-backs of cycles t + 1 and
@@ -47,7 +50,7 @@
 //                    RAMs' words (from their registers) and the
 //                    bypass word registered, with a one-hot choice among
 //                    them and the write-backs of cycle t + 3; cycle t + 3:
-//                    one AND-OR of seven words, registered; cycle t + 4:
+//                    one AND-OR of nine words, registered; cycle t + 4:
 //                    the operands leave those flip-flops (nothing sits in
 //                    front of their users).
 //
@@ -64,7 +67,7 @@
 //                the same edge as with 0.
 //   CTRL         1: busy flags and LVT (the whole bank); 0: data only, the
 //                LVT's choice from lvt_*_i (lanes 1 .., see "Lanes" below)
-//   HOST_ALL     1: the host's write goes into all three ports' RAMs and
+//   HOST_ALL     1: the host's write goes into all four ports' RAMs and
 //                not into the LVT (banks that share an LVT); 0: port 2's
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
@@ -74,17 +77,19 @@
 //   busy_o: every busy flag; idle_o: none was set in the last cycle
 //     (registered: see idle_o below).
 //   set_i/set_idx_i: mark a destination busy (issue of add/mul/move).
-//   clr{0,1,2}_*: write-back announcements (add, mul, move tag lines); each
+//   clr{0,1,2,3}_*: write-back announcements (add, mul, move, div/sqrt tag
+//     lines); each
 //     clears the register's busy flag.  A register announced in the cycle
 //     a new instruction claims it stays busy: the set wins.  (FLAGS_AHEAD
 //     = 1: both a cycle ahead, see above.)
-//   wb{0,1,2}_*: write-back ports (add core, mul core, move path).
-//   wb{0,1,2}_in2_*: the write-back ports' valid and index two cycles
+//   wb{0,1,2,3}_*: write-back ports (add core, mul core, move path,
+//     div/sqrt unit).
+//   wb{0,1,2,3}_in2_*: the write-back ports' valid and index two cycles
 //     ahead (fp3_wb_tag next2_*; read with READ_STAGES = 4).
 //   host_we_i/host_idx_i/host_wdata_i: host write through port 2's RAM
 //     (only while stopped: the move path is idle then), registered first.
 //   lvt_a_o/lvt_b_o: the RAM each read takes unless bypassed, one-hot
-//     {port 2, 1, 0}: the LVT entry of the read's index, in the cycle the
+//     {port 3, 2, 1, 0}: the LVT entry of the read's index, in the cycle the
 //     read stages use it (READ_STAGES = 1: cycle t + 1, = 4: cycle t + 2).
 //   lvt_a_i/lvt_b_i: the same, from a CTRL = 1 bank (CTRL = 0 only).
 //
@@ -96,7 +101,7 @@
 // lane 0 (lvt_*_i).  Its read data equal those of a CTRL = 1 bank with the
 // same writes, provided the LVT changes alike in every lane: the host
 // writes one lane at a time, so with lanes (HOST_ALL = 1) its write goes
-// into the RAMs of all three ports of the lane it selects (ports 0 and 1
+// into the RAMs of all four ports of the lane it selects (ports 0, 1 and 3
 // are idle while the machine is stopped, as port 2 is) and leaves the LVT
 // alone, which then names a RAM holding the host's word whatever it says.
 // With HOST_ALL = 0 (one lane) the host writes port 2's RAMs only and its
@@ -128,6 +133,8 @@ module fp3_regfile #(
   input  wire [XW-1:0]      clr1_idx_i,
   input  wire               clr2_valid_i,
   input  wire [XW-1:0]      clr2_idx_i,
+  input  wire               clr3_valid_i,
+  input  wire [XW-1:0]      clr3_idx_i,
   input  wire               wb0_valid_i,
   input  wire [XW-1:0]      wb0_idx_i,
   input  wire [31:0]        wb0_data_i,
@@ -137,21 +144,26 @@ module fp3_regfile #(
   input  wire               wb2_valid_i,
   input  wire [XW-1:0]      wb2_idx_i,
   input  wire [31:0]        wb2_data_i,
+  input  wire               wb3_valid_i,
+  input  wire [XW-1:0]      wb3_idx_i,
+  input  wire [31:0]        wb3_data_i,
   input  wire               wb0_in2_valid_i,
   input  wire [XW-1:0]      wb0_in2_idx_i,
   input  wire               wb1_in2_valid_i,
   input  wire [XW-1:0]      wb1_in2_idx_i,
   input  wire               wb2_in2_valid_i,
   input  wire [XW-1:0]      wb2_in2_idx_i,
+  input  wire               wb3_in2_valid_i,
+  input  wire [XW-1:0]      wb3_in2_idx_i,
   input  wire               host_sel_i,
   input  wire               host_we_i,
   input  wire [XW-1:0]      host_idx_i,
   input  wire [31:0]        host_wdata_i,
   output wire               idle_o,
-  output wire [2:0]         lvt_a_o,
-  output wire [2:0]         lvt_b_o,
-  input  wire [2:0]         lvt_a_i,
-  input  wire [2:0]         lvt_b_i
+  output wire [3:0]         lvt_a_o,
+  output wire [3:0]         lvt_b_o,
+  input  wire [3:0]         lvt_a_i,
+  input  wire [3:0]         lvt_b_i
 );
 
   // Port 2 carries the move path, or the host's write while stopped.  The
@@ -178,13 +190,16 @@ module fp3_regfile #(
   wire          w1_valid = wb1_valid_i || hwe_all;
   wire [XW-1:0] w1_idx   = wb1_valid_i || !hwe_all ? wb1_idx_i  : hidx_q;
   wire [31:0]   w1_data  = wb1_valid_i || !hwe_all ? wb1_data_i : hdata_q;
+  wire          w3_valid = wb3_valid_i || hwe_all;
+  wire [XW-1:0] w3_idx   = wb3_valid_i || !hwe_all ? wb3_idx_i  : hidx_q;
+  wire [31:0]   w3_data  = wb3_valid_i || !hwe_all ? wb3_data_i : hdata_q;
   wire          hwe_lvt  = HOST_ALL == 0 && hwe_q;   // the host's write in the LVT
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
   // READ_STAGES = 4: RAM read over two cycles (fp3_ram READ_STAGES 2).
   localparam integer RAM_READ = (READ_STAGES == 4) ? 2 : 1;
-  wire [31:0] q00, q01, q10, q11, q20, q21;
+  wire [31:0] q00, q01, q10, q11, q20, q21, q30, q31;
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram00 (
     .clk_i(clk_i), .we_i(w0_valid), .waddr_i(w0_idx), .wdata_i(w0_data),
     .raddr_i(a_idx), .rdata_o(q00));
@@ -203,16 +218,24 @@ module fp3_regfile #(
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram21 (
     .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
     .raddr_i(rb_i), .rdata_o(q21));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram30 (
+    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
+    .raddr_i(a_idx), .rdata_o(q30));
+  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram31 (
+    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
+    .raddr_i(rb_i), .rdata_o(q31));
 
   // The write-back ports' valid and index of the next cycle (READ_STAGES
   // = 4; the tag lines' own stage, which Yosys merges with these).
-  reg [2:0]    nx_v;
-  reg [XW-1:0] nx_i0, nx_i1, nx_i2;
+  reg [3:0]    nx_v;
+  reg [XW-1:0] nx_i0, nx_i1, nx_i2, nx_i3;
   always @(posedge clk_i) begin
-    nx_v  <= rst_i ? 3'd0 : {wb2_in2_valid_i, wb1_in2_valid_i, wb0_in2_valid_i};
+    nx_v  <= rst_i ? 4'd0 : {wb3_in2_valid_i, wb2_in2_valid_i, wb1_in2_valid_i,
+                             wb0_in2_valid_i};
     nx_i0 <= wb0_in2_idx_i;
     nx_i1 <= wb1_in2_idx_i;
     nx_i2 <= wb2_in2_idx_i;
+    nx_i3 <= wb3_in2_idx_i;
   end
 
   // ---- read stages: LVT choice and bypass --------------------------------
@@ -222,31 +245,32 @@ module fp3_regfile #(
   // the RAM read at the same edge missed) replaces the RAM data.  Nothing
   // of this sits behind the issue arbiter in cycle t.
   reg [XW-1:0] a_idx_q, b_idx_q;
-  reg [31:0]   wd0_q, wd1_q, wd2_q;    // the data written in the last cycle
+  reg [31:0]   wd0_q, wd1_q, wd2_q, wd3_q;    // the data written in the last cycle
   always @(posedge clk_i) begin
     a_idx_q <= a_idx;
     b_idx_q <= rb_i;
     wd0_q   <= wb0_data_i;
     wd1_q   <= wb1_data_i;
     wd2_q   <= w2_data;
+    wd3_q   <= wb3_data_i;
   end
   wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
 
-  // The word of nine (w[32k +: 32]) that the one-hot sel[k] names.
-  function [31:0] pick9;
-    input [8:0]   sel;
-    input [287:0] w;
+  // The word of twelve (w[32k +: 32]) that the one-hot sel[k] names.
+  function [31:0] pick12;
+    input [11:0]  sel;
+    input [383:0] w;
     integer k;
     begin
-      pick9 = 32'd0;
-      for (k = 0; k < 9; k = k + 1) pick9 = pick9 | ({32{sel[k]}} & w[32*k +: 32]);
+      pick12 = 32'd0;
+      for (k = 0; k < 12; k = k + 1) pick12 = pick12 | ({32{sel[k]}} & w[32*k +: 32]);
     end
   endfunction
 
-  function [2:0] lvt1h;   // an LVT entry (port 0, 1, 2) one-hot: {2, 1, 0}
+  function [3:0] lvt1h;   // an LVT entry (port 0 .. 3) one-hot: {3, 2, 1, 0}
     input [1:0] p;
     begin
-      lvt1h = {p == 2'd2, p == 2'd1, p == 2'd0};
+      lvt1h = {p == 2'd3, p == 2'd2, p == 2'd1, p == 2'd0};
     end
   endfunction
 
@@ -255,20 +279,22 @@ module fp3_regfile #(
       // Cycle t + 1: the writes of cycle t (they missed the RAMs' read)
       // replace the RAM data the LVT entry of the index (it includes
       // them) names.
-      reg [2:0]    wv_q;                // the writes of the last cycle
-      reg [XW-1:0] wi0_q, wi1_q, wi2_q;
+      reg [3:0]    wv_q;                // the writes of the last cycle
+      reg [XW-1:0] wi0_q, wi1_q, wi2_q, wi3_q;
       always @(posedge clk_i) begin
-        wv_q  <= rst_i ? 3'd0 : {w2_valid, wb1_valid_i, wb0_valid_i};
+        wv_q  <= rst_i ? 4'd0 : {wb3_valid_i, w2_valid, wb1_valid_i, wb0_valid_i};
         wi0_q <= wb0_idx_i;
         wi1_q <= wb1_idx_i;
         wi2_q <= w2_idx;
+        wi3_q <= wb3_idx_i;
       end
       // Bypass of one write-back cycle: {hit, data} for index x.
 `define FP3_BYPASS(x) \
   ((wv_q[0] && wi0_q == (x)) ? {1'b1, wd0_q} : \
    (wv_q[1] && wi1_q == (x)) ? {1'b1, wd1_q} : \
-   (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : {33{1'b0}})
-      wire [2:0]  a_lvt, b_lvt;             // one LVT read per port, one-hot
+   (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : \
+   (wv_q[3] && wi3_q == (x)) ? {1'b1, wd3_q} : {33{1'b0}})
+      wire [3:0]  a_lvt, b_lvt;             // one LVT read per port, one-hot
       if (CTRL != 0) begin : g_lvt_own
         assign a_lvt = lvt1h(lvt_flat[2*a_idx_q +: 2]);
         assign b_lvt = lvt1h(lvt_flat[2*b_idx_q +: 2]);
@@ -280,9 +306,11 @@ module fp3_regfile #(
       wire [32:0] a_byp = `FP3_BYPASS(a_idx_q);
       wire [32:0] b_byp = `FP3_BYPASS(b_idx_q);
 `undef FP3_BYPASS
-      wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2};   // no stage looks ahead
-      assign ra_data_o = a_byp[32] ? a_byp[31:0] : a_lvt[0] ? q00 : a_lvt[1] ? q10 : q20;
-      assign rb_data_o = b_byp[32] ? b_byp[31:0] : b_lvt[0] ? q01 : b_lvt[1] ? q11 : q21;
+      wire unused_nx   = &{1'b0, nx_v, nx_i0, nx_i1, nx_i2, nx_i3};   // no stage looks ahead
+      assign ra_data_o = a_byp[32] ? a_byp[31:0] : a_lvt[0] ? q00 : a_lvt[1] ? q10 :
+                         a_lvt[2] ? q20 : q30;
+      assign rb_data_o = b_byp[32] ? b_byp[31:0] : b_lvt[0] ? q01 : b_lvt[1] ? q11 :
+                         b_lvt[2] ? q21 : q31;
       assign lvt_a_o   = a_lvt;
       assign lvt_b_o   = b_lvt;
     end else if (READ_STAGES == 4) begin : g_read4
@@ -293,38 +321,40 @@ module fp3_regfile #(
       // (the RAMs read at their registered address copies; their writes
       // land a cycle late, so the read has the writes up to cycle t - 1):
       // with the write-backs of cycle t + 3 (wb*_in2_* then), the newest
-      // of the twelve hits, one-hot, registered.  So cycle t + 1 compares
-      // three indices, not twelve.  (The host writes only while stopped.)
-      function [2:0] in2_hits;    // x among the write-backs two cycles ahead
+      // of the sixteen hits, one-hot, registered.  So cycle t + 1 compares
+      // four indices, not sixteen.  (The host writes only while stopped.)
+      function [3:0] in2_hits;    // x among the write-backs two cycles ahead
         input [XW-1:0] x;
         begin
           in2_hits = {wb0_in2_valid_i && wb0_in2_idx_i == x,
                       wb1_in2_valid_i && wb1_in2_idx_i == x,
-                      wb2_in2_valid_i && wb2_in2_idx_i == x};
+                      wb2_in2_valid_i && wb2_in2_idx_i == x,
+                      wb3_in2_valid_i && wb3_in2_idx_i == x};
         end
       endfunction
-      function [8:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2 each}
+      function [11:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2, 3 each}
         input [XW-1:0] x;
         begin
           hits_known = {in2_hits(x),
                         nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
+                        nx_v[3] && nx_i3 == x,
                         wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
-                        w2_valid && w2_idx == x};
+                        w2_valid && w2_idx == x, wb3_valid_i && wb3_idx_i == x};
         end
       endfunction
-      function [11:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2 each}
+      function [15:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2, 3 each}
         input [XW-1:0] x;
-        input [8:0]    known;     // hits_known(x), a cycle old
-        reg   [11:0]   h;
+        input [11:0]   known;     // hits_known(x), a cycle old
+        reg   [15:0]   h;
         integer        j;
         begin
           h = {in2_hits(x), known};
           byp_sel = h;
-          for (j = 1; j < 12; j = j + 1) byp_sel = byp_sel & ~(h >> j);
+          for (j = 1; j < 16; j = j + 1) byp_sel = byp_sel & ~(h >> j);
         end
       endfunction
-      reg [8:0]    a_hits_q, b_hits_q;
-      reg [11:0]   a_hit_q, b_hit_q;
+      reg [11:0]   a_hits_q, b_hits_q;
+      reg [15:0]   a_hit_q, b_hit_q;
       // Beside the hits, two summaries of them, registered from the same
       // compares rather than reduced from *_hit_q in cycle t + 2: no hit
       // at all (the RAM the LVT names: *_ram_q) and a hit among the writes
@@ -333,10 +363,10 @@ module fp3_regfile #(
       reg          a_ram_q, b_ram_q, a_bdv_q, b_bdv_q;
       reg [XW-1:0] a_idx_qq, b_idx_qq;   // the indices in cycle t + 2
       always @(posedge clk_i) begin
-        a_hits_q <= rst_i ? 9'd0 : hits_known(a_idx);
-        b_hits_q <= rst_i ? 9'd0 : hits_known(rb_i);
-        a_hit_q  <= rst_i ? 12'd0 : byp_sel(a_idx_q, a_hits_q);
-        b_hit_q  <= rst_i ? 12'd0 : byp_sel(b_idx_q, b_hits_q);
+        a_hits_q <= rst_i ? 12'd0 : hits_known(a_idx);
+        b_hits_q <= rst_i ? 12'd0 : hits_known(rb_i);
+        a_hit_q  <= rst_i ? 16'd0 : byp_sel(a_idx_q, a_hits_q);
+        b_hit_q  <= rst_i ? 16'd0 : byp_sel(b_idx_q, b_hits_q);
         a_ram_q  <= rst_i || ~|{in2_hits(a_idx_q), a_hits_q};
         b_ram_q  <= rst_i || ~|{in2_hits(b_idx_q), b_hits_q};
         a_bdv_q  <= !rst_i && |a_hits_q && ~|in2_hits(a_idx_q);
@@ -345,12 +375,12 @@ module fp3_regfile #(
         b_idx_qq <= b_idx_q;
       end
       // The LVT entry, read in cycle t + 1 (it has the writes up to cycle
-      // t; one of cycle t is taken from the bypass), one-hot ({port 2, 1,
-      // 0}), in two halves: in cycle t + 1 the low index bits pick an
+      // t; one of cycle t is taken from the bypass), one-hot ({port 3, 2,
+      // 1, 0}), in two halves: in cycle t + 1 the low index bits pick an
       // entry in every group of 16, registered one-hot, in cycle t + 2 the
       // high bits pick the group (a multiplexer per bit, nothing behind it
       // but the gate with a_ram_q).
-      wire [2:0] a_lvt2, b_lvt2;
+      wire [3:0] a_lvt2, b_lvt2;
       if (CTRL == 0) begin : g_lvt_lane0
         assign a_lvt2 = lvt_a_i;
         assign b_lvt2 = lvt_b_i;
@@ -371,16 +401,16 @@ module fp3_regfile #(
           a_lo_q <= a_idx[3:0];
           b_lo_q <= rb_i[3:0];
         end
-        reg [3*NG-1:0] a_pre_q, b_pre_q;
+        reg [4*NG-1:0] a_pre_q, b_pre_q;
         integer gi;
         always @(posedge clk_i) begin
           for (gi = 0; gi < NG; gi = gi + 1) begin
-            a_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_lo_q}) +: 2]);
-            b_pre_q[3*gi +: 3] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_lo_q}) +: 2]);
+            a_pre_q[4*gi +: 4] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_lo_q}) +: 2]);
+            b_pre_q[4*gi +: 4] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_lo_q}) +: 2]);
           end
         end
-        assign a_lvt2 = a_pre_q[3*a_idx_qq[XW-1:4] +: 3];
-        assign b_lvt2 = b_pre_q[3*b_idx_qq[XW-1:4] +: 3];
+        assign a_lvt2 = a_pre_q[4*a_idx_qq[XW-1:4] +: 4];
+        assign b_lvt2 = b_pre_q[4*b_idx_qq[XW-1:4] +: 4];
         // (the low index bits were used in cycle t + 1)
         wire unused_lvt = &{1'b0, a_idx_qq[3:0], b_idx_qq[3:0]};
       end else begin : g_lvt_whole
@@ -397,37 +427,44 @@ module fp3_regfile #(
       // Cycle t + 2, registered for cycle t + 3: the RAMs' words, the
       // bypass word (a write of cycle t, t + 1 or t + 2, chosen by the
       // hits of cycle t + 1), and a one-hot choice of the word for cycle
-      // t + 3, in the order of pick9's words: a write-back of cycle t + 3
+      // t + 3, in the order of pick12's words: a write-back of cycle t + 3
       // (a hit of cycle t + 1, two cycles older), else the bypass word,
       // else the RAM the LVT names.
-      reg  [31:0] wd0_qq, wd1_qq, wd2_qq;   // the writes of cycle t
+      reg  [31:0] wd0_qq, wd1_qq, wd2_qq, wd3_qq;   // the writes of cycle t
       always @(posedge clk_i) begin
         wd0_qq <= wd0_q;
         wd1_qq <= wd1_q;
         wd2_qq <= wd2_q;
+        wd3_qq <= wd3_q;
       end
-      wire [287:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wd0_q, wd1_q, wd2_q,
-                         wd0_qq, wd1_qq, wd2_qq};
-      reg  [31:0] qa0_q, qa1_q, qa2_q, qb0_q, qb1_q, qb2_q;
+      wire [383:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+                         wd0_q, wd1_q, wd2_q, wd3_q, wd0_qq, wd1_qq, wd2_qq, wd3_qq};
+      reg  [31:0] qa0_q, qa1_q, qa2_q, qa3_q, qb0_q, qb1_q, qb2_q, qb3_q;
       reg  [31:0] a_bd_q, b_bd_q;
-      reg  [6:0]  a_sel_q, b_sel_q;
+      reg  [8:0]  a_sel_q, b_sel_q;
       reg  [31:0] a_out_q, b_out_q;
       always @(posedge clk_i) begin
         qa0_q   <= q00;
         qa1_q   <= q10;
         qa2_q   <= q20;
+        qa3_q   <= q30;
         qb0_q   <= q01;
         qb1_q   <= q11;
         qb2_q   <= q21;
-        a_bd_q  <= pick9(a_hit_q[8:0], bw);
-        b_bd_q  <= pick9(b_hit_q[8:0], bw);
-        a_sel_q <= {a_hit_q[11:9], a_bdv_q, {3{a_ram_q}} & {a_lvt2[0], a_lvt2[1], a_lvt2[2]}};
-        b_sel_q <= {b_hit_q[11:9], b_bdv_q, {3{b_ram_q}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2]}};
+        qb3_q   <= q31;
+        a_bd_q  <= pick12(a_hit_q[11:0], bw);
+        b_bd_q  <= pick12(b_hit_q[11:0], bw);
+        a_sel_q <= {a_hit_q[15:12], a_bdv_q,
+                    {4{a_ram_q}} & {a_lvt2[0], a_lvt2[1], a_lvt2[2], a_lvt2[3]}};
+        b_sel_q <= {b_hit_q[15:12], b_bdv_q,
+                    {4{b_ram_q}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2], b_lvt2[3]}};
       end
-      wire [31:0] a_nx = pick9({2'b00, a_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
-                                                  a_bd_q, qa0_q, qa1_q, qa2_q});
-      wire [31:0] b_nx = pick9({2'b00, b_sel_q}, {64'd0, wb0_data_i, wb1_data_i, wb2_data_i,
-                                                  b_bd_q, qb0_q, qb1_q, qb2_q});
+      wire [31:0] a_nx = pick12({3'b000, a_sel_q},
+                                {96'd0, wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+                                 a_bd_q, qa0_q, qa1_q, qa2_q, qa3_q});
+      wire [31:0] b_nx = pick12({3'b000, b_sel_q},
+                                {96'd0, wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+                                 b_bd_q, qb0_q, qb1_q, qb2_q, qb3_q});
       always @(posedge clk_i) begin
         a_out_q <= a_nx;
         b_out_q <= b_nx;
@@ -474,10 +511,10 @@ module fp3_regfile #(
       for (d = 0; d < (1 << LW); d = d + 1) dec_lo[d] = lo == d[LW-1:0];
     end
   endfunction
-  wire [ENTRIES-1:0] h0, h1, h2;
+  wire [ENTRIES-1:0] h0, h1, h2, h3;
   generate
     if (CTRL == 0) begin : g_hit_none           // no LVT (lanes 1 ..)
-      assign {h0, h1, h2} = {3*ENTRIES{1'b0}};
+      assign {h0, h1, h2, h3} = {4*ENTRIES{1'b0}};
     end else if (READ_STAGES == 4) begin : g_hit_ahead
       // Decoded in two halves from the indices nx_* and hidx_q register:
       // the index's high bits (a write-back's with its valid bit), one-hot
@@ -487,19 +524,21 @@ module fp3_regfile #(
       // address checks sit in front of that register).  (One 8-bit compare
       // per flag behind a single index register was the critical path:
       // 256 flags across the die, 6.8 of 8.2 ns routing.)
-      reg [(1<<HW)-1:0] hh0_q, hh1_q, hh2_q, hhh_q;   // high halves
-      reg [(1<<LW)-1:0] hl0_q, hl1_q, hl2_q, hlh_q;   // low halves
+      reg [(1<<HW)-1:0] hh0_q, hh1_q, hh2_q, hh3_q, hhh_q;   // high halves
+      reg [(1<<LW)-1:0] hl0_q, hl1_q, hl2_q, hl3_q, hlh_q;   // low halves
       always @(posedge clk_i) begin
         hh0_q <= dec_hi(!rst_i && wb0_in2_valid_i, wb0_in2_idx_i[XW-1:LW]);
         hh1_q <= dec_hi(!rst_i && wb1_in2_valid_i, wb1_in2_idx_i[XW-1:LW]);
         hh2_q <= dec_hi(!rst_i && wb2_in2_valid_i, wb2_in2_idx_i[XW-1:LW]);
+        hh3_q <= dec_hi(!rst_i && wb3_in2_valid_i, wb3_in2_idx_i[XW-1:LW]);
         hhh_q <= dec_hi(1'b1, host_idx_i[XW-1:LW]);
         hl0_q <= dec_lo(wb0_in2_idx_i[LW-1:0]);
         hl1_q <= dec_lo(wb1_in2_idx_i[LW-1:0]);
         hl2_q <= dec_lo(wb2_in2_idx_i[LW-1:0]);
+        hl3_q <= dec_lo(wb3_in2_idx_i[LW-1:0]);
         hlh_q <= dec_lo(host_idx_i[LW-1:0]);
       end
-      reg [ENTRIES-1:0] h0_q, h1_q, h2_q;
+      reg [ENTRIES-1:0] h0_q, h1_q, h2_q, h3_q;
       integer e;
       always @(posedge clk_i) begin
         for (e = 0; e < ENTRIES; e = e + 1) begin
@@ -507,13 +546,15 @@ module fp3_regfile #(
           h1_q[e] <= !rst_i && hh1_q[e >> LW] && hl1_q[e % (1 << LW)];
           h2_q[e] <= !rst_i && (hh2_q[e >> LW] && hl2_q[e % (1 << LW)] ||
                                 hwe_lvt && hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
+          h3_q[e] <= !rst_i && hh3_q[e >> LW] && hl3_q[e % (1 << LW)];
         end
       end
-      assign {h0, h1, h2} = {h0_q, h1_q, h2_q};
+      assign {h0, h1, h2, h3} = {h0_q, h1_q, h2_q, h3_q};
     end else begin : g_hit_now
       assign h0 = dec(wb0_valid_i, wb0_idx_i);
       assign h1 = dec(wb1_valid_i, wb1_idx_i);
       assign h2 = dec(wb2_valid_i, wb2_idx_i) | dec(hwe_lvt, hidx_q);
+      assign h3 = dec(wb3_valid_i, wb3_idx_i);
     end
   endgenerate
 
@@ -543,15 +584,17 @@ module fp3_regfile #(
       );
       wire [(1<<HW)-1:0] sh = dec_hi(sv_q, si_q[XW-1:LW]);
       wire [(1<<LW)-1:0] sl = dec_lo(si_q[LW-1:0]);
-      reg [(1<<HW)-1:0] ch0_q, ch1_q, ch2_q;   // high halves
-      reg [(1<<LW)-1:0] cl0_q, cl1_q, cl2_q;   // low halves
+      reg [(1<<HW)-1:0] ch0_q, ch1_q, ch2_q, ch3_q;   // high halves
+      reg [(1<<LW)-1:0] cl0_q, cl1_q, cl2_q, cl3_q;   // low halves
       always @(posedge clk_i) begin
         ch0_q <= dec_hi(!rst_i && clr0_valid_i, clr0_idx_i[XW-1:LW]);
         ch1_q <= dec_hi(!rst_i && clr1_valid_i, clr1_idx_i[XW-1:LW]);
         ch2_q <= dec_hi(!rst_i && clr2_valid_i, clr2_idx_i[XW-1:LW]);
+        ch3_q <= dec_hi(!rst_i && clr3_valid_i, clr3_idx_i[XW-1:LW]);
         cl0_q <= dec_lo(clr0_idx_i[LW-1:0]);
         cl1_q <= dec_lo(clr1_idx_i[LW-1:0]);
         cl2_q <= dec_lo(clr2_idx_i[LW-1:0]);
+        cl3_q <= dec_lo(clr3_idx_i[LW-1:0]);
       end
       genvar f;
       for (f = 0; f < ENTRIES; f = f + 1) begin : g_flag
@@ -559,12 +602,12 @@ module fp3_regfile #(
         localparam integer FL = f % (1 << LW);
         assign fset[f] = sh[FH] && sl[FL];
         assign fclr[f] = ch0_q[FH] && cl0_q[FL] || ch1_q[FH] && cl1_q[FL] ||
-                         ch2_q[FH] && cl2_q[FL];
+                         ch2_q[FH] && cl2_q[FL] || ch3_q[FH] && cl3_q[FL];
       end
     end else begin : g_flags_now
       assign fset = dec(set_i, set_idx_i);
       assign fclr = dec(clr0_valid_i, clr0_idx_i) | dec(clr1_valid_i, clr1_idx_i) |
-                    dec(clr2_valid_i, clr2_idx_i);
+                    dec(clr2_valid_i, clr2_idx_i) | dec(clr3_valid_i, clr3_idx_i);
     end
   endgenerate
 
@@ -579,11 +622,13 @@ module fp3_regfile #(
         wire hit0 = h0[r];
         wire hit1 = h1[r];
         wire hit2 = h2[r];
+        wire hit3 = h3[r];
         always @(posedge clk_i) begin
           if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
           else if (hit0) lvt_q[r] <= 2'd0;
           else if (hit1) lvt_q[r] <= 2'd1;
           else if (hit2) lvt_q[r] <= 2'd2;
+          else if (hit3) lvt_q[r] <= 2'd3;
         end
         assign lvt_flat[2*r +: 2] = lvt_q[r];
         always @(posedge clk_i) begin
@@ -611,9 +656,9 @@ module fp3_regfile #(
       assign busy_o   = {ENTRIES{1'b0}};
       assign idle_o   = 1'b1;
       assign lvt_flat = {2*ENTRIES{1'b0}};
-      wire unused_ctrl = &{1'b0, lvt_flat, h0, h1, h2, fset, fclr, hwe_lvt, set_i, set_idx_i,
-                           clr0_valid_i, clr0_idx_i, clr1_valid_i, clr1_idx_i,
-                           clr2_valid_i, clr2_idx_i};
+      wire unused_ctrl = &{1'b0, lvt_flat, h0, h1, h2, h3, fset, fclr, hwe_lvt, set_i,
+                           set_idx_i, clr0_valid_i, clr0_idx_i, clr1_valid_i, clr1_idx_i,
+                           clr2_valid_i, clr2_idx_i, clr3_valid_i, clr3_idx_i};
     end
   endgenerate
 endmodule

@@ -9,7 +9,8 @@
 // rtl/fp3_sched.vh), decided as the host writes the word: from the word
 // and its address (a program does not change while it runs), so that no
 // decode sits in front of the memory or behind it.  A word is legal when
-// its opcode is known and its unit built (HAS_ADD, HAS_SUB, HAS_MUL), each
+// its opcode is known and its unit built (HAS_ADD, HAS_SUB, HAS_MUL,
+// HAS_DIV, HAS_SQRT, HAS_SIGN), each
 // used register field names a register < NUM_REGS, each unused field is
 // zero, an endi's target is inside the memory and a beq's target is
 // inside it and ahead of the beq.  Entries never written read as zero:
@@ -56,9 +57,9 @@
 //   NUM_CONTEXTS  contexts, >= 1; CW = clog2, >= 1 (NC below)
 //   NUM_REGS      registers per context; IW = clog2(NUM_REGS)
 //   IMEM_DEPTH    instruction memory words; AW = clog2(IMEM_DEPTH)
-//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_SIGN  units built: an instruction for
-//                 a missing one is illegal (HAS_SIGN: abs, neg, min, max);
-//                 div and sqrt are always illegal here (no issue path)
+//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN  units built:
+//                 an instruction for a missing one is illegal (HAS_SIGN:
+//                 abs, neg, min, max)
 //   FETCH_STAGE   0 or 1 (above)
 // Ports (one-hot vectors: bit c for context c)
 //   clk_i, rst_i      clock (rising edge), synchronous reset
@@ -98,6 +99,8 @@ module fp3_sched_fetch #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_DIV      = 1,
+  parameter integer HAS_SQRT     = 1,
   parameter integer HAS_SIGN     = 1,
   parameter integer FETCH_STAGE  = 0
 ) (
@@ -118,7 +121,7 @@ module fp3_sched_fetch #(
   input  wire [AW-1:0]           br_target_i,
   output wire [CW-1:0]           actx_o,
   output wire [63:0]             aword_o,
-  output wire [14:0]             adec_o,   // SCH_DW bits
+  output wire [15:0]             adec_o,   // SCH_DW bits
   output wire [AW-1:0]           apc_o,
   output wire [3*IW-1:0]         lk_fields_o,
   output wire [NUM_CONTEXTS*3*IW-1:0] cf_o,
@@ -209,10 +212,8 @@ module fp3_sched_fetch #(
   wire [7:0]    w_rb8   = dwd[ISA_RB_LSB +: ISA_REG_WIDTH];
   wire [31:0]   w_imm   = dwd[0 +: ISA_IMM_WIDTH];
   wire [7:0]    w_dec   = isa_decode(w_opc);   // {known, unit[2:0], uses: imm rb ra rd}
-  // The issue path carries units 0 .. 3 (2 bits: w_dec[5:4]).  The
-  // div/sqrt unit (UNIT_DIV) has no issue path: its words are illegal
-  // (fp3_top builds with HAS_DIV = HAS_SQRT = 0, and the host refuses such
-  // a program first), so their 2-bit unit is never used.  The sign group
+  // The issue path carries the decode's 3-bit unit (w_dec[6:4]); div and
+  // sqrt share the div/sqrt unit, a sqrt marked by the sub bit.  The sign group
   // (abs, neg, min, max) runs on the move path: w_sop is {sign group,
   // fp_sign's op_i: 0 abs, 1 neg, 2 min, 3 max}, carried to the issue
   // beside the unit (issue_sop_o).
@@ -220,10 +221,12 @@ module fp3_sched_fetch #(
                           w_opc == OP_MAX;
   wire [2:0]    w_sop   = {w_sign, w_opc == OP_MIN || w_opc == OP_MAX,
                            w_opc == OP_NEG || w_opc == OP_MAX};
-  wire          w_built = (w_dec[6:4] != {1'b0, UNIT_ADD} || HAS_ADD != 0) &&
+  wire          w_built = (w_dec[6:4] != UNIT_ADD || HAS_ADD != 0) &&
                           (w_opc != OP_SUB || HAS_SUB != 0) &&
-                          (w_dec[6:4] != {1'b0, UNIT_MUL} || HAS_MUL != 0) &&
-                          w_dec[6:4] != UNIT_DIV && (!w_sign || HAS_SIGN != 0);
+                          (w_dec[6:4] != UNIT_MUL || HAS_MUL != 0) &&
+                          (w_opc != OP_DIV || HAS_DIV != 0) &&
+                          (w_opc != OP_SQRT || HAS_SQRT != 0) &&
+                          (!w_sign || HAS_SIGN != 0);
   // w_imm < IMEM_DEPTH, without a carry chain when IMEM_DEPTH is 2**AW
   wire          w_in    = (w_imm >> AW) == 32'd0 &&
                           (IMEM_DEPTH == (1 << AW) || w_imm < IMEM_DEPTH);
@@ -232,7 +235,8 @@ module fp3_sched_fetch #(
                           (w_dec[3] || w_imm == 32'd0) &&
                           (!w_endi || w_in) &&
                           (!w_beq || (w_in && w_imm[AW-1:0] > dwa));
-  assign wsdec = {w_sop, !w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[5:4], w_opc == OP_SUB,
+  assign wsdec = {w_sop, !w_legal, w_dec[2], w_dec[1], w_dec[0], w_dec[6:4],
+                  w_opc == OP_SUB || w_opc == OP_SQRT,
                   w_opc == OP_LI, w_endi, w_beq, w_opc == OP_HALT};
 
   // ---- the word in flight --------------------------------------------------

@@ -57,10 +57,10 @@
 //   grant_o           a context is granted now
 //   gone_q_o [NC]     the grant of the last cycle, while running
 //   grant_q_o         ... whether there was one
-//   issue_o, issue_ctx_o [CW], ra_o, rb_o, rd_o [XW], issue_unit_o [2],
+//   issue_o, issue_ctx_o [CW], ra_o, rb_o, rd_o [XW], issue_unit_o [3],
 //   issue_sub_o, issue_imm_o, imm_o [32], endi_o, beq_o  the instruction
 //                     issuing now (fp3_scheduler's ports of the same names)
-//   pick_wr_o, pick_rd_o [XW], pick_unit_o [2]  the instruction picked,
+//   pick_wr_o, pick_rd_o [XW], pick_unit_o [3]  the instruction picked,
 //                     which issues in the next cycle (PICK_STAGES = 2; with
 //                     0, the one issuing now): it writes a register, which,
 //                     and its unit
@@ -77,7 +77,7 @@ module fp3_sched_issue #(
   input  wire                    running_i,
   input  wire [NUM_CONTEXTS-1:0] ready_i,
   input  wire [NUM_CONTEXTS-1:0] hp_i,
-  input  wire [2*NUM_CONTEXTS*(3*IW+41)-1:0] fields_i,   // 2 * NC * SCH_FW
+  input  wire [2*NUM_CONTEXTS*(3*IW+42)-1:0] fields_i,   // 2 * NC * SCH_FW
   output wire [NUM_CONTEXTS-1:0] gone_o,
   output wire                    grant_o,
   output wire [NUM_CONTEXTS-1:0] gone_q_o,
@@ -87,7 +87,7 @@ module fp3_sched_issue #(
   output wire [CW+IW-1:0]        ra_o,
   output wire [CW+IW-1:0]        rb_o,
   output wire [CW+IW-1:0]        rd_o,
-  output wire [1:0]              issue_unit_o,
+  output wire [2:0]              issue_unit_o,
   output wire                    issue_sub_o,
   output wire [2:0]              issue_sop_o,   // sign group: {abs/neg/min/max, fp_sign op}
   output wire                    issue_imm_o,
@@ -96,7 +96,7 @@ module fp3_sched_issue #(
   output wire                    beq_o,
   output wire                    pick_wr_o,
   output wire [CW+IW-1:0]        pick_rd_o,
-  output wire [1:0]              pick_unit_o
+  output wire [2:0]              pick_unit_o
 );
 `include "fp3_isa.vh"
   localparam integer NC = NUM_CONTEXTS;
@@ -237,7 +237,7 @@ module fp3_sched_issue #(
   end
 
   wire [IW-1:0] g_ra, g_rb, g_rd;
-  wire [1:0]    g_unit;
+  wire [2:0]    g_unit;
   wire          g_sub, g_li, g_endi, g_beq;
   wire [2:0]    g_sop;
   wire [31:0]   g_imm;
@@ -245,7 +245,7 @@ module fp3_sched_issue #(
 
   // ---- the issue -----------------------------------------------------------
   // {valid, ctx, ra, rb, rd, unit, sub, sop, imm (li), immediate, endi, beq}
-  localparam integer IS_W = 1 + CW + 3 * XW + 2 + 1 + 3 + 1 + 32 + 1 + 1;
+  localparam integer IS_W = 1 + CW + 3 * XW + 3 + 1 + 3 + 1 + 32 + 1 + 1;
   wire [IS_W-1:0] is_d = {p_grant, p_g, p_g, g_ra, p_g, g_rb, p_g, g_rd, g_unit, g_sub, g_sop, g_li,
                           g_imm, p_grant && g_endi, p_grant && g_beq};
   wire [IS_W-1:0] is_w;

@@ -61,9 +61,9 @@
 //       two cycles more.
 //   g_copy / g_shared (per context and announcement line)  PICK_STAGES =
 //       2: the announcements of the next cycle as a per-context copy,
-//       registered from pre3_*_i (add, mul: two cycles earlier than
-//       early_*_i would show, for the registered readiness above) and
-//       pre_*_i (move), kept, so that the three tag lines' indices do not
+//       registered from pre3_*_i (add, mul, div/sqrt: two cycles earlier
+//       than early_*_i would show, for the registered readiness above) and
+//       pre_*_i (move), kept, so that the four tag lines' indices do not
 //       each fan out to every context's compares across the die.
 //       Without: early_*_i directly.  (g_no_lead: nothing to copy.)
 //   g_bctx_copy / g_bctx_now  FETCH_STAGE = 1: the lookup's context as a
@@ -96,11 +96,12 @@
 //   narr_i [NC], nctx_i [CW]  the context whose word arrives next cycle
 //   fctx_i [CW], fr_i [CW]    the fetch's contexts (FETCH_STAGE copies)
 //   busy_i [2**XW]    the register file's busy flags
-//   ahead_valid_i [3], ahead_idx_i [3*XW]  write-backs announced now
-//                     (add, mul, move); early_* next cycle; pre_* the cycle
-//                     after; pre2_*, pre3_* [2], [2*XW] (add, mul) two and
-//                     three cycles after early_* (fp3_wb_tag)
-//   issue_i, issue_unit_i [2], rd_i [XW]  the instruction issuing now
+//   ahead_valid_i [4], ahead_idx_i [4*XW]  write-backs announced now
+//                     (add, mul, move, div/sqrt); early_* next cycle; pre_*
+//                     the cycle after; pre2_*, pre3_* [3], [3*XW] (add,
+//                     mul, div/sqrt) two and three cycles after early_*
+//                     (fp3_wb_tag)
+//   issue_i, issue_unit_i [3], rd_i [XW]  the instruction issuing now
 //                     (fp3_sched_issue)
 //   ready_o [NC]      the head was ready (ready_q, found last cycle)
 //   hp_o [NC]         head slot of each queue
@@ -130,7 +131,7 @@ module fp3_sched_queue #(
   input  wire [NUM_CONTEXTS-1:0]      gone_q_i,
   input  wire [CW-1:0]                actx_i,
   input  wire [63:0]                  aword_i,
-  input  wire [14:0]                  adec_i,     // SCH_DW bits
+  input  wire [15:0]                  adec_i,     // SCH_DW bits
   input  wire [AW-1:0]                apc_i,
   input  wire [3*IW-1:0]              lk_fields_i,
   input  wire [NUM_CONTEXTS*3*IW-1:0] cf_i,
@@ -139,22 +140,22 @@ module fp3_sched_queue #(
   input  wire [CW-1:0]                fctx_i,
   input  wire [CW-1:0]                fr_i,
   input  wire [(1<<(CW+IW))-1:0]      busy_i,
-  input  wire [2:0]                   ahead_valid_i,
-  input  wire [3*(CW+IW)-1:0]         ahead_idx_i,
-  input  wire [2:0]                   early_valid_i,
-  input  wire [3*(CW+IW)-1:0]         early_idx_i,
-  input  wire [2:0]                   pre_valid_i,
-  input  wire [3*(CW+IW)-1:0]         pre_idx_i,
-  input  wire [1:0]                   pre2_valid_i,
-  input  wire [2*(CW+IW)-1:0]         pre2_idx_i,
-  input  wire [1:0]                   pre3_valid_i,
-  input  wire [2*(CW+IW)-1:0]         pre3_idx_i,
+  input  wire [3:0]                   ahead_valid_i,
+  input  wire [4*(CW+IW)-1:0]         ahead_idx_i,
+  input  wire [3:0]                   early_valid_i,
+  input  wire [4*(CW+IW)-1:0]         early_idx_i,
+  input  wire [3:0]                   pre_valid_i,
+  input  wire [4*(CW+IW)-1:0]         pre_idx_i,
+  input  wire [2:0]                   pre2_valid_i,
+  input  wire [3*(CW+IW)-1:0]         pre2_idx_i,
+  input  wire [2:0]                   pre3_valid_i,
+  input  wire [3*(CW+IW)-1:0]         pre3_idx_i,
   input  wire                         issue_i,
-  input  wire [1:0]                   issue_unit_i,
+  input  wire [2:0]                   issue_unit_i,
   input  wire [CW+IW-1:0]             rd_i,
   output wire [NUM_CONTEXTS-1:0]      ready_o,
   output wire [NUM_CONTEXTS-1:0]      hp_o,
-  output wire [2*NUM_CONTEXTS*(3*IW+41)-1:0] fields_o,   // 2 * NC * SCH_FW
+  output wire [2*NUM_CONTEXTS*(3*IW+42)-1:0] fields_o,   // 2 * NC * SCH_FW
   output wire [NUM_CONTEXTS-1:0]      holds_o,
   output wire [NUM_CONTEXTS-1:0]      legal_o,
   output wire [NUM_CONTEXTS-1:0]      h_halt_o,
@@ -196,14 +197,14 @@ module fp3_sched_queue #(
   wire [2*NC*3-1:0] s_d;            // the wait bits after this cycle ({rd, rb, ra})
   wire [2*NC*FW-1:0] fields;        // every slot's issue fields
 
-  // Register x of this context (g_ctx) is among the three write-backs
+  // Register x of this context (g_ctx) is among the four write-backs
   // announced in the next cycle, as this context's copy has them (ev:
   // valid and of this context, er: the registers).  A plain expression,
   // not a function: a continuous assignment is re-evaluated only when its
   // operands change, and a function's body is not an operand (Icarus).
 `define FP3_FREED(x) \
   ((ev[0] && er[0*IW +: IW] == (x)) || (ev[1] && er[1*IW +: IW] == (x)) || \
-   (ev[2] && er[2*IW +: IW] == (x)))
+   (ev[2] && er[2*IW +: IW] == (x)) || (ev[3] && er[3*IW +: IW] == (x)))
 
   // ---- the arriving word's flags (the lookup) -------------------------------
   wire [IW-1:0] a_ra = aword_i[ISA_RA_LSB +: IW];
@@ -233,7 +234,7 @@ module fp3_sched_queue #(
   localparam integer RN = 1 << IW;  // flags per context
   // With the registered readiness (PICK_STAGES = 2) a wait bit may be
   // cleared by an announcement up to two cycles before it is made
-  // (g_ready_reg): the lookup also takes off the add and mul lines'
+  // (g_ready_reg): the lookup also takes off the add, mul and div/sqrt lines'
   // announcements of cycles a + 1 and a + 2 (pre_*_i and pre2_*_i now),
   // the ones that the word's compares in its slot, from cycle a + 1 on,
   // see no more.
@@ -249,15 +250,31 @@ module fp3_sched_queue #(
       for (d = 0; d < RN; d = d + 1) flag1[d] = v && r == d[IW-1:0];
     end
   endfunction
-  // The flags of context x among three announcements (valid v, indices i).
-  function [RN-1:0] ann3;
-    input [2:0]      v;
-    input [3*XW-1:0] i;
+  // The flags of context x among four announcements (valid v, indices i:
+  // the lines' order, add, mul, move, div/sqrt).
+  function [RN-1:0] ann4;
+    input [3:0]      v;
+    input [4*XW-1:0] i;
     input [CW-1:0]   x;
     begin
-      ann3 = flag1(v[0] && i[0*XW+IW +: CW] == x, i[0*XW +: IW]) |
+      ann4 = flag1(v[0] && i[0*XW+IW +: CW] == x, i[0*XW +: IW]) |
              flag1(v[1] && i[1*XW+IW +: CW] == x, i[1*XW +: IW]) |
-             flag1(v[2] && i[2*XW+IW +: CW] == x, i[2*XW +: IW]);
+             flag1(v[2] && i[2*XW+IW +: CW] == x, i[2*XW +: IW]) |
+             flag1(v[3] && i[3*XW+IW +: CW] == x, i[3*XW +: IW]);
+    end
+  endfunction
+  // The long lines' (add, mul, div/sqrt: pre2_*_i, pre3_*_i's order) valid
+  // bits and indices in ann4's order, the move line's left out.
+  function [3:0] long_v;
+    input [2:0] v;
+    begin
+      long_v = {v[2], 1'b0, v[1:0]};
+    end
+  endfunction
+  function [4*XW-1:0] long_i;
+    input [3*XW-1:0] i;
+    begin
+      long_i = {i[2*XW +: XW], {XW{1'b0}}, i[0 +: 2*XW]};
     end
   endfunction
   // The lookup's context (bctx): with FETCH_STAGE a kept copy of nctx_i,
@@ -285,8 +302,8 @@ module fp3_sched_queue #(
   wire [RN-1:0] bflags, bann;
   always @(posedge clk_i)
     bq_q <= (smask | (bflags & ~cmask)) & ~bann
-            & ~ann3({1'b0, pre_valid_i[1:0] & {2{LEAD}}}, pre_idx_i, bctx)
-            & ~ann3({1'b0, pre2_valid_i & {2{LEAD}}}, {{XW{1'b0}}, pre2_idx_i}, bctx);
+            & ~ann4(pre_valid_i & 4'b1011 & {4{LEAD}}, pre_idx_i, bctx)
+            & ~ann4(long_v(pre2_valid_i) & {4{LEAD}}, long_i(pre2_idx_i), bctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
@@ -296,12 +313,13 @@ module fp3_sched_queue #(
   // now, which issues in the next cycle.
   wire [NC-1:0]    pg_w;
   wire [NC*IW-1:0] pg_rd;
-  // The announcements the per-context copies (g_copy) register: add and
-  // mul three cycles ahead of early_*_i (pre3_*_i), move a cycle ahead
-  // (pre_*_i: its line is the shortest, MOV_LATENCY = 1 + PICK_STAGES, and
-  // its announcement is its pick; fp3_top).
-  wire [2:0]      cp_valid = {pre_valid_i[2], pre3_valid_i};
-  wire [3*XW-1:0] cp_idx   = {pre_idx_i[2*XW +: XW], pre3_idx_i};
+  // The announcements the per-context copies (g_copy) register: add, mul
+  // and div/sqrt three cycles ahead of early_*_i (pre3_*_i), move a cycle
+  // ahead (pre_*_i: its line is the shortest, MOV_LATENCY = 1 +
+  // PICK_STAGES, and its announcement is its pick; fp3_top).
+  wire [3:0]      cp_valid = long_v(pre3_valid_i) | {1'b0, pre_valid_i[2], 2'b00};
+  wire [4*XW-1:0] cp_idx   = long_i(pre3_idx_i) | {{XW{1'b0}}, pre_idx_i[2*XW +: XW],
+                                                   {(2*XW){1'b0}}};
 
   // ---- every context's queue and its head's readiness -----------------------
   genvar c, e, l;
@@ -321,9 +339,9 @@ module fp3_sched_queue #(
       // The next cycle's announcements for this context's compares (ev,
       // er): a copy per context with PICK_STAGES = 2 (g_copy), else
       // early_*_i.
-      wire [2:0]      ev;
-      wire [3*IW-1:0] er;
-      for (l = 0; l < 3; l = l + 1) begin : g_line
+      wire [3:0]      ev;
+      wire [4*IW-1:0] er;
+      for (l = 0; l < 4; l = l + 1) begin : g_line
         if (PICK_STAGES == 2) begin : g_copy
           fp3_keep #(.W(1 + IW)) u_early_copy (
             .clk_i (clk_i),
@@ -337,8 +355,8 @@ module fp3_sched_queue #(
           wire unused_pre = &{1'b0, pre_valid_i[l], pre_idx_i[l*XW +: XW]};  // (no copy)
         end
       end
-      wire          wrh = xh[7:6] != UNIT_NONE;   // it writes rdh
-      assign legal_o[c]  = xh[11];
+      wire          wrh = xh[8:6] != UNIT_NONE;   // it writes rdh
+      assign legal_o[c]  = xh[12];
       assign h_halt_o[c] = xh[1];
       assign h_endi_o[c] = xh[3];
       assign h_ovf_o[c]  = xh[0];
@@ -404,7 +422,7 @@ module fp3_sched_queue #(
         // (The opcode and the registers' high bits were decoded at arrival.)
         wire          unused_insn = &{1'b0, insn};
         wire          lgl, use_ra, use_rb, use_rd, d_sub, d_li, d_endi, d_beq, d_halt, d_ovf;
-        wire [1:0]    d_unit;
+        wire [2:0]    d_unit;
         wire [2:0]    d_sop;
         assign {d_sop, lgl, use_rb, use_ra, use_rd, d_unit, d_sub, d_li, d_endi, d_beq, d_halt,
                 d_ovf} = x_q[I];
@@ -496,7 +514,7 @@ module fp3_sched_queue #(
       );
       always @(posedge clk_i) begin
         smask_q <= flag1(!rst_i && running_i && pg_w[fcm_q], pg_rd[fcm_q*IW +: IW]);
-        cmask_q <= ann3(early_valid_i, early_idx_i, fcm_q);
+        cmask_q <= ann4(early_valid_i, early_idx_i, fcm_q);
       end
       assign smask = smask_q;
       assign cmask = cmask_q;
@@ -513,18 +531,18 @@ module fp3_sched_queue #(
         bsel_q <= busy_i[fcb_q*RN +: RN];
         sset_q <= flag1(issue_i && issue_unit_i != UNIT_NONE && rd_i[IW +: CW] == fcm_q,
                         rd_i[IW-1:0]);
-        sclr_q <= ann3(ahead_valid_i, ahead_idx_i, fcm_q);
-        sann_q <= ann3({1'b0, pre_valid_i[1:0]}, pre_idx_i, fcm_q);
+        sclr_q <= ann4(ahead_valid_i, ahead_idx_i, fcm_q);
+        sann_q <= ann4(pre_valid_i & 4'b1011, pre_idx_i, fcm_q);
       end
       // The register file's update of the edge ending a - 2 (the set wins).
       assign bflags = sset_q | (bsel_q & ~sclr_q);
-      assign bann   = sann_q | ann3({early_valid_i[2], 2'b00}, early_idx_i, bctx);
+      assign bann   = sann_q | ann4(early_valid_i & 4'b0100, early_idx_i, bctx);
     end else begin : g_mask_now
       assign smask = flag1(issue_i && issue_unit_i != UNIT_NONE && rd_i[IW +: CW] == nctx_i,
                            rd_i[IW-1:0]);
-      assign cmask = ann3(ahead_valid_i, ahead_idx_i, nctx_i);
+      assign cmask = ann4(ahead_valid_i, ahead_idx_i, nctx_i);
       assign bflags = busy_i[bctx*RN +: RN];
-      assign bann   = ann3(early_valid_i, early_idx_i, bctx);
+      assign bann   = ann4(early_valid_i, early_idx_i, bctx);
       wire unused_pg = &{1'b0, pg_w, pg_rd, fr_i};  // (the issue register, now)
     end
   endgenerate

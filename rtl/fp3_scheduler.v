@@ -38,9 +38,9 @@
 //   NUM_CONTEXTS  contexts (objects in flight), >= 1; CW = clog2, >= 1
 //   NUM_REGS      registers per context; IW = clog2(NUM_REGS) index width
 //   IMEM_DEPTH    instruction memory entries; AW = clog2(IMEM_DEPTH)
-//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_SIGN  units built (fp3_top): an
-//                 instruction for a missing one is illegal (HAS_SIGN: abs,
-//                 neg, min, max on the move path)
+//   HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN  units built
+//                 (fp3_top): an instruction for a missing one is illegal
+//                 (HAS_SIGN: abs, neg, min, max on the move path)
 //   PICK_STAGES   0 or 2: cycles from the grant to the issue
 //   FETCH_STAGE   0 or 1: the fetch grant registered, then the fetch PC
 //                 selected and registered before the instruction memory,
@@ -68,6 +68,8 @@ module fp3_scheduler #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
+  parameter integer HAS_DIV      = 1,
+  parameter integer HAS_SQRT     = 1,
   parameter integer HAS_SIGN     = 1,
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
@@ -101,18 +103,19 @@ module fp3_scheduler #(
   output wire [63:0]                  stalls_o,
   // register file: busy flags; write-backs announced this cycle
   input  wire [(1<<(CW+IW))-1:0]      busy_i,
-  input  wire [2:0]                   ahead_valid_i, // add, mul, move ports
-  input  wire [3*(CW+IW)-1:0]         ahead_idx_i,
-  input  wire [2:0]                   early_valid_i, // ... those of the next cycle
-  input  wire [3*(CW+IW)-1:0]         early_idx_i,
-  input  wire [2:0]                   pre_valid_i,   // ... those of the cycle after
-  input  wire [3*(CW+IW)-1:0]         pre_idx_i,     //     (early_*_i a cycle ahead)
-  // ... two and three cycles ahead of early_*_i, add and mul ports only,
-  // as far as their tag lines reach (fp3_wb_tag; used with PICK_STAGES = 2)
-  input  wire [1:0]                   pre2_valid_i,
-  input  wire [2*(CW+IW)-1:0]         pre2_idx_i,
-  input  wire [1:0]                   pre3_valid_i,
-  input  wire [2*(CW+IW)-1:0]         pre3_idx_i,
+  input  wire [3:0]                   ahead_valid_i, // add, mul, move, div/sqrt ports
+  input  wire [4*(CW+IW)-1:0]         ahead_idx_i,
+  input  wire [3:0]                   early_valid_i, // ... those of the next cycle
+  input  wire [4*(CW+IW)-1:0]         early_idx_i,
+  input  wire [3:0]                   pre_valid_i,   // ... those of the cycle after
+  input  wire [4*(CW+IW)-1:0]         pre_idx_i,     //     (early_*_i a cycle ahead)
+  // ... two and three cycles ahead of early_*_i, add, mul and div/sqrt
+  // ports only (in this order), as far as their tag lines reach
+  // (fp3_wb_tag; used with PICK_STAGES = 2)
+  input  wire [2:0]                   pre2_valid_i,
+  input  wire [3*(CW+IW)-1:0]         pre2_idx_i,
+  input  wire [2:0]                   pre3_valid_i,
+  input  wire [3*(CW+IW)-1:0]         pre3_idx_i,
   input  wire                         idle_i,        // no busy flag in the last cycle
   // a beq issued two cycles ago, resolved: its context (one-hot; none if
   // no beq was) and outcome
@@ -125,7 +128,7 @@ module fp3_scheduler #(
   output wire [CW+IW-1:0]             ra_o,
   output wire [CW+IW-1:0]             rb_o,
   output wire [CW+IW-1:0]             rd_o,
-  output wire [1:0]                   issue_unit_o,
+  output wire [2:0]                   issue_unit_o,
   output wire                         issue_sub_o,
   output wire [2:0]                   issue_sop_o,   // sign group: {abs/neg/min/max, fp_sign op}
   output wire                         issue_imm_o,   // the move path takes the immediate
@@ -133,12 +136,12 @@ module fp3_scheduler #(
   output wire                         endi_o,        // the issued instruction is an endi
   output wire                         beq_o,         // ... a beq
   // the instruction picked, which issues in the next cycle (PICK_STAGES =
-  // 2; with 0, the one issuing now): it writes a register (add, mul or
-  // move: issue_o && issue_unit_o != UNIT_NONE then), which ({context,
+  // 2; with 0, the one issuing now): it writes a register (add, mul,
+  // move or div/sqrt: issue_o && issue_unit_o != UNIT_NONE then), which ({context,
   // register}: rd_o then), and its unit (issue_unit_o then)
   output wire                         pick_wr_o,
   output wire [CW+IW-1:0]             pick_rd_o,
-  output wire [1:0]                   pick_unit_o
+  output wire [2:0]                   pick_unit_o
 );
   localparam integer NC = NUM_CONTEXTS;
 `include "fp3_sched.vh"
@@ -166,7 +169,8 @@ module fp3_scheduler #(
 
   fp3_sched_fetch #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                     .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB),
-                    .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN), .FETCH_STAGE(FETCH_STAGE)) u_fetch (
+                    .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
+                    .HAS_SIGN(HAS_SIGN), .FETCH_STAGE(FETCH_STAGE)) u_fetch (
     .clk_i        (clk_i),
     .rst_i        (rst_i),
     .running_i    (running_o),

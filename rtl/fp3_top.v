@@ -35,8 +35,9 @@
 //   issue    cycle t: its register addresses go to the register file
 //   read     cycles t + 1 .. t + R: the data leave the register-file RAMs,
 //            bypassed (fp3_regfile READ_STAGES = R)
-//   unit     the FP cores take ADD_LATENCY / MUL_LATENCY cycles and the
-//            move path 1 + P: write-back in cycle W = t + R + latency.
+//   unit     the FP cores take ADD_LATENCY / MUL_LATENCY / DIV_LATENCY
+//            cycles and the move path 1 + P: write-back in cycle
+//            W = t + R + latency.
 // The scoreboard hears of a write-back P + R cycles ahead (fp3_wb_tag), so
 // that a dependent instruction can issue R - 1 cycles before it and take
 // the value from the bypass: it issues 1 + latency cycles after its
@@ -45,15 +46,15 @@
 // block RAM's output register and one in the fabric; fp3_sched_fetch
 // FETCH_STAGE), and cuts the scheduler's loop of readiness and grant
 // twice (fp3_sched_queue g_ready_reg, fp3_sched_issue g_grant_reg), for
-// which the add and mul tag lines announce their write-backs two more
-// cycles ahead where their latency (5 or more) leaves room.  What it
-// costs: a consumer of a move, or of an add or mul of latency L < 5,
+// which the add, mul and div/sqrt tag lines announce their write-backs two
+// more cycles ahead where their latency (5 or more) leaves room.  What it
+// costs: a consumer of a move, or of an add, mul, div or sqrt of latency L < 5,
 // waits 5 - L cycles more (the move path counts as L = 3), a context is
 // granted at most every third cycle and fetches at most every fifth, a
 // beq resolves 10 cycles later
 // (FP3_BEQ_CYCLES + FP3_FMAX_PIPE_CYCLES), a run takes a few cycles more,
 // and host reads take 4 cycles; it needs ADD_LATENCY and MUL_LATENCY of
-// at least 3.
+// at least 3 (and DIV_LATENCY of at least 3).
 //
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
@@ -78,12 +79,13 @@
 //                (hardware sized to a scene: `fp3 configure`)
 //   HAS_SIGN     0: no sign group; abs, neg, min, max are illegal
 //                (1: fp_sign on the move path, fp3_arith)
-//   HAS_DIV, HAS_SQRT  0: div, sqrt are illegal instructions.  Reported
-//                in INFO2; must be 0 (1 is an elaboration error): the
-//                issue path has no div/sqrt write-back port yet
-//                (sw/isa/fp3_isa.h HAS_DIV), so the host refuses programs
-//                with these instructions before running them
-//   DIV_LATENCY  the div/sqrt unit's latency, reported in INFO1[26:19]
+//   HAS_DIV, HAS_SQRT  1: fp_div / fp_sqrt in every lane (fp3_arith's
+//                div/sqrt unit, a fourth write-back port and tag line);
+//                0: div / sqrt are illegal instructions (the host refuses
+//                programs with them before running them).  Reported in
+//                INFO2
+//   DIV_LATENCY  the div/sqrt unit's latency (fp_div and fp_sqrt LATENCY),
+//                1..255, reported in INFO1[26:19]
 //   FMAX_PIPE    0: the default pipeline; 1: for clock rate, registers
 //                before and after the instruction memory, two in the
 //                scheduler's issue loop, two between its grant and the
@@ -113,8 +115,8 @@ module fp3_top #(
   parameter integer HAS_ADD      = 1,
   parameter integer HAS_SUB      = 1,
   parameter integer HAS_MUL      = 1,
-  parameter integer HAS_DIV      = 0,
-  parameter integer HAS_SQRT     = 0,
+  parameter integer HAS_DIV      = 1,
+  parameter integer HAS_SQRT     = 1,
   parameter integer HAS_SIGN     = 1,
   parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0,
@@ -134,7 +136,7 @@ module fp3_top #(
   // trace port (contexts as 6-bit numbers; data: lane l in [32l +: 32])
   output wire        tr_issue_o,
   output wire [5:0]  tr_issue_ctx_o,
-  output wire [1:0]  tr_issue_unit_o,
+  output wire [2:0]  tr_issue_unit_o,
   output wire        tr_endi_o,
   output wire        tr_add_valid_o,
   output wire [5:0]  tr_add_ctx_o,
@@ -147,7 +149,11 @@ module fp3_top #(
   output wire        tr_mov_valid_o,
   output wire [5:0]  tr_mov_ctx_o,
   output wire [7:0]  tr_mov_reg_o,
-  output wire [32*NUM_LANES-1:0] tr_mov_data_o
+  output wire [32*NUM_LANES-1:0] tr_mov_data_o,
+  output wire        tr_div_valid_o,
+  output wire [5:0]  tr_div_ctx_o,
+  output wire [7:0]  tr_div_reg_o,
+  output wire [32*NUM_LANES-1:0] tr_div_data_o
 );
 `include "fp3_isa.vh"
 
@@ -163,6 +169,9 @@ module fp3_top #(
   // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
   localparam integer MOV_LATENCY = 1 + PICK;
+  // The div/sqrt unit is built (either core): else its tag line never
+  // starts an operation, and synthesis removes it and its compares.
+  localparam [0:0] HAS_DSU = HAS_DIV != 0 || HAS_SQRT != 0;
 
   generate
     if (NUM_LANES < 1 || NUM_LANES > MAX_LANES) begin : g_bad_lanes
@@ -170,16 +179,12 @@ module fp3_top #(
       // port's data are sized for 1 .. MAX_LANES lanes.
       fp3_top_error_NUM_LANES_must_be_1_to_64 u_error ();
     end
-    if (FMAX_PIPE != 0 && (ADD_LATENCY < 3 || MUL_LATENCY < 3)) begin : g_bad_latency
+    if (FMAX_PIPE != 0 && (ADD_LATENCY < 3 || MUL_LATENCY < 3 || DIV_LATENCY < 3))
+    begin : g_bad_latency
       // Elaboration error on purpose: the announcement of a write-back
       // (and the cycle before it, fp3_wb_tag early_*) must come after the
       // issue that sets its busy flag: latency >= PICK + 1.
-      fp3_top_error_FMAX_PIPE_needs_ADD_and_MUL_LATENCY_of_at_least_3 u_error ();
-    end
-    if (HAS_DIV != 0 || HAS_SQRT != 0) begin : g_bad_units
-      // Elaboration error on purpose: the div/sqrt unit has no issue path
-      // here (see HAS_DIV above).
-      fp3_top_error_HAS_DIV_and_HAS_SQRT_must_be_0 u_error ();
+      fp3_top_error_FMAX_PIPE_needs_ADD_MUL_and_DIV_LATENCY_of_at_least_3 u_error ();
     end
     if (DIV_LATENCY < 1 || DIV_LATENCY > 255) begin : g_bad_div_latency
       // Elaboration error on purpose: INFO1 reports DIV_LATENCY in 8 bits.
@@ -297,33 +302,35 @@ module fp3_top #(
   reg           br_taken_q;               // beq resolution (read stage)
   reg [NUM_CONTEXTS-1:0] br_q;            // ... its context, one-hot (none: no beq)
   reg [AW-1:0]  br_target_q;
-  wire [1:0]    issue_unit;
+  wire [2:0]    issue_unit;
   wire [31:0]   imm;
   wire [(1<<XW)-1:0] busy;
-  wire          add_valid, mul_valid, mov_valid;
-  wire [XW-1:0] add_idx, mul_idx, mov_idx;
-  wire          adda_valid, mula_valid, mova_valid;   // write-backs AHEAD cycles on
-  wire [XW-1:0] adda_idx, mula_idx, mova_idx;
-  wire          adde_valid, mule_valid, move_valid;   // ... and a cycle before that
-  wire [XW-1:0] adde_idx, mule_idx, move_idx;
-  wire          addp_valid, mulp_valid, movp_valid;   // ... and a cycle before that
-  wire [XW-1:0] addp_idx, mulp_idx, movp_idx;
-  wire          addp2_valid, mulp2_valid, movp2_valid;   // ... and a cycle before that
-  wire [XW-1:0] addp2_idx, mulp2_idx, movp2_idx;
-  wire          addp3_valid, mulp3_valid, movp3_valid;   // ... and a cycle before that
-  wire [XW-1:0] addp3_idx, mulp3_idx, movp3_idx;
+  // The four write-back ports' tag lines: add, mul, move, div/sqrt (div).
+  wire          add_valid, mul_valid, mov_valid, div_valid;
+  wire [XW-1:0] add_idx, mul_idx, mov_idx, div_idx;
+  wire          adda_valid, mula_valid, mova_valid, diva_valid;   // write-backs AHEAD cycles on
+  wire [XW-1:0] adda_idx, mula_idx, mova_idx, diva_idx;
+  wire          adde_valid, mule_valid, move_valid, dive_valid;   // ... and a cycle before that
+  wire [XW-1:0] adde_idx, mule_idx, move_idx, dive_idx;
+  wire          addp_valid, mulp_valid, movp_valid, divp_valid;   // ... and a cycle before that
+  wire [XW-1:0] addp_idx, mulp_idx, movp_idx, divp_idx;
+  wire          addp2_valid, mulp2_valid, movp2_valid, divp2_valid;   // ... and before that
+  wire [XW-1:0] addp2_idx, mulp2_idx, movp2_idx, divp2_idx;
+  wire          addp3_valid, mulp3_valid, movp3_valid, divp3_valid;   // ... and before that
+  wire [XW-1:0] addp3_idx, mulp3_idx, movp3_idx, divp3_idx;
   // (The move line's announcement is its pick: it reaches no further.)
   wire unused_movp23 = &{1'b0, movp2_valid, movp2_idx, movp3_valid, movp3_idx};
-  wire          addn_valid, muln_valid, movn_valid;   // write-backs in two cycles
-  wire [XW-1:0] addn_idx, muln_idx, movn_idx;
+  wire          addn_valid, muln_valid, movn_valid, divn_valid;   // write-backs in two cycles
+  wire [XW-1:0] addn_idx, muln_idx, movn_idx, divn_idx;
   wire          pick_wr;                              // the next issue's destination
   wire [XW-1:0] pick_rd;
-  wire [1:0]    pick_unit;
+  wire [2:0]    pick_unit;
   wire          pick_mov = pick_wr && pick_unit == UNIT_MOV;   // ... to the move path
 
   fp3_scheduler #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
-                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
+                  .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
+                  .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
                   .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
@@ -348,16 +355,16 @@ module fp3_top #(
     .issued_o         (issued),
     .stalls_o         (stalls),
     .busy_i           (busy),
-    .ahead_valid_i    ({mova_valid, mula_valid, adda_valid}),
-    .ahead_idx_i      ({mova_idx, mula_idx, adda_idx}),
-    .early_valid_i    ({move_valid, mule_valid, adde_valid}),
-    .early_idx_i      ({move_idx, mule_idx, adde_idx}),
-    .pre_valid_i      ({movp_valid, mulp_valid, addp_valid}),
-    .pre_idx_i        ({movp_idx, mulp_idx, addp_idx}),
-    .pre2_valid_i     ({mulp2_valid, addp2_valid}),
-    .pre2_idx_i       ({mulp2_idx, addp2_idx}),
-    .pre3_valid_i     ({mulp3_valid, addp3_valid}),
-    .pre3_idx_i       ({mulp3_idx, addp3_idx}),
+    .ahead_valid_i    ({diva_valid, mova_valid, mula_valid, adda_valid}),
+    .ahead_idx_i      ({diva_idx, mova_idx, mula_idx, adda_idx}),
+    .early_valid_i    ({dive_valid, move_valid, mule_valid, adde_valid}),
+    .early_idx_i      ({dive_idx, move_idx, mule_idx, adde_idx}),
+    .pre_valid_i      ({divp_valid, movp_valid, mulp_valid, addp_valid}),
+    .pre_idx_i        ({divp_idx, movp_idx, mulp_idx, addp_idx}),
+    .pre2_valid_i     ({divp2_valid, mulp2_valid, addp2_valid}),
+    .pre2_idx_i       ({divp2_idx, mulp2_idx, addp2_idx}),
+    .pre3_valid_i     ({divp3_valid, mulp3_valid, addp3_valid}),
+    .pre3_idx_i       ({divp3_idx, mulp3_idx, addp3_idx}),
     .idle_i           (idle),
     .br_i             (br_q),
     .br_taken_i       (br_taken_q),
@@ -389,15 +396,15 @@ module fp3_top #(
   // the RAM of every lane's reads (fp3_lane; lanes 1 .. have neither).
   // The host writes the lane LANE names.
   wire [32*NL-1:0] ra_data_l, rb_data_l;            // lane l in [32l +: 32]
-  wire [32*NL-1:0] add_data_l, mul_data_l, mov_data_l;
-  wire [5*NL-1:0]  add_flags_l, mul_flags_l, mov_flags_l;
+  wire [32*NL-1:0] add_data_l, mul_data_l, mov_data_l, div_data_l;
+  wire [5*NL-1:0]  add_flags_l, mul_flags_l, mov_flags_l, div_flags_l;
   wire [(1<<XW)*NL-1:0] busy_l;
   wire [NL-1:0]    idle_l;
-  wire [3*NL-1:0]  lvt_a_l, lvt_b_l;                 // LVT choices (lane 0's used)
+  wire [4*NL-1:0]  lvt_a_l, lvt_b_l;                 // LVT choices (lane 0's used)
   // The read stage's operation, for every lane (below)
   wire          rd_valid, rd_sub, rd_imm, rd_beq;
   wire [2:0]    rd_sop;
-  wire [1:0]    rd_unit;
+  wire [2:0]    rd_unit;
   wire [31:0]   rd_immval;
   wire [CW-1:0] rd_ctx;
   genvar ln;
@@ -406,8 +413,9 @@ module fp3_top #(
       fp3_lane #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE),
                  .CTRL(ln == 0 ? 1 : 0), .HOST_ALL(NL > 1 ? 1 : 0),
                  .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
-                 .MOV_LATENCY(MOV_LATENCY), .ROUND(ROUND), .FTZ(FTZ), .HAS_ADD(HAS_ADD),
-                 .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_SIGN(HAS_SIGN)) u_lane (
+                 .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND),
+                 .FTZ(FTZ), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL),
+                 .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN)) u_lane (
         .clk_i           (clk_i),
         .rst_i           (rst_i),
         .ra_i            (ra),
@@ -423,27 +431,33 @@ module fp3_top #(
         .clr1_idx_i      (FMAX_PIPE != 0 ? mule_idx   : mula_idx),
         .clr2_valid_i    (FMAX_PIPE != 0 ? move_valid : mova_valid),
         .clr2_idx_i      (FMAX_PIPE != 0 ? move_idx   : mova_idx),
+        .clr3_valid_i    (FMAX_PIPE != 0 ? dive_valid : diva_valid),
+        .clr3_idx_i      (FMAX_PIPE != 0 ? dive_idx   : diva_idx),
         .wb0_valid_i     (add_valid),
         .wb0_idx_i       (add_idx),
         .wb1_valid_i     (mul_valid),
         .wb1_idx_i       (mul_idx),
         .wb2_valid_i     (mov_valid),
         .wb2_idx_i       (mov_idx),
+        .wb3_valid_i     (div_valid),
+        .wb3_idx_i       (div_idx),
         .wb0_in2_valid_i (addn_valid),
         .wb0_in2_idx_i   (addn_idx),
         .wb1_in2_valid_i (muln_valid),
         .wb1_in2_idx_i   (muln_idx),
         .wb2_in2_valid_i (movn_valid),
         .wb2_in2_idx_i   (movn_idx),
+        .wb3_in2_valid_i (divn_valid),
+        .wb3_in2_idx_i   (divn_idx),
         .host_sel_i      (host_idle),
         .host_we_i       (host_reg_we && lane_q == ln[LW-1:0]),
         .host_idx_i      ({ctx_q, host_addr_i[IW-1:0]}),
         .host_wdata_i    (host_wdata_i),
         .idle_o          (idle_l[ln]),
-        .lvt_a_o         (lvt_a_l[3*ln +: 3]),
-        .lvt_b_o         (lvt_b_l[3*ln +: 3]),
-        .lvt_a_i         (lvt_a_l[2:0]),
-        .lvt_b_i         (lvt_b_l[2:0]),
+        .lvt_a_o         (lvt_a_l[4*ln +: 4]),
+        .lvt_b_o         (lvt_b_l[4*ln +: 4]),
+        .lvt_a_i         (lvt_a_l[3:0]),
+        .lvt_b_i         (lvt_b_l[3:0]),
         .valid_i         (rd_valid),
         .unit_i          (rd_unit),
         .sub_i           (rd_sub),
@@ -455,7 +469,9 @@ module fp3_top #(
         .mul_data_o      (mul_data_l[32*ln +: 32]),
         .mul_flags_o     (mul_flags_l[5*ln +: 5]),
         .mov_data_o      (mov_data_l[32*ln +: 32]),
-        .mov_flags_o     (mov_flags_l[5*ln +: 5])
+        .mov_flags_o     (mov_flags_l[5*ln +: 5]),
+        .div_data_o      (div_data_l[32*ln +: 32]),
+        .div_flags_o     (div_flags_l[5*ln +: 5])
       );
     end
   endgenerate
@@ -469,7 +485,7 @@ module fp3_top #(
   // The register file answers a read of the issue cycle t in cycle t + READ;
   // the rest of the issued operation waits beside it (one copy for all
   // lanes).
-  fp_pipe #(.WIDTH(1 + 2 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
+  fp_pipe #(.WIDTH(1 + 3 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (issue && issue_unit != UNIT_NONE),
@@ -522,6 +538,28 @@ module fp3_top #(
     .next2_idx_o   (muln_idx),
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
+  );
+  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + DIV_LATENCY), .AHEAD(AHEAD)) u_div_tag (
+    .clk_i         (clk_i),
+    .rst_i         (rst_i),
+    .valid_i       (HAS_DSU && issue && issue_unit == UNIT_DIV),
+    .idx_i         (rd),
+    .pvalid_i      (HAS_DSU && pick_wr && pick_unit == UNIT_DIV),
+    .pidx_i        (pick_rd),
+    .pre_valid_o   (divp_valid),
+    .pre_idx_o     (divp_idx),
+    .pre2_valid_o  (divp2_valid),
+    .pre2_idx_o    (divp2_idx),
+    .pre3_valid_o  (divp3_valid),
+    .pre3_idx_o    (divp3_idx),
+    .early_valid_o (dive_valid),
+    .early_idx_o   (dive_idx),
+    .ahead_valid_o (diva_valid),
+    .ahead_idx_o   (diva_idx),
+    .next2_valid_o (divn_valid),
+    .next2_idx_o   (divn_idx),
+    .wb_valid_o    (div_valid),
+    .wb_idx_o      (div_idx)
   );
   // The move path's tag line announces a cycle after the issue at the
   // latest (MOV_LATENCY = 1 + PICK, so its early_* are its input).  With
@@ -599,13 +637,15 @@ module fp3_top #(
       wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
       wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
       wire mov_here = mov_valid && mov_idx[XW-1:IW] == FCTX;
+      wire div_here = div_valid && div_idx[XW-1:IW] == FCTX;
       for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
         always @(posedge clk_i) begin
           if (rst_i || fclr_q) flags_q[fc*NL+fl] <= 5'd0;
           else flags_q[fc*NL+fl] <= flags_q[fc*NL+fl] |
                                     (add_here ? add_flags_l[5*fl +: 5] : 5'd0) |
                                     (mul_here ? mul_flags_l[5*fl +: 5] : 5'd0) |
-                                    (mov_here ? mov_flags_l[5*fl +: 5] : 5'd0);
+                                    (mov_here ? mov_flags_l[5*fl +: 5] : 5'd0) |
+                                    (div_here ? div_flags_l[5*fl +: 5] : 5'd0);
         end
       end
     end
@@ -748,6 +788,10 @@ module fp3_top #(
   assign tr_mov_ctx_o    = {{(6-CW){1'b0}}, mov_idx[XW-1:IW]};
   assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_idx[IW-1:0]};
   assign tr_mov_data_o   = mov_data_l;
+  assign tr_div_valid_o  = div_valid;
+  assign tr_div_ctx_o    = {{(6-CW){1'b0}}, div_idx[XW-1:IW]};
+  assign tr_div_reg_o    = {{(8-IW){1'b0}}, div_idx[IW-1:0]};
+  assign tr_div_data_o   = div_data_l;
 
   // Host address bits that select windows but are not register indices.
   wire unused_addr = &{1'b0, host_addr_i};

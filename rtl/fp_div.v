@@ -30,11 +30,17 @@
 //                rounding increment (fp_round)
 //   s = 29       overflow, flush to zero, flags, special result
 //                (fp_round_pack); then the output register
-// The LATENCY - 1 registers besides the output register are spread evenly
-// over the 29 places after steps 0 .. 28: place s holds one iff
-// floor((s + 1) L / 30) differs from floor(s L / 30), L = min(LATENCY, 30),
-// so every pipeline stage has about 30 / L steps.  LATENCY > 30 adds
-// output delay stages.
+// The LATENCY - 1 registers besides the output register: with L =
+// min(LATENCY, 30) >= 2, one right after the unpack step (place 0: the
+// leading-zero count, the normalising shift and the special cases take
+// about as long as four recurrence steps, so they get a stage of their
+// own), and the other L - 2 spread evenly over the 28 places after steps
+// 1 .. 28: place s holds one iff floor(s (L - 1) / 29) differs from
+// floor((s - 1) (L - 1) / 29), so every later stage has about 29 / (L - 1)
+// steps (L = 8: the unpack step, then stages of 5, 4, 4, 4, 4, 4 steps and
+// a last one of 2 steps, the rounding and the pack).  L = 1: no register
+// but the output one (rtl/fp_recur.vh).  LATENCY > 30 adds output delay
+// stages.
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the
@@ -108,11 +114,7 @@ module fp_div #(
   endgenerate
 
   // Registers after step s (0 .. NPLACE - 2): the header's rule.
-  function integer regs_after(input integer s);
-    begin
-      regs_after = ((s + 1) * LC) / NPLACE - (s * LC) / NPLACE;
-    end
-  endfunction
+`include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
   // s = 0: unpack, special cases, normalisation, exponent

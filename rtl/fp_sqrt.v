@@ -28,10 +28,14 @@
 //   s = 27       rounding increment (fp_round)
 //   s = 28       flags, special result (fp_round_pack); then the output
 //                register
-// The LATENCY - 1 registers besides the output register are spread evenly
-// over the 28 places after steps 0 .. 27: place s holds one iff
-// floor((s + 1) L / 29) differs from floor(s L / 29), L = min(LATENCY,
-// 29).  LATENCY > 29 adds output delay stages.
+// The LATENCY - 1 registers besides the output register, as fp_div's:
+// with L = min(LATENCY, 29) >= 2, one right after the unpack step (place
+// 0: normalisation and special cases get a stage of their own), and the
+// other L - 2 spread evenly over the 27 places after steps 1 .. 27: place
+// s holds one iff floor(s (L - 1) / 28) differs from
+// floor((s - 1) (L - 1) / 28).  L = 1: no register but the output one
+// (rtl/fp_recur.vh).
+// LATENCY > 29 adds output delay stages.
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operand being sampled to the
@@ -92,11 +96,7 @@ module fp_sqrt #(
   endgenerate
 
   // Registers after step s (0 .. NPLACE - 2): the header's rule.
-  function integer regs_after(input integer s);
-    begin
-      regs_after = ((s + 1) * LC) / NPLACE - (s * LC) / NPLACE;
-    end
-  endfunction
+`include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
   // s = 0: unpack, special cases, exponent, radicand

@@ -28,6 +28,9 @@ typedef struct fp3_model_in {
 /* Lanes a model may have (FP3_MAX_LANES of sw/isa/fp3_isa.h). */
 #define FP3_MODEL_MAX_LANES 64
 
+/* Write-back ports of the trace port (fp3_top tr_{add,mul,mov,div}_*). */
+#define FP3_MODEL_WB_PORTS 4
+
 /* Outputs of one cycle. */
 typedef struct fp3_model_out {
   uint32_t rdata;       /* host read data for this cycle's addr   */
@@ -36,11 +39,12 @@ typedef struct fp3_model_out {
   unsigned issue_ctx;   /* ... by this context                    */
   unsigned issue_unit;  /* its unit, FP3_UNIT_*                   */
   int endi;             /* the issued instruction is an endi      */
-  int wb_valid[3];      /* write-back ports: 0 add, 1 mul, 2 move */
-  unsigned wb_ctx[3];
-  unsigned wb_reg[3];
-  uint32_t wb_data[3][FP3_MODEL_MAX_LANES]; /* [port][lane]: the model's
-                                           NUM_LANES lanes are filled */
+  int wb_valid[FP3_MODEL_WB_PORTS];  /* write-back ports: 0 add, 1 mul, 2 move,
+                                        3 div/sqrt (port u: unit u + 1) */
+  unsigned wb_ctx[FP3_MODEL_WB_PORTS];
+  unsigned wb_reg[FP3_MODEL_WB_PORTS];
+  uint32_t wb_data[FP3_MODEL_WB_PORTS][FP3_MODEL_MAX_LANES]; /* [port][lane]: the
+                                        model's NUM_LANES lanes are filled */
 } fp3_model_out;
 
 /*

@@ -84,6 +84,10 @@ static void cycle(fp3_model *handle, const fp3_model_in *in, fp3_model_out *out)
     out->wb_ctx[2] = t->tr_mov_ctx_o;
     out->wb_reg[2] = t->tr_mov_reg_o;
     lanes_out(out->wb_data[2], t->tr_mov_data_o);
+    out->wb_valid[3] = t->tr_div_valid_o;
+    out->wb_ctx[3] = t->tr_div_ctx_o;
+    out->wb_reg[3] = t->tr_div_reg_o;
+    lanes_out(out->wb_data[3], t->tr_div_data_o);
   }
   m->half_cycle(1);  // the rising edge
   if (out) out->rdata = t->host_rdata_o;

@@ -59,6 +59,9 @@ module tb_fp3 #(
   parameter integer HAS_ADD     = 1,
   parameter integer HAS_SUB     = 1,
   parameter integer HAS_MUL     = 1,
+  parameter integer HAS_DIV     = 1,
+  parameter integer HAS_SQRT    = 1,
+  parameter integer DIV_LATENCY = 8,
   parameter integer FMAX_PIPE   = 0,
   parameter integer HALF_PERIOD = 5,       // ns: a 100 MHz clock
   parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cli/cmd_tbgen.h)
@@ -70,7 +73,8 @@ module tb_fp3 #(
   localparam integer NC       = NUM_CONTEXTS;
   localparam integer NL       = NUM_LANES;
   localparam integer IW       = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);  // as fp3_top
-  localparam integer MAX_LAT  = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
+  localparam integer MAX_AM   = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
+  localparam integer MAX_LAT  = MAX_AM > DIV_LATENCY ? MAX_AM : DIV_LATENCY;
   localparam integer READ     = 1 + 3 * FMAX_PIPE;   // host read cycles, operand-read stages
   localparam integer RUN_WORDS = 16;                 // run.hex layout
   localparam integer R_MAGIC = 0, R_VERSION = 1, R_NWORDS = 2, R_NUM_REGS = 3,
@@ -91,11 +95,11 @@ module tb_fp3 #(
   wire [31:0] host_rdata;
   wire        running, done;
   wire        tr_issue, tr_endi;
-  wire [5:0]  tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx;
-  wire [1:0]  tr_issue_unit;
-  wire        tr_add_valid, tr_mul_valid, tr_mov_valid;
-  wire [7:0]  tr_add_reg, tr_mul_reg, tr_mov_reg;
-  wire [32*NL-1:0] tr_add_data, tr_mul_data, tr_mov_data;   // lane l: [32l +: 32]
+  wire [5:0]  tr_issue_ctx, tr_add_ctx, tr_mul_ctx, tr_mov_ctx, tr_div_ctx;
+  wire [2:0]  tr_issue_unit;
+  wire        tr_add_valid, tr_mul_valid, tr_mov_valid, tr_div_valid;
+  wire [7:0]  tr_add_reg, tr_mul_reg, tr_mov_reg, tr_div_reg;
+  wire [32*NL-1:0] tr_add_data, tr_mul_data, tr_mov_data, tr_div_data;   // lane l: [32l +: 32]
 
   fp3_top #(
     .NUM_CONTEXTS (NUM_CONTEXTS),
@@ -109,6 +113,9 @@ module tb_fp3 #(
     .HAS_ADD     (HAS_ADD),
     .HAS_SUB     (HAS_SUB),
     .HAS_MUL     (HAS_MUL),
+    .HAS_DIV     (HAS_DIV),
+    .HAS_SQRT    (HAS_SQRT),
+    .DIV_LATENCY (DIV_LATENCY),
     .FMAX_PIPE   (FMAX_PIPE)
   ) dut (
     .clk_i           (clk),
@@ -135,7 +142,11 @@ module tb_fp3 #(
     .tr_mov_valid_o  (tr_mov_valid),
     .tr_mov_ctx_o    (tr_mov_ctx),
     .tr_mov_reg_o    (tr_mov_reg),
-    .tr_mov_data_o   (tr_mov_data)
+    .tr_mov_data_o   (tr_mov_data),
+    .tr_div_valid_o  (tr_div_valid),
+    .tr_div_ctx_o    (tr_div_ctx),
+    .tr_div_reg_o    (tr_div_reg),
+    .tr_div_data_o   (tr_div_data)
   );
 
   always #(HALF_PERIOD) clk = !clk;
@@ -273,8 +284,10 @@ module tb_fp3 #(
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
       else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
+      else
+        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram30.g_any.mem[x];
     end
   endfunction
   function [31:0] dbg_reg_last;  // ... of the last lane
@@ -289,8 +302,10 @@ module tb_fp3 #(
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
       else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else
+      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];
+      else
+        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram30.g_any.mem[x];
     end
   endfunction
 
@@ -343,9 +358,9 @@ module tb_fp3 #(
   reg [31:0]  cur     [0:2*NC*NL-1];  // latest v, s of context c, lane l: [(2c + w) NL + l]
   integer     next_k  [0:2*NC*NL-1];  // next integration to finalise
   integer     endis   [0:NC-1];    // endi issued per context
-  reg [31:0]  tagq    [0:4*FIFO_DEPTH-1];  // unit u: u*FIFO_DEPTH ..
-  integer     tag_head [0:3];
-  integer     tag_cnt  [0:3];
+  reg [31:0]  tagq    [0:5*FIFO_DEPTH-1];  // unit u: u*FIFO_DEPTH ..
+  integer     tag_head [0:4];
+  integer     tag_cnt  [0:4];
 
   task fail_msg;  // count and print one error
     input [8*160-1:0] text;
@@ -386,7 +401,7 @@ module tb_fp3 #(
     end
   endtask
 
-  task write_back;  // a result leaves unit u (1 add, 2 mul, 3 move), every lane
+  task write_back;  // a result leaves unit u (1 add, 2 mul, 3 move, 4 div/sqrt), every lane
     input integer u;
     input [5:0]   ctx;
     input [7:0]   r;
@@ -435,6 +450,7 @@ module tb_fp3 #(
       if (tr_add_valid) write_back(1, tr_add_ctx, tr_add_reg, tr_add_data);
       if (tr_mul_valid) write_back(2, tr_mul_ctx, tr_mul_reg, tr_mul_data);
       if (tr_mov_valid) write_back(3, tr_mov_ctx, tr_mov_reg, tr_mov_data);
+      if (tr_div_valid) write_back(4, tr_div_ctx, tr_div_reg, tr_div_data);
       if (tr_issue && {26'd0, tr_issue_ctx} >= contexts) fail_msg("issue from a context not started");
       else if (tr_issue && tr_issue_unit != UNIT_NONE) begin
         if (tag_cnt[tr_issue_unit] == FIFO_DEPTH) fail_msg("tag FIFO overflow");
@@ -455,7 +471,7 @@ module tb_fp3 #(
       // is work-conserving)
       if (dbg_stall) probe_stalls = probe_stalls + 1;
       if (dbg_stall && |(dbg_free_q & dbg_waiting)) fail_msg("a stall while a context was free to issue");
-      if (tr_issue || tr_add_valid || tr_mul_valid || tr_mov_valid) quiet = 0;
+      if (tr_issue || tr_add_valid || tr_mul_valid || tr_mov_valid || tr_div_valid) quiet = 0;
       else quiet = quiet + 1;
       if (quiet >= STALL_LIMIT) hang("no issue and no write-back for STALL_LIMIT cycles");
       if (run_cycle >= watchdog_limit) hang("run not done within the cycle budget");
@@ -540,7 +556,7 @@ module tb_fp3 #(
       $display("FAIL: tb_fp3: +contexts=%0d: this build has 1 .. %0d contexts", contexts, NC);
       finish(1);
     end
-    for (u = 0; u < 4; u = u + 1) begin
+    for (u = 0; u < 5; u = u + 1) begin
       tag_head[u] = 0;
       tag_cnt[u] = 0;
     end
@@ -590,8 +606,9 @@ module tb_fp3 #(
     host_read(HR_INFO0, rd);
     expect_eq("INFO0", rd, {IMEM_DEPTH[15:0], NUM_REGS[15:0]});
     host_read(HR_INFO2, rd);
-    // (HAS_SIGN 1, HAS_SQRT 0, HAS_DIV 0: fp3_top's defaults)
-    expect_eq("INFO2", rd, {NL[7:0], 2'd0, 3'b100, HAS_MUL[0], HAS_SUB[0], HAS_ADD[0], NC[15:0]});
+    // (HAS_SIGN 1: fp3_top's default)
+    expect_eq("INFO2", rd, {NL[7:0], 2'd0, 1'b1, HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0], HAS_SUB[0],
+                            HAS_ADD[0], NC[15:0]});
 
     // program (every entry), registers of each context, steps, start
     for (i = 0; i < IMEM_DEPTH; i = i + 1) begin
@@ -623,7 +640,7 @@ module tb_fp3 #(
     for (c = 0; c < contexts; c = c + 1)
       for (l = 0; l < NL; l = l + 1)
         for (u = 0; u < 2; u = u + 1) finalise(c, l, u, run[R_NCHECK] + 1);
-    for (u = 1; u < 4; u = u + 1)
+    for (u = 1; u < 5; u = u + 1)
       if (tag_cnt[u] != 0) begin
         errors = errors + 1;
         $display("ERROR: run ended with %0d results of unit %0d not written back", tag_cnt[u], u);

@@ -288,6 +288,7 @@ static void expect_compiled_exact(fp3_engine *rtl) {
       o.fold = o.drop_zero = fold;
       o.add_latency = rtl->config.add_latency;
       o.mul_latency = rtl->config.mul_latency;
+      o.div_latency = rtl->config.div_latency;
       o.fmax_pipe = rtl->config.fmax_pipe;
       fp3_compiled *c = NULL;
       char msg[300];
@@ -313,19 +314,25 @@ static void expect_compiled_exact(fp3_engine *rtl) {
 /* Moves, which compiled bodies lack, estimated exactly: dependence chains
  * through multiplies and a mov closing the loop (the first: its waits
  * fill the queue, which then limits the fetch; the second: two moves on
- * the chain, which the move path's latency decides). */
+ * the chain, which the move path's latency decides); and the div/sqrt
+ * unit (the third: a chain through a div and a sqrt, DIV_LATENCY each,
+ * beside an independent sqrt on the same write-back port). */
 static void expect_moves_exact(fp3_engine *rtl) {
   static const char *const progs[] = {
       "li r4, 1.0\nbody:\nmul r1, r2, r4\nmul r6, r1, r4\nmul r7, r6, r4\nmov r2, r7\n"
       "endi body\n",
       "li r4, 1.0\nli r2, 2.0\nbody:\nmul r1, r2, r4\nmov r5, r1\nmul r6, r5, r4\n"
       "mov r2, r6\nendi body\n",
+      "li r4, 2.0\nli r2, 3.0\nbody:\ndiv r1, r2, r4\nsqrt r3, r4\nsqrt r6, r1\nmul r7, r6, r4\n"
+      "mov r2, r7\nendi body\n",
   };
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
   o.add_latency = rtl->config.add_latency;
   o.mul_latency = rtl->config.mul_latency;
+  o.div_latency = rtl->config.div_latency;
   o.fmax_pipe = rtl->config.fmax_pipe;
+  assert_true(rtl->config.has_div && rtl->config.has_sqrt);
   for (size_t i = 0; i < sizeof progs / sizeof progs[0]; i++) {
     fp3_image img;
     char *errs = NULL;

@@ -6,9 +6,12 @@
  *    per-register write-back sequences (values and integration tags),
  *    final registers, status and flags equal; the ship's v and s after
  *    every integration equal the golden model's;
- *  - hazards: dependent chains, WAW, move bypass, with exact stall counts
- *    derived from the model's latencies;
- *  - random hazard-dense programs and random instruction words (errors).
+ *  - hazards: dependent chains, WAW, move bypass, the div/sqrt unit, with
+ *    exact stall counts derived from the model's latencies;
+ *  - random hazard-dense programs (every unit the build has, div and sqrt
+ *    included) and random instruction words (errors);
+ *  - a program with an instruction of a unit the build lacks (div, sqrt
+ *    on a build without HAS_DIV, HAS_SQRT) refused naming the parameter.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -518,6 +521,62 @@ static void test_sign_chain(void **state) {
   capture_free(&b);
 }
 
+/* The div/sqrt unit (fp_div and fp_sqrt on one write-back port and tag
+ * line, DIV_LATENCY cycles): each dependent link waits for the read stage
+ * plus DIV_LATENCY, as an add or mul chain does for its core; div and sqrt
+ * issued back to back leave in issue order on the shared port; a div's
+ * destination written again waits for its write-back (WAW); x / 0, 0 / 0
+ * and sqrt(-1) raise their flags; every result and flag as the ISS
+ * computes it. */
+static void test_div_sqrt(void **state) {
+  (void)state;
+  assert_true(rtl->config.has_div && rtl->config.has_sqrt);
+  const unsigned ld = FP3_READ_CYCLES + rtl->config.div_latency;
+  capture a, b;
+  run_both("div r1, r1, r2\ndiv r1, r1, r2\nsqrt r1, r1\nsqrt r1, r1\nhalt\n", 1, &a, &b);
+  assert_int_equal(a.st.stalls, START_STALLS + 3 * (ld - 1) + SPACING_STALLS);
+  assert_int_equal(a.st.issued, 5);
+  uint32_t want = fpref_bits(1.25f);
+  want = fpref_div(want, fpref_bits(1.5f), FPREF_IEEE, NULL);
+  want = fpref_div(want, fpref_bits(1.5f), FPREF_IEEE, NULL);
+  want = fpref_sqrt(fpref_sqrt(want, FPREF_IEEE, NULL), FPREF_IEEE, NULL);
+  assert_int_equal(a.final[1], want);
+  assert_int_equal(a.reg[1].n, 4);
+  capture_free(&a);
+  capture_free(&b);
+  /* Independent: one issue every FP3_ISSUE_SPACING cycles, the add waits
+   * for the sqrt issued second. */
+  run_both("div r3, r2, r1\nsqrt r4, r2\ndiv r5, r1, r2\nsqrt r6, r1\nadd r7, r3, r4\nhalt\n",
+           1, &a, &b);
+  unsigned at = 4 * FP3_ISSUE_SPACING, ready = FP3_ISSUE_SPACING + ld;
+  assert_int_equal(a.st.stalls, START_STALLS + 5 * SPACING_STALLS + (ready > at ? ready - at : 0));
+  assert_int_equal(a.final[3], fpref_div(fpref_bits(1.5f), fpref_bits(1.25f), FPREF_IEEE, NULL));
+  assert_int_equal(a.final[6], fpref_sqrt(fpref_bits(1.25f), FPREF_IEEE, NULL));
+  capture_free(&a);
+  capture_free(&b);
+  /* WAW: the li lands after the div. */
+  run_both("div r1, r2, r3\nli r1, 7.0\nhalt\n", 1, &a, &b);
+  assert_int_equal(a.st.stalls, START_STALLS + ld - 1 + SPACING_STALLS);
+  assert_int_equal(a.final[1], fpref_bits(7.0f));
+  assert_int_equal(a.reg[1].n, 2);
+  capture_free(&a);
+  capture_free(&b);
+  /* The flags: divide by zero, invalid (0 / 0, sqrt of a negative). */
+  run_both("li r1, 1.0\nli r2, 0.0\ndiv r3, r1, r2\nhalt\n", 1, &a, &b);
+  assert_int_equal(a.final[3], 0x7F800000u);
+  assert_int_equal(a.st.flags, FP3_FLAG_INFINITE);
+  capture_free(&a);
+  capture_free(&b);
+  run_both("li r2, 0.0\nli r1, -1.0\ndiv r3, r2, r2\nsqrt r4, r1\nsqrt r5, r2\nhalt\n", 1, &a,
+           &b);
+  assert_int_equal(a.final[3], 0xFFC00000u);
+  assert_int_equal(a.final[4], 0xFFC00000u);
+  assert_int_equal(a.final[5], 0u);
+  assert_int_equal(a.st.flags, FP3_FLAG_INVALID);
+  capture_free(&a);
+  capture_free(&b);
+}
+
 /* The build for clock rate (FMAX_PIPE, the 3-context model: ADD_LATENCY 4,
  * MUL_LATENCY 3) keeps the dependent-issue distances of the default
  * pipeline (write-backs are announced earlier, for its pick, read and
@@ -579,6 +638,11 @@ static void test_fmax_pipe(void **state) {
                    FP3_READ_CYCLES + fmax_latency(e->config.add_latency));
   assert_int_equal(fmax_cycles(e, mul4) - fmax_cycles(e, mul3),
                    FP3_READ_CYCLES + fmax_latency(e->config.mul_latency));
+  const char *div3 = "div r3, r3, r2\nsqrt r3, r3\ndiv r3, r3, r2\nhalt\n";
+  const char *div4 = "div r3, r3, r2\nsqrt r3, r3\ndiv r3, r3, r2\nsqrt r3, r3\nhalt\n";
+  assert_true(e->config.has_div && e->config.has_sqrt);
+  assert_int_equal(fmax_cycles(e, div4) - fmax_cycles(e, div3),
+                   FP3_READ_CYCLES + fmax_latency(e->config.div_latency));
   /* The 3-cycle move path, bit-exact. */
   fmax_cycles(e, "li r1, 3.0\nmov r2, r1\nmov r3, r2\nadd r4, r3, r3\nhalt\n");
   /* A taken beq costs FP3_BEQ_CYCLES on the default build, and
@@ -678,6 +742,14 @@ static uint64_t random_ext_op(const fp3_config *c, unsigned rd, unsigned ra, uns
   return fp3_insn_make(rnd() % 2 ? FP3_OP_ADD : FP3_OP_MUL, rd, ra, rb, 0);
 }
 
+/* A div or a sqrt where the build has them (dense hazards on the div/sqrt
+ * unit, its shared write-back port and its longer latency), else a nop. */
+static uint64_t random_div_op(const fp3_config *c, unsigned rd, unsigned ra, unsigned rb) {
+  if (c->has_div && (rnd() % 2 || !c->has_sqrt)) return fp3_insn_make(FP3_OP_DIV, rd, ra, rb, 0);
+  if (c->has_sqrt) return fp3_insn_make(FP3_OP_SQRT, rd, ra, 0, 0);
+  return fp3_insn_make(FP3_OP_NOP, 0, 0, 0, 0);
+}
+
 /* Hazard-dense: few registers, all units of configuration c (every
  * operation the build has), a loop. */
 static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) {
@@ -692,8 +764,9 @@ static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) 
     /* beq: ahead to any later word up to the endi (body + len); few
      * registers, copies and repeated constants make it taken often. */
     uint32_t target = (uint32_t)(n + 1 + rnd() % (body + len - n));
-    switch (rnd() % 11) {
+    switch (rnd() % 12) {
       case 9: case 10: img->words[n++] = random_ext_op(c, rd, ra, rb); break;
+      case 11: img->words[n++] = random_div_op(c, rd, ra, rb); break;
       case 7: img->words[n++] = fp3_insn_make(FP3_OP_BEQ, 0, ra, rb, target); break;
       case 0: case 1: img->words[n++] = fp3_insn_make(FP3_OP_ADD, rd, ra, rb, 0); break;
       case 2: img->words[n++] = fp3_insn_make(FP3_OP_SUB, rd, ra, rb, 0); break;
@@ -792,10 +865,11 @@ static void test_random_words(void **state) {
   }
 }
 
-/* Every new operation on the default build: those it has run bit-exact
- * against the ISS (a dependent chain through each); those it lacks are
- * refused by the host, naming the parameter, and raise ILLEGAL_INSN at
- * their pc when loaded past the host's check. */
+/* Every new operation on the default build and on a build without the
+ * div/sqrt unit: those a build has run bit-exact against the ISS (a
+ * dependent chain through each); those it lacks are refused by the host,
+ * naming the parameter, and raise ILLEGAL_INSN at their pc when loaded
+ * past the host's check. */
 static void test_new_ops_or_refusal(void **state) {
   (void)state;
   static const struct {
@@ -815,31 +889,45 @@ static void test_new_ops_or_refusal(void **state) {
       {"li r1, -2.0\nli r2, 3.0\nmax r3, r1, r2\nmul r4, r3, r2\nhalt\n", "max", "HAS_SIGN",
        offsetof(fp3_config, has_sign)},
   };
-  for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++) {
-    fp3_image img;
-    assemble(ops[i].src, &img);
-    const unsigned has = *(const unsigned *)((const char *)&rtl->config + ops[i].has_off);
-    if (has) {
-      capture a, b;
-      run_on(rtl, &img, NULL, 0, 1, &a);
-      run_on(iss, &img, NULL, 0, 1, &b);
-      compare_captures(&a, &b, ops[i].mnem);
-      capture_free(&a);
-      capture_free(&b);
-      continue;
+  /* The default build (every unit) and the one-context build without the
+   * div/sqrt unit (HAS_DIV = HAS_SQRT = 0, mk/rtl.mk nc1). */
+  fp3_engine *nc1 = fp3_engine_rtl_new_model(&fp3_model_nc1, NULL);
+  assert_non_null(nc1);
+  assert_true(rtl->config.has_div && rtl->config.has_sqrt && rtl->config.has_sign);
+  assert_true(!nc1->config.has_div && !nc1->config.has_sqrt);
+  fp3_engine *const engines[] = {rtl, nc1};
+  unsigned refused = 0;
+  for (size_t k = 0; k < 2; k++)
+    for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++) {
+      fp3_engine *e = engines[k];
+      fp3_image img;
+      assemble(ops[i].src, &img);
+      const unsigned has = *(const unsigned *)((const char *)&e->config + ops[i].has_off);
+      if (has) {
+        capture a, b;
+        run_on(e, &img, NULL, 0, 1, &a);
+        run_on(iss, &img, NULL, 0, 1, &b);
+        compare_captures(&a, &b, ops[i].mnem);
+        capture_free(&a);
+        capture_free(&b);
+        continue;
+      }
+      assert_int_equal(fp3_engine_load(e, img.words, img.n), -1);
+      char want[128];
+      snprintf(want, sizeof want, "uses %s (pc 2)", ops[i].mnem);
+      if (!strstr(fp3_engine_error(e), want) || !strstr(fp3_engine_error(e), ops[i].param))
+        fail_msg("%s: refusal '%s' lacks '%s' or %s", ops[i].mnem, fp3_engine_error(e), want,
+                 ops[i].param);
+      /* Past the host's check, the scheduler finds the word illegal. */
+      assert_int_equal(e->ops->load_program(e, img.words, img.n), 0);
+      fp3_status st;
+      assert_int_equal(fp3_engine_run(e, 1, NULL, &st), 0);
+      assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
+      assert_int_equal(st.fault_pc, 2);
+      refused++;
     }
-    assert_int_equal(fp3_engine_load(rtl, img.words, img.n), -1);
-    char want[128];
-    snprintf(want, sizeof want, "uses %s (pc 2)", ops[i].mnem);
-    if (!strstr(fp3_engine_error(rtl), want) || !strstr(fp3_engine_error(rtl), ops[i].param))
-      fail_msg("%s: refusal '%s' lacks '%s' or %s", ops[i].mnem, fp3_engine_error(rtl), want,
-               ops[i].param);
-    assert_int_equal(rtl->ops->load_program(rtl, img.words, img.n), 0);
-    fp3_status st;
-    assert_int_equal(fp3_engine_run(rtl, 1, NULL, &st), 0);
-    assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
-    assert_int_equal(st.fault_pc, 2);
-  }
+  assert_int_equal(refused, 2);   /* div and sqrt on nc1 */
+  fp3_engine_free(nc1);
 }
 
 /* ---- many objects: contexts sharing one arithmetic unit -------------------- */
@@ -1286,6 +1374,7 @@ int main(void) {
       cmocka_unit_test(test_random_programs),
       cmocka_unit_test(test_random_words),
       cmocka_unit_test(test_sign_chain),
+      cmocka_unit_test(test_div_sqrt),
       cmocka_unit_test(test_new_ops_or_refusal),
       cmocka_unit_test(test_many_ships),
       cmocka_unit_test(test_random_programs_contexts),

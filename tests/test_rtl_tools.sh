@@ -34,15 +34,16 @@ echo "PASS: no latch after yosys proc (default and FMAX_PIPE=1 builds)"
 # make pnr-unit's wrapper (scripts/unit-wrap.py): for the register file of
 # the build for clock rate it elaborates in Icarus without a warning, its
 # input shift register is as wide as the module's inputs but the reset,
-# which comes from a pin (13 8-bit indices, 4 32-bit words and 12 one-bit
-# inputs: 244), and a module it cannot find is an error.
+# which comes from a pin (16 8-bit indices, 5 32-bit words, 15 one-bit
+# inputs and the two 4-bit LVT choices: 311), and a module it cannot find
+# is an error.
 ${YOSYS:-yosys} -q -p "read_verilog -Irtl ${src//$'\n'/ }; hierarchy -top fp3_regfile -chparam ENTRIES 256 \
   -chparam XW 8 -chparam READ_STAGES 4; proc; write_json $tmp/ports.json" >/dev/null 2>&1 || {
   echo "FAIL: yosys could not elaborate fp3_regfile for unit-wrap.py"; exit 1; }
 python3 scripts/unit-wrap.py fp3_regfile "$tmp/ports.json" ENTRIES=256 XW=8 READ_STAGES=4 \
   > "$tmp/unit.v" || { echo "FAIL: unit-wrap.py"; exit 1; }
-grep -q "reg \[243:0\] chain;" "$tmp/unit.v" && grep -q "\.rst_i(rst_i)" "$tmp/unit.v" || {
-  grep "chain;" "$tmp/unit.v"; echo "FAIL: unit-wrap.py: input chain is not 244 bits, or the reset not from its pin"; exit 1; }
+grep -q "reg \[310:0\] chain;" "$tmp/unit.v" && grep -q "\.rst_i(rst_i)" "$tmp/unit.v" || {
+  grep "chain;" "$tmp/unit.v"; echo "FAIL: unit-wrap.py: input chain is not 311 bits, or the reset not from its pin"; exit 1; }
 iverilog -g2005 -Wall -Irtl -s fp3_unit -o "$tmp/unit.vvp" $src "$tmp/unit.v" 2>"$tmp/iu.log" || {
   cat "$tmp/iu.log"; echo "FAIL: iverilog on the unit-wrap.py wrapper"; exit 1; }
 if grep -v "^\s*$" "$tmp/iu.log" | grep -qi "warning"; then
@@ -51,4 +52,4 @@ if python3 scripts/unit-wrap.py no_such_module "$tmp/ports.json" 2>"$tmp/err.txt
   echo "FAIL: unit-wrap.py accepted a missing module"; exit 1; fi
 grep -q "module 'no_such_module' not in" "$tmp/err.txt" || {
   cat "$tmp/err.txt"; echo "FAIL: unit-wrap.py: no clear error for a missing module"; exit 1; }
-echo "PASS: unit-wrap.py wraps fp3_regfile (244 input bits, the reset from a pin), elaborates, refuses a missing module"
+echo "PASS: unit-wrap.py wraps fp3_regfile (311 input bits, the reset from a pin), elaborates, refuses a missing module"

@@ -254,6 +254,7 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
   if (hw) { /* the engine's build: its latencies, registers, pipeline */
     if (hw->add_latency) o.add_latency = hw->add_latency;
     if (hw->mul_latency) o.mul_latency = hw->mul_latency;
+    if (hw->div_latency) o.div_latency = hw->div_latency;
     if (hw->num_regs) o.num_regs = hw->num_regs;
     o.fmax_pipe = hw->fmax_pipe;
   }

@@ -57,6 +57,7 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
       fp3_compile_defaults(&o);
       o.add_latency = c->engine->config.add_latency ? c->engine->config.add_latency : o.add_latency;
       o.mul_latency = c->engine->config.mul_latency ? c->engine->config.mul_latency : o.mul_latency;
+      o.div_latency = c->engine->config.div_latency ? c->engine->config.div_latency : o.div_latency;
       o.num_regs = c->engine->config.num_regs ? c->engine->config.num_regs : o.num_regs;
       o.fmax_pipe = c->engine->config.fmax_pipe;
     }

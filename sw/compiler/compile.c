@@ -343,6 +343,7 @@ static unsigned unit_latency(const fp3_compile_opts *o, unsigned unit) {
   case FP3_UNIT_ADD: lat = o->add_latency; break;
   case FP3_UNIT_MUL: lat = o->mul_latency; break;
   case FP3_UNIT_MOV: lat = o->mov_latency + (o->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0); break;
+  case FP3_UNIT_DIV: lat = o->div_latency; break;
   default: return 1;
   }
   if (o->fmax_pipe && lat < FP3_FMAX_PIPE_FULL_LEAD_LATENCY) lat = FP3_FMAX_PIPE_FULL_LEAD_LATENCY;
@@ -550,6 +551,7 @@ void fp3_compile_defaults(fp3_compile_opts *o) {
   o->add_latency = FP3_DEFAULT_ADD_LATENCY;
   o->mul_latency = FP3_DEFAULT_MUL_LATENCY;
   o->mov_latency = 1;
+  o->div_latency = FP3_DEFAULT_DIV_LATENCY;
   o->num_regs = FP3_DEFAULT_NUM_REGS;
   o->max_regs = 0;
   o->fmax_pipe = 0;
@@ -718,7 +720,8 @@ static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
 /* 0 if the options are usable, else -1 with the reason. */
 static int check_opts(const fp3_compile_opts *o, char *msg, size_t n) {
   if (o->num_regs < 4 || o->num_regs > FP3_MAX_REGS || o->max_regs > FP3_MAX_REGS ||
-      !o->add_latency || !o->mul_latency || !o->mov_latency || o->fmax_pipe > 1) {
+      !o->add_latency || !o->mul_latency || !o->mov_latency || !o->div_latency ||
+      o->fmax_pipe > 1) {
     snprintf(msg, n, "bad compiler options (num_regs 4..%d, max_regs at most %d, latencies "
              ">= 1, fmax_pipe 0 or 1)", FP3_MAX_REGS, FP3_MAX_REGS);
     return -1;

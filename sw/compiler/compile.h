@@ -64,6 +64,7 @@ typedef struct fp3_compile_opts {
   unsigned mul_latency;  /* mul core latency, cycles (MUL_LATENCY)         */
   unsigned mov_latency;  /* move path latency, cycles (1; FMAX_PIPE adds
                             FP3_FMAX_PIPE_PICK_STAGES)                    */
+  unsigned div_latency;  /* div/sqrt unit latency, cycles (DIV_LATENCY)   */
   unsigned num_regs;     /* registers per context (NUM_REGS of the build) */
   unsigned max_regs;     /* 0, or up to FP3_MAX_REGS: a program that does
                             not fit num_regs even with the pressure-bounded
@@ -77,8 +78,9 @@ typedef struct fp3_compile_opts {
                             FP3_FMAX_PIPE_PICK_STAGES; 0: the default   */
 } fp3_compile_opts;
 
-/* fold = drop_zero = 1, latencies FP3_DEFAULT_ADD_LATENCY and
- * FP3_DEFAULT_MUL_LATENCY (fp3_isa.h), moves 1, FP3_DEFAULT_NUM_REGS,
+/* fold = drop_zero = 1, latencies FP3_DEFAULT_ADD_LATENCY,
+ * FP3_DEFAULT_MUL_LATENCY and FP3_DEFAULT_DIV_LATENCY (fp3_isa.h), moves
+ * 1, FP3_DEFAULT_NUM_REGS,
  * the default build (fmax_pipe = 0). */
 void fp3_compile_defaults(fp3_compile_opts *o);
 

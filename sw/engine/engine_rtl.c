@@ -142,8 +142,9 @@ static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
  * means the machine hung. */
 static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
   const uint64_t extra = c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0;
-  uint64_t per_insn = (uint64_t)(c->add_latency > c->mul_latency ? c->add_latency
-                                                                   : c->mul_latency) + 2 + extra;
+  unsigned longest = c->add_latency > c->mul_latency ? c->add_latency : c->mul_latency;
+  if (c->div_latency > longest) longest = c->div_latency;
+  uint64_t per_insn = (uint64_t)longest + 2 + extra;
   if (per_insn < FP3_BEQ_CYCLES + extra) per_insn = FP3_BEQ_CYCLES + extra;
   return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
@@ -151,7 +152,7 @@ static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contex
 static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
                    const fp3_observer *obs, fp3_status *st) {
   rtl_engine *r = (rtl_engine *)e;
-  tag_fifo fifo[4];
+  tag_fifo fifo[FP3_NUM_UNITS];   /* [unit]: write-back port u is unit u + 1 */
   memset(fifo, 0, sizeof fifo);
   memset(st, 0, sizeof *st);
   memset(r->cs, 0, sizeof r->cs);
@@ -181,7 +182,7 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
       return -1;
     }
     /* Write-backs of this cycle belong to instructions issued earlier. */
-    for (unsigned u = 0; u < 3; u++) {
+    for (unsigned u = 0; u < FP3_MODEL_WB_PORTS; u++) {
       if (!out.wb_valid[u]) continue;
       tag_fifo *f = &fifo[u + 1];
       if (f->count == 0) {
@@ -203,9 +204,14 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
       for (unsigned l = 0, s = ctx; l < nl && s < contexts; l++, s += nc)
         fp3_observe_write(obs, s, out.wb_reg[u], out.wb_data[u][l], integ);
     }
-    if (out.issue) st->unit_issued[out.issue_unit & 3]++;
+    if (out.issue && out.issue_unit >= FP3_NUM_UNITS) {
+      snprintf(e->error, sizeof e->error, "RTL fault: issue to unit %u in cycle %llu",
+               out.issue_unit, (unsigned long long)cycle);
+      return -1;
+    }
+    if (out.issue) st->unit_issued[out.issue_unit]++;
     if (out.issue && out.issue_unit != FP3_UNIT_NONE) {
-      tag_fifo *f = &fifo[out.issue_unit & 3];
+      tag_fifo *f = &fifo[out.issue_unit];
       if (f->count == TAG_FIFO) {
         snprintf(e->error, sizeof e->error, "RTL fault: unit %u has more than %d operations in flight",
                  out.issue_unit, TAG_FIFO);
@@ -223,7 +229,7 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
         fp3_observe_endi(obs, s, endis[ctx], cycle);
     }
   }
-  for (unsigned u = 1; u < 4; u++) {
+  for (unsigned u = 1; u < FP3_NUM_UNITS; u++) {
     if (fifo[u].count) {
       snprintf(e->error, sizeof e->error, "RTL fault: run ended with %u results of unit %u missing",
                fifo[u].count, u);

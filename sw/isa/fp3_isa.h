@@ -196,8 +196,8 @@
   X(HAS_ADD,     1)    /* 0: no add/sub core (add, sub are illegal)    */      \
   X(HAS_SUB,     1)    /* 0: the adder only adds (sub is illegal)      */      \
   X(HAS_MUL,     1)    /* 0: no mul core (mul is illegal)              */      \
-  X(HAS_DIV,     0)    /* 1: a divider (else div is illegal)           */      \
-  X(HAS_SQRT,    0)    /* 1: a square root (else sqrt is illegal)      */      \
+  X(HAS_DIV,     1)    /* 1: a divider (else div is illegal)           */      \
+  X(HAS_SQRT,    1)    /* 1: a square root (else sqrt is illegal)      */      \
   X(HAS_SIGN,    1)    /* 1: the sign group (else abs, neg, min, max   */      \
                        /*    are illegal)                              */      \
   X(DIV_LATENCY, 8)    /* div/sqrt unit: operands to result, cycles    */
@@ -205,12 +205,11 @@
 /* HAS_DIV, HAS_SQRT and HAS_SIGN: the ISS (iss.c) executes div, sqrt, abs,
  * neg, min and max bit-exactly (fpref_div .. fpref_max).  The processor
  * runs the sign group on its move path (rtl/fp3_arith.v, fp_sign; latency
- * 1 like mov).  It has the div and sqrt cores (rtl/fp_div.v, fp_sqrt.v)
- * but no issue path to them yet: it is built with HAS_DIV = HAS_SQRT = 0
- * (it refuses 1 at elaboration) and reports them in INFO2 (DIV_LATENCY in
- * INFO1), so the host
- * refuses a program that uses div or sqrt before running it, naming the
- * parameter (fp3_config_check_program). */
+ * 1 like mov) and div and sqrt on a fourth unit of DIV_LATENCY cycles
+ * (rtl/fp_div.v, fp_sqrt.v: one write-back port and tag line for both),
+ * reported in INFO2 (DIV_LATENCY in INFO1).  A build without one of them
+ * has the instruction illegal, and the host refuses a program that uses
+ * it before running it, naming the parameter (fp3_config_check_program). */
 
 /* The most contexts a build may have (NUM_CONTEXTS; the trace port carries
  * 6-bit context numbers). */

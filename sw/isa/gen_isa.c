@@ -86,14 +86,11 @@ int main(int argc, char **argv) {
   FP3_OPCODES(X)
 #undef X
   printf("      default: isa_decode = 8'd0;\n    endcase\n  end\nendfunction\n");
-  /* The issue path's unit field (scheduler, trace port, arith) carries the
-   * units 0 .. 3 in 2 bits; the div/sqrt unit (decode value UNIT_DIV) has
-   * no write-back port in that field, so its instructions are refused
-   * where they are decoded (fp3_scheduler w_built). */
-  printf("localparam [1:0] UNIT_NONE = 2'd%d, UNIT_ADD = 2'd%d, UNIT_MUL = 2'd%d, "
-         "UNIT_MOV = 2'd%d;\n",
-         FP3_UNIT_NONE, FP3_UNIT_ADD, FP3_UNIT_MUL, FP3_UNIT_MOV);
-  printf("localparam [2:0] UNIT_DIV = 3'd%d;\n\n", FP3_UNIT_DIV);
+  /* The issue path's unit field (scheduler, tag lines, trace port,
+   * arith): the decode's 3-bit unit, as it is. */
+  printf("localparam [2:0] UNIT_NONE = 3'd%d, UNIT_ADD = 3'd%d, UNIT_MUL = 3'd%d, "
+         "UNIT_MOV = 3'd%d, UNIT_DIV = 3'd%d;\n\n",
+         FP3_UNIT_NONE, FP3_UNIT_ADD, FP3_UNIT_MUL, FP3_UNIT_MOV, FP3_UNIT_DIV);
 
   printf("// Build configuration defaults\n");
 #define X(name, def) printf("localparam integer DEFAULT_%s = %d;\n", #name, def);
