@@ -1,11 +1,12 @@
 # model.mk -- the model language (sw/model/, models/*.fp3m): its test.
 #
 # sw/model/*.c reach libfp3.a through mk/sw.mk's wildcard.  test_model
-# links the RTL model (RTL_OBJS) to run the compiled models on it.
-$(BUILD)/tests/test_model: tests/test_model.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
+# links the RTL model (RTL_OBJS) to run the compiled models on it, and the
+# test builds (RTL_TEST_OBJS, mk/rtl.mk) for a model scene on lanes (l4).
+$(BUILD)/tests/test_model: tests/test_model.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_TEST_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o
-	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) \
+	$(CXX) $(SAN_FLAGS) -o $@ $@.o $(BUILD)/sw-san/libfp3.a $(RTL_OBJS) $(RTL_TEST_OBJS) \
 	  $(LDLIBS_SW) $(CMOCKA_LIB) $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_model
 

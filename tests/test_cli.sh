@@ -106,11 +106,11 @@ expect 2 "unknown parameter 'minv'"      -- "${ISS[@]}" --set minv=3
 expect 2 "wants NAME=VALUE"              -- "${ISS[@]}" --set m
 expect 2 "'ten' is not a number"         -- "${ISS[@]}" --set m=ten
 expect 2 "'' is not a number"            -- "${ISS[@]}" --set m=
-expect 2 "must be 1"                     -- "${ISS[@]}" --steps 0
-expect 2 "not a number"                  -- "${ISS[@]}" --steps abc
-expect 2 "not a number"                  -- "${ISS[@]}" --steps -5
-expect 2 "not a number"                  -- "${ISS[@]}" --steps 10x
-expect 2 "must be 1"                     -- "${ISS[@]}" --steps 4294967296
+expect 2 "want 1..4294967295 integrations" -- "${ISS[@]}" --steps 0
+expect 2 "--steps 'abc': want 1..4294967295" -- "${ISS[@]}" --steps abc
+expect 2 "--steps '-5': want 1.."        -- "${ISS[@]}" --steps -5
+expect 2 "--steps '10x': want 1.."       -- "${ISS[@]}" --steps 10x
+expect 2 "want 1..4294967295 integrations" -- "${ISS[@]}" --steps 4294967296
 expect 2 "needs --engine rtl"            -- "${ISS[@]}" --trace "$T/x.vcd"
 # a trace file that cannot be created: its name and the system's reason
 expect 2 "trace file $T/nodir/x.vcd ($T/nodir: No such file or directory)" -- \
@@ -214,6 +214,11 @@ expect 2 "No such file" -- run --scene "$T/missing.scene"
 expect 2 "want 1..1000000 objects" -- run --objects 0
 expect 2 "want 1..1000000 objects" -- run --objects 1000001
 expect 2 "seed goes with" -- run --seed 3
+# counts and seeds: one parser (cliopt.c), one message
+expect 2 "--seed 'x1': want an unsigned 64-bit integer" -- run --objects 2 --seed x1
+expect 2 "--seed '-3': want an unsigned 64-bit integer" -- frames --seed -3
+expect 2 "--repeats '65': want 1..64" -- bench --repeats 65
+expect 2 "--trace-window '5': want FIRST:COUNT" -- run --engine iss --trace-window 5
 expect 2 "has 5 objects" -- run --scene "$T/harbour.scene" --objects 4
 json=$("$FP3" run --scene "$T/harbour.scene" --steps 50 --json 2>&1); rc=$?
 [ "$rc" -eq 0 ] && ok || bad "run --scene --json exit $rc"
@@ -338,8 +343,8 @@ expect 0 "golden model: bit-identical" -- frames --engine iss --harbour 20 --fra
 expect 0 '"pass": true' -- frames --engine iss --scene scenes/harbour.scene --frames 20 --json
 expect 2 "frames '0'" -- frames --frames 0
 expect 2 "harbour '-3'" -- frames --harbour -3
-expect 2 "expected FRAME:COUNT" -- frames --wake 5
-expect 2 "FRAME and COUNT must be positive" -- frames --wake 0:2
+expect 2 "want FRAME:COUNT" -- frames --wake 5
+expect 2 "want FRAME:COUNT, FRAME 1.." -- frames --wake 0:2
 expect 2 "fmax 'x'" -- frames --fmax x
 expect 2 "unknown integrator 'leapfrog'" -- frames --integrator leapfrog
 expect 2 "engine 'gpu'" -- frames --engine gpu

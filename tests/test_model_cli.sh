@@ -41,6 +41,31 @@ else
   "$FP3" run --model models/projectile.fp3m $proj --integrator euler --steps 50 --engine iss >/dev/null 2>&1
   check "projectile on the ISS: bit-exact with its golden model" "[ $? -eq 0 ]"
 fi
+# registers: folded rk4 of the 3-D spring needs 34 (no spilling); the ISS
+# runs it as a build with NUM_REGS=34, a 32-register RTL refuses it with
+# the numbers; its literal rk4 fits 32 (bounded register pressure)
+s3="--set h=0.015625 --set k=30 --set L=1 --set m=1.5 --set x=1.5 --set y=0.2 --set z=-0.3 --set vx=0 --set vy=0.8 --set vz=0.1"
+out=$("$FP3" run --model models/spring3d.fp3m $s3 --steps 100 --engine iss --json 2>"$tmp/err"); rc=$?
+check "spring3d rk4 folded on the ISS: NUM_REGS=34, bit-exact" \
+  "[ $rc -eq 0 ] && grep -q 'ISS runs it as a build with NUM_REGS=34' $tmp/err && \
+   echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"num_regs\"]==34 and d[\"registers_needed\"]==34 else 1)'"
+out=$("$FP3" run --model models/spring3d.fp3m $s3 --steps 100 --engine iss --literal --json 2>&1)
+check "spring3d rk4 literal on the ISS: 32 registers, bit-exact" \
+  "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"num_regs\"]==32 and d[\"registers_needed\"]<=32 else 1)'"
+err=$("$FP3" run --model models/spring3d.fp3m $s3 --steps 100 --engine rtl 2>&1); rc=$?
+check "spring3d rk4 folded on a 32-register RTL: refused with the numbers" \
+  "[ $rc -eq 2 ] && grep -q 'the program needs 34 registers; NUM_REGS is 32' <<<\"\$err\""
+"$FP3" compile --model models/spring3d.fp3m -o "$tmp/s3.s" 2>/dev/null
+check "compile --model for 34 registers: .regs 34" "grep -q '^.regs 34$' $tmp/s3.s"
+# rk4comp: RK4 with Kahan-compensated updates, a compensation carried per
+# state variable; bit-exact on both engines; fp3 frames refuses it
+for eng in iss rtl; do
+  out=$("$FP3" run --model models/spring.fp3m $spring --steps 300 --engine $eng --integrator rk4comp --json)
+  check "spring rk4comp $eng: pass" \
+    "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"golden_mismatches\"]==0 else 1)'"
+done
+err=$("$FP3" frames --scene scenes/springs.scene --integrator rk4comp --frames 3 2>&1); rc=$?
+check "frames refuses rk4comp, naming the compensation" "[ $rc -eq 2 ] && grep -q 'Kahan compensation' <<<\"\$err\""
 "$FP3" compile --model models/spring.fp3m --literal -o "$tmp/s.s" 2>/dev/null
 check "compile --model writes the program" "grep -q 'model spring' $tmp/s.s && grep -q endi $tmp/s.s"
 [ $fail -eq 0 ]

@@ -271,6 +271,21 @@ static void test_asm_errors(void **state) {
   expect_error(".reg r5 r1\n", "t.s:1: bad register alias name 'r5'");
   expect_error(".reg a\n", "t.s:1: wrong operand count: .reg");
   expect_error(".reg a r40\n", "t.s:1: register out of range: r40");
+  /* .regs N: a program for a build with NUM_REGS >= N */
+  expect_error(".regs 64\nadd r1, r2, r64\n", "t.s:2: register out of range: r64 (registers are r0..r63)");
+  expect_error("add r1, r2, r3\n.regs 64\n", "t.s:2: .regs must come before the first register");
+  expect_error(".regs 1\n", "t.s:1: .regs takes a register count 2..256");
+  expect_error(".regs 257\n", "t.s:1: .regs takes a register count 2..256");
+  expect_error(".regs 4x\n", "t.s:1: .regs takes a register count 2..256");
+  {
+    fp3_image img;
+    char *errs = NULL;
+    assert_int_equal(fp3_asm_string(".regs 256\nadd r255, r40, r32\nendi 0\n", "t.s", &img, &errs), 0);
+    free(errs);
+    assert_int_equal(fp3_insn_rd(img.words[0]), 255);
+    assert_int_equal(fp3_insn_ra(img.words[0]), 40);
+    assert_int_equal(fp3_insn_rb(img.words[0]), 32);
+  }
   expect_error("add y, r1, r2\n.reg y r3\n", "t.s:1: bad register 'y'");
   expect_error(".word 12\n", "t.s:1: bad literal '12'");
   expect_error("endi 1x\n", "t.s:1: bad address '1x'");

@@ -4,6 +4,10 @@
 #ifndef FP3_CLIOPT_H
 #define FP3_CLIOPT_H
 
+#include <stdint.h>
+
+#include "fpref.h"
+
 /* "--name VALUE" or "--name=VALUE": returns 1 and sets *val (advancing *i
  * past a separate value) if argv[*i] is that option, -1 with a message on
  * stderr ("fp3 CMD: option --name needs a value") if the value is
@@ -22,6 +26,32 @@ int fp3_opt_positional(const char *cmd, const char *what, const char *arg, const
  * only) in lo..hi, else -1 (the caller names the option in its message). */
 int fp3_parse_count(const char *v, unsigned long long lo, unsigned long long hi,
                     unsigned long long *out);
+
+/* A count option, "NAME VALUE" or "NAME=VALUE" with a decimal integer
+ * in lo..hi (fp3_parse_count): 1 and *out if argv[*i] is that option, 0
+ * if it is another argument, -1 with a message on stderr for a missing
+ * or bad value ("fp3 CMD: NAME 'V': want LO..HI UNIT"; unit may be "").
+ * Every subcommand parses its counts so: one shape, one message. */
+int fp3_opt_count(int argc, char **argv, int *i, const char *cmd, const char *name,
+                  unsigned long long lo, unsigned long long hi, const char *unit,
+                  unsigned long long *out);
+
+/* --seed S: an unsigned 64-bit integer, decimal or 0x hexadecimal
+ * (strtoull base 0, so a leading 0 is octal); 1, 0, -1 as
+ * fp3_opt_count ("fp3 CMD: --seed 'V': want an unsigned 64-bit
+ * integer ..."). */
+int fp3_opt_seed(int argc, char **argv, int *i, const char *cmd, uint64_t *out);
+
+/* --round rne|rtz: sets mode->round; 1, 0, -1 as fp3_opt_count ("fp3
+ * CMD: unknown rounding 'V' (rne or rtz)"). */
+int fp3_opt_round(int argc, char **argv, int *i, const char *cmd, fpref_mode *mode);
+
+/* "A:B", two decimal counts, A in lo1..hi1 and B in lo2..hi2 (or B the
+ * word `all`, if all is not NULL: *b = ULLONG_MAX).  0, or -1 (the
+ * caller names the option in its message). */
+int fp3_parse_pair(const char *v, unsigned long long lo1, unsigned long long hi1,
+                   unsigned long long lo2, unsigned long long hi2, const char *all,
+                   unsigned long long *a, unsigned long long *b);
 
 /* 1 if a is --help or -h. */
 int fp3_is_help(const char *a);

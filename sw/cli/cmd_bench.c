@@ -80,19 +80,6 @@ static int parse_pos(const char *opt, const char *s, double *x) {
   return 0;
 }
 
-static int parse_count(const char *opt, const char *s, uint32_t *x, int zero_ok) {
-  char *end;
-  errno = 0;
-  unsigned long long n = strtoull(s, &end, 10);
-  if (s[0] < '0' || s[0] > '9' || *end != '\0' || errno || n > UINT32_MAX ||
-      (!zero_ok && n == 0)) {
-    fprintf(stderr, "fp3 bench: %s '%s': want a whole number %s..%" PRIu32 "\n",
-            opt, s, zero_ok ? "0" : "1", (uint32_t)UINT32_MAX);
-    return -1;
-  }
-  *x = (uint32_t)n;
-  return 0;
-}
 
 int fp3_cmd_bench(int argc, char **argv) {
   if (fp3_args_have_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
@@ -101,8 +88,9 @@ int fp3_cmd_bench(int argc, char **argv) {
   uint32_t nlong = 10000000u, nrtl = 100000u, reps = 7;
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
-    if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    if (fp3_is_help(argv[i])) {
       usage_bench(stdout);
       return 0;
     }
@@ -126,16 +114,17 @@ int fp3_cmd_bench(int argc, char **argv) {
         return EXIT_USAGE;
       }
       only = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--long-steps", &v)) != 0) {
-      if (r < 0 || parse_count("--long-steps", v, &nlong, 1)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--rtl-long-steps", &v)) != 0) {
-      if (r < 0 || parse_count("--rtl-long-steps", v, &nrtl, 1)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--repeats", &v)) != 0) {
-      if (r < 0 || parse_count("--repeats", v, &reps, 0)) return EXIT_USAGE;
-      if (reps < 1 || reps > 64) {
-        fprintf(stderr, "fp3 bench: --repeats %s: 1..64\n", v);
-        return EXIT_USAGE;
-      }
+    } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--long-steps", 1, UINT32_MAX,
+                                  "integrations", &k)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      nlong = (uint32_t)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--rtl-long-steps", 1, UINT32_MAX,
+                                  "integrations", &k)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      nrtl = (uint32_t)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--repeats", 1, 64, "", &k)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      reps = (uint32_t)k;
     } else {
       fprintf(stderr, "fp3 bench: unknown argument '%s' (see fp3 bench --help)\n",
               argv[i]);

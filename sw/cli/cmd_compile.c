@@ -60,17 +60,6 @@ static void usage(FILE *f) {
           FP3_FMAX_PIPE_PICK_STAGES + 1);
 }
 
-/* A latency option value 1..64. */
-static int latency_arg(const char *opt, const char *v, unsigned *out) {
-  unsigned long long k;
-  if (fp3_parse_count(v, 1, 64, &k)) {
-    fprintf(stderr, "fp3 compile: %s '%s': want 1..64 cycles\n", opt, v);
-    return -1;
-  }
-  *out = (unsigned)k;
-  return 0;
-}
-
 int fp3_cmd_compile(int argc, char **argv) {
   const char *scene = NULL, *outp = NULL, *integ = "rk4";
   int json = 0;
@@ -78,6 +67,7 @@ int fp3_cmd_compile(int argc, char **argv) {
   fp3_compile_defaults(&o);
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage(stdout);
@@ -90,10 +80,14 @@ int fp3_cmd_compile(int argc, char **argv) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--integrator", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       integ = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--add-latency", &v)) != 0) {
-      if (r < 0 || latency_arg("--add-latency", v, &o.add_latency)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--mul-latency", &v)) != 0) {
-      if (r < 0 || latency_arg("--mul-latency", v, &o.mul_latency)) return EXIT_USAGE;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "compile", "--add-latency", 1, 64, "cycles",
+                                  &k)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      o.add_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "compile", "--mul-latency", 1, 64, "cycles",
+                                  &k)) != 0) {
+      if (r < 0) return EXIT_USAGE;
+      o.mul_latency = (unsigned)k;
     } else if (strcmp(argv[i], "--fmax-pipe") == 0) {
       o.fmax_pipe = 1;
     } else if (strcmp(argv[i], "--literal") == 0) {

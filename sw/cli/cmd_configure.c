@@ -155,9 +155,15 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
           param_text("NUM_LANES", c->num_lanes, p0, sizeof p0), r->objects,
           r->objects == 1 ? "" : "s", c->num_contexts, o->max_lanes,
           c->num_contexts * c->num_lanes, c->num_contexts * c->num_lanes == 1 ? "" : "s");
-  fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
-                  "(it names %u; compiled for the default %u it names %u)\n",
-          param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used, (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
+  if (r->regs_default > FP3_DEFAULT_NUM_REGS)
+    fprintf(stderr, "  %-16s the fewest registers the compiler schedules the program into "
+                    "(more than the default %u; no spilling)\n",
+            param_text("NUM_REGS", c->num_regs, p0, sizeof p0), (unsigned)FP3_DEFAULT_NUM_REGS);
+  else
+    fprintf(stderr, "  %-16s the fewest registers the program fits without losing a cycle "
+                    "(it names %u; compiled for the default %u it names %u)\n",
+            param_text("NUM_REGS", c->num_regs, p0, sizeof p0), r->regs_used,
+            (unsigned)FP3_DEFAULT_NUM_REGS, r->regs_default);
   const unsigned has[FP3_CONFIGURE_UNITS] = {c->has_add, c->has_sub, c->has_mul,
                                              c->has_div, c->has_sqrt, c->has_sign};
   const char *const param[FP3_CONFIGURE_UNITS] = {"HAS_ADD", "HAS_SUB", "HAS_MUL",
@@ -194,6 +200,7 @@ int fp3_cmd_configure(int argc, char **argv) {
   fp3_configure_defaults(&o);
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage(stdout);
@@ -217,23 +224,15 @@ int fp3_cmd_configure(int argc, char **argv) {
         return EXIT_USAGE;
       }
       o.budget = b;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--steps", 1, MAX_STEPS,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      unsigned long long k;
-      if (fp3_parse_count(v, 1, MAX_STEPS, &k)) {
-        fprintf(stderr, "fp3 configure: --steps '%s': want 1..%u integrations\n", v, MAX_STEPS);
-        return EXIT_USAGE;
-      }
       o.steps = (uint32_t)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
       o.literal = 1;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--max-lanes", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--max-lanes", 1, FP3_MAX_LANES,
+                                  "lanes", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      unsigned long long k;
-      if (fp3_parse_count(v, 1, FP3_MAX_LANES, &k)) {
-        fprintf(stderr, "fp3 configure: --max-lanes '%s': want 1..%d lanes\n", v, FP3_MAX_LANES);
-        return EXIT_USAGE;
-      }
       o.max_lanes = (unsigned)k;
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
       o.context_per_object = 1;

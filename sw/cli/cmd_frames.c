@@ -80,26 +80,14 @@ int fp3_cmd_frames(int argc, char **argv) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--scene", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       scene_path = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--harbour", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "frames", "--harbour", 1, MAX_SHIPS,
+                                  "ships", &ships)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (fp3_parse_count(v, 1, MAX_SHIPS, &ships)) {
-        fprintf(stderr, "fp3 frames: --harbour '%s': a ship count 1..%u\n", v, MAX_SHIPS);
-        return EXIT_USAGE;
-      }
-    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--seed", &v)) != 0) {
+    } else if ((r = fp3_opt_seed(argc, argv, &i, "frames", &seed)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      errno = 0;
-      seed = strtoull(v, &end, 0);
-      if (*end || errno || *v == '-') {
-        fprintf(stderr, "fp3 frames: --seed '%s': not an unsigned integer\n", v);
-        return EXIT_USAGE;
-      }
-    } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--frames", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "frames", "--frames", 1, MAX_FRAMES,
+                                  "frames", &frames)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (fp3_parse_count(v, 1, MAX_FRAMES, &frames)) {
-        fprintf(stderr, "fp3 frames: --frames '%s': a count 1..%u\n", v, MAX_FRAMES);
-        return EXIT_USAGE;
-      }
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--program", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       program = v;
@@ -113,19 +101,10 @@ int fp3_cmd_frames(int argc, char **argv) {
       o.rest_skip = 0;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      const char *colon = strchr(v, ':');
       unsigned long long wf, wk;
-      char first[32];
-      size_t len = colon ? (size_t)(colon - v) : 0;
-      if (!colon || len == 0 || len >= sizeof first) {
-        fprintf(stderr, "fp3 frames: --wake '%s': expected FRAME:COUNT\n", v);
-        return EXIT_USAGE;
-      }
-      memcpy(first, v, len);
-      first[len] = '\0';
-      if (fp3_parse_count(first, 1, MAX_FRAMES, &wf) ||
-          fp3_parse_count(colon + 1, 1, MAX_SHIPS, &wk)) {
-        fprintf(stderr, "fp3 frames: --wake '%s': FRAME and COUNT must be positive\n", v);
+      if (fp3_parse_pair(v, 1, MAX_FRAMES, 1, MAX_SHIPS, NULL, &wf, &wk)) {
+        fprintf(stderr, "fp3 frames: --wake '%s': want FRAME:COUNT, FRAME 1..%u, COUNT 1..%u\n",
+                v, MAX_FRAMES, MAX_SHIPS);
         return EXIT_USAGE;
       }
       o.wake_frame = (uint32_t)wf;

@@ -106,6 +106,7 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
   a->long_steps = 100000u;
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage(stdout);
@@ -127,14 +128,10 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
       }
       a->engine = v;
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--steps", &v)) != 0) {
-      unsigned long long s;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--steps", 1, UINT32_MAX,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, UINT32_MAX, &s)) {
-        fprintf(stderr, "fp3 %s: --steps '%s': want 1..%" PRIu32 "\n", cmd, v, UINT32_MAX);
-        return -1;
-      }
-      a->steps = (uint32_t)s;
+      a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "frames") != 0 && strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
       if (r < 0) return -1;
@@ -154,42 +151,21 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
     } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
       a->scene = argv[i];
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--objects", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--objects", 1, MAX_MODEL_OBJECTS,
+                                  "objects", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, MAX_MODEL_OBJECTS, &k)) {
-        fprintf(stderr, "fp3 %s: --objects '%s': want 1..%u\n", cmd, v, MAX_MODEL_OBJECTS);
-        return -1;
-      }
       a->objects = (size_t)k;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--seed", &v)) != 0) {
-      unsigned long long k;
+    } else if (strcmp(cmd, "run") == 0 && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 0, UINT64_MAX, &k)) {
-        fprintf(stderr, "fp3 %s: --seed '%s' is not a number\n", cmd, v);
-        return -1;
-      }
-      a->seed = k;
       a->seeded = 1;
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--round", &v)) != 0) {
+               (r = fp3_opt_round(argc, argv, &i, cmd, &a->mode)) != 0) {
       if (r < 0) return -1;
-      if (strcmp(v, "rne") == 0) a->mode.round = FPREF_RNE;
-      else if (strcmp(v, "rtz") == 0) a->mode.round = FPREF_RTZ;
-      else {
-        fprintf(stderr, "fp3 %s: unknown rounding '%s' (rne or rtz)\n", cmd, v);
-        return -1;
-      }
     } else if (strcmp(cmd, "frames") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--frames", &v)) != 0) {
-      unsigned long long f;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--frames", 1, 10000000u, "frames",
+                                  &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, 10000000u, &f)) {
-        fprintf(stderr, "fp3 %s: --frames '%s': a count 1..10000000\n", cmd, v);
-        return -1;
-      }
-      a->steps = (uint32_t)f;
+      a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--t-end", &v)) != 0) {
       char *end;
@@ -200,13 +176,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
         return -1;
       }
     } else if (strcmp(cmd, "bench") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--long-steps", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--long-steps", 2, 10000000u,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 2, 10000000u, &k)) {
-        fprintf(stderr, "fp3 %s: --long-steps '%s': 2..10000000\n", cmd, v);
-        return -1;
-      }
       a->long_steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--long", &v)) != 0) {
@@ -217,13 +189,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
       if (r < 0) return -1;
       a->stab = v;
     } else if (strcmp(cmd, "bench") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--points", &v)) != 0) {
-      unsigned long long k;
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--points", 1, 24, "step sizes",
+                                  &k)) != 0) {
       if (r < 0) return -1;
-      if (fp3_parse_count(v, 1, 24, &k)) {
-        fprintf(stderr, "fp3 %s: --points '%s': 1..24\n", cmd, v);
-        return -1;
-      }
       a->points = (unsigned)k;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
       a->no_rest_skip = 1;
@@ -274,9 +242,13 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
 }
 
 /* Compile the model for a's integrator (folded: params zero in this
- * object, zero[], removed). */
+ * object, zero[], removed) for the build hw (NULL: the default build).
+ * grow: the build may have more registers (the ISS, a model of any build,
+ * and `fp3 compile`): a program that needs more than hw's NUM_REGS is
+ * compiled for the fewest that run it (fp3_compile_opts.max_regs); else
+ * it is refused with the numbers. */
 static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsigned char *zero,
-                                 const fp3_config *hw, const char *cmd) {
+                                 const fp3_config *hw, int grow, const char *cmd) {
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
   if (hw) { /* the engine's build: its latencies, registers, pipeline */
@@ -285,6 +257,7 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
     if (hw->num_regs) o.num_regs = hw->num_regs;
     o.fmax_pipe = hw->fmax_pipe;
   }
+  if (grow) o.max_regs = FP3_MAX_REGS;
   o.fold = o.drop_zero = !a->literal;
   fp3_compiled *c = NULL;
   char msg[512];
@@ -294,10 +267,35 @@ static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsig
     return NULL;
   }
   if (fp3_compile_model(m, a->integ, &o, zero, &c, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 %s: %s: %s\n", cmd, m->file, msg);
+    fprintf(stderr, "fp3 %s: %s: %s%s\n", cmd, m->file, msg,
+            strstr(msg, "NUM_REGS is") && hw && !grow
+                ? "; --engine iss models such a build, `make build/fp3 NUM_REGS=N BUILD=DIR` "
+                  "builds the RTL"
+                : "");
     return NULL;
   }
   return c;
+}
+
+/* The ISS reshaped for program c when c was compiled for more registers
+ * than it has (compile_for with grow): same contexts, lanes and mode,
+ * NUM_REGS the program's, said on stderr.  0, or -1 (message printed). */
+static int fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd) {
+  const unsigned need = fp3_compiled_stats(c)->num_regs;
+  if (need <= (*e)->config.num_regs) return 0;
+  fp3_config cfg = (*e)->config;
+  cfg.num_regs = need;
+  fp3_engine *ne = fp3_engine_iss_new_config(&cfg);
+  if (!ne) {
+    fprintf(stderr, "fp3 %s: out of memory for an ISS of %u registers per context\n", cmd, need);
+    return -1;
+  }
+  fprintf(stderr, "fp3 %s: the program needs %u registers (NUM_REGS is %u): the ISS runs it as "
+          "a build with NUM_REGS=%u\n", cmd, fp3_compiled_stats(c)->regs_needed,
+          (*e)->config.num_regs, need);
+  fp3_engine_free(*e);
+  *e = ne;
+  return 0;
 }
 
 /* zero[k] = 1 for the params that are zero in every object of sc. */
@@ -334,7 +332,7 @@ int fp3_cmd_compile_model(int argc, char **argv) {
       return EXIT_USAGE;
     }
   }
-  fp3_compiled *c = compile_for(m, &a, zero, NULL, "compile");
+  fp3_compiled *c = compile_for(m, &a, zero, NULL, 1, "compile");
   int rc = c ? 0 : EXIT_USAGE;
   if (c && a.out && fp3_compiled_write(c, a.out, msg, sizeof msg)) {
     fprintf(stderr, "fp3 compile: %s\n", msg);
@@ -345,9 +343,10 @@ int fp3_cmd_compile_model(int argc, char **argv) {
   if (c && a.out && rc == 0) {
     const fp3_compile_stats *s = fp3_compiled_stats(c);
     fprintf(stderr, "fp3 compile: %s: model %s, %s %s: %u instructions per integration, "
-            "prologue %u, %u registers, about %u cycles per integration (one object)\n",
-            a.out, m->name, a.integ, a.literal ? "literal" : "folded", s->body_insns,
-            s->prologue_insns, s->regs, s->est_cycles_later);
+            "prologue %u, %u registers needed (NUM_REGS %u), about %u cycles per "
+            "integration (one object)\n", a.out, m->name, a.integ,
+            a.literal ? "literal" : "folded", s->body_insns, s->prologue_insns, s->regs_needed,
+            s->num_regs, s->est_cycles_later);
   }
   fp3_compiled_free(c);
   free(m);
@@ -463,14 +462,17 @@ int fp3_cmd_run_model(int argc, char **argv) {
   if (gather_values(m, &a, in, y0)) goto out;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
-  if (!(c = compile_for(m, &a, zero, NULL, "run"))) goto out;
-  rc = EXIT_FAIL;
   e = fp3_engine_new(a.engine);
   if (!e || fp3_engine_error(e)[0]) {
     fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a.engine, e ? ": " : "",
             e ? fp3_engine_error(e) : "");
+    rc = EXIT_FAIL;
     goto out;
   }
+  const int iss = strcmp(a.engine, "iss") == 0;
+  if (!(c = compile_for(m, &a, zero, &e->config, iss, "run"))) goto out;
+  rc = EXIT_FAIL;
+  if (iss && fit_engine(&e, c, "run")) goto out;
   unsigned regs[4 * FP3_MODEL_MAX_VARS];
   uint32_t vals[4 * FP3_MODEL_MAX_VARS];
   size_t nw = fp3_compiled_model_start(c, in, y0, regs, vals, 4 * FP3_MODEL_MAX_VARS);
@@ -545,6 +547,8 @@ int fp3_cmd_run_model(int argc, char **argv) {
     printf(", \"program\": ");
     fp3_json_string(stdout, m->file);
     printf(", \"words\": %zu, \"body_insns\": %u", img->n, cs->body_insns);
+    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
+           e->config.num_regs);
     printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, a.steps, st.steps_done);
     printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, fp3_error_name(st.error), st.fault_pc);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
@@ -594,8 +598,8 @@ int fp3_cmd_run_model(int argc, char **argv) {
   } else {
     printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %" PRIu32 " integrations\n",
            a.engine, m->name, m->file, a.integ, a.literal ? "literal" : "folded", a.steps);
-    printf("program: %zu words, %u instructions per integration, %u registers\n", img->n,
-           cs->body_insns, cs->regs);
+    printf("program: %zu words, %u instructions per integration, %u registers needed "
+           "(NUM_REGS %u)\n", img->n, cs->body_insns, cs->regs_needed, e->config.num_regs);
     printf("\n%-12s %16s %16s %22s %12s\n", "state", "value", "golden", "reference (GSL)", "error");
     for (unsigned k = 0; k < m->nstate; k++) {
       printf("%-12s %16.9g %16.9g", m->state[k], (double)fpref_float(cur[k]), (double)gl[k]);
@@ -644,23 +648,6 @@ out:
 
 #define SHOW_OBJECTS 8 /* rows of the human report */
 
-/* The compiled program's golden model over the objects of a scene. */
-typedef struct mgold {
-  fp3_compiled *c;
-  const fp3_mscene *sc;
-} mgold;
-
-static size_t mg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
-  mgold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam,
-                                  g->sc->y0 + obj * m->nstate, reg, val, max);
-}
-
-static void mg_step(void *ctx, float *y) {
-  mgold *g = ctx;
-  fp3_compiled_model_step(g->c, y);
-}
 
 /* The scene of a: read from a->scene, or --objects N generated from the
  * --set values.  0, or the exit status of the failure (message printed). */
@@ -719,16 +706,16 @@ static int run_many(const margs *a) {
             e ? fp3_engine_error(e) : "");
     goto out;
   }
-  if (!(c = compile_for(m, a, zero, &e->config, "run"))) {
+  const int iss = strcmp(a->engine, "iss") == 0;
+  if (!(c = compile_for(m, a, zero, &e->config, iss, "run"))) {
     rc = EXIT_USAGE;
     goto out;
   }
-  unsigned sreg[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < ns; i++) sreg[i] = fp3_compiled_state_reg(c, i);
-  mgold mg = {c, &sc};
-  fp3_state_golden g = {&mg, ns, sreg, mg_start, mg_step};
+  if (iss && fit_engine(&e, c, "run")) goto out;
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, c, &sc);
   const fp3_image *img = fp3_compiled_image(c);
-  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &g, &res, msg,
+  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &sg.golden, &res, msg,
                             sizeof msg)) {
     fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
     goto out;
@@ -778,9 +765,11 @@ static int run_many(const margs *a) {
     fp3_json_string(stdout, a->integ);
     printf(", \"literal\": %s, \"insns_per_step\": %u, \"registers\": %u",
            a->literal ? "true" : "false", cs->body_insns, cs->regs);
+    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
+           e->config.num_regs);
     printf(", \"est_cycles_per_step\": %u", cs->est_cycles_later);
-    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"batches\": %zu",
-           a->steps, res.objects, res.contexts, res.batches);
+    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"lanes\": %u"
+           ", \"batches\": %zu", a->steps, res.objects, res.contexts, res.lanes, res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64
            ", \"cycles_per_object_step\": %.9g", res.cycles, res.issued, res.stalls, per);
     printf(", \"golden_mismatches\": %" PRIu64, res.mismatches);
@@ -820,11 +809,11 @@ static int run_many(const margs *a) {
     printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %zu objects, %" PRIu32
            " integrations each\n", a->engine, m->name, sc.model_path, a->integ,
            a->literal ? "literal" : "folded", res.objects, a->steps);
-    printf("program: %u instructions per integration, %u registers; scheduler estimate %u "
-           "cycles per integration of one object\n", cs->body_insns, cs->regs,
-           cs->est_cycles_later);
-    printf("scene: %s; %u contexts per batch, %zu batch%s\n\n", where, res.contexts,
-           res.batches, res.batches == 1 ? "" : "es");
+    printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
+           "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
+           cs->regs_needed, e->config.num_regs, cs->est_cycles_later);
+    printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n", where, res.contexts,
+           res.lanes, res.batches, res.batches == 1 ? "" : "es");
     printf("  object");
     for (unsigned k = 0; k < ns; k++) printf(" %14s %14s", m->state[k], "reference");
     printf("\n");
@@ -876,17 +865,6 @@ out:
 
 /* ---- frames ------------------------------------------------------------------ */
 
-/* One integration of object obj from state y: the golden model restarted
- * on that state (its only loop-carried values are the state variables). */
-static void mg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
-  mgold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  unsigned reg[512];
-  uint32_t val[512];
-  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 512);
-  fp3_compiled_model_step(g->c, ynew);
-}
-
 int fp3_cmd_frames_model(int argc, char **argv) {
   margs a;
   int r = parse_args(argc, argv, "frames", &a);
@@ -908,18 +886,26 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     fprintf(stderr, "fp3 frames: cannot create the %s engine\n", a.engine);
     goto out;
   }
-  if (!(c = compile_for(m, &a, zero, &e->config, "frames"))) {
+  const int iss = strcmp(a.engine, "iss") == 0;
+  if (!(c = compile_for(m, &a, zero, &e->config, iss, "frames"))) {
     rc = EXIT_USAGE;
     goto out;
   }
-  unsigned sreg[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < m->nstate; i++) sreg[i] = fp3_compiled_state_reg(c, i);
-  mgold mg = {c, &sc};
-  fp3_state_stepper g = {&mg, m->nstate, sreg, mg_start, mg_step_from};
+  if (iss && fit_engine(&e, c, "frames")) goto out;
+  if (fp3_compiled_carried(c) > m->nstate) {
+    /* the frame golden model restarts each object from its state alone */
+    fprintf(stderr, "fp3 frames: integrator %s carries a Kahan compensation per state "
+            "variable from one integration to the next; fp3 frames restarts the golden model "
+            "from the state alone: run it with fp3 run --scene\n", a.integ);
+    rc = EXIT_USAGE;
+    goto out;
+  }
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, c, &sc);
   const fp3_image *img = fp3_compiled_image(c);
   fp3_state_frames_result res;
   if (fp3_run_state_frames(e, img->words, img->n, sc.n, a.steps, !a.no_rest_skip, FPREF_IEEE,
-                           &g, &res, msg, sizeof msg)) {
+                           &sg.stepper, &res, msg, sizeof msg)) {
     fprintf(stderr, "fp3 frames: %s\n", msg);
     goto out;
   }
@@ -933,18 +919,19 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     fp3_json_string(stdout, a.scene);
     printf(", \"integrator\": ");
     fp3_json_string(stdout, a.integ);
-    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"rest_skip\": %s"
+    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"lanes\": %u"
+           ", \"rest_skip\": %s"
            ", \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", \"cycles_per_frame\": %.2f"
            ", \"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64
            ", \"asleep_at_end\": %zu, \"golden_mismatches\": %" PRIu64 ", \"error\": \"%s\""
-           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts,
+           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts, res.lanes,
            a.no_rest_skip ? "false" : "true", res.batches, res.cycles, per, res.object_frames,
            res.skipped, res.asleep_last, res.mismatches, fp3_error_name(res.error),
            pass ? "true" : "false");
   } else {
     printf("fp3 frames: %zu objects of model %s (%s), %" PRIu32 " frames, %s %s, %s engine, "
-           "%u contexts%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
-           a.literal ? "literal" : "folded", a.engine, res.contexts,
+           "%u contexts x %u lanes%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
+           a.literal ? "literal" : "folded", a.engine, res.contexts, res.lanes,
            a.no_rest_skip ? ", no rest skip" : "");
     printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
            res.batches);
@@ -1126,9 +1113,14 @@ int fp3_cmd_bench_model(int argc, char **argv) {
       continue;
     margs ai = a;
     ai.integ = ig;
-    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, "bench");
+    const int iss = strcmp(a.engine, "iss") == 0;
+    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, iss, "bench");
     if (!c) {
       rc = EXIT_USAGE;
+      goto out;
+    }
+    if (iss && fit_engine(&e, c, "bench")) {
+      fp3_compiled_free(c);
       goto out;
     }
     const unsigned insns = fp3_compiled_stats(c)->body_insns;

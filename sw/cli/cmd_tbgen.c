@@ -141,38 +141,23 @@ int fp3_cmd_tbgen(int argc, char **argv) {
   fp3_ship_default(&p);
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
-    if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    if (fp3_is_help(argv[i])) {
       usage_tbgen(stdout);
       return 0;
     }
     if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "-o", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       dir = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "tbgen", "--steps", 1, TBGEN_MAX_CHECK,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      unsigned long long k = strtoull(v, &end, 10);
-      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno || k == 0 ||
-          k > TBGEN_MAX_CHECK) {
-        fprintf(stderr, "fp3 tbgen: --steps '%s': must be 1..%u\n", v,
-                TBGEN_MAX_CHECK);
-        return EXIT_USAGE;
-      }
       steps = (uint32_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--set", &v)) != 0) {
       if (r < 0 || set_scene(&p, v)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--round", &v)) != 0) {
+    } else if ((r = fp3_opt_round(argc, argv, &i, "tbgen", &mode)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (strcmp(v, "rne") == 0) {
-        mode.round = FPREF_RNE;
-      } else if (strcmp(v, "rtz") == 0) {
-        mode.round = FPREF_RTZ;
-      } else {
-        fprintf(stderr, "fp3 tbgen: unknown rounding '%s' (rne or rtz)\n", v);
-        return EXIT_USAGE;
-      }
     } else if (strcmp(argv[i], "--ftz") == 0) {
       mode.ftz = 1;
     } else if (strcmp(argv[i], "--no-rtl") == 0) {

@@ -512,6 +512,7 @@ static int cmd_run(int argc, char **argv) {
 
   for (int i = 1; i < argc; i++) {
     const char *v;
+    unsigned long long k;
     int r;
     if (fp3_is_help(argv[i])) {
       usage_run(stdout);
@@ -527,37 +528,16 @@ static int cmd_run(int argc, char **argv) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--program", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       program = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--steps", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "run", "--steps", 1, UINT32_MAX,
+                                  "integrations", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      unsigned long long n = strtoull(v, &end, 10);
-      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno) {
-        fprintf(stderr, "fp3 run: --steps '%s' is not a number\n", v);
-        return EXIT_USAGE;
-      }
-      if (n == 0 || n > UINT32_MAX) {
-        fprintf(stderr, "fp3 run: --steps %s: must be 1..%" PRIu32 "\n", v,
-                (uint32_t)UINT32_MAX);
-        return EXIT_USAGE;
-      }
-      steps = (uint32_t)n;
+      steps = (uint32_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--set", &v)) != 0) {
       if (r < 0 || set_param(&p, v)) return EXIT_USAGE;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace-window", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      unsigned long long a = strtoull(v, &end, 10), b = 0;
-      int okw = v[0] >= '0' && v[0] <= '9' && *end == ':' && !errno;
-      if (okw && strcmp(end + 1, "all") == 0) {
-        b = UINT64_MAX;
-      } else if (okw) {
-        const char *cv = end + 1;
-        b = strtoull(cv, &end, 10);
-        okw = cv[0] >= '0' && cv[0] <= '9' && *end == '\0' && !errno && b > 0;
-      }
-      if (!okw) {
+      unsigned long long a, b;
+      if (fp3_parse_pair(v, 0, UINT64_MAX, 1, UINT64_MAX, "all", &a, &b)) {
         fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
                         "COUNT >= 1 or 'all')\n", v);
         return EXIT_USAGE;
@@ -567,14 +547,8 @@ static int cmd_run(int argc, char **argv) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       trace = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--round", &v)) != 0) {
+    } else if ((r = fp3_opt_round(argc, argv, &i, "run", &mode)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      if (strcmp(v, "rne") == 0) mode.round = FPREF_RNE;
-      else if (strcmp(v, "rtz") == 0) mode.round = FPREF_RTZ;
-      else {
-        fprintf(stderr, "fp3 run: unknown rounding '%s' (rne or rtz)\n", v);
-        return EXIT_USAGE;
-      }
     } else if (strcmp(argv[i], "--ftz") == 0) {
       mode.ftz = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
@@ -593,29 +567,15 @@ static int cmd_run(int argc, char **argv) {
       literal = 1;
     } else if (strcmp(argv[i], "--compile") == 0) {
       compile = 1;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--objects", &v)) != 0) {
+    } else if ((r = fp3_opt_count(argc, argv, &i, "run", "--objects", 1, MAX_OBJECTS,
+                                  "objects", &k)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      unsigned long long k = strtoull(v, &end, 10);
-      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno || k == 0 ||
-          k > MAX_OBJECTS) {
-        fprintf(stderr, "fp3 run: --objects '%s': want 1..%u objects\n", v, MAX_OBJECTS);
-        return EXIT_USAGE;
-      }
       objects = (size_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--scene", &v)) != 0) {
       if (r < 0) return EXIT_USAGE;
       scene = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--seed", &v)) != 0) {
+    } else if ((r = fp3_opt_seed(argc, argv, &i, "run", &seed)) != 0) {
       if (r < 0) return EXIT_USAGE;
-      char *end;
-      errno = 0;
-      seed = strtoull(v, &end, 0);
-      if (v[0] < '0' || v[0] > '9' || *end != '\0' || errno) {
-        fprintf(stderr, "fp3 run: --seed '%s' is not a number\n", v);
-        return EXIT_USAGE;
-      }
       seeded = 1;
     } else {
       fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n",

@@ -29,9 +29,14 @@
  * builds about 300 (models/projectile.fp3m). */
 #define MAX_NODES 1024
 #define MAX_INSNS FP3_DEFAULT_IMEM_DEPTH
-#define MAX_STATE FP3_MODEL_MAX_VARS
-#define MAX_IN (2 * FP3_MODEL_MAX_VARS)
+/* loop-carried values: the state variables and, for rk4comp, one Kahan
+ * compensation each; inputs: the params, then each carried value's
+ * initial value */
+#define MAX_STATE (2 * FP3_MODEL_MAX_VARS)
+#define MAX_IN (3 * FP3_MODEL_MAX_VARS)
 #define NOTE_LEN 72
+/* body instructions: operations and a mov per carried value, at most */
+#define BODY_MAX (MAX_NODES + MAX_STATE + 2)
 
 /* ---- the IR ------------------------------------------------------------- */
 
@@ -381,6 +386,31 @@ static int order_edge(const builder *b, const bins *bi, int j, int k) {
   return 0;
 }
 
+/* Does instruction k read the value of instruction p, directly or
+ * through others?  (A search of the data edges from p, each instruction
+ * visited once.) */
+static int feeds(const bins *bi, int nb, int p, int k) {
+  unsigned char *seen = calloc((size_t)nb + 1, 1);
+  int *todo = malloc(((size_t)nb + 1) * sizeof *todo);
+  int n = 0, found = !seen || !todo; /* out of memory: assume it does (a mov, always right) */
+  if (!found) {
+    todo[n++] = p;
+    seen[p] = 1;
+  }
+  while (n > 0 && !found) {
+    int j = todo[--n];
+    if (j == k) found = 1;
+    for (int q = 0; q < nb && !found; q++)
+      if (!seen[q] && data_edge(bi, j, q)) {
+        seen[q] = 1;
+        todo[n++] = q;
+      }
+  }
+  free(seen);
+  free(todo);
+  return found;
+}
+
 /* Longest latency path from j to the end of the integration; -1 on a
  * dependence cycle. */
 static int height(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int j) {
@@ -400,35 +430,99 @@ static int height(const builder *b, const fp3_compile_opts *o, bins *bi, int nb,
   return h;
 }
 
-/* List scheduling, in-order single issue: order[] gets the body. */
-static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int *order) {
-  for (int j = 0; j < nb; j++)
+/* Registers held for the whole run, before any temporary of the body:
+ * the inputs (each state variable with its initial value), the host's
+ * values, the constants and the loop invariants (as backend allocates
+ * them). */
+static unsigned fixed_regs(const builder *b) {
+  unsigned n = 0;
+  for (int k = 0; k < b->nin; k++) {
+    int used = b->in_state[k] >= 0;
+    for (int i = 0; i < b->nn && !used; i++)
+      used = b->nd[i].live && b->nd[i].kind == NK_IN && b->nd[i].id == k;
+    n += (unsigned)used;
+  }
+  for (int i = 0; i < b->nn; i++) {
+    const node *x = &b->nd[i];
+    if (x->live && (x->host || (x->inv && (x->kind == NK_CONST || op_kind(x->kind))))) n++;
+  }
+  return n;
+}
+
+/* List scheduling, in-order single issue: order[] gets the body.
+ *
+ * limit == 0: latency first.  Among the instructions whose operands are
+ * placed, the one that can issue earliest (its operands' latencies), ties
+ * to the longest latency path to the end of the integration.
+ *
+ * limit > 0: the same, but register pressure bounded (for a context
+ * with `limit` registers of which `fixed` hold the run's inputs,
+ * constants and invariants).  A temporary -- the result of an operation
+ * that is not a state variable's -- lives from its instruction to its
+ * last reader; an instruction that reads the last use of k temporaries
+ * and makes one needs live - k + 1 registers while it issues (operands
+ * are freed before the destination is taken, as backend allocates).  Of
+ * the ready instructions, those that stay within the limit are chosen
+ * latency first; when none does, the one needing the fewest registers
+ * (ties: latency first).  This trades cycles of one object for
+ * registers: with several contexts interleaved the issue slot stays full
+ * (cycles per object-step are the instructions per step either way).
+ * Greedy, so not always the least need; backend measures the need of the
+ * order it gets. */
+static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int nb, int *order,
+                    unsigned fixed, unsigned limit) {
+  for (int j = 0; j < nb; j++) {
+    bi[j].placed = 0;
     if (height(b, o, bi, nb, j) < 0) return -1;
+  }
+  int *remaining = calloc((size_t)nb + 1, sizeof *remaining); /* unplaced readers */
+  if (!remaining) return -1;
+  for (int j = 0; j < nb; j++)
+    for (int k = 0; k < nb; k++)
+      if (data_edge(bi, j, k)) remaining[j]++;
+  unsigned live = 0; /* temporaries made and still read later */
   int cycle = 0;
   for (int placed = 0; placed < nb; placed++) {
     int best = -1, best_at = 0;
+    unsigned best_need = 0;
     for (int k = 0; k < nb; k++) {
       if (bi[k].placed) continue;
       int at = cycle, ready = 1;
+      unsigned frees = 0;
       for (int j = 0; j < nb && ready; j++) {
         int d = data_edge(bi, j, k), ord = order_edge(b, bi, j, k);
         if (!d && !ord) continue;
         if (!bi[j].placed) ready = 0;
         else if (d && bi[j].issue + (int)bins_latency(b, o, &bi[j]) > at)
           at = bi[j].issue + (int)bins_latency(b, o, &bi[j]);
+        if (d && remaining[j] == 1 && bi[j].dest_state < 0) frees++;
       }
       if (!ready) continue;
-      if (best < 0 || at < best_at || (at == best_at && bi[k].height > bi[best].height)) {
+      unsigned need = fixed + live - frees + (bi[k].dest_state < 0 && !bi[k].is_mov);
+      int better;
+      if (best < 0) better = 1;
+      else if (limit && (need <= limit) != (best_need <= limit)) better = need <= limit;
+      else if (limit && need > limit && need != best_need) better = need < best_need;
+      else better = at < best_at || (at == best_at && bi[k].height > bi[best].height);
+      if (better) {
         best = k;
         best_at = at;
+        best_need = need;
       }
     }
-    if (best < 0) return -1;
+    if (best < 0) {
+      free(remaining);
+      return -1;
+    }
     bi[best].placed = 1;
     bi[best].issue = best_at;
     order[placed] = best;
     cycle = best_at + issue_spacing(o);
+    for (int j = 0; j < nb; j++)
+      if (data_edge(bi, j, best) && --remaining[j] == 0 && bi[j].dest_state < 0) live--;
+    if (bi[best].dest_state < 0 && !bi[best].is_mov && remaining[best] > 0) live++;
   }
+  free(remaining);
   return 0;
 }
 
@@ -457,14 +551,16 @@ void fp3_compile_defaults(fp3_compile_opts *o) {
   o->mul_latency = FP3_DEFAULT_MUL_LATENCY;
   o->mov_latency = 1;
   o->num_regs = FP3_DEFAULT_NUM_REGS;
+  o->max_regs = 0;
   o->fmax_pipe = 0;
 }
 
 typedef struct regalloc {
   int reg[MAX_NODES];   /* register of each node's value, -1: none   */
-  int used[256];
-  int last_write[256];  /* cycle the latest write lands, for LRU     */
+  int used[FP3_MAX_REGS];
+  int last_write[FP3_MAX_REGS]; /* cycle the latest write lands, for LRU */
   unsigned nregs, count;
+  unsigned inuse, peak; /* registers held now, and at most            */
 } regalloc;
 
 /* A free register, least recently written first; -1 if none. */
@@ -478,8 +574,108 @@ static int take_reg(regalloc *ra) {
   if (best >= 0) {
     ra->used[best] = 1;
     ra->count++;
+    if (++ra->inuse > ra->peak) ra->peak = ra->inuse;
   }
   return best;
+}
+
+static void release_reg(regalloc *ra, int r) {
+  ra->used[r] = 0;
+  ra->inuse--;
+}
+
+/* Registers for the body in `order` (issue cycles in bi[].issue) within
+ * nregs: the inputs in their order (each state variable's register holds
+ * its initial value), the host's values, the constants, the loop
+ * invariants, then the temporaries in program order, each freed after its
+ * last reader (an instruction's operands are freed before its destination
+ * is taken, so it may reuse one).  This is the interval allocation of one
+ * straight-line body, so it succeeds exactly when the most values live at
+ * once fit.  ra->reg[], in_reg[], state_reg[] get the registers.  Returns
+ * that most (the registers the order needs), or 0 when nregs is too few. */
+static unsigned allocate(const builder *b, const fp3_compile_opts *o, const bins *bi, int nb,
+                         const int *order, unsigned nregs, regalloc *ra, int *in_reg,
+                         int *state_reg) {
+  memset(ra, 0, sizeof *ra);
+  ra->nregs = nregs;
+  for (int i = 0; i < MAX_NODES; i++) ra->reg[i] = -1;
+  for (unsigned r = 0; r < ra->nregs; r++) ra->last_write[r] = -1000000;
+  for (int k = 0; k < MAX_IN; k++) in_reg[k] = -1;
+  for (int k = 0; k < MAX_STATE; k++) state_reg[k] = -1;
+  /* inputs in their order, each state variable with its initial value */
+  for (int k = 0; k < b->nin; k++) {
+    int node_i = -1;
+    if (b->in_state[k] >= 0) {
+      state_reg[b->in_state[k]] = in_reg[k] = take_reg(ra);
+      continue;
+    }
+    for (int i = 0; i < b->nn; i++)
+      if (b->nd[i].live && b->nd[i].kind == NK_IN && b->nd[i].id == k) node_i = i;
+    if (node_i >= 0) ra->reg[node_i] = in_reg[k] = take_reg(ra);
+  }
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].kind == NK_STATE) ra->reg[i] = state_reg[b->nd[i].id];
+  /* values the host computes (a model's div, sqrt, ... on params) */
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].live && b->nd[i].host) ra->reg[i] = take_reg(ra);
+  /* constants, then loop invariants: live for the whole run */
+  for (int pass = 0; pass < 2; pass++)
+    for (int i = 0; i < b->nn; i++) {
+      const node *x = &b->nd[i];
+      if (x->live && x->inv && !x->host && (pass == 0 ? x->kind == NK_CONST : op_kind(x->kind)))
+        if ((ra->reg[i] = take_reg(ra)) < 0) break;
+    }
+  /* temporaries of the body, in schedule order */
+  int *last_use = malloc(((size_t)nb + 1) * sizeof *last_use);
+  if (!last_use) return 0;
+  for (int q = 0; q < nb; q++) {
+    last_use[q] = -1;
+    for (int p = 0; p < nb; p++)
+      if (data_edge(bi, order[q], order[p]) && p > last_use[q]) last_use[q] = p;
+  }
+  int ok = 1;
+  for (int q = 0; q < nb && ok; q++) {
+    const bins *x = &bi[order[q]];
+    /* operands whose last reader this is free their registers first */
+    for (int p = 0; p < q; p++) {
+      const bins *y = &bi[order[p]];
+      if (last_use[p] == q && y->dest_state < 0 && !y->is_mov) release_reg(ra, ra->reg[y->node]);
+    }
+    int r;
+    if (x->dest_state >= 0) r = state_reg[x->dest_state];
+    else r = take_reg(ra);
+    if (r < 0) ok = 0;
+    else {
+      if (!x->is_mov) ra->reg[x->node] = r;
+      ra->last_write[r] = x->issue + (int)bins_latency(b, o, x);
+      if (last_use[q] < 0 && x->dest_state < 0) release_reg(ra, r); /* never read */
+    }
+  }
+  free(last_use);
+  for (int i = 0; i < b->nn && ok; i++)
+    if (b->nd[i].live && ra->reg[i] < 0) ok = 0;
+  for (int w = 0; w < b->nstate; w++)
+    if (state_reg[w] < 0) ok = 0;
+  return ok ? ra->peak : 0;
+}
+
+/* Issue cycles of the body in `order`, in-order single issue (as
+ * schedule places them). */
+static int schedule_times(const builder *b, const fp3_compile_opts *o, bins *bi, int nb,
+                          const int *order) {
+  int cycle = 0;
+  for (int q = 0; q < nb; q++) {
+    bins *x = &bi[order[q]];
+    int at = cycle;
+    for (int p = 0; p < q; p++) {
+      const bins *y = &bi[order[p]];
+      if (data_edge(bi, order[p], order[q]) && y->issue + (int)bins_latency(b, o, y) > at)
+        at = y->issue + (int)bins_latency(b, o, y);
+    }
+    x->issue = at;
+    cycle = at + issue_spacing(o);
+  }
+  return 0;
 }
 
 static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
@@ -521,9 +717,10 @@ static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
 
 /* 0 if the options are usable, else -1 with the reason. */
 static int check_opts(const fp3_compile_opts *o, char *msg, size_t n) {
-  if (o->num_regs < 4 || o->num_regs > 256 || !o->add_latency || !o->mul_latency ||
-      !o->mov_latency || o->fmax_pipe > 1) {
-    snprintf(msg, n, "bad compiler options (num_regs 4..256, latencies >= 1, fmax_pipe 0 or 1)");
+  if (o->num_regs < 4 || o->num_regs > FP3_MAX_REGS || o->max_regs > FP3_MAX_REGS ||
+      !o->add_latency || !o->mul_latency || !o->mov_latency || o->fmax_pipe > 1) {
+    snprintf(msg, n, "bad compiler options (num_regs 4..%d, max_regs at most %d, latencies "
+             ">= 1, fmax_pipe 0 or 1)", FP3_MAX_REGS, FP3_MAX_REGS);
     return -1;
   }
   if (o->fmax_pipe &&
@@ -554,8 +751,8 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
   int rc = -1;
   fp3_strbuf t = {0};
   insn *code = calloc(MAX_NODES + MAX_STATE + 2, sizeof *code); /* counted, then checked */
-  bins *bi = calloc(MAX_NODES + 2, sizeof *bi);
-  int *order = calloc(MAX_NODES + 2, sizeof *order);
+  bins *bi = calloc(BODY_MAX, sizeof *bi);
+  int *order = calloc(BODY_MAX, sizeof *order);
   regalloc *ra = calloc(1, sizeof *ra);
   if (!code || !bi || !order || !ra) {
     snprintf(msg, n, "out of memory");
@@ -598,6 +795,16 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     if (b->nd[src].kind == NK_STATE && b->nd[src].id == w) continue; /* unchanged */
     int p = producer(bi, nb, src);
     int taken = p >= 0 && bi[p].dest_state >= 0;
+    /* the producer writes the state register itself unless a reader of
+     * the old value depends on the new one (Kahan's (t - y) after t):
+     * then t goes to a temporary and a mov follows */
+    for (int k = 0; k < nb && p >= 0 && !taken; k++)
+      for (int q = 0; q < 2; q++) {
+        int sn = bi[k].srcs[q];
+        if (sn >= 0 && b->nd[sn].kind == NK_STATE && b->nd[sn].id == w && k != p &&
+            feeds(bi, nb, p, k))
+          taken = 1;
+      }
     if (p >= 0 && !taken) {
       bi[p].dest_state = w;
     } else {
@@ -605,79 +812,73 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
       nb++;
     }
   }
-  if (schedule(b, o, bi, nb, order)) {
+  /* ---- schedule and registers ---- */
+  const unsigned fixed = fixed_regs(b);
+  unsigned nregs = o->num_regs, need = 0;
+  if (schedule(b, o, bi, nb, order, fixed, 0) == 0)
+    need = allocate(b, o, bi, nb, order, FP3_MAX_REGS, ra, c->in_reg, c->state_reg);
+  else {
     snprintf(msg, n, "internal: the loop body cannot be ordered (a value of the "
                      "old state is needed after the new one)");
     goto out;
   }
-
-  /* ---- registers ---- */
-  ra->nregs = o->num_regs;
-  for (int i = 0; i < MAX_NODES; i++) ra->reg[i] = -1;
-  for (unsigned r = 0; r < ra->nregs; r++) ra->last_write[r] = -1000000;
-  int *in_reg = c->in_reg, *state_reg = c->state_reg;
-  for (int k = 0; k < MAX_IN; k++) in_reg[k] = -1;
-  for (int k = 0; k < MAX_STATE; k++) state_reg[k] = -1;
-  /* inputs in their order, each state variable with its initial value */
-  for (int k = 0; k < b->nin; k++) {
-    int node_i = -1;
-    if (b->in_state[k] >= 0) {
-      state_reg[b->in_state[k]] = in_reg[k] = take_reg(ra);
-      continue;
+  if (need > nregs) { /* bound the pressure; keep the order that needs fewer */
+    int *order2 = calloc(BODY_MAX, sizeof *order2);
+    int *best2 = calloc(BODY_MAX, sizeof *best2);
+    if (!order2 || !best2) {
+      free(order2);
+      free(best2);
+      snprintf(msg, n, "out of memory");
+      goto out;
     }
-    for (int i = 0; i < b->nn; i++)
-      if (b->nd[i].live && b->nd[i].kind == NK_IN && b->nd[i].id == k) node_i = i;
-    if (node_i >= 0) ra->reg[node_i] = in_reg[k] = take_reg(ra);
-  }
-  for (int i = 0; i < b->nn; i++)
-    if (b->nd[i].kind == NK_STATE) ra->reg[i] = state_reg[b->nd[i].id];
-  /* values the host computes (a model's div, sqrt, ... on params) */
-  for (int i = 0; i < b->nn; i++)
-    if (b->nd[i].live && b->nd[i].host) ra->reg[i] = take_reg(ra);
-  /* constants, then loop invariants: live for the whole run */
-  for (int pass = 0; pass < 2; pass++)
-    for (int i = 0; i < b->nn; i++) {
-      node *x = &b->nd[i];
-      if (x->live && x->inv && !x->host && (pass == 0 ? x->kind == NK_CONST : op_kind(x->kind)))
-        if ((ra->reg[i] = take_reg(ra)) < 0) break;
+    /* the greedy bound may start too many chains before it binds: a
+     * tighter bound (down to fixed + 1) may end with fewer registers */
+    unsigned need2 = 0;
+    for (unsigned bound = nregs; bound > fixed && (!need2 || need2 > nregs); bound--) {
+      unsigned k = 0;
+      if (schedule(b, o, bi, nb, order2, fixed, bound) == 0)
+        k = allocate(b, o, bi, nb, order2, FP3_MAX_REGS, ra, c->in_reg, c->state_reg);
+      if (k && (!need2 || k < need2)) {
+        need2 = k;
+        memcpy(best2, order2, (BODY_MAX) * sizeof *order2);
+      }
     }
-  /* temporaries of the body, in schedule order */
-  int last_use[MAX_NODES + 2];
-  for (int q = 0; q < nb; q++) {
-    last_use[q] = -1;
-    for (int p = 0; p < nb; p++)
-      if (data_edge(bi, order[q], order[p]) && p > last_use[q]) last_use[q] = p;
-  }
-  int ok = 1;
-  for (int q = 0; q < nb && ok; q++) {
-    bins *x = &bi[order[q]];
-    /* operands whose last reader this is free their registers first */
-    for (int p = 0; p < q; p++) {
-      bins *y = &bi[order[p]];
-      if (last_use[p] == q && y->dest_state < 0 && !y->is_mov) ra->used[ra->reg[y->node]] = 0;
+    memcpy(order2, best2, (BODY_MAX) * sizeof *order2);
+    if (need2 && need2 < need) { /* the pressure-bounded order needs fewer */
+      memcpy(order, order2, (BODY_MAX) * sizeof *order);
+      need = need2;
     }
-    int r;
-    if (x->dest_state >= 0) r = state_reg[x->dest_state];
-    else r = take_reg(ra);
-    if (r < 0) ok = 0;
-    else {
-      if (!x->is_mov) ra->reg[x->node] = r;
-      ra->last_write[r] = x->issue + (int)bins_latency(b, o, x);
-      if (last_use[q] < 0 && x->dest_state < 0) ra->used[r] = 0; /* never read */
+    if (need > nregs && need <= o->max_regs) nregs = need; /* a larger build */
+    free(order2);
+    free(best2);
+    /* the issue cycles of the order kept */
+    if (schedule_times(b, o, bi, nb, order)) {
+      snprintf(msg, n, "internal: the loop body cannot be ordered");
+      goto out;
     }
   }
-  for (int i = 0; i < b->nn && ok; i++)
-    if (b->nd[i].live && ra->reg[i] < 0) ok = 0;
-  for (int w = 0; w < b->nstate; w++)
-    if (state_reg[w] < 0) ok = 0;
-  if (!ok) {
-    snprintf(msg, n, "the program needs more than the %u registers of a context "
-             "(NUM_REGS is %u)", o->num_regs, o->num_regs);
+  c->stats.regs_needed = need;
+  c->stats.num_regs = nregs;
+  if (!need) {
+    snprintf(msg, n, "the program needs more than %d registers; NUM_REGS is %u",
+             FP3_MAX_REGS, o->num_regs);
     goto out;
   }
+  if (need > nregs) {
+    snprintf(msg, n, "the program needs %u registers; NUM_REGS is %u (%u hold the run's "
+             "inputs, constants and invariants, the rest the loop's temporaries, and there "
+             "is no spilling: a build with NUM_REGS=%u runs it)", need, o->num_regs, fixed,
+             need);
+    goto out;
+  }
+  if (allocate(b, o, bi, nb, order, nregs, ra, c->in_reg, c->state_reg) == 0) {
+    snprintf(msg, n, "internal: register allocation failed at NUM_REGS %u", nregs);
+    goto out;
+  }
+  int *in_reg = c->in_reg, *state_reg = c->state_reg;
   unsigned regs_used = 0;
   {
-    int seen[256] = {0};
+    int seen[FP3_MAX_REGS] = {0};
     for (int i = 0; i < b->nn; i++)
       if (b->nd[i].live && ra->reg[i] >= 0 && !seen[ra->reg[i]]) {
         seen[ra->reg[i]] = 1;
@@ -754,7 +955,11 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
       c->stats.hoisted, c->stats.dead_removed);
   fp3_strbuf_printf(&t, "; instructions per integration: %u (%u arithmetic + endi; the literal program: %u)\n",
       c->stats.body_insns, c->stats.body_arith, c->stats.literal_body_insns);
-  fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u\n", prologue, regs_used, o->num_regs);
+  fp3_strbuf_printf(&t, "; prologue: %u instructions; registers: %u of %u (%u live at most)\n",
+                    prologue, regs_used, nregs, need);
+  if (nregs > o->num_regs)
+    fp3_strbuf_printf(&t, "; for a build with NUM_REGS >= %u: the default %u are too few\n", nregs,
+                      o->num_regs);
   fp3_strbuf_printf(&t, "; estimated cycles%s (add/sub %u, mul %u, li/mov %u cycles to a dependent issue):\n"
           ";   first integration %u, each later one %u\n",
       o->fmax_pipe ? " for FMAX_PIPE=1" : "",
@@ -783,6 +988,7 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
       }
     fp3_strbuf_printf(&t, "; results: the state registers above, after each endi\n\n");
   }
+  if (nregs > FP3_DEFAULT_NUM_REGS) fp3_strbuf_printf(&t, ".regs %u\n\n", nregs);
   for (size_t k = 0; k < ni; k++) {
     const insn *x = &code[k];
     char ops[48];
@@ -1041,7 +1247,8 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, hh, f[j])), "ym", j);
     m_f(b, m, t, f, "2");
     for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
-  } else if (strcmp(integ, "rk4") == 0) {
+  } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
+    const int comp = strcmp(integ, "rk4comp") == 0;
     ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
     ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
     m_f(b, m, y, f, "1");
@@ -1064,7 +1271,22 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
         sum = m_add(b, sum, k4);
       }
       sum = m_nm(b, sum, "sum", i);
-      b->out[i] = m_nm(b, m_add(b, y[i], mul(b, sixth, sum)), "n", i);
+      ref d = mul(b, sixth, sum);
+      if (!comp) {
+        b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
+        continue;
+      }
+      /* y += d, Kahan-compensated: the carried c holds -(what the
+       * rounding of the sums has lost so far) (integrators.c rk4comp) */
+      ref cst = state(b, (int)(ns + i)), nc = cst, ny = y[i];
+      nc.neg ^= 1;
+      ny.neg ^= 1;
+      ref yk = m_nm(b, m_add(b, d, nc), "yk", i);
+      ref t_ = m_nm(b, m_add(b, y[i], yk), "n", i);
+      ref z = m_nm(b, m_add(b, t_, ny), "z", i);
+      yk.neg ^= 1;
+      b->out[ns + i] = m_add(b, z, yk);
+      b->out[i] = t_;
     }
   } else if (strcmp(integ, "symeuler") == 0) {
     if (!fp3_model_split(m)) return -2;
@@ -1108,14 +1330,22 @@ static int model_ir(builder *b, const fp3_model *m, const char *integ,
   b->zero = -1;
   b->model = m;
   b->pzero = pzero;
-  b->nstate = (int)m->nstate;
-  b->nin = (int)(m->nparam + m->nstate);
-  for (unsigned i = 0; i < m->nstate; i++)
-    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s", m->state[i]);
+  /* rk4comp carries a compensation per state variable (c_NAME, 0 at
+   * the start) beside it */
+  const unsigned carried = m->nstate * (strcmp(integ, "rk4comp") == 0 ? 2u : 1u);
+  b->nstate = (int)carried;
+  b->nin = (int)(m->nparam + carried);
+  for (unsigned i = 0; i < carried; i++)
+    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s%.24s", i < m->nstate ? "" : "c_",
+             m->state[i % m->nstate]);
   for (int k = 0; k < b->nin; k++) {
     unsigned q = (unsigned)k;
     if (q < m->nparam) snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", m->param[q]);
-    else snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s(0)", m->state[q - m->nparam]);
+    else {
+      char st_[FP3_MODEL_NAME_LEN];
+      memcpy(st_, b->st_name[q - m->nparam], sizeof st_);
+      snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%.24s(0)", st_);
+    }
     b->in_state[k] = q < m->nparam ? -1 : (int)(q - m->nparam);
   }
   int rc = m_build(b, m, integ);
@@ -1194,9 +1424,11 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
                                 unsigned *reg, uint32_t *val, size_t max) {
   const builder *b = &c->b;
   const fp3_model *m = b->model;
+  float yc[MAX_STATE] = {0}; /* the carried values: the state, compensations 0 */
   for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
-  for (unsigned k = 0; k < m->nstate; k++) c->in[m->nparam + k] = y0[k];
-  golden_begin(c, y0);
+  for (unsigned k = 0; k < m->nstate; k++) yc[k] = y0[k];
+  for (int k = 0; k < b->nstate; k++) c->in[m->nparam + (unsigned)k] = yc[k];
+  golden_begin(c, yc);
   size_t w = 0;
   for (int k = 0; k < b->nin && w < max; k++)
     if (c->in_reg[k] >= 0) {
@@ -1211,7 +1443,45 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
   return w;
 }
 
-void fp3_compiled_model_step(fp3_compiled *c, float *y) { golden_advance(c, y); }
+void fp3_compiled_model_step(fp3_compiled *c, float *y) {
+  float yc[MAX_STATE];
+  golden_advance(c, yc);
+  for (unsigned i = 0; i < c->b.model->nstate; i++) y[i] = yc[i];
+}
+
+unsigned fp3_compiled_carried(const fp3_compiled *c) { return (unsigned)c->b.nstate; }
+
+/* ---- a model scene's golden model (mscene.h runners) ---------------------- */
+
+static size_t sg_start(void *ctx, size_t obj, unsigned *reg, uint32_t *val, size_t max) {
+  fp3_scene_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  return fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam,
+                                  g->sc->y0 + obj * m->nstate, reg, val, max);
+}
+
+static void sg_step(void *ctx, float *y) {
+  fp3_scene_gold *g = ctx;
+  fp3_compiled_model_step(g->c, y);
+}
+
+static void sg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
+  fp3_scene_gold *g = ctx;
+  const fp3_model *m = g->sc->model;
+  unsigned reg[2 * MAX_IN];
+  uint32_t val[2 * MAX_IN];
+  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 2 * MAX_IN);
+  fp3_compiled_model_step(g->c, ynew);
+}
+
+void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc) {
+  const unsigned ns = sc->model->nstate;
+  g->c = c;
+  g->sc = sc;
+  for (unsigned i = 0; i < ns; i++) g->reg[i] = fp3_compiled_state_reg(c, i);
+  g->golden = (fp3_state_golden){g, ns, g->reg, sg_start, sg_step};
+  g->stepper = (fp3_state_stepper){g, ns, g->reg, sg_start, sg_step_from};
+}
 
 /* ---- golden model -------------------------------------------------------- */
 

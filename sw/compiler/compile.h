@@ -30,7 +30,15 @@
  *    priority: the longest latency path to the end of the integration),
  *    registers are allocated within num_regs, least recently written
  *    first (a register written again soon after its previous write would
- *    stall on WAW), and assembly text is emitted.
+ *    stall on WAW), and assembly text is emitted.  There is no load or
+ *    store, so no spilling: when the latency-first schedule needs more
+ *    registers than num_regs (the most values live at once), the body is
+ *    scheduled again with register pressure bounded (the ready
+ *    instruction that stays within the bound first, compile.c schedule),
+ *    which fits 3-D RK4 (about 130 instructions) into 32 registers where
+ *    latency first needs 36 or more; failing that, the program is
+ *    refused with the numbers ("the program needs 34 registers; NUM_REGS
+ *    is 32"), or compiled for a larger build (opts.max_regs).
  *
  * Integrators: euler, symeuler, rk2, rk4 (integrators.h).  With fold = 0
  * and drop_zero = 0 the compiled program performs exactly the operations
@@ -45,6 +53,7 @@
 
 #include "image.h"
 #include "model.h"
+#include "mscene.h"
 #include "objects.h"
 
 /* Compiler options. */
@@ -55,7 +64,12 @@ typedef struct fp3_compile_opts {
   unsigned mul_latency;  /* mul core latency, cycles (MUL_LATENCY)         */
   unsigned mov_latency;  /* move path latency, cycles (1; FMAX_PIPE adds
                             FP3_FMAX_PIPE_PICK_STAGES)                    */
-  unsigned num_regs;     /* registers per context                         */
+  unsigned num_regs;     /* registers per context (NUM_REGS of the build) */
+  unsigned max_regs;     /* 0, or up to FP3_MAX_REGS: a program that does
+                            not fit num_regs even with the pressure-bounded
+                            schedule is compiled for a build with more:
+                            the fewest it is scheduled into, if at most
+                            max_regs; stats.num_regs says which          */
   unsigned fmax_pipe;    /* 1: for the build for clock rate (FMAX_PIPE=1,
                             fp3_config.fmax_pipe): its pick, fetch and
                             issue stages (fp3_isa.h FP3_FMAX_PIPE_*); needs
@@ -79,7 +93,14 @@ typedef struct fp3_compile_stats {
                                   drop_zero = 0 (the paper's program)     */
   unsigned dead_removed;     /* operations built but read by nothing      */
   unsigned hoisted;          /* loop-invariant operations in the prologue */
-  unsigned regs;             /* registers used                            */
+  unsigned regs;             /* registers named (the allocator spreads
+                                values over the free ones, least recently
+                                written first, to spare WAW stalls)      */
+  unsigned regs_needed;      /* registers the schedule needs: the most
+                                values live at once (inputs, constants,
+                                invariants, state and temporaries)      */
+  unsigned num_regs;         /* NUM_REGS of the build compiled for:
+                                opts.num_regs, or more with max_regs    */
   unsigned est_cycles_first; /* first integration, prologue included      */
   unsigned est_cycles_later; /* each later integration (steady state)     */
   int no_drag;               /* C == 0 in every object                    */
@@ -169,8 +190,13 @@ unsigned fp3_image_body_insns(const fp3_image *img);
  * removed terms (as fp3_compile).  Returns 0 and *out, or -1 with a
  * message: unknown integrator, symeuler on an unsplit model, an operation
  * the ISA table lacks ("model projectile needs sqrt: this build has no
- * HAS_SQRT unit ..."), more registers than num_regs or words than
+ * HAS_SQRT unit ..."), more registers than num_regs (and max_regs: "the
+ * program needs 34 registers; NUM_REGS is 32 ...") or words than
  * IMEM_DEPTH ("the program needs 290 instructions; IMEM_DEPTH is 256").
+ * A program compiled for more than FP3_DEFAULT_NUM_REGS registers starts
+ * with `.regs N` (asm.h). 
+ * Integrator rk4comp carries a Kahan compensation per state variable in a
+ * register of its own (fp3_compiled_carried), 0 at the start.
  * The text binds inputs and results in comments (the assembler's .in/.out
  * names are the ship's): fp3_compiled_model_start gives the writes. */
 int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
@@ -187,10 +213,34 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
                                 unsigned *reg, uint32_t *val, size_t max);
 
 /* One integration of the golden model: y (m->nstate values) gets the new
- * state. */
+ * state (the compensations of rk4comp stay inside c). */
 void fp3_compiled_model_step(fp3_compiled *c, float *y);
 
-/* The register holding state variable i. */
+/* The values a model's program carries from one integration to the next:
+ * its state variables, then (rk4comp) one Kahan compensation each, so
+ * m->nstate or 2 m->nstate.  The registers of the compensations start at
+ * 0 (fp3_compiled_model_start writes them). */
+unsigned fp3_compiled_carried(const fp3_compiled *c);
+
+/* The register holding carried value i (state variable i for i <
+ * m->nstate). */
 unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
+
+/* The golden model of compiled model c over the objects of model scene sc,
+ * as the runners of mscene.h want it: g->golden for
+ * fp3_run_state_objects, g->stepper (each object stepped from any state:
+ * the golden model restarted on it, for fp3_run_state_frames; right for
+ * programs whose only carried values are the state variables,
+ * fp3_compiled_carried).  g keeps c, sc and the state registers; it must
+ * outlive the runs. */
+typedef struct fp3_scene_gold {
+  fp3_compiled *c;
+  const fp3_mscene *sc;
+  unsigned reg[FP3_MODEL_MAX_VARS];
+  fp3_state_golden golden;
+  fp3_state_stepper stepper;
+} fp3_scene_gold;
+
+void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc);
 
 #endif /* FP3_COMPILE_H */

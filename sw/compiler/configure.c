@@ -248,9 +248,13 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   fp3_compile_defaults(&co);
   if (o->literal) co.fold = co.drop_zero = 0;
 
-  /* the program as fp3 run --scene compiles it for the default build */
+  /* the program as fp3 run --scene compiles it for the default build, or
+   * for the fewest registers above its NUM_REGS it fits */
   fp3_compiled *c = NULL;
+  co.max_regs = FP3_MAX_REGS;
   if (src_compile(src, integ, &co, &c, msg, n)) return -1;
+  co.max_regs = 0;
+  co.num_regs = fp3_compiled_stats(c)->num_regs;
   r->regs_default = regs_named(fp3_compiled_image(c));
   r->est_first = fp3_compiled_stats(c)->est_cycles_first;
   r->est_later = fp3_compiled_stats(c)->est_cycles_later;
@@ -310,7 +314,6 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   r->cfg.num_contexts = (unsigned)nc;
   /* lanes: the rest of the scene in flight beside the contexts */
   size_t nl = nc ? (nobj + nc - 1) / nc : 1;
-  if (nl < 1) nl = 1;
   if (nl > o->max_lanes) nl = o->max_lanes;
   r->cfg.num_lanes = (unsigned)nl;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;

@@ -11,7 +11,9 @@
  *  - NUM_REGS: the fewest registers k (at least 4, the compiler's minimum)
  *    into which the compiler schedules the program without losing a cycle:
  *    its estimated cycles of the first and of each later integration of one
- *    object equal those of the compilation with the default NUM_REGS.  A
+ *    object equal those of the compilation with the default NUM_REGS (a
+ *    program that needs more than the default, 3-D RK4 folded, gets the
+ *    fewest registers the compiler schedules it into: NUM_REGS=34).  A
  *    build with NUM_REGS = k compiles exactly that program (`fp3 run
  *    --scene` compiles for the NUM_REGS it reads back from the hardware),
  *    and the program names registers below k only.  (The compiler takes

@@ -188,10 +188,11 @@ fp3_engine *fp3_engine_iss_new(void);
 /* An ISS whose FP operations follow core options `mode` (RTZ, FTZ);
  * FP3_MAX_CONTEXTS contexts of one lane. */
 fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode);
-/* An ISS shaped like a build: num_contexts, num_lanes and mode of c
- * (the lanes of a context run in lock step, as the RTL's: beq across
- * lanes), every unit.  NULL when out of memory or when c has no context
- * or more than FP3_MAX_CONTEXTS contexts or FP3_MAX_LANES lanes. */
+/* An ISS shaped like a build: num_contexts, num_lanes, num_regs (0: the
+ * default FP3_DEFAULT_NUM_REGS) and mode of c (the lanes of a context run
+ * in lock step, as the RTL's: beq across lanes), every unit.  NULL when
+ * out of memory or when c has no context or more than FP3_MAX_CONTEXTS
+ * contexts, FP3_MAX_LANES lanes, or num_regs is 1 or above FP3_MAX_REGS. */
 fp3_engine *fp3_engine_iss_new_config(const fp3_config *c);
 /* trace_path: waveform file to write (NULL: none). */
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);

@@ -2,7 +2,8 @@
  * iss.c -- the FP3 instruction-set simulator: the architectural model of
  * the processor, one instruction at a time, as an engine (engine.h).
  *
- * Registers hold binary32 bit patterns; add/sub/mul/div/sqrt are
+ * Registers hold binary32 bit patterns, NUM_REGS per object slot (32, or
+ * the build's: fp3_engine_iss_new_config); add/sub/mul/div/sqrt are
  * fpref_add/sub/mul/div/sqrt in the engine's core configuration (default
  * RNE with subnormals; RTZ and FTZ as the RTL's ROUND and FTZ parameters),
  * abs/neg/min/max are fpref_abs/neg/min/max (exact, never flushed); their
@@ -40,7 +41,7 @@
 typedef struct iss_engine {
   fp3_engine base;
   uint64_t imem[FP3_DEFAULT_IMEM_DEPTH];
-  uint32_t regs[FP3_MAX_CONTEXTS * FP3_MAX_LANES][FP3_DEFAULT_NUM_REGS]; /* [slot] */
+  uint32_t *regs; /* slot s's register r: regs[s * num_regs + r] */
   fp3_ctx_status cs[FP3_MAX_CONTEXTS * FP3_MAX_LANES]; /* [slot], of the last run */
 } iss_engine;
 
@@ -76,14 +77,14 @@ static int check_reg(fp3_engine *e, unsigned context, unsigned reg) {
 static int iss_write_reg(fp3_engine *e, unsigned context, unsigned reg,
                          uint32_t value) {
   if (check_reg(e, context, reg)) return -1;
-  ((iss_engine *)e)->regs[context][reg] = value;
+  ((iss_engine *)e)->regs[(size_t)context * e->config.num_regs + reg] = value;
   return 0;
 }
 
 static int iss_read_reg(fp3_engine *e, unsigned context, unsigned reg,
                         uint32_t *value) {
   if (check_reg(e, context, reg)) return -1;
-  *value = ((iss_engine *)e)->regs[context][reg];
+  *value = ((iss_engine *)e)->regs[(size_t)context * e->config.num_regs + reg];
   return 0;
 }
 
@@ -119,7 +120,7 @@ static void run_context(iss_engine *s, unsigned ctx, uint32_t steps, unsigned re
     uint32_t next = pc + 1;
     for (unsigned l = 0; l < nl; l++) {
       const unsigned slot = l * nc + ctx;
-      uint32_t *regs = s->regs[slot];
+      uint32_t *regs = s->regs + (size_t)slot * e->config.num_regs;
       uint32_t a = regs[fp3_insn_ra(w)], b = regs[fp3_insn_rb(w)];
       int writes = 1;
       uint32_t result = 0;
@@ -220,7 +221,10 @@ static int iss_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
   return 0;
 }
 
-static void iss_destroy(fp3_engine *e) { free(e); }
+static void iss_destroy(fp3_engine *e) {
+  free(((iss_engine *)e)->regs);
+  free(e);
+}
 
 static const fp3_engine_ops iss_ops = {
     "iss",   iss_load_program, iss_write_reg,  iss_read_reg,
@@ -230,6 +234,11 @@ static const fp3_engine_ops iss_ops = {
 fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {
   iss_engine *s = calloc(1, sizeof *s);
   if (!s) return NULL;
+  s->regs = calloc((size_t)FP3_MAX_CONTEXTS * FP3_DEFAULT_NUM_REGS, sizeof *s->regs);
+  if (!s->regs) {
+    free(s);
+    return NULL;
+  }
   s->base.ops = &iss_ops;
   s->base.config.num_contexts = FP3_MAX_CONTEXTS;
   s->base.config.num_lanes = 1;
@@ -248,11 +257,19 @@ fp3_engine *fp3_engine_iss_new(void) { return fp3_engine_iss_new_mode(FPREF_IEEE
 
 fp3_engine *fp3_engine_iss_new_config(const fp3_config *c) {
   if (!c || c->num_contexts == 0 || c->num_contexts > FP3_MAX_CONTEXTS ||
-      c->num_lanes > FP3_MAX_LANES)
+      c->num_lanes > FP3_MAX_LANES || c->num_regs == 1 || c->num_regs > FP3_MAX_REGS)
     return NULL;
   fp3_engine *e = fp3_engine_iss_new_mode(c->mode);
   if (!e) return NULL;
+  iss_engine *s = (iss_engine *)e;
   e->config.num_contexts = c->num_contexts;
   e->config.num_lanes = c->num_lanes ? c->num_lanes : 1;
+  e->config.num_regs = c->num_regs ? c->num_regs : FP3_DEFAULT_NUM_REGS;
+  free(s->regs);
+  s->regs = calloc((size_t)fp3_config_slots(&e->config) * e->config.num_regs, sizeof *s->regs);
+  if (!s->regs) {
+    free(e);
+    return NULL;
+  }
   return e;
 }

@@ -62,6 +62,8 @@ typedef struct {
   int top_line; /* line of the top file's .include being assembled */
   char **names; /* included files' paths, kept for messages to the end */
   size_t nnames;
+  unsigned nregs; /* registers r0 .. r(nregs-1) (.regs; default NUM_REGS) */
+  int reg_seen;   /* a register was named: .regs may no longer change it */
 } asm_state;
 
 static void add_error(asm_state *st, int line, const char *fmt, ...) {
@@ -148,10 +150,11 @@ static int numeric_reg(const char *s, long *num) {
 
 static int parse_reg(asm_state *st, const char *s, int line, unsigned *reg) {
   long num;
+  st->reg_seen = 1;
   if (numeric_reg(s, &num)) {
-    if (num >= FP3_DEFAULT_NUM_REGS) {
-      add_error(st, line, "register out of range: %s (registers are r0..r%d)",
-                s, FP3_DEFAULT_NUM_REGS - 1);
+    if (num >= (long)st->nregs) {
+      add_error(st, line, "register out of range: %s (registers are r0..r%u)",
+                s, st->nregs - 1);
       return -1;
     }
     *reg = (unsigned)num;
@@ -162,8 +165,8 @@ static int parse_reg(asm_state *st, const char *s, int line, unsigned *reg) {
     *reg = (unsigned)a->value;
     return 0;
   }
-  add_error(st, line, "bad register '%s' (expected r0..r%d or a .reg alias)",
-            s, FP3_DEFAULT_NUM_REGS - 1);
+  add_error(st, line, "bad register '%s' (expected r0..r%u or a .reg alias)",
+            s, st->nregs - 1);
   return -1;
 }
 
@@ -395,6 +398,16 @@ static void do_directive(asm_state *st, const char *dir, char **ops, int nops,
     unsigned reg;
     if (parse_reg(st, b, line, &reg)) return;
     sym_add(st, &st->aliases, a, (int)reg, line);
+  } else if (strcasecmp(dir, ".regs") == 0) {
+    /* `.regs N`: the program is for a build with NUM_REGS >= N */
+    char *end;
+    long v = nops == 1 ? strtol(ops[0], &end, 10) : 0;
+    if (nops != 1 || *end || v < 2 || v > FP3_MAX_REGS)
+      add_error(st, line, ".regs takes a register count 2..%d", FP3_MAX_REGS);
+    else if (st->reg_seen)
+      add_error(st, line, ".regs must come before the first register is named");
+    else
+      st->nregs = (unsigned)v;
   } else if (strcasecmp(dir, ".in") == 0) {
     do_binding(st, 1, ops, nops, line);
   } else if (strcasecmp(dir, ".out") == 0) {
@@ -620,6 +633,7 @@ int fp3_asm_string(const char *src, const char *fname, fp3_image *img,
   memset(&st, 0, sizeof st);
   st.fname = fname ? fname : "<input>";
   st.img = img;
+  st.nregs = FP3_DEFAULT_NUM_REGS;
   fp3_image_init(img);
   if (errors) *errors = NULL;
 

@@ -17,6 +17,10 @@
  *                              v0 s0, and the folded inputs hm hmT hmC
  *                              of image.h) into rN before the run
  *   .out NAME, rN              rN holds result NAME (v s)
+ *   .regs N                    the program is for a build with NUM_REGS >= N
+ *                              (2 .. 256): registers r0 .. r(N-1); before the
+ *                              first register named.  Engines check each
+ *                              register against their own NUM_REGS
  *   .word 0xHHHHHHHHHHHHHHHH   a raw 64-bit word, not checked (tests)
  *   .include "FILE"            FILE's lines in place (a relative FILE is
  *                              found beside the including file; at most 8
@@ -25,7 +29,8 @@
  *                              from an included file has the line of the
  *                              .include
  *
- * Registers are r0 .. r31 or aliases; mnemonics and directives are case
+ * Registers are r0 .. r31 (the default NUM_REGS; after .regs N, r0 ..
+ * r(N-1)) or aliases; mnemonics and directives are case
  * insensitive, labels and aliases are not.
  */
 #ifndef FP3_ASM_H

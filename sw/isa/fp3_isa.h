@@ -216,6 +216,10 @@
  * 6-bit context numbers). */
 #define FP3_MAX_CONTEXTS 64
 
+/* The most registers a context may have (NUM_REGS; the register fields of
+ * an instruction word are 8 bits wide). */
+#define FP3_MAX_REGS 256
+
 /* The most lanes a build may have (NUM_LANES): the trace port carries
  * 32 x NUM_LANES bits per write-back port, and INFO2[31:24] and LANE hold
  * the lane count and number.

@@ -664,11 +664,12 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
   for (unsigned i = 0; i < m->nstate; i++) f[i] = val[m->deriv[i]];
 }
 
-const char *fp3_model_integrators(void) { return "euler rk2 rk4 symeuler verlet"; }
+const char *fp3_model_integrators(void) { return "euler rk2 rk4 rk4comp symeuler verlet"; }
 
 int fp3_model_integrator_known(const char *name) {
   return strcmp(name, "euler") == 0 || strcmp(name, "rk2") == 0 || strcmp(name, "rk4") == 0 ||
-         strcmp(name, "symeuler") == 0 || strcmp(name, "verlet") == 0;
+         strcmp(name, "rk4comp") == 0 || strcmp(name, "symeuler") == 0 ||
+         strcmp(name, "verlet") == 0;
 }
 
 int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *in,
@@ -687,7 +688,8 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
     for (unsigned j = 0; j < ns; j++) t[j] = y[j] + hh * f[j];
     fp3_model_eval_f(m, in, t, f, val);
     for (unsigned i = 0; i < ns; i++) y[i] = y[i] + h * f[i];
-  } else if (strcmp(integ, "rk4") == 0) {
+  } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
+    const int comp = strcmp(integ, "rk4comp") == 0;
     fp3_model_eval_f(m, in, y, f, val);
     for (unsigned j = 0; j < ns; j++) k1[j] = h * f[j];
     for (unsigned j = 0; j < ns; j++) t[j] = y[j] + 0.5f * k1[j];
@@ -700,7 +702,17 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
     fp3_model_eval_f(m, in, t, f, val);
     for (unsigned i = 0; i < ns; i++) {
       const float k4 = h * f[i];
-      y[i] = y[i] + 0.16666667f * (((k1[i] + 2.0f * k2[i]) + 2.0f * k3[i]) + k4);
+      const float d = 0.16666667f * (((k1[i] + 2.0f * k2[i]) + 2.0f * k3[i]) + k4);
+      if (!comp) {
+        y[i] = y[i] + d;
+        continue;
+      }
+      float *c = &y[ns + i]; /* Kahan: -(what the sums have lost so far) */
+      const float yk = d - *c;
+      const float t_ = y[i] + yk;
+      const float z = t_ - y[i];
+      *c = z - yk;
+      y[i] = t_;
     }
   } else if (strcmp(integ, "symeuler") == 0 && fp3_model_split(m)) {
     fp3_model_eval_f(m, in, y, f, val);

@@ -116,7 +116,8 @@ const char *fp3_mexpr_op_name(int kind);
 
 /* ---- the literal golden model (C binary32) ------------------------------- */
 
-/* Integrators of the literal golden model: "euler rk2 rk4 symeuler verlet". */
+/* Integrators of the literal golden model: "euler rk2 rk4 rk4comp symeuler
+ * verlet". */
 const char *fp3_model_integrators(void);
 int fp3_model_integrator_known(const char *name);
 
@@ -132,6 +133,11 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
  *   rk2:      ym_j = y_j + (0.5 h) f_j(y);  y_i += h f_i(ym)
  *   rk4:      k1 = h f(y), k2 = h f(y + 0.5 k1), k3 = h f(y + 0.5 k2),
  *             k4 = h f(y + k3), y_i += 0.16666667 (((k1 + 2 k2) + 2 k3) + k4)
+ *   rk4comp:  rk4 with the update y_i += d_i Kahan-compensated (Kahan
+ *             1965; as the ship's rk4comp, sw/ref/integrators.c): with c_i
+ *             carried from one integration to the next (0 at the start),
+ *             yk = d_i - c_i; t = y_i + yk; c_i = (t - y_i) - yk; y_i = t.
+ *             y holds 2 nstate values: the state, then the c_i
  *   symeuler: velocities u_i += h f_i(y), then positions
  *             x_i += h f_i(x, u_new) (needs fp3_model_split)
  *   verlet:   velocity Verlet (kick, drift, kick; Verlet 1967, Swope et

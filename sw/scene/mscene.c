@@ -421,8 +421,8 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
                           uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
                           fp3_state_result *res, char *msg, size_t n) {
   memset(res, 0, sizeof *res);
-  const unsigned nctx = e->config.num_contexts, ns = golden->nstate;
-  const unsigned nregs = e->config.num_regs;
+  const unsigned nctx = fp3_config_slots(&e->config); /* objects per batch */
+  const unsigned ns = golden->nstate, nregs = e->config.num_regs;
   double bytes = 5.0 * nctx * ns * ((double)steps + 1.0);
   if (bytes > 2e9) {
     snprintf(msg, n, "%u contexts x %u state variables x %" PRIu32 " integrations is too "
@@ -446,7 +446,8 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
     goto out;
   }
   res->objects = nobj;
-  res->contexts = nctx;
+  res->contexts = e->config.num_contexts;
+  res->lanes = e->config.num_lanes ? e->config.num_lanes : 1;
   res->first_object = res->error_object = res->nonfinite_object = SIZE_MAX;
   for (size_t first = 0; first < nobj; first += nctx) {
     unsigned k = (unsigned)(nobj - first < nctx ? nobj - first : nctx);
@@ -528,8 +529,8 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,
                          char *msg, size_t n) {
   memset(res, 0, sizeof *res);
-  const unsigned nctx = e->config.num_contexts, nregs = e->config.num_regs;
-  const unsigned ns = golden->nstate;
+  const unsigned nctx = fp3_config_slots(&e->config); /* objects per batch */
+  const unsigned nregs = e->config.num_regs, ns = golden->nstate;
   if (frames == 0) {
     snprintf(msg, n, "no frames to run");
     return -1;
@@ -557,7 +558,8 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
   }
   res->objects = nobj;
   res->frames = frames;
-  res->contexts = nctx;
+  res->contexts = e->config.num_contexts;
+  res->lanes = e->config.num_lanes ? e->config.num_lanes : 1;
   res->first_object = res->error_object = SIZE_MAX;
   for (uint32_t f = 1; f <= frames; f++) {
     size_t na = 0;

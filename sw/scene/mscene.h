@@ -100,6 +100,8 @@ typedef struct fp3_state_golden {
 typedef struct fp3_state_result {
   size_t objects;
   unsigned contexts;       /* contexts per batch                           */
+  unsigned lanes;          /* lanes per context: a batch holds contexts x
+                              lanes objects (engine.h slots)              */
   size_t batches;
   uint64_t cycles, issued, stalls;
   uint32_t flags;          /* sticky exception flags, all batches          */
@@ -119,8 +121,10 @@ typedef struct fp3_state_result {
 } fp3_state_result;
 
 /* Run `nobj` objects for `steps` integrations on engine e with the
- * program words[0..nwords) (assembled, image.h), in batches of e->config.num_contexts contexts: each context's
- * registers zeroed, then golden->start's writes; after the batch, every
+ * program words[0..nwords) (assembled, image.h), in batches of
+ * fp3_config_slots(&e->config) objects (contexts x lanes; object slot s is
+ * lane s / NUM_CONTEXTS of context s % NUM_CONTEXTS, engine.h): each
+ * slot's registers zeroed, then golden->start's writes; after the batch, every
  * state register of every object after every integration compared bit for
  * bit with golden->step (run in `mode`).  Returns 0 when the runs took
  * place (mismatches, errors and non-finite states are in *res), or -1 with
@@ -150,7 +154,7 @@ typedef struct fp3_state_stepper {
 typedef struct fp3_state_frames_result {
   size_t objects;
   uint32_t frames;
-  unsigned contexts;
+  unsigned contexts, lanes; /* a batch: contexts x lanes objects          */
   uint64_t batches, cycles, issued;
   uint64_t object_frames;  /* object-frames run on the engine              */
   uint64_t skipped;        /* object-frames skipped at rest                 */
@@ -165,7 +169,8 @@ typedef struct fp3_state_frames_result {
 } fp3_state_frames_result;
 
 /* Run nobj objects frame by frame: each frame one integration (STEPS = 1)
- * of every awake object, in batches of the contexts; the host keeps every
+ * of every awake object, in batches of contexts x lanes (fp3_config_slots,
+ * as fp3_run_state_objects); the host keeps every
  * object's whole register bank between frames (written before, read after
  * each batch).  With rest_skip, an object whose frame left its whole bank
  * bit-identical is at a fixed point of the program (a frame reads nothing
