@@ -4,15 +4,16 @@
 # One model per build variant (enum fp3_axil_variant of
 # sim/fp3_axil_model.h): default, every parameter at its default; fmax, the
 # build for clock rate, with the parameters of the processor model
-# RTL_CFG_fmax.  tests/test_axil drives real AXI4-Lite transactions from C
+# RTL_CFG_fmax; lanes, 8 contexts x 4 lanes (RTL_CFG_l4).  tests/test_axil drives real AXI4-Lite transactions from C
 # and links the host-port RTL models (RTL_OBJS and RTL_AXIL_CONFIGS) too,
 # through the sw library's engines, to compare the two (the Makefile reads
 # mk/rtl.mk, which defines them and rtl_gparams, before this file).
 
 AXIL_TOP      := fp3_axil
-AXIL_VARIANTS := default fmax
+AXIL_VARIANTS := default fmax lanes
 AXIL_PARAMS_default :=
 AXIL_PARAMS_fmax    := $(call rtl_gparams,fmax)
+AXIL_PARAMS_lanes   := $(call rtl_gparams,l4)
 AXIL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(AXIL_TOP)
 
 axil_objdir  = $(BUILD)/obj_fp3_axil_$(1)
@@ -43,7 +44,7 @@ $(foreach v,$(AXIL_VARIANTS),$(eval $(call AXIL_MODEL_RULES,$(v))))
 AXIL_ARCHIVES := $(foreach v,$(AXIL_VARIANTS),$(call axil_archive,$(v)))
 AXIL_SHIM_OBJ := $(BUILD)/sim/fp3_axil_shim.o
 AXIL_OBJS     := $(AXIL_SHIM_OBJ) $(AXIL_ARCHIVES) \
-                 $(foreach c,$(RTL_AXIL_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+                 $(foreach c,$(RTL_AXIL_CONFIGS) l4,$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 
 $(AXIL_SHIM_OBJ): sim/fp3_axil_shim.cpp sim/fp3_axil_model.h sim/vmodel.h $(AXIL_ARCHIVES)
 	@mkdir -p $(dir $@)

@@ -65,7 +65,11 @@ RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
 RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
 RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
 RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 10 32 1 1 1 1 $(CHIP_LANES)
-RTL_CHIP_CONFIGS := l2 l8 l16 chip
+# ... and the build for clock rate with 16 contexts, one lane: whether
+# twice the contexts hide its latencies (a context's timing does not
+# depend on its lanes).
+RTL_CFG_f16     := 0 0 16 9 10 32 1 1 1 1
+RTL_CHIP_CONFIGS := l2 l8 l16 chip f16
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
 RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE \
@@ -235,7 +239,7 @@ CPU_SHIP_FLAGS := -O3 -march=native -ffp-contract=off
 # BENCH_CHIP_MODELS: the lane builds bench_chip links (the chip's 24
 # lanes take an hour and more to Verilate and compile on two cores); the
 # others are reported as not linked.
-BENCH_CHIP_MODELS ?= l2 l4 l8 l16 fmax chip
+BENCH_CHIP_MODELS ?= l2 l4 l8 l16 fmax f16 chip
 RTL_CHIP_OBJS := $(foreach c,$(BENCH_CHIP_MODELS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 $(BUILD)/bench/cpu_ship.o: sw/bench/cpu_ship.c sw/bench/cpu_ship.h sw/ref/golden.h
 	@mkdir -p $(dir $@)

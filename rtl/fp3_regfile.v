@@ -254,7 +254,7 @@ module fp3_regfile #(
     wd2_q   <= w2_data;
     wd3_q   <= wb3_data_i;
   end
-  wire [2*ENTRIES-1:0] lvt_flat;       // the LVT as one vector
+  wire [ENTRIES-1:0] lvt_lo, lvt_hi;  // the LVT: entry r is {lvt_hi[r], lvt_lo[r]}
 
   // The word of twelve (w[32k +: 32]) that the one-hot sel[k] names.
   function [31:0] pick12;
@@ -296,8 +296,8 @@ module fp3_regfile #(
    (wv_q[3] && wi3_q == (x)) ? {1'b1, wd3_q} : {33{1'b0}})
       wire [3:0]  a_lvt, b_lvt;             // one LVT read per port, one-hot
       if (CTRL != 0) begin : g_lvt_own
-        assign a_lvt = lvt1h(lvt_flat[2*a_idx_q +: 2]);
-        assign b_lvt = lvt1h(lvt_flat[2*b_idx_q +: 2]);
+        assign a_lvt = lvt1h({lvt_hi[a_idx_q], lvt_lo[a_idx_q]});
+        assign b_lvt = lvt1h({lvt_hi[b_idx_q], lvt_lo[b_idx_q]});
         wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
       end else begin : g_lvt_lane0
         assign a_lvt = lvt_a_i;
@@ -405,8 +405,10 @@ module fp3_regfile #(
         integer gi;
         always @(posedge clk_i) begin
           for (gi = 0; gi < NG; gi = gi + 1) begin
-            a_pre_q[4*gi +: 4] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, a_lo_q}) +: 2]);
-            b_pre_q[4*gi +: 4] <= lvt1h(lvt_flat[2*(16*gi + {28'd0, b_lo_q}) +: 2]);
+            a_pre_q[4*gi +: 4] <= lvt1h({lvt_hi[16*gi + {28'd0, a_lo_q}],
+                                         lvt_lo[16*gi + {28'd0, a_lo_q}]});
+            b_pre_q[4*gi +: 4] <= lvt1h({lvt_hi[16*gi + {28'd0, b_lo_q}],
+                                         lvt_lo[16*gi + {28'd0, b_lo_q}]});
           end
         end
         assign a_lvt2 = a_pre_q[4*a_idx_qq[XW-1:4] +: 4];
@@ -416,8 +418,8 @@ module fp3_regfile #(
       end else begin : g_lvt_whole
         // In cycle t + 2 the entry has the writes of cycle t + 1 too: a
         // read of such a register takes the bypass word.
-        assign a_lvt2 = lvt1h(lvt_flat[2*a_idx_qq +: 2]);
-        assign b_lvt2 = lvt1h(lvt_flat[2*b_idx_qq +: 2]);
+        assign a_lvt2 = lvt1h({lvt_hi[a_idx_qq], lvt_lo[a_idx_qq]});
+        assign b_lvt2 = lvt1h({lvt_hi[b_idx_qq], lvt_lo[b_idx_qq]});
       end
       if (CTRL != 0) begin : g_lvt_in
         wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
@@ -484,12 +486,15 @@ module fp3_regfile #(
   // host's write is decoded from its register, and so reaches the LVT a
   // cycle after the RAM (a read in between takes it from the bypass:
   // the writes of cycle t).  Port 2's two writers are decoded apart.
+  // (The decoders and the per-register updates below are written as
+  // whole-vector operations: the same logic per register for synthesis,
+  // and a few word operations per cycle for a Verilated model instead of
+  // one statement per register.)
   function [ENTRIES-1:0] dec;   // one-hot of idx if valid
     input          valid;
     input [XW-1:0] idx;
-    integer d;
     begin
-      for (d = 0; d < ENTRIES; d = d + 1) dec[d] = valid && idx == d[XW-1:0];
+      dec = {{(ENTRIES-1){1'b0}}, valid} << idx;
     end
   endfunction
   // The two halves of dec (READ_STAGES = 4): an index's high HW bits
@@ -509,6 +514,16 @@ module fp3_regfile #(
     integer d;
     begin
       for (d = 0; d < (1 << LW); d = d + 1) dec_lo[d] = lo == d[LW-1:0];
+    end
+  endfunction
+  // Joins the halves: register e is hit when its high half's bit and its
+  // low half's bit are (e = {high, low}).
+  function [ENTRIES-1:0] dec_join;
+    input [(1<<HW)-1:0] hi;
+    input [(1<<LW)-1:0] lo;
+    integer g;
+    begin
+      for (g = 0; g < (1 << HW); g = g + 1) dec_join[g*(1<<LW) +: (1<<LW)] = {(1<<LW){hi[g]}} & lo;
     end
   endfunction
   wire [ENTRIES-1:0] h0, h1, h2, h3;
@@ -539,15 +554,12 @@ module fp3_regfile #(
         hlh_q <= dec_lo(host_idx_i[LW-1:0]);
       end
       reg [ENTRIES-1:0] h0_q, h1_q, h2_q, h3_q;
-      integer e;
       always @(posedge clk_i) begin
-        for (e = 0; e < ENTRIES; e = e + 1) begin
-          h0_q[e] <= !rst_i && hh0_q[e >> LW] && hl0_q[e % (1 << LW)];
-          h1_q[e] <= !rst_i && hh1_q[e >> LW] && hl1_q[e % (1 << LW)];
-          h2_q[e] <= !rst_i && (hh2_q[e >> LW] && hl2_q[e % (1 << LW)] ||
-                                hwe_lvt && hhh_q[e >> LW] && hlh_q[e % (1 << LW)]);
-          h3_q[e] <= !rst_i && hh3_q[e >> LW] && hl3_q[e % (1 << LW)];
-        end
+        h0_q <= rst_i ? {ENTRIES{1'b0}} : dec_join(hh0_q, hl0_q);
+        h1_q <= rst_i ? {ENTRIES{1'b0}} : dec_join(hh1_q, hl1_q);
+        h2_q <= rst_i ? {ENTRIES{1'b0}} : dec_join(hh2_q, hl2_q) |
+                                          dec_join({(1<<HW){hwe_lvt}} & hhh_q, hlh_q);
+        h3_q <= rst_i ? {ENTRIES{1'b0}} : dec_join(hh3_q, hl3_q);
       end
       assign {h0, h1, h2, h3} = {h0_q, h1_q, h2_q, h3_q};
     end else begin : g_hit_now
@@ -596,14 +608,9 @@ module fp3_regfile #(
         cl2_q <= dec_lo(clr2_idx_i[LW-1:0]);
         cl3_q <= dec_lo(clr3_idx_i[LW-1:0]);
       end
-      genvar f;
-      for (f = 0; f < ENTRIES; f = f + 1) begin : g_flag
-        localparam integer FH = f >> LW;
-        localparam integer FL = f % (1 << LW);
-        assign fset[f] = sh[FH] && sl[FL];
-        assign fclr[f] = ch0_q[FH] && cl0_q[FL] || ch1_q[FH] && cl1_q[FL] ||
-                         ch2_q[FH] && cl2_q[FL] || ch3_q[FH] && cl3_q[FL];
-      end
+      assign fset = dec_join(sh, sl);
+      assign fclr = dec_join(ch0_q, cl0_q) | dec_join(ch1_q, cl1_q) | dec_join(ch2_q, cl2_q) |
+                    dec_join(ch3_q, cl3_q);
     end else begin : g_flags_now
       assign fset = dec(set_i, set_idx_i);
       assign fclr = dec(clr0_valid_i, clr0_idx_i) | dec(clr1_valid_i, clr1_idx_i) |
@@ -613,30 +620,23 @@ module fp3_regfile #(
 
   // The WAW stall guarantees that the write ports name distinct registers,
   // so the priority below never matters for a legal sequence.
-  genvar r;
   generate
     if (CTRL != 0) begin : g_ctrl
-      reg [ENTRIES-1:0] busy_q;
-      reg [1:0]         lvt_q [0:ENTRIES-1];  // write port that wrote last
-      for (r = 0; r < ENTRIES; r = r + 1) begin : g_reg
-        wire hit0 = h0[r];
-        wire hit1 = h1[r];
-        wire hit2 = h2[r];
-        wire hit3 = h3[r];
-        always @(posedge clk_i) begin
-          if      (rst_i) lvt_q[r] <= 2'd0;   // the RAMs start at zero
-          else if (hit0) lvt_q[r] <= 2'd0;
-          else if (hit1) lvt_q[r] <= 2'd1;
-          else if (hit2) lvt_q[r] <= 2'd2;
-          else if (hit3) lvt_q[r] <= 2'd3;
-        end
-        assign lvt_flat[2*r +: 2] = lvt_q[r];
-        always @(posedge clk_i) begin
-          if (rst_i)                               busy_q[r] <= 1'b0;
-          else if (fset[r])                        busy_q[r] <= 1'b1;
-          else if (fclr[r])                        busy_q[r] <= 1'b0;
-        end
+      // Register r: LVT entry {lvt_hi_q[r], lvt_lo_q[r]} (0 .. 3: the
+      // port that wrote it last; a lower port wins over a higher one), busy
+      // flag busy_q[r] (the set wins over a clear).  The RAMs start at zero.
+      reg  [ENTRIES-1:0] busy_q, lvt_lo_q, lvt_hi_q;
+      wire [ENTRIES-1:0] hit  = h0 | h1 | h2 | h3;
+      wire [ENTRIES-1:0] won1 = h1 & ~h0;
+      wire [ENTRIES-1:0] won2 = h2 & ~h1 & ~h0;
+      wire [ENTRIES-1:0] won3 = h3 & ~h2 & ~h1 & ~h0;
+      always @(posedge clk_i) begin
+        lvt_lo_q <= rst_i ? {ENTRIES{1'b0}} : lvt_lo_q & ~hit | won1 | won3;
+        lvt_hi_q <= rst_i ? {ENTRIES{1'b0}} : lvt_hi_q & ~hit | won2 | won3;
+        busy_q   <= rst_i ? {ENTRIES{1'b0}} : busy_q & ~fclr | fset;
       end
+      assign lvt_lo = lvt_lo_q;
+      assign lvt_hi = lvt_hi_q;
       assign busy_o = busy_q;
       // idle_o, a cycle late: the flags ORed in groups of 16 and registered
       // (any_q), then joined.  (No flag set, one NOR of every flag from
@@ -655,8 +655,8 @@ module fp3_regfile #(
       // Lanes 1 ..: lane 0's flags are the scoreboard, its LVT chooses.
       assign busy_o   = {ENTRIES{1'b0}};
       assign idle_o   = 1'b1;
-      assign lvt_flat = {2*ENTRIES{1'b0}};
-      wire unused_ctrl = &{1'b0, lvt_flat, h0, h1, h2, h3, fset, fclr, hwe_lvt, set_i,
+      assign {lvt_lo, lvt_hi} = {2*ENTRIES{1'b0}};
+      wire unused_ctrl = &{1'b0, lvt_lo, lvt_hi, h0, h1, h2, h3, fset, fclr, hwe_lvt, set_i,
                            set_idx_i, clr0_valid_i, clr0_idx_i, clr1_valid_i, clr1_idx_i,
                            clr2_valid_i, clr2_idx_i, clr3_valid_i, clr3_idx_i};
     end

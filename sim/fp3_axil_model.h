@@ -23,9 +23,11 @@ typedef struct fp3_axil_model fp3_axil_model;
 /* The builds of the wrapper (mk/axil.mk). */
 typedef enum fp3_axil_variant {
   FP3_AXIL_DEFAULT, /* every parameter at its default (FMAX_PIPE 0)        */
-  FP3_AXIL_FMAX     /* the build for clock rate: FMAX_PIPE 1, NUM_CONTEXTS
+  FP3_AXIL_FMAX,    /* the build for clock rate: FMAX_PIPE 1, NUM_CONTEXTS
                        8, ADD_LATENCY 9, MUL_LATENCY 10, the rest default
                        (RTL_CFG_fmax of mk/rtl.mk)                         */
+  FP3_AXIL_LANES    /* 8 contexts x 4 lanes, the default latencies
+                       (RTL_CFG_l4 of mk/rtl.mk)                           */
 } fp3_axil_variant;
 
 /* Master-driven signals of one cycle (s_axil_*_i). */

@@ -8,6 +8,7 @@
 
 #include "Vfp3_axil_default.h"
 #include "Vfp3_axil_fmax.h"
+#include "Vfp3_axil_lanes.h"
 #include "vmodel.h"
 
 // The C side's opaque handle: the model of one variant.
@@ -81,6 +82,7 @@ extern "C" fp3_axil_model *fp3_axil_model_new(fp3_axil_variant variant, const ch
   switch (variant) {
     case FP3_AXIL_DEFAULT: return axil_model<Vfp3_axil_default>::create(trace_path);
     case FP3_AXIL_FMAX: return axil_model<Vfp3_axil_fmax>::create(trace_path);
+    case FP3_AXIL_LANES: return axil_model<Vfp3_axil_lanes>::create(trace_path);
   }
   return nullptr;
 }

@@ -280,9 +280,9 @@ module tb_fp3 #(
       // The RAM of the write-back port that wrote it last (the LVT).
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg = 32'd0;
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd0)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd0)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
       else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
@@ -298,9 +298,9 @@ module tb_fp3 #(
       // Its RAMs; the LVT is lane 0's, which chooses for every lane.
       x = c*(1 << IW) + r;
       if (r >= NUM_REGS)                       dbg_reg_last = 32'd0;
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd0)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd0)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd1)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
       else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];

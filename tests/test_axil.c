@@ -53,20 +53,22 @@
 #define BYTE(word_addr) ((uint32_t)(word_addr) * 4u)
 #define MAX_REGS 256
 
-/* The processor of the FMAX build's parameters behind the plain host port
- * (RTL_CFG_fmax of mk/rtl.mk). */
-extern const fp3_model_ops fp3_model_fmax;
+/* The processors of the FMAX and lanes builds' parameters behind the plain
+ * host port (RTL_CFG_fmax and RTL_CFG_l4 of mk/rtl.mk). */
+extern const fp3_model_ops fp3_model_fmax, fp3_model_l4;
 
 /* One build of the wrapper and the parameters it reports. */
 typedef struct build {
   fp3_axil_variant variant;
   const fp3_model_ops *core; /* fp3_top of the same parameters */
-  unsigned num_contexts, add_latency, mul_latency, fmax_pipe;
+  unsigned num_contexts, add_latency, mul_latency, fmax_pipe, num_lanes;
 } build;
 
 static build build_default = {FP3_AXIL_DEFAULT, &fp3_model_rne, FP3_DEFAULT_NUM_CONTEXTS,
-                              FP3_DEFAULT_ADD_LATENCY, FP3_DEFAULT_MUL_LATENCY, 0};
-static build build_fmax = {FP3_AXIL_FMAX, &fp3_model_fmax, 8, 9, 10, 1};
+                              FP3_DEFAULT_ADD_LATENCY, FP3_DEFAULT_MUL_LATENCY, 0, 1};
+static build build_fmax = {FP3_AXIL_FMAX, &fp3_model_fmax, 8, 9, 10, 1, 1};
+static build build_lanes = {FP3_AXIL_LANES, &fp3_model_l4, 8, FP3_DEFAULT_ADD_LATENCY,
+                            FP3_DEFAULT_MUL_LATENCY, 0, 4};
 
 /* Cycles from a read's address on the host port to its data: fp3_top
  * answers 1 + 3 FMAX_PIPE cycles after the address (fp3_top "Host port")
@@ -274,7 +276,7 @@ static void test_id_info(void **state) {
   assert_int_equal(info2 & 0xFFFF, bd->num_contexts);
   /* HAS_ADD, HAS_SUB, HAS_MUL; HAS_DIV 0, HAS_SQRT 0, HAS_SIGN 1 */
   assert_int_equal((info2 >> 16) & 0x3F, 0x27);
-  assert_int_equal(info2 >> 24, 1);          /* NUM_LANES */
+  assert_int_equal(info2 >> 24, bd->num_lanes);   /* NUM_LANES */
   assert_int_equal(rd_ok(&b, FP3_HR_STATUS), 0);
   bus_close(&b);
 }
@@ -835,9 +837,11 @@ static void test_ship_contexts(void **state) {
   load_ship(&img);
   bus b;
   bus_open(&b, *state, 21, RANDOM);
-  unsigned nctx = rd_ok(&b, FP3_HR_INFO2) & 0xFFFF;
-  assert_true(nctx >= 1);
-  /* 1 context 40 integrations, all contexts 40, all contexts 80 */
+  unsigned nctx = rd_ok(&b, FP3_HR_INFO2) & 0xFFFF, nl = rd_ok(&b, FP3_HR_INFO2) >> 24;
+  assert_true(nctx >= 1 && nl >= 1);
+  /* 1 context 40 integrations, all contexts 40, all contexts 80; every
+   * lane of a context runs, lane l with the scene of slot c + l x nctx
+   * and its v0 raised by l (every object different). */
   uint64_t cycles[3] = {0, 0, 0};
   for (int pass = 0; pass < 3; pass++) {
     unsigned run_ctx = pass == 0 ? 1 : nctx;
@@ -846,10 +850,14 @@ static void test_ship_contexts(void **state) {
       wr_ok(&b, FP3_HR_IMEM_BASE + 2 * i, (uint32_t)img.words[i]);
       wr_ok(&b, FP3_HR_IMEM_BASE + 2 * i + 1, (uint32_t)(img.words[i] >> 32));
     }
-    for (unsigned c = 0; c < run_ctx; c++) {
+    for (unsigned k = 0; k < run_ctx * nl; k++) {
+      const unsigned c = k % run_ctx, l = k / run_ctx;
+      fp3_ship_params p = scenes[(c + l * nctx) % nscenes];
+      p.v0 += (float)l;
       uint32_t init[MAX_REGS];
-      ship_init(&img, &scenes[c % nscenes], init);
+      ship_init(&img, &p, init);
       wr_ok(&b, FP3_HR_CTX, c);
+      wr_ok(&b, FP3_HR_LANE, l);
       for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++) wr_ok(&b, FP3_HR_REG_BASE + r, init[r]);
     }
     wr_ok(&b, FP3_HR_CONTEXTS, run_ctx);
@@ -859,23 +867,28 @@ static void test_ship_contexts(void **state) {
     while (rd_ok(&b, FP3_HR_STATUS) & FP3_STATUS_RUNNING) assert_true(++polls < 1000000);
     assert_int_equal(rd_ok(&b, FP3_HR_STATUS) & 0xF07u, FP3_STATUS_DONE);
     cycles[pass] = rd_ok(&b, FP3_HR_CYCLES_LO) | (uint64_t)rd_ok(&b, FP3_HR_CYCLES_HI) << 32;
-    for (unsigned c = 0; c < run_ctx; c++) {
+    for (unsigned k = 0; k < run_ctx * nl; k++) {
+      const unsigned c = k % run_ctx, l = k / run_ctx;
+      fp3_ship_params p = scenes[(c + l * nctx) % nscenes];
+      p.v0 += (float)l;
       fp3_ship_state g;
-      fp3_golden_init(&g, &scenes[c % nscenes]);
+      fp3_golden_init(&g, &p);
       for (uint32_t i = 0; i < steps; i++) fp3_golden_step(&g);
       wr_ok(&b, FP3_HR_CTX, c);
+      wr_ok(&b, FP3_HR_LANE, l);
       assert_int_equal(rd_ok(&b, FP3_HR_STEPS_DONE), steps);
       uint32_t v = rd_ok(&b, FP3_HR_REG_BASE + (unsigned)img.out_reg[FP3_OUT_V]);
       uint32_t s = rd_ok(&b, FP3_HR_REG_BASE + (unsigned)img.out_reg[FP3_OUT_S]);
       if (v != fpref_bits(g.v) || s != fpref_bits(g.s))
-        fail_msg("context %u: AXI v=0x%08X s=0x%08X, golden v=0x%08X s=0x%08X", c, v, s,
-                 fpref_bits(g.v), fpref_bits(g.s));
+        fail_msg("context %u lane %u: AXI v=0x%08X s=0x%08X, golden v=0x%08X s=0x%08X", c, l,
+                 v, s, fpref_bits(g.v), fpref_bits(g.s));
     }
     wr_ok(&b, FP3_HR_CTRL, FP3_CTRL_CLEAR);
     wr_ok(&b, FP3_HR_CTX, 0);
+    wr_ok(&b, FP3_HR_LANE, 0);
   }
   /* Every object-step costs the same once the schedule is periodic. */
-  double per_step = (double)(cycles[2] - cycles[1]) / (40.0 * nctx);
+  double per_step = (double)(cycles[2] - cycles[1]) / (40.0 * nctx * nl);
   print_message("ship_rk4 via AXI4-Lite, 40 integrations: 1 context %llu cycles, %u contexts "
                 "%llu cycles; steady state %.2f cycles per object-step\n",
                 (unsigned long long)cycles[0], nctx, (unsigned long long)cycles[1], per_step);
@@ -887,17 +900,19 @@ static void test_ship_contexts(void **state) {
 /* A test on each build: state is the build, cmocka prints "test (build)". */
 #define ON_BOTH(f) {#f " (default)", f, NULL, NULL, &build_default}, \
                    {#f " (fmax)", f, NULL, NULL, &build_fmax}
+/* ... and on the lanes build too */
+#define ON_ALL(f) ON_BOTH(f), {#f " (lanes)", f, NULL, NULL, &build_lanes}
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-      ON_BOTH(test_id_info),
+      ON_ALL(test_id_info),
       ON_BOTH(test_back_to_back),
       ON_BOTH(test_split_write),
       ON_BOTH(test_random_stalls),
-      ON_BOTH(test_register_map),
-      ON_BOTH(test_slverr),
+      ON_ALL(test_register_map),
+      ON_ALL(test_slverr),
       ON_BOTH(test_context_words),
-      ON_BOTH(test_ship_contexts),
+      ON_ALL(test_ship_contexts),
       ON_BOTH(test_ship_back_to_back),
       ON_BOTH(test_ship_random_handshakes),
       cmocka_unit_test(test_ship_cycles),
