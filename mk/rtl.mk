@@ -57,18 +57,23 @@ RTL_AXIL_CONFIGS := fmax
 # and 6 EBR (scripts/synth.sh fp3_lane ecp5, its busy flags and live
 # value table included, which the chip's lanes 1 .. 7 share with lane 0),
 # beside the one-lane processor's 12,433 LUT4: 8 lanes are at most about
-# 83 % of the 83,640 LUT4s (docs/lanes.md "Chip build").
+# 83 % of the 83,640 LUT4s (docs/lanes.md "Chip build").  The chip build
+# and f16 leave out the div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div
+# and fp_sqrt place at about 50-60 MHz (docs/fp-cores.md), a third of the
+# build for clock rate's, and cost about 4,500 LUT4s a lane; the ship's
+# programs do not use them.
 CHIP_CONTEXTS   := 8
 CHIP_LANES      := 8
-CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=10 FMAX_PIPE=1
+CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=10 FMAX_PIPE=1 \
+                   HAS_DIV=0 HAS_SQRT=0
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
 RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
 RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
-RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 10 32 1 1 1 1 $(CHIP_LANES)
+RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 10 32 1 1 1 1 $(CHIP_LANES) 0 0 1
 # ... and the build for clock rate with 16 contexts, one lane: whether
 # twice the contexts hide its latencies (a context's timing does not
 # depend on its lanes).
-RTL_CFG_f16     := 0 0 16 9 10 32 1 1 1 1
+RTL_CFG_f16     := 0 0 16 9 10 32 1 1 1 1 1 0 0 1
 RTL_CHIP_CONFIGS := l2 l8 l16 chip f16
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
