@@ -284,7 +284,7 @@ module tb_fp3 #(
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
       else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd2)
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
       else
         dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram30.g_any.mem[x];
@@ -302,7 +302,7 @@ module tb_fp3 #(
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
       else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else if (dut.g_lane[0].u_lane.u_regs.lvt_flat[2*x +: 2] == 2'd2)
+      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd2)
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];
       else
         dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram30.g_any.mem[x];

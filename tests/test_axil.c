@@ -274,8 +274,8 @@ static void test_id_info(void **state) {
   assert_int_equal((info1 >> 16) & 7, bd->fmax_pipe << 2); /* ROUND 0, FTZ 0, FMAX_PIPE */
   assert_int_equal(info1 >> 19, FP3_DEFAULT_DIV_LATENCY);   /* DIV_LATENCY */
   assert_int_equal(info2 & 0xFFFF, bd->num_contexts);
-  /* HAS_ADD, HAS_SUB, HAS_MUL; HAS_DIV 0, HAS_SQRT 0, HAS_SIGN 1 */
-  assert_int_equal((info2 >> 16) & 0x3F, 0x27);
+  /* HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN: every unit */
+  assert_int_equal((info2 >> 16) & 0x3F, 0x3F);
   assert_int_equal(info2 >> 24, bd->num_lanes);   /* NUM_LANES */
   assert_int_equal(rd_ok(&b, FP3_HR_STATUS), 0);
   bus_close(&b);
