@@ -28,7 +28,7 @@ RTL_CFG_rtz     := 1 0
 RTL_CFG_ftz     := 0 1
 RTL_CFG_rtz_ftz := 1 1
 RTL_CFG_nc1     := 0 0 1 1 2 32 1 1 1 0 1 0 0
-RTL_CFG_nc3     := 0 0 3 4 3 32 1 1 1 1
+RTL_CFG_nc3     := 0 0 3 4 3 40 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
 RTL_TEST_CONFIGS := nc1 nc3 l4

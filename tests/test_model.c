@@ -16,12 +16,15 @@
  *    IR golden model in literal mode equals the literal golden model bit
  *    for bit; every shipped model x every integrator that applies
  *    (rk4comp included), literal and folded, bit-exact after every
- *    integration on the ISS shaped as the build it needs, and on the RTL
- *    when the Verilated build has its units and registers (the output
- *    says which ran on the ISS only, and why);
+ *    integration on the ISS shaped as the build it needs, and on the RTL:
+ *    the default build, or, for the programs that need more than its 32
+ *    registers, the test build with NUM_REGS=40 (the output says which
+ *    ran where);
  *  - registers: bounded register pressure fits 3-D RK4 into 32 where the
  *    latency-first schedule needs more; what does not fit is refused with
- *    the numbers, or compiled for a larger build (`.regs N`);
+ *    the numbers, or compiled for a larger build (`.regs N`); the
+ *    40-register RTL build refuses a word naming r40 and runs r39, as
+ *    the ISS of that build does;
  *  - a model scene on lanes (the l4 build, 8 contexts x 4 lanes): one
  *    batch where the one-lane build needs three, the same bits;
  *  - rk4comp keeps the low bits RK4 loses over many small steps.
@@ -48,8 +51,9 @@
 #include "../sim/fp3_model.h"
 
 /* The RTL build with lanes that make test already builds (mk/rtl.mk
- * RTL_CFG_l4: 8 contexts x 4 lanes). */
-extern const fp3_model_ops fp3_model_l4;
+ * RTL_CFG_l4: 8 contexts x 4 lanes), and its build with more registers
+ * than the default 32 (RTL_CFG_nc3: NUM_REGS=40, 3 contexts, FMAX_PIPE). */
+extern const fp3_model_ops fp3_model_l4, fp3_model_nc3;
 
 static const char *const shipped[] = {"models/ship.fp3m", "models/spring.fp3m",
                                       "models/projectile.fp3m", "models/orbit.fp3m",
@@ -404,21 +408,74 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
   drop(h.seen);
 }
 
+/* The highest register a program's words name (rd, ra, rb). */
+static unsigned top_reg(const fp3_image *img) {
+  unsigned top = 0;
+  for (size_t k = 0; k < img->n; k++) {
+    const uint64_t w = img->words[k];
+    const unsigned r[3] = {fp3_insn_rd(w), fp3_insn_ra(w), fp3_insn_rb(w)};
+    for (int q = 0; q < 3; q++)
+      if (r[q] > top) top = r[q];
+  }
+  return top;
+}
+
+/* A program that needs more registers than the default build has, on the
+ * RTL build with NUM_REGS=40 (nc3): compiled for that build (its
+ * latencies, FMAX_PIPE and registers, no growing: a program that does
+ * not fit is refused with the numbers and fails the test), bit-exact
+ * after every integration on it (60 integrations) and on the ISS shaped
+ * as it (200).  Returns the highest register the program names. */
+static unsigned run_big(fp3_engine *big, const fp3_model *m, const char *integ, int lit,
+                        size_t obj, const char *what) {
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  o.fold = o.drop_zero = !lit;
+  o.add_latency = big->config.add_latency;
+  o.mul_latency = big->config.mul_latency;
+  o.div_latency = big->config.div_latency;
+  o.fmax_pipe = big->config.fmax_pipe;
+  o.num_regs = big->config.num_regs;
+  fp3_compiled *c = NULL;
+  char msg[512];
+  if (compile(m, integ, &o, &c, msg, sizeof msg))
+    fail_msg("%s on the RTL build with NUM_REGS=%u: %s", what, big->config.num_regs, msg);
+  const fp3_compile_stats *cs = fp3_compiled_stats(c);
+  assert_int_equal(cs->num_regs, big->config.num_regs);
+  const fp3_image *img = fp3_compiled_image(c);
+  if (fp3_config_check_program(&big->config, img->words, img->n, msg, sizeof msg))
+    fail_msg("%s: %s", what, msg);
+  const unsigned top = top_reg(img);
+  fp3_engine *iss = own(fp3_engine_iss_new_config(&big->config), free_engine);
+  assert_non_null(iss);
+  run_check(iss, c, m, objs[obj].in, objs[obj].y0, 200, lit, what);
+  drop(iss);
+  run_check(big, c, m, objs[obj].in, objs[obj].y0, 60, lit, what);
+  printf("RTL NUM_REGS=%u: %s: needs %u registers, names up to r%u, %u cycles estimated per "
+         "later integration of one object\n", big->config.num_regs, what, cs->regs_needed, top,
+         cs->est_cycles_later);
+  drop(c);
+  return top;
+}
+
 /* Every shipped model x every integrator that applies (symeuler where
  * split, verlet where its accelerations read no velocity), literal and
- * folded, compiled for the RTL build (its latencies and NUM_REGS; a
- * program that needs more registers is compiled for the fewest it fits,
+ * folded, compiled for the default RTL build (its latencies and NUM_REGS;
+ * a program that needs more registers is compiled for the fewest it fits,
  * max_regs): on the ISS shaped as that build (200 integrations), and on
- * the RTL (60 integrations) when the build has the program's units
- * (HAS_DIV, HAS_SQRT, as the Verilated model reports them) and
- * registers; otherwise the output says why it ran on the ISS only.  No
- * shipped program may be refused. */
+ * the RTL (60 integrations): the default build when it has the program's
+ * units (HAS_DIV, HAS_SQRT, as the Verilated model reports them) and
+ * registers, else, for want of registers, the build with NUM_REGS=40
+ * (run_big); a program refused by both fails the test. */
 static void test_engines(void **st) {
   (void)st;
   fp3_engine *rtl = own(fp3_engine_rtl_new(NULL), free_engine);
+  fp3_engine *big = own(fp3_engine_rtl_new_model(&fp3_model_nc3, NULL), free_engine);
   assert_non_null(rtl);
+  assert_non_null(big);
+  assert_true(big->config.num_regs > rtl->config.num_regs);
   static const char *const integs[] = {"euler", "rk2", "rk4", "rk4comp", "symeuler", "verlet"};
-  unsigned ran = 0, on_rtl = 0, iss_only = 0, iss_regs = 0, most_regs = 0;
+  unsigned ran = 0, on_rtl = 0, on_big = 0, iss_only = 0, most_regs = 0, big_top = 0;
   for (size_t i = 0; i < sizeof objs / sizeof objs[0]; i++) {
     fp3_model *m = load(objs[i].file);
     for (size_t g = 0; g < sizeof integs / sizeof integs[0]; g++)
@@ -456,10 +513,9 @@ static void test_engines(void **st) {
         drop(iss);
         const fp3_image *img = fp3_compiled_image(c);
         if (cs->num_regs > rtl->config.num_regs) {
-          printf("ISS only: %s: needs %u registers, the RTL build has NUM_REGS=%u\n", what,
-                 cs->regs_needed, rtl->config.num_regs);
-          iss_only++;
-          iss_regs++;
+          const unsigned top = run_big(big, m, integs[g], lit, i, what);
+          if (top > big_top) big_top = top;
+          on_big++;
         } else if (fp3_config_check_program(&rtl->config, img->words, img->n, msg,
                                             sizeof msg)) {
           /* only a unit the RTL is built without (HAS_DIV, HAS_SQRT = 0)
@@ -478,17 +534,63 @@ static void test_engines(void **st) {
     drop(m);
   }
   printf("compiled models bit-exact with their golden models: %u programs on the ISS, %u of "
-         "them also on the RTL (HAS_DIV=%u HAS_SQRT=%u NUM_REGS=%u), %u on the ISS only\n",
-         ran, on_rtl, rtl->config.has_div, rtl->config.has_sqrt, rtl->config.num_regs, iss_only);
+         "them also on the default RTL (HAS_DIV=%u HAS_SQRT=%u NUM_REGS=%u), %u on the RTL with "
+         "NUM_REGS=%u (they need %u at most for the default build; they name up to r%u), %u "
+         "on the ISS only\n", ran, on_rtl, rtl->config.has_div, rtl->config.has_sqrt,
+         rtl->config.num_regs, on_big, big->config.num_regs, most_regs, big_top, iss_only);
   /* 6 models: euler, rk2, rk4, rk4comp each; symeuler for 5 split ones,
    * verlet for 3; literal and folded */
   assert_int_equal(ran, 2 * (6 * 4 + 5 + 3));
-  /* a build with the div/sqrt unit (the default) runs every program that
-   * fits its registers: only register need keeps one on the ISS */
-  if (rtl->config.has_div && rtl->config.has_sqrt) assert_int_equal(iss_only, iss_regs);
-  if (rtl->config.has_div && rtl->config.has_sqrt && rtl->config.num_regs >= most_regs)
-    assert_int_equal(iss_only, 0);
+  /* with the div/sqrt unit (the default build) every program runs on an
+   * RTL build; some need more than 32 registers (3-D RK4), and the
+   * 40-register build's top register, r39, is among those they name */
+  if (rtl->config.has_div && rtl->config.has_sqrt) assert_int_equal(iss_only, 0);
+  assert_true(on_big > 0);
+  assert_int_equal(big_top, big->config.num_regs - 1);
+  drop(big);
   drop(rtl);
+}
+
+/* NUM_REGS=40, not a power of two: the RTL's register check is a compare
+ * (r < NUM_REGS), not the field's high bits.  A word naming r39 runs; a
+ * word naming r40 (rd, ra or rb) is an illegal instruction at its pc, on
+ * the RTL and on the ISS of the same build alike; a host write of r40 is
+ * refused. */
+static void test_regs40(void **st) {
+  (void)st;
+  fp3_engine *big = own(fp3_engine_rtl_new_model(&fp3_model_nc3, NULL), free_engine);
+  assert_non_null(big);
+  assert_int_equal(big->config.num_regs, 40);
+  fp3_engine *iss = own(fp3_engine_iss_new_config(&big->config), free_engine);
+  assert_non_null(iss);
+  const uint32_t one = 0x3F800000u;
+  for (int k = 0; k < 4; k++) {
+    /* k 0: add r39, r39, r39; then r40 as rd, ra, rb */
+    const unsigned rd = 39 + (k == 1), ra = 39 + (k == 2), rb = 39 + (k == 3);
+    uint64_t words[3] = {fp3_insn_make(FP3_OP_ADD, 0, 0, 0, 0),
+                         fp3_insn_make(FP3_OP_ADD, rd, ra, rb, 0),
+                         fp3_insn_make(FP3_OP_HALT, 0, 0, 0, 0)};
+    fp3_engine *e[2] = {big, iss};
+    for (int q = 0; q < 2; q++) {
+      assert_int_equal(e[q]->ops->load_program(e[q], words, 3), 0);
+      assert_int_equal(fp3_engine_write_reg(e[q], 39, one), 0);
+      fp3_status s;
+      assert_int_equal(fp3_engine_run(e[q], 1, NULL, &s), 0);
+      if (k == 0) {
+        uint32_t v = 0;
+        assert_int_equal(s.error, FP3_ERR_NONE);
+        assert_int_equal(fp3_engine_read_reg(e[q], 39, &v), 0);
+        assert_int_equal(v, 0x40000000u); /* 1 + 1 */
+      } else {
+        assert_int_equal(s.error, FP3_ERR_ILLEGAL_INSN);
+        assert_int_equal(s.fault_pc, 1);
+      }
+    }
+  }
+  assert_int_not_equal(fp3_engine_write_reg(big, 40, one), 0);
+  assert_int_not_equal(fp3_engine_write_reg(iss, 40, one), 0);
+  drop(iss);
+  drop(big);
 }
 
 /* The compiler's refusals: a missing unit names it; too many words names
@@ -565,15 +667,7 @@ static void test_compile_refusals(void **st) {
   assert_int_equal(fp3_compiled_stats(c)->num_regs, 34);
   assert_non_null(strstr(fp3_compiled_text(c), "\n.regs 34\n"));
   /* it names r33 and no higher */
-  const fp3_image *img = fp3_compiled_image(c);
-  unsigned top = 0;
-  for (size_t k = 0; k < img->n; k++) {
-    uint64_t w = img->words[k];
-    unsigned r[3] = {fp3_insn_rd(w), fp3_insn_ra(w), fp3_insn_rb(w)};
-    for (int q = 0; q < 3; q++)
-      if (r[q] > top) top = r[q];
-  }
-  assert_int_equal(top, 33);
+  assert_int_equal(top_reg(fp3_compiled_image(c)), 33);
   drop(c);
   drop(m);
 }
@@ -686,7 +780,8 @@ int main(void) {
       cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
       cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_ship_literal, teardown),
       cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
-      cmocka_unit_test_teardown(test_engines, teardown),       cmocka_unit_test_teardown(test_compile_refusals, teardown),
+      cmocka_unit_test_teardown(test_engines, teardown),       cmocka_unit_test_teardown(test_regs40, teardown),
+      cmocka_unit_test_teardown(test_compile_refusals, teardown),
       cmocka_unit_test_teardown(test_lanes, teardown),
       cmocka_unit_test_teardown(test_rk4comp_long, teardown),
   };
