@@ -21,7 +21,11 @@ RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP
 # (shortest add, and no div/sqrt unit: HAS_DIV = HAS_SQRT = 0, the build a
 # program with div or sqrt is refused on; FMAX_PIPE, the build for clock
 # rate, with the shortest latencies it takes, whose write-back tag lines
-# are too short for the full announcement lead: fp3_wb_tag).
+# are too short for the full announcement lead: fp3_wb_tag).  The 3-context
+# build also has NUM_REGS=40, the fewest registers that hold every shipped
+# model's program (3-D rk4comp, folded, needs 40; tests/test_model.c runs
+# the four that need more than 32 on it), and not a power of two, so the
+# register check is a compare (r < NUM_REGS), not the index's high bits.
 RTL_CONFIGS     := rne rtz ftz rtz_ftz
 RTL_CFG_rne     := 0 0
 RTL_CFG_rtz     := 1 0
