@@ -16,7 +16,7 @@
 # run is checked bit for bit against the golden model after every
 # integration; a failed check stops the script.
 #
-#   scripts/model-table.sh [MODEL ...]   prints Markdown rows (default: all six)
+#   scripts/model-table.sh [MODEL ...]   prints Markdown rows (default: all seven)
 # Uses build/fp3 (FP3_BIN to override).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,10 +29,11 @@ declare -A set=(
   [projectile]="--set h=0.015625 --set kd=0.002 --set g=9.81 --set x=0 --set y=2 --set z=0 --set vx=30 --set vy=40 --set vz=-5"
   [orbit]="--set h=0.015625 --set mu=1 --set x=1 --set y=0 --set vx=0 --set vy=1.1"
   [spring3d]="--set h=0.015625 --set k=30 --set L=1 --set m=1.5 --set x=1.5 --set y=0.2 --set z=-0.3 --set vx=0 --set vy=0.8 --set vz=0.1"
+  [rigidbody]="--set h=0.015625 --set g=9.81 --set Ix=1 --set Iy=2 --set Iz=3 --set x=0 --set y=10 --set z=0 --set qw=1 --set qx=0 --set qy=0 --set qz=0 --set vx=1 --set vy=5 --set vz=0 --set wx=0.3 --set wy=0.2 --set wz=2"
 )
 echo "| model | integrator | instructions / step | registers needed | engine | cycles / object-step, one object | 64 objects | scheduler estimate, one object | error vs GSL |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-for m in ${@:-ship spring oscillator projectile orbit spring3d}; do
+for m in ${@:-ship spring oscillator projectile orbit spring3d rigidbody}; do
   for ig in euler rk2 rk4 rk4comp symeuler verlet; do
     for lit in "" --literal; do
       "$FP3" compile --model models/$m.fp3m --integrator $ig $lit -o /dev/null 2>/tmp/fp3-table.$$ || continue
