@@ -58,12 +58,7 @@
  * than the default 32 (RTL_CFG_nc3: NUM_REGS=40, 3 contexts, FMAX_PIPE). */
 extern const fp3_model_ops fp3_model_l4, fp3_model_nc3;
 
-static const char *const shipped[] = {"models/ship.fp3m",       "models/spring.fp3m",
-                                      "models/projectile.fp3m", "models/orbit.fp3m",
-                                      "models/spring3d.fp3m",   "models/oscillator.fp3m",
-                                      "models/rigidbody.fp3m"};
-
-/* Per-object inputs of each shipped model (h, params; initial state). */
+/* Every shipped model, with an object's inputs (h, params; initial state). */
 static const struct {
   const char *file;
   float in[5], y0[13];
@@ -151,8 +146,8 @@ static fp3_model *parse(const char *src) {
 
 static void test_shipped_parse(void **st) {
   (void)st;
-  for (size_t i = 0; i < sizeof shipped / sizeof shipped[0]; i++) {
-    fp3_model *m = load(shipped[i]);
+  for (size_t i = 0; i < NOBJS; i++) {
+    fp3_model *m = load(objs[i].file);
     assert_true(m->nstate >= 2);
     drop(m);
   }
@@ -284,30 +279,31 @@ static void test_ship_literal(void **st) {
   drop(m);
 }
 
-/* GSL rk8pd against the `exact` lines (ship, damped spring). */
+/* GSL rk8pd against the `exact` lines of the models that have them (ship,
+ * damped spring, oscillator), every state variable. */
 static void test_gsl_exact(void **st) {
   (void)st;
-  static const struct {
-    const char *file;
-    double in[4], y0[2];
-  } cases[] = {
-      {"models/ship.fp3m", {1.0 / 64, 50000, 5000, 10000}, {1.5, -3}},
-      {"models/spring.fp3m", {1.0 / 64, 40, 0.8, 2}, {0.5, -0.25}},
-  };
-  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-    fp3_model *m = load(cases[i].file);
-    double y[2];
-    char msg[256];
-    if (fp3_model_gsl(m, cases[i].in, cases[i].y0, 640, NULL, NULL, y, msg, sizeof msg))
-      fail_msg("%s", msg);
-    for (unsigned k = 0; k < 2; k++) {
-      double ex;
-      assert_int_equal(fp3_model_exact(m, k, cases[i].in, cases[i].y0, 640 * cases[i].in[0], &ex), 0);
-      if (!(fabs(y[k] - ex) <= 1e-9 * (1 + fabs(ex))))
-        fail_msg("%s %s: gsl %.17g exact %.17g", cases[i].file, m->state[k], y[k], ex);
+  unsigned with_exact = 0;
+  for (size_t i = 0; i < NOBJS; i++) {
+    fp3_model *m = load(objs[i].file);
+    double in[5], y0[13], y[13];
+    for (unsigned k = 0; k < m->nparam; k++) in[k] = objs[i].in[k];
+    for (unsigned k = 0; k < m->nstate; k++) y0[k] = objs[i].y0[k];
+    if (m->exact[0] >= 0) {
+      with_exact++;
+      char msg[256];
+      if (fp3_model_gsl(m, in, y0, 640, NULL, NULL, y, msg, sizeof msg)) fail_msg("%s", msg);
+      for (unsigned k = 0; k < m->nstate; k++) {
+        double ex;
+        assert_true(m->exact[k] >= 0);
+        assert_int_equal(fp3_model_exact(m, k, in, y0, 640 * in[0], &ex), 0);
+        if (!(fabs(y[k] - ex) <= 1e-9 * (1 + fabs(ex))))
+          fail_msg("%s %s: gsl %.17g exact %.17g", objs[i].file, m->state[k], y[k], ex);
+      }
     }
     drop(m);
   }
+  assert_int_equal(with_exact, 3);
 }
 
 /* Every shipped model's literal rk4 golden model stays near GSL: within
@@ -471,13 +467,8 @@ static unsigned top_reg(const fp3_image *img) {
 static unsigned run_big(fp3_engine *big, const fp3_model *m, const char *integ, int lit,
                         size_t obj, const char *what) {
   fp3_compile_opts o;
-  fp3_compile_defaults(&o);
+  fp3_compile_opts_for(&o, &big->config);
   o.fold = o.drop_zero = !lit;
-  o.add_latency = big->config.add_latency;
-  o.mul_latency = big->config.mul_latency;
-  o.div_latency = big->config.div_latency;
-  o.fmax_pipe = big->config.fmax_pipe;
-  o.num_regs = big->config.num_regs;
   fp3_compiled *c = NULL;
   char msg[512];
   if (compile(m, integ, &o, &c, msg, sizeof msg))
@@ -526,11 +517,8 @@ static void test_engines(void **st) {
         if (strcmp(integs[g], "symeuler") == 0 && !fp3_model_split(m)) continue;
         if (strcmp(integs[g], "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL)) continue;
         fp3_compile_opts o;
-        fp3_compile_defaults(&o);
+        fp3_compile_opts_for(&o, &rtl->config);
         o.fold = o.drop_zero = !lit;
-        o.add_latency = rtl->config.add_latency;
-        o.mul_latency = rtl->config.mul_latency;
-        o.num_regs = rtl->config.num_regs;
         o.max_regs = FP3_MAX_REGS;
         fp3_compiled *c = NULL;
         char msg[512], what[128];

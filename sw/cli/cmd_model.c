@@ -250,14 +250,8 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
 static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsigned char *zero,
                                  const fp3_config *hw, int grow, const char *cmd) {
   fp3_compile_opts o;
-  fp3_compile_defaults(&o);
-  if (hw) { /* the engine's build: its latencies, registers, pipeline */
-    if (hw->add_latency) o.add_latency = hw->add_latency;
-    if (hw->mul_latency) o.mul_latency = hw->mul_latency;
-    if (hw->div_latency) o.div_latency = hw->div_latency;
-    if (hw->num_regs) o.num_regs = hw->num_regs;
-    o.fmax_pipe = hw->fmax_pipe;
-  }
+  if (hw) fp3_compile_opts_for(&o, hw); /* the engine's build */
+  else fp3_compile_defaults(&o);
   if (grow) o.max_regs = FP3_MAX_REGS;
   o.fold = o.drop_zero = !a->literal;
   fp3_compiled *c = NULL;

@@ -557,6 +557,15 @@ void fp3_compile_defaults(fp3_compile_opts *o) {
   o->fmax_pipe = 0;
 }
 
+void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw) {
+  fp3_compile_defaults(o);
+  if (hw->add_latency) o->add_latency = hw->add_latency;
+  if (hw->mul_latency) o->mul_latency = hw->mul_latency;
+  if (hw->div_latency) o->div_latency = hw->div_latency;
+  if (hw->num_regs) o->num_regs = hw->num_regs;
+  o->fmax_pipe = hw->fmax_pipe;
+}
+
 typedef struct regalloc {
   int reg[MAX_NODES];   /* register of each node's value, -1: none   */
   int used[FP3_MAX_REGS];

@@ -51,6 +51,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "engine.h"
 #include "image.h"
 #include "model.h"
 #include "mscene.h"
@@ -83,6 +84,11 @@ typedef struct fp3_compile_opts {
  * 1, FP3_DEFAULT_NUM_REGS,
  * the default build (fmax_pipe = 0). */
 void fp3_compile_defaults(fp3_compile_opts *o);
+
+/* The options for the build hw (as an engine reports it, engine.h): the
+ * defaults, then hw's latencies (those it gives, nonzero), NUM_REGS and
+ * FMAX_PIPE; max_regs 0 (a program that does not fit hw is refused). */
+void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw);
 
 /* What a compilation produced (instruction counts are static: words of
  * the program; cycles are the scheduler's estimate, an in-order issue
