@@ -70,6 +70,10 @@ for eng in iss rtl; do
   check "frames rk4comp $eng: the springs, every frame bit-exact, none at rest" \
     "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"object_frames_skipped\"]==0 and d[\"object_frames_run\"]==24*20 else 1)'"
 done
+# ... but a ship program's prologue restarts them each frame: refused, saying so
+err=$("$FP3" frames --harbour 20 --integrator rk4comp --frames 3 2>&1); rc=$?
+check "frames refuses rk4comp on a ship program, naming the prologue and the model scene" \
+  "[ $rc -eq 2 ] && grep -q 'restarts its Kahan compensations at 0' <<<\"\$err\" && grep -q 'scenes/fleet.scene' <<<\"\$err\""
 out=$("$FP3" frames --scene scenes/fleet.scene --integrator rk4comp --frames 30 --json)
 check "frames rk4comp: the 12 moored ships rest, every frame bit-exact" \
   "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"asleep_at_end\"]==12 and d[\"object_frames_skipped\"]>0 else 1)'"
