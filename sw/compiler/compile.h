@@ -253,7 +253,7 @@ unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
 typedef struct fp3_scene_gold {
   fp3_compiled *c;
   const fp3_mscene *sc;
-  unsigned reg[2 * FP3_MODEL_MAX_VARS];
+  unsigned reg[FP3_STEPPER_MAX_VARS];
   fp3_state_golden golden;
   fp3_state_stepper stepper;
 } fp3_scene_gold;
