@@ -7,7 +7,8 @@
 #
 # BENCH_CHIP is a bench_chip linked with the chip build (make
 # build/bench_chip BENCH_CHIP_MODELS=chip).  Each round runs it once
-# (--steps 200) and reads its line "Verilated model speed on this host":
+# (--steps 200; its CSV to a scratch file) and reads its line
+# "Verilated model speed on this host":
 # object-steps per CPU second of the default 8-context build on 64 ships
 # and of the chip build on 256 ships (fp3_run_objects, what
 # `fp3 run --objects N --steps 200` runs, every object checked against its
@@ -33,7 +34,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 # One run of $1: "DEFAULT CHIP" object-steps per CPU second, appended to $2.
 one() {
   local out
-  out=$("$1" --steps 200) || { echo "$0: $1 failed" >&2; echo "$out" >&2; exit 1; }
+  out=$("$1" --steps 200 --csv "$tmp/chip.csv") || { echo "$0: $1 failed" >&2; echo "$out" >&2; exit 1; }
   echo "$out" | sed -n 's/^Verilated model speed.*64 ships: \([0-9]*\); chip (.*256 ships: \([0-9]*\);.*/\1 \2/p' >>"$2"
   [ -s "$2" ] || { echo "$0: $1 printed no chip build speed (is the chip build linked?)" >&2; exit 1; }
 }
