@@ -129,22 +129,14 @@ module fp_div #(
   wire [23:0] a_norm, b_norm;
   wire [4:0]  a_lz, b_lz;
   fp_recur_unpack #(.FTZ(FTZ)) u_unpack_a (
-    .x_i    (a_i[30:0]),
-    .nan_o  (a_nan),
-    .snan_o (a_snan),
-    .inf_o  (a_inf),
-    .zero_o (a_zero),
-    .norm_o (a_norm),
-    .lz_o   (a_lz)
+    .x_i(a_i[30:0]),
+    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
+    .norm_o(a_norm), .lz_o(a_lz)
   );
   fp_recur_unpack #(.FTZ(FTZ)) u_unpack_b (
-    .x_i    (b_i[30:0]),
-    .nan_o  (b_nan),
-    .snan_o (b_snan),
-    .inf_o  (b_inf),
-    .zero_o (b_zero),
-    .norm_o (b_norm),
-    .lz_o   (b_lz)
+    .x_i(b_i[30:0]),
+    .nan_o(b_nan), .snan_o(b_snan), .inf_o(b_inf), .zero_o(b_zero),
+    .norm_o(b_norm), .lz_o(b_lz)
   );
   wire sign   = a_sign ^ b_sign;
 
@@ -269,22 +261,11 @@ module fp_div #(
   assign {f_spec, f_spec_y, f_nv, f_dz, f_sign} = f_side[WSIDE-1:10];
   fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
                  .OUT_DEPTH(DEPTH_O)) u_out (
-    .clk_i     (clk_i),
-    .rst_i     (rst_i),
-    .valid_i   (st_valid[NITER]),
-    .exp_i     (f_ge1 ? f_exp : 10'd1),
-    .mant_i    (f_sh[26:3]),
-    .guard_i   (f_sh[2]),
-    .round_i   (f_sh[1]),
-    .sticky_i  (f_sh[0] | f_st),
-    .sign_i    (f_sign),
-    .spec_i    (f_spec),
-    .spec_y_i  (f_spec_y),
-    .spec_nv_i (f_nv),
-    .spec_dz_i (f_dz),
-    .valid_o   (valid_o),
-    .y_o       (y_o),
-    .flags_o   (flags_o)
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
+    .exp_i(f_ge1 ? f_exp : 10'd1), .mant_i(f_sh[26:3]),
+    .guard_i(f_sh[2]), .round_i(f_sh[1]), .sticky_i(f_sh[0] | f_st),
+    .sign_i(f_sign), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(f_dz),
+    .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 
 endmodule

@@ -108,13 +108,9 @@ module fp_sqrt #(
   wire [23:0] a_norm;
   wire [4:0]  a_lz;
   fp_recur_unpack #(.FTZ(FTZ)) u_unpack (
-    .x_i    (a_i[30:0]),
-    .nan_o  (a_nan),
-    .snan_o (a_snan),
-    .inf_o  (a_inf),
-    .zero_o (a_zero),
-    .norm_o (a_norm),
-    .lz_o   (a_lz)
+    .x_i(a_i[30:0]),
+    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
+    .norm_o(a_norm), .lz_o(a_lz)
   );
 
   // The special result: a NaN quieted; +-0 itself; below zero (also -inf)
@@ -221,22 +217,11 @@ module fp_sqrt #(
   assign {f_spec, f_spec_y, f_nv} = f_side[WSIDE-1:8];
   fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
                  .OUT_DEPTH(DEPTH_O)) u_out (
-    .clk_i     (clk_i),
-    .rst_i     (rst_i),
-    .valid_i   (st_valid[NITER]),
-    .exp_i     ({2'd0, f_side[7:0]}),
-    .mant_i    (f_p[25:2]),
-    .guard_i   (f_p[1]),
-    .round_i   (f_p[0]),
-    .sticky_i  (|f_r),
-    .sign_i    (1'b0),
-    .spec_i    (f_spec),
-    .spec_y_i  (f_spec_y),
-    .spec_nv_i (f_nv),
-    .spec_dz_i (1'b0),
-    .valid_o   (valid_o),
-    .y_o       (y_o),
-    .flags_o   (flags_o)
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
+    .exp_i({2'd0, f_side[7:0]}), .mant_i(f_p[25:2]),
+    .guard_i(f_p[1]), .round_i(f_p[0]), .sticky_i(|f_r),
+    .sign_i(1'b0), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(1'b0),
+    .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 
 endmodule
