@@ -103,17 +103,9 @@ module fp_div #(
   localparam [9:0]   SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
   localparam integer NITER       = 27;     // quotient bits
   localparam integer NPLACE      = 30;     // places for a register, incl. out
-  localparam integer LC          = (LATENCY < NPLACE) ? LATENCY : NPLACE;
-  localparam integer DEPTH_O     = LATENCY - LC + 1;
 
-  generate
-    if (LATENCY < 1) begin : g_bad_latency
-      // Elaboration error on purpose: LATENCY must be at least 1.
-      fp_div_error_LATENCY_must_be_at_least_1 u_error ();
-    end
-  endgenerate
-
-  // Registers after step s (0 .. NPLACE - 2): the header's rule.
+  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
+  // (0 .. NPLACE - 2): the header's rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------

@@ -84,17 +84,9 @@ module fp_sqrt #(
   localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
   localparam integer NITER       = 26;     // root bits
   localparam integer NPLACE      = 29;     // places for a register, incl. out
-  localparam integer LC          = (LATENCY < NPLACE) ? LATENCY : NPLACE;
-  localparam integer DEPTH_O     = LATENCY - LC + 1;
 
-  generate
-    if (LATENCY < 1) begin : g_bad_latency
-      // Elaboration error on purpose: LATENCY must be at least 1.
-      fp_sqrt_error_LATENCY_must_be_at_least_1 u_error ();
-    end
-  endgenerate
-
-  // Registers after step s (0 .. NPLACE - 2): the header's rule.
+  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
+  // (0 .. NPLACE - 2): the header's rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
