@@ -272,3 +272,17 @@ CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/p
 bench-chip: $(BUILD)/bench_chip
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX))
+
+# ---- simulation speed (make bench-simspeed) ----------------------------------
+# The Verilated chip build on 256 ships against the default build on 64,
+# object-steps per CPU second, median of SIMSPEED_ROUNDS runs of bench_chip
+# linked with the chip build only (scripts/bench-simspeed.sh;
+# docs/lanes.md "Simulation speed").  SIMSPEED_BEFORE=path/to/bench_chip,
+# the same program built from another revision: both, alternating.
+SIMSPEED_ROUNDS ?= 3
+SIMSPEED_BEFORE ?=
+.PHONY: bench-simspeed
+## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships): object-steps per CPU second and ratio (SIMSPEED_BEFORE=)
+bench-simspeed:
+	$(MAKE) --no-print-directory $(BUILD)/bench_chip BENCH_CHIP_MODELS=chip
+	bash scripts/bench-simspeed.sh --rounds $(SIMSPEED_ROUNDS) $(BUILD)/bench_chip $(SIMSPEED_BEFORE)

@@ -119,6 +119,47 @@ module fp3_ram #(
       end
       assign rdata_o = dq[WIDTH-1:0];
 `endif
+`ifdef VERILATOR
+    end else if (READ_STAGES == 2) begin : g_any
+      // For Verilator: the LUT-RAM form below with its lanes merged.  The
+      // lanes' copies of the address and write registers hold equal
+      // values and their LUT RAMs equal nibbles of one word, so one copy
+      // of each and one array of whole words read and write the same words
+      // in the same cycles.  The lanes are there for placement only; a
+      // Verilated model evaluates every lane's registers and array every
+      // cycle, which made them a sixth of the chip build's simulation time
+      // (docs/lanes.md "Simulation speed").  Icarus, Yosys and the formal
+      // tools see the lanes.
+      // The words as written, for a testbench (as below); the LUT RAMs'.
+      /* verilator lint_off UNUSEDSIGNAL */
+      reg [WIDTH-1:0] mem [0:DEPTH-1];
+      /* verilator lint_on UNUSEDSIGNAL */
+      reg [WIDTH-1:0] words [0:DEPTH-1];
+      reg             we_q;
+      reg [AW-1:0]    raddr_q, waddr_q;
+      reg [WIDTH-1:0] wdata_q, rd_q;
+      initial begin
+        for (i = 0; i < DEPTH; i = i + 1) begin
+          mem[i]  = {WIDTH{1'b0}};
+          words[i] = {WIDTH{1'b0}};
+        end
+        we_q    = 1'b0;
+        raddr_q = {AW{1'b0}};
+        waddr_q = {AW{1'b0}};
+        wdata_q = {WIDTH{1'b0}};
+        rd_q    = {WIDTH{1'b0}};
+      end
+      always @(posedge clk_i) begin
+        if (we_i) mem[waddr_i] <= wdata_i;
+        raddr_q <= raddr_i;
+        we_q    <= we_i;
+        waddr_q <= waddr_i;
+        wdata_q <= wdata_i;
+        if (we_q) words[waddr_q] <= wdata_q;
+        rd_q <= words[raddr_q];
+      end
+      assign rdata_o = rd_q;
+`endif
     end else if (READ_STAGES == 2) begin : g_any
       // The whole words, for a testbench only: nothing reads them, and
       // synthesis removes them.  (The blocks of one conditional generate

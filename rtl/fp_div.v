@@ -7,7 +7,7 @@
 // Algorithm: radix-2 restoring digit recurrence on the normalised
 // significands, unrolled into a pipeline.  With Ma, Mb the 24-bit
 // significands (leading one at bit 23; a subnormal one normalised by its
-// leading-zero count, fp_mul_unpack_norm), the partial remainder starts
+// leading-zero count, fp_recur_unpack), the partial remainder starts
 // at r0 = Ma and each of 27 steps i = 0 .. 26 decides one quotient bit of
 // weight 2^-i:
 //     q_i = (r_i >= Mb);   r_{i+1} = 2 (r_i - q_i Mb)
@@ -27,9 +27,10 @@
 //   s = 1 .. 27  one quotient bit each (the recurrence above)
 //   s = 28       normalisation by q_0, denormalisation of a tiny quotient
 //                (right shift by 1 - e places with sticky, fp_shr_sticky),
-//                rounding increment (fp_round)
+//                rounding increment (fp_round, in fp_recur_out)
 //   s = 29       overflow, flush to zero, flags, special result
-//                (fp_round_pack); then the output register
+//                (fp_round_pack, in fp_recur_out); then the output
+//                register
 // The LATENCY - 1 registers besides the output register: with L =
 // min(LATENCY, 30) >= 2, one right after the unpack step (place 0: the
 // leading-zero count, the normalising shift and the special cases take
@@ -96,24 +97,15 @@ module fp_div #(
   output wire [4:0]  flags_o
 );
 
-  localparam [7:0]   EXP_MAX     = 8'hFF;
   localparam [9:0]   EXP_BIAS    = 10'd127;
   localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0]  MAG_INF     = 31'h7F80_0000;
   localparam [9:0]   SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
   localparam integer NITER       = 27;     // quotient bits
   localparam integer NPLACE      = 30;     // places for a register, incl. out
-  localparam integer LC          = (LATENCY < NPLACE) ? LATENCY : NPLACE;
-  localparam integer DEPTH_O     = LATENCY - LC + 1;
 
-  generate
-    if (LATENCY < 1) begin : g_bad_latency
-      // Elaboration error on purpose: LATENCY must be at least 1.
-      fp_div_error_LATENCY_must_be_at_least_1 u_error ();
-    end
-  endgenerate
-
-  // Registers after step s (0 .. NPLACE - 2): the header's rule.
+  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
+  // (0 .. NPLACE - 2): the header's rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
@@ -123,33 +115,21 @@ module fp_div #(
   wire       b_sign = b_i[31];
   wire [7:0] a_exp  = a_i[30:23];
   wire [7:0] b_exp  = b_i[30:23];
-  wire       a_fnz  = |a_i[22:0];
-  wire       b_fnz  = |b_i[22:0];
 
-  wire [23:0] a_man, b_man;
+  // Classes (FTZ: a subnormal is a zero) and normalised significands.
+  wire        a_nan, a_snan, a_inf, a_zero, b_nan, b_snan, b_inf, b_zero;
+  wire [23:0] a_norm, b_norm;
   wire [4:0]  a_lz, b_lz;
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_a (
-    .exp_i  (a_exp),
-    .frac_i (a_i[22:0]),
-    .man_o  (a_man),
-    .lz_o   (a_lz)
+  fp_recur_unpack #(.FTZ(FTZ)) u_unpack_a (
+    .x_i(a_i[30:0]),
+    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
+    .norm_o(a_norm), .lz_o(a_lz)
   );
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_b (
-    .exp_i  (b_exp),
-    .frac_i (b_i[22:0]),
-    .man_o  (b_man),
-    .lz_o   (b_lz)
+  fp_recur_unpack #(.FTZ(FTZ)) u_unpack_b (
+    .x_i(b_i[30:0]),
+    .nan_o(b_nan), .snan_o(b_snan), .inf_o(b_inf), .zero_o(b_zero),
+    .norm_o(b_norm), .lz_o(b_lz)
   );
-  wire [23:0] a_norm = a_man << a_lz;
-  wire [23:0] b_norm = b_man << b_lz;
-
-  // Special operands (FTZ: a subnormal is a zero).
-  wire a_nan  = (a_exp == EXP_MAX) & a_fnz;
-  wire b_nan  = (b_exp == EXP_MAX) & b_fnz;
-  wire a_inf  = (a_exp == EXP_MAX) & ~a_fnz;
-  wire b_inf  = (b_exp == EXP_MAX) & ~b_fnz;
-  wire a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~a_fnz);
-  wire b_zero = (b_exp == 8'd0) & ((FTZ != 0) | ~b_fnz);
   wire sign   = a_sign ^ b_sign;
 
   // The special result: the first NaN operand quieted, else the default
@@ -158,8 +138,7 @@ module fp_div #(
   // default NaN; divide by zero for a finite nonzero over a zero.
   wire        dnan    = (a_zero & b_zero) | (a_inf & b_inf);
   wire        spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
-  wire        spec_nv = (a_nan & ~a_i[22]) | (b_nan & ~b_i[22]) |
-                        (~a_nan & ~b_nan & dnan);
+  wire        spec_nv = a_snan | b_snan | (~a_nan & ~b_nan & dnan);
   wire        spec_dz = ~a_nan & ~b_nan & ~a_inf & ~a_zero & b_zero;
   reg  [31:0] spec_y;
   always @* begin
@@ -234,7 +213,7 @@ module fp_div #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // s = 28: normalisation by q_0, denormalisation, rounding increment
+  // s = 28: normalisation by q_0, denormalisation
   // ---------------------------------------------------------------------
   wire [WSIDE-1:0] f_side;
   wire [24:0]      f_r;
@@ -266,67 +245,19 @@ module fp_div #(
     .sticky_o (f_st)
   );
 
-  wire [30:0] r_pack;
-  wire        r_overflow, r_inexact, r_tiny;
-  fp_round #(.ROUND(ROUND)) u_round (
-    .exp_i     (f_ge1 ? f_exp : 10'd1),
-    .mant_i    (f_sh[26:3]),
-    .guard_i   (f_sh[2]),
-    .round_i   (f_sh[1]),
-    .sticky_i  (f_sh[0] | f_st),
-    .pack_o    (r_pack),
-    .overflow_o(r_overflow),
-    .inexact_o (r_inexact),
-    .tiny_o    (r_tiny)
-  );
-
-  localparam integer WR = 1 + 32 + 1 + 1 + 1 + 31 + 3;
-  wire          s_valid;
-  wire [WR-1:0] s_data;
-  fp_pipe #(.WIDTH(WR), .DEPTH(regs_after(NITER + 1))) u_pipe_round (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (st_valid[NITER]),
-    .data_i  ({f_side[WSIDE-1:10], r_pack, r_overflow, r_inexact, r_tiny}),
-    .valid_o (s_valid),
-    .data_o  (s_data)
-  );
-
-  // ---------------------------------------------------------------------
-  // s = 29: overflow, flush, flags, special result; output register
-  // ---------------------------------------------------------------------
-  wire        p_spec, p_nv, p_dz, p_sign;
-  wire [31:0] p_spec_y;
-  wire [30:0] p_pack;
-  wire        p_overflow, p_inexact, p_tiny;
-  assign {p_spec, p_spec_y, p_nv, p_dz, p_sign, p_pack, p_overflow, p_inexact,
-          p_tiny} = s_data;
-
-  wire [31:0] p_y;
-  wire [4:0]  p_flags;
-  fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
-    .sign_i    (p_sign),
-    .pack_i    (p_pack),
-    .overflow_i(p_overflow),
-    .inexact_i (p_inexact),
-    .tiny_i    (p_tiny),
-    .spec_i    (p_spec),
-    .spec_y_i  (p_spec_y),
-    .spec_nv_i (p_nv),
-    .y_o       (p_y),
-    .flags_o   (p_flags)
-  );
-  // The divide-by-zero flag (bit 3) beside fp_round_pack's: only with a
-  // special result, whose other flags are 0.
-  wire [4:0] p_flags_dz = p_flags | {1'b0, p_dz & p_spec, 3'b000};
-
-  fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s_valid),
-    .data_i  ({p_y, p_flags_dz}),
-    .valid_o (valid_o),
-    .data_o  ({y_o, flags_o})
+  // The rounding increment (s = 28), its register place, overflow, flush,
+  // flags and special result (s = 29) and the output register:
+  // fp_recur_out.
+  wire        f_spec, f_nv, f_dz, f_sign;
+  wire [31:0] f_spec_y;
+  assign {f_spec, f_spec_y, f_nv, f_dz, f_sign} = f_side[WSIDE-1:10];
+  fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
+                 .OUT_DEPTH(DEPTH_O)) u_out (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
+    .exp_i(f_ge1 ? f_exp : 10'd1), .mant_i(f_sh[26:3]),
+    .guard_i(f_sh[2]), .round_i(f_sh[1]), .sticky_i(f_sh[0] | f_st),
+    .sign_i(f_sign), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(f_dz),
+    .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 
 endmodule

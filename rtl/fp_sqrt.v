@@ -7,7 +7,7 @@
 // Algorithm: radix-2 restoring digit recurrence (the integer square root,
 // two radicand bits per step), unrolled into a pipeline.  With Ma the
 // 24-bit significand (leading one at bit 23; a subnormal one normalised by
-// its leading-zero count, fp_mul_unpack_norm) and E its biased exponent,
+// its leading-zero count, fp_recur_unpack) and E its biased exponent,
 // a = Ma 2^(E - 150).  The radicand N = Ma 2^27 for an odd E, Ma 2^28 for
 // an even one (so that the exponent left over is even), a 52-bit integer,
 // and the root Q = floor(sqrt(N)) has 26 bits with the leading one at bit
@@ -25,9 +25,9 @@
 //   s = 0        unpack: special cases, normalisation of a subnormal
 //                significand, result exponent, radicand alignment
 //   s = 1 .. 26  one root bit each (the recurrence above)
-//   s = 27       rounding increment (fp_round)
-//   s = 28       flags, special result (fp_round_pack); then the output
-//                register
+//   s = 27       rounding increment (fp_round, in fp_recur_out)
+//   s = 28       flags, special result (fp_round_pack, in fp_recur_out);
+//                then the output register
 // The LATENCY - 1 registers besides the output register, as fp_div's:
 // with L = min(LATENCY, 29) >= 2, one right after the unpack step (place
 // 0: normalisation and special cases get a stage of their own), and the
@@ -80,22 +80,13 @@ module fp_sqrt #(
   output wire [4:0]  flags_o
 );
 
-  localparam [7:0]   EXP_MAX     = 8'hFF;
   localparam [9:0]   EXP_BIAS    = 10'd127;
   localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
   localparam integer NITER       = 26;     // root bits
   localparam integer NPLACE      = 29;     // places for a register, incl. out
-  localparam integer LC          = (LATENCY < NPLACE) ? LATENCY : NPLACE;
-  localparam integer DEPTH_O     = LATENCY - LC + 1;
 
-  generate
-    if (LATENCY < 1) begin : g_bad_latency
-      // Elaboration error on purpose: LATENCY must be at least 1.
-      fp_sqrt_error_LATENCY_must_be_at_least_1 u_error ();
-    end
-  endgenerate
-
-  // Registers after step s (0 .. NPLACE - 2): the header's rule.
+  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
+  // (0 .. NPLACE - 2): the header's rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
@@ -103,27 +94,22 @@ module fp_sqrt #(
   // ---------------------------------------------------------------------
   wire       a_sign = a_i[31];
   wire [7:0] a_exp  = a_i[30:23];
-  wire       a_fnz  = |a_i[22:0];
 
-  wire [23:0] a_man;
+  // Class (FTZ: a subnormal is a zero) and normalised significand.
+  wire        a_nan, a_snan, a_inf, a_zero;
+  wire [23:0] a_norm;
   wire [4:0]  a_lz;
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack (
-    .exp_i  (a_exp),
-    .frac_i (a_i[22:0]),
-    .man_o  (a_man),
-    .lz_o   (a_lz)
+  fp_recur_unpack #(.FTZ(FTZ)) u_unpack (
+    .x_i(a_i[30:0]),
+    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
+    .norm_o(a_norm), .lz_o(a_lz)
   );
-  wire [23:0] a_norm = a_man << a_lz;
-
-  wire a_nan  = (a_exp == EXP_MAX) & a_fnz;
-  wire a_inf  = (a_exp == EXP_MAX) & ~a_fnz;
-  wire a_zero = (a_exp == 8'd0) & ((FTZ != 0) | ~a_fnz);
 
   // The special result: a NaN quieted; +-0 itself; below zero (also -inf)
   // the default NaN with invalid; +inf itself.
   wire        spec    = a_nan | a_inf | a_zero | a_sign;
   wire        neg     = a_sign & ~a_nan & ~a_zero;
-  wire        spec_nv = (a_nan & ~a_i[22]) | neg;
+  wire        spec_nv = a_snan | neg;
   reg  [31:0] spec_y;
   always @* begin
     if (a_nan) begin
@@ -206,7 +192,7 @@ module fp_sqrt #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // s = 27: rounding increment
+  // s = 27: the root and its remainder, rounded in fp_recur_out
   // ---------------------------------------------------------------------
   wire [WSIDE-1:0] f_side;
   wire [25:0]      f_n;
@@ -215,63 +201,19 @@ module fp_sqrt #(
   assign {f_side, f_n, f_r, f_p} = st_data[NITER*WST +: WST];
   wire unused_n = &{1'b0, f_n, 1'b0};
 
-  wire [30:0] r_pack;
-  wire        r_overflow, r_inexact, r_tiny;
-  fp_round #(.ROUND(ROUND)) u_round (
-    .exp_i     ({2'd0, f_side[7:0]}),
-    .mant_i    (f_p[25:2]),
-    .guard_i   (f_p[1]),
-    .round_i   (f_p[0]),
-    .sticky_i  (|f_r),
-    .pack_o    (r_pack),
-    .overflow_o(r_overflow),
-    .inexact_o (r_inexact),
-    .tiny_o    (r_tiny)
-  );
-
-  localparam integer WR = 1 + 32 + 1 + 31 + 3;
-  wire          s_valid;
-  wire [WR-1:0] s_data;
-  fp_pipe #(.WIDTH(WR), .DEPTH(regs_after(NITER + 1))) u_pipe_round (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (st_valid[NITER]),
-    .data_i  ({f_side[WSIDE-1:8], r_pack, r_overflow, r_inexact, r_tiny}),
-    .valid_o (s_valid),
-    .data_o  (s_data)
-  );
-
-  // ---------------------------------------------------------------------
-  // s = 28: flags, special result; output register
-  // ---------------------------------------------------------------------
-  wire        p_spec, p_nv;
-  wire [31:0] p_spec_y;
-  wire [30:0] p_pack;
-  wire        p_overflow, p_inexact, p_tiny;
-  assign {p_spec, p_spec_y, p_nv, p_pack, p_overflow, p_inexact, p_tiny} = s_data;
-
-  wire [31:0] p_y;
-  wire [4:0]  p_flags;
-  fp_round_pack #(.ROUND(ROUND), .FTZ(FTZ)) u_pack (
-    .sign_i    (1'b0),
-    .pack_i    (p_pack),
-    .overflow_i(p_overflow),
-    .inexact_i (p_inexact),
-    .tiny_i    (p_tiny),
-    .spec_i    (p_spec),
-    .spec_y_i  (p_spec_y),
-    .spec_nv_i (p_nv),
-    .y_o       (p_y),
-    .flags_o   (p_flags)
-  );
-
-  fp_pipe #(.WIDTH(32 + 5), .DEPTH(DEPTH_O)) u_pipe_out (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s_valid),
-    .data_i  ({p_y, p_flags}),
-    .valid_o (valid_o),
-    .data_o  ({y_o, flags_o})
+  // The rounding increment (s = 27), its register place, flags and
+  // special result (s = 28) and the output register: fp_recur_out (a root
+  // is positive, never tiny, never overflows, never divides by zero).
+  wire        f_spec, f_nv;
+  wire [31:0] f_spec_y;
+  assign {f_spec, f_spec_y, f_nv} = f_side[WSIDE-1:8];
+  fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
+                 .OUT_DEPTH(DEPTH_O)) u_out (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
+    .exp_i({2'd0, f_side[7:0]}), .mant_i(f_p[25:2]),
+    .guard_i(f_p[1]), .round_i(f_p[0]), .sticky_i(|f_r),
+    .sign_i(1'b0), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(1'b0),
+    .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 
 endmodule

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# bench-simspeed.sh -- how fast the Verilated models simulate (issue 41's
+# "simulation stays usable" target; make bench-simspeed, docs/lanes.md
+# "Simulation speed").
+#
+#   scripts/bench-simspeed.sh [--rounds N] BENCH_CHIP [BEFORE_BENCH_CHIP]
+#
+# BENCH_CHIP is a bench_chip linked with the chip build (make
+# build/bench_chip BENCH_CHIP_MODELS=chip).  Each round runs it once
+# (--steps 200; its CSV to a scratch file) and reads its line
+# "Verilated model speed on this host":
+# object-steps per CPU second of the default 8-context build on 64 ships
+# and of the chip build on 256 ships (fp3_run_objects, what
+# `fp3 run --objects N --steps 200` runs, every object checked against its
+# golden model).  Reported: the median of N rounds (default 3) of both,
+# and the ratio chip / default (issue 41 asks >= 4).
+#
+# With BEFORE_BENCH_CHIP (the same program built from another revision),
+# the rounds alternate between the two, so that both see the same load,
+# and the speed-ups after / before are printed too.
+#
+# A benchmark: it prints figures and fails only when a run fails (a
+# golden-model mismatch fails bench_chip), never on a speed.
+set -euo pipefail
+rounds=3
+if [ "${1:-}" = "--rounds" ]; then rounds=$2; shift 2; fi
+[ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: $0 [--rounds N] BENCH_CHIP [BEFORE_BENCH_CHIP]" >&2; exit 2; }
+case $rounds in ''|*[!0-9]*|0) echo "$0: --rounds must be a positive integer" >&2; exit 2;; esac
+for b in "$@"; do [ -x "$b" ] || { echo "$0: $b: not an executable" >&2; exit 2; }; done
+
+after=$1; before=${2:-}
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+# One run of $1: "DEFAULT CHIP" object-steps per CPU second, appended to $2.
+one() {
+  local out
+  out=$("$1" --steps 200 --csv "$tmp/chip.csv") || { echo "$0: $1 failed" >&2; echo "$out" >&2; exit 1; }
+  echo "$out" | sed -n 's/^Verilated model speed.*64 ships: \([0-9]*\); chip (.*256 ships: \([0-9]*\);.*/\1 \2/p' >>"$2"
+  [ -s "$2" ] || { echo "$0: $1 printed no chip build speed (is the chip build linked?)" >&2; exit 1; }
+}
+for r in $(seq "$rounds"); do
+  [ -n "$before" ] && one "$before" "$tmp/before"
+  one "$after" "$tmp/after"
+done
+
+median() { sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+report() {
+  local d c
+  d=$(cut -d' ' -f1 "$tmp/$1" | median); c=$(cut -d' ' -f2 "$tmp/$1" | median)
+  printf '%-6s default build, 64 ships: %6.0f   chip build, 256 ships: %6.0f   ratio %.2f\n' \
+    "$1" "$d" "$c" "$(echo "$c / $d" | bc -l)"
+  echo "$d $c" >"$tmp/$1.med"
+}
+echo "object-steps per CPU second, median of $rounds rounds (bench_chip --steps 200):"
+[ -n "$before" ] && report before
+report after
+if [ -n "$before" ]; then
+  read -r bd bc <"$tmp/before.med"; read -r ad ac <"$tmp/after.med"
+  printf 'speed-up after / before: default build %.2f, chip build %.2f\n' \
+    "$(echo "$ad / $bd" | bc -l)" "$(echo "$ac / $bc" | bc -l)"
+fi
