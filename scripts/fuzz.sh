@@ -66,9 +66,10 @@ fuzz_one() {
     return 1
   fi
   # each seed under its folder's name, so that two folders' files never clash
-  local f
+  local f d
   while IFS= read -r f; do
-    cp -n "$f" "$work/$(basename "$(dirname "$f")")-$(basename "$f")"
+    d=${f%/*}
+    cp -n "$f" "$work/${d##*/}-${f##*/}"
   done < <(seeds "$name")
   # -close_fd_mask=3: the parsers' own messages (stdout, stderr) are
   # silenced; libFuzzer and the sanitizers keep a copy of stderr for their
