@@ -44,9 +44,18 @@ PNR_SEEDS       ?=
 PNR_ICE40_LCS   := 7680
 
 # Netlists for nextpnr from scripts/synth.sh (as make synth writes them,
-# with fp3_top kept as a level of hierarchy).
+# with fp3_top kept as a level of hierarchy).  The chip build also keeps
+# fp3_lane: Yosys then maps lanes 1 .. once (they are one parameter set)
+# instead of each copy of the flattened design, minutes instead of hours
+# for 8 lanes; nextpnr flattens the hierarchy when it reads the netlist.
+# What it costs: no optimisation across a lane's ports.
+PNR_KEEP        := fp3_top $(if $(CHIP),fp3_lane)
+# The iCE40 comparison counts fp3_top's own cells, which with fp3_lane
+# kept leave the lanes out: the chip build counts the whole netlist.
+PNR_REPORT_MOD  := $(if $(CHIP),,--module fp3_top)
+PNR_REPORT_NAME := $(if $(CHIP),fp3_axil,fp3_top)
 $(PNR_ECP5_BASE).json: $(RTL_SRC) $(RTL_INC) scripts/synth.sh | $(SETUP_STAMP)
-	@bash scripts/synth.sh $(PNR_SYNTH_DIR) fp3_axil ecp5 $(PNR_PARAMS) -keep fp3_top $(RTL_SRC)
+	@bash scripts/synth.sh $(PNR_SYNTH_DIR) fp3_axil ecp5 $(PNR_PARAMS) $(foreach k,$(PNR_KEEP),-keep $(k)) $(RTL_SRC)
 $(PNR_SYNTH_DIR)/%_ice40.json: $(RTL_SRC) $(RTL_INC) scripts/synth.sh | $(SETUP_STAMP)
 	@bash scripts/synth.sh $(PNR_SYNTH_DIR) $* ice40 $(RTL_SRC)
 
@@ -65,9 +74,9 @@ pnr: pnr-tools $(PNR_ECP5_BASE).json \
 	  > $(PNR_DIR)/pnr_summary.csv
 	@$(if $(strip $(PNR_SEEDS)),bash scripts/pnr-seeds.sh fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR) $(PNR_SEEDS),bash scripts/pnr.sh ecp5 fp3_axil$(PNR_TAG) $(PNR_ECP5_BASE).json $(PNR_DIR))
 	@$(if $(and $(CHIP),$(strip $(PNR_SEEDS))),cp $(PNR_DIR)/fmax_median.txt $(PNR_DIR)/chip_fmax_median.txt)
-	@set -- $$(bash scripts/synth-report.sh --fields --module fp3_top \
+	@set -- $$(bash scripts/synth-report.sh --fields $(PNR_REPORT_MOD) \
 	    $(PNR_ECP5_BASE)_stat.txt); l=$$1; f=$$2; \
-	  echo "pnr: fp3_top ($(PNR_PARAMS)) on iCE40: $$l LUT4s and $$f flip-flops (ECP5 netlist) against" \
+	  echo "pnr: $(PNR_REPORT_NAME) ($(PNR_PARAMS)) on iCE40: $$l LUT4s and $$f flip-flops (ECP5 netlist) against" \
 	       "$(PNR_ICE40_LCS) logic cells of an HX8K, the largest iCE40:" \
 	       "$$( [ $$l -gt $(PNR_ICE40_LCS) ] && echo 'does not fit' || echo 'may fit')"
 	@set -e; for t in $(PNR_ICE40_UNITS); do \

@@ -58,14 +58,25 @@ check "spring3d rk4 folded on a 32-register RTL: refused with the numbers" \
 "$FP3" compile --model models/spring3d.fp3m -o "$tmp/s3.s" 2>/dev/null
 check "compile --model for 34 registers: .regs 34" "grep -q '^.regs 34$' $tmp/s3.s"
 # rk4comp: RK4 with Kahan-compensated updates, a compensation carried per
-# state variable; bit-exact on both engines; fp3 frames refuses it
+# state variable; bit-exact on both engines; frame by frame, the golden
+# model steps each object from its state and compensations (a golden model
+# that restarted the compensations at 0 fails the springs within frames),
+# and an object rests when both come back bit-identical: the moored ships
 for eng in iss rtl; do
   out=$("$FP3" run --model models/spring.fp3m $spring --steps 300 --engine $eng --integrator rk4comp --json)
   check "spring rk4comp $eng: pass" \
     "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"golden_mismatches\"]==0 else 1)'"
+  out=$("$FP3" frames --scene scenes/springs.scene --integrator rk4comp --frames 20 --engine $eng --json)
+  check "frames rk4comp $eng: the springs, every frame bit-exact, none at rest" \
+    "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"object_frames_skipped\"]==0 and d[\"object_frames_run\"]==24*20 else 1)'"
 done
-err=$("$FP3" frames --scene scenes/springs.scene --integrator rk4comp --frames 3 2>&1); rc=$?
-check "frames refuses rk4comp, naming the compensation" "[ $rc -eq 2 ] && grep -q 'Kahan compensation' <<<\"\$err\""
+# ... but a ship program's prologue restarts them each frame: refused, saying so
+err=$("$FP3" frames --harbour 20 --integrator rk4comp --frames 3 2>&1); rc=$?
+check "frames refuses rk4comp on a ship program, naming the prologue and the model scene" \
+  "[ $rc -eq 2 ] && grep -q 'restarts its Kahan compensations at 0' <<<\"\$err\" && grep -q 'scenes/fleet.scene' <<<\"\$err\""
+out=$("$FP3" frames --scene scenes/fleet.scene --integrator rk4comp --frames 30 --json)
+check "frames rk4comp: the 12 moored ships rest, every frame bit-exact" \
+  "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"asleep_at_end\"]==12 and d[\"object_frames_skipped\"]>0 else 1)'"
 "$FP3" compile --model models/spring.fp3m --literal -o "$tmp/s.s" 2>/dev/null
 check "compile --model writes the program" "grep -q 'model spring' $tmp/s.s && grep -q endi $tmp/s.s"
 [ $fail -eq 0 ]

@@ -97,4 +97,8 @@ check "configure of a 3-D spring scene: NUM_REGS=34, HAS_DIV=1, HAS_SQRT=1" \
 out=$("$FP3" run --scene "$tmp/anchors.scene" --engine iss --steps 100 --json 2>/dev/null)
 check "3-D spring scene on the ISS with 34 registers: bit-exact" \
   "jtest 'd[\"pass\"] and d[\"num_regs\"]==34 and d[\"registers_needed\"]==34'"
+# ... and its folded rk4comp needs 40, the registers of the RTL test build
+# nc3 (tests/test_model.c runs it there)
+line=$("$FP3" configure "$tmp/anchors.scene" --integrator rk4comp --steps 100 2>/dev/null)
+check "configure of a 3-D spring scene, rk4comp: NUM_REGS=40" "grep -q 'NUM_REGS=40 ' <<<\"\$line\""
 [ $fail -eq 0 ]

@@ -142,6 +142,19 @@ int fp3_parse_frames(int argc, char **argv, fp3_frames_args *a) {
   }
   o->frames = (uint32_t)frames;
   o->progress = !a->json && frames >= 100;
+  /* Every frame is a START, which runs the program's prologue again; the
+   * compensated ship programs' prologue sets the Kahan compensations to
+   * 0 (programs/ship_rk4comp.s), so frame by frame they integrate
+   * another recurrence than their golden model, which carries them.  A
+   * model scene's compiled rk4comp keeps them in the bank. */
+  if (strstr(a->ig->name, "comp")) {
+    fprintf(stderr, "fp3 frames: integrator %s on a ship program: the program's prologue, "
+            "which every frame's START runs, restarts its Kahan compensations at 0, so frame "
+            "by frame it is not the integration its golden model carries on; a model scene "
+            "keeps the compensations in the register bank (fp3 frames --scene "
+            "scenes/fleet.scene --integrator rk4comp)\n", a->ig->name);
+    return FP3_ARGS_BAD;
+  }
   return FP3_ARGS_RUN;
 }
 

@@ -557,6 +557,15 @@ void fp3_compile_defaults(fp3_compile_opts *o) {
   o->fmax_pipe = 0;
 }
 
+void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw) {
+  fp3_compile_defaults(o);
+  if (hw->add_latency) o->add_latency = hw->add_latency;
+  if (hw->mul_latency) o->mul_latency = hw->mul_latency;
+  if (hw->div_latency) o->div_latency = hw->div_latency;
+  if (hw->num_regs) o->num_regs = hw->num_regs;
+  o->fmax_pipe = hw->fmax_pipe;
+}
+
 typedef struct regalloc {
   int reg[MAX_NODES];   /* register of each node's value, -1: none   */
   int used[FP3_MAX_REGS];
@@ -1423,15 +1432,23 @@ unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i) {
   return (unsigned)c->state_reg[i];
 }
 
+/* The golden model set to params in[] and carried values yc[] (b->nstate
+ * of them): the inputs, then every invariant node. */
+static void begin_carried(fp3_compiled *c, const float *in, const float *yc) {
+  const builder *b = &c->b;
+  const fp3_model *m = b->model;
+  for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
+  for (int k = 0; k < b->nstate; k++) c->in[m->nparam + (unsigned)k] = yc[k];
+  golden_begin(c, yc);
+}
+
 size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
                                 unsigned *reg, uint32_t *val, size_t max) {
   const builder *b = &c->b;
   const fp3_model *m = b->model;
   float yc[MAX_STATE] = {0}; /* the carried values: the state, compensations 0 */
-  for (unsigned k = 0; k < m->nparam; k++) c->in[k] = in[k];
   for (unsigned k = 0; k < m->nstate; k++) yc[k] = y0[k];
-  for (int k = 0; k < b->nstate; k++) c->in[m->nparam + (unsigned)k] = yc[k];
-  golden_begin(c, yc);
+  begin_carried(c, in, yc);
   size_t w = 0;
   for (int k = 0; k < b->nin && w < max; k++)
     if (c->in_reg[k] >= 0) {
@@ -1452,6 +1469,12 @@ void fp3_compiled_model_step(fp3_compiled *c, float *y) {
   for (unsigned i = 0; i < c->b.model->nstate; i++) y[i] = yc[i];
 }
 
+void fp3_compiled_model_step_from(fp3_compiled *c, const float *in, const float *yc,
+                                  float *ycnew) {
+  begin_carried(c, in, yc);
+  golden_advance(c, ycnew);
+}
+
 unsigned fp3_compiled_carried(const fp3_compiled *c) { return (unsigned)c->b.nstate; }
 
 /* ---- a model scene's golden model (mscene.h runners) ---------------------- */
@@ -1470,20 +1493,16 @@ static void sg_step(void *ctx, float *y) {
 
 static void sg_step_from(void *ctx, size_t obj, const float *y, float *ynew) {
   fp3_scene_gold *g = ctx;
-  const fp3_model *m = g->sc->model;
-  unsigned reg[2 * MAX_IN];
-  uint32_t val[2 * MAX_IN];
-  fp3_compiled_model_start(g->c, g->sc->in + obj * m->nparam, y, reg, val, 2 * MAX_IN);
-  fp3_compiled_model_step(g->c, ynew);
+  fp3_compiled_model_step_from(g->c, g->sc->in + obj * g->sc->model->nparam, y, ynew);
 }
 
 void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc) {
-  const unsigned ns = sc->model->nstate;
+  const unsigned ns = sc->model->nstate, carried = fp3_compiled_carried(c);
   g->c = c;
   g->sc = sc;
-  for (unsigned i = 0; i < ns; i++) g->reg[i] = fp3_compiled_state_reg(c, i);
+  for (unsigned i = 0; i < carried; i++) g->reg[i] = fp3_compiled_state_reg(c, i);
   g->golden = (fp3_state_golden){g, ns, g->reg, sg_start, sg_step};
-  g->stepper = (fp3_state_stepper){g, ns, g->reg, sg_start, sg_step_from};
+  g->stepper = (fp3_state_stepper){g, carried, g->reg, sg_start, sg_step_from};
 }
 
 /* ---- golden model -------------------------------------------------------- */

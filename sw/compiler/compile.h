@@ -51,6 +51,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "engine.h"
 #include "image.h"
 #include "model.h"
 #include "mscene.h"
@@ -83,6 +84,11 @@ typedef struct fp3_compile_opts {
  * 1, FP3_DEFAULT_NUM_REGS,
  * the default build (fmax_pipe = 0). */
 void fp3_compile_defaults(fp3_compile_opts *o);
+
+/* The options for the build hw (as an engine reports it, engine.h): the
+ * defaults, then hw's latencies (those it gives, nonzero), NUM_REGS and
+ * FMAX_PIPE; max_regs 0 (a program that does not fit hw is refused). */
+void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw);
 
 /* What a compilation produced (instruction counts are static: words of
  * the program; cycles are the scheduler's estimate, an in-order issue
@@ -218,6 +224,14 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
  * state (the compensations of rk4comp stay inside c). */
 void fp3_compiled_model_step(fp3_compiled *c, float *y);
 
+/* One integration of the golden model from any carried values: params
+ * in[] (h first, m->nparam values) and yc[] (fp3_compiled_carried values:
+ * the state, then rk4comp's compensations) give ycnew[] (as many), in the
+ * caller's FP environment.  It restarts the golden model: a later
+ * fp3_compiled_model_step continues from ycnew. */
+void fp3_compiled_model_step_from(fp3_compiled *c, const float *in, const float *yc,
+                                  float *ycnew);
+
 /* The values a model's program carries from one integration to the next:
  * its state variables, then (rk4comp) one Kahan compensation each, so
  * m->nstate or 2 m->nstate.  The registers of the compensations start at
@@ -230,15 +244,16 @@ unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i);
 
 /* The golden model of compiled model c over the objects of model scene sc,
  * as the runners of mscene.h want it: g->golden for
- * fp3_run_state_objects, g->stepper (each object stepped from any state:
- * the golden model restarted on it, for fp3_run_state_frames; right for
- * programs whose only carried values are the state variables,
- * fp3_compiled_carried).  g keeps c, sc and the state registers; it must
- * outlive the runs. */
+ * fp3_run_state_objects (the state variables), g->stepper (each object
+ * stepped from any carried values, fp3_compiled_model_step_from, for
+ * fp3_run_state_frames: its nstate is fp3_compiled_carried, so rk4comp's
+ * compensations are restarted from the engine's and compared as the state
+ * is).  g keeps c, sc and the carried values' registers; it must outlive
+ * the runs. */
 typedef struct fp3_scene_gold {
   fp3_compiled *c;
   const fp3_mscene *sc;
-  unsigned reg[FP3_MODEL_MAX_VARS];
+  unsigned reg[FP3_STEPPER_MAX_VARS];
   fp3_state_golden golden;
   fp3_state_stepper stepper;
 } fp3_scene_gold;

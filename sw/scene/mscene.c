@@ -535,6 +535,10 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
     snprintf(msg, n, "no frames to run");
     return -1;
   }
+  if (ns > FP3_STEPPER_MAX_VARS) {
+    snprintf(msg, n, "%u carried values; at most %d", ns, FP3_STEPPER_MAX_VARS);
+    return -1;
+  }
   if (golden_fits(mode, ns, golden->reg, nregs, msg, n)) return -1;
   uint32_t *bank = calloc(nobj * nregs, sizeof *bank);  /* every object's bank */
   uint32_t *before = malloc((size_t)nctx * nregs * sizeof *before);
@@ -597,7 +601,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
     }
     /* the golden model steps every object, asleep or not */
     for (size_t o = 0; o < nobj; o++) {
-      float y[FP3_MODEL_MAX_VARS];
+      float y[FP3_STEPPER_MAX_VARS];
       fpenv_enter(mode, &env);
       golden->step_from(golden->ctx, o, gy + o * ns, y);
       fpenv_leave(&env);

@@ -139,9 +139,13 @@ void fp3_state_result_free(fp3_state_result *res);
 /* ---- frame by frame, with rest skipping (frames.h for ships) ------------- */
 
 /* A golden model that steps any object from any state: step_from() runs
- * one integration of object `obj` from state y (nstate values) into ynew,
- * in the cores' FP environment; start() as in fp3_state_golden gives the
- * host's register writes of the object's first frame. */
+ * one integration of object `obj` from state y (nstate values, at most
+ * FP3_STEPPER_MAX_VARS) into ynew, in the cores' FP environment; start()
+ * as in fp3_state_golden gives the host's register writes of the object's
+ * first frame.  The state is every value the program carries from one
+ * integration to the next (a model's state variables, then rk4comp's
+ * compensations), each in its register reg[i]. */
+#define FP3_STEPPER_MAX_VARS (2 * FP3_MODEL_MAX_VARS)
 typedef struct fp3_state_stepper {
   void *ctx;
   unsigned nstate;
@@ -162,10 +166,10 @@ typedef struct fp3_state_frames_result {
   unsigned error;
   size_t error_object;
   uint32_t error_pc;
-  uint64_t mismatches;     /* (object, frame, variable) != golden          */
+  uint64_t mismatches;     /* (object, frame, carried value) != golden     */
   size_t first_object;
   uint32_t first_frame;
-  unsigned first_var;
+  unsigned first_var;      /* index into the stepper's carried values      */
 } fp3_state_frames_result;
 
 /* Run nobj objects frame by frame: each frame one integration (STEPS = 1)
