@@ -18,14 +18,16 @@
 // program is the memory's).  The program, STEPS, CONTEXTS, CTX, the
 // register window and the order of the host's writes are otherwise any.
 //
-// Properties (an operation issued in cycle t by unit U is written back in
-// cycle W = t + READ + L(U), fp3_top "Pipeline"; rem(x) is W - now for the
-// last write claimed for register x, 0 when none is pending):
+// Properties (an operation issued in cycle t by unit U, one of the four
+// write-back ports add, mul, move and div/sqrt, is written back in cycle
+// W = t + READ + L(U), fp3_top "Pipeline"; rem(x) is W - now for the last
+// write claimed for register x, 0 when none is pending):
 //   order   an issue belongs to a running context of the run (k <
 //           CONTEXTS), whose beq has resolved and whose last endi has not
 //           issued; it is the word at that context's program counter
 //           (opcode's unit, endi, beq, the used register fields, li's
-//           immediate), a known opcode of a built unit; the counter then
+//           immediate), a known opcode of a built unit (div and sqrt
+//           only with HAS_DIV, HAS_SQRT); the counter then
 //           moves as the ISA says (next word; endi: to its immediate; beq:
 //           wait for the outcome, then to its immediate or the next word)
 //   RAW     a source register of an issue has rem <= READ - 1: its value
@@ -49,19 +51,21 @@
 //   issued  the ISSUED counter counts each issue once
 // Covers: a stall, an operand taken the cycle of its write-back or from
 // the bypass, two contexts issuing in consecutive cycles, a second
-// integration step, a taken beq, a run that ends.
+// integration step, a taken beq, a run that ends, a div/sqrt written
+// back, an operand taken from a div/sqrt the cycle of its write-back or
+// from the bypass.
 //
 // Parameters: fp3_top's, as it derives them (CW, IW, AW; READ, AHEAD, the
-// latencies in cycles; FLAGS_AHEAD = FMAX_PIPE).
-// Mutant (tests/test_formal_mutant.sh): FP3_MUTANT_ANNOUNCE_EARLY makes
+// latencies in cycles; FLAGS_AHEAD = FMAX_PIPE; HAS_DIV, HAS_SQRT).
+// Mutants (tests/test_formal_mutant.sh): FP3_MUTANT_ANNOUNCE_EARLY makes
 // rtl/fp3_wb_tag.v's line a stage short, so every write-back is announced
-// (and its index written back) a cycle early: the busy and write-back
-// properties fail at cycle 12.
+// (and its index written back) a cycle early; FP3_MUTANT_DIV_TAG_SHORT
+// does so to the div/sqrt unit's line only (rtl/fp3_top.v): the busy and
+// write-back properties fail.
 `default_nettype none
 module fp3_sched_check #(
   parameter integer NUM_CONTEXTS = 2,
   parameter integer CW           = 1,
-  parameter integer NUM_REGS     = 4,
   parameter integer IW           = 2,
   parameter integer IMEM_DEPTH   = 4,
   parameter integer AW           = 2,
@@ -70,14 +74,17 @@ module fp3_sched_check #(
   parameter integer ADD_LATENCY  = 4,
   parameter integer MUL_LATENCY  = 3,
   parameter integer MOV_LATENCY  = 1,
+  parameter integer DIV_LATENCY  = 8,
+  parameter integer HAS_DIV      = 1,
+  parameter integer HAS_SQRT     = 1,
   parameter integer FLAGS_AHEAD  = 0
 ) (
   input  wire                    clk_i,
   input  wire                    rst_i,
   // the host's program writes and run control, as fp3_top takes them
-  input  wire                    imem_we_i,
-  input  wire [AW-1:0]           imem_waddr_i,
-  input  wire [63:0]             imem_wdata_i,
+  input  wire                    prog_we_i,
+  input  wire [AW-1:0]           prog_addr_i,
+  input  wire [63:0]             prog_word_i,
   input  wire                    start_i,
   input  wire                    running_i,
   input  wire [NUM_CONTEXTS-1:0] contexts_run_i,
@@ -92,7 +99,7 @@ module fp3_sched_check #(
   input  wire [CW+IW-1:0]        ra_i,
   input  wire [CW+IW-1:0]        rb_i,
   input  wire [CW+IW-1:0]        rd_i,
-  input  wire [1:0]              issue_unit_i,
+  input  wire [2:0]              issue_unit_i,
   input  wire                    issue_imm_i,
   input  wire [31:0]             imm_i,
   input  wire                    endi_i,
@@ -105,6 +112,8 @@ module fp3_sched_check #(
   input  wire [CW+IW-1:0]        mul_idx_i,
   input  wire                    mov_valid_i,
   input  wire [CW+IW-1:0]        mov_idx_i,
+  input  wire                    div_valid_i,
+  input  wire [CW+IW-1:0]        div_idx_i,
   input  wire [NUM_CONTEXTS-1:0] br_i,
   input  wire                    br_taken_i
 );
@@ -112,17 +121,24 @@ module fp3_sched_check #(
   localparam integer NC = NUM_CONTEXTS;
   localparam integer XW = CW + IW;
   localparam integer NX = 1 << XW;
-  localparam integer RW = 6;   // rem's width: READ + latency < 64
+  // rem's width: holds READ + the longest latency
+  localparam integer LMAX = (ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY) >
+                            (DIV_LATENCY > MOV_LATENCY ? DIV_LATENCY : MOV_LATENCY) ?
+                            (ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY) :
+                            (DIV_LATENCY > MOV_LATENCY ? DIV_LATENCY : MOV_LATENCY);
+  localparam integer RW = $clog2(READ + LMAX + 1);
+  localparam integer L_ADD = READ + ADD_LATENCY, L_MUL = READ + MUL_LATENCY,
+                     L_DIV = READ + DIV_LATENCY, L_MOV = READ + MOV_LATENCY;
+  localparam integer R_LAST = READ - 1;   // rem of an operand read in the last read stage
 
   // ---- the program as written ---------------------------------------------
   reg [63:0]         mem_q [0:IMEM_DEPTH-1];
   reg [IMEM_DEPTH-1:0] written_q;
-  integer i;
   initial written_q = {IMEM_DEPTH{1'b0}};
   always @(posedge clk_i) begin
-    if (imem_we_i && !rst_i) begin   // (the memory takes no write in reset)
-      mem_q[imem_waddr_i]     <= imem_wdata_i;
-      written_q[imem_waddr_i] <= 1'b1;
+    if (prog_we_i && !rst_i) begin   // (the memory takes no write in reset)
+      mem_q[prog_addr_i]     <= prog_word_i;
+      written_q[prog_addr_i] <= 1'b1;
     end
   end
 
@@ -138,20 +154,24 @@ module fp3_sched_check #(
   wire [AW:0]   ipc    = pc_q[issue_ctx_i];
   wire [63:0]   w      = mem_q[ipc[AW-1:0]];
   wire [7:0]    w_opc  = w[ISA_OPC_LSB +: ISA_OPC_WIDTH];
-  wire [7:0]    w_rd   = w[ISA_RD_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_ra   = w[ISA_RA_LSB +: ISA_REG_WIDTH];
-  wire [7:0]    w_rb   = w[ISA_RB_LSB +: ISA_REG_WIDTH];
+  wire [IW-1:0] w_rd   = w[ISA_RD_LSB +: IW];   // (the register fields' used bits)
+  wire [IW-1:0] w_ra   = w[ISA_RA_LSB +: IW];
+  wire [IW-1:0] w_rb   = w[ISA_RB_LSB +: IW];
   wire [31:0]   w_imm  = w[0 +: ISA_IMM_WIDTH];
   wire [7:0]    w_dec  = isa_decode(w_opc);   // {known, unit[2:0], uses: imm rb ra rd}
   wire [2:0]    w_unit = w_dec[6:4];
   wire          u_rd   = w_dec[0];
   wire          u_ra   = w_dec[1];
   wire          u_rb   = w_dec[2];
+  wire          unused_word = &{1'b0, w, w_dec[3]};   // (the register fields' other bits)
   wire          w_endi = w_opc == OP_ENDI;
   wire          w_beq  = w_opc == OP_BEQ;
   // the issue's write-back: cycles from the issue
-  wire [RW-1:0] lat    = (issue_unit_i == UNIT_ADD) ? READ + ADD_LATENCY :
-                         (issue_unit_i == UNIT_MUL) ? READ + MUL_LATENCY : READ + MOV_LATENCY;
+  wire [RW-1:0] lat    = (issue_unit_i == UNIT_ADD) ? L_ADD[RW-1:0] :
+                         (issue_unit_i == UNIT_MUL) ? L_MUL[RW-1:0] :
+                         (issue_unit_i == UNIT_DIV) ? L_DIV[RW-1:0] : L_MOV[RW-1:0];
+  // a div or sqrt is legal in a build with its core
+  wire          w_built = w_unit != UNIT_DIV || (w_opc == OP_DIV ? HAS_DIV != 0 : HAS_SQRT != 0);
   wire          iwr    = issue_i && issue_unit_i != UNIT_NONE;   // the issue writes rd_i
 
   // each context's beq target: the immediate of the word at its counter
@@ -159,9 +179,8 @@ module fp3_sched_check #(
   genvar gc;
   generate
     for (gc = 0; gc < NC; gc = gc + 1) begin : g_target
-      wire [AW:0]  tpc = pc_q[gc];
-      wire [63:0]  tw  = mem_q[tpc[AW-1:0]];
-      assign br_target[gc*AW +: AW] = tw[AW-1:0];
+      wire [AW-1:0] tpc = pc_q[gc][AW-1:0];
+      assign br_target[gc*AW +: AW] = mem_q[tpc][AW-1:0];
     end
   endgenerate
   integer c;
@@ -189,9 +208,9 @@ module fp3_sched_check #(
 
   // ---- per register: the last write claimed --------------------------------
   reg [RW-1:0] rem_q [0:NX-1];   // cycles to its write-back (0: none pending)
-  reg [1:0]    unit_q [0:NX-1];  // ... its unit
+  reg [2:0]    unit_q [0:NX-1];  // ... its unit
   reg [NX-1:0] due_q;            // written back this cycle (rem was 1)
-  reg [1:0]    due_unit_q [0:NX-1];
+  reg [2:0]    due_unit_q [0:NX-1];
   integer x;
   always @(posedge clk_i) begin
     for (x = 0; x < NX; x = x + 1) begin
@@ -216,34 +235,37 @@ module fp3_sched_check #(
       order_running: assert (running_i && contexts_run_i[issue_ctx_i]);
       order_beq_resolved: assert (!pend_q[issue_ctx_i]);
       order_steps_left: assert (cnt_q[issue_ctx_i] < steps_i);
-      order_pc_in_memory: assert (ipc < IMEM_DEPTH);
-      order_known_opcode: assert (w_dec[7] && w_unit != UNIT_DIV);
-      order_unit: assert (issue_unit_i == w_unit[1:0]);
+      order_pc_in_memory: assert (ipc < IMEM_DEPTH[AW:0]);
+      order_known_opcode: assert (w_dec[7] && w_built);
+      order_unit: assert (issue_unit_i == w_unit);
       order_endi_beq: assert (endi_i == w_endi && beq_i == w_beq);
       order_li: assert (issue_imm_i == (w_opc == OP_LI));
       if (w_opc == OP_LI) order_imm: assert (imm_i == w_imm);
-      if (u_rd) order_rd: assert (rd_i == {issue_ctx_i, w_rd[IW-1:0]});
-      if (u_ra) order_ra: assert (ra_i == {issue_ctx_i, w_ra[IW-1:0]});
-      if (u_rb) order_rb: assert (rb_i == {issue_ctx_i, w_rb[IW-1:0]});
+      if (u_rd) order_rd: assert (rd_i == {issue_ctx_i, w_rd});
+      if (u_ra) order_ra: assert (ra_i == {issue_ctx_i, w_ra});
+      if (u_rb) order_rb: assert (rb_i == {issue_ctx_i, w_rb});
       // RAW: the operands are written back by the last read stage
-      if (u_ra) raw_ra: assert (rem_q[ra_i] <= READ - 1);
-      if (u_rb) raw_rb: assert (rem_q[rb_i] <= READ - 1);
+      if (u_ra) raw_ra: assert (rem_q[ra_i] <= R_LAST[RW-1:0]);
+      if (u_rb) raw_rb: assert (rem_q[rb_i] <= R_LAST[RW-1:0]);
       // WAW: register writes land in program order
       if (iwr) waw_in_order: assert (rem_q[rd_i] < lat);
     end
   end
+  wire [NX-1:0] div_due;         // due_q of a div or sqrt (the covers)
   genvar gx;
   generate
     for (gx = 0; gx < NX; gx = gx + 1) begin : g_reg
+      assign div_due[gx] = due_unit_q[gx] == UNIT_DIV;
       always @(*) begin
         if (f_past_valid && !rst_i) begin
           // busy: set by exactly the claim, cleared by exactly its announcement
-          assert (busy_i[gx] == (rem_q[gx] >= AHEAD));
+          assert (busy_i[gx] == (rem_q[gx] >= AHEAD[RW-1:0]));
           // wb: the claiming unit writes the register back in cycle W
           if (due_q[gx])
             case (due_unit_q[gx])
               UNIT_ADD: assert (add_valid_i && add_idx_i == gx[XW-1:0]);
               UNIT_MUL: assert (mul_valid_i && mul_idx_i == gx[XW-1:0]);
+              UNIT_DIV: assert (div_valid_i && div_idx_i == gx[XW-1:0]);
               default:  assert (mov_valid_i && mov_idx_i == gx[XW-1:0]);
             endcase
           // drain
@@ -294,6 +316,11 @@ module fp3_sched_check #(
       c_second_step: cover (issue_i && cnt_q[issue_ctx_i] == 32'd1);
       c_beq_taken: cover (|(br_i & pend_q) && br_taken_i);     // a beq of the run taken
       c_run_ends: cover ($past(running_i) && !running_i && ran_q); // a run that issued ends
+      // a div or sqrt written back, and an operand taken from one the
+      // cycle of its write-back or from the bypass
+      c_div_wb: cover (|(due_q & div_due));
+      c_div_bypass: cover (issue_i && u_ra && unit_q[ra_i] == UNIT_DIV &&
+                           (rem_q[ra_i] != 0 || due_q[ra_i]));
     end
   end
 endmodule

@@ -18,13 +18,31 @@
 //   LAT_S    the short build's LATENCY (1)
 //   LAT_D    the deep build's LATENCY (> LAT_S)
 //   ROUND    0 RNE, 1 RTZ;  FTZ 0 IEEE subnormals, 1 flush (DAZ + FTZ)
+//   CUT      1 (CORE = 1): the product cut out of both builds (below)
+//   CUT_FRONT, CUT_PROD  with CUT: how many more registers the deep build
+//            has than the short one in front of the product and inside it
+//
+// The product cut (CUT = 1): the .sby script makes the outputs of both
+// builds' fp_mul_prod (top_o, sticky_o) free values (yosys cutpoint) and
+// connects its operands and outputs to g_cut's wires.  Asserted besides
+// M1, M2:
+//   M0  the product's operands agree: the short build's valid bit and
+//       significands, CUT_FRONT cycles later, equal the deep build's;
+// assumed: the deep build's product equals the short build's
+// CUT_FRONT + CUT_PROD cycles earlier.  So M1, M2 hold for every value
+// the product may have (what is behind it), and M0 checks what is in
+// front of it; what is left is that fp_mul_prod computes the product
+// (a multiplier equivalence).
 `default_nettype none
 module fp_miter #(
   parameter integer CORE  = 0,
   parameter integer LAT_S = 1,
   parameter integer LAT_D = 9,
   parameter integer ROUND = 0,
-  parameter integer FTZ   = 0
+  parameter integer FTZ   = 0,
+  parameter integer CUT       = 0,
+  parameter integer CUT_FRONT = 0,
+  parameter integer CUT_PROD  = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_i,
@@ -95,6 +113,32 @@ module fp_miter #(
 
   reg f_past_valid = 1'b0;
   always @(posedge clk_i) f_past_valid <= 1'b1;
+
+  generate
+    if (CUT != 0) begin : g_cut
+      // (connected by the .sby script to each build's fp_mul_prod, whose
+      // outputs top_o, sticky_o it cuts: free values)
+      (* keep *) wire [48:0] cut_in_s, cut_in_d;     // {valid_i, a_i, b_i} of each product
+      (* keep *) wire [27:0] cut_out_s, cut_out_d;   // {top_o, sticky_o} of each product
+      wire        fv;
+      wire [47:0] fab;
+      fp_pipe #(.WIDTH(48), .DEPTH(CUT_FRONT)) u_front (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (cut_in_s[48]), .data_i (cut_in_s[47:0]),
+        .valid_o (fv), .data_o (fab));
+      wire        pv_unused;
+      wire [27:0] prod_s;   // the short build's product, as late as the deep build's
+      fp_pipe #(.WIDTH(28), .DEPTH(CUT_FRONT + CUT_PROD)) u_prod (
+        .clk_i (clk_i), .rst_i (rst_i), .valid_i (1'b0), .data_i (cut_out_s),
+        .valid_o (pv_unused), .data_o (prod_s));
+      always @(*) begin
+        assume (cut_out_d == prod_s);
+        if (f_past_valid && !rst_i) begin
+          m0_prod_valid_agree: assert (cut_in_d[48] == fv);
+          if (fv) m0_prod_operands_agree: assert (cut_in_d[47:0] == fab);
+        end
+      end
+    end
+  endgenerate
   always @(*) if (f_past_valid && !rst_i) begin
     m1_valid_agree: assert (vd == v_ref);
     if (vd) begin

@@ -235,6 +235,8 @@ module fp3_top #(
   wire clear       = wr_ctrl && host_wdata_i[1];
   wire host_reg_we = host_we_i && host_idle && wsel[4];
   wire imem_we     = host_we_i && host_idle && wsel[6];
+  // the instruction word a write of its high half completes
+  wire [63:0] imem_wdata = {host_wdata_i, imem_lo_q};
 
   // What a START needs of STEPS and CONTEXTS, decided as the host writes
   // them (the scheduler's START then compares nothing 32 bits wide): STEPS
@@ -336,7 +338,7 @@ module fp3_top #(
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
     .imem_waddr_i     (imem_idx),
-    .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
+    .imem_wdata_i     (imem_wdata),
     .start_i          (start),
     .clear_i          (clear),
     .steps_zero_i     (steps_zero_q),
@@ -539,7 +541,15 @@ module fp3_top #(
     .wb_valid_o    (mul_valid),
     .wb_idx_o      (mul_idx)
   );
-  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + DIV_LATENCY), .AHEAD(AHEAD)) u_div_tag (
+`ifdef FP3_MUTANT_DIV_TAG_SHORT
+  // A broken line for formal/sched.sby's mutant_div: a stage short, so the
+  // div/sqrt unit's write-backs are announced, and their indices written
+  // back, a cycle before the results exist.
+  localparam integer DIV_TAG_CUT = 1;
+`else
+  localparam integer DIV_TAG_CUT = 0;
+`endif
+  fp3_wb_tag #(.XW(XW), .ISSUE_TO_WB(READ + DIV_LATENCY - DIV_TAG_CUT), .AHEAD(AHEAD)) u_div_tag (
     .clk_i         (clk_i),
     .rst_i         (rst_i),
     .valid_i       (HAS_DSU && issue && issue_unit == UNIT_DIV),
@@ -797,16 +807,18 @@ module fp3_top #(
   wire unused_addr = &{1'b0, host_addr_i};
 `ifdef FP3_SCHED_CHECK
   // The scheduler's scoreboard and issue properties (formal/sched.sby),
-  // checked on this processor's own tag lines, flags and bypass.
-  fp3_sched_check #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_REGS(NUM_REGS), .IW(IW),
-                    .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .READ(READ), .AHEAD(AHEAD),
-                    .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
-                    .MOV_LATENCY(MOV_LATENCY), .FLAGS_AHEAD(FMAX_PIPE)) u_sched_check (
+  // checked on this processor's own tag lines, flags and bypass; its copy
+  // of the program from the scheduler's program writes.
+  fp3_sched_check #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .IW(IW), .IMEM_DEPTH(IMEM_DEPTH),
+                    .AW(AW), .READ(READ), .AHEAD(AHEAD), .ADD_LATENCY(ADD_LATENCY),
+                    .MUL_LATENCY(MUL_LATENCY), .MOV_LATENCY(MOV_LATENCY),
+                    .DIV_LATENCY(DIV_LATENCY), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
+                    .FLAGS_AHEAD(FMAX_PIPE)) u_sched_check (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
-    .imem_we_i        (imem_we),
-    .imem_waddr_i     (imem_idx),
-    .imem_wdata_i     ({host_wdata_i, imem_lo_q}),
+    .prog_we_i        (imem_we),
+    .prog_addr_i      (imem_idx),
+    .prog_word_i      (imem_wdata),
     .start_i          (start),
     .running_i        (running),
     .contexts_run_i   (contexts_run_q),
@@ -832,6 +844,8 @@ module fp3_top #(
     .mul_idx_i        (mul_idx),
     .mov_valid_i      (mov_valid),
     .mov_idx_i        (mov_idx),
+    .div_valid_i      (div_valid),
+    .div_idx_i        (div_idx),
     .br_i             (br_q),
     .br_taken_i       (br_taken_q)
   );

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail.  Two broken copies, each of
+# test_formal_mutant.sh -- the proofs can fail.  Three broken copies, each of
 # which must FAIL its property set, and scripts/formal.sh must name the
 # counterexample trace (an existing VCD) and the failing assertion's
 # file:line in the repository:
@@ -14,6 +14,10 @@
 #                          may issue its consumer, before the value
 #                          exists): an assertion of formal/fp3_sched_check.v
 #                          (the busy flag's, the write-back's or RAW)
+#   sched.sby:mutant_div   rtl/fp3_top.v with FP3_MUTANT_DIV_TAG_SHORT (the
+#                          div/sqrt unit's tag line alone a stage short):
+#                          the busy flag's or the div write-back's
+#                          assertion of formal/fp3_sched_check.v
 set -u
 cd "$(dirname "$0")/.."
 out=${FORMAL_OUT:-build/formal}/mutant
@@ -39,3 +43,4 @@ check() {
 
 check formal/rr_arbiter.sby:mutant 'f2_served_within_n|rr_taken_onehot'
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
+check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
