@@ -1,57 +1,214 @@
 /*
- * fuzz_options.c -- libFuzzer harness for the command-line option parsers:
- * sw/cli/cliopt.c (fp3_opt_value, fp3_opt_positional, fp3_parse_count,
- * fp3_is_help) as the model subcommands use it, i.e. the whole argument
- * parsing of `fp3 run --model` and `fp3 compile --model` (parse_args and
- * apply_set of sw/cli/cmd_model.c) without compiling or running anything;
- * and the option-value parsers the other subcommands share or keep:
- * cliopt.c's counts, --seed, --round and A:B pairs (fp3_opt_count,
- * fp3_opt_seed, fp3_opt_round, fp3_parse_pair), `fp3 bench`'s positive
- * numbers (parse_pos of sw/cli/cmd_bench.c) and `fp3 tbgen --set
- * NAME=VALUE` (set_scene of sw/cli/cmd_tbgen.c).
+ * fuzz_options.c -- libFuzzer harness for the command line: the parse step
+ * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
+ * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
+ * fp3_parse_run, fp3_parse_compile, fp3_parse_configure,
+ * fp3_parse_frames, fp3_parse_bench, fp3_parse_tbgen and, for the model
+ * forms of run, compile, frames and bench, fp3_parse_model, with the
+ * option-value parsers of sw/cli/cliopt.c they share.  The run steps
+ * (files, engines) are never called.
  *
  * The input is an argument vector, one argument per line.  The first line
- * picks what is parsed: "bench" and "tbgen" give each further line to
- * that subcommand's value parser, "counts" the vector to the shared
- * count, seed, rounding and pair parsers; "compile" runs parse_args as
- * `fp3 compile --model`, anything else as `fp3 run --model`.  When
- * parse_args accepts them, each --set NAME=VALUE is applied to a fixed
- * model (a damped spring, parsed once), as the subcommand does before it
- * compiles.
+ * names the subcommand (argv[0]), as on the fp3 command line; "CMD model"
+ * picks CMD's model form, which fp3 also picks for --model FILE or
+ * --model=FILE (and for a model scene, which the harness does not read);
+ * another first line picks a parser by its first byte.  When the model
+ * form of run or bench accepts, its --set values are resolved against a
+ * fixed model (a damped spring, parsed once: fp3_model_args_values), as
+ * the run step does first.
  *
- * The subcommands' sources are included, not linked, to reach their
- * static functions; the functions of them that run an engine are never called (the fuzz build
- * links with --gc-sections, which drops them and what only they need).
- * The subcommands' loops over argv (fp3_cmd_bench, fp3_cmd_tbgen, ...) go
- * on to run engines and write files, so they are not fuzzed here.
+ * What an accepted vector must give, checked here (abort() otherwise):
+ * every string option points into argv (each is read, so ASan sees a
+ * stray pointer), and the options the run step relies on hold: the
+ * required file names are there, counts are in range, combinations the
+ * parse step refuses (--trace with several objects, --literal with
+ * --compile, a scene without --seed's objects) never come out.
  */
-#include "cmd_model.c"
-#include "cmd_bench.c"
-#include "cmd_tbgen.c"
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
+#include "cliopt.h"
+#include "cmd_asm.h"
+#include "cmd_bench.h"
+#include "cmd_compile.h"
+#include "cmd_configure.h"
+#include "cmd_disasm.h"
+#include "cmd_frames.h"
+#include "cmd_model.h"
+#include "cmd_run.h"
+#include "cmd_tbgen.h"
 #include "fuzz_common.h"
+#include "model.h"
 
 #define MAX_ARGS 64
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+static int argc_;
+static char **argv_;
+
+/* A property of accepted options failed: name it and stop. */
+static void fail(const char *cmd, const char *what) {
+  fprintf(stderr, "fuzz_options: fp3 %s: accepted options with %s\n", cmd, what);
+  abort();
+}
+
+/* s, an option's string, is NULL or one of argv's strings or a suffix of
+ * one (--name=VALUE) or a string literal default; read it whole. */
+static void check_str(const char *cmd, const char *s, int may_be_default) {
+  if (!s) return;
+  volatile size_t n = strlen(s);
+  (void)n;
+  for (int i = 0; i < argc_; i++) {
+    size_t len = strlen(argv_[i]);
+    if (s >= argv_[i] && s <= argv_[i] + len) return;
+  }
+  if (!may_be_default) fail(cmd, "a string that is not an argument");
+}
+
+static const fp3_model *spring(void) {
   static fp3_model model;
   static int ready;
   if (!ready) {
-    static const char spring[] = "model spring\n"
-                                 "param k, c\n"
-                                 "position x\n"
-                                 "velocity v\n"
-                                 "x' = v\n"
-                                 "v' = -k*x - c*v\n";
+    static const char text[] = "model spring\n"
+                               "param k, c\n"
+                               "position x\n"
+                               "velocity v\n"
+                               "x' = v\n"
+                               "v' = -k*x - c*v\n";
     char msg[256];
-    if (fp3_model_parse(spring, "spring.fp3m", &model, msg, sizeof msg) != 0) {
+    if (fp3_model_parse(text, "spring.fp3m", &model, msg, sizeof msg) != 0) {
       fprintf(stderr, "fuzz_options: %s\n", msg);
       abort();
     }
     ready = 1;
   }
+  return &model;
+}
+
+static void parse_model(const char *cmd, int argc, char **argv) {
+  fp3_model_args a;
+  if (fp3_parse_model(argc, argv, cmd, &a) != FP3_ARGS_RUN) return;
+  if (!a.scene && !a.file) fail(cmd, "neither --model nor a scene");
+  if (a.scene && a.file) fail(cmd, "both --model and a scene");
+  if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
+  if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
+  if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0) fail(cmd, "an engine");
+  check_str(cmd, a.file, 0);
+  check_str(cmd, a.scene, 0);
+  check_str(cmd, a.integ, 1);
+  check_str(cmd, a.out, 0);
+  check_str(cmd, a.stab, 0);
+  check_str(cmd, a.long_out, 0);
+  for (int i = 0; i < a.nset; i++) check_str(cmd, a.set[i], 0);
+  if (!a.scene && (strcmp(cmd, "run") == 0 || strcmp(cmd, "bench") == 0)) {
+    float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
+    if (fp3_model_args_values(spring(), &a, in, y0) == 0 && !(in[0] > 0.0f))
+      fail(cmd, "a step h <= 0");
+  }
+}
+
+static void parse_run(int argc, char **argv) {
+  fp3_run_args a;
+  if (fp3_parse_run(argc, argv, &a) != FP3_ARGS_RUN) return;
+  char msg[256];
+  if (!a.integ || a.steps < 1) fail("run", "no integrator or no steps");
+  if (a.trace && (a.objects || a.scene || strcmp(a.engine_name, "rtl") != 0))
+    fail("run", "--trace with several objects or the ISS");
+  if (a.literal && a.compile) fail("run", "--literal and --compile");
+  if (a.compile && (a.program || !(a.objects || a.scene))) fail("run", "--compile misplaced");
+  if (a.seeded && (!a.objects || a.scene)) fail("run", "--seed without --objects");
+  if (a.win_count < 1) fail("run", "an empty trace window");
+  if (fp3_ship_validate(&a.p, msg, sizeof msg) != 0) fail("run", "an invalid scene");
+  check_str("run", a.engine_name, 1);
+  check_str("run", a.program, 0);
+  check_str("run", a.trace, 0);
+  check_str("run", a.scene, 0);
+}
+
+static void parse_frames(int argc, char **argv) {
+  fp3_frames_args a;
+  if (fp3_parse_frames(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.ig || a.opts.frames < 1 || a.ships < 1 || !(a.fmax > 0.0)) fail("frames", "a count");
+  if (a.opts.wake_frame && a.opts.wake_count < 1) fail("frames", "an empty --wake");
+  check_str("frames", a.scene_path, 0);
+  check_str("frames", a.program, 1);
+  check_str("frames", a.engine_name, 1);
+}
+
+static void parse_bench(int argc, char **argv) {
+  fp3_bench_opts o;
+  if (fp3_parse_bench(argc, argv, &o) != FP3_ARGS_RUN) return;
+  if (!(o.from > 0.0 && o.to > 0.0 && o.t_end > 0.0 && o.per_decade > 0.0 && o.single >= 0.0))
+    fail("bench", "a value <= 0");
+  if (o.long_steps < 1 || o.rtl_long_steps < 1 || o.repeats < 1 || o.repeats > 64)
+    fail("bench", "a count out of range");
+  check_str("bench", o.dir, 1);
+  check_str("bench", o.only, 0);
+}
+
+static void parse_tbgen(int argc, char **argv) {
+  fp3_tbgen_args a;
+  if (fp3_parse_tbgen(argc, argv, &a) != FP3_ARGS_RUN) return;
+  char msg[256];
+  if (!a.in || !a.dir) fail("tbgen", "no program or no folder");
+  if (a.steps < 1 || a.steps > TBGEN_MAX_CHECK) fail("tbgen", "--steps out of range");
+  if (fp3_ship_validate(&a.p, msg, sizeof msg) != 0) fail("tbgen", "an invalid scene");
+  check_str("tbgen", a.in, 0);
+  check_str("tbgen", a.dir, 0);
+}
+
+static void parse_asm(int argc, char **argv) {
+  fp3_asm_args a;
+  if (fp3_parse_asm(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.in) fail("asm", "no input");
+  check_str("asm", a.in, 0);
+  check_str("asm", a.out, 0);
+}
+
+static void parse_disasm(int argc, char **argv) {
+  fp3_disasm_args a;
+  if (fp3_parse_disasm(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.in) fail("disasm", "no input");
+  check_str("disasm", a.in, 0);
+}
+
+static void parse_compile(int argc, char **argv) {
+  fp3_compile_args a;
+  if (fp3_parse_compile(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.scene || (a.json && !a.out)) fail("compile", "no scene, or --json without -o");
+  if (a.opts.add_latency < 1 || a.opts.add_latency > 64 || a.opts.mul_latency < 1 ||
+      a.opts.mul_latency > 64)
+    fail("compile", "a latency out of range");
+  check_str("compile", a.scene, 0);
+  check_str("compile", a.out, 0);
+  check_str("compile", a.integ, 1);
+}
+
+static void parse_configure(int argc, char **argv) {
+  fp3_configure_args a;
+  if (fp3_parse_configure(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.scene || !(a.opts.budget > 0.0) || a.opts.steps < 1 || a.opts.max_lanes < 1)
+    fail("configure", "no scene or a value out of range");
+  check_str("configure", a.scene, 0);
+  check_str("configure", a.out, 0);
+  check_str("configure", a.opts.integrator, 1);
+}
+
+/* 1 if argv holds --model or --model=FILE (fp3_args_have_model without
+ * its look into scene files). */
+static int names_model(int argc, char **argv) {
+  for (int i = 1; i < argc; i++)
+    if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
+  return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  static const char *const cmds[] = {"asm",    "disasm", "run",   "compile",
+                                     "configure", "frames", "bench", "tbgen"};
+  const size_t ncmds = sizeof cmds / sizeof cmds[0];
   char *text = fuzz_strdup(data, size);
   char *argv[MAX_ARGS + 1];
   int argc = 0;
@@ -63,42 +220,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     p = nl + 1;
   }
   argv[argc] = NULL;
-  if (strcmp(argv[0], "bench") == 0 || strcmp(argv[0], "tbgen") == 0 ||
-      strcmp(argv[0], "counts") == 0) {
-    fp3_ship_params p;
-    memset(&p, 0, sizeof p);
-    for (int i = 1; i < argc; i++) {
-      double x;
-      unsigned long long n, a, b;
-      uint64_t seed;
-      fpref_mode mode;
-      memset(&mode, 0, sizeof mode);
-      if (argv[0][0] == 'b') {
-        (void)parse_pos("--from", argv[i], &x);
-      } else if (argv[0][0] == 't') {
-        (void)set_scene(&p, argv[i]);
-      } else {
-        /* the shared shapes: a count, --seed, --round, a pair A:B */
-        int j = i;
-        if (fp3_opt_count(argc, argv, &j, "counts", "--steps", 1, 1000000, "steps", &n) != 0 ||
-            fp3_opt_seed(argc, argv, &j, "counts", &seed) != 0 ||
-            fp3_opt_round(argc, argv, &j, "counts", &mode) != 0)
-          i = j;
-        (void)fp3_parse_pair(argv[i], 0, 64, 1, 1000, "all", &a, &b);
-      }
-    }
-    free(text);
-    return 0;
+  argc_ = argc;
+  argv_ = argv;
+
+  /* argv[0]: "CMD" or "CMD model"; another word picks by its first byte */
+  char *first = argv[0];
+  int model = 0;
+  char *sp = strchr(first, ' ');
+  if (sp && strcmp(sp, " model") == 0) {
+    *sp = '\0';
+    model = 1;
   }
-  const char *cmd = strcmp(argv[0], "compile") == 0 ? "compile" : "run";
-  fp3_args_have_model(argc, argv);
-  margs a;
-  if (parse_args(argc, argv, cmd, &a) == 0 && strcmp(cmd, "run") == 0) {
-    float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
-    unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
-    for (int i = 0; i < a.nset; i++)
-      if (apply_set(&model, a.set[i], in, y0, given) != 0) break;
-  }
+  size_t c = ncmds;
+  for (size_t k = 0; k < ncmds; k++)
+    if (strcmp(first, cmds[k]) == 0) c = k;
+  if (c == ncmds) c = (unsigned char)first[0] % ncmds;
+  const char *cmd = cmds[c];
+  const int has_model_form = strcmp(cmd, "run") == 0 || strcmp(cmd, "compile") == 0 ||
+                             strcmp(cmd, "frames") == 0 || strcmp(cmd, "bench") == 0;
+  if (has_model_form && (model || names_model(argc, argv))) parse_model(cmd, argc, argv);
+  else if (strcmp(cmd, "asm") == 0) parse_asm(argc, argv);
+  else if (strcmp(cmd, "disasm") == 0) parse_disasm(argc, argv);
+  else if (strcmp(cmd, "run") == 0) parse_run(argc, argv);
+  else if (strcmp(cmd, "compile") == 0) parse_compile(argc, argv);
+  else if (strcmp(cmd, "configure") == 0) parse_configure(argc, argv);
+  else if (strcmp(cmd, "frames") == 0) parse_frames(argc, argv);
+  else if (strcmp(cmd, "bench") == 0) parse_bench(argc, argv);
+  else parse_tbgen(argc, argv);
   free(text);
   return 0;
 }

@@ -68,6 +68,9 @@ check "frames: the 12 moored ships rest, every frame bit-exact" \
 out=$("$FP3" frames --scene scenes/fleet.scene --frames 60 --integrator euler --no-rest-skip --json)
 check "frames --no-rest-skip: nothing skipped" \
   "jtest 'd[\"pass\"] and d[\"object_frames_skipped\"]==0 and d[\"object_frames_run\"]==32*60'"
+# --frames equal to fp3 run's default step count (1000) is not the frames default (600)
+out=$("$FP3" frames --scene scenes/fleet.scene --frames 1000 --integrator euler --engine iss --json)
+check "frames --frames 1000: 1000 frames run" "jtest 'd[\"pass\"] and d[\"frames\"]==1000'"
 "$FP3" bench --model models/spring.fp3m --set h=0.015625 --set k=40 --set c=0.8 --set m=2 \
   --set x=0.5 --set v=-0.25 --points 3 --engine iss -o "$tmp/wp.csv" 2>/dev/null
 check "bench --model: 5 integrators (rk4comp too) x 3 points, rk4's error falls with h" \

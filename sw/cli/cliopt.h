@@ -5,8 +5,28 @@
 #define FP3_CLIOPT_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #include "fpref.h"
+#include "golden.h"
+
+/* Every subcommand is two steps: a parse step, fp3_parse_CMD(argc, argv,
+ * &args), that turns the argument vector into the subcommand's options
+ * and checks them (no file is opened, nothing is written but the message
+ * of a bad argument on stderr), and the run step that reads the files,
+ * runs the engines and writes the outputs.  The parse step returns one of
+ * these.  tests/test_cli.sh checks the messages; fuzz/fuzz_options.c
+ * fuzzes every parse step. */
+enum {
+  FP3_ARGS_RUN = 0,  /* the options are valid: run                          */
+  FP3_ARGS_HELP = 1, /* --help or -h: print the usage, exit 0               */
+  FP3_ARGS_BAD = -1  /* a bad argument, reported on stderr: exit 2          */
+};
+
+/* The exit status of a parse step's result r other than FP3_ARGS_RUN:
+ * FP3_ARGS_HELP prints usage(stdout) and gives 0, FP3_ARGS_BAD gives 2
+ * (the usage error status of every subcommand). */
+int fp3_args_exit(int r, void (*usage)(FILE *));
 
 /* "--name VALUE" or "--name=VALUE": returns 1 and sets *val (advancing *i
  * past a separate value) if argv[*i] is that option, -1 with a message on
@@ -14,6 +34,10 @@
  * missing, 0 if argv[*i] is another argument. */
 int fp3_opt_value(int argc, char **argv, int *i, const char *cmd, const char *name,
                   const char **val);
+
+/* -o FILE or --output FILE (each also with =FILE): 1, 0, -1 as
+ * fp3_opt_value. */
+int fp3_opt_output(int argc, char **argv, int *i, const char *cmd, const char **val);
 
 /* argv[i] = arg, which no option of command cmd matched: an unknown option
  * ("-x", "--x"; "-" alone is a file name), else a positional argument,
@@ -52,6 +76,14 @@ int fp3_opt_round(int argc, char **argv, int *i, const char *cmd, fpref_mode *mo
 int fp3_parse_pair(const char *v, unsigned long long lo1, unsigned long long hi1,
                    unsigned long long lo2, unsigned long long hi2, const char *all,
                    unsigned long long *a, unsigned long long *b);
+
+/* --set NAME=VALUE of the ship's scene (fp3 run, fp3 tbgen): NAME one of
+ * T C m h v0 s0, VALUE a binary32 number (strtof) stored in that field of
+ * *p (fp3_ship_validate checks the scene as a whole).  0, or -1 with a
+ * message on stderr: "fp3 CMD: --set wants NAME=VALUE, got 'A'", "fp3
+ * CMD: unknown parameter 'N' in --set (T C m h v0 s0)", "fp3 CMD: --set
+ * N: 'V' is not a number". */
+int fp3_ship_set(const char *cmd, fp3_ship_params *p, const char *arg);
 
 /* 1 if a is --help or -h. */
 int fp3_is_help(const char *a);

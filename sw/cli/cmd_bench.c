@@ -1,7 +1,7 @@
 /*
  * cmd_bench.c -- `fp3 bench`: the command line of the integrator benchmark
- * (bench.h): options parsed and checked here, the work done by
- * fp3_bench_run().
+ * (bench.h): options parsed and checked here (fp3_parse_bench), the work
+ * done by fp3_bench_run().
  */
 #include "cmd_bench.h"
 
@@ -17,8 +17,6 @@
 
 #include "cliopt.h"
 #include "cmd_model.h"
-
-#define EXIT_USAGE 2
 
 static void usage_bench(FILE *f) {
   fprintf(f,
@@ -81,56 +79,58 @@ static int parse_pos(const char *opt, const char *s, double *x) {
 }
 
 
-int fp3_cmd_bench(int argc, char **argv) {
-  if (fp3_args_have_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
-  const char *dir = "build/bench", *only = NULL;
-  double from = 1e-4, to = 3.0, t_end = 12.0, single = 0.0, perdec = 4.0;
-  uint32_t nlong = 10000000u, nrtl = 100000u, reps = 7;
+int fp3_parse_bench(int argc, char **argv, fp3_bench_opts *o) {
+  *o = (fp3_bench_opts){.dir = "build/bench", .only = NULL, .from = 1e-4, .to = 3.0,
+                        .t_end = 12.0, .single = 0.0, .per_decade = 4.0,
+                        .long_steps = 10000000u, .rtl_long_steps = 100000u, .repeats = 7};
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
     int r;
-    if (fp3_is_help(argv[i])) {
-      usage_bench(stdout);
-      return 0;
-    }
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
     if ((r = fp3_opt_value(argc, argv, &i, "bench", "--out", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      dir = v;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->dir = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--from", &v)) != 0) {
-      if (r < 0 || parse_pos("--from", v, &from)) return EXIT_USAGE;
+      if (r < 0 || parse_pos("--from", v, &o->from)) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--to", &v)) != 0) {
-      if (r < 0 || parse_pos("--to", v, &to)) return EXIT_USAGE;
+      if (r < 0 || parse_pos("--to", v, &o->to)) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--per-decade", &v)) != 0) {
-      if (r < 0 || parse_pos("--per-decade", v, &perdec)) return EXIT_USAGE;
+      if (r < 0 || parse_pos("--per-decade", v, &o->per_decade)) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--t-end", &v)) != 0) {
-      if (r < 0 || parse_pos("--t-end", v, &t_end)) return EXIT_USAGE;
+      if (r < 0 || parse_pos("--t-end", v, &o->t_end)) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--h-over-tau", &v)) != 0) {
-      if (r < 0 || parse_pos("--h-over-tau", v, &single)) return EXIT_USAGE;
+      if (r < 0 || parse_pos("--h-over-tau", v, &o->single)) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "bench", "--only", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0) return FP3_ARGS_BAD;
       if (strcmp(v, "sweep") && strcmp(v, "stability") && strcmp(v, "long")) {
         fprintf(stderr, "fp3 bench: --only '%s': sweep, stability or long\n", v);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-      only = v;
+      o->only = v;
     } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--long-steps", 1, UINT32_MAX,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      nlong = (uint32_t)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->long_steps = (uint32_t)k;
     } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--rtl-long-steps", 1, UINT32_MAX,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      nrtl = (uint32_t)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->rtl_long_steps = (uint32_t)k;
     } else if ((r = fp3_opt_count(argc, argv, &i, "bench", "--repeats", 1, 64, "", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      reps = (uint32_t)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->repeats = (uint32_t)k;
     } else {
       fprintf(stderr, "fp3 bench: unknown argument '%s' (see fp3 bench --help)\n",
               argv[i]);
-      return EXIT_USAGE;
+      return FP3_ARGS_BAD;
     }
   }
-  fp3_bench_opts o = {dir, only, from, to, t_end, single, perdec, nlong, nrtl, reps};
-  return fp3_bench_run(&o);
+  return FP3_ARGS_RUN;
+}
+
+int fp3_cmd_bench(int argc, char **argv) {
+  if (fp3_args_have_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
+  fp3_bench_opts o;
+  int r = fp3_parse_bench(argc, argv, &o);
+  return r == FP3_ARGS_RUN ? fp3_bench_run(&o) : fp3_args_exit(r, usage_bench);
 }

@@ -60,57 +60,62 @@ static void usage(FILE *f) {
           FP3_FMAX_PIPE_PICK_STAGES + 1);
 }
 
-int fp3_cmd_compile(int argc, char **argv) {
-  const char *scene = NULL, *outp = NULL, *integ = "rk4";
-  int json = 0;
-  fp3_compile_opts o;
-  fp3_compile_defaults(&o);
+int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
+  a->scene = a->out = NULL;
+  a->integ = "rk4";
+  a->json = 0;
+  fp3_compile_defaults(&a->opts);
+  fp3_compile_opts *o = &a->opts;
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
     int r;
-    if (fp3_is_help(argv[i])) {
-      usage(stdout);
-      return 0;
-    }
-    if ((r = fp3_opt_value(argc, argv, &i, "compile", "-o", &v)) != 0 ||
-        (r = fp3_opt_value(argc, argv, &i, "compile", "--output", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      outp = v;
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
+    if ((r = fp3_opt_output(argc, argv, &i, "compile", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->out = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--integrator", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      integ = v;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->integ = v;
     } else if ((r = fp3_opt_count(argc, argv, &i, "compile", "--add-latency", 1, 64, "cycles",
                                   &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.add_latency = (unsigned)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->add_latency = (unsigned)k;
     } else if ((r = fp3_opt_count(argc, argv, &i, "compile", "--mul-latency", 1, 64, "cycles",
                                   &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.mul_latency = (unsigned)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->mul_latency = (unsigned)k;
     } else if (strcmp(argv[i], "--fmax-pipe") == 0) {
-      o.fmax_pipe = 1;
+      o->fmax_pipe = 1;
     } else if (strcmp(argv[i], "--literal") == 0) {
-      o.fold = o.drop_zero = 0;
+      o->fold = o->drop_zero = 0;
     } else if (strcmp(argv[i], "--no-fold") == 0) {
-      o.fold = 0;
+      o->fold = 0;
     } else if (strcmp(argv[i], "--keep-zero") == 0) {
-      o.drop_zero = 0;
+      o->drop_zero = 0;
     } else if (strcmp(argv[i], "--json") == 0) {
-      json = 1;
-    } else if (fp3_opt_positional("compile", "scene", argv[i], &scene)) {
-      return EXIT_USAGE;
+      a->json = 1;
+    } else if (fp3_opt_positional("compile", "scene", argv[i], &a->scene)) {
+      return FP3_ARGS_BAD;
     }
   }
-  if (!scene) {
+  if (!a->scene) {
     fprintf(stderr, "fp3 compile: no scene file (see fp3 compile --help)\n");
-    return EXIT_USAGE;
+    return FP3_ARGS_BAD;
   }
-  if (json && !outp) {
+  if (a->json && !a->out) {
     fprintf(stderr, "fp3 compile: --json needs -o FILE (the program and the report would "
                     "share standard output)\n");
-    return EXIT_USAGE;
+    return FP3_ARGS_BAD;
   }
+  return FP3_ARGS_RUN;
+}
+
+/* The run step: read, compile, write, report. */
+static int run_compile(const fp3_compile_args *a) {
+  const char *scene = a->scene, *outp = a->out, *integ = a->integ;
+  const int json = a->json;
+  const fp3_compile_opts o = a->opts;
   char msg[512];
   fp3_scene sc;
   if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
@@ -162,4 +167,10 @@ int fp3_cmd_compile(int argc, char **argv) {
   fp3_compiled_free(c);
   fp3_scene_free(&sc);
   return rc;
+}
+
+int fp3_cmd_compile(int argc, char **argv) {
+  fp3_compile_args a;
+  int r = fp3_parse_compile(argc, argv, &a);
+  return r == FP3_ARGS_RUN ? run_compile(&a) : fp3_args_exit(r, usage);
 }

@@ -193,59 +193,63 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
   }
 }
 
-int fp3_cmd_configure(int argc, char **argv) {
-  const char *scene = NULL, *outp = NULL;
-  int json = 0;
-  fp3_configure_opts o;
-  fp3_configure_defaults(&o);
+int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
+  a->scene = a->out = NULL;
+  a->json = 0;
+  fp3_configure_defaults(&a->opts);
+  fp3_configure_opts *o = &a->opts;
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
     int r;
-    if (fp3_is_help(argv[i])) {
-      usage(stdout);
-      return 0;
-    }
-    if ((r = fp3_opt_value(argc, argv, &i, "configure", "-o", &v)) != 0 ||
-        (r = fp3_opt_value(argc, argv, &i, "configure", "--output", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      outp = v;
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
+    if ((r = fp3_opt_output(argc, argv, &i, "configure", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->out = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--integrator", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.integrator = v; /* checked below: ship scenes and models know different ones */
+      if (r < 0) return FP3_ARGS_BAD;
+      o->integrator = v; /* checked by the run step: ship scenes and models know different ones */
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--error-budget", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0) return FP3_ARGS_BAD;
       char *end;
       errno = 0;
       double b = strtod(v, &end);
       if (end == v || *end || errno || !(b > 0.0) || !isfinite(b)) {
         fprintf(stderr, "fp3 configure: --error-budget '%s': want a positive relative error, "
                         "e.g. 1e-4\n", v);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-      o.budget = b;
+      o->budget = b;
     } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--steps", 1, MAX_STEPS,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.steps = (uint32_t)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->steps = (uint32_t)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
-      o.literal = 1;
+      o->literal = 1;
     } else if ((r = fp3_opt_count(argc, argv, &i, "configure", "--max-lanes", 1, FP3_MAX_LANES,
                                   "lanes", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.max_lanes = (unsigned)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      o->max_lanes = (unsigned)k;
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
-      o.context_per_object = 1;
+      o->context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
-      json = 1;
-    } else if (fp3_opt_positional("configure", "scene", argv[i], &scene)) {
-      return EXIT_USAGE;
+      a->json = 1;
+    } else if (fp3_opt_positional("configure", "scene", argv[i], &a->scene)) {
+      return FP3_ARGS_BAD;
     }
   }
-  if (!scene) {
+  if (!a->scene) {
     fprintf(stderr, "fp3 configure: no scene file (see fp3 configure --help)\n");
-    return EXIT_USAGE;
+    return FP3_ARGS_BAD;
   }
+  return FP3_ARGS_RUN;
+}
+
+/* The run step: read the scene, derive the parameters, write, report. */
+static int run_configure(const fp3_configure_args *a) {
+  const char *scene = a->scene, *outp = a->out;
+  const int json = a->json;
+  const fp3_configure_opts o = a->opts;
   char msg[512];
   fp3_configure_result res;
   const char *against = "v and s against the exact solution";
@@ -302,4 +306,10 @@ int fp3_cmd_configure(int argc, char **argv) {
     print_reasons(scene, o.integrator, against, &o, &res);
   }
   return 0;
+}
+
+int fp3_cmd_configure(int argc, char **argv) {
+  fp3_configure_args a;
+  int r = fp3_parse_configure(argc, argv, &a);
+  return r == FP3_ARGS_RUN ? run_configure(&a) : fp3_args_exit(r, usage);
 }

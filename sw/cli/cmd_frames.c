@@ -61,97 +61,112 @@ static void usage(FILE *f) {
           MAX_FRAMES, DEFAULT_PROGRAM, fp3_integrator_names(), DEFAULT_FMAX);
 }
 
-int fp3_cmd_frames(int argc, char **argv) {
-  if (fp3_args_have_model(argc, argv)) return fp3_cmd_frames_model(argc, argv);
-  const char *scene_path = NULL, *program = DEFAULT_PROGRAM, *engine_name = "rtl";
-  unsigned long long ships = 1000, frames = 600;
-  uint64_t seed = 1;
-  double fmax = DEFAULT_FMAX;
-  int json = 0;
-  const fp3_integrator *ig = fp3_integrator_find("rk4");
-  fp3_frames_opts o = {0, 1, 0, 0, 4.0f, 0};
+int fp3_parse_frames(int argc, char **argv, fp3_frames_args *a) {
+  a->scene_path = NULL;
+  a->program = DEFAULT_PROGRAM;
+  a->engine_name = "rtl";
+  a->ships = 1000;
+  a->seed = 1;
+  a->fmax = DEFAULT_FMAX;
+  a->json = 0;
+  a->ig = fp3_integrator_find("rk4");
+  a->opts = (fp3_frames_opts){.frames = 600, .rest_skip = 1, .wake_frame = 0, .wake_count = 0,
+                              .wake_vinf = 4.0f, .progress = 0};
+  fp3_frames_opts *o = &a->opts;
+  unsigned long long frames = 600;
   for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v = NULL;
+    const char *arg = argv[i], *v = NULL;
     int r;
     char *end;
-    if (fp3_is_help(a)) {
-      usage(stdout);
-      return 0;
+    if (fp3_is_help(arg)) {
+      return FP3_ARGS_HELP;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--scene", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      scene_path = v;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->scene_path = v;
     } else if ((r = fp3_opt_count(argc, argv, &i, "frames", "--harbour", 1, MAX_SHIPS,
-                                  "ships", &ships)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-    } else if ((r = fp3_opt_seed(argc, argv, &i, "frames", &seed)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+                                  "ships", &a->ships)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+    } else if ((r = fp3_opt_seed(argc, argv, &i, "frames", &a->seed)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_count(argc, argv, &i, "frames", "--frames", 1, MAX_FRAMES,
                                   "frames", &frames)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0) return FP3_ARGS_BAD;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--program", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      program = v;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->program = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--integrator", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      if (!(ig = fp3_integrator_find(v))) {
+      if (r < 0) return FP3_ARGS_BAD;
+      if (!(a->ig = fp3_integrator_find(v))) {
         fprintf(stderr, "fp3 frames: unknown integrator '%s' (%s)\n", v, fp3_integrator_names());
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-    } else if (strcmp(a, "--no-rest-skip") == 0) {
-      o.rest_skip = 0;
+    } else if (strcmp(arg, "--no-rest-skip") == 0) {
+      o->rest_skip = 0;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0) return FP3_ARGS_BAD;
       unsigned long long wf, wk;
       if (fp3_parse_pair(v, 1, MAX_FRAMES, 1, MAX_SHIPS, NULL, &wf, &wk)) {
         fprintf(stderr, "fp3 frames: --wake '%s': want FRAME:COUNT, FRAME 1..%u, COUNT 1..%u\n",
                 v, MAX_FRAMES, MAX_SHIPS);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-      o.wake_frame = (uint32_t)wf;
-      o.wake_count = wk;
+      o->wake_frame = (uint32_t)wf;
+      o->wake_count = wk;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--wake-vinf", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      o.wake_vinf = strtof(v, &end);
-      if (*end || !isfinite(o.wake_vinf)) {
+      if (r < 0) return FP3_ARGS_BAD;
+      o->wake_vinf = strtof(v, &end);
+      if (*end || !isfinite(o->wake_vinf)) {
         fprintf(stderr, "fp3 frames: --wake-vinf '%s': not a finite number\n", v);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--engine", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0) return FP3_ARGS_BAD;
       if (strcmp(v, "rtl") && strcmp(v, "iss")) {
         fprintf(stderr, "fp3 frames: --engine '%s': rtl or iss\n", v);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-      engine_name = v;
+      a->engine_name = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "frames", "--fmax", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      fmax = strtod(v, &end);
-      if (*end || !(fmax > 0.0) || !isfinite(fmax)) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->fmax = strtod(v, &end);
+      if (*end || !(a->fmax > 0.0) || !isfinite(a->fmax)) {
         fprintf(stderr, "fp3 frames: --fmax '%s': a positive clock in MHz\n", v);
-        return EXIT_USAGE;
+        return FP3_ARGS_BAD;
       }
-    } else if (strcmp(a, "--json") == 0) {
-      json = 1;
+    } else if (strcmp(arg, "--json") == 0) {
+      a->json = 1;
     } else {
-      fprintf(stderr, "fp3 frames: unknown argument '%s' (see --help)\n", a);
-      return EXIT_USAGE;
+      fprintf(stderr, "fp3 frames: unknown argument '%s' (see --help)\n", arg);
+      return FP3_ARGS_BAD;
     }
   }
-  o.frames = (uint32_t)frames;
-  o.progress = !json && frames >= 100;
+  o->frames = (uint32_t)frames;
+  o->progress = !a->json && frames >= 100;
   /* Every frame is a START, which runs the program's prologue again; the
    * compensated ship programs' prologue sets the Kahan compensations to
    * 0 (programs/ship_rk4comp.s), so frame by frame they integrate
    * another recurrence than their golden model, which carries them.  A
    * model scene's compiled rk4comp keeps them in the bank. */
-  if (strstr(ig->name, "comp")) {
+  if (strstr(a->ig->name, "comp")) {
     fprintf(stderr, "fp3 frames: integrator %s on a ship program: the program's prologue, "
             "which every frame's START runs, restarts its Kahan compensations at 0, so frame "
             "by frame it is not the integration its golden model carries on; a model scene "
             "keeps the compensations in the register bank (fp3 frames --scene "
-            "scenes/fleet.scene --integrator rk4comp)\n", ig->name);
-    return EXIT_USAGE;
+            "scenes/fleet.scene --integrator rk4comp)\n", a->ig->name);
+    return FP3_ARGS_BAD;
   }
+  return FP3_ARGS_RUN;
+}
+
+/* The run step: the scene, the program, the engine, the frames, the report. */
+static int run_frames(const fp3_frames_args *a) {
+  const char *scene_path = a->scene_path, *program = a->program, *engine_name = a->engine_name;
+  const unsigned long long ships = a->ships;
+  const uint64_t seed = a->seed;
+  const double fmax = a->fmax;
+  const int json = a->json;
+  const fp3_integrator *ig = a->ig;
+  const fp3_frames_opts o = a->opts;
 
   fp3_scene sc;
   char msg[512];
@@ -230,4 +245,11 @@ int fp3_cmd_frames(int argc, char **argv) {
       printf("  golden model: bit-identical, v and s of every object after every frame\n");
   }
   return pass ? 0 : EXIT_FAIL;
+}
+
+int fp3_cmd_frames(int argc, char **argv) {
+  if (fp3_args_have_model(argc, argv)) return fp3_cmd_frames_model(argc, argv);
+  fp3_frames_args a;
+  int r = fp3_parse_frames(argc, argv, &a);
+  return r == FP3_ARGS_RUN ? run_frames(&a) : fp3_args_exit(r, usage);
 }

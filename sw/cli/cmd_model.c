@@ -21,7 +21,9 @@
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
-#define DEFAULT_STEPS 1000u
+#define DEFAULT_STEPS 1000u  /* fp3 run --model: integrations          */
+#define DEFAULT_FRAMES 600u  /* fp3 frames with a model scene: 10 s      */
+#define DEFAULT_POINTS 6u    /* fp3 bench --model: step sizes            */
 /* object-steps x state variables the bit-for-bit check keeps */
 #define MAX_CHECKED (1u << 26)
 #define MAX_MODEL_OBJECTS 1000000u /* --objects */
@@ -77,30 +79,12 @@ static void usage(FILE *f) {
           fp3_model_integrators(), DEFAULT_STEPS);
 }
 
-typedef struct margs {
-  const char *file, *integ, *engine, *out;
-  const char *scene;   /* --scene, or compile's positional SCENE */
-  size_t objects;      /* --objects (0: none)                     */
-  uint64_t seed;       /* --seed                                  */
-  int literal, json, seeded;
-  int no_rest_skip;    /* frames: --no-rest-skip                  */
-  int integ_given;     /* --integrator given                      */
-  double t_end;        /* bench: --t-end (0: 600 h)               */
-  unsigned points;     /* bench: --points                         */
-  const char *stab;    /* bench: --stability FILE.csv             */
-  const char *long_out; /* bench: --long FILE.csv                 */
-  uint32_t long_steps; /* bench: --long-steps                     */
-  fpref_mode mode;     /* --round, --ftz (model scenes)           */
-  uint32_t steps;
-  const char *set[2 * FP3_MODEL_MAX_VARS + 8];
-  int nset;
-} margs;
-
-static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
+int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   memset(a, 0, sizeof *a);
   a->integ = "rk4";
   a->engine = "rtl";
-  a->steps = DEFAULT_STEPS;
+  a->steps = strcmp(cmd, "frames") == 0 ? DEFAULT_FRAMES : DEFAULT_STEPS;
+  a->points = DEFAULT_POINTS;
   a->seed = 1;
   a->mode = FPREF_IEEE;
   a->long_steps = 100000u;
@@ -108,90 +92,86 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
     const char *v;
     unsigned long long k;
     int r;
-    if (fp3_is_help(argv[i])) {
-      usage(stdout);
-      return 1;
-    }
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
     if ((r = fp3_opt_value(argc, argv, &i, cmd, "--model", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->file = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--integrator", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->integ = v;
       a->integ_given = 1;
     } else if (strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
         fprintf(stderr, "fp3 %s: --engine wants rtl or iss, got '%s'\n", cmd, v);
-        return -1;
+        return FP3_ARGS_BAD;
       }
       a->engine = v;
     } else if (strcmp(cmd, "run") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--steps", 1, UINT32_MAX,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "frames") != 0 && strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       if (a->nset == (int)(sizeof a->set / sizeof a->set[0])) {
         fprintf(stderr, "fp3 %s: too many --set\n", cmd);
-        return -1;
+        return FP3_ARGS_BAD;
       }
       a->set[a->nset++] = v;
     } else if (strcmp(cmd, "run") != 0 && strcmp(cmd, "frames") != 0 &&
-               ((r = fp3_opt_value(argc, argv, &i, cmd, "-o", &v)) != 0 ||
-                (r = fp3_opt_value(argc, argv, &i, cmd, "--output", &v)) != 0)) {
-      if (r < 0) return -1;
+               (r = fp3_opt_output(argc, argv, &i, cmd, &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
       a->out = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--scene", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->scene = v;
     } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
       a->scene = argv[i];
     } else if (strcmp(cmd, "run") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--objects", 1, MAX_MODEL_OBJECTS,
                                   "objects", &k)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->objects = (size_t)k;
     } else if (strcmp(cmd, "run") == 0 && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->seeded = 1;
     } else if (strcmp(cmd, "run") == 0 &&
                (r = fp3_opt_round(argc, argv, &i, cmd, &a->mode)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--frames", 1, 10000000u, "frames",
                                   &k)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--t-end", &v)) != 0) {
       char *end;
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->t_end = strtod(v, &end);
       if (*end || !(a->t_end > 0.0) || !isfinite(a->t_end)) {
         fprintf(stderr, "fp3 %s: --t-end '%s': a positive time\n", cmd, v);
-        return -1;
+        return FP3_ARGS_BAD;
       }
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--long-steps", 2, 10000000u,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->long_steps = (uint32_t)k;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--long", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->long_out = v;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--stability", &v)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->stab = v;
     } else if (strcmp(cmd, "bench") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--points", 1, 24, "step sizes",
                                   &k)) != 0) {
-      if (r < 0) return -1;
+      if (r < 0) return FP3_ARGS_BAD;
       a->points = (unsigned)k;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
       a->no_rest_skip = 1;
@@ -206,39 +186,43 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
     } else {
       fprintf(stderr, "fp3 %s: '%s' does not go with --model (see fp3 %s --model x --help)\n",
               cmd, argv[i], cmd);
-      return -1;
+      return FP3_ARGS_BAD;
     }
   }
   if (strcmp(cmd, "frames") == 0 && !a->scene) {
     fprintf(stderr, "fp3 frames: a model needs --scene MODEL_SCENE\n");
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if (a->scene && a->file) {
     fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if (!a->scene && (!a->file || !a->file[0])) {
     fprintf(stderr, "fp3 %s: --model needs a file\n", cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if (a->seeded && (!a->objects || a->scene)) {
     fprintf(stderr, "fp3 %s: --seed goes with --model FILE --objects N\n", cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if ((a->mode.round != FPREF_RNE || a->mode.ftz) && !a->scene && !a->objects) {
     fprintf(stderr, "fp3 %s: --round and --ftz go with a model scene or --objects N\n", cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if (!fpenv_supported(a->mode)) {
     fprintf(stderr, "fp3 %s: this host cannot run the golden model in that mode\n", cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
   if (a->scene && a->nset) {
     fprintf(stderr, "fp3 %s: --set does not go with a scene: its objects give the values\n",
             cmd);
-    return -1;
+    return FP3_ARGS_BAD;
   }
-  return 0;
+  if (strcmp(cmd, "bench") == 0 && a->scene) {
+    fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
+    return FP3_ARGS_BAD;
+  }
+  return FP3_ARGS_RUN;
 }
 
 /* Compile the model for a's integrator (folded: params zero in this
@@ -247,8 +231,9 @@ static int parse_args(int argc, char **argv, const char *cmd, margs *a) {
  * and `fp3 compile`): a program that needs more than hw's NUM_REGS is
  * compiled for the fewest that run it (fp3_compile_opts.max_regs); else
  * it is refused with the numbers. */
-static fp3_compiled *compile_for(const fp3_model *m, const margs *a, const unsigned char *zero,
-                                 const fp3_config *hw, int grow, const char *cmd) {
+static fp3_compiled *compile_for(const fp3_model *m, const fp3_model_args *a,
+                                 const unsigned char *zero, const fp3_config *hw, int grow,
+                                 const char *cmd) {
   fp3_compile_opts o;
   if (hw) fp3_compile_opts_for(&o, hw); /* the engine's build */
   else fp3_compile_defaults(&o);
@@ -303,9 +288,9 @@ static void scene_zero(const fp3_mscene *sc, unsigned char *zero) {
 }
 
 int fp3_cmd_compile_model(int argc, char **argv) {
-  margs a;
-  int r = parse_args(argc, argv, "compile", &a);
-  if (r) return r > 0 ? 0 : EXIT_USAGE;
+  fp3_model_args a;
+  int r = fp3_parse_model(argc, argv, "compile", &a);
+  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
   fp3_model *m = NULL;
   char msg[512];
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
@@ -414,7 +399,7 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
 
 /* Every --set into in[] and y0[]; each param, h and state variable must
  * be given (else FILE:LINE of its declaration), h > 0.  0 or -1. */
-static int gather_values(const fp3_model *m, const margs *a, float *in, float *y0) {
+int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0) {
   unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
   for (int i = 0; i < a->nset; i++)
     if (apply_set(m, a->set[i], in, y0, given)) return -1;
@@ -434,12 +419,12 @@ static int gather_values(const fp3_model *m, const margs *a, float *in, float *y
   return 0;
 }
 
-static int run_many(const margs *a);
+static int run_many(const fp3_model_args *a);
 
 int fp3_cmd_run_model(int argc, char **argv) {
-  margs a;
-  int r = parse_args(argc, argv, "run", &a);
-  if (r) return r > 0 ? 0 : EXIT_USAGE;
+  fp3_model_args a;
+  int r = fp3_parse_model(argc, argv, "run", &a);
+  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
   if (a.scene || a.objects) return run_many(&a);
   fp3_model *m = malloc(sizeof *m);
   char msg[512];
@@ -454,7 +439,7 @@ int fp3_cmd_run_model(int argc, char **argv) {
     goto out;
   }
   float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
-  if (gather_values(m, &a, in, y0)) goto out;
+  if (fp3_model_args_values(m, &a, in, y0)) goto out;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
   e = fp3_engine_new(a.engine);
@@ -646,7 +631,7 @@ out:
 
 /* The scene of a: read from a->scene, or --objects N generated from the
  * --set values.  0, or the exit status of the failure (message printed). */
-static int many_scene(const margs *a, fp3_mscene *sc) {
+static int many_scene(const fp3_model_args *a, fp3_mscene *sc) {
   char msg[512];
   if (a->scene) {
     if (fp3_mscene_read(a->scene, sc, msg, sizeof msg)) {
@@ -669,7 +654,7 @@ static int many_scene(const margs *a, fp3_mscene *sc) {
     free(m);
     return EXIT_USAGE;
   }
-  if (gather_values(m, a, in, y0)) {
+  if (fp3_model_args_values(m, a, in, y0)) {
     free(m);
     return EXIT_USAGE;
   }
@@ -680,7 +665,7 @@ static int many_scene(const margs *a, fp3_mscene *sc) {
   return 0;
 }
 
-static int run_many(const margs *a) {
+static int run_many(const fp3_model_args *a) {
   fp3_mscene sc;
   int rc = many_scene(a, &sc);
   if (rc) return rc;
@@ -861,10 +846,9 @@ out:
 /* ---- frames ------------------------------------------------------------------ */
 
 int fp3_cmd_frames_model(int argc, char **argv) {
-  margs a;
-  int r = parse_args(argc, argv, "frames", &a);
-  if (r) return r > 0 ? 0 : EXIT_USAGE;
-  if (a.steps == DEFAULT_STEPS) a.steps = 600;
+  fp3_model_args a;
+  int r = fp3_parse_model(argc, argv, "frames", &a);
+  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
   fp3_mscene sc;
   char msg[512];
   if (fp3_mscene_read(a.scene, &sc, msg, sizeof msg)) {
@@ -1046,14 +1030,9 @@ static double stability_bound(fp3_compiled *c, const fp3_model *m, const float *
 }
 
 int fp3_cmd_bench_model(int argc, char **argv) {
-  margs a;
-  int r = parse_args(argc, argv, "bench", &a);
-  if (r) return r > 0 ? 0 : EXIT_USAGE;
-  if (a.scene) {
-    fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
-    return EXIT_USAGE;
-  }
-  if (!a.points) a.points = 6;
+  fp3_model_args a;
+  int r = fp3_parse_model(argc, argv, "bench", &a);
+  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
   fp3_model *m = malloc(sizeof *m);
   char msg[512];
   if (!m) return EXIT_FAIL;
@@ -1069,7 +1048,7 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     fprintf(stderr, "fp3 bench: %s\n", msg);
     goto out;
   }
-  if (gather_values(m, &a, in, y0)) goto out;
+  if (fp3_model_args_values(m, &a, in, y0)) goto out;
   const double t_end = a.t_end > 0.0 ? a.t_end : 600.0 * (double)in[0];
   rc = EXIT_FAIL;
   e = fp3_engine_new(a.engine);
@@ -1103,7 +1082,7 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     if (!a.integ_given && ((strcmp(ig, "symeuler") == 0 && !fp3_model_split(m)) ||
                            (strcmp(ig, "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL))))
       continue;
-    margs ai = a;
+    fp3_model_args ai = a;
     ai.integ = ig;
     const int iss = strcmp(a.engine, "iss") == 0;
     fp3_compiled *c = compile_for(m, &ai, zero, &e->config, iss, "bench");

@@ -8,6 +8,47 @@
 #ifndef FP3_CMD_MODEL_H
 #define FP3_CMD_MODEL_H
 
+#include <stddef.h>
+#include <stdint.h>
+
+#include "fpref.h"
+#include "model.h"
+
+/* The options of the model forms of run, compile, frames and bench
+ * (fp3 run --model x --help); each command takes its own subset. */
+typedef struct fp3_model_args {
+  const char *file, *integ, *engine, *out;
+  const char *scene;   /* --scene, or compile's positional SCENE        */
+  size_t objects;      /* run: --objects (0: none)                      */
+  uint64_t seed;       /* run: --seed                                   */
+  int literal, json, seeded;
+  int no_rest_skip;    /* frames: --no-rest-skip                        */
+  int integ_given;     /* --integrator given                            */
+  double t_end;        /* bench: --t-end (0: 600 h)                     */
+  unsigned points;     /* bench: --points (default 6)                   */
+  const char *stab;    /* bench: --stability FILE.csv                   */
+  const char *long_out; /* bench: --long FILE.csv                       */
+  uint32_t long_steps; /* bench: --long-steps                           */
+  fpref_mode mode;     /* run: --round, --ftz (model scenes, --objects) */
+  uint32_t steps;      /* run: --steps (default 1000); frames: --frames
+                          (default 600)                                 */
+  const char *set[2 * FP3_MODEL_MAX_VARS + 8]; /* --set NAME=VALUE      */
+  int nset;
+} fp3_model_args;
+
+/* The parse step of the model form of command cmd ("run", "compile",
+ * "frames" or "bench"): FP3_ARGS_RUN with *a filled, FP3_ARGS_HELP, or
+ * FP3_ARGS_BAD with the message on stderr (cliopt.h).  The --set values
+ * are kept as text: they name the model's params and state variables,
+ * which only the model file gives (fp3_model_args_values). */
+int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a);
+
+/* Every --set of a into in[] (params, in[0] the step h) and y0[] (initial
+ * state) of model m.  Each param, h and state variable must be given
+ * (else "FILE:LINE: param 'k' has no value"), each value finite, h > 0.
+ * 0, or -1 with the message on stderr. */
+int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0);
+
 /* 1 if argv[1..argc) holds --model (or --model=FILE): the command is for a
  * model file. */
 int fp3_args_have_model(int argc, char **argv);

@@ -18,6 +18,7 @@
 
 #include "asm.h"
 #include "cliopt.h"
+#include "cmd_asm.h"
 #include "cmd_tbgen.h"
 #include "engine.h"
 #include "fp3_isa.h"
@@ -57,32 +58,6 @@ static void usage_tbgen(FILE *f) {
           FP3_DEFAULT_NUM_REGS, TBGEN_MAX_CHECK);
 }
 
-
-static int set_scene(fp3_ship_params *p, const char *arg) {
-  static const char *const names[] = {"T", "C", "m", "h", "v0", "s0"};
-  float *slots[] = {&p->T, &p->C, &p->m, &p->h, &p->v0, &p->s0};
-  const char *eq = strchr(arg, '=');
-  if (!eq || eq == arg) {
-    fprintf(stderr, "fp3 tbgen: --set wants NAME=VALUE, got '%s'\n", arg);
-    return -1;
-  }
-  size_t nl = (size_t)(eq - arg);
-  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-    if (strlen(names[i]) != nl || strncmp(arg, names[i], nl) != 0) continue;
-    char *end;
-    float f = strtof(eq + 1, &end);
-    if (end == eq + 1 || *end != '\0') {
-      fprintf(stderr, "fp3 tbgen: --set %s: '%s' is not a number\n", names[i],
-              eq + 1);
-      return -1;
-    }
-    *slots[i] = f;
-    return 0;
-  }
-  fprintf(stderr, "fp3 tbgen: unknown parameter '%.*s' in --set (T C m h v0 s0)\n",
-          (int)nl, arg);
-  return -1;
-}
 
 /* mkdir -p */
 static int make_dirs(const char *dir) {
@@ -132,55 +107,61 @@ static int close_out(FILE *f, const char *path) {
   return 0;
 }
 
-int fp3_cmd_tbgen(int argc, char **argv) {
-  const char *in = NULL, *dir = NULL;
-  uint32_t steps = 4;
-  int use_rtl = 1;
-  fpref_mode mode = FPREF_IEEE;
-  fp3_ship_params p;
-  fp3_ship_default(&p);
+int fp3_parse_tbgen(int argc, char **argv, fp3_tbgen_args *a) {
+  a->in = a->dir = NULL;
+  a->steps = 4;
+  a->use_rtl = 1;
+  a->mode = FPREF_IEEE;
+  fp3_ship_default(&a->p);
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
     int r;
-    if (fp3_is_help(argv[i])) {
-      usage_tbgen(stdout);
-      return 0;
-    }
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
     if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "-o", &v)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      dir = v;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->dir = v;
     } else if ((r = fp3_opt_count(argc, argv, &i, "tbgen", "--steps", 1, TBGEN_MAX_CHECK,
                                   "integrations", &k)) != 0) {
-      if (r < 0) return EXIT_USAGE;
-      steps = (uint32_t)k;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->steps = (uint32_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--set", &v)) != 0) {
-      if (r < 0 || set_scene(&p, v)) return EXIT_USAGE;
-    } else if ((r = fp3_opt_round(argc, argv, &i, "tbgen", &mode)) != 0) {
-      if (r < 0) return EXIT_USAGE;
+      if (r < 0 || fp3_ship_set("tbgen", &a->p, v)) return FP3_ARGS_BAD;
+    } else if ((r = fp3_opt_round(argc, argv, &i, "tbgen", &a->mode)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
     } else if (strcmp(argv[i], "--ftz") == 0) {
-      mode.ftz = 1;
+      a->mode.ftz = 1;
     } else if (strcmp(argv[i], "--no-rtl") == 0) {
-      use_rtl = 0;
-    } else if (fp3_opt_positional("tbgen", "program", argv[i], &in)) {
-      return EXIT_USAGE;
+      a->use_rtl = 0;
+    } else if (fp3_opt_positional("tbgen", "program", argv[i], &a->in)) {
+      return FP3_ARGS_BAD;
     }
   }
-  if (!in || !dir) {
+  if (!a->in || !a->dir) {
     fprintf(stderr, "fp3 tbgen: %s (see fp3 tbgen --help)\n",
-            !in ? "no program" : "no output directory (-o DIR)");
-    return EXIT_USAGE;
+            !a->in ? "no program" : "no output directory (-o DIR)");
+    return FP3_ARGS_BAD;
   }
   char msg[512];
-  if (fp3_ship_validate(&p, msg, sizeof msg)) {
+  if (fp3_ship_validate(&a->p, msg, sizeof msg)) {
     fprintf(stderr, "fp3 tbgen: %s\n", msg);
-    return EXIT_USAGE;
+    return FP3_ARGS_BAD;
   }
+  return FP3_ARGS_RUN;
+}
+
+/* The run step: assemble, run the ISS (and the RTL), write the files. */
+static int run_tbgen(const fp3_tbgen_args *a) {
+  const char *in = a->in, *dir = a->dir;
+  const uint32_t steps = a->steps;
+  const int use_rtl = a->use_rtl;
+  const fpref_mode mode = a->mode;
+  const fp3_ship_params p = a->p;
+  char msg[512];
   fp3_image img;
   char *errs = NULL;
   if (fp3_asm_file(in, &img, &errs) != 0) {
-    fputs(errs && *errs ? errs : "assembly failed\n", stderr);
-    if (errs && *errs && errs[strlen(errs) - 1] != '\n') fputc('\n', stderr);
+    fp3_print_asm_errors(errs);
     free(errs);
     return EXIT_USAGE;
   }
@@ -333,4 +314,10 @@ out:
   free(rec.val[0]);
   free(rec.val[1]);
   return rc;
+}
+
+int fp3_cmd_tbgen(int argc, char **argv) {
+  fp3_tbgen_args a;
+  int r = fp3_parse_tbgen(argc, argv, &a);
+  return r == FP3_ARGS_RUN ? run_tbgen(&a) : fp3_args_exit(r, usage_tbgen);
 }

@@ -48,6 +48,27 @@
  * memory for them is sized for this). */
 #define TBGEN_MAX_CHECK 100000u
 
+#include <stdint.h>
+
+#include "fpref.h"
+#include "golden.h"
+
+/* `fp3 tbgen`'s options (fp3 tbgen --help). */
+typedef struct fp3_tbgen_args {
+  const char *in;        /* the program (required)                         */
+  const char *dir;       /* -o DIR (required)                              */
+  uint32_t steps;        /* --steps, 1..TBGEN_MAX_CHECK (default 4)        */
+  int use_rtl;           /* 0: --no-rtl                                    */
+  fpref_mode mode;       /* --round, --ftz                                 */
+  fp3_ship_params p;     /* the scene, --set values applied and validated  */
+} fp3_tbgen_args;
+
+/* The parse step of `fp3 tbgen`: FP3_ARGS_RUN with *a filled,
+ * FP3_ARGS_HELP, or FP3_ARGS_BAD with the message on stderr (cliopt.h). */
+int fp3_parse_tbgen(int argc, char **argv, fp3_tbgen_args *a);
+
+/* argv[0] is "tbgen".  Exit status: 0 written, 1 a run or a write failed,
+ * 2 bad arguments or program (a message on stderr). */
 int fp3_cmd_tbgen(int argc, char **argv);
 
 #endif /* FP3_CMD_TBGEN_H */
