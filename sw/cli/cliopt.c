@@ -95,7 +95,11 @@ int fp3_opt_seed(int argc, char **argv, int *i, const char *cmd, uint64_t *out) 
   return r;
 }
 
-int fp3_opt_round(int argc, char **argv, int *i, const char *cmd, fpref_mode *mode) {
+int fp3_opt_mode(int argc, char **argv, int *i, const char *cmd, fpref_mode *mode) {
+  if (strcmp(argv[*i], "--ftz") == 0) {
+    mode->ftz = 1;
+    return 1;
+  }
   const char *v;
   int r = fp3_opt_value(argc, argv, i, cmd, "--round", &v);
   if (r <= 0) return r;

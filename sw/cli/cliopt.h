@@ -66,9 +66,10 @@ int fp3_opt_count(int argc, char **argv, int *i, const char *cmd, const char *na
  * integer ..."). */
 int fp3_opt_seed(int argc, char **argv, int *i, const char *cmd, uint64_t *out);
 
-/* --round rne|rtz: sets mode->round; 1, 0, -1 as fp3_opt_count ("fp3
- * CMD: unknown rounding 'V' (rne or rtz)"). */
-int fp3_opt_round(int argc, char **argv, int *i, const char *cmd, fpref_mode *mode);
+/* The arithmetic mode's options: --round rne|rtz sets mode->round,
+ * --ftz sets mode->ftz (flush subnormals to zero); 1, 0, -1 as
+ * fp3_opt_count ("fp3 CMD: unknown rounding 'V' (rne or rtz)"). */
+int fp3_opt_mode(int argc, char **argv, int *i, const char *cmd, fpref_mode *mode);
 
 /* "A:B", two decimal counts, A in lo1..hi1 and B in lo2..hi2 (or B the
  * word `all`, if all is not NULL: *b = ULLONG_MAX).  0, or -1 (the

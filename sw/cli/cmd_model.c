@@ -139,7 +139,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       if (r < 0) return FP3_ARGS_BAD;
       a->seeded = 1;
     } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_round(argc, argv, &i, cmd, &a->mode)) != 0) {
+               (r = fp3_opt_mode(argc, argv, &i, cmd, &a->mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--frames", 1, 10000000u, "frames",
@@ -177,8 +177,6 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       a->no_rest_skip = 1;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--json") == 0) {
       a->json = 1;
-    } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--ftz") == 0) {
-      a->mode.ftz = 1;
     } else if (strcmp(argv[i], "--literal") == 0) {
       a->literal = 1;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--json") == 0) {

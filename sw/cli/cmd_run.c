@@ -337,10 +337,8 @@ int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->trace = v;
-    } else if ((r = fp3_opt_round(argc, argv, &i, "run", &a->mode)) != 0) {
+    } else if ((r = fp3_opt_mode(argc, argv, &i, "run", &a->mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
-    } else if (strcmp(argv[i], "--ftz") == 0) {
-      a->mode.ftz = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
       a->json = 1;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--integrator", &v)) != 0) {

@@ -127,10 +127,8 @@ int fp3_parse_tbgen(int argc, char **argv, fp3_tbgen_args *a) {
       a->steps = (uint32_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "tbgen", "--set", &v)) != 0) {
       if (r < 0 || fp3_ship_set("tbgen", &a->p, v)) return FP3_ARGS_BAD;
-    } else if ((r = fp3_opt_round(argc, argv, &i, "tbgen", &a->mode)) != 0) {
+    } else if ((r = fp3_opt_mode(argc, argv, &i, "tbgen", &a->mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
-    } else if (strcmp(argv[i], "--ftz") == 0) {
-      a->mode.ftz = 1;
     } else if (strcmp(argv[i], "--no-rtl") == 0) {
       a->use_rtl = 0;
     } else if (fp3_opt_positional("tbgen", "program", argv[i], &a->in)) {
