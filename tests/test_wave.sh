@@ -57,10 +57,17 @@ done < <(grep -E '^tb_fp3\.' sim/fp3.gtkw)
 # div/sqrt unit, which the ship programs do not use (the same cycles and
 # values): Icarus evaluates its cores every cycle, and a run takes about 15
 # times as long with them.  make wave above ran the default build.
+# tb_nodiv OUT NAME=VALUE...: compile the testbench with make wave's
+# command file, without the div/sqrt unit, and the parameters given.
+tb_nodiv() {
+  local out=$1 p args=(); shift
+  for p in HAS_DIV=0 HAS_SQRT=0 "$@"; do args+=("-Ptb_fp3.$p"); done
+  iverilog -g2005 -Wall -Irtl -y rtl -s tb_fp3 "${args[@]}" \
+    -c "$W/iverilog.cmd" -o "$out" sim/tb_fp3.v >"$out.log" 2>&1 \
+    && ok || { bad "iverilog HAS_DIV=0 HAS_SQRT=0 $*"; tail -5 "$out.log"; }
+}
 ND_VVP=$T/tb_nodiv.vvp
-iverilog -g2005 -Wall -Irtl -y rtl -s tb_fp3 -Ptb_fp3.HAS_DIV=0 -Ptb_fp3.HAS_SQRT=0 \
-  -c "$W/iverilog.cmd" -o "$ND_VVP" sim/tb_fp3.v >"$T/nodiv_iv.log" 2>&1 \
-  && ok || { bad "iverilog HAS_DIV=0 HAS_SQRT=0"; tail -5 "$T/nodiv_iv.log"; }
+tb_nodiv "$ND_VVP"
 VVP=(vvp -n "$ND_VVP")
 
 # ---- negative: a corrupted expected value makes it FAIL ------------------
@@ -120,10 +127,7 @@ has "$T/ctx.log" "^PASS: tb_fp3: 4 context(s) x 3 integrations, v and s bit-exac
 # ship programs do not use: Icarus evaluates its cores in every lane every
 # cycle (a run takes about 60 times as long with them). ----------------------
 LANES_VVP=$T/tb_lanes.vvp
-iverilog -g2005 -Wall -Irtl -y rtl -s tb_fp3 -Ptb_fp3.NUM_CONTEXTS=2 -Ptb_fp3.NUM_LANES=3 \
-  -Ptb_fp3.HAS_DIV=0 -Ptb_fp3.HAS_SQRT=0 \
-  -c "$W/iverilog.cmd" -o "$LANES_VVP" sim/tb_fp3.v >"$T/lanes_iv.log" 2>&1 \
-  && ok || { bad "iverilog NUM_LANES=3"; tail -5 "$T/lanes_iv.log"; }
+tb_nodiv "$LANES_VVP" NUM_CONTEXTS=2 NUM_LANES=3
 vvp -n "$LANES_VVP" +dir="$W" +contexts=2 >"$T/lanes.log" 2>&1 || bad "NUM_LANES=3: vvp failed"
 has "$T/lanes.log" "^PASS: tb_fp3: 2 context(s) x 3 integrations, v and s bit-exact after each (36 values).*3 lane(s) per context" \
   "NUM_LANES=3" && ok
