@@ -10,18 +10,16 @@
 //               rate, FMAX_PIPE): the candidates exclude the context
 //               decided in the last cycle (dec_q) and the one granted
 //               (last_q); the pick is registered as the decision, which is
-//               the grant of the next cycle, and the position moves then.
+//               the grant of the next cycle; the position moves with the
+//               decision.
 //
 // Properties, for every context f_c (a free constant):
 //   F1  the grant is a requester (a candidate), at most one per cycle;
 //   F2  fairness: a context that keeps requesting (its request, not masked
 //       as the last grant or decision, stays high until it is granted) is
 //       granted within BOUND cycles, counted from its first cycle of
-//       request: N for STAGED = 0; 2N - 3 (N >= 3) for STAGED = 1, where
-//       the position moves a cycle after the decision, so the next
-//       decision starts from the old position and can go to a context
-//       behind the one just decided (proved tight: 2N - 4 fails, a
-//       counterexample for N = 5 and 8; formal/rr_arbiter.sby);
+//       request: N in both disciplines (tight for STAGED = 1: N - 1
+//       fails, a counterexample for N = 8; formal/rr_arbiter.sby);
 //   C1  (cover) a grant after exactly N - 1 cycles of waiting, and a grant
 //       while others request too.
 // The arbiter's own assertions (rtl/fp3_rr_arbiter.v) are proved with
@@ -77,8 +75,8 @@ module fp3_rr_fair #(
         end
       end
       assign arb_req = cand;
-      assign take    = dec_any_q;
-      assign taken   = dec_q;
+      assign take    = |cand;
+      assign taken   = pick;
       assign granted = dec_q;
       assign masked  = last_q | dec_q;
       // F1: the decision was a candidate when it was made

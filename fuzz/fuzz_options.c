@@ -3,7 +3,8 @@
  * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
  * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
  * fp3_parse_run, fp3_parse_compile, fp3_parse_configure,
- * fp3_parse_frames, fp3_parse_bench, fp3_parse_tbgen and, for the model
+ * fp3_parse_frames, fp3_parse_bench, fp3_parse_tbgen, fp3_parse_testfloat
+ * and, for the model
  * forms of run, compile, frames and bench, fp3_parse_model, with the
  * option-value parsers of sw/cli/cliopt.c they share.  The run steps
  * (files, engines) are never called.
@@ -39,6 +40,7 @@
 #include "cmd_model.h"
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
+#include "cmd_testfloat.h"
 #include "fuzz_common.h"
 #include "model.h"
 
@@ -175,6 +177,14 @@ static void parse_disasm(int argc, char **argv) {
   check_str("disasm", a.in, 0);
 }
 
+static void parse_testfloat(int argc, char **argv) {
+  fp3_testfloat_args a;
+  if (fp3_parse_testfloat(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.path) fail("testfloat", "no vector file");
+  if ((unsigned)a.op > TESTFLOAT_SQRT) fail("testfloat", "an operation out of range");
+  check_str("testfloat", a.path, 0);
+}
+
 static void parse_compile(int argc, char **argv) {
   fp3_compile_args a;
   if (fp3_parse_compile(argc, argv, &a) != FP3_ARGS_RUN) return;
@@ -207,7 +217,8 @@ static int names_model(int argc, char **argv) {
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   static const char *const cmds[] = {"asm",    "disasm", "run",   "compile",
-                                     "configure", "frames", "bench", "tbgen"};
+                                     "configure", "frames", "bench", "tbgen",
+                                     "testfloat"};
   const size_t ncmds = sizeof cmds / sizeof cmds[0];
   char *text = fuzz_strdup(data, size);
   char *argv[MAX_ARGS + 1];
@@ -246,6 +257,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   else if (strcmp(cmd, "configure") == 0) parse_configure(argc, argv);
   else if (strcmp(cmd, "frames") == 0) parse_frames(argc, argv);
   else if (strcmp(cmd, "bench") == 0) parse_bench(argc, argv);
+  else if (strcmp(cmd, "testfloat") == 0) parse_testfloat(argc, argv);
   else parse_tbgen(argc, argv);
   free(text);
   return 0;

@@ -114,8 +114,10 @@ FPU_TEST_LIBS := $(foreach m,$(FPU_MODELS_ALL),$(call fpu_model_lib,$(m))) \
 
 # C sources of this unit, compiled for the test program (with sanitizers)
 # and for the benchmark (without).
-FPU_TEST_SRC := tests/test_fpu.c sw/ref/fpref.c sw/engine/testfloat.c
-FPU_TEST_HDR := sw/ref/fpref.h sw/isa/fp3_isa.h sw/engine/testfloat.h sim/fpu_model.h
+FPU_TEST_SRC := tests/test_fpu.c sw/ref/fpref.c sw/engine/testfloat.c sw/cli/cmd_testfloat.c \
+                sw/cli/cliopt.c
+FPU_TEST_HDR := sw/ref/fpref.h sw/isa/fp3_isa.h sw/engine/testfloat.h sw/cli/cmd_testfloat.h \
+                sw/cli/cliopt.h sim/fpu_model.h
 
 $(FPU_DIR)/san/%.o: %.c $(FPU_TEST_HDR) | $(SETUP_STAMP)
 	@mkdir -p $(dir $@)

@@ -28,8 +28,8 @@
 //       of its own.  The context decided in the last cycle and the one
 //       granted before it are no candidates (the ready step heard of
 //       neither when it made ready_i), so a context is granted at most
-//       every third cycle.  The round-robin position moves with the grant,
-//       a cycle after the decision.
+//       every third cycle.  The round-robin position moves with the
+//       decision.
 //   g_pick0 / g_pick2  PICK_STAGES = 2 registers the grant (the pick
 //       selects by copies of it, gpi_q, gpf_q, and picks the last heads'
 //       fields: the granted word stays in its slot for a cycle), picks the
@@ -151,9 +151,18 @@ module fp3_sched_issue #(
           dec_any_q <= |cand;
         end
       end
+      // The position moves with the decision, not a cycle later with the
+      // grant: the next decision starts after this one, so a waiting
+      // context is passed over at most once by each other context and is
+      // granted within NUM_CONTEXTS cycles (formal/rr_arbiter.sby,
+      // prove_staged_*).  Moving it with the grant would let the next
+      // decision start from the old position and go to a context behind
+      // the one just decided (2 NUM_CONTEXTS - 3 cycles in the worst
+      // case).  Its cost: the position register loads from the carry
+      // chain's pick, as dec_q does.
       assign arb_req   = cand;
-      assign arb_take  = dec_any_q;
-      assign arb_taken = dec_q;
+      assign arb_take  = |cand;
+      assign arb_taken = ipick;
       assign gone      = dec_q;     // the head leaves its queue
       assign grant     = dec_any_q;
     end else begin : g_grant_now

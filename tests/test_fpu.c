@@ -47,6 +47,7 @@
 #include "fp3_isa.h"
 #include "fpref.h"
 #include "../sim/fpu_model.h" /* relative: no -Isim needed */
+#include "cmd_testfloat.h"
 #include "testfloat.h"
 
 #define TESTFLOAT_DIR "../shared/testfloat"

@@ -35,7 +35,7 @@
 #include "cmd_model.h"
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
-#include "testfloat.h"
+#include "cmd_testfloat.h"
 
 #define EXIT_USAGE 2
 

@@ -17,7 +17,6 @@
 
 #define TF_BATCH 4096
 #define TF_LINE_MAX 256
-#define TF_MAX_PRINT 10
 
 /* Parse one hex field of 1..max_digits digits at *pp; skips leading blanks. */
 static int parse_hex(const char **pp, unsigned max_digits, uint32_t *v) {
@@ -191,89 +190,11 @@ int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
   return rc;
 }
 
-static void usage(FILE *f) {
-  fputs("usage: fp3 testfloat [--round rne|rtz] [--ftz] [--ref] OP FILE\n"
-        "  Run Berkeley TestFloat vectors (lines \"A B RESULT FLAGS\" in hex,\n"
-        "  \"A RESULT FLAGS\" for sqrt; gzip or plain) through the Verilated\n"
-        "  FP core of that configuration and compare results (any NaN\n"
-        "  matches any NaN) and flags exactly.\n"
-        "  OP               add, sub, mul, div or sqrt\n"
-        "  --round rne|rtz  rounding of the core (default rne)\n"
-        "  --ftz            the flush-to-zero core\n"
-        "  --ref            check the C reference (sw/fpref) instead\n"
-        "  --help           this text\n"
-        "Prints the first failures and \"N passed, M failed\"; exit status 0\n"
-        "when all passed, 1 when some failed, 2 on a usage or input error.\n",
-        f);
-}
-
-int fp3_cmd_testfloat(int argc, char **argv) {
-  fpref_mode mode = FPREF_IEEE;
-  int use_ref = 0;
-  const char *pos[2] = {NULL, NULL};
-  int npos = 0;
-
-  for (int i = 1; i < argc; i++) {
-    const char *s = argv[i];
-    if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
-      usage(stdout);
-      return 0;
-    } else if (strcmp(s, "--round") == 0 || strncmp(s, "--round=", 8) == 0) {
-      const char *v = s[7] == '=' ? s + 8 : (i + 1 < argc ? argv[++i] : "");
-      if (strcmp(v, "rne") == 0) {
-        mode.round = FPREF_RNE;
-      } else if (strcmp(v, "rtz") == 0) {
-        mode.round = FPREF_RTZ;
-      } else {
-        fprintf(stderr, "fp3 testfloat: bad rounding '%s'\n", v);
-        usage(stderr);
-        return 2;
-      }
-    } else if (strcmp(s, "--ftz") == 0) {
-      mode.ftz = 1;
-    } else if (strcmp(s, "--ref") == 0) {
-      use_ref = 1;
-    } else if (s[0] == '-' && s[1] != '\0') {
-      fprintf(stderr, "fp3 testfloat: unknown option '%s'\n", s);
-      usage(stderr);
-      return 2;
-    } else if (npos < 2) {
-      pos[npos++] = s;
-    } else {
-      fprintf(stderr, "fp3 testfloat: too many arguments\n");
-      usage(stderr);
-      return 2;
-    }
-  }
-  if (npos != 2) {
-    usage(stderr);
-    return 2;
-  }
-  int op = -1;
+int testfloat_op_parse(const char *name, testfloat_op *op) {
   for (int k = 0; k < TF_NUM_OPS; k++)
-    if (strcmp(pos[0], op_names[k]) == 0) op = k;
-  if (op < 0) {
-    fprintf(stderr, "fp3 testfloat: unknown operation '%s'\n", pos[0]);
-    usage(stderr);
-    return 2;
-  }
-
-  struct fpu_model *model = NULL;
-  if (!use_ref) {
-    model = fpu_model_new((int)mode.round, mode.ftz, 0, 0);
-    if (!model) {
-      fprintf(stderr, "fp3 testfloat: no core built for --round %s%s\n",
-              mode.round == FPREF_RTZ ? "rtz" : "rne", mode.ftz ? " --ftz" : "");
-      return 2;
+    if (strcmp(name, op_names[k]) == 0) {
+      *op = (testfloat_op)k;
+      return 0;
     }
-  }
-  testfloat_stats st;
-  int rc = testfloat_run(pos[1], (testfloat_op)op, mode, model, stdout,
-                         TF_MAX_PRINT, stderr, &st);
-  if (model) fpu_model_free(model);
-  if (rc != 0) return 2;
-  if (st.failed > TF_MAX_PRINT)
-    printf("... %lu more failures not shown\n", st.failed - TF_MAX_PRINT);
-  printf("%lu passed, %lu failed\n", st.passed, st.failed);
-  return st.failed ? 1 : 0;
+  return -1;
 }

@@ -42,10 +42,8 @@ int testfloat_run(const char *path, testfloat_op op, fpref_mode mode,
                   struct fpu_model *model, FILE *out, unsigned max_print,
                   FILE *err, testfloat_stats *st);
 
-/* CLI: fp3 testfloat [--round rne|rtz] [--ftz] [--ref] OP FILE
- * argv[0] is the subcommand name.  Prints the first failures and a closing
- * line "N passed, M failed".  Returns the exit status: 0 all passed, 1 some
- * failed, 2 usage or input error (0 for --help). */
-int fp3_cmd_testfloat(int argc, char **argv);
+/* The operation named `name` (add, sub, mul, div, sqrt) into *op: 0, or
+ * -1 for another name. */
+int testfloat_op_parse(const char *name, testfloat_op *op);
 
 #endif /* FP3_TESTFLOAT_H */
