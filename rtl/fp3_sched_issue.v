@@ -65,6 +65,14 @@
 //                     0, the one issuing now): it writes a register, which,
 //                     and its unit
 // Errors: none (PICK_STAGES other than 0 or 2 fails elaboration).
+//
+// Formal: formal/rr_arbiter.sby proves this module's grants and fairness
+// in both builds (formal/fp3_issue_fair.v).  The define
+// FP3_MUTANT_ISSUE_POS_LATE is a deliberately broken copy for the mutation
+// test (tests/test_formal_mutant.sh): with PICK_STAGES = 2 the arbiter's
+// position moves with the grant, a cycle after the decision, so a waiting
+// context can be passed over for up to 2 NUM_CONTEXTS - 3 cycles; the
+// fairness proof must fail.
 `default_nettype none
 module fp3_sched_issue #(
   parameter integer NUM_CONTEXTS = 1,
@@ -161,8 +169,13 @@ module fp3_sched_issue #(
       // case).  Its cost: the position register loads from the carry
       // chain's pick, as dec_q does.
       assign arb_req   = cand;
+`ifdef FP3_MUTANT_ISSUE_POS_LATE
+      assign arb_take  = dec_any_q;
+      assign arb_taken = dec_q;
+`else
       assign arb_take  = |cand;
       assign arb_taken = ipick;
+`endif
       assign gone      = dec_q;     // the head leaves its queue
       assign grant     = dec_any_q;
     end else begin : g_grant_now

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail.  Three broken copies, each of
+# test_formal_mutant.sh -- the proofs can fail.  Four broken copies, each of
 # which must FAIL its property set, and scripts/formal.sh must name the
 # counterexample trace (an existing VCD) and the failing assertion's
 # file:line in the repository:
@@ -7,6 +7,12 @@
 #                          (the round-robin position never moves, so a
 #                          context behind others that keep requesting
 #                          starves): the fairness or one-hot assertion
+#   rr_arbiter.sby:mutant_issue  rtl/fp3_sched_issue.v with
+#                          FP3_MUTANT_ISSUE_POS_LATE (PICK_STAGES = 2: the
+#                          position moves with the grant, a cycle after the
+#                          decision, so a waiting context is passed over for
+#                          up to 2 NUM_CONTEXTS - 3 cycles): the fairness
+#                          assertion of formal/fp3_issue_fair.v
 #   sched.sby:mutant       rtl/fp3_wb_tag.v with FP3_MUTANT_ANNOUNCE_EARLY
 #                          (the tag lines one stage short: every
 #                          write-back announced a cycle early, so the
@@ -42,5 +48,6 @@ check() {
 }
 
 check formal/rr_arbiter.sby:mutant 'f2_served_within_n|rr_taken_onehot'
+check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_issue_fair\.v:[0-9]+$'
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
