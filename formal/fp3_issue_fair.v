@@ -87,21 +87,15 @@ module fp3_issue_fair #(
   always @(*) assume (f_c < N);
   wire f_req = running_i && ready_i[f_c] && !masked[f_c];
   wire f_gnt = gone[f_c];
-  reg  [7:0] f_wait;           // cycles f_c has requested without a grant
-  reg        f_waiting;        // ... and it requested in the last cycle
-  always @(posedge clk_i) begin
-    if (rst_i || f_gnt || !f_req) begin
-      f_wait    <= 8'd0;
-      f_waiting <= 1'b0;
-    end else begin
-      f_wait    <= f_wait + 8'd1;
-      f_waiting <= 1'b1;
-    end
-  end
+  wire [7:0] f_wait;           // cycles f_c has requested without a grant
+  wire       f_waiting;        // ... and it requested in the last cycle
+  fp3_fair_wait #(.BOUND(BOUND)) u_wait (
+    .clk_i (clk_i), .rst_i (rst_i), .req_i (f_req), .gnt_i (f_gnt),
+    .wait_o (f_wait), .waiting_o (f_waiting)
+  );
   // It keeps requesting until the grant; a reset or the end of the run
   // (running_i low) ends the wait.
   always @(*) if (f_waiting && !rst_i && running_i) assume (ready_i[f_c]);
-  always @(*) if (!rst_i && f_req) f_served_within_bound: assert (f_wait < BOUND);
 
   // ---- C -------------------------------------------------------------------------
   always @(*) if (!rst_i) begin

@@ -10,7 +10,8 @@
 //   F1  the grant is a requester, at most one per cycle;
 //   F2  fairness: a context that keeps requesting (its request, not masked
 //       as the last grant, stays high until it is granted) is granted
-//       within BOUND = N cycles, counted from its first cycle of request;
+//       within BOUND = N cycles, counted from its first cycle of request
+//       (formal/fp3_fair_wait.v);
 //   C1  (cover) a grant after exactly N - 1 cycles of waiting, and a grant
 //       while others request too.
 // The arbiter's own assertions (rtl/fp3_rr_arbiter.v) are proved with
@@ -61,21 +62,15 @@ module fp3_rr_fair #(
   always @(*) assume (f_c < N);
   wire f_req  = req_i[f_c] && !masked[f_c];
   wire f_gnt  = granted[f_c];
-  reg  [7:0] f_wait;          // cycles f_c has requested without a grant
-  reg        f_waiting;       // ... and it requested in the last cycle
-  always @(posedge clk_i) begin
-    if (rst_i || f_gnt || !f_req) begin
-      f_wait    <= 8'd0;
-      f_waiting <= 1'b0;
-    end else begin
-      f_wait    <= f_wait + 8'd1;
-      f_waiting <= 1'b1;
-    end
-  end
+  wire [7:0] f_wait;          // cycles f_c has requested without a grant
+  wire       f_waiting;       // ... and it requested in the last cycle
+  fp3_fair_wait #(.BOUND(BOUND)) u_wait (
+    .clk_i (clk_i), .rst_i (rst_i), .req_i (f_req), .gnt_i (f_gnt),
+    .wait_o (f_wait), .waiting_o (f_waiting)
+  );
   // It keeps requesting: once it has requested, its request stays until
   // the grant (a reset, !RUNNING in the scheduler, ends the wait).
   always @(*) if (f_waiting && !rst_i) assume (req_i[f_c]);
-  always @(*) if (!rst_i && f_req) f2_served_within_n: assert (f_wait < BOUND);
 
   // ---- C1 ------------------------------------------------------------------------
   always @(*) if (!rst_i) begin

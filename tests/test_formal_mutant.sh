@@ -12,7 +12,7 @@
 #                          position moves with the grant, a cycle after the
 #                          decision, so a waiting context is passed over for
 #                          up to 2 NUM_CONTEXTS - 3 cycles): the fairness
-#                          assertion of formal/fp3_issue_fair.v
+#                          assertion (formal/fp3_fair_wait.v)
 #   sched.sby:mutant       rtl/fp3_wb_tag.v with FP3_MUTANT_ANNOUNCE_EARLY
 #                          (the tag lines one stage short: every
 #                          write-back announced a cycle early, so the
@@ -47,7 +47,7 @@ check() {
   echo "test_formal_mutant: $1 fails its proof, trace $vcd"
 }
 
-check formal/rr_arbiter.sby:mutant 'f2_served_within_n|rr_taken_onehot'
-check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_issue_fair\.v:[0-9]+$'
+check formal/rr_arbiter.sby:mutant 'f_served_within_bound|rr_taken_onehot'
+check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_fair_wait\.v:[0-9]+$'
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
