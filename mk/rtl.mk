@@ -54,19 +54,18 @@ RTL_CFG_fmax    := 0 0 8 9 10 32 1 1 1 1
 RTL_AXIL_CONFIGS := fmax
 # ... and the lanes benchmark (make bench-chip, docs/lanes.md): 8 contexts
 # of 2, 8 and 16 lanes (1 and 4: rne, l4), and the chip build, the build
-# for clock rate with CHIP_LANES lanes sized to the LFE5U-85F (mk/pnr.mk
-# CHIP=ecp5-85 places the same parameters).  The limit is LUT4s: the
-# build for clock rate's multiplier is built of LUTs (no MULT18X18D), and
-# one lane alone synthesizes to 7,223 LUT4 + 439 CCU2C, 4,569 flip-flops
-# and 6 EBR (scripts/synth.sh fp3_lane ecp5, its busy flags and live
-# value table included, which the chip's lanes 1 .. 7 share with lane 0),
-# beside the one-lane processor's 12,433 LUT4: 8 lanes are at most about
-# 83 % of the 83,640 LUT4s (docs/lanes.md "Chip build").  The chip build
-# and f16 leave out the div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div
-# and fp_sqrt place at about 50-60 MHz (docs/fp-cores.md), a third of the
-# build for clock rate's, and cost about 4,500 LUT4s a lane; the ship's
-# programs do not use them.
-CHIP_CONTEXTS   := 8
+# for clock rate with CHIP_CONTEXTS contexts of CHIP_LANES lanes sized to
+# the LFE5U-85F (mk/pnr.mk CHIP=ecp5-85 places the same parameters).  16
+# contexts hide the build for clock rate's latencies (8 leave the issue
+# slot idle: 1.23 times the issue bound; f16 below).  The limit is LUT4s:
+# the build for clock rate's multiplier is built of LUTs (no MULT18X18D);
+# 16 x 8 synthesizes to 63,284 of the 83,640 LUT4s (75.7 %), each further
+# lane about 5,000 (docs/lanes.md "Chip build").  The chip build and f16
+# leave out the div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt
+# place at about 50-60 MHz (docs/fp-cores.md), a third of the build for
+# clock rate's, and cost about 4,500 LUT4s a lane; the ship's programs do
+# not use them.
+CHIP_CONTEXTS   := 16
 CHIP_LANES      := 8
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=10 FMAX_PIPE=1 \
                    HAS_DIV=0 HAS_SQRT=0
