@@ -35,7 +35,9 @@
 //   flags_o       {invalid, 0, 0, 0, 0}, the SoftFloat bit order
 //
 // Cost: a 31-bit comparator, two NaN tests and a 32-bit four-way
-// multiplexer (about 60 LUT4s), plus the output register.
+// multiplexer (about 60 LUT4s), plus the registers: with LATENCY >= 2 the
+// first holds the operands (66 bits and the valid bit), the others the
+// result and flags.
 `default_nettype none
 
 module fp_sign #(
@@ -65,40 +67,60 @@ module fp_sign #(
     end
   endgenerate
 
-  wire a_nan  = (a_i[30:23] == 8'hFF) & (|a_i[22:0]);
-  wire b_nan  = (b_i[30:23] == 8'hFF) & (|b_i[22:0]);
-  wire a_snan = a_nan & ~a_i[22];
-  wire b_snan = b_nan & ~b_i[22];
+  // With LATENCY >= 2 the first register stage holds the operands, in
+  // front of the compare: the operands arrive from the register file's
+  // last read stage through the immediate multiplexer, and the 31-bit
+  // compare's carry chain and the result multiplexer behind them in the
+  // same cycle made this the build for clock rate's critical path (about
+  // 100 MHz on the LFE5U-85F-6).  Costs 29 flip-flops more (the
+  // operands are 66 bits, the result and flags 37), no cycle.
+  localparam integer IN_REG = (LATENCY >= 2) ? 1 : 0;
+  wire        v;
+  wire [1:0]  op;
+  wire [31:0] a, b;
+  fp_pipe #(.WIDTH(2 + 32 + 32), .DEPTH(IN_REG)) u_pipe_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({op_i, a_i, b_i}),
+    .valid_o (v),
+    .data_o  ({op, a, b})
+  );
+
+  wire a_nan  = (a[30:23] == 8'hFF) & (|a[22:0]);
+  wire b_nan  = (b[30:23] == 8'hFF) & (|b[22:0]);
+  wire a_snan = a_nan & ~a[22];
+  wire b_snan = b_nan & ~b[22];
 
   // a < b in the order of §9.6 (meaningless when either is a NaN).
-  wire mag_lt = a_i[30:0] < b_i[30:0];
-  wire mag_gt = a_i[30:0] > b_i[30:0];
-  wire a_lt_b = (a_i[31] != b_i[31]) ? a_i[31]
-              : (a_i[31] ? mag_gt : mag_lt);
+  wire mag_lt = a[30:0] < b[30:0];
+  wire mag_gt = a[30:0] > b[30:0];
+  wire a_lt_b = (a[31] != b[31]) ? a[31]
+              : (a[31] ? mag_gt : mag_lt);
 
   reg  [31:0] y;
   reg  [4:0]  flags;
   always @* begin
     flags = 5'd0;
-    case (op_i)
-      OP_ABS: y = {1'b0, a_i[30:0]};
-      OP_NEG: y = {~a_i[31], a_i[30:0]};
+    case (op)
+      OP_ABS: y = {1'b0, a[30:0]};
+      OP_NEG: y = {~a[31], a[30:0]};
       default: begin
         if (a_nan | b_nan) begin
-          y     = (a_nan ? a_i : b_i) | QUIET_BIT;
+          y     = (a_nan ? a : b) | QUIET_BIT;
           flags = (a_snan | b_snan) ? FLAG_NV : 5'd0;
         end else begin
           // min: a if a < b, else b; max: a unless a < b.
-          y = ((op_i == OP_MIN) == a_lt_b) ? a_i : b_i;
+          y = ((op == OP_MIN) == a_lt_b) ? a : b;
         end
       end
     endcase
   end
 
-  fp_pipe #(.WIDTH(32 + 5), .DEPTH(LATENCY)) u_pipe_out (
+  fp_pipe #(.WIDTH(32 + 5), .DEPTH(LATENCY - IN_REG)) u_pipe_out (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (valid_i),
+    .valid_i (v),
     .data_i  ({y, flags}),
     .valid_o (valid_o),
     .data_o  ({y_o, flags_o})
