@@ -36,7 +36,8 @@
 //
 // Cost: a 31-bit comparator, two NaN tests and a 32-bit four-way
 // multiplexer (about 60 LUT4s), plus the registers: with LATENCY >= 2 the
-// first holds the operands (66 bits and the valid bit), the others the
+// first holds the operands (66 bits and the valid bit), with LATENCY >= 3
+// the second the operands and the compare's results, the others the
 // result and flags.
 `default_nettype none
 
@@ -87,40 +88,58 @@ module fp_sign #(
     .data_o  ({op, a, b})
   );
 
-  wire a_nan  = (a[30:23] == 8'hFF) & (|a[22:0]);
-  wire b_nan  = (b[30:23] == 8'hFF) & (|b[22:0]);
-  wire a_snan = a_nan & ~a[22];
-  wire b_snan = b_nan & ~b[22];
+  wire a_nan_d  = (a[30:23] == 8'hFF) & (|a[22:0]);
+  wire b_nan_d  = (b[30:23] == 8'hFF) & (|b[22:0]);
+  wire any_snan_d = a_nan_d & ~a[22] | b_nan_d & ~b[22];
 
   // a < b in the order of §9.6 (meaningless when either is a NaN).
   wire mag_lt = a[30:0] < b[30:0];
   wire mag_gt = a[30:0] > b[30:0];
-  wire a_lt_b = (a[31] != b[31]) ? a[31]
-              : (a[31] ? mag_gt : mag_lt);
+  wire a_lt_b_d = (a[31] != b[31]) ? a[31]
+                : (a[31] ? mag_gt : mag_lt);
+
+  // With LATENCY >= 3 a second register stage holds the compare's and
+  // the NaN tests' results, so that the carry chain and the result
+  // multiplexer are in different cycles (the compare alone after the
+  // operand register still limited the build for clock rate to about
+  // 126 MHz).  Costs 70 flip-flops, no cycle.
+  localparam integer MID_REG = (LATENCY >= 3) ? 1 : 0;
+  wire        vm;
+  wire [1:0]  opm;
+  wire [31:0] am, bm;
+  wire        a_nan, b_nan, any_snan, a_lt_b;
+  fp_pipe #(.WIDTH(2 + 32 + 32 + 4), .DEPTH(MID_REG)) u_pipe_mid (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (v),
+    .data_i  ({op, a, b, a_nan_d, b_nan_d, any_snan_d, a_lt_b_d}),
+    .valid_o (vm),
+    .data_o  ({opm, am, bm, a_nan, b_nan, any_snan, a_lt_b})
+  );
 
   reg  [31:0] y;
   reg  [4:0]  flags;
   always @* begin
     flags = 5'd0;
-    case (op)
-      OP_ABS: y = {1'b0, a[30:0]};
-      OP_NEG: y = {~a[31], a[30:0]};
+    case (opm)
+      OP_ABS: y = {1'b0, am[30:0]};
+      OP_NEG: y = {~am[31], am[30:0]};
       default: begin
         if (a_nan | b_nan) begin
-          y     = (a_nan ? a : b) | QUIET_BIT;
-          flags = (a_snan | b_snan) ? FLAG_NV : 5'd0;
+          y     = (a_nan ? am : bm) | QUIET_BIT;
+          flags = any_snan ? FLAG_NV : 5'd0;
         end else begin
           // min: a if a < b, else b; max: a unless a < b.
-          y = ((op == OP_MIN) == a_lt_b) ? a : b;
+          y = ((opm == OP_MIN) == a_lt_b) ? am : bm;
         end
       end
     endcase
   end
 
-  fp_pipe #(.WIDTH(32 + 5), .DEPTH(LATENCY - IN_REG)) u_pipe_out (
+  fp_pipe #(.WIDTH(32 + 5), .DEPTH(LATENCY - IN_REG - MID_REG)) u_pipe_out (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (v),
+    .valid_i (vm),
     .data_i  ({y, flags}),
     .valid_o (valid_o),
     .data_o  ({y_o, flags_o})
