@@ -117,8 +117,7 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
     mode_name(r->mode[m], name, sizeof name);
     printf("%s{\"mode\": \"%s\", \"error\": ", m ? ", " : "", name);
     fp3_json_double(stdout, r->err[m]);
-    printf(", \"added_error\": ");
-    fp3_json_double(stdout, r->added[m]);
+    fp3_json_member_double(stdout, "added_error", r->added[m]);
     printf(", \"allowed\": %s, \"fp_core_luts_xc2v\": %u}", r->allowed[m] ? "true" : "false",
            r->luts[m]);
   }

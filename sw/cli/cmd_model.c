@@ -533,8 +533,7 @@ int fp3_cmd_run_model(int argc, char **argv) {
            st.cycles, st.issued, st.stalls);
     printf(", \"cycles_first_step\": ");
     if (ob.endis >= 1) printf("%" PRIu64, ob.cyc_first + 1); else printf("null");
-    printf(", \"cycles_per_step\": ");
-    fp3_json_double(stdout, cyc_per);
+    fp3_json_member_double(stdout, "cycles_per_step", cyc_per);
     printf(", \"golden_mismatches\": %" PRIu64, mismatches);
     if (mismatches)
       printf(", \"first_mismatch\": {\"integration\": %" PRIu32 ", \"result\": \"%s\", "

@@ -129,12 +129,9 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
       exact(&sc.objs[i], c->steps, &ve, &se);
       printf("%s{\"v\": ", i ? ", " : "");
       fp3_json_float(stdout, fpref_float(res.v[i]));
-      printf(", \"s\": ");
-      fp3_json_float(stdout, fpref_float(res.s[i]));
-      printf(", \"v_exact\": ");
-      fp3_json_double(stdout, ve);
-      printf(", \"s_exact\": ");
-      fp3_json_double(stdout, se);
+      fp3_json_member_float(stdout, "s", fpref_float(res.s[i]));
+      fp3_json_member_double(stdout, "v_exact", ve);
+      fp3_json_member_double(stdout, "s_exact", se);
       printf("}");
     }
     printf("]}\n");

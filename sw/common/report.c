@@ -148,3 +148,13 @@ int fp3_write_text_atomic(const char *path, const char *text, char *msg, size_t 
   free(tmp);
   return 0;
 }
+
+void fp3_json_member_float(FILE *f, const char *key, float x) {
+  fprintf(f, ", \"%s\": ", key);
+  fp3_json_float(f, x);
+}
+
+void fp3_json_member_double(FILE *f, const char *key, double x) {
+  fprintf(f, ", \"%s\": ", key);
+  fp3_json_double(f, x);
+}

@@ -27,6 +27,11 @@ void fp3_json_string(FILE *f, const char *s);
 void fp3_json_float(FILE *f, float x);
 void fp3_json_double(FILE *f, double x);
 
+/* A member after the first of a JSON object: `, "key": ` and the value as
+ * fp3_json_float / fp3_json_double write it. */
+void fp3_json_member_float(FILE *f, const char *key, float x);
+void fp3_json_member_double(FILE *f, const char *key, double x);
+
 /* A growing NUL-terminated string: start with {0}; s is malloc'd (the
  * caller frees it), NULL until the first append.  After a failed
  * allocation oom is 1 and later appends do nothing. */
