@@ -33,9 +33,10 @@
 // HAS_SQRT, HAS_SIGN), passed through unchanged.
 // Ports: fp3_regfile's (index ports shared by all lanes) and fp3_arith's
 // operation inputs; imm_i/imm_val_i choose the immediate as the first
-// operand (li), as the read stage gives it.  ra_data_o/rb_data_o are this
-// lane's operands READ_STAGES cycles after the issue (for beq and the
-// host's read); {add,mul,mov,div}_data_o and _flags_o are its results,
+// operand (li), as the read stage gives it.  ra_data_o is this lane's
+// port A operand READ_STAGES cycles after the issue (the host's read),
+// eq_o whether ports A and B read the same bit pattern (beq), in the same
+// cycle; {add,mul,mov,div}_data_o and _flags_o are its results,
 // in the cycle the tag lines' write-back valid names.
 `default_nettype none
 module fp3_lane #(
@@ -64,7 +65,7 @@ module fp3_lane #(
   input  wire [XW-1:0]      ra_i,
   input  wire [XW-1:0]      rb_i,
   output wire [31:0]        ra_data_o,
-  output wire [31:0]        rb_data_o,
+  output wire               eq_o,        // port A's operand == port B's (beq)
   output wire [ENTRIES-1:0] busy_o,
   input  wire               set_i,
   input  wire [XW-1:0]      set_idx_i,
@@ -202,7 +203,9 @@ module fp3_lane #(
   wire unused_valid = add_valid ^ mul_valid ^ mov_valid ^ div_valid;
 
   assign ra_data_o  = ra_data;
-  assign rb_data_o  = rb_data;
+  // beq's compare in the lane, beside its operands: one wire a lane to
+  // fp3_top's branch resolution instead of both 32-bit operands.
+  assign eq_o       = ra_data == rb_data;
   assign add_data_o = add_data;
   assign mul_data_o = mul_data;
   assign mov_data_o = mov_data;

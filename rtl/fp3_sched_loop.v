@@ -50,6 +50,7 @@
 //   AW            instruction address width (faulting PCs)
 //   PICK_STAGES   0 or 2; FETCH_STAGE 0 or 1 (above)
 //   DRAIN         cycles from a write-back's announcement to the write-back, >= 1
+//   RUN_COPIES    copies of RUNNING in run_copy_o, >= 1
 // Ports (one-hot vectors: bit c for context c)
 //   clk_i, rst_i      clock (rising edge), synchronous reset
 //   start_i, clear_i  host: START, CLEAR (clears the errors while stopped)
@@ -67,6 +68,13 @@
 //   l_endi_i, l_ovf_i [NC], l_pc_i [NC*AW]  the last heads' (granted in the
 //                     last cycle)
 //   running_o, done_o RUNNING, DONE
+//   run_copy_o [RUN_COPIES]  RUNNING again, bit for bit, from flip-flops
+//                     of their own (fp3_keep): one per lane's register
+//                     file, whose read address chooses the host's index
+//                     while stopped.  RUNNING alone drove every lane's
+//                     address multiplexers, across the die (the clock-rate
+//                     build's critical path); each copy is placed by its
+//                     lane.  Cost: RUN_COPIES flip-flops.
 //   any_error_o       some context's error is not ERR_NONE
 //   error_sel_o [4], fault_pc_sel_o [32], steps_done_sel_o [32]  context
 //                     sel_ctx_i's error, faulting PC, integrations done
@@ -84,7 +92,8 @@ module fp3_sched_loop #(
   parameter integer AW           = 8,
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
-  parameter integer DRAIN        = 1
+  parameter integer DRAIN        = 1,
+  parameter integer RUN_COPIES   = 1
 ) (
   input  wire                       clk_i,
   input  wire                       rst_i,
@@ -113,6 +122,7 @@ module fp3_sched_loop #(
   input  wire [NUM_CONTEXTS*AW-1:0] l_pc_i,
   output reg                        running_o,
   output reg                        done_o,
+  output wire [RUN_COPIES-1:0]      run_copy_o,
   output wire                       any_error_o,
   output wire [3:0]                 error_sel_o,
   output wire [31:0]                fault_pc_sel_o,
@@ -187,6 +197,18 @@ module fp3_sched_loop #(
   // in t - 1, as nothing issued.
   wire run_end = act == {NC{1'b0}} && !issue_i && !(two && grant_q) && !start_e &&
                  idle_i && !iss_q && lull_full_q;
+  // RUNNING's next state, as the block below sets it, for its copies.
+  wire running_d = !rst_i && (running_o ? !run_end : start_ok);
+  genvar rc;
+  generate
+    for (rc = 0; rc < RUN_COPIES; rc = rc + 1) begin : g_run_copy
+      fp3_keep #(.W(1)) u_run_copy (
+        .clk_i (clk_i),
+        .d_i   (running_d),
+        .q_o   (run_copy_o[rc])
+      );
+    end
+  endgenerate
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin

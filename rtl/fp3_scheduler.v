@@ -49,6 +49,7 @@
 //                 arrives four cycles after the grant instead of one
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
+//   RUN_COPIES    copies of RUNNING (run_copy_o: fp3_sched_loop), >= 1
 // Ports: see the groups below; counters are 64 bits, cleared by START.
 // Program writes (imem_*) land in the memory a cycle later (FETCH_STAGE:
 // two; registered and decoded first).  Register indices towards the
@@ -73,7 +74,8 @@ module fp3_scheduler #(
   parameter integer HAS_SIGN     = 1,
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
-  parameter integer DRAIN        = 1
+  parameter integer DRAIN        = 1,
+  parameter integer RUN_COPIES   = 1
 ) (
   input  wire                         clk_i,
   input  wire                         rst_i,
@@ -93,6 +95,7 @@ module fp3_scheduler #(
   input  wire [CW-1:0]                sel_ctx_i,     // context of the *_sel_o
   // status and counters
   output wire                         running_o,
+  output wire [RUN_COPIES-1:0]        run_copy_o,    // RUNNING, one flip-flop each
   output wire                         done_o,
   output wire                         any_error_o,
   output wire [3:0]                   error_sel_o,
@@ -276,7 +279,7 @@ module fp3_scheduler #(
   );
 
   fp3_sched_loop #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .AW(AW), .PICK_STAGES(PICK_STAGES),
-                   .FETCH_STAGE(FETCH_STAGE), .DRAIN(DRAIN)) u_loop (
+                   .FETCH_STAGE(FETCH_STAGE), .DRAIN(DRAIN), .RUN_COPIES(RUN_COPIES)) u_loop (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .start_i          (start_i),
@@ -304,6 +307,7 @@ module fp3_scheduler #(
     .l_pc_i           (l_pc),
     .running_o        (running_o),
     .done_o           (done_o),
+    .run_copy_o       (run_copy_o),
     .any_error_o      (any_error_o),
     .error_sel_o      (error_sel_o),
     .fault_pc_sel_o   (fault_pc_sel_o),

@@ -216,6 +216,7 @@ module fp3_top #(
   wire [AW-1:0] imem_idx = host_addr_i[AW:1];   // (hsel checks its range)
 
   wire        running;
+  wire [NL-1:0] run_l;     // RUNNING's copies, one per lane's read address (fp3_sched_loop)
   reg  [31:0] steps_q;
   reg  [31:0] contexts_q;
   reg  [CW-1:0] ctx_q;     // context the host sees
@@ -333,7 +334,7 @@ module fp3_top #(
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
                   .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
                   .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
-                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD)) u_sched (
+                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD), .RUN_COPIES(NL)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
@@ -348,6 +349,7 @@ module fp3_top #(
     .contexts_run_i   (contexts_run_q),
     .sel_ctx_i        (ctx_sch),
     .running_o        (running),
+    .run_copy_o       (run_l),
     .done_o           (done),
     .any_error_o      (any_error),
     .error_sel_o      (error),
@@ -397,7 +399,8 @@ module fp3_top #(
   // 0's busy flags are the scoreboard, and its live value table chooses
   // the RAM of every lane's reads (fp3_lane; lanes 1 .. have neither).
   // The host writes the lane LANE names.
-  wire [32*NL-1:0] ra_data_l, rb_data_l;            // lane l in [32l +: 32]
+  wire [32*NL-1:0] ra_data_l;                       // lane l in [32l +: 32]
+  wire [NL-1:0]    eq_l;                             // lane l's operands are equal
   wire [32*NL-1:0] add_data_l, mul_data_l, mov_data_l, div_data_l;
   wire [5*NL-1:0]  add_flags_l, mul_flags_l, mov_flags_l, div_flags_l;
   wire [(1<<XW)*NL-1:0] busy_l;
@@ -423,7 +426,7 @@ module fp3_top #(
         .ra_i            (ra),
         .rb_i            (rb),
         .ra_data_o       (ra_data_l[32*ln +: 32]),
-        .rb_data_o       (rb_data_l[32*ln +: 32]),
+        .eq_o            (eq_l[ln]),
         .busy_o          (busy_l[(1<<XW)*ln +: (1<<XW)]),
         .set_i           (pick_wr),
         .set_idx_i       (pick_rd),
@@ -451,7 +454,7 @@ module fp3_top #(
         .wb2_in2_idx_i   (movn_idx),
         .wb3_in2_valid_i (divn_valid),
         .wb3_in2_idx_i   (divn_idx),
-        .host_sel_i      (host_idle),
+        .host_sel_i      (!run_l[ln]),
         .host_we_i       (host_reg_we && lane_q == ln[LW-1:0]),
         .host_idx_i      ({ctx_q, host_addr_i[IW-1:0]}),
         .host_wdata_i    (host_wdata_i),
@@ -617,16 +620,12 @@ module fp3_top #(
   );
 
   // ---- branch resolution -------------------------------------------------
-  // A beq's operands, read like any others, are compared here (a 32-bit
-  // equality of bit patterns in each lane) and the outcome registered:
-  // taken only if equal in every lane.  The scheduler sees it READ + 1
-  // cycles after the issue, its context decoded.
-  reg [NL-1:0] lane_eq;
-  integer bc, bl;
-  always @(*) begin
-    for (bl = 0; bl < NL; bl = bl + 1)
-      lane_eq[bl] = ra_data_l[32*bl +: 32] == rb_data_l[32*bl +: 32];
-  end
+  // A beq's operands, read like any others, are compared in each lane (a
+  // 32-bit equality of bit patterns: fp3_lane eq_o) and the outcome
+  // registered here: taken only if equal in every lane.  The scheduler
+  // sees it READ + 1 cycles after the issue, its context decoded.
+  wire [NL-1:0] lane_eq = eq_l;
+  integer bc;
   always @(posedge clk_i) begin
     for (bc = 0; bc < NUM_CONTEXTS; bc = bc + 1)
       br_q[bc] <= !rst_i && rd_beq && rd_ctx == bc[CW-1:0];
