@@ -222,7 +222,6 @@ module fp3_top #(
   reg  [CW-1:0] ctx_q;     // context the host sees
   reg  [LW-1:0] lane_q;    // lane the host sees
   reg  [31:0] imem_lo_q;   // low half of an instruction being written
-  reg  [4:0]  flags_q [0:NUM_CONTEXTS*NL-1];  // sticky exception flags, [context * NL + lane]
 
   wire host_idle   = !running;
   // A write to CTX taken (ctx_q and its copies, below)
@@ -639,37 +638,44 @@ module fp3_top #(
   // so the host port's decode does not reach the flags.
   reg fclr_q;
   always @(posedge clk_i) fclr_q <= start && host_idle;
+  // Each lane keeps its flags in an array of its own, indexed by context,
+  // so that the host's selection is a context multiplexer in each lane and
+  // a lane multiplexer behind them (an index context * NL + lane would
+  // make Yosys build a multiplier and an adder into the host's read path
+  // when NL is not a power of two).
+  wire [NUM_CONTEXTS-1:0] add_here, mul_here, mov_here, div_here;  // write-back of context c
+  wire [5*NL-1:0]         flags_ctx;  // lane l's flags of context ctx_flg in [5l +: 5]
   genvar fc, fl;
   generate
-    for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
+    for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags_here
       localparam [CW-1:0] FCTX = fc[CW-1:0];
-      wire add_here = add_valid && add_idx[XW-1:IW] == FCTX;
-      wire mul_here = mul_valid && mul_idx[XW-1:IW] == FCTX;
-      wire mov_here = mov_valid && mov_idx[XW-1:IW] == FCTX;
-      wire div_here = div_valid && div_idx[XW-1:IW] == FCTX;
-      for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
+      assign add_here[fc] = add_valid && add_idx[XW-1:IW] == FCTX;
+      assign mul_here[fc] = mul_valid && mul_idx[XW-1:IW] == FCTX;
+      assign mov_here[fc] = mov_valid && mov_idx[XW-1:IW] == FCTX;
+      assign div_here[fc] = div_valid && div_idx[XW-1:IW] == FCTX;
+    end
+    for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
+      reg [4:0] flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags of this lane, by context
+      for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
         always @(posedge clk_i) begin
-          if (rst_i || fclr_q) flags_q[fc*NL+fl] <= 5'd0;
-          else flags_q[fc*NL+fl] <= flags_q[fc*NL+fl] |
-                                    (add_here ? add_flags_l[5*fl +: 5] : 5'd0) |
-                                    (mul_here ? mul_flags_l[5*fl +: 5] : 5'd0) |
-                                    (mov_here ? mov_flags_l[5*fl +: 5] : 5'd0) |
-                                    (div_here ? div_flags_l[5*fl +: 5] : 5'd0);
+          if (rst_i || fclr_q) flags_q[fc] <= 5'd0;
+          else flags_q[fc] <= flags_q[fc] |
+                              (add_here[fc] ? add_flags_l[5*fl +: 5] : 5'd0) |
+                              (mul_here[fc] ? mul_flags_l[5*fl +: 5] : 5'd0) |
+                              (mov_here[fc] ? mov_flags_l[5*fl +: 5] : 5'd0) |
+                              (div_here[fc] ? div_flags_l[5*fl +: 5] : 5'd0);
         end
       end
+      assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg];
     end
   endgenerate
   // The selected context's flags, of lane LANE.
   wire [4:0] flags_sel;
   generate
     if (NL == 1) begin : g_flags_one
-      assign flags_sel = flags_q[ctx_flg];
+      assign flags_sel = flags_ctx;
     end else begin : g_flags_lane
-      wire [4:0] flags_ctx [0:NL-1];
-      for (fl = 0; fl < NL; fl = fl + 1) begin : g_sel
-        assign flags_ctx[fl] = flags_q[{{(32-CW){1'b0}}, ctx_flg} * NL + fl];
-      end
-      assign flags_sel = flags_ctx[lane_q];
+      assign flags_sel = flags_ctx[5*lane_q +: 5];
     end
   endgenerate
 
