@@ -66,13 +66,13 @@ RTL_AXIL_CONFIGS := fmax
 # clock rate's, and cost about 4,500 LUT4s a lane; the ship's programs do
 # not use them.
 CHIP_CONTEXTS   := 16
-CHIP_LANES      := 8
-CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=10 FMAX_PIPE=1 \
+CHIP_LANES      := 6
+CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
                    HAS_DIV=0 HAS_SQRT=0
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
 RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
 RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
-RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 10 32 1 1 1 1 $(CHIP_LANES) 0 0 1
+RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 9 32 1 1 1 1 $(CHIP_LANES) 0 0 1
 # ... and the build for clock rate with 16 contexts, one lane: whether
 # twice the contexts hide its latencies (a context's timing does not
 # depend on its lanes).
