@@ -57,14 +57,15 @@ RTL_AXIL_CONFIGS := fmax
 # for clock rate with CHIP_CONTEXTS contexts of CHIP_LANES lanes sized to
 # the LFE5U-85F (mk/pnr.mk CHIP=ecp5-85 places the same parameters).  16
 # contexts hide the build for clock rate's latencies (8 leave the issue
-# slot idle: 1.23 times the issue bound; f16 below).  The limit is LUT4s:
-# the build for clock rate's multiplier is built of LUTs (no MULT18X18D);
-# 16 x 8 synthesizes to 63,284 of the 83,640 LUT4s (75.7 %), each further
-# lane about 5,000 (docs/lanes.md "Chip build").  The chip build and f16
-# leave out the div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt
-# place at about 50-60 MHz (docs/fp-cores.md), a third of the build for
-# clock rate's, and cost about 4,500 LUT4s a lane; the ship's programs do
-# not use them.
+# slot idle: 1.23 times the issue bound; f16 below).  Its multiplier is in
+# MULT18X18D (MUL_LATENCY 9: fp_mul_prod LUT = 0), which the lanes' clock
+# (about 80-90 MHz) leaves far from the block's 141-148 MHz cap, and which
+# saves about 1,050 LUT4s a lane.  The limit is routing, not a resource:
+# 6 lanes (47,585 LUT4s, 57 %) route; 8 (55,913, 67 %) do not
+# (docs/lanes.md "Chip build").  The chip build and f16 leave out the
+# div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
+# about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
+# the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
 CHIP_LANES      := 6
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
