@@ -197,8 +197,10 @@ module fp3_sched_loop #(
   // in t - 1, as nothing issued.
   wire run_end = act == {NC{1'b0}} && !issue_i && !(two && grant_q) && !start_e &&
                  idle_i && !iss_q && lull_full_q;
-  // RUNNING's next state, as the block below sets it, for its copies.
+  // RUNNING's next state: the flag and its copies are all registered from
+  // this one expression, so they agree bit for bit.
   wire running_d = !rst_i && (running_o ? !run_end : start_ok);
+  always @(posedge clk_i) running_o <= running_d;
   genvar rc;
   generate
     for (rc = 0; rc < RUN_COPIES; rc = rc + 1) begin : g_run_copy
@@ -212,7 +214,6 @@ module fp3_sched_loop #(
   integer k;
   always @(posedge clk_i) begin
     if (rst_i) begin
-      running_o <= 1'b0;
       done_o    <= 1'b0;
       start_q   <= 1'b0;
       bad_q     <= 1'b0;
@@ -230,7 +231,6 @@ module fp3_sched_loop #(
         last2_q <= steps_last2_i;
         final_q <= {NC{steps_one_i}};
         if (start_ok) begin
-          running_o <= 1'b1;
           done_o    <= 1'b0;
         end else if (start_i || clear_i) begin
           done_o <= 1'b0;        // a refused START: DONE in the next cycle
@@ -241,10 +241,7 @@ module fp3_sched_loop #(
         for (k = 0; k < NC; k = k + 1) begin
           if (gone_q[k] && l_endi_i[k]) final_q[k] <= near_q[k];
         end
-        if (run_end) begin
-          running_o <= 1'b0;
-          done_o    <= 1'b1;
-        end
+        if (run_end) done_o <= 1'b1;
       end
     end
   end

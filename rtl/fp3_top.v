@@ -623,12 +623,11 @@ module fp3_top #(
   // 32-bit equality of bit patterns: fp3_lane eq_o) and the outcome
   // registered here: taken only if equal in every lane.  The scheduler
   // sees it READ + 1 cycles after the issue, its context decoded.
-  wire [NL-1:0] lane_eq = eq_l;
   integer bc;
   always @(posedge clk_i) begin
     for (bc = 0; bc < NUM_CONTEXTS; bc = bc + 1)
       br_q[bc] <= !rst_i && rd_beq && rd_ctx == bc[CW-1:0];
-    br_taken_q  <= &lane_eq;
+    br_taken_q  <= &eq_l;
     br_target_q <= rd_immval[AW-1:0];
   end
 
@@ -643,30 +642,57 @@ module fp3_top #(
   // a lane multiplexer behind them (an index context * NL + lane would
   // make Yosys build a multiplier and an adder into the host's read path
   // when NL is not a power of two).
-  wire [NUM_CONTEXTS-1:0] add_here, mul_here, mov_here, div_here;  // write-back of context c
-  wire [5*NL-1:0]         flags_ctx;  // lane l's flags of context ctx_flg in [5l +: 5]
-  genvar fc, fl;
+  //
+  // The flags take their inputs a cycle late: each lane registers the four
+  // write-back tag lines' valid and context (copies of its own, fp3_keep,
+  // so each is placed by its lane's flags and not by the tag line) and its
+  // cores' flags, and decodes the context from those registers.  So the
+  // route from the tag lines across the die to every lane has a cycle of
+  // its own with no logic in it; it cost one flip-flop per bit (4 x (1 +
+  // CW) + 20 a lane).  The host's FLAGS read ORs the staged cycle into the
+  // array (flags_ctx), so it sees every write-back up to the previous
+  // cycle, as if the flags took their inputs directly.
+  wire [4*(1+CW)-1:0] wb_tags = {div_valid, div_idx[XW-1:IW], mov_valid, mov_idx[XW-1:IW],
+                                 mul_valid, mul_idx[XW-1:IW], add_valid, add_idx[XW-1:IW]};
+  wire [5*NL-1:0]     flags_ctx;  // lane l's flags of context ctx_flg in [5l +: 5]
+  genvar fc, fl, fu;
   generate
-    for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags_here
-      localparam [CW-1:0] FCTX = fc[CW-1:0];
-      assign add_here[fc] = add_valid && add_idx[XW-1:IW] == FCTX;
-      assign mul_here[fc] = mul_valid && mul_idx[XW-1:IW] == FCTX;
-      assign mov_here[fc] = mov_valid && mov_idx[XW-1:IW] == FCTX;
-      assign div_here[fc] = div_valid && div_idx[XW-1:IW] == FCTX;
-    end
     for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
+      wire [4*(1+CW)-1:0] tags_q;   // this lane's copy of wb_tags, a cycle late
+      fp3_keep #(.W(4*(1+CW))) u_tags (
+        .clk_i (clk_i),
+        .d_i   (rst_i ? {4*(1+CW){1'b0}} : wb_tags),
+        .q_o   (tags_q)
+      );
+      reg  [19:0] fl_q;             // the cores' flags, a cycle late: add, mul, mov, div
+      always @(posedge clk_i)
+        fl_q <= {div_flags_l[5*fl +: 5], mov_flags_l[5*fl +: 5],
+                 mul_flags_l[5*fl +: 5], add_flags_l[5*fl +: 5]};
+      // in_q[c]: this lane's staged flags of context c (all units' ORed)
+      wire [5*NUM_CONTEXTS-1:0] in_q;
+      for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_in
+        localparam [CW-1:0] FCTX = fc[CW-1:0];
+        wire [3:0] here;
+        for (fu = 0; fu < 4; fu = fu + 1) begin : g_unit
+          assign here[fu] = tags_q[(1+CW)*fu + CW] && tags_q[(1+CW)*fu +: CW] == FCTX;
+        end
+        assign in_q[5*fc +: 5] = (here[0] ? fl_q[4:0]   : 5'd0) | (here[1] ? fl_q[9:5]   : 5'd0) |
+                                 (here[2] ? fl_q[14:10] : 5'd0) | (here[3] ? fl_q[19:15] : 5'd0);
+      end
       reg [4:0] flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags of this lane, by context
       for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
         always @(posedge clk_i) begin
           if (rst_i || fclr_q) flags_q[fc] <= 5'd0;
-          else flags_q[fc] <= flags_q[fc] |
-                              (add_here[fc] ? add_flags_l[5*fl +: 5] : 5'd0) |
-                              (mul_here[fc] ? mul_flags_l[5*fl +: 5] : 5'd0) |
-                              (mov_here[fc] ? mov_flags_l[5*fl +: 5] : 5'd0) |
-                              (div_here[fc] ? div_flags_l[5*fl +: 5] : 5'd0);
+          else flags_q[fc] <= flags_q[fc] | in_q[5*fc +: 5];
         end
       end
+`ifdef FP3_MUTANT_FLAGS_UNSTAGED
+      // Deliberately broken (formal/sched.sby:mutant_flags): the read
+      // misses the staged cycle's write-backs.
       assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg];
+`else
+      assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg] | in_q[5*ctx_flg +: 5];
+`endif
     end
   endgenerate
   // The selected context's flags, of lane LANE.
@@ -811,6 +837,26 @@ module fp3_top #(
   // Host address bits that select windows but are not register indices.
   wire unused_addr = &{1'b0, host_addr_i};
 `ifdef FP3_SCHED_CHECK
+  // The staged sticky flags read as flags that take each write-back in its
+  // own cycle (formal/sched.sby): a reference array of every lane's flags
+  // by context, updated directly from the tag lines and the cores' flags,
+  // equals what the host's FLAGS read sees of every lane, in every cycle
+  // after reset.
+  reg [5*NL-1:0] fref_q [0:NUM_CONTEXTS-1];
+  integer fk;
+  always @(posedge clk_i) begin
+    for (fk = 0; fk < NUM_CONTEXTS; fk = fk + 1) begin
+      if (rst_i || fclr_q) fref_q[fk] <= {5*NL{1'b0}};
+      else fref_q[fk] <= fref_q[fk] |
+                         (add_valid && add_idx[XW-1:IW] == fk[CW-1:0] ? add_flags_l : {5*NL{1'b0}}) |
+                         (mul_valid && mul_idx[XW-1:IW] == fk[CW-1:0] ? mul_flags_l : {5*NL{1'b0}}) |
+                         (mov_valid && mov_idx[XW-1:IW] == fk[CW-1:0] ? mov_flags_l : {5*NL{1'b0}}) |
+                         (div_valid && div_idx[XW-1:IW] == fk[CW-1:0] ? div_flags_l : {5*NL{1'b0}});
+    end
+  end
+  reg f_flags_past = 1'b0;
+  always @(posedge clk_i) f_flags_past <= 1'b1;
+  always @(*) if (f_flags_past && !rst_i) flags_staged_exact: assert (flags_ctx == fref_q[ctx_flg]);
   // The scheduler's scoreboard and issue properties (formal/sched.sby),
   // checked on this processor's own tag lines, flags and bypass; its copy
   // of the program from the scheduler's program writes.

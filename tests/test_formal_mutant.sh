@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail.  Four broken copies, each of
+# test_formal_mutant.sh -- the proofs can fail.  Five broken copies, each of
 # which must FAIL its property set, and scripts/formal.sh must name the
 # counterexample trace (an existing VCD) and the failing assertion's
 # file:line in the repository:
@@ -24,6 +24,10 @@
 #                          div/sqrt unit's tag line alone a stage short):
 #                          the busy flag's or the div write-back's
 #                          assertion of formal/fp3_sched_check.v
+#   sched.sby:mutant_flags rtl/fp3_top.v with FP3_MUTANT_FLAGS_UNSTAGED (the
+#                          host's FLAGS read without the staged cycle, so
+#                          a write-back of the last cycle is missing):
+#                          flags_staged_exact in rtl/fp3_top.v
 set -u
 cd "$(dirname "$0")/.."
 out=${FORMAL_OUT:-build/formal}/mutant
@@ -51,3 +55,4 @@ check formal/rr_arbiter.sby:mutant 'f_served_within_bound|rr_taken_onehot'
 check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_fair_wait\.v:[0-9]+$'
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
+check formal/sched.sby:mutant_flags 'flags_staged_exact at rtl/fp3_top\.v:[0-9]+$'
