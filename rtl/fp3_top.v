@@ -686,12 +686,22 @@ module fp3_top #(
           else flags_q[fc] <= flags_q[fc] | in_q[5*fc +: 5];
         end
       end
+      // The staged cycle's flags of context ctx_flg, from the staged tags
+      // compared with ctx_flg itself (in_q indexed by ctx_flg would be a
+      // shifter by 5 * ctx_flg, several hundred LUTs a lane).
+      wire [3:0] sel_here;
+      for (fu = 0; fu < 4; fu = fu + 1) begin : g_sel
+        assign sel_here[fu] = tags_q[(1+CW)*fu + CW] && tags_q[(1+CW)*fu +: CW] == ctx_flg;
+      end
+      wire [4:0] in_sel = (sel_here[0] ? fl_q[4:0]   : 5'd0) | (sel_here[1] ? fl_q[9:5]   : 5'd0) |
+                          (sel_here[2] ? fl_q[14:10] : 5'd0) | (sel_here[3] ? fl_q[19:15] : 5'd0);
 `ifdef FP3_MUTANT_FLAGS_UNSTAGED
       // Deliberately broken (formal/sched.sby:mutant_flags): the read
       // misses the staged cycle's write-backs.
+      wire unused_in_sel = &{1'b0, in_sel};
       assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg];
 `else
-      assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg] | in_q[5*ctx_flg +: 5];
+      assign flags_ctx[5*fl +: 5] = flags_q[ctx_flg] | in_sel;
 `endif
     end
   endgenerate
