@@ -9,6 +9,11 @@
  *    (scenes/drift.scene: no sub; coast, harbour) and synthetic ones
  *    (one object, 100 objects one context each, euler), the ROUND/FTZ rule
  *    follows the budget, bad options fail;
+ *  - the lane cost model (sw/compiler/device.c) gives the measured chip
+ *    build back (16 contexts x 32 registers on the LFE5U-85F: 6 lanes,
+ *    LUT4s the binding limit; 7 lanes are over the share that routes),
+ *    scales lane 0 and the EBR with the registers, and bounds NUM_LANES
+ *    through --device; a device without room for one lane is an error;
  *  - the scene-sized Verilated build `drift` (mk/rtl.mk RTL_CFG_drift:
  *    NUM_CONTEXTS=4 NUM_REGS=11 HAS_SUB=0 ROUND=1 FTZ=1) reports exactly
  *    the parameters fp3 configure derives for scenes/drift.scene, runs that
@@ -214,6 +219,17 @@ static void test_derive_scenes(void **state) {
   r = configure(&sc, &o);
   expect_line(&r, "NUM_CONTEXTS=3 NUM_LANES=16 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1");
 
+  /* a device bounds the lanes: 100 objects at 4 contexts want 25 lanes,
+   * the LFE5U-45F holds fewer */
+  o.integrator = "rk4";
+  o.device = fp3_device_find("ecp5-45");
+  assert_non_null(o.device);
+  r = configure(&sc, &o);
+  assert_int_equal(r.lanes_scene, 25);
+  assert_int_equal(r.cfg.num_lanes, r.fit.max_lanes);
+  assert_true(r.fit.max_lanes >= 1 && r.fit.max_lanes < FP3_CONFIGURE_MAX_LANES);
+  o.device = NULL;
+
   /* bad options and input */
   char msg[300];
   fp3_configure_result bad;
@@ -231,7 +247,54 @@ static void test_derive_scenes(void **state) {
   fp3_scene empty = {sc.objs, 0};
   fp3_configure_defaults(&o);
   assert_int_equal(fp3_configure(&empty, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  o.device = fp3_device_find("ecp5-25");
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "LFE5U-25F"));
+  assert_non_null(strstr(msg, "does not hold one lane"));
   fp3_scene_free(&sc);
+}
+
+/* The lane cost model against the chip build it was measured on, and its
+ * scaling and limits. */
+static void test_device_lanes(void **state) {
+  (void)state;
+  fp3_device_fit fit;
+  const fp3_device *d85 = fp3_device_find("ecp5-85");
+  assert_non_null(d85);
+  assert_string_equal(d85->part, "LFE5U-85F");
+  assert_int_equal(d85->luts, 83640);
+  assert_null(fp3_device_find("ecp5"));
+  assert_null(fp3_device_find("ecp5-85x"));
+  /* the chip build: 13,525 + 14,867 + 5 x 3,319 = 44,987 <= 47,674; a
+   * seventh lane would need 48,306 */
+  assert_int_equal(fp3_device_lanes(d85, 16, 32, 1, &fit), 6);
+  assert_int_equal(fit.luts_lane0, 14867);
+  assert_int_equal(fit.luts_allowed, 47674);
+  assert_int_equal(fit.ebr_lane, 8);
+  assert_int_equal(fit.dsp_lane, 4);
+  assert_string_equal(fit.limit, "LUT4s (routing)");
+  /* a quarter of the registers: lane 0's flags and table a quarter,
+   * rounded up */
+  assert_int_equal(fp3_device_lanes(d85, 4, 32, 1, &fit), 9);   /* 13,525 + 6,206 + 8 x 3,319 */
+  assert_int_equal(fit.luts_lane0, 3319 + 2887);
+  /* 64 contexts x 32 registers: lane 0's table four times the chip
+   * build's (49,511 LUT4s), more than the share that routes; 4 EBR a bank */
+  assert_int_equal(fp3_device_lanes(d85, 64, 32, 1, &fit), 0);
+  assert_int_equal(fit.luts_lane0, 3319 + 4 * 11548);
+  assert_int_equal(fit.ebr_lane, 32);
+  assert_string_equal(fit.limit, "LUT4s (routing)");
+  /* no multiplier: no MULT18X18D */
+  fp3_device_lanes(d85, 16, 32, 0, &fit);
+  assert_int_equal(fit.dsp_lane, 0);
+  /* the LFE5U-45F, 128 registers: 13,525 + 6,206 + 3,319 <= 24,993, a
+   * third lane not */
+  const fp3_device *d45 = fp3_device_find("ecp5-45");
+  assert_non_null(d45);
+  assert_int_equal(fp3_device_lanes(d45, 8, 16, 1, &fit), 2);
+  /* the LFE5U-25F: the fixed part and lane 0 are 13,525 + 3,410 of 13,844 */
+  const fp3_device *d25 = fp3_device_find("ecp5-25");
+  assert_non_null(d25);
+  assert_int_equal(fp3_device_lanes(d25, 1, 4, 1, &fit), 0);
 }
 
 /* The compiled program registers: the one the derived NUM_REGS makes
@@ -344,6 +407,7 @@ int main(void) {
       cmocka_unit_test(test_check_units),
       cmocka_unit_test(test_engine_load_refuses),
       cmocka_unit_test(test_derive_scenes),
+      cmocka_unit_test(test_device_lanes),
       cmocka_unit_test(test_registers_fit),
       cmocka_unit_test(test_sized_rtl),
   };

@@ -12,6 +12,7 @@
 
 #include "cliopt.h"
 #include "configure.h"
+#include "device.h"
 #include "fpenv.h"
 #include "model.h"
 #include "mscene.h"
@@ -26,7 +27,7 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 configure SCENE [--integrator NAME] [--literal]\n"
           "                     [--error-budget REL] [--steps N] [--context-per-object]\n"
-          "                     [--max-lanes L]\n"
+          "                     [--max-lanes L] [--device NAME]\n"
           "                     [-o FILE] [--json]\n"
           "\n"
           "Derive the RTL parameters of a processor sized to the scene: compile the\n"
@@ -44,7 +45,10 @@ static void usage(FILE *f) {
           "  NUM_LANES        the rest of the scene in flight: ceil(objects /\n"
           "                   NUM_CONTEXTS), at most L (--max-lanes, default %d;\n"
           "                   a lane is an adder, a multiplier and a register\n"
-          "                   bank, no scheduler logic)\n"
+          "                   bank, no scheduler logic) and at most what the\n"
+          "                   --device holds: LUT4s up to the share that routes\n"
+          "                   (%u per mille), MULT18X18D and EBR, by lane costs\n"
+          "                   measured on the chip build (docs/lanes.md)\n"
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
@@ -63,6 +67,7 @@ static void usage(FILE *f) {
           "  --steps N        integrations of the accuracy check (default 1000)\n"
           "  --context-per-object  NUM_CONTEXTS = min(objects, 64)\n"
           "  --max-lanes L    NUM_LANES at most L, 1 .. %d (default %d)\n"
+          "  --device NAME    the FPGA the build is for: %s (default: none)\n"
           "  -o FILE          write the line to FILE (atomically) instead of stdout\n"
           "  --json           the parameters and the reasons as JSON on stdout\n"
           "\n"
@@ -73,8 +78,8 @@ static void usage(FILE *f) {
           "SCENE=FILE` synthesizes the full and the sized build and compares.\n"
           "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget;\n"
           "1 the output could not be written.\n",
-          FP3_CONFIGURE_MAX_LANES, fp3_compile_integrators(), FP3_MAX_LANES,
-          FP3_CONFIGURE_MAX_LANES);
+          FP3_CONFIGURE_MAX_LANES, FP3_DEVICE_ROUTABLE_PERMILLE, fp3_compile_integrators(),
+          FP3_MAX_LANES, FP3_CONFIGURE_MAX_LANES, fp3_device_names());
 }
 
 static const char *const unit_name[FP3_CONFIGURE_UNITS] = {"add", "sub", "mul", "div", "sqrt",
@@ -94,6 +99,15 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
          o->budget, o->steps);
   printf(", \"context_per_object\": %s, \"contexts_issue\": %u",
          o->context_per_object ? "true" : "false", r->contexts_issue);
+  printf(", \"lanes_scene\": %u, \"max_lanes\": %u, \"device\": ", r->lanes_scene,
+         o->max_lanes);
+  if (o->device) {
+    fp3_json_string(stdout, o->device->name);
+    printf(", \"device_max_lanes\": %u, \"device_limit\": ", r->fit.max_lanes);
+    fp3_json_string(stdout, r->fit.limit);
+  } else {
+    printf("null, \"device_max_lanes\": null, \"device_limit\": null");
+  }
   printf(", \"make\": ");
   fp3_json_string(stdout, line);
   printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_LANES\": %u, \"NUM_REGS\": %u, "
@@ -149,11 +163,21 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
                     "/ %u instructions) = %u, at most the %zu object%s\n",
             param_text("NUM_CONTEXTS", c->num_contexts, p0, sizeof p0), r->est_later,
             r->body_insns, r->contexts_issue, r->objects, r->objects == 1 ? "" : "s");
-  fprintf(stderr, "  %-16s ceil(%zu object%s / %u contexts), at most %u (--max-lanes): "
-                  "%u object%s in flight\n",
+  fprintf(stderr, "  %-16s ceil(%zu object%s / %u contexts) = %u, at most %u (--max-lanes)",
           param_text("NUM_LANES", c->num_lanes, p0, sizeof p0), r->objects,
-          r->objects == 1 ? "" : "s", c->num_contexts, o->max_lanes,
-          c->num_contexts * c->num_lanes, c->num_contexts * c->num_lanes == 1 ? "" : "s");
+          r->objects == 1 ? "" : "s", c->num_contexts, r->lanes_scene, o->max_lanes);
+  if (o->device)
+    fprintf(stderr, " and %u (the %s holds %u: %s)", r->fit.max_lanes, o->device->part,
+            r->fit.max_lanes, r->fit.limit);
+  fprintf(stderr, ": %u object%s in flight\n", c->num_contexts * c->num_lanes,
+          c->num_contexts * c->num_lanes == 1 ? "" : "s");
+  if (o->device)
+    fprintf(stderr, "  %-16s lane model: %u fixed + %u lane 0 + %u a further lane LUT4s "
+                    "<= %u (%u per mille of %u), %u MULT18X18D a lane <= %u, 3 + %u EBR a "
+                    "lane <= %u\n",
+            "", r->fit.luts_fixed, r->fit.luts_lane0, r->fit.luts_lane, r->fit.luts_allowed,
+            FP3_DEVICE_ROUTABLE_PERMILLE, o->device->luts, r->fit.dsp_lane, o->device->dsps,
+            r->fit.ebr_lane, o->device->ebrs);
   if (r->regs_default > FP3_DEFAULT_NUM_REGS)
     fprintf(stderr, "  %-16s the fewest registers the compiler schedules the program into "
                     "(more than the default %u; no spilling)\n",
@@ -229,6 +253,14 @@ int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
                                   "lanes", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       o->max_lanes = (unsigned)k;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--device", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      o->device = fp3_device_find(v);
+      if (!o->device) {
+        fprintf(stderr, "fp3 configure: --device '%s': unknown device (known: %s)\n", v,
+                fp3_device_names());
+        return FP3_ARGS_BAD;
+      }
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
       o->context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {

@@ -26,6 +26,7 @@ void fp3_configure_defaults(fp3_configure_opts *o) {
   o->steps = 1000;
   o->context_per_object = 0;
   o->max_lanes = FP3_CONFIGURE_MAX_LANES;
+  o->device = NULL;
 }
 
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
@@ -314,7 +315,24 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   r->cfg.num_contexts = (unsigned)nc;
   /* lanes: the rest of the scene in flight beside the contexts */
   size_t nl = nc ? (nobj + nc - 1) / nc : 1;
+  r->lanes_scene = nl > FP3_MAX_LANES ? FP3_MAX_LANES : (unsigned)nl;
   if (nl > o->max_lanes) nl = o->max_lanes;
+  if (o->device) {
+    const unsigned dl = fp3_device_lanes(o->device, (unsigned)nc, r->cfg.num_regs,
+                                         (int)r->cfg.has_mul, &r->fit);
+    if (dl == 0) {
+      snprintf(msg, n, "the %s (%s) does not hold one lane of this build (%s): %u + %u "
+               "LUT4s against %u (%u per mille of its %u, the share that routes), %u "
+               "MULT18X18D of %u, %u EBR of %u",
+               o->device->part, o->device->name, r->fit.limit, r->fit.luts_fixed,
+               r->fit.luts_lane0, r->fit.luts_allowed, FP3_DEVICE_ROUTABLE_PERMILLE,
+               o->device->luts, r->fit.dsp_lane, o->device->dsps, r->fit.ebr_lane + 3u,
+               o->device->ebrs);
+      fp3_compiled_free(c);
+      return -1;
+    }
+    if (nl > dl) nl = dl;
+  }
   r->cfg.num_lanes = (unsigned)nl;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
   r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;

@@ -31,7 +31,9 @@
  *    area of the default 8);
  *  - NUM_LANES: the lanes that put the whole scene in flight beside those
  *    contexts, ceil(objects / NUM_CONTEXTS), at most opts.max_lanes
- *    (default FP3_CONFIGURE_MAX_LANES); a lane adds an adder, a
+ *    (default FP3_CONFIGURE_MAX_LANES) and, with opts.device, at most
+ *    the lanes that device holds by the lane cost model of device.h
+ *    (for this build's contexts, registers and multiplier); a lane adds an adder, a
  *    multiplier and a register bank but no scheduler logic, so lanes,
  *    not contexts, grow with the scene (docs/lanes.md); a larger scene
  *    runs in batches of NUM_CONTEXTS x NUM_LANES objects;
@@ -61,6 +63,7 @@
 #include <stdint.h>
 
 #include "compile.h"
+#include "device.h"
 #include "engine.h"
 #include "mscene.h"
 #include "objects.h"
@@ -87,10 +90,11 @@ typedef struct fp3_configure_opts {
   uint32_t steps;         /* integrations of the accuracy check (>= 1)     */
   int context_per_object; /* 1: NUM_CONTEXTS = min(objects, 64)            */
   unsigned max_lanes;     /* NUM_LANES at most (1 .. FP3_MAX_LANES)        */
+  const fp3_device *device; /* NULL, or NUM_LANES at most what it holds   */
 } fp3_configure_opts;
 
 /* integrator "rk4", literal 0, budget 1e-4, steps 1000, contexts by the
- * issue rule, max_lanes FP3_CONFIGURE_MAX_LANES. */
+ * issue rule, max_lanes FP3_CONFIGURE_MAX_LANES, no device. */
 void fp3_configure_defaults(fp3_configure_opts *o);
 
 /* What fp3_configure derived, and why. */
@@ -107,6 +111,9 @@ typedef struct fp3_configure_result {
   unsigned est_later;      /* ... each later one (one object)              */
   unsigned body_insns;     /* instructions per integration                 */
   unsigned contexts_issue; /* contexts that fill the issue slot, ceil(E/I) */
+  unsigned lanes_scene;    /* lanes that put the scene in flight,          */
+                           /* ceil(objects / NUM_CONTEXTS)                 */
+  fp3_device_fit fit;      /* with opts.device: what the lane model gave   */
   fpref_mode mode[FP3_CONFIGURE_MODES]; /* RNE, RTZ, RNE+FTZ, RTZ+FTZ       */
   double err[FP3_CONFIGURE_MODES];  /* relative error (max over objects);  */
                                     /* NAN: the host cannot run the mode   */
@@ -120,7 +127,8 @@ typedef struct fp3_configure_result {
 /* Derive the parameters for scene sc (scene_name: for the program's
  * header).  Returns 0 and *r, or -1 with a message: unknown integrator,
  * empty scene, bad options (budget not a positive finite number, steps 0,
- * max_lanes outside 1 .. FP3_MAX_LANES),
+ * max_lanes outside 1 .. FP3_MAX_LANES), a device that does not hold one
+ * lane of the build,
  * out of memory.  *compiled (if not NULL) receives the program compiled
  * for the derived NUM_REGS (free with fp3_compiled_free). */
 int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,

@@ -1,0 +1,60 @@
+/*
+ * device.c -- how many lanes an FPGA holds (device.h).
+ */
+#include "device.h"
+
+#include <string.h>
+
+/* ECP5 family data sheet (FPGA-DS-02012), table 1.1: LUT4s, 18x18
+ * multipliers, EBR SRAM blocks. */
+static const fp3_device devices[] = {
+    {"ecp5-25", "LFE5U-25F", 24288, 28, 56},
+    {"ecp5-45", "LFE5U-45F", 43848, 72, 108},
+    {"ecp5-85", "LFE5U-85F", 83640, 156, 208},
+};
+#define NDEV (sizeof devices / sizeof devices[0])
+
+/* The chip build's figures (device.h). */
+#define FIXED_LUTS 13525u  /* fp3_top alone 13,364 + fp3_axil alone 161 */
+#define FIXED_EBR 3u
+#define LANE0_LUTS 14867u
+#define LANE_LUTS 3319u
+#define LANE_EBR 8u
+#define LANE_DSP 4u        /* a binary32 product in MULT18X18D */
+#define CHIP_REGS 512u     /* 16 contexts x 32 registers */
+
+const fp3_device *fp3_device_find(const char *name) {
+  for (size_t i = 0; i < NDEV; i++)
+    if (strcmp(devices[i].name, name) == 0) return &devices[i];
+  return NULL;
+}
+
+const char *fp3_device_names(void) { return "ecp5-25, ecp5-45, ecp5-85"; }
+
+/* x * num / den rounded up */
+static unsigned scale_up(unsigned x, unsigned long long num, unsigned long long den) {
+  return (unsigned)(((unsigned long long)x * num + den - 1) / den);
+}
+
+unsigned fp3_device_lanes(const fp3_device *d, unsigned num_contexts, unsigned num_regs,
+                          int has_mul, fp3_device_fit *fit) {
+  const unsigned long long regs = (unsigned long long)num_contexts * num_regs;
+  fit->luts_fixed = FIXED_LUTS;
+  fit->luts_lane = LANE_LUTS;
+  fit->luts_lane0 = LANE_LUTS + scale_up(LANE0_LUTS - LANE_LUTS, regs, CHIP_REGS);
+  fit->ebr_lane = LANE_EBR * (unsigned)((regs + CHIP_REGS - 1) / CHIP_REGS);
+  fit->dsp_lane = has_mul ? LANE_DSP : 0;
+  fit->luts_allowed = (unsigned)((unsigned long long)d->luts * FP3_DEVICE_ROUTABLE_PERMILLE / 1000);
+  unsigned n = 0;
+  fit->limit = "LUT4s (routing)";
+  for (;;) { /* one more lane, while every limit holds */
+    const unsigned long long k = n + 1;
+    const unsigned long long luts = fit->luts_fixed + fit->luts_lane0 + (k - 1) * fit->luts_lane;
+    if (luts > fit->luts_allowed) { fit->limit = "LUT4s (routing)"; break; }
+    if (k * fit->dsp_lane > d->dsps) { fit->limit = "MULT18X18D"; break; }
+    if (FIXED_EBR + k * fit->ebr_lane > d->ebrs) { fit->limit = "EBR"; break; }
+    n++;
+  }
+  fit->max_lanes = n;
+  return n;
+}
