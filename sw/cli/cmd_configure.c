@@ -173,11 +173,11 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
           c->num_contexts * c->num_lanes == 1 ? "" : "s");
   if (o->device)
     fprintf(stderr, "  %-16s lane model: %u fixed + %u lane 0 + %u a further lane LUT4s "
-                    "<= %u (%u per mille of %u), %u MULT18X18D a lane <= %u, 3 + %u EBR a "
+                    "<= %u (%u per mille of %u), %u MULT18X18D a lane <= %u, %u + %u EBR a "
                     "lane <= %u\n",
             "", r->fit.luts_fixed, r->fit.luts_lane0, r->fit.luts_lane, r->fit.luts_allowed,
             FP3_DEVICE_ROUTABLE_PERMILLE, o->device->luts, r->fit.dsp_lane, o->device->dsps,
-            r->fit.ebr_lane, o->device->ebrs);
+            r->fit.ebr_fixed, r->fit.ebr_lane, o->device->ebrs);
   if (r->regs_default > FP3_DEFAULT_NUM_REGS)
     fprintf(stderr, "  %-16s the fewest registers the compiler schedules the program into "
                     "(more than the default %u; no spilling)\n",

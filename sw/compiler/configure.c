@@ -326,7 +326,7 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
                "MULT18X18D of %u, %u EBR of %u",
                o->device->part, o->device->name, r->fit.limit, r->fit.luts_fixed,
                r->fit.luts_lane0, r->fit.luts_allowed, FP3_DEVICE_ROUTABLE_PERMILLE,
-               o->device->luts, r->fit.dsp_lane, o->device->dsps, r->fit.ebr_lane + 3u,
+               o->device->luts, r->fit.dsp_lane, o->device->dsps, r->fit.ebr_fixed + r->fit.ebr_lane,
                o->device->ebrs);
       fp3_compiled_free(c);
       return -1;

@@ -42,6 +42,7 @@ unsigned fp3_device_lanes(const fp3_device *d, unsigned num_contexts, unsigned n
   fit->luts_fixed = FIXED_LUTS;
   fit->luts_lane = LANE_LUTS;
   fit->luts_lane0 = LANE_LUTS + scale_up(LANE0_LUTS - LANE_LUTS, regs, CHIP_REGS);
+  fit->ebr_fixed = FIXED_EBR;
   fit->ebr_lane = LANE_EBR * (unsigned)((regs + CHIP_REGS - 1) / CHIP_REGS);
   fit->dsp_lane = has_mul ? LANE_DSP : 0;
   fit->luts_allowed = (unsigned)((unsigned long long)d->luts * FP3_DEVICE_ROUTABLE_PERMILLE / 1000);
@@ -52,7 +53,7 @@ unsigned fp3_device_lanes(const fp3_device *d, unsigned num_contexts, unsigned n
     const unsigned long long luts = fit->luts_fixed + fit->luts_lane0 + (k - 1) * fit->luts_lane;
     if (luts > fit->luts_allowed) { fit->limit = "LUT4s (routing)"; break; }
     if (k * fit->dsp_lane > d->dsps) { fit->limit = "MULT18X18D"; break; }
-    if (FIXED_EBR + k * fit->ebr_lane > d->ebrs) { fit->limit = "EBR"; break; }
+    if (fit->ebr_fixed + k * fit->ebr_lane > d->ebrs) { fit->limit = "EBR"; break; }
     n++;
   }
   fit->max_lanes = n;

@@ -57,6 +57,7 @@ typedef struct fp3_device_fit {
   unsigned luts_fixed;      /* the fixed part's LUT4s                     */
   unsigned luts_lane0;      /* lane 0's LUT4s (scaled)                    */
   unsigned luts_lane;       /* each further lane's LUT4s                  */
+  unsigned ebr_fixed;       /* the fixed part's EBR                       */
   unsigned ebr_lane;        /* EBR a lane (scaled)                        */
   unsigned dsp_lane;        /* MULT18X18D a lane (0 without a multiplier) */
   unsigned luts_allowed;    /* FP3_DEVICE_ROUTABLE_PERMILLE of the LUT4s  */
