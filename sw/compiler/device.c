@@ -3,6 +3,7 @@
  */
 #include "device.h"
 
+#include <stdio.h>
 #include <string.h>
 
 /* ECP5 family data sheet (FPGA-DS-02012), table 1.1: LUT4s, 18x18
@@ -29,7 +30,16 @@ const fp3_device *fp3_device_find(const char *name) {
   return NULL;
 }
 
-const char *fp3_device_names(void) { return "ecp5-25, ecp5-45, ecp5-85"; }
+const char *fp3_device_names(void) {
+  static char names[NDEV * 16];  /* "name, name, ...", built from devices[] once */
+  if (!names[0]) {
+    size_t at = 0;
+    for (size_t i = 0; i < NDEV; i++)
+      at += (size_t)snprintf(names + at, sizeof names - at, "%s%s", i ? ", " : "",
+                             devices[i].name);
+  }
+  return names;
+}
 
 /* x * num / den rounded up */
 static unsigned scale_up(unsigned x, unsigned long long num, unsigned long long den) {
@@ -47,7 +57,6 @@ unsigned fp3_device_lanes(const fp3_device *d, unsigned num_contexts, unsigned n
   fit->dsp_lane = has_mul ? LANE_DSP : 0;
   fit->luts_allowed = (unsigned)((unsigned long long)d->luts * FP3_DEVICE_ROUTABLE_PERMILLE / 1000);
   unsigned n = 0;
-  fit->limit = "LUT4s (routing)";
   for (;;) { /* one more lane, while every limit holds */
     const unsigned long long k = n + 1;
     const unsigned long long luts = fit->luts_fixed + fit->luts_lane0 + (k - 1) * fit->luts_lane;

@@ -25,9 +25,8 @@
  * 16 contexts and optimistic above.
  *
  * A device's limit is not its LUT4 count but what nextpnr-ecp5 routes:
- * the chip build routed at 57 % of the LFE5U-85F's LUT4s (before its
- * sticky flags were staged it was 47,585 LUT4s) and 8 lanes at 67 % did
- * not (docs/lanes.md "Why 6 lanes"), so the model allows LUTs up
+ * a 6-lane build of 47,585 LUT4s, 57 % of the LFE5U-85F's, routed and
+ * 8 lanes at 67 % did not (docs/lanes.md "Why 6 lanes"), so the model allows LUTs up
  * to 57 % of the device's, and all of its MULT18X18D and EBR.  It is
  * measured on the LFE5U-85F only; the other ECP5 parts are the same
  * fabric, with the family data sheet's resource counts.
