@@ -14,7 +14,7 @@
 FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v rtl/fp_sign.v \
            rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
-           rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v rtl/fp_recur_unpack.v \
+           rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v rtl/fp_dsp_mul.v rtl/fp_recur_unpack.v \
            rtl/fp_recur_out.v
 FPU_RTL_INC := rtl/fp_recur.vh
 FPU_DIR := $(BUILD)/fpu

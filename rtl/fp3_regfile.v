@@ -626,6 +626,7 @@ module fp3_regfile #(
       // port that wrote it last; a lower port wins over a higher one), busy
       // flag busy_q[r] (the set wins over a clear).  The RAMs start at zero.
       reg  [ENTRIES-1:0] busy_q, lvt_lo_q, lvt_hi_q;
+      wire [ENTRIES-1:0] busy_d = busy_q & ~fclr | fset;
       wire [ENTRIES-1:0] hit  = h0 | h1 | h2 | h3;
       wire [ENTRIES-1:0] won1 = h1 & ~h0;
       wire [ENTRIES-1:0] won2 = h2 & ~h1 & ~h0;
@@ -633,24 +634,42 @@ module fp3_regfile #(
       always @(posedge clk_i) begin
         lvt_lo_q <= rst_i ? {ENTRIES{1'b0}} : lvt_lo_q & ~hit | won1 | won3;
         lvt_hi_q <= rst_i ? {ENTRIES{1'b0}} : lvt_hi_q & ~hit | won2 | won3;
-        busy_q   <= rst_i ? {ENTRIES{1'b0}} : busy_q & ~fclr | fset;
+        busy_q   <= rst_i ? {ENTRIES{1'b0}} : busy_d;
       end
       assign lvt_lo = lvt_lo_q;
       assign lvt_hi = lvt_hi_q;
       assign busy_o = busy_q;
-      // idle_o, a cycle late: the flags ORed in groups of 16 and registered
-      // (any_q), then joined.  (No flag set, one NOR of every flag from
-      // across the die in front of the scheduler's register, was a
-      // critical path.)
+      // idle_o, a cycle late, from a register of its own: the flags' next
+      // state ORed in groups of 16 and registered (any_q: a group's flags
+      // now), then joined and registered (idle_q: no flag in the last
+      // cycle).  Both ORs stay beside the flags, and only idle_q's one
+      // wire crosses the die to the scheduler's run control, which it
+      // enters at the start of the cycle.  (A NOR of the flags on the
+      // scheduler's side of that wire was a critical path.)  The cost is
+      // the next state's OR instead of the flags' own: the same LUTs, one
+      // flip-flop more.
       localparam integer GN = (ENTRIES + 15) / 16;
       reg [GN-1:0] any_d, any_q;
+      reg          idle_q;
       integer ai;
       always @(*) begin
         any_d = {GN{1'b0}};
-        for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_q[ai];
+        for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_d[ai];
       end
-      always @(posedge clk_i) any_q <= rst_i ? {GN{1'b0}} : any_d;
-      assign idle_o = !(|any_q);
+      always @(posedge clk_i) begin
+        any_q  <= rst_i ? {GN{1'b0}} : any_d;
+        idle_q <= rst_i || !(|any_q);
+      end
+      assign idle_o = idle_q;
+`ifdef FP3_SCHED_CHECK
+      // idle_o is exactly "no busy flag in the last cycle" (formal/sched.sby).
+      reg f_idle_past = 1'b0, f_idle_ref = 1'b1;
+      always @(posedge clk_i) begin
+        f_idle_past <= 1'b1;
+        f_idle_ref  <= rst_i || !(|busy_q);
+      end
+      always @(*) if (f_idle_past) idle_exact: assert (idle_o == f_idle_ref);
+`endif
     end else begin : g_data_only
       // Lanes 1 ..: lane 0's flags are the scoreboard, its LVT chooses.
       assign busy_o   = {ENTRIES{1'b0}};

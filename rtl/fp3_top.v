@@ -655,7 +655,19 @@ module fp3_top #(
   wire [4*(1+CW)-1:0] wb_tags = {div_valid, div_idx[XW-1:IW], mov_valid, mov_idx[XW-1:IW],
                                  mul_valid, mul_idx[XW-1:IW], add_valid, add_idx[XW-1:IW]};
   wire [5*NL-1:0]     flags_ctx;  // lane l's flags of context ctx_flg in [5l +: 5]
-  genvar fc, fl, fu;
+  // The flags that staged tags (tags, as wb_tags) and staged core flags
+  // (fl: add, mul, mov, div, 5 bits each) bring to context ctx: the OR of
+  // the units whose tag is valid and names ctx.
+  function [4:0] staged_flags(input [4*(1+CW)-1:0] tags, input [19:0] fl, input [CW-1:0] ctx);
+    integer u;
+    begin
+      staged_flags = 5'd0;
+      for (u = 0; u < 4; u = u + 1)
+        if (tags[(1+CW)*u + CW] && tags[(1+CW)*u +: CW] == ctx)
+          staged_flags = staged_flags | fl[5*u +: 5];
+    end
+  endfunction
+  genvar fc, fl;
   generate
     for (fl = 0; fl < NL; fl = fl + 1) begin : g_lane_flags
       wire [4*(1+CW)-1:0] tags_q;   // this lane's copy of wb_tags, a cycle late
@@ -671,13 +683,7 @@ module fp3_top #(
       // in_q[c]: this lane's staged flags of context c (all units' ORed)
       wire [5*NUM_CONTEXTS-1:0] in_q;
       for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_in
-        localparam [CW-1:0] FCTX = fc[CW-1:0];
-        wire [3:0] here;
-        for (fu = 0; fu < 4; fu = fu + 1) begin : g_unit
-          assign here[fu] = tags_q[(1+CW)*fu + CW] && tags_q[(1+CW)*fu +: CW] == FCTX;
-        end
-        assign in_q[5*fc +: 5] = (here[0] ? fl_q[4:0]   : 5'd0) | (here[1] ? fl_q[9:5]   : 5'd0) |
-                                 (here[2] ? fl_q[14:10] : 5'd0) | (here[3] ? fl_q[19:15] : 5'd0);
+        assign in_q[5*fc +: 5] = staged_flags(tags_q, fl_q, fc[CW-1:0]);
       end
       reg [4:0] flags_q [0:NUM_CONTEXTS-1];  // sticky exception flags of this lane, by context
       for (fc = 0; fc < NUM_CONTEXTS; fc = fc + 1) begin : g_flags
@@ -689,12 +695,7 @@ module fp3_top #(
       // The staged cycle's flags of context ctx_flg, from the staged tags
       // compared with ctx_flg itself (in_q indexed by ctx_flg would be a
       // shifter by 5 * ctx_flg, several hundred LUTs a lane).
-      wire [3:0] sel_here;
-      for (fu = 0; fu < 4; fu = fu + 1) begin : g_sel
-        assign sel_here[fu] = tags_q[(1+CW)*fu + CW] && tags_q[(1+CW)*fu +: CW] == ctx_flg;
-      end
-      wire [4:0] in_sel = (sel_here[0] ? fl_q[4:0]   : 5'd0) | (sel_here[1] ? fl_q[9:5]   : 5'd0) |
-                          (sel_here[2] ? fl_q[14:10] : 5'd0) | (sel_here[3] ? fl_q[19:15] : 5'd0);
+      wire [4:0] in_sel = staged_flags(tags_q, fl_q, ctx_flg);
 `ifdef FP3_MUTANT_FLAGS_UNSTAGED
       // Deliberately broken (formal/sched.sby:mutant_flags): the read
       // misses the staged cycle's write-backs.

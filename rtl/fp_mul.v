@@ -37,7 +37,9 @@
 //              m2b, m2c (and m2d) = the further steps of the 48-bit
 //                    product, of which the top 27 bits and a sticky bit
 //                    go on (fp_mul_prod: for L <= 9 four 12 x 12-bit
-//                    partial products in DSP blocks, no m2d; for L >= 10
+//                    partial products in DSP blocks, no m2d, for
+//                    L = 6 to 9 the registers m1b | m2a and m2a | m2b of
+//                    the product are the blocks' own; for L >= 10
 //                    an AND array and carry-chain adders, no DSP block:
 //                    Yosys maps the DSP without its registers, which
 //                    keeps the product under 150 MHz on the ECP5);
@@ -137,6 +139,10 @@ module fp_mul #(
   localparam [9:0]   BND      = bounds(LATENCY);
   localparam integer DEPTH_O  = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
   localparam integer LUT_PROD = (LATENCY >= N_LUT) ? 1 : 0;
+  // The DSP product with a register in front (m1b | m2a) and one after
+  // (m2a | m2b), L = 6 to 9: both are the DSP blocks' own (fp_mul_prod
+  // PRE = 1), which take the significands a cycle early, from m1b.
+  localparam integer DSP_REG  = ((LUT_PROD == 0) && BND[B_M2] && BND[B_M2B]) ? 1 : 0;
 
   generate
     if (LATENCY < 1) begin : g_bad_latency
@@ -322,13 +328,14 @@ module fp_mul #(
   fp_mul_prod #(
     .LUT    (LUT_PROD),
     .BND    ({BND[B_M2D], BND[B_M2C], BND[B_M2B]}),
+    .PRE    (DSP_REG),
     .SIDE_W (WP)
   ) u_prod (
     .clk_i    (clk_i),
     .rst_i    (rst_i),
     .valid_i  (s2_valid),
-    .a_i      (s2_aman),
-    .b_i      (s2_bman),
+    .a_i      ((DSP_REG != 0) ? c1b_aman : s2_aman),
+    .b_i      ((DSP_REG != 0) ? c1b_bman : s2_bman),
     .side_i   ({s2_spec, c2_spec_y, s2_spec_nv, c2_sign, c2_exp_a, c2_exp_b,
                 c2_ge2, c2_shift}),
     .valid_o  (sp_valid),

@@ -15,13 +15,23 @@
 //              the carry chain and pairs them, m2b ORs), beside the adders
 //   BND     register places (bit k set: a register): bit 0 after m2a,
 //           bit 1 after m2b, bit 2 after m2c (LUT = 1 only)
+//   PRE     0: a_i and b_i come with valid_i and side_i
+//           1 (LUT = 0 and BND bit 0 set): a_i and b_i come one cycle
+//              ahead of valid_i and side_i, and the partial products are
+//              fp_dsp_mul blocks registered at their inputs and outputs:
+//              the input registers stand for the register that the
+//              caller would put in front of this module, the output
+//              registers for BND bit 0.  On the ECP5 both are the
+//              MULT18X18D's own, so that no routing hop shares a cycle
+//              with the block's 3.93 ns.
 //   SIDE_W  bits of the side-band word (>= 1)
 //
 // Ports:
 //   clk_i     clock, rising edge
 //   rst_i     synchronous reset, active high; clears the valid bits only
 //   valid_i   valid bit entering with the operands
-//   a_i, b_i  the significands (any 24-bit values)
+//   a_i, b_i  the significands (any 24-bit values); with PRE = 1 one
+//             cycle before the valid_i and side_i that they belong to
 //   side_i    side-band word, delayed like the product
 //   valid_o   valid_i delayed
 //   top_o     bits 47:21 of a_i * b_i
@@ -29,17 +39,21 @@
 //   side_o    side_i delayed
 //
 // Timing: combinational from the inputs to the outputs apart from the
-// registers BND asks for: latency = number of bits set in BND.
+// registers BND asks for: latency = number of bits set in BND (from
+// valid_i and side_i; from a_i and b_i one more with PRE = 1).
 //
-// Why two structures: Yosys 0.23 maps `*` for the ECP5 to a MULT18X18D
-// without its internal registers, 3.93 ns from A/B to P in nextpnr's
-// speed-6 model; with clock-to-out and the two routing hops to and from
-// the block, a lone registered 12 x 12 multiply places at 141-148 MHz
-// (LFE5U-85F-6, 6 seeds), so the DSP product stays below 150 MHz at any
-// latency (fp_mul: 133-140 MHz).  The LUT structure puts one carry chain in each stage (the
-// AND gates in front of the first: a LUT level); with every register
-// place it takes 654 LUT4s, 318 CCU2C carry cells and 591 flip-flops on
-// the ECP5 (Yosys 0.23), against 7, 31, 162 and four DSP blocks.
+// Why two structures, and PRE: Yosys 0.23 maps `*` for the ECP5 to a
+// MULT18X18D without its internal registers, 3.93 ns from A/B to P in
+// nextpnr's speed-6 model; with clock-to-out and the two routing hops to
+// and from the block, a lone registered 12 x 12 multiply places at
+// 141-148 MHz (LFE5U-85F-6, 6 seeds), fp_mul with it at 133-140 MHz.
+// With PRE = 1 the blocks' own registers take the routing hops apart
+// (fp_dsp_mul): fp_mul at latency 9 places at 162.3 MHz (seed 1; its
+// critical path is then the operands' unpacking, not the product).  The
+// LUT structure puts one carry chain in each stage (the AND gates in
+// front of the first: a LUT level); with every register place it takes
+// 654 LUT4s, 318 CCU2C carry cells and 591 flip-flops on the ECP5 (Yosys
+// 0.23), against 7, 31, 162 and four DSP blocks.
 //
 // The carry-save level (LUT = 1, m2d): three addends x, y, z give
 // s = x ^ y ^ z and c = majority(x, y, z) with x + y + z = s + 2c (the
@@ -49,6 +63,7 @@
 module fp_mul_prod #(
   parameter integer   LUT    = 0,      // 0: DSP partial products, 1: LUT tree
   parameter [2:0]     BND    = 3'b000, // register after m2a, m2b, m2c
+  parameter integer   PRE    = 0,      // 1: operands a cycle early, DSP registers
   parameter integer   SIDE_W = 1       // side-band bits
 ) (
   input  wire              clk_i,
@@ -68,31 +83,50 @@ module fp_mul_prod #(
       // Elaboration error on purpose: the DSP structure has no m2d.
       fp_mul_prod_error_BND2_needs_LUT u_error ();
     end
+    if ((PRE != 0) && ((LUT != 0) || !BND[0])) begin : g_bad_pre
+      // Elaboration error on purpose: the registered blocks are the DSP
+      // structure's m2a with the register after it.
+      fp_mul_prod_error_PRE_needs_LUT0_and_BND0 u_error ();
+    end
 
     if (LUT == 0) begin : g_dsp
       // -----------------------------------------------------------------
       // m2a: partial products of the 12-bit halves
       // -----------------------------------------------------------------
-      wire [23:0] c_ll = a_i[11:0]  * b_i[11:0];
-      wire [23:0] c_lh = a_i[11:0]  * b_i[23:12];
-      wire [23:0] c_hl = a_i[23:12] * b_i[11:0];
-      wire [23:0] c_hh = a_i[23:12] * b_i[23:12];
-
-      localparam integer WA = SIDE_W + 4 * 24;
-      wire          va;
-      wire [WA-1:0] da;
-      fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
-        .clk_i   (clk_i),
-        .rst_i   (rst_i),
-        .valid_i (valid_i),
-        .data_i  ({side_i, c_ll, c_lh, c_hl, c_hh}),
-        .valid_o (va),
-        .data_o  (da)
-      );
-
       wire [SIDE_W-1:0] sa;
       wire [23:0]       ll, lh, hl, hh;
-      assign {sa, ll, lh, hl, hh} = da;
+      wire              va;
+      if (PRE != 0) begin : g_pre
+        // The products in registered blocks (latency 2 from a_i, b_i;
+        // 1 from valid_i, side_i), the side band in one fabric register.
+        fp_dsp_mul #(.W(12)) u_ll (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[11:0]),  .p_o(ll));
+        fp_dsp_mul #(.W(12)) u_lh (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[23:12]), .p_o(lh));
+        fp_dsp_mul #(.W(12)) u_hl (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[11:0]),  .p_o(hl));
+        fp_dsp_mul #(.W(12)) u_hh (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[23:12]), .p_o(hh));
+        fp_pipe #(.WIDTH(SIDE_W), .DEPTH(1)) u_pipe_a (
+          .clk_i   (clk_i),
+          .rst_i   (rst_i),
+          .valid_i (valid_i),
+          .data_i  (side_i),
+          .valid_o (va),
+          .data_o  (sa)
+        );
+      end else begin : g_comb
+        wire [23:0] c_ll = a_i[11:0]  * b_i[11:0];
+        wire [23:0] c_lh = a_i[11:0]  * b_i[23:12];
+        wire [23:0] c_hl = a_i[23:12] * b_i[11:0];
+        wire [23:0] c_hh = a_i[23:12] * b_i[23:12];
+
+        localparam integer WA = SIDE_W + 4 * 24;
+        fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
+          .clk_i   (clk_i),
+          .rst_i   (rst_i),
+          .valid_i (valid_i),
+          .data_i  ({side_i, c_ll, c_lh, c_hl, c_hh}),
+          .valid_o (va),
+          .data_o  ({sa, ll, lh, hl, hh})
+        );
+      end
 
       // -----------------------------------------------------------------
       // m2b: the two middle partial products summed

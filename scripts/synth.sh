@@ -34,9 +34,11 @@ case "$flow" in
   xc2v|xc7) map="synth_xilinx -flatten -family $flow -top $top"
             write="write_edif -pvector bra $base.edf" ;;
   ecp5)     # FP3_ECP5_EBR: fp3_ram's two-cycle read as block RAM with
-            # its output register (rtl/fp3_ram.v).
-            # The ECP5 cells it instantiates, for `hierarchy -check`.
-            defines="-DFP3_ECP5_EBR"; cells="read_verilog -lib +/ecp5/cells_bb.v"
+            # its output register (rtl/fp3_ram.v).  FP3_ECP5_DSP:
+            # fp_dsp_mul as a MULT18X18D with its input and output
+            # registers (rtl/fp_dsp_mul.v).
+            # The ECP5 cells they instantiate, for `hierarchy -check`.
+            defines="-DFP3_ECP5_EBR -DFP3_ECP5_DSP"; cells="read_verilog -lib +/ecp5/cells_bb.v"
             # synth_ecp5 up to its check step, then that step without
             # `autoname`, which takes many minutes on the multi-context
             # register file (Yosys 0.23) and only renames cells (the same

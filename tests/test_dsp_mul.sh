@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# test_dsp_mul.sh -- fp_dsp_mul's ECP5 form (a MULT18X18D with its input
+# and output registers, FP3_ECP5_DSP: rtl/fp_dsp_mul.v), which only
+# synthesis sees:
+#   - the ECP5 flow (scripts/synth.sh) maps fp_dsp_mul, W = 12 and 18, to
+#     one MULT18X18D with REG_INPUTA_CLK, REG_INPUTB_CLK and REG_OUTPUT_CLK
+#     on CLK0 and no flip-flop or LUT beside it;
+#   - that netlist, simulated by Icarus with a model of the block
+#     (sim/ecp5_mult18x18d.v), multiplies as the behavioural form does,
+#     every cycle for 20,000 cycles (sim/tb_dsp_mul.v);
+#   - fp_mul takes the registered blocks at MUL_LATENCY 6 to 9 (four
+#     MULT18X18D, all three registers on) and not at 5 (four, none on)
+#     nor at 10 (the LUT product: none).
+set -euo pipefail
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+synth() { # OUTNAME TOP PARAM... -- FILES
+  bash scripts/synth.sh "$tmp" "$@" >"$tmp/synth.log" 2>&1 || {
+    tail -20 "$tmp/synth.log"; echo "FAIL: scripts/synth.sh ecp5 $2"; exit 1; }
+}
+count() { awk -v c="$1" '$1 == c { n = $2 } END { print n + 0 }' "$2"; }
+regs_on() { grep -c "$1(\"CLK0\")" "$2" || true; }
+
+for w in 12 18; do
+  synth fp_dsp_mul ecp5 W=$w rtl/fp_dsp_mul.v
+  base="$tmp/fp_dsp_mul_W-${w}_ecp5"
+  st="${base}_stat.txt"
+  [ "$(count MULT18X18D "$st")" = 1 ] && [ "$(count TRELLIS_FF "$st")" = 0 ] &&
+    [ "$(count LUT4 "$st")" = 0 ] || {
+    cat "$st"; echo "FAIL: W = $w is not one MULT18X18D alone"; exit 1; }
+  for r in REG_INPUTA_CLK REG_INPUTB_CLK REG_OUTPUT_CLK; do
+    [ "$(regs_on $r "$base.v")" = 1 ] || {
+      grep -n "REG_" "$base.v"; echo "FAIL: W = $w: $r is not CLK0"; exit 1; }
+  done
+  echo "PASS: scripts/synth.sh ecp5 maps fp_dsp_mul W = $w to one MULT18X18D, input and output registers on"
+
+  # The netlist, its module renamed beside the RTL's, simulated.
+  sed 's/^module fp_dsp_mul(/module fp_dsp_mul_ecp5(/' "$base.v" > "$tmp/net.v"
+  grep -q "^module fp_dsp_mul_ecp5(" "$tmp/net.v" || { echo "FAIL: no module fp_dsp_mul in the netlist"; exit 1; }
+  iverilog -g2005 -Irtl -P tb_dsp_mul.W=$w -s tb_dsp_mul -o "$tmp/tb.vvp" rtl/fp_dsp_mul.v \
+    "$tmp/net.v" sim/ecp5_mult18x18d.v sim/tb_dsp_mul.v 2>"$tmp/iv.log" || {
+    cat "$tmp/iv.log"; echo "FAIL: iverilog on the MULT18X18D netlist"; exit 1; }
+  vvp -n "$tmp/tb.vvp" +cycles=20000 +seed=$((w + 5)) | tee "$tmp/sim.log" | tail -6
+  grep -q "^PASS" "$tmp/sim.log" || { echo "FAIL: the MULT18X18D form multiplies differently"; exit 1; }
+done
+
+# fp_mul's product by latency: registered blocks from 6 to 9 only.
+fp_mul_rtl=(rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v rtl/fp_round_pack.v rtl/fp_lzc.v
+            rtl/fp_shr_sticky.v rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v rtl/fp_dsp_mul.v)
+for spec in 5:4:0 6:4:4 9:4:4 10:0:0; do
+  IFS=: read -r lat blocks on <<<"$spec"
+  synth fp_mul ecp5 LATENCY=$lat "${fp_mul_rtl[@]}"
+  base="$tmp/fp_mul_LATENCY-${lat}_ecp5"
+  got_blocks=$(count MULT18X18D "${base}_stat.txt")
+  got_on=$(regs_on REG_OUTPUT_CLK "$base.v")
+  got_in=$(regs_on REG_INPUTA_CLK "$base.v")
+  [ "$got_blocks" = "$blocks" ] && [ "$got_on" = "$on" ] && [ "$got_in" = "$on" ] || {
+    echo "FAIL: fp_mul LATENCY = $lat: $got_blocks MULT18X18D, $got_in/$got_on with input/output" \
+         "registers; want $blocks, $on/$on"; exit 1; }
+  echo "PASS: fp_mul LATENCY = $lat: $blocks MULT18X18D, $on with their input and output registers"
+done
