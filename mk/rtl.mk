@@ -58,10 +58,10 @@ RTL_AXIL_CONFIGS := fmax
 # the LFE5U-85F (mk/pnr.mk CHIP=ecp5-85 places the same parameters).  16
 # contexts hide the build for clock rate's latencies (8 leave the issue
 # slot idle: 1.23 times the issue bound; f16 below).  Its multiplier is in
-# MULT18X18D (MUL_LATENCY 9: fp_mul_prod LUT = 0), which the lanes' clock
-# (about 80-90 MHz) leaves far from the block's 141-148 MHz cap, and which
-# saves about 1,050 LUT4s a lane.  The limit is routing, not a resource:
-# 6 lanes (47,585 LUT4s, 57 %) route; 8 (55,913, 67 %) do not
+# MULT18X18D with the blocks' own input and output registers (MUL_LATENCY
+# 9: fp_mul_prod LUT = 0, PRE = 1; fp_mul alone 162 MHz), which saves
+# about 1,050 LUT4s a lane against the LUT product.  The limit is routing, not a resource:
+# 6 lanes (46,687 LUT4s, 56 %) route; 8 (55,913, 67 %) do not
 # (docs/lanes.md "Chip build").  The chip build and f16 leave out the
 # div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
 # about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;

@@ -645,8 +645,8 @@ module fp3_regfile #(
       // cycle).  Both ORs stay beside the flags, and only idle_q's one
       // wire crosses the die to the scheduler's run control, which it
       // enters at the start of the cycle.  (A NOR of the flags on the
-      // scheduler's side of that wire was a critical path.)  The cost is
-      // the next state's OR instead of the flags' own: the same LUTs, one
+      // scheduler's side of that wire was a critical path.)  The cost:
+      // the ORs take the flags' next state instead of the flags, and one
       // flip-flop more.
       localparam integer GN = (ENTRIES + 15) / 16;
       reg [GN-1:0] any_d, any_q;

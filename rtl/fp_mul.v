@@ -39,10 +39,10 @@
 //                    go on (fp_mul_prod: for L <= 9 four 12 x 12-bit
 //                    partial products in DSP blocks, no m2d, for
 //                    L = 6 to 9 the registers m1b | m2a and m2a | m2b of
-//                    the product are the blocks' own; for L >= 10
-//                    an AND array and carry-chain adders, no DSP block:
-//                    Yosys maps the DSP without its registers, which
-//                    keeps the product under 150 MHz on the ECP5);
+//                    the product are the blocks' own (fp_dsp_mul; Yosys
+//                    maps `*` without them, under 150 MHz on the ECP5);
+//                    for L >= 10 an AND array and carry-chain adders, no
+//                    DSP block);
 //              m3a = one-place normalisation and the denormalisation of
 //                    tiny results, shifts of 2 to 30 places with sticky
 //                    (fp_shr_sticky);
