@@ -44,11 +44,11 @@ for w in 12 18; do
 done
 
 # fp_mul's product by latency: registered blocks from 6 to 9 only.
-fp_mul_rtl=(rtl/fp_mul.v rtl/fp_pipe.v rtl/fp_round.v rtl/fp_round_pack.v rtl/fp_lzc.v
-            rtl/fp_shr_sticky.v rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v rtl/fp_dsp_mul.v)
+# (every RTL file read, as make synth reads them: no second list of
+# fp_mul's submodules to keep beside mk/fpu.mk's)
 for spec in 5:4:0 6:4:4 9:4:4 10:0:0; do
   IFS=: read -r lat blocks on <<<"$spec"
-  synth fp_mul ecp5 LATENCY=$lat "${fp_mul_rtl[@]}"
+  synth fp_mul ecp5 LATENCY=$lat rtl/*.v
   base="$tmp/fp_mul_LATENCY-${lat}_ecp5"
   got_blocks=$(count MULT18X18D "${base}_stat.txt")
   got_on=$(regs_on REG_OUTPUT_CLK "$base.v")
