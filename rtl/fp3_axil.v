@@ -125,8 +125,9 @@ module fp3_axil #(
   reg                ar_valid_q, ar_valid_d;
   reg  [WA_BITS-1:0] ar_addr_q,  ar_addr_d;
   // The host port's read data arrive RD_CYCLES after the address: 1, or 5
-  // with FMAX_PIPE (its input register and the core's four read cycles).
-  localparam integer RD_CYCLES = FMAX_PIPE != 0 ? 5 : 1;
+  // with FMAX_PIPE (its input register and the core's four read cycles),
+  // and one more with lanes (fp3_top "Host port").
+  localparam integer RD_CYCLES = (FMAX_PIPE != 0 ? 5 : 1) + (NUM_LANES > 1 ? 1 : 0);
   reg  [RD_CYCLES-1:0] rd_pend_q, rd_pend_d;  // a host-port read 1 .. RD_CYCLES cycles ago
   reg                rd_err_q,   rd_err_d;    // ... for an address answered SLVERR
   reg                r_valid_q,  r_valid_d;

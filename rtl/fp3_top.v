@@ -166,6 +166,13 @@ module fp3_top #(
   localparam integer PICK  = 2 * FMAX_PIPE;  // pick stages
   localparam integer READ  = 1 + 3 * FMAX_PIPE;  // operand-read stages, host read cycles
   localparam integer AHEAD = PICK + READ;    // write-back announcement
+  // With lanes, the broadcast stages (fp3_lane IN_STAGES, OUT_STAGES,
+  // EQ_STAGE; "Lanes" above): BC registers at lane 0's inputs, 2 BC at the
+  // other lanes' (lane 0's LVT choice reaches them through one more), the
+  // results of every lane LD cycles after the tag lines name them, and the
+  // beq compare registered in the lane (BC).
+  localparam integer BC = (NUM_LANES > 1) ? 1 : 0;
+  localparam integer LD = 2 * BC;
   // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
   localparam integer MOV_LATENCY = 1 + PICK;
@@ -333,7 +340,7 @@ module fp3_top #(
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
                   .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
                   .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
-                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD), .RUN_COPIES(NL)) u_sched (
+                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD + LD), .RUN_COPIES(NL)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
@@ -405,6 +412,19 @@ module fp3_top #(
   wire [(1<<XW)*NL-1:0] busy_l;
   wire [NL-1:0]    idle_l;
   wire [4*NL-1:0]  lvt_a_l, lvt_b_l;                 // LVT choices (lane 0's used)
+  wire [3:0]       lvt_a_bc, lvt_b_bc;               // ... as lanes 1 .. take it
+  generate
+    if (BC != 0) begin : g_lvt_stage
+      // Lanes 1 .. run a cycle behind lane 0: its choice, registered.
+      fp3_keep #(.W(8)) u_lvt (
+        .clk_i (clk_i),
+        .d_i   ({lvt_a_l[3:0], lvt_b_l[3:0]}),
+        .q_o   ({lvt_a_bc, lvt_b_bc})
+      );
+    end else begin : g_lvt_now
+      assign {lvt_a_bc, lvt_b_bc} = {lvt_a_l[3:0], lvt_b_l[3:0]};
+    end
+  endgenerate
   // The read stage's operation, for every lane (below)
   wire          rd_valid, rd_sub, rd_imm, rd_beq;
   wire [2:0]    rd_sop;
@@ -419,7 +439,9 @@ module fp3_top #(
                  .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
                  .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND),
                  .FTZ(FTZ), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL),
-                 .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN)) u_lane (
+                 .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN),
+                 .IN_STAGES(ln == 0 ? BC : 2 * BC), .OUT_STAGES(ln == 0 ? BC : 0),
+                 .EQ_STAGE(BC), .HOST_STAGES(ln == 0 ? 0 : BC)) u_lane (
         .clk_i           (clk_i),
         .rst_i           (rst_i),
         .ra_i            (ra),
@@ -460,8 +482,8 @@ module fp3_top #(
         .idle_o          (idle_l[ln]),
         .lvt_a_o         (lvt_a_l[4*ln +: 4]),
         .lvt_b_o         (lvt_b_l[4*ln +: 4]),
-        .lvt_a_i         (lvt_a_l[3:0]),
-        .lvt_b_i         (lvt_b_l[3:0]),
+        .lvt_a_i         (lvt_a_bc),
+        .lvt_b_i         (lvt_b_bc),
         .valid_i         (rd_valid),
         .unit_i          (rd_unit),
         .sub_i           (rd_sub),
@@ -618,17 +640,48 @@ module fp3_top #(
     .wb_idx_o      (mov_idx)
   );
 
+  // ---- the write-backs in the lanes' time --------------------------------
+  // The tag lines LD cycles late: the cycle in which the lanes' results
+  // (fp3_lane {add,mul,mov,div}_data_o) are those the tags name, for the
+  // trace port and the sticky flags.
+  wire          lt_add_valid, lt_mul_valid, lt_mov_valid, lt_div_valid;
+  wire [XW-1:0] lt_add_idx, lt_mul_idx, lt_mov_idx, lt_div_idx;
+  fp_pipe #(.WIDTH(XW), .DEPTH(LD)) u_lt_add (
+    .clk_i (clk_i), .rst_i (rst_i), .valid_i (add_valid), .data_i (add_idx),
+    .valid_o (lt_add_valid), .data_o (lt_add_idx));
+  fp_pipe #(.WIDTH(XW), .DEPTH(LD)) u_lt_mul (
+    .clk_i (clk_i), .rst_i (rst_i), .valid_i (mul_valid), .data_i (mul_idx),
+    .valid_o (lt_mul_valid), .data_o (lt_mul_idx));
+  fp_pipe #(.WIDTH(XW), .DEPTH(LD)) u_lt_mov (
+    .clk_i (clk_i), .rst_i (rst_i), .valid_i (mov_valid), .data_i (mov_idx),
+    .valid_o (lt_mov_valid), .data_o (lt_mov_idx));
+  fp_pipe #(.WIDTH(XW), .DEPTH(LD)) u_lt_div (
+    .clk_i (clk_i), .rst_i (rst_i), .valid_i (div_valid), .data_i (div_idx),
+    .valid_o (lt_div_valid), .data_o (lt_div_idx));
+
   // ---- branch resolution -------------------------------------------------
   // A beq's operands, read like any others, are compared in each lane (a
-  // 32-bit equality of bit patterns: fp3_lane eq_o) and the outcome
-  // registered here: taken only if equal in every lane.  The scheduler
-  // sees it READ + 1 cycles after the issue, its context decoded.
+  // 32-bit equality of bit patterns: fp3_lane eq_o, LD + BC cycles after
+  // the read stage) and the outcome registered here: taken only if equal
+  // in every lane.  The scheduler sees it READ + 1 + LD + BC cycles after
+  // the issue, its context decoded.
+  wire          bq_beq;
+  wire [CW-1:0] bq_ctx;
+  wire [AW-1:0] bq_target;
+  fp_pipe #(.WIDTH(CW + AW), .DEPTH(LD + BC)) u_br (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (rd_beq),
+    .data_i  ({rd_ctx, rd_immval[AW-1:0]}),
+    .valid_o (bq_beq),
+    .data_o  ({bq_ctx, bq_target})
+  );
   integer bc;
   always @(posedge clk_i) begin
     for (bc = 0; bc < NUM_CONTEXTS; bc = bc + 1)
-      br_q[bc] <= !rst_i && rd_beq && rd_ctx == bc[CW-1:0];
+      br_q[bc] <= !rst_i && bq_beq && bq_ctx == bc[CW-1:0];
     br_taken_q  <= &eq_l;
-    br_target_q <= rd_immval[AW-1:0];
+    br_target_q <= bq_target;
   end
 
   // ---- sticky exception flags of the run, per context and lane -------------
@@ -652,8 +705,9 @@ module fp3_top #(
   // CW) + 20 a lane).  The host's FLAGS read ORs the staged cycle into the
   // array (flags_ctx), so it sees every write-back up to the previous
   // cycle, as if the flags took their inputs directly.
-  wire [4*(1+CW)-1:0] wb_tags = {div_valid, div_idx[XW-1:IW], mov_valid, mov_idx[XW-1:IW],
-                                 mul_valid, mul_idx[XW-1:IW], add_valid, add_idx[XW-1:IW]};
+  wire [4*(1+CW)-1:0] wb_tags = {lt_div_valid, lt_div_idx[XW-1:IW], lt_mov_valid,
+                                 lt_mov_idx[XW-1:IW], lt_mul_valid, lt_mul_idx[XW-1:IW],
+                                 lt_add_valid, lt_add_idx[XW-1:IW]};
   wire [5*NL-1:0]     flags_ctx;  // lane l's flags of context ctx_flg in [5l +: 5]
   // The flags that staged tags (tags, as wb_tags) and staged core flags
   // (fl: add, mul, mov, div, 5 bits each) bring to context ctx: the OR of
@@ -810,7 +864,7 @@ module fp3_top #(
   // registers are delayed to match.
   wire [31:0] rdata_q;
   wire        reg_read_q;
-  fp_pipe #(.WIDTH(32), .DEPTH(READ - HSPLIT)) u_host_read (
+  fp_pipe #(.WIDTH(32), .DEPTH(READ - HSPLIT + BC)) u_host_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (hr_reg_w),
@@ -828,21 +882,21 @@ module fp3_top #(
   assign tr_issue_ctx_o  = {{(6-CW){1'b0}}, issue_ctx};
   assign tr_issue_unit_o = issue_unit;
   assign tr_endi_o       = endi;
-  assign tr_add_valid_o  = add_valid;
-  assign tr_add_ctx_o    = {{(6-CW){1'b0}}, add_idx[XW-1:IW]};
-  assign tr_add_reg_o    = {{(8-IW){1'b0}}, add_idx[IW-1:0]};
+  assign tr_add_valid_o  = lt_add_valid;
+  assign tr_add_ctx_o    = {{(6-CW){1'b0}}, lt_add_idx[XW-1:IW]};
+  assign tr_add_reg_o    = {{(8-IW){1'b0}}, lt_add_idx[IW-1:0]};
   assign tr_add_data_o   = add_data_l;
-  assign tr_mul_valid_o  = mul_valid;
-  assign tr_mul_ctx_o    = {{(6-CW){1'b0}}, mul_idx[XW-1:IW]};
-  assign tr_mul_reg_o    = {{(8-IW){1'b0}}, mul_idx[IW-1:0]};
+  assign tr_mul_valid_o  = lt_mul_valid;
+  assign tr_mul_ctx_o    = {{(6-CW){1'b0}}, lt_mul_idx[XW-1:IW]};
+  assign tr_mul_reg_o    = {{(8-IW){1'b0}}, lt_mul_idx[IW-1:0]};
   assign tr_mul_data_o   = mul_data_l;
-  assign tr_mov_valid_o  = mov_valid;
-  assign tr_mov_ctx_o    = {{(6-CW){1'b0}}, mov_idx[XW-1:IW]};
-  assign tr_mov_reg_o    = {{(8-IW){1'b0}}, mov_idx[IW-1:0]};
+  assign tr_mov_valid_o  = lt_mov_valid;
+  assign tr_mov_ctx_o    = {{(6-CW){1'b0}}, lt_mov_idx[XW-1:IW]};
+  assign tr_mov_reg_o    = {{(8-IW){1'b0}}, lt_mov_idx[IW-1:0]};
   assign tr_mov_data_o   = mov_data_l;
-  assign tr_div_valid_o  = div_valid;
-  assign tr_div_ctx_o    = {{(6-CW){1'b0}}, div_idx[XW-1:IW]};
-  assign tr_div_reg_o    = {{(8-IW){1'b0}}, div_idx[IW-1:0]};
+  assign tr_div_valid_o  = lt_div_valid;
+  assign tr_div_ctx_o    = {{(6-CW){1'b0}}, lt_div_idx[XW-1:IW]};
+  assign tr_div_reg_o    = {{(8-IW){1'b0}}, lt_div_idx[IW-1:0]};
   assign tr_div_data_o   = div_data_l;
 
   // Host address bits that select windows but are not register indices.
@@ -859,10 +913,10 @@ module fp3_top #(
     for (fk = 0; fk < NUM_CONTEXTS; fk = fk + 1) begin
       if (rst_i || fclr_q) fref_q[fk] <= {5*NL{1'b0}};
       else fref_q[fk] <= fref_q[fk] |
-                         (add_valid && add_idx[XW-1:IW] == fk[CW-1:0] ? add_flags_l : {5*NL{1'b0}}) |
-                         (mul_valid && mul_idx[XW-1:IW] == fk[CW-1:0] ? mul_flags_l : {5*NL{1'b0}}) |
-                         (mov_valid && mov_idx[XW-1:IW] == fk[CW-1:0] ? mov_flags_l : {5*NL{1'b0}}) |
-                         (div_valid && div_idx[XW-1:IW] == fk[CW-1:0] ? div_flags_l : {5*NL{1'b0}});
+                         (lt_add_valid && lt_add_idx[XW-1:IW] == fk[CW-1:0] ? add_flags_l : {5*NL{1'b0}}) |
+                         (lt_mul_valid && lt_mul_idx[XW-1:IW] == fk[CW-1:0] ? mul_flags_l : {5*NL{1'b0}}) |
+                         (lt_mov_valid && lt_mov_idx[XW-1:IW] == fk[CW-1:0] ? mov_flags_l : {5*NL{1'b0}}) |
+                         (lt_div_valid && lt_div_idx[XW-1:IW] == fk[CW-1:0] ? div_flags_l : {5*NL{1'b0}});
     end
   end
   reg f_flags_past = 1'b0;

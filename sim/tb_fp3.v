@@ -75,7 +75,9 @@ module tb_fp3 #(
   localparam integer IW       = (NUM_REGS <= 2) ? 1 : $clog2(NUM_REGS);  // as fp3_top
   localparam integer MAX_AM   = ADD_LATENCY > MUL_LATENCY ? ADD_LATENCY : MUL_LATENCY;
   localparam integer MAX_LAT  = MAX_AM > DIV_LATENCY ? MAX_AM : DIV_LATENCY;
-  localparam integer READ     = 1 + 3 * FMAX_PIPE;   // host read cycles, operand-read stages
+  localparam integer READ     = 1 + 3 * FMAX_PIPE;   // operand-read stages
+  localparam integer LD       = NUM_LANES > 1 ? 2 : 0; // lanes: their broadcast stages (fp3_top LD)
+  localparam integer HREAD    = READ + (NUM_LANES > 1 ? 1 : 0);   // host read cycles
   localparam integer RUN_WORDS = 16;                 // run.hex layout
   localparam integer R_MAGIC = 0, R_VERSION = 1, R_NWORDS = 2, R_NUM_REGS = 3,
                      R_STEPS = 4, R_ERROR = 5, R_FAULT_PC = 6, R_STEPS_DONE = 7,
@@ -226,15 +228,17 @@ module tb_fp3 #(
   wire [31:0]    wbn1_x = dut.mula_idx;
   wire [31:0]    wbn2_x = dut.mova_idx;
   // Issued add/sub and mul operations, bit k: issued k + 1 cycles ago; an
-  // operation is in core stage s READ + s + 1 cycles after its issue.
-  reg [READ+ADD_LATENCY-1:0] add_line = {(READ+ADD_LATENCY){1'b0}};
-  reg [READ+MUL_LATENCY-1:0] mul_line = {(READ+MUL_LATENCY){1'b0}};
+  // operation is in core stage s READ + LD + s + 1 cycles after its issue
+  // (the last lane's cores: LD broadcast stages behind the scheduler).
+  localparam integer RL = READ + LD;
+  reg [RL+ADD_LATENCY-1:0] add_line = {(RL+ADD_LATENCY){1'b0}};
+  reg [RL+MUL_LATENCY-1:0] mul_line = {(RL+MUL_LATENCY){1'b0}};
   always @(posedge clk) begin
-    add_line <= {add_line[READ+ADD_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_ADD};
-    mul_line <= {mul_line[READ+MUL_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_MUL};
+    add_line <= {add_line[RL+ADD_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_ADD};
+    mul_line <= {mul_line[RL+MUL_LATENCY-2:0], tr_issue && tr_issue_unit == UNIT_MUL};
   end
-  wire [ADD_LATENCY-1:0] dbg_add_pipe = add_line[READ+ADD_LATENCY-1:READ];  // bit s: stage s
-  wire [MUL_LATENCY-1:0] dbg_mul_pipe = mul_line[READ+MUL_LATENCY-1:READ];
+  wire [ADD_LATENCY-1:0] dbg_add_pipe = add_line[RL+ADD_LATENCY-1:RL];  // bit s: stage s
+  wire [MUL_LATENCY-1:0] dbg_mul_pipe = mul_line[RL+MUL_LATENCY-1:RL];
   genvar gs;
   generate
     // A waiting context's hazard, as the scheduler's ready step sees it: a
@@ -493,14 +497,14 @@ module tb_fp3 #(
     end
   endtask
 
-  task host_read;  // data for addr is registered: valid READ edges later
+  task host_read;  // data for addr is registered: valid HREAD edges later
     input  [11:0] addr;
     output [31:0] data;
     begin
       @(negedge clk);
       host_we = 1'b0;
       host_addr = addr;
-      repeat (READ) @(posedge clk);
+      repeat (HREAD) @(posedge clk);
       #1 data = host_rdata;
     end
   endtask

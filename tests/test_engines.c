@@ -1180,15 +1180,16 @@ static void test_host_lane(void **state) {
   fp3_model *m = ops->create(NULL);
   assert_non_null(m);
   fp3_model_in in = {1, 0, 0};
+  const unsigned rc = 1 + FP3_LANES_HOST_READ_CYCLES;   /* the host port's read cycles */
 #define HOST_WRITE(a, v) (in.addr = (uint16_t)(a), in.wdata = (uint32_t)(v), ops->cycle(m, &in, NULL))
-  assert_int_equal(model_read(ops, m, 1, FP3_HR_INFO2) >> 24, 4);
-  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 0);
+  assert_int_equal(model_read(ops, m, rc, FP3_HR_INFO2) >> 24, 4);
+  assert_int_equal(model_read(ops, m, rc, FP3_HR_LANE), 0);
   HOST_WRITE(FP3_HR_LANE, 3);
-  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  assert_int_equal(model_read(ops, m, rc, FP3_HR_LANE), 3);
   HOST_WRITE(FP3_HR_LANE, 4);
-  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  assert_int_equal(model_read(ops, m, rc, FP3_HR_LANE), 3);
   HOST_WRITE(FP3_HR_LANE, 0xFFFFFFFFu);
-  assert_int_equal(model_read(ops, m, 1, FP3_HR_LANE), 3);
+  assert_int_equal(model_read(ops, m, rc, FP3_HR_LANE), 3);
   for (unsigned c = 0; c < 8; c++)
     for (unsigned l = 0; l < 4; l++) {
       HOST_WRITE(FP3_HR_CTX, c);
@@ -1199,8 +1200,8 @@ static void test_host_lane(void **state) {
     for (unsigned l = 0; l < 4; l++) {
       HOST_WRITE(FP3_HR_CTX, c);
       HOST_WRITE(FP3_HR_LANE, l);
-      assert_int_equal(model_read(ops, m, 1, FP3_HR_REG_BASE + 5), 0x1000u * c + l + 1);
-      assert_int_equal(model_read(ops, m, 1, FP3_HR_REG_BASE + 4), 0);
+      assert_int_equal(model_read(ops, m, rc, FP3_HR_REG_BASE + 5), 0x1000u * c + l + 1);
+      assert_int_equal(model_read(ops, m, rc, FP3_HR_REG_BASE + 4), 0);
     }
 #undef HOST_WRITE
   ops->destroy(m);

@@ -38,7 +38,7 @@ typedef struct rtl_engine {
   fp3_ctx_status cs[FP3_MAX_CONTEXTS * FP3_MAX_LANES]; /* [slot], of the last run */
   unsigned ctx_sel;              /* CTX as last written (UINT_MAX: unknown) */
   unsigned lane_sel;             /* LANE as last written (UINT_MAX: unknown) */
-  unsigned read_cycles;          /* host-port read latency, 1 + 3 FMAX_PIPE */
+  unsigned read_cycles;          /* host-port read latency, 1 + 3 FMAX_PIPE (+ 1 with lanes) */
   int win_set;                   /* waveform window, in cycles of a run */
   uint64_t win_first, win_count;
 } rtl_engine;
@@ -141,7 +141,8 @@ static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
  * waiting at most the longest latency or a beq's resolution.  Exceeding it
  * means the machine hung. */
 static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
-  const uint64_t extra = c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0;
+  const uint64_t extra = (c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0) +
+                         (c->num_lanes > 1 ? FP3_LANES_BEQ_CYCLES : 0);
   unsigned longest = c->add_latency > c->mul_latency ? c->add_latency : c->mul_latency;
   if (c->div_latency > longest) longest = c->div_latency;
   uint64_t per_insn = (uint64_t)longest + 2 + extra;
@@ -295,7 +296,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->mops = model_ops;
   r->ctx_sel = UINT_MAX;
   r->lane_sel = UINT_MAX;
-  r->read_cycles = 4; /* the longest, until INFO1 tells */
+  r->read_cycles = 5; /* the longest, until INFO1 and INFO2 tell */
   r->model = r->mops->create(trace_path);
   if (!r->model) {
     free(r);
@@ -303,11 +304,13 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   }
   r->base.ops = &rtl_ops;
   /* The configuration the model was built with, from its INFO registers;
-   * INFO1 first, which says how long the others take to read. */
+   * INFO1 and INFO2 first, which say how long the others take to read:
+   * 1 + 3 FMAX_PIPE cycles, and one more with lanes (fp3_top "Host
+   * port"). */
   uint32_t info1 = host_read(r, FP3_HR_INFO1);
-  r->read_cycles = 1 + 3 * ((info1 >> 18) & 1);
-  uint32_t info0 = host_read(r, FP3_HR_INFO0);
   const uint32_t info2 = host_read(r, FP3_HR_INFO2);
+  r->read_cycles = 1 + 3 * ((info1 >> 18) & 1) + ((info2 >> 24) > 1 ? FP3_LANES_HOST_READ_CYCLES : 0);
+  uint32_t info0 = host_read(r, FP3_HR_INFO0);
   r->base.config.num_contexts = info2 & 0xFFFF;
   r->base.config.has_add = (info2 >> 16) & 1;
   r->base.config.has_sub = (info2 >> 17) & 1;

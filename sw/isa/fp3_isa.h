@@ -139,6 +139,18 @@
  * (1). */
 #define FP3_BEQ_CYCLES 6
 
+/* Cycles a build with lanes (NUM_LANES > 1) adds to a beq, and to the
+ * end of a run: the lanes run FP3_LANES_STAGE_CYCLES behind the scheduler
+ * (the broadcast stages at their inputs, rtl/fp3_lane.v), and each
+ * registers its beq compare (one more cycle for a beq only). */
+#define FP3_LANES_STAGE_CYCLES 2
+#define FP3_LANES_BEQ_CYCLES (FP3_LANES_STAGE_CYCLES + 1)
+
+/* Cycles a build with lanes adds to a host-port read (1 + 3 FMAX_PIPE
+ * without): the lanes after lane 0 see the host's address a cycle after
+ * it, so that lane 0's LVT choice reaches them through a register. */
+#define FP3_LANES_HOST_READ_CYCLES 1
+
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
  *
