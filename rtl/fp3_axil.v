@@ -10,10 +10,11 @@
 // both are held and the B channel is free (or being emptied this cycle).
 // AR is held likewise; the read address goes to the host port for one
 // cycle, the core's registered read data is captured one cycle later (five
-// with FMAX_PIPE: a register in front of the host port, four read cycles)
-// and held on R until RREADY.  B and R stay valid, with stable payload,
-// until accepted.  Each channel takes a new transfer every second cycle
-// (reads every sixth with FMAX_PIPE).  The
+// with FMAX_PIPE: a register in front of the host port, four read cycles;
+// one more with lanes: fp3_top "Host port") and held on R until RREADY.
+// B and R stay valid, with stable payload, until accepted.  Each channel
+// takes a new transfer every second cycle (reads every sixth with
+// FMAX_PIPE, one cycle more with lanes).  The
 // host port has one address, so a write and a read that are both ready in
 // the same cycle take turns (round robin).  All outputs are registered;
 // no READY depends combinationally on a VALID.  The side band (running_o,

@@ -27,7 +27,7 @@
 // host's register writes, which reach one lane, leave the shared LVT alone
 // (fp3_regfile HOST_ALL).
 //
-// Broadcast stages (IN_STAGES, OUT_STAGES, EQ_STAGE): with lanes, the
+// Broadcast stages (IN_STAGES, OUT_STAGES, EQ_STAGE, HOST_STAGES): with lanes, the
 // operation stream fans out from one scheduler across the die to every
 // lane, and lane 0's LVT choice to every other lane; registering it at each
 // lane's inputs makes those wires register-to-register paths.  The
@@ -38,26 +38,29 @@
 // IN_STAGES cycles behind the scheduler, and its bypass and LVT see reads
 // and writes at the same distances as without.  What stays in the
 // scheduler's time: the busy flags' set and clear (set_i, clr*_i: the
-// scoreboard) and the host port (used only while no run is in progress).
-// OUT_STAGES registers delay the results, their flags and eq_o further (lane
-// 0 is staged once less than the others, so that its LVT choice reaches
-// them through a register: fp3_top), and EQ_STAGE registers the beq
-// compare before it leaves the lane.  The cost: about 140 flip-flops per
-// input stage and 150 per output stage, and beq and the end of a run a
-// few cycles later (fp3_top).
+// scoreboard).  OUT_STAGES registers delay the results, their flags, eq_o
+// and ra_data_o further (lane 0 is staged once less than the others, so
+// that its LVT choice reaches them through a register: fp3_top), EQ_STAGE
+// registers the beq compare before it leaves the lane, and HOST_STAGES
+// registers the host port's inputs (lanes 1 .., which read a cycle after
+// lane 0 so that its LVT choice of the same read reaches them through that
+// register).  The cost: about 140 flip-flops per input stage, 180 per
+// output stage and 43 for the host's, and beq, the end of a run and host
+// reads a few cycles later (fp3_top).
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
 // FLAGS_AHEAD, CTRL, HOST_ALL) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
 // MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
 // HAS_SQRT, HAS_SIGN), passed through unchanged; IN_STAGES (0 .. 2),
-// OUT_STAGES (0 or 1) and EQ_STAGE (0 or 1), the broadcast stages above
-// (0: none, the lane of a one-lane build).
+// OUT_STAGES, EQ_STAGE and HOST_STAGES (0 or 1 each), the broadcast stages
+// above (0: none, the lane of a one-lane build).
 // Ports: fp3_regfile's (index ports shared by all lanes) and fp3_arith's
 // operation inputs; imm_i/imm_val_i choose the immediate as the first
 // operand (li), as the read stage gives it.  ra_data_o is this lane's
-// port A operand READ_STAGES cycles after the host's read address (while
-// host_sel_i), eq_o whether ports A and B read the same bit pattern (beq),
-// IN_STAGES + OUT_STAGES + EQ_STAGE cycles after the read stage gives them;
+// port A operand HOST_STAGES + READ_STAGES + OUT_STAGES cycles after the
+// host's read address (while host_sel_i), eq_o whether ports A and B
+// read the same bit pattern (beq), IN_STAGES + OUT_STAGES + EQ_STAGE cycles
+// after the read stage gives them;
 // {add,mul,mov,div}_data_o and _flags_o are its results, IN_STAGES +
 // OUT_STAGES cycles after the cycle the tag lines' write-back valid names.
 `default_nettype none
@@ -198,7 +201,8 @@ module fp3_lane #(
     for (st = 1; st <= IN_STAGES; st = st + 1) begin : g_in
       wire [BW-1:0] d = rst_i ? valids_off(bc_s[BW*(st-1) +: BW]) : bc_s[BW*(st-1) +: BW];
       if (st < IN_STAGES) begin : g_shared
-        // (an earlier stage: lanes with the same stage share it)
+        // (an earlier stage: a flattening synthesis may merge it with
+        // another lane's)
         reg [BW-1:0] q;
         always @(posedge clk_i) q <= d;
         assign bc_s[BW*st +: BW] = q;

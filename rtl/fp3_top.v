@@ -8,17 +8,35 @@
 // (scoreboard) and the write-back tag lines exist once; the register banks
 // and the FP cores are replicated NUM_LANES times (fp3_lane).  Each issue
 // of context c runs on lane 0 .. NUM_LANES-1 of c in the same cycle, so
-// NUM_CONTEXTS x NUM_LANES objects are in flight, and the timing of a
-// context does not depend on NUM_LANES.  A beq is taken only when its
-// operands are bit-identical in every lane of its context (the lanes of a
-// context share one PC); otherwise every lane falls through.  Exception
-// flags are sticky per context and lane.
+// NUM_CONTEXTS x NUM_LANES objects are in flight, and the issue timing of
+// a context does not depend on NUM_LANES, but for beq.  A beq is taken
+// only when its operands are bit-identical in every lane of its context
+// (the lanes of a context share one PC); otherwise every lane falls
+// through.  Exception flags are sticky per context and lane.
+//
+// Broadcast stages (NUM_LANES > 1): the scheduler drives every lane across
+// the die, and lane 0's live value table chooses the RAM of every lane's
+// reads (fp3_lane).  So that each of those wires leaves a flip-flop and
+// enters one, lane 0 takes the operation stream (read indices, write-back
+// tags, operation) through one register of its own and the other lanes
+// through two, lane 0's LVT choice reaches them through one more, and the
+// lanes register their beq compare; lane 0's results wait a cycle, so that
+// every lane's results (and the trace port's write-backs) come LD = 2
+// cycles after the tag lines name them.  The scoreboard is unchanged: the
+// busy flags take their set and clear in the scheduler's time, and each
+// lane sees its reads and write-backs at the same distances as without
+// the stages.  What they cost: a beq resolves FP3_LANES_BEQ_CYCLES (3)
+// later, a run drains LD cycles longer (FP3_LANES_STAGE_CYCLES), host
+// reads take FP3_LANES_HOST_READ_CYCLES (1) more (the other lanes see the
+// host's address a cycle after lane 0, for the same LVT choice), and some
+// 150 flip-flops per stage and lane.  A one-lane build has none of them.
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
-// appears on host_rdata_o 1 + 3 FMAX_PIPE cycles later (the register
-// window's read stages; INFO1 reports FMAX_PIPE, and reading it with the
-// address held for four cycles works for both).  The map (HR_* in
+// appears on host_rdata_o 1 + 3 FMAX_PIPE cycles later, and one more with
+// lanes (the register window's read stages; INFO1 reports FMAX_PIPE and
+// INFO2 the lanes, and reading them with the address held for five cycles
+// works for every build).  The map (HR_* in
 // rtl/fp3_isa.vh, generated from sw/isa/fp3_isa.h) holds control, status,
 // counters, configuration, the register window and the program window.
 // CTX selects the context whose status and registers the host sees, LANE
@@ -59,9 +77,10 @@
 // Trace port (in the spirit of RISC-V RVFI; DESIGN.md "Observe, don't
 // stop"): every issue (with its context and unit), every endi and every
 // write-back (context, register, value) is visible each cycle, so a host
-// can check every result while the machine runs freely.  It adds no state.
-// A write-back's data carry every lane: lane l in bits [32l +: 32] (the
-// context, register and valid are the lanes' common ones).
+// can check every result while the machine runs freely.  It adds no state
+// but the tags' delay to the lanes' time (LD, above).  A write-back's data
+// carry every lane: lane l in bits [32l +: 32] (the context, register and
+// valid are the lanes' common ones).
 //
 // Parameters
 //   NUM_CONTEXTS contexts, 1..64                (defaults: sw/isa/fp3_isa.h)

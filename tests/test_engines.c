@@ -1140,7 +1140,8 @@ static void test_random_programs_contexts(void **state) {
 /* ---- the host port's map, straight at the model ---------------------------- */
 
 /* A host-port read: the address held for `read` cycles (1 + 3 FMAX_PIPE,
- * fp3_top "Host port"), the data of the last. */
+ * and FP3_LANES_HOST_READ_CYCLES more with lanes: fp3_top "Host port"), the
+ * data of the last. */
 static uint32_t model_read(const fp3_model_ops *ops, fp3_model *m, unsigned read,
                            unsigned addr) {
   fp3_model_in in = {0, (uint16_t)addr, 0};
