@@ -656,6 +656,27 @@ static void test_fmax_pipe(void **state) {
   fp3_engine_free(e);
 }
 
+/* The lanes' broadcast stages (rtl/fp3_top.v, docs/lanes.md): on the
+ * lanes build (8 contexts x 4 lanes, the default latencies) a run ends
+ * FP3_LANES_STAGE_CYCLES later than on the default build, and a taken beq
+ * costs FP3_LANES_BEQ_CYCLES more; everything else issues in the same
+ * cycles.  Every result as the ISS computes it. */
+static void test_lanes_stages(void **state) {
+  (void)state;
+  fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_l4, NULL);
+  assert_non_null(e);
+  assert_int_equal(e->config.num_lanes, 4);
+  assert_int_equal(e->config.add_latency, rtl->config.add_latency);
+  assert_int_equal(e->config.mul_latency, rtl->config.mul_latency);
+  const char *plain = "nop\nhalt\n", *br = "beq r1, r1, out\nnop\nout:\nhalt\n";
+  const char *chain = "add r1, r1, r2\nmul r3, r1, r1\nadd r4, r3, r1\nhalt\n";
+  assert_int_equal(fmax_cycles(e, plain) - fmax_cycles(rtl, plain), FP3_LANES_STAGE_CYCLES);
+  assert_int_equal(fmax_cycles(e, chain) - fmax_cycles(rtl, chain), FP3_LANES_STAGE_CYCLES);
+  assert_int_equal(fmax_cycles(e, br) - fmax_cycles(rtl, br),
+                   FP3_LANES_STAGE_CYCLES + FP3_LANES_BEQ_CYCLES);
+  fp3_engine_free(e);
+}
+
 static void test_loop_overlap(void **state) {
   (void)state;
   capture a, b;
@@ -1365,6 +1386,7 @@ int main(void) {
       cmocka_unit_test(test_sleep_at_rest),
       cmocka_unit_test(test_frames_sleeping),
       cmocka_unit_test(test_frames_lanes),
+      cmocka_unit_test(test_lanes_stages),
       cmocka_unit_test(test_dependent_add_chain),
       cmocka_unit_test(test_dependent_mul_chain),
       cmocka_unit_test(test_independent_ops_spacing),
