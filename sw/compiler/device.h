@@ -11,13 +11,13 @@
  * fp3_top -keep fp3_lane rtl/[a-z]*.v`, LUTs counting a CCU2C as two LUT4s):
  *
  *   fixed      scheduler, host port, write-back tags, sticky flags and the
- *              AXI4-Lite wrapper: 13,503 LUT4s, 3 EBR
- *   lane 0     13,374 LUT4s (register bank, busy flags and live value
+ *              AXI4-Lite wrapper: 13,531 LUT4s, 3 EBR
+ *   lane 0     13,330 LUT4s (register bank, busy flags and live value
  *              table of the 512 registers, FP cores), 4 MULT18X18D, 8 EBR
- *   lane 1 ..  3,962 LUT4s (register bank, FP cores), 4 MULT18X18D, 8 EBR
+ *   lane 1 ..  3,991 LUT4s (register bank, FP cores, broadcast stages), 4 MULT18X18D, 8 EBR
  *
  * Scaled to the build asked for: lane 0's busy flags and live value
- * table (its LUTs beyond another lane's, 9,412) are one entry a register
+ * table (its LUTs beyond another lane's, 9,339) are one entry a register
  * of every context, so they scale with NUM_CONTEXTS x NUM_REGS against
  * the chip build's 512; each lane's 8 EBR hold 512 registers, so a lane
  * takes 8 x ceil(registers / 512).  The fixed part is the chip build's
