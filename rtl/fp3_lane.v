@@ -179,13 +179,14 @@ module fp3_lane #(
   // valid bits are cleared by the reset at every stage.
   localparam integer BW = 2*XW + 8*(1 + XW) + 1 + 3 + 1 + 3 + 1 + 32;
   localparam integer VB = 1 + XW;   // a port's {valid, index}
+  localparam integer OP_VALID = 32 + 1 + 3 + 1 + 3;   // valid_i's bit: above imm, sop, sub, unit
   function [BW-1:0] valids_off;     // w with every valid bit cleared
     input [BW-1:0] w;
     integer p;
     begin
       valids_off = w;
       for (p = 0; p < 8; p = p + 1) valids_off[BW - 2*XW - VB*p - 1] = 1'b0;
-      valids_off[40] = 1'b0;
+      valids_off[OP_VALID] = 1'b0;
     end
   endfunction
   wire [BW-1:0] bc_in = {ra_i, rb_i,

@@ -28,8 +28,9 @@
 // the stages.  What they cost: a beq resolves FP3_LANES_BEQ_CYCLES (3)
 // later, a run drains LD cycles longer (FP3_LANES_STAGE_CYCLES), host
 // reads take FP3_LANES_HOST_READ_CYCLES (1) more (the other lanes see the
-// host's address a cycle after lane 0, for the same LVT choice), and some
-// 150 flip-flops per stage and lane.  A one-lane build has none of them.
+// host's address a cycle after lane 0, for the same LVT choice), and
+// 140-180 flip-flops per stage and lane (fp3_lane).  A one-lane build has
+// none of them.
 //
 // Host port: a simple synchronous word port.  A write (host_we_i) takes
 // effect at the clock edge; read data for host_addr_i is registered and
@@ -186,10 +187,11 @@ module fp3_top #(
   localparam integer READ  = 1 + 3 * FMAX_PIPE;  // operand-read stages, host read cycles
   localparam integer AHEAD = PICK + READ;    // write-back announcement
   // With lanes, the broadcast stages (fp3_lane IN_STAGES, OUT_STAGES,
-  // EQ_STAGE; "Lanes" above): BC registers at lane 0's inputs, 2 BC at the
-  // other lanes' (lane 0's LVT choice reaches them through one more), the
-  // results of every lane LD cycles after the tag lines name them, and the
-  // beq compare registered in the lane (BC).
+  // EQ_STAGE, HOST_STAGES; "Broadcast stages" above): BC registers at lane
+  // 0's inputs, 2 BC at the other lanes' (lane 0's LVT choice and the host
+  // port reach them through one more), the results of every lane LD cycles
+  // after the tag lines name them, and the beq compare registered in the
+  // lane (BC).
   localparam integer BC = (NUM_LANES > 1) ? 1 : 0;
   localparam integer LD = 2 * BC;
   // The move path's latency: with the pick stages, PICK more, so that its
