@@ -70,12 +70,11 @@ static build build_fmax = {FP3_AXIL_FMAX, &fp3_model_fmax, 8, 9, 10, 1, 1};
 static build build_lanes = {FP3_AXIL_LANES, &fp3_model_l4, 8, FP3_DEFAULT_ADD_LATENCY,
                             FP3_DEFAULT_MUL_LATENCY, 0, 4};
 
-/* Cycles from a read's address on the host port to its data: fp3_top
- * answers 1 + 3 FMAX_PIPE cycles after the address, FP3_LANES_HOST_READ_CYCLES
- * more with lanes (fp3_top "Host port"), and with FMAX_PIPE the wrapper
- * registers the address in front of it. */
+/* Cycles from a read's address on the host port to its data: fp3_top's
+ * (FP3_HOST_READ_CYCLES), and with FMAX_PIPE the wrapper registers the
+ * address in front of it. */
 static unsigned read_latency(const build *bd) {
-  return 1 + 4 * bd->fmax_pipe + (bd->num_lanes > 1 ? FP3_LANES_HOST_READ_CYCLES : 0);
+  return FP3_HOST_READ_CYCLES(bd->fmax_pipe, bd->num_lanes) + bd->fmax_pipe;
 }
 
 /* ---- the AXI4-Lite master ---------------------------------------------------- */

@@ -1202,7 +1202,7 @@ static void test_host_lane(void **state) {
   fp3_model *m = ops->create(NULL);
   assert_non_null(m);
   fp3_model_in in = {1, 0, 0};
-  const unsigned rc = 1 + FP3_LANES_HOST_READ_CYCLES;   /* the host port's read cycles */
+  const unsigned rc = FP3_HOST_READ_CYCLES(0, 4);   /* the host port's read cycles */
 #define HOST_WRITE(a, v) (in.addr = (uint16_t)(a), in.wdata = (uint32_t)(v), ops->cycle(m, &in, NULL))
   assert_int_equal(model_read(ops, m, rc, FP3_HR_INFO2) >> 24, 4);
   assert_int_equal(model_read(ops, m, rc, FP3_HR_LANE), 0);

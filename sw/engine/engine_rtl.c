@@ -309,7 +309,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
    * port"). */
   uint32_t info1 = host_read(r, FP3_HR_INFO1);
   const uint32_t info2 = host_read(r, FP3_HR_INFO2);
-  r->read_cycles = 1 + 3 * ((info1 >> 18) & 1) + ((info2 >> 24) > 1 ? FP3_LANES_HOST_READ_CYCLES : 0);
+  r->read_cycles = FP3_HOST_READ_CYCLES((info1 >> 18) & 1, info2 >> 24);
   uint32_t info0 = host_read(r, FP3_HR_INFO0);
   r->base.config.num_contexts = info2 & 0xFFFF;
   r->base.config.has_add = (info2 >> 16) & 1;

@@ -151,6 +151,11 @@
  * it, so that lane 0's LVT choice reaches them through a register. */
 #define FP3_LANES_HOST_READ_CYCLES 1
 
+/* Cycles from a host-port read's address to its data (rtl/fp3_top.v
+ * "Host port"), for a build of FMAX_PIPE fmax_pipe and num_lanes lanes. */
+#define FP3_HOST_READ_CYCLES(fmax_pipe, num_lanes) \
+  (1 + 3 * (fmax_pipe) + ((num_lanes) > 1 ? FP3_LANES_HOST_READ_CYCLES : 0))
+
 /*
  * X(NAME, opcode, mnemonic, fields used, unit, description)
  *
