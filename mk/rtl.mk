@@ -35,7 +35,11 @@ RTL_CFG_nc1     := 0 0 1 1 2 32 1 1 1 0 1 0 0
 RTL_CFG_nc3     := 0 0 3 4 3 40 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
-RTL_TEST_CONFIGS := nc1 nc3 l4
+# ... and lanes in the build for clock rate: the chip build (CHIP_PARAMS
+# below) in small, 4 contexts x 3 lanes, with its latencies, broadcast
+# stages and split host read.
+RTL_CFG_lf      := 0 0 4 9 9 32 1 1 1 1 3 0 0 1
+RTL_TEST_CONFIGS := nc1 nc3 l4 lf
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
 RTL_CFG_nc32    := 0 0 32
@@ -139,9 +143,11 @@ isa: $(BUILD)/gen_isa
 # ---- lint ------------------------------------------------------------------
 # The processor in the default build (every unit, the div/sqrt unit
 # included), with lanes, without the div/sqrt unit and in the build for
-# clock rate; the wrapper's variants: lint-axil (mk/axil.mk).
+# clock rate, and the chip build (CHIP_PARAMS: lanes in the build for clock
+# rate); the wrapper's variants: lint-axil (mk/axil.mk).
 LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
-               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10"
+               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10" \
+               "$(foreach p,$(CHIP_PARAMS),-G$(p))"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
 lint: $(SETUP_STAMP)
 	@set -e; for p in $(LINT_PARAMS); do \

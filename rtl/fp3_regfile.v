@@ -618,6 +618,7 @@ module fp3_regfile #(
     end
   endgenerate
 
+  genvar ag;   // idle_o's groups of 16 flags (g_ctrl)
   // The WAW stall guarantees that the write ports name distinct registers,
   // so the priority below never matters for a legal sequence.
   generate
@@ -649,12 +650,14 @@ module fp3_regfile #(
       // the ORs take the flags' next state instead of the flags, and one
       // flip-flop more.
       localparam integer GN = (ENTRIES + 15) / 16;
-      reg [GN-1:0] any_d, any_q;
-      reg          idle_q;
-      integer ai;
-      always @(*) begin
-        any_d = {GN{1'b0}};
-        for (ai = 0; ai < ENTRIES; ai = ai + 1) any_d[ai / 16] = any_d[ai / 16] | busy_d[ai];
+      // (Each group one reduction OR of a part-select, not a loop over the
+      // bits: the same logic, which Verilator evaluates a word at a time.)
+      wire [GN-1:0] any_d;
+      reg  [GN-1:0] any_q;
+      reg           idle_q;
+      for (ag = 0; ag < GN; ag = ag + 1) begin : g_any
+        localparam integer AHI = (16 * ag + 16 < ENTRIES) ? 16 * ag + 16 : ENTRIES;
+        assign any_d[ag] = |busy_d[AHI-1:16*ag];
       end
       always @(posedge clk_i) begin
         any_q  <= rst_i ? {GN{1'b0}} : any_d;

@@ -801,6 +801,34 @@ module fp3_top #(
   // taken in the second half (so the context select does not reach the
   // address's multiplexer): the same cycle's values.
   localparam integer HSPLIT = (READ >= 2) ? 1 : 0;
+  // With HSPLIT, FLAGS takes its own path: each lane's flags of context
+  // ctx_flg registered beside that lane in every cycle (fsel_q, 5
+  // flip-flops a lane), and the lane multiplexer after those registers,
+  // in the second half, by a copy of LANE of its own (lane_flg, kept).
+  // So the context multiplexers and the staged cycle's compares end in
+  // their lane, and only a registered 5-bit word a lane crosses the die
+  // to the multiplexer; the read returns the address cycle's flags as the
+  // other words of context CTX do.
+  wire [4:0] flags_sel_q;   // (HSPLIT) flags_sel of the cycle before
+  generate
+    if (HSPLIT != 0) begin : g_flags_split
+      reg [5*NL-1:0] fsel_q;
+      always @(posedge clk_i) fsel_q <= flags_ctx;
+      if (NL == 1) begin : g_one
+        assign flags_sel_q = fsel_q;
+      end else begin : g_lanes
+        wire [LW-1:0] lane_flg;
+        fp3_keep #(.W(LW)) u_lane_flg (
+          .clk_i (clk_i),
+          .d_i   (rst_i ? {LW{1'b0}} : lane_we ? host_wdata_i[LW-1:0] : lane_flg),
+          .q_o   (lane_flg)
+        );
+        assign flags_sel_q = fsel_q[5*lane_flg +: 5];
+      end
+    end else begin : g_flags_now
+      assign flags_sel_q = 5'd0;
+    end
+  endgenerate
   wire [31:0] w_status = {20'd0, error, 5'd0, any_error, done, running};
   wire [31:0] w_flags  = {27'd0, flags_sel};
   wire        in_four  = HSPLIT == 0;   // the context's words are in hr_four
@@ -857,7 +885,7 @@ module fp3_top #(
       reg [1:0]   lo_q;
       reg         scal_q;
       reg         reg_q;
-      reg [31:0]  st_q, sd_q, fpc_q, fl_q;   // context CTX's words
+      reg [31:0]  st_q, sd_q, fpc_q;   // context CTX's words (FLAGS: flags_sel_q)
       reg [3:0]   ctxw_q;  // one-hot: host_addr_i named one of them (STATUS .. FLAGS)
       always @(posedge clk_i) begin
         four_q   <= hr_four;
@@ -867,16 +895,17 @@ module fp3_top #(
         st_q     <= w_status;
         sd_q     <= steps_done;
         fpc_q    <= fault_pc;
-        fl_q     <= w_flags;
         ctxw_q   <= {host_addr_i == HR_FLAGS, host_addr_i == HR_FAULT_PC,
                      host_addr_i == HR_STEPS_DONE, host_addr_i == HR_STATUS};
       end
       assign rdata_d = ({32{scal_q}} & four_q[32*lo_q +: 32]) | ({32{ctxw_q[0]}} & st_q) |
                        ({32{ctxw_q[1]}} & sd_q) | ({32{ctxw_q[2]}} & fpc_q) |
-                       ({32{ctxw_q[3]}} & fl_q);
+                       ({32{ctxw_q[3]}} & {27'd0, flags_sel_q});
+      wire unused_flags_sel = &{1'b0, w_flags};   // (flags_sel_q instead)
       assign hr_reg_w = reg_q;
     end else begin : g_host_one
       assign rdata_d  = {32{scal}} & hr_four[32*host_addr_i[1:0] +: 32];
+      wire unused_flags_sel_q = &{1'b0, flags_sel_q};
       assign hr_reg_w = hr_reg;
     end
   endgenerate

@@ -37,7 +37,8 @@
 #include "../sim/fp3_model.h"
 
 /* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */
-extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3, fp3_model_fmax, fp3_model_l4;
+extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3, fp3_model_fmax, fp3_model_l4,
+    fp3_model_lf;
 
 #define MAX_REGS 256
 
@@ -1012,7 +1013,9 @@ static void multi_free(multi_capture *m) {
  * FMAX_PIPE: the full announcement lead; mk/rtl.mk): the
  * FMAX_PIPE scheduler's contexts 3 to 7 run only there (a mutation of
  * context 3's hazard compares passed every test before it was here);
- * and the lanes build (8 contexts x 4 lanes, the default latencies). */
+ * the lanes build (8 contexts x 4 lanes, the default latencies); and
+ * lanes in the build for clock rate (4 contexts x 3 lanes, the chip
+ * build's latencies, broadcast stages and split host read). */
 static const struct {
   const fp3_model_ops *model;  /* NULL: the default build */
   unsigned contexts;           /* what the build must report */
@@ -1024,6 +1027,7 @@ static const struct {
   {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0},
   {&fp3_model_fmax, 8, 1, 1},
   {&fp3_model_l4, 8, 4, 0},
+  {&fp3_model_lf, 4, 3, 1},
 };
 #define CONTEXT_BUILDS (int)(sizeof context_builds / sizeof context_builds[0])
 static fp3_engine *context_build(int which) {
@@ -1126,7 +1130,7 @@ static void test_random_programs_contexts(void **state) {
     fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
     assert_non_null(is);
     unsigned nctx = fp3_config_slots(&er->config);
-    /* make bench-cosim's count on the lanes build, else 300 a build */
+    /* make bench-cosim's count on each lanes build, else 300 a build */
     const long programs = er->config.num_lanes > 1 && random_programs > 10000 ? random_programs
                                                                                : 300;
     for (long p = 0; p < programs; p++) {
