@@ -65,13 +65,13 @@ RTL_AXIL_CONFIGS := fmax
 # MULT18X18D with the blocks' own input and output registers (MUL_LATENCY
 # 9: fp_mul_prod LUT = 0, PRE = 1; fp_mul alone 162 MHz), which saves
 # about 1,050 LUT4s a lane against the LUT product.  The limit is routing, not a resource:
-# 6 lanes (46,687 LUT4s, 56 %) route; 8 (55,913, 67 %) do not
-# (docs/lanes.md "Chip build").  The chip build and f16 leave out the
+# 8 lanes (54,403 LUT4s, 65 %) route (docs/lanes.md "Chip build").
+# The chip build and f16 leave out the
 # div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
 # about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
 # the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
-CHIP_LANES      := 6
+CHIP_LANES      := 8
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
                    HAS_DIV=0 HAS_SQRT=0
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2

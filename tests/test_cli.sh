@@ -302,9 +302,9 @@ expect 0 "^NUM_CONTEXTS=4 NUM_LANES=3 " -- configure scenes/harbour.scene --max-
 expect 2 "--max-lanes .0.: want 1..64" -- configure scenes/harbour.scene --max-lanes 0
 expect 2 "--max-lanes .65.: want 1..64" -- configure scenes/harbour.scene --max-lanes 65
 expect 0 "^NUM_CONTEXTS=32 NUM_LANES=1 NUM_REGS=12 " -- configure scenes/harbour.scene --context-per-object
-expect 0 "^NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=12 " -- configure scenes/harbour.scene --device ecp5-45
-expect 0 "the LFE5U-45F holds 2: LUT4s .routing." -- configure scenes/harbour.scene --device ecp5-45
-expect 0 "\"device_max_lanes\": 2, \"device_limit\": \"LUT4s .routing.\"" -- configure scenes/harbour.scene --device ecp5-45 --json
+expect 0 "^NUM_CONTEXTS=4 NUM_LANES=3 NUM_REGS=12 " -- configure scenes/harbour.scene --device ecp5-45
+expect 0 "the LFE5U-45F holds 3: LUT4s .routing." -- configure scenes/harbour.scene --device ecp5-45
+expect 0 "\"device_max_lanes\": 3, \"device_limit\": \"LUT4s .routing.\"" -- configure scenes/harbour.scene --device ecp5-45 --json
 expect 2 "--device 'ecp5-99': unknown device .known: ecp5-25, ecp5-45, ecp5-85." -- configure scenes/harbour.scene --device ecp5-99
 expect 2 "the LFE5U-25F .ecp5-25. does not hold one lane of this build" -- configure scenes/harbour.scene --device ecp5-25
 expect 0 "^NUM_CONTEXTS=3 NUM_LANES=11 NUM_REGS=7 " -- configure scenes/harbour.scene --integrator euler

@@ -4,32 +4,33 @@
  *
  * The model counts the resources of a build of N lanes as a fixed part
  * and a cost per lane, as Yosys mapped the chip build for the LFE5U-85F
- * (16 contexts x 6 lanes, 32 registers a context, the build for clock
+ * (16 contexts x 8 lanes, 32 registers a context, the build for clock
  * rate with the multiplier in MULT18X18D; docs/lanes.md "Utilisation",
- * `bash scripts/synth.sh DIR fp3_axil ecp5 NUM_CONTEXTS=16 NUM_LANES=6
+ * `bash scripts/synth.sh DIR fp3_axil ecp5 NUM_CONTEXTS=16 NUM_LANES=8
  * ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 HAS_DIV=0 HAS_SQRT=0 -keep
  * fp3_top -keep fp3_lane rtl/[a-z]*.v`, LUTs counting a CCU2C as two LUT4s):
  *
  *   fixed      scheduler, host port, write-back tags, sticky flags and the
- *              AXI4-Lite wrapper: 13,531 LUT4s, 3 EBR
- *   lane 0     13,330 LUT4s (register bank, busy flags and live value
+ *              AXI4-Lite wrapper: 13,240 LUT4s, 3 EBR
+ *   lane 0     13,429 LUT4s (register bank, busy flags and live value
  *              table of the 512 registers, FP cores), 4 MULT18X18D, 8 EBR
- *   lane 1 ..  3,991 LUT4s (register bank, FP cores, broadcast stages), 4 MULT18X18D, 8 EBR
+ *   lane 1 ..  3,962 LUT4s (register bank, FP cores, broadcast stages), 4 MULT18X18D, 8 EBR
  *
  * Scaled to the build asked for: lane 0's busy flags and live value
- * table (its LUTs beyond another lane's, 9,339) are one entry a register
+ * table (its LUTs beyond another lane's, 9,467) are one entry a register
  * of every context, so they scale with NUM_CONTEXTS x NUM_REGS against
  * the chip build's 512; each lane's 8 EBR hold 512 registers, so a lane
  * takes 8 x ceil(registers / 512).  The fixed part is the chip build's
- * 16-context scheduler, kept for every build: it is an upper bound below
- * 16 contexts and optimistic above.
+ * 16-context scheduler (with the sticky flags of its 8 lanes), kept for
+ * every build: it is an upper bound below 16 contexts and 8 lanes, and
+ * optimistic above.
  *
  * A device's limit is not its LUT4 count but what nextpnr-ecp5 routes:
- * a 6-lane build of 47,585 LUT4s, 57 % of the LFE5U-85F's, routed and
- * 8 lanes at 67 % did not (docs/lanes.md "Why 6 lanes"), so the model allows LUTs up
- * to 57 % of the device's, and all of its MULT18X18D and EBR.  It is
- * measured on the LFE5U-85F only; the other ECP5 parts are the same
- * fabric, with the family data sheet's resource counts.
+ * the 8-lane build of 54,403 LUT4s, 65 % of the LFE5U-85F's, routed
+ * (docs/lanes.md "Why 8 lanes"), so the model allows LUTs up to 65.1 %
+ * of the device's, and all of its MULT18X18D and EBR.  It is measured on
+ * the LFE5U-85F only; the other ECP5 parts are the same fabric, with the
+ * family data sheet's resource counts.
  */
 #ifndef FP3_DEVICE_H
 #define FP3_DEVICE_H
@@ -47,7 +48,7 @@ typedef struct fp3_device {
 
 /* The share of a device's LUT4s the model lets a build use, in per
  * mille: the chip build's, the most that routed (see above). */
-#define FP3_DEVICE_ROUTABLE_PERMILLE 570u
+#define FP3_DEVICE_ROUTABLE_PERMILLE 651u
 
 /* What a build of some lanes costs on a device, and which limit binds. */
 typedef struct fp3_device_fit {
