@@ -781,15 +781,6 @@ module fp3_top #(
 `endif
     end
   endgenerate
-  // The selected context's flags, of lane LANE.
-  wire [4:0] flags_sel;
-  generate
-    if (NL == 1) begin : g_flags_one
-      assign flags_sel = flags_ctx;
-    end else begin : g_flags_lane
-      assign flags_sel = flags_ctx[5*lane_q +: 5];
-    end
-  endgenerate
 
   // ---- host read mux (registered) ------------------------------------------
   // The words of the four addresses host_addr_i[11:2] names (hr_four),
@@ -801,32 +792,39 @@ module fp3_top #(
   // taken in the second half (so the context select does not reach the
   // address's multiplexer): the same cycle's values.
   localparam integer HSPLIT = (READ >= 2) ? 1 : 0;
-  // With HSPLIT, FLAGS takes its own path: each lane's flags of context
-  // ctx_flg registered beside that lane in every cycle (fsel_q, 5
-  // flip-flops a lane), and the lane multiplexer after those registers,
-  // in the second half, by a copy of LANE of its own (lane_flg, kept).
-  // So the context multiplexers and the staged cycle's compares end in
-  // their lane, and only a registered 5-bit word a lane crosses the die
-  // to the multiplexer; the read returns the address cycle's flags as the
-  // other words of context CTX do.
-  wire [4:0] flags_sel_q;   // (HSPLIT) flags_sel of the cycle before
+  // The selected context's flags, of lane LANE (flags_sel).  With HSPLIT
+  // FLAGS takes its own path: each lane's flags of context ctx_flg
+  // registered beside that lane in every cycle (fsel_q, 5 flip-flops a
+  // lane), and the lane multiplexer after those registers, in the second
+  // half, by a copy of LANE of its own (lane_flg, kept).  So the context
+  // multiplexers and the staged cycle's compares end in their lane, and
+  // only a registered 5-bit word a lane crosses the die to the
+  // multiplexer; the read returns the address cycle's flags as the other
+  // words of context CTX do.
+  wire [5*NL-1:0] flags_src;   // flags_ctx, or (HSPLIT) flags_ctx of the cycle before
+  wire [4:0]      flags_sel;
   generate
     if (HSPLIT != 0) begin : g_flags_split
       reg [5*NL-1:0] fsel_q;
       always @(posedge clk_i) fsel_q <= flags_ctx;
-      if (NL == 1) begin : g_one
-        assign flags_sel_q = fsel_q;
-      end else begin : g_lanes
-        wire [LW-1:0] lane_flg;
+      assign flags_src = fsel_q;
+    end else begin : g_flags_now
+      assign flags_src = flags_ctx;
+    end
+    if (NL == 1) begin : g_flags_one
+      assign flags_sel = flags_src;
+    end else begin : g_flags_lane
+      wire [LW-1:0] lane_fl;   // the lane multiplexer's select
+      if (HSPLIT != 0) begin : g_lane_flg
         fp3_keep #(.W(LW)) u_lane_flg (
           .clk_i (clk_i),
-          .d_i   (rst_i ? {LW{1'b0}} : lane_we ? host_wdata_i[LW-1:0] : lane_flg),
-          .q_o   (lane_flg)
+          .d_i   (rst_i ? {LW{1'b0}} : lane_we ? host_wdata_i[LW-1:0] : lane_fl),
+          .q_o   (lane_fl)
         );
-        assign flags_sel_q = fsel_q[5*lane_flg +: 5];
+      end else begin : g_lane_q
+        assign lane_fl = lane_q;
       end
-    end else begin : g_flags_now
-      assign flags_sel_q = 5'd0;
+      assign flags_sel = flags_src[5*lane_fl +: 5];
     end
   endgenerate
   wire [31:0] w_status = {20'd0, error, 5'd0, any_error, done, running};
@@ -885,7 +883,7 @@ module fp3_top #(
       reg [1:0]   lo_q;
       reg         scal_q;
       reg         reg_q;
-      reg [31:0]  st_q, sd_q, fpc_q;   // context CTX's words (FLAGS: flags_sel_q)
+      reg [31:0]  st_q, sd_q, fpc_q;   // context CTX's words (FLAGS: w_flags, from fsel_q)
       reg [3:0]   ctxw_q;  // one-hot: host_addr_i named one of them (STATUS .. FLAGS)
       always @(posedge clk_i) begin
         four_q   <= hr_four;
@@ -900,12 +898,10 @@ module fp3_top #(
       end
       assign rdata_d = ({32{scal_q}} & four_q[32*lo_q +: 32]) | ({32{ctxw_q[0]}} & st_q) |
                        ({32{ctxw_q[1]}} & sd_q) | ({32{ctxw_q[2]}} & fpc_q) |
-                       ({32{ctxw_q[3]}} & {27'd0, flags_sel_q});
-      wire unused_flags_sel = &{1'b0, w_flags};   // (flags_sel_q instead)
+                       ({32{ctxw_q[3]}} & w_flags);
       assign hr_reg_w = reg_q;
     end else begin : g_host_one
       assign rdata_d  = {32{scal}} & hr_four[32*host_addr_i[1:0] +: 32];
-      wire unused_flags_sel_q = &{1'b0, flags_sel_q};
       assign hr_reg_w = hr_reg;
     end
   endgenerate
