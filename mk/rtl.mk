@@ -38,7 +38,7 @@ RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
 # ... and lanes in the build for clock rate: the chip build (CHIP_PARAMS
 # below) in small, 4 contexts x 3 lanes, with its latencies, broadcast
 # stages and split host read.
-RTL_CFG_lf      := 0 0 4 9 9 32 1 1 1 1 3 0 0 1
+RTL_CFG_lf      := 0 0 4 9 9 32 1 1 1 1 3 0 0 1 1
 RTL_TEST_CONFIGS := nc1 nc3 l4 lf
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
@@ -73,11 +73,11 @@ RTL_AXIL_CONFIGS := fmax
 CHIP_CONTEXTS   := 16
 CHIP_LANES      := 8
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
-                   HAS_DIV=0 HAS_SQRT=0
+                   HAS_DIV=0 HAS_SQRT=0 WB_PORTS=1
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
 RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
 RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
-RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 9 32 1 1 1 1 $(CHIP_LANES) 0 0 1
+RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 9 32 1 1 1 1 $(CHIP_LANES) 0 0 1 1
 # ... and the build for clock rate with 16 contexts, one lane: whether
 # twice the contexts hide its latencies (a context's timing does not
 # depend on its lanes).
@@ -86,7 +86,7 @@ RTL_CHIP_CONFIGS := l2 l8 l16 chip f16
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
 RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE \
-                  NUM_LANES HAS_DIV HAS_SQRT HAS_SIGN
+                  NUM_LANES HAS_DIV HAS_SQRT HAS_SIGN WB_PORTS
 rtl_gparams = $(join $(patsubst %,-G%=,$(wordlist 1,$(words $(RTL_CFG_$(1))),$(RTL_CFG_PARAMS))),$(RTL_CFG_$(1)))
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)
@@ -147,6 +147,7 @@ isa: $(BUILD)/gen_isa
 # rate); the wrapper's variants: lint-axil (mk/axil.mk).
 LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
                "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10" \
+               "-GWB_PORTS=1 -GADD_LATENCY=4 -GMUL_LATENCY=4 -GHAS_DIV=0 -GHAS_SQRT=0" \
                "$(foreach p,$(CHIP_PARAMS),-G$(p))"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
 lint: $(SETUP_STAMP)

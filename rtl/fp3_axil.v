@@ -54,6 +54,7 @@
 //   FMAX_PIPE    pipeline for clock rate (see fp3_top); 1: the host port's
 //                inputs are registered, a read's data are captured three
 //                cycles after its address
+//   WB_PORTS     write-back ports of the register file, 4 or 1 (see fp3_top)
 // Reset: rst_i, synchronous, active high (invert ARESETn outside).
 `default_nettype none
 module fp3_axil #(
@@ -73,7 +74,8 @@ module fp3_axil #(
   parameter integer HAS_SQRT     = 1,
   parameter integer HAS_SIGN     = 1,
   parameter integer DIV_LATENCY  = 8,
-  parameter integer FMAX_PIPE    = 0
+  parameter integer FMAX_PIPE    = 0,
+  parameter integer WB_PORTS     = 4
 ) (
   input  wire                  clk_i,
   input  wire                  rst_i,
@@ -344,6 +346,7 @@ module fp3_axil #(
     .HAS_SIGN     (HAS_SIGN),
     .DIV_LATENCY  (DIV_LATENCY),
     .FMAX_PIPE    (FMAX_PIPE),
+    .WB_PORTS     (WB_PORTS),
     .CTX_CHECKED  (1),              // wr_ok: wd_ctx_q, wd_lane_q
     .HOST_WSEL    (1)               // host_wsel
   ) u_fp3 (

@@ -49,7 +49,7 @@
 // reads a few cycles later (fp3_top).
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
-// FLAGS_AHEAD, CTRL, HOST_ALL) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
+// FLAGS_AHEAD, CTRL, HOST_ALL, WB_PORTS) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
 // MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
 // HAS_SQRT, HAS_SIGN), passed through unchanged; IN_STAGES (0 .. 2),
 // OUT_STAGES, EQ_STAGE and HOST_STAGES (0 or 1 each), the broadcast stages
@@ -71,6 +71,7 @@ module fp3_lane #(
   parameter integer FLAGS_AHEAD = 0,
   parameter integer CTRL        = 1,
   parameter integer HOST_ALL    = 0,
+  parameter integer WB_PORTS    = 4,
   parameter integer ADD_LATENCY = 4,
   parameter integer MUL_LATENCY = 3,
   parameter integer MOV_LATENCY = 1,
@@ -233,7 +234,7 @@ module fp3_lane #(
 
   fp3_regfile #(.ENTRIES(ENTRIES), .XW(XW), .READ_STAGES(READ_STAGES),
                 .FLAGS_AHEAD(FLAGS_AHEAD), .CTRL(CTRL),
-                .HOST_ALL(HOST_ALL)) u_regs (
+                .HOST_ALL(HOST_ALL), .WB_PORTS(WB_PORTS)) u_regs (
     .clk_i           (clk_i),
     .rst_i           (rst_i),
     .ra_i            (s_ra),

@@ -116,7 +116,8 @@ module fp3_regfile #(
   parameter integer READ_STAGES = 1,
   parameter integer FLAGS_AHEAD = 0,
   parameter integer CTRL        = 1,
-  parameter integer HOST_ALL    = 0
+  parameter integer HOST_ALL    = 0,
+  parameter integer WB_PORTS    = 4
 ) (
   input  wire               clk_i,
   input  wire               rst_i,
@@ -166,6 +167,71 @@ module fp3_regfile #(
   input  wire [3:0]         lvt_b_i
 );
 
+  // ---- WB_PORTS = 1: the units' write-backs as one port -------------------
+  // The four units' write-backs, announcements and clears never share a
+  // cycle (the same latency, one issue per cycle: fp3_top WB_PORTS), so
+  // each group is one port: port 0 carries whichever is valid (an AND-OR
+  // of the valid ones), ports 1 .. 3 are idle, and the LVT, which would
+  // always name port 0, is not built (g_lvt_none, g_ctrl).  Port 2 still
+  // carries the host's write, to the bypass (its RAMs are not built: the
+  // host writes port 0's, as with HOST_ALL).
+  localparam [0:0] ONE = WB_PORTS == 1;
+  function [XW:0] vidx;   // {valid, index if valid}
+    input          v;
+    input [XW-1:0] i;
+    begin
+      vidx = {v, {XW{v}} & i};
+    end
+  endfunction
+  wire          m0_valid, m1_valid, m2_valid, m3_valid, n0_valid, n1_valid, n2_valid, n3_valid;
+  wire          k0_valid, k1_valid, k2_valid, k3_valid;
+  wire [XW-1:0] m0_idx, m1_idx, m2_idx, m3_idx, n0_idx, n1_idx, n2_idx, n3_idx;
+  wire [XW-1:0] k0_idx, k1_idx, k2_idx, k3_idx;
+  wire [31:0]   m0_data, m1_data, m2_data, m3_data;
+  generate
+    if (ONE) begin : g_wb_one
+      assign {m0_valid, m0_idx} = vidx(wb0_valid_i, wb0_idx_i) | vidx(wb1_valid_i, wb1_idx_i) |
+                                  vidx(wb2_valid_i, wb2_idx_i) | vidx(wb3_valid_i, wb3_idx_i);
+      assign m0_data = {32{wb0_valid_i}} & wb0_data_i | {32{wb1_valid_i}} & wb1_data_i |
+                       {32{wb2_valid_i}} & wb2_data_i | {32{wb3_valid_i}} & wb3_data_i;
+      assign {n0_valid, n0_idx} = vidx(wb0_in2_valid_i, wb0_in2_idx_i) |
+                                  vidx(wb1_in2_valid_i, wb1_in2_idx_i) |
+                                  vidx(wb2_in2_valid_i, wb2_in2_idx_i) |
+                                  vidx(wb3_in2_valid_i, wb3_in2_idx_i);
+      assign {k0_valid, k0_idx} = vidx(clr0_valid_i, clr0_idx_i) | vidx(clr1_valid_i, clr1_idx_i) |
+                                  vidx(clr2_valid_i, clr2_idx_i) | vidx(clr3_valid_i, clr3_idx_i);
+      assign {m1_valid, m2_valid, m3_valid, n1_valid, n2_valid, n3_valid} = 6'd0;
+      assign {k1_valid, k2_valid, k3_valid} = 3'd0;
+      assign {m1_idx, m2_idx, m3_idx, n1_idx, n2_idx, n3_idx, k1_idx, k2_idx, k3_idx} =
+             {9*XW{1'b0}};
+      assign {m1_data, m2_data, m3_data} = 96'd0;
+`ifdef FP3_SCHED_CHECK
+      // The ports never share a cycle (formal/sched.sby bmc_wb1).
+      wire [3:0] f_wv = {wb3_valid_i, wb2_valid_i, wb1_valid_i, wb0_valid_i};
+      wire [3:0] f_nv = {wb3_in2_valid_i, wb2_in2_valid_i, wb1_in2_valid_i, wb0_in2_valid_i};
+      wire [3:0] f_kv = {clr3_valid_i, clr2_valid_i, clr1_valid_i, clr0_valid_i};
+      always @(*) begin
+        wb_one_port:  assert ((f_wv & (f_wv - 4'd1)) == 4'd0);
+        in2_one_port: assert ((f_nv & (f_nv - 4'd1)) == 4'd0);
+        clr_one_port: assert ((f_kv & (f_kv - 4'd1)) == 4'd0);
+      end
+`endif
+    end else begin : g_wb_four
+      assign {m0_valid, m0_idx, m0_data} = {wb0_valid_i, wb0_idx_i, wb0_data_i};
+      assign {m1_valid, m1_idx, m1_data} = {wb1_valid_i, wb1_idx_i, wb1_data_i};
+      assign {m2_valid, m2_idx, m2_data} = {wb2_valid_i, wb2_idx_i, wb2_data_i};
+      assign {m3_valid, m3_idx, m3_data} = {wb3_valid_i, wb3_idx_i, wb3_data_i};
+      assign {n0_valid, n0_idx} = {wb0_in2_valid_i, wb0_in2_idx_i};
+      assign {n1_valid, n1_idx} = {wb1_in2_valid_i, wb1_in2_idx_i};
+      assign {n2_valid, n2_idx} = {wb2_in2_valid_i, wb2_in2_idx_i};
+      assign {n3_valid, n3_idx} = {wb3_in2_valid_i, wb3_in2_idx_i};
+      assign {k0_valid, k0_idx} = {clr0_valid_i, clr0_idx_i};
+      assign {k1_valid, k1_idx} = {clr1_valid_i, clr1_idx_i};
+      assign {k2_valid, k2_idx} = {clr2_valid_i, clr2_idx_i};
+      assign {k3_valid, k3_idx} = {clr3_valid_i, clr3_idx_i};
+    end
+  endgenerate
+
   // Port 2 carries the move path, or the host's write while stopped.  The
   // host's write is registered first (it lands a cycle later; a read in
   // between gets it through the bypass), which keeps the bus interface's
@@ -178,22 +244,22 @@ module fp3_regfile #(
     hidx_q  <= host_idx_i;
     hdata_q <= host_wdata_i;
   end
-  wire          w2_valid = wb2_valid_i || hwe_q;
-  wire [XW-1:0] w2_idx   = wb2_valid_i ? wb2_idx_i  : hidx_q;
-  wire [31:0]   w2_data  = wb2_valid_i ? wb2_data_i : hdata_q;
+  wire          w2_valid = m2_valid || hwe_q;
+  wire [XW-1:0] w2_idx   = m2_valid ? m2_idx  : hidx_q;
+  wire [31:0]   w2_data  = m2_valid ? m2_data : hdata_q;
   // ... and with HOST_ALL, ports 0 and 1 carry it too (their RAMs only;
   // the bypass takes the host's word from port 2).
-  wire          hwe_all  = HOST_ALL != 0 && hwe_q;
-  wire          w0_valid = wb0_valid_i || hwe_all;
-  wire [XW-1:0] w0_idx   = wb0_valid_i || !hwe_all ? wb0_idx_i  : hidx_q;
-  wire [31:0]   w0_data  = wb0_valid_i || !hwe_all ? wb0_data_i : hdata_q;
-  wire          w1_valid = wb1_valid_i || hwe_all;
-  wire [XW-1:0] w1_idx   = wb1_valid_i || !hwe_all ? wb1_idx_i  : hidx_q;
-  wire [31:0]   w1_data  = wb1_valid_i || !hwe_all ? wb1_data_i : hdata_q;
-  wire          w3_valid = wb3_valid_i || hwe_all;
-  wire [XW-1:0] w3_idx   = wb3_valid_i || !hwe_all ? wb3_idx_i  : hidx_q;
-  wire [31:0]   w3_data  = wb3_valid_i || !hwe_all ? wb3_data_i : hdata_q;
-  wire          hwe_lvt  = HOST_ALL == 0 && hwe_q;   // the host's write in the LVT
+  wire          hwe_all  = (HOST_ALL != 0 || ONE) && hwe_q;
+  wire          w0_valid = m0_valid || hwe_all;
+  wire [XW-1:0] w0_idx   = m0_valid || !hwe_all ? m0_idx  : hidx_q;
+  wire [31:0]   w0_data  = m0_valid || !hwe_all ? m0_data : hdata_q;
+  wire          w1_valid = m1_valid || hwe_all;
+  wire [XW-1:0] w1_idx   = m1_valid || !hwe_all ? m1_idx  : hidx_q;
+  wire [31:0]   w1_data  = m1_valid || !hwe_all ? m1_data : hdata_q;
+  wire          w3_valid = m3_valid || hwe_all;
+  wire [XW-1:0] w3_idx   = m3_valid || !hwe_all ? m3_idx  : hidx_q;
+  wire [31:0]   w3_data  = m3_valid || !hwe_all ? m3_data : hdata_q;
+  wire          hwe_lvt  = HOST_ALL == 0 && !ONE && hwe_q;   // the host's write in the LVT
   wire [XW-1:0] a_idx    = host_sel_i ? host_idx_i : ra_i;
 
   // ---- the RAMs: [write port][read port] -----------------------------------
@@ -206,36 +272,44 @@ module fp3_regfile #(
   fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram01 (
     .clk_i(clk_i), .we_i(w0_valid), .waddr_i(w0_idx), .wdata_i(w0_data),
     .raddr_i(rb_i), .rdata_o(q01));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram10 (
-    .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
-    .raddr_i(a_idx), .rdata_o(q10));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram11 (
-    .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
-    .raddr_i(rb_i), .rdata_o(q11));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram20 (
-    .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
-    .raddr_i(a_idx), .rdata_o(q20));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram21 (
-    .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
-    .raddr_i(rb_i), .rdata_o(q21));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram30 (
-    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
-    .raddr_i(a_idx), .rdata_o(q30));
-  fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram31 (
-    .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
-    .raddr_i(rb_i), .rdata_o(q31));
+  generate
+    if (!ONE) begin : g_ram_ports
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram10 (
+        .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
+        .raddr_i(a_idx), .rdata_o(q10));
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram11 (
+        .clk_i(clk_i), .we_i(w1_valid), .waddr_i(w1_idx), .wdata_i(w1_data),
+        .raddr_i(rb_i), .rdata_o(q11));
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram20 (
+        .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
+        .raddr_i(a_idx), .rdata_o(q20));
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram21 (
+        .clk_i(clk_i), .we_i(w2_valid), .waddr_i(w2_idx), .wdata_i(w2_data),
+        .raddr_i(rb_i), .rdata_o(q21));
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram30 (
+        .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
+        .raddr_i(a_idx), .rdata_o(q30));
+      fp3_ram #(.DEPTH(ENTRIES), .AW(XW), .WIDTH(32), .READ_STAGES(RAM_READ)) u_ram31 (
+        .clk_i(clk_i), .we_i(w3_valid), .waddr_i(w3_idx), .wdata_i(w3_data),
+        .raddr_i(rb_i), .rdata_o(q31));
+    end else begin : g_ram_port0
+      // (Ports 1 .. 3 write nothing: no RAMs; the LVT always names port 0.)
+      assign {q10, q11, q20, q21, q30, q31} = {6{32'd0}};
+      wire unused_w = &{1'b0, w1_valid, w1_idx, w1_data, w2_idx, w3_valid, w3_idx, w3_data};
+    end
+  endgenerate
 
   // The write-back ports' valid and index of the next cycle (READ_STAGES
   // = 4; the tag lines' own stage, which Yosys merges with these).
   reg [3:0]    nx_v;
   reg [XW-1:0] nx_i0, nx_i1, nx_i2, nx_i3;
   always @(posedge clk_i) begin
-    nx_v  <= rst_i ? 4'd0 : {wb3_in2_valid_i, wb2_in2_valid_i, wb1_in2_valid_i,
-                             wb0_in2_valid_i};
-    nx_i0 <= wb0_in2_idx_i;
-    nx_i1 <= wb1_in2_idx_i;
-    nx_i2 <= wb2_in2_idx_i;
-    nx_i3 <= wb3_in2_idx_i;
+    nx_v  <= rst_i ? 4'd0 : {n3_valid, n2_valid, n1_valid,
+                             n0_valid};
+    nx_i0 <= n0_idx;
+    nx_i1 <= n1_idx;
+    nx_i2 <= n2_idx;
+    nx_i3 <= n3_idx;
   end
 
   // ---- read stages: LVT choice and bypass --------------------------------
@@ -249,10 +323,10 @@ module fp3_regfile #(
   always @(posedge clk_i) begin
     a_idx_q <= a_idx;
     b_idx_q <= rb_i;
-    wd0_q   <= wb0_data_i;
-    wd1_q   <= wb1_data_i;
+    wd0_q   <= m0_data;
+    wd1_q   <= m1_data;
     wd2_q   <= w2_data;
-    wd3_q   <= wb3_data_i;
+    wd3_q   <= m3_data;
   end
   wire [ENTRIES-1:0] lvt_lo, lvt_hi;  // the LVT: entry r is {lvt_hi[r], lvt_lo[r]}
 
@@ -282,11 +356,11 @@ module fp3_regfile #(
       reg [3:0]    wv_q;                // the writes of the last cycle
       reg [XW-1:0] wi0_q, wi1_q, wi2_q, wi3_q;
       always @(posedge clk_i) begin
-        wv_q  <= rst_i ? 4'd0 : {wb3_valid_i, w2_valid, wb1_valid_i, wb0_valid_i};
-        wi0_q <= wb0_idx_i;
-        wi1_q <= wb1_idx_i;
+        wv_q  <= rst_i ? 4'd0 : {m3_valid, w2_valid, m1_valid, m0_valid};
+        wi0_q <= m0_idx;
+        wi1_q <= m1_idx;
         wi2_q <= w2_idx;
-        wi3_q <= wb3_idx_i;
+        wi3_q <= m3_idx;
       end
       // Bypass of one write-back cycle: {hit, data} for index x.
 `define FP3_BYPASS(x) \
@@ -295,7 +369,11 @@ module fp3_regfile #(
    (wv_q[2] && wi2_q == (x)) ? {1'b1, wd2_q} : \
    (wv_q[3] && wi3_q == (x)) ? {1'b1, wd3_q} : {33{1'b0}})
       wire [3:0]  a_lvt, b_lvt;             // one LVT read per port, one-hot
-      if (CTRL != 0) begin : g_lvt_own
+      if (ONE) begin : g_lvt_none
+        assign a_lvt = 4'b0001;
+        assign b_lvt = 4'b0001;
+        wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
+      end else if (CTRL != 0) begin : g_lvt_own
         assign a_lvt = lvt1h({lvt_hi[a_idx_q], lvt_lo[a_idx_q]});
         assign b_lvt = lvt1h({lvt_hi[b_idx_q], lvt_lo[b_idx_q]});
         wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
@@ -326,10 +404,10 @@ module fp3_regfile #(
       function [3:0] in2_hits;    // x among the write-backs two cycles ahead
         input [XW-1:0] x;
         begin
-          in2_hits = {wb0_in2_valid_i && wb0_in2_idx_i == x,
-                      wb1_in2_valid_i && wb1_in2_idx_i == x,
-                      wb2_in2_valid_i && wb2_in2_idx_i == x,
-                      wb3_in2_valid_i && wb3_in2_idx_i == x};
+          in2_hits = {n0_valid && n0_idx == x,
+                      n1_valid && n1_idx == x,
+                      n2_valid && n2_idx == x,
+                      n3_valid && n3_idx == x};
         end
       endfunction
       function [11:0] hits_known;  // {t + 2, t + 1, t: port 0, 1, 2, 3 each}
@@ -338,8 +416,8 @@ module fp3_regfile #(
           hits_known = {in2_hits(x),
                         nx_v[0] && nx_i0 == x, nx_v[1] && nx_i1 == x, nx_v[2] && nx_i2 == x,
                         nx_v[3] && nx_i3 == x,
-                        wb0_valid_i && wb0_idx_i == x, wb1_valid_i && wb1_idx_i == x,
-                        w2_valid && w2_idx == x, wb3_valid_i && wb3_idx_i == x};
+                        m0_valid && m0_idx == x, m1_valid && m1_idx == x,
+                        w2_valid && w2_idx == x, m3_valid && m3_idx == x};
         end
       endfunction
       function [15:0] byp_sel;    // {t + 3, t + 2, t + 1, t: port 0, 1, 2, 3 each}
@@ -381,7 +459,12 @@ module fp3_regfile #(
       // high bits pick the group (a multiplexer per bit, nothing behind it
       // but the gate with a_ram_q).
       wire [3:0] a_lvt2, b_lvt2;
-      if (CTRL == 0) begin : g_lvt_lane0
+      if (ONE) begin : g_lvt_none
+        // (One write port: port 0's RAMs.)
+        assign a_lvt2 = 4'b0001;
+        assign b_lvt2 = 4'b0001;
+        wire unused_lvt = &{1'b0, a_idx_qq, b_idx_qq, lvt_a_i, lvt_b_i};
+      end else if (CTRL == 0) begin : g_lvt_lane0
         assign a_lvt2 = lvt_a_i;
         assign b_lvt2 = lvt_b_i;
         wire unused_lvt = &{1'b0, a_idx_qq, b_idx_qq};
@@ -421,7 +504,7 @@ module fp3_regfile #(
         assign a_lvt2 = lvt1h({lvt_hi[a_idx_qq], lvt_lo[a_idx_qq]});
         assign b_lvt2 = lvt1h({lvt_hi[b_idx_qq], lvt_lo[b_idx_qq]});
       end
-      if (CTRL != 0) begin : g_lvt_in
+      if (CTRL != 0 && !ONE) begin : g_lvt_in
         wire unused_lvt_i = &{1'b0, lvt_a_i, lvt_b_i};
       end
       assign lvt_a_o = a_lvt2;
@@ -439,7 +522,7 @@ module fp3_regfile #(
         wd2_qq <= wd2_q;
         wd3_qq <= wd3_q;
       end
-      wire [383:0] bw = {wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+      wire [383:0] bw = {m0_data, m1_data, m2_data, m3_data,
                          wd0_q, wd1_q, wd2_q, wd3_q, wd0_qq, wd1_qq, wd2_qq, wd3_qq};
       reg  [31:0] qa0_q, qa1_q, qa2_q, qa3_q, qb0_q, qb1_q, qb2_q, qb3_q;
       reg  [31:0] a_bd_q, b_bd_q;
@@ -462,10 +545,10 @@ module fp3_regfile #(
                     {4{b_ram_q}} & {b_lvt2[0], b_lvt2[1], b_lvt2[2], b_lvt2[3]}};
       end
       wire [31:0] a_nx = pick12({3'b000, a_sel_q},
-                                {96'd0, wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+                                {96'd0, m0_data, m1_data, m2_data, m3_data,
                                  a_bd_q, qa0_q, qa1_q, qa2_q, qa3_q});
       wire [31:0] b_nx = pick12({3'b000, b_sel_q},
-                                {96'd0, wb0_data_i, wb1_data_i, wb2_data_i, wb3_data_i,
+                                {96'd0, m0_data, m1_data, m2_data, m3_data,
                                  b_bd_q, qb0_q, qb1_q, qb2_q, qb3_q});
       always @(posedge clk_i) begin
         a_out_q <= a_nx;
@@ -528,7 +611,7 @@ module fp3_regfile #(
   endfunction
   wire [ENTRIES-1:0] h0, h1, h2, h3;
   generate
-    if (CTRL == 0) begin : g_hit_none           // no LVT (lanes 1 ..)
+    if (CTRL == 0 || ONE) begin : g_hit_none    // no LVT (lanes 1 .., or one port)
       assign {h0, h1, h2, h3} = {4*ENTRIES{1'b0}};
     end else if (READ_STAGES == 4) begin : g_hit_ahead
       // Decoded in two halves from the indices nx_* and hidx_q register:
@@ -542,15 +625,15 @@ module fp3_regfile #(
       reg [(1<<HW)-1:0] hh0_q, hh1_q, hh2_q, hh3_q, hhh_q;   // high halves
       reg [(1<<LW)-1:0] hl0_q, hl1_q, hl2_q, hl3_q, hlh_q;   // low halves
       always @(posedge clk_i) begin
-        hh0_q <= dec_hi(!rst_i && wb0_in2_valid_i, wb0_in2_idx_i[XW-1:LW]);
-        hh1_q <= dec_hi(!rst_i && wb1_in2_valid_i, wb1_in2_idx_i[XW-1:LW]);
-        hh2_q <= dec_hi(!rst_i && wb2_in2_valid_i, wb2_in2_idx_i[XW-1:LW]);
-        hh3_q <= dec_hi(!rst_i && wb3_in2_valid_i, wb3_in2_idx_i[XW-1:LW]);
+        hh0_q <= dec_hi(!rst_i && n0_valid, n0_idx[XW-1:LW]);
+        hh1_q <= dec_hi(!rst_i && n1_valid, n1_idx[XW-1:LW]);
+        hh2_q <= dec_hi(!rst_i && n2_valid, n2_idx[XW-1:LW]);
+        hh3_q <= dec_hi(!rst_i && n3_valid, n3_idx[XW-1:LW]);
         hhh_q <= dec_hi(1'b1, host_idx_i[XW-1:LW]);
-        hl0_q <= dec_lo(wb0_in2_idx_i[LW-1:0]);
-        hl1_q <= dec_lo(wb1_in2_idx_i[LW-1:0]);
-        hl2_q <= dec_lo(wb2_in2_idx_i[LW-1:0]);
-        hl3_q <= dec_lo(wb3_in2_idx_i[LW-1:0]);
+        hl0_q <= dec_lo(n0_idx[LW-1:0]);
+        hl1_q <= dec_lo(n1_idx[LW-1:0]);
+        hl2_q <= dec_lo(n2_idx[LW-1:0]);
+        hl3_q <= dec_lo(n3_idx[LW-1:0]);
         hlh_q <= dec_lo(host_idx_i[LW-1:0]);
       end
       reg [ENTRIES-1:0] h0_q, h1_q, h2_q, h3_q;
@@ -563,10 +646,10 @@ module fp3_regfile #(
       end
       assign {h0, h1, h2, h3} = {h0_q, h1_q, h2_q, h3_q};
     end else begin : g_hit_now
-      assign h0 = dec(wb0_valid_i, wb0_idx_i);
-      assign h1 = dec(wb1_valid_i, wb1_idx_i);
-      assign h2 = dec(wb2_valid_i, wb2_idx_i) | dec(hwe_lvt, hidx_q);
-      assign h3 = dec(wb3_valid_i, wb3_idx_i);
+      assign h0 = dec(m0_valid, m0_idx);
+      assign h1 = dec(m1_valid, m1_idx);
+      assign h2 = dec(m2_valid, m2_idx) | dec(hwe_lvt, hidx_q);
+      assign h3 = dec(m3_valid, m3_idx);
     end
   endgenerate
 
@@ -599,22 +682,22 @@ module fp3_regfile #(
       reg [(1<<HW)-1:0] ch0_q, ch1_q, ch2_q, ch3_q;   // high halves
       reg [(1<<LW)-1:0] cl0_q, cl1_q, cl2_q, cl3_q;   // low halves
       always @(posedge clk_i) begin
-        ch0_q <= dec_hi(!rst_i && clr0_valid_i, clr0_idx_i[XW-1:LW]);
-        ch1_q <= dec_hi(!rst_i && clr1_valid_i, clr1_idx_i[XW-1:LW]);
-        ch2_q <= dec_hi(!rst_i && clr2_valid_i, clr2_idx_i[XW-1:LW]);
-        ch3_q <= dec_hi(!rst_i && clr3_valid_i, clr3_idx_i[XW-1:LW]);
-        cl0_q <= dec_lo(clr0_idx_i[LW-1:0]);
-        cl1_q <= dec_lo(clr1_idx_i[LW-1:0]);
-        cl2_q <= dec_lo(clr2_idx_i[LW-1:0]);
-        cl3_q <= dec_lo(clr3_idx_i[LW-1:0]);
+        ch0_q <= dec_hi(!rst_i && k0_valid, k0_idx[XW-1:LW]);
+        ch1_q <= dec_hi(!rst_i && k1_valid, k1_idx[XW-1:LW]);
+        ch2_q <= dec_hi(!rst_i && k2_valid, k2_idx[XW-1:LW]);
+        ch3_q <= dec_hi(!rst_i && k3_valid, k3_idx[XW-1:LW]);
+        cl0_q <= dec_lo(k0_idx[LW-1:0]);
+        cl1_q <= dec_lo(k1_idx[LW-1:0]);
+        cl2_q <= dec_lo(k2_idx[LW-1:0]);
+        cl3_q <= dec_lo(k3_idx[LW-1:0]);
       end
       assign fset = dec_join(sh, sl);
       assign fclr = dec_join(ch0_q, cl0_q) | dec_join(ch1_q, cl1_q) | dec_join(ch2_q, cl2_q) |
                     dec_join(ch3_q, cl3_q);
     end else begin : g_flags_now
       assign fset = dec(set_i, set_idx_i);
-      assign fclr = dec(clr0_valid_i, clr0_idx_i) | dec(clr1_valid_i, clr1_idx_i) |
-                    dec(clr2_valid_i, clr2_idx_i) | dec(clr3_valid_i, clr3_idx_i);
+      assign fclr = dec(k0_valid, k0_idx) | dec(k1_valid, k1_idx) |
+                    dec(k2_valid, k2_idx) | dec(k3_valid, k3_idx);
     end
   endgenerate
 
@@ -626,20 +709,27 @@ module fp3_regfile #(
       // Register r: LVT entry {lvt_hi_q[r], lvt_lo_q[r]} (0 .. 3: the
       // port that wrote it last; a lower port wins over a higher one), busy
       // flag busy_q[r] (the set wins over a clear).  The RAMs start at zero.
-      reg  [ENTRIES-1:0] busy_q, lvt_lo_q, lvt_hi_q;
+      reg  [ENTRIES-1:0] busy_q;
       wire [ENTRIES-1:0] busy_d = busy_q & ~fclr | fset;
-      wire [ENTRIES-1:0] hit  = h0 | h1 | h2 | h3;
-      wire [ENTRIES-1:0] won1 = h1 & ~h0;
-      wire [ENTRIES-1:0] won2 = h2 & ~h1 & ~h0;
-      wire [ENTRIES-1:0] won3 = h3 & ~h2 & ~h1 & ~h0;
-      always @(posedge clk_i) begin
-        lvt_lo_q <= rst_i ? {ENTRIES{1'b0}} : lvt_lo_q & ~hit | won1 | won3;
-        lvt_hi_q <= rst_i ? {ENTRIES{1'b0}} : lvt_hi_q & ~hit | won2 | won3;
-        busy_q   <= rst_i ? {ENTRIES{1'b0}} : busy_d;
-      end
-      assign lvt_lo = lvt_lo_q;
-      assign lvt_hi = lvt_hi_q;
+      always @(posedge clk_i) busy_q <= rst_i ? {ENTRIES{1'b0}} : busy_d;
       assign busy_o = busy_q;
+      if (ONE) begin : g_no_lvt
+        // (One write port: nothing to choose.)
+        assign {lvt_lo, lvt_hi} = {2*ENTRIES{1'b0}};
+        wire unused_hits = &{1'b0, h0, h1, h2, h3, hwe_lvt, lvt_lo, lvt_hi};
+      end else begin : g_lvt
+        reg  [ENTRIES-1:0] lvt_lo_q, lvt_hi_q;
+        wire [ENTRIES-1:0] hit  = h0 | h1 | h2 | h3;
+        wire [ENTRIES-1:0] won1 = h1 & ~h0;
+        wire [ENTRIES-1:0] won2 = h2 & ~h1 & ~h0;
+        wire [ENTRIES-1:0] won3 = h3 & ~h2 & ~h1 & ~h0;
+        always @(posedge clk_i) begin
+          lvt_lo_q <= rst_i ? {ENTRIES{1'b0}} : lvt_lo_q & ~hit | won1 | won3;
+          lvt_hi_q <= rst_i ? {ENTRIES{1'b0}} : lvt_hi_q & ~hit | won2 | won3;
+        end
+        assign lvt_lo = lvt_lo_q;
+        assign lvt_hi = lvt_hi_q;
+      end
       // idle_o, a cycle late, from a register of its own: the flags' next
       // state ORed in groups of 16 and registered (any_q: a group's flags
       // now), then joined and registered (idle_q: no flag in the last
@@ -679,8 +769,8 @@ module fp3_regfile #(
       assign idle_o   = 1'b1;
       assign {lvt_lo, lvt_hi} = {2*ENTRIES{1'b0}};
       wire unused_ctrl = &{1'b0, lvt_lo, lvt_hi, h0, h1, h2, h3, fset, fclr, hwe_lvt, set_i,
-                           set_idx_i, clr0_valid_i, clr0_idx_i, clr1_valid_i, clr1_idx_i,
-                           clr2_valid_i, clr2_idx_i, clr3_valid_i, clr3_idx_i};
+                           set_idx_i, k0_valid, k0_idx, k1_valid, k1_idx,
+                           k2_valid, k2_idx, k3_valid, k3_idx};
     end
   endgenerate
 endmodule

@@ -98,7 +98,7 @@
 //   busy_i [2**XW]    the register file's busy flags
 //   ahead_valid_i [4], ahead_idx_i [4*XW]  write-backs announced now
 //                     (add, mul, move, div/sqrt); early_* next cycle; pre_*
-//                     the cycle after; pre2_*, pre3_* [3], [3*XW] (add,
+//                     the cycle after; pre2_*, pre3_* [4], [4*XW] (add,
 //                     mul, div/sqrt) two and three cycles after early_*
 //                     (fp3_wb_tag)
 //   issue_i, issue_unit_i [3], rd_i [XW]  the instruction issuing now
@@ -121,7 +121,8 @@ module fp3_sched_queue #(
   parameter integer IW           = 5,
   parameter integer AW           = 8,
   parameter integer PICK_STAGES  = 0,
-  parameter integer FETCH_STAGE  = 0
+  parameter integer FETCH_STAGE  = 0,
+  parameter integer MOV_LONG     = 0
 ) (
   input  wire                         clk_i,
   input  wire                         rst_i,
@@ -146,10 +147,10 @@ module fp3_sched_queue #(
   input  wire [4*(CW+IW)-1:0]         early_idx_i,
   input  wire [3:0]                   pre_valid_i,
   input  wire [4*(CW+IW)-1:0]         pre_idx_i,
-  input  wire [2:0]                   pre2_valid_i,
-  input  wire [3*(CW+IW)-1:0]         pre2_idx_i,
-  input  wire [2:0]                   pre3_valid_i,
-  input  wire [3*(CW+IW)-1:0]         pre3_idx_i,
+  input  wire [3:0]                   pre2_valid_i,
+  input  wire [4*(CW+IW)-1:0]         pre2_idx_i,
+  input  wire [3:0]                   pre3_valid_i,
+  input  wire [4*(CW+IW)-1:0]         pre3_idx_i,
   input  wire                         issue_i,
   input  wire [2:0]                   issue_unit_i,
   input  wire [CW+IW-1:0]             rd_i,
@@ -263,20 +264,10 @@ module fp3_sched_queue #(
              flag1(v[3] && i[3*XW+IW +: CW] == x, i[3*XW +: IW]);
     end
   endfunction
-  // The long lines' (add, mul, div/sqrt: pre2_*_i, pre3_*_i's order) valid
-  // bits and indices in ann4's order, the move line's left out.
-  function [3:0] long_v;
-    input [2:0] v;
-    begin
-      long_v = {v[2], 1'b0, v[1:0]};
-    end
-  endfunction
-  function [4*XW-1:0] long_i;
-    input [3*XW-1:0] i;
-    begin
-      long_i = {i[2*XW +: XW], {XW{1'b0}}, i[0 +: 2*XW]};
-    end
-  endfunction
+  // The long lines, which announce two cycles ahead of their pick
+  // (add, mul, div/sqrt; the move line too with MOV_LONG), one bit per
+  // line in ann4's order; the short move line's announcement is its pick.
+  localparam [3:0] LONG = MOV_LONG != 0 ? 4'b1111 : 4'b1011;
   // The lookup's context (bctx): with FETCH_STAGE a kept copy of nctx_i,
   // which is fctx_i a cycle late, placed beside the flags' multiplexer
   // (unless g_mask_ahead selects the flags a cycle earlier) and the
@@ -302,8 +293,8 @@ module fp3_sched_queue #(
   wire [RN-1:0] bflags, bann;
   always @(posedge clk_i)
     bq_q <= (smask | (bflags & ~cmask)) & ~bann
-            & ~ann4(pre_valid_i & 4'b1011 & {4{LEAD}}, pre_idx_i, bctx)
-            & ~ann4(long_v(pre2_valid_i) & {4{LEAD}}, long_i(pre2_idx_i), bctx);
+            & ~ann4(pre_valid_i & LONG & {4{LEAD}}, pre_idx_i, bctx)
+            & ~ann4(pre2_valid_i & LONG & {4{LEAD}}, pre2_idx_i, bctx);
   // The lookup: the flags of the arriving word's fields, less the
   // announcements of this cycle (used by the context whose word it is).
   reg  [2:0]    lk_q;
@@ -313,13 +304,14 @@ module fp3_sched_queue #(
   // now, which issues in the next cycle.
   wire [NC-1:0]    pg_w;
   wire [NC*IW-1:0] pg_rd;
-  // The announcements the per-context copies (g_copy) register: add, mul
-  // and div/sqrt three cycles ahead of early_*_i (pre3_*_i), move a cycle
-  // ahead (pre_*_i: its line is the shortest, MOV_LATENCY = 1 +
-  // PICK_STAGES, and its announcement is its pick; fp3_top).
-  wire [3:0]      cp_valid = long_v(pre3_valid_i) | {1'b0, pre_valid_i[2], 2'b00};
-  wire [4*XW-1:0] cp_idx   = long_i(pre3_idx_i) | {{XW{1'b0}}, pre_idx_i[2*XW +: XW],
-                                                   {(2*XW){1'b0}}};
+  // The announcements the per-context copies (g_copy) register: the long
+  // lines' three cycles ahead of early_*_i (pre3_*_i), the short move
+  // line's a cycle ahead (pre_*_i: MOV_LATENCY = 1 + PICK_STAGES, and its
+  // announcement is its pick; fp3_top).
+  wire [3:0]      cp_valid = pre3_valid_i & LONG | pre_valid_i & ~LONG;
+  wire [4*XW-1:0] cp_idx   = {pre3_idx_i[3*XW +: XW],
+                              MOV_LONG != 0 ? pre3_idx_i[2*XW +: XW] : pre_idx_i[2*XW +: XW],
+                              pre3_idx_i[0 +: 2*XW]};
 
   // ---- every context's queue and its head's readiness -----------------------
   genvar c, e, l;
@@ -532,11 +524,11 @@ module fp3_sched_queue #(
         sset_q <= flag1(issue_i && issue_unit_i != UNIT_NONE && rd_i[IW +: CW] == fcm_q,
                         rd_i[IW-1:0]);
         sclr_q <= ann4(ahead_valid_i, ahead_idx_i, fcm_q);
-        sann_q <= ann4(pre_valid_i & 4'b1011, pre_idx_i, fcm_q);
+        sann_q <= ann4(pre_valid_i & LONG, pre_idx_i, fcm_q);
       end
       // The register file's update of the edge ending a - 2 (the set wins).
       assign bflags = sset_q | (bsel_q & ~sclr_q);
-      assign bann   = sann_q | ann4(early_valid_i & 4'b0100, early_idx_i, bctx);
+      assign bann   = sann_q | ann4(early_valid_i & ~LONG, early_idx_i, bctx);
     end else begin : g_mask_now
       assign smask = flag1(issue_i && issue_unit_i != UNIT_NONE && rd_i[IW +: CW] == nctx_i,
                            rd_i[IW-1:0]);

@@ -50,6 +50,10 @@
 //   DRAIN         cycles from a write-back's announcement (ahead_*_i) to
 //                 the write-back, >= 1
 //   RUN_COPIES    copies of RUNNING (run_copy_o: fp3_sched_loop), >= 1
+//   MOV_LONG      0: the move path's tag line is the shortest, 1 + PICK_STAGES
+//                 cycles (its announcement is its pick); 1: it is as long
+//                 as the add line's (fp3_top WB_PORTS = 1), and counts as
+//                 one of the long lines (fp3_sched_queue MOV_LONG)
 // Ports: see the groups below; counters are 64 bits, cleared by START.
 // Program writes (imem_*) land in the memory a cycle later (FETCH_STAGE:
 // two; registered and decoded first).  Register indices towards the
@@ -75,7 +79,8 @@ module fp3_scheduler #(
   parameter integer PICK_STAGES  = 0,
   parameter integer FETCH_STAGE  = 0,
   parameter integer DRAIN        = 1,
-  parameter integer RUN_COPIES   = 1
+  parameter integer RUN_COPIES   = 1,
+  parameter integer MOV_LONG     = 0
 ) (
   input  wire                         clk_i,
   input  wire                         rst_i,
@@ -112,13 +117,13 @@ module fp3_scheduler #(
   input  wire [4*(CW+IW)-1:0]         early_idx_i,
   input  wire [3:0]                   pre_valid_i,   // ... those of the cycle after
   input  wire [4*(CW+IW)-1:0]         pre_idx_i,     //     (early_*_i a cycle ahead)
-  // ... two and three cycles ahead of early_*_i, add, mul and div/sqrt
-  // ports only (in this order), as far as their tag lines reach
-  // (fp3_wb_tag; used with PICK_STAGES = 2)
-  input  wire [2:0]                   pre2_valid_i,
-  input  wire [3*(CW+IW)-1:0]         pre2_idx_i,
-  input  wire [2:0]                   pre3_valid_i,
-  input  wire [3*(CW+IW)-1:0]         pre3_idx_i,
+  // ... two and three cycles ahead of early_*_i, as far as their tag
+  // lines reach (fp3_wb_tag; used with PICK_STAGES = 2; the move port's
+  // only with MOV_LONG)
+  input  wire [3:0]                   pre2_valid_i,
+  input  wire [4*(CW+IW)-1:0]         pre2_idx_i,
+  input  wire [3:0]                   pre3_valid_i,
+  input  wire [4*(CW+IW)-1:0]         pre3_idx_i,
   input  wire                         idle_i,        // no busy flag in the last cycle
   // a beq issued two cycles ago, resolved: its context (one-hot; none if
   // no beq was) and outcome
@@ -202,7 +207,8 @@ module fp3_scheduler #(
   );
 
   fp3_sched_queue #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .IW(IW), .AW(AW),
-                    .PICK_STAGES(PICK_STAGES), .FETCH_STAGE(FETCH_STAGE)) u_queue (
+                    .PICK_STAGES(PICK_STAGES), .FETCH_STAGE(FETCH_STAGE),
+                    .MOV_LONG(MOV_LONG)) u_queue (
     .clk_i         (clk_i),
     .rst_i         (rst_i),
     .running_i     (running_o),

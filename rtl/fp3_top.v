@@ -140,6 +140,7 @@ module fp3_top #(
   parameter integer HAS_SIGN     = 1,
   parameter integer DIV_LATENCY  = 8,
   parameter integer FMAX_PIPE    = 0,
+  parameter integer WB_PORTS     = 4,
   parameter integer CTX_CHECKED  = 0,
   parameter integer HOST_WSEL    = 0
 ) (
@@ -196,7 +197,10 @@ module fp3_top #(
   localparam integer LD = 2 * BC;
   // The move path's latency: with the pick stages, PICK more, so that its
   // announcement comes after its issue (the issue sets the busy flag).
-  localparam integer MOV_LATENCY = 1 + PICK;
+  // With one write-back port (WB_PORTS = 1) the add/sub core's, so that
+  // no two units write back in one cycle.
+  localparam [0:0]   WB1 = WB_PORTS == 1;
+  localparam integer MOV_LATENCY = WB1 ? ADD_LATENCY : 1 + PICK;
   // The div/sqrt unit is built (either core): else its tag line never
   // starts an operation, and synthesis removes it and its compares.
   localparam [0:0] HAS_DSU = HAS_DIV != 0 || HAS_SQRT != 0;
@@ -213,6 +217,17 @@ module fp3_top #(
       // (and the cycle before it, fp3_wb_tag early_*) must come after the
       // issue that sets its busy flag: latency >= PICK + 1.
       fp3_top_error_FMAX_PIPE_needs_ADD_MUL_and_DIV_LATENCY_of_at_least_3 u_error ();
+    end
+    if (WB_PORTS != 1 && WB_PORTS != 4) begin : g_bad_wb_ports
+      // Elaboration error on purpose: one port per unit, or one for all.
+      fp3_top_error_WB_PORTS_must_be_1_or_4 u_error ();
+    end
+    if (WB_PORTS == 1 && (ADD_LATENCY != MUL_LATENCY || HAS_DIV != 0 || HAS_SQRT != 0))
+    begin : g_bad_wb_one
+      // Elaboration error on purpose: one write-back port needs every
+      // unit's results ADD_LATENCY cycles after its issue (the move path
+      // is delayed to it; the div/sqrt unit's latency is its own).
+      fp3_top_error_WB_PORTS_1_needs_ADD_LATENCY_equal_to_MUL_LATENCY_and_no_div_sqrt u_error ();
     end
     if (DIV_LATENCY < 1 || DIV_LATENCY > 255) begin : g_bad_div_latency
       // Elaboration error on purpose: INFO1 reports DIV_LATENCY in 8 bits.
@@ -348,8 +363,6 @@ module fp3_top #(
   wire [XW-1:0] addp2_idx, mulp2_idx, movp2_idx, divp2_idx;
   wire          addp3_valid, mulp3_valid, movp3_valid, divp3_valid;   // ... and before that
   wire [XW-1:0] addp3_idx, mulp3_idx, movp3_idx, divp3_idx;
-  // (The move line's announcement is its pick: it reaches no further.)
-  wire unused_movp23 = &{1'b0, movp2_valid, movp2_idx, movp3_valid, movp3_idx};
   wire          addn_valid, muln_valid, movn_valid, divn_valid;   // write-backs in two cycles
   wire [XW-1:0] addn_idx, muln_idx, movn_idx, divn_idx;
   wire          pick_wr;                              // the next issue's destination
@@ -361,7 +374,8 @@ module fp3_top #(
                   .IMEM_DEPTH(IMEM_DEPTH), .AW(AW), .HAS_ADD(HAS_ADD),
                   .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
                   .HAS_SIGN(HAS_SIGN), .PICK_STAGES(PICK),
-                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD + LD), .RUN_COPIES(NL)) u_sched (
+                  .FETCH_STAGE(FMAX_PIPE), .DRAIN(AHEAD + LD), .RUN_COPIES(NL),
+                  .MOV_LONG(WB1 ? 1 : 0)) u_sched (
     .clk_i            (clk_i),
     .rst_i            (rst_i),
     .imem_we_i        (imem_we),
@@ -392,10 +406,10 @@ module fp3_top #(
     .early_idx_i      ({dive_idx, move_idx, mule_idx, adde_idx}),
     .pre_valid_i      ({divp_valid, movp_valid, mulp_valid, addp_valid}),
     .pre_idx_i        ({divp_idx, movp_idx, mulp_idx, addp_idx}),
-    .pre2_valid_i     ({divp2_valid, mulp2_valid, addp2_valid}),
-    .pre2_idx_i       ({divp2_idx, mulp2_idx, addp2_idx}),
-    .pre3_valid_i     ({divp3_valid, mulp3_valid, addp3_valid}),
-    .pre3_idx_i       ({divp3_idx, mulp3_idx, addp3_idx}),
+    .pre2_valid_i     ({divp2_valid, movp2_valid, mulp2_valid, addp2_valid}),
+    .pre2_idx_i       ({divp2_idx, movp2_idx, mulp2_idx, addp2_idx}),
+    .pre3_valid_i     ({divp3_valid, movp3_valid, mulp3_valid, addp3_valid}),
+    .pre3_idx_i       ({divp3_idx, movp3_idx, mulp3_idx, addp3_idx}),
     .idle_i           (idle),
     .br_i             (br_q),
     .br_taken_i       (br_taken_q),
@@ -456,7 +470,7 @@ module fp3_top #(
   generate
     for (ln = 0; ln < NL; ln = ln + 1) begin : g_lane
       fp3_lane #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE),
-                 .CTRL(ln == 0 ? 1 : 0), .HOST_ALL(NL > 1 ? 1 : 0),
+                 .CTRL(ln == 0 ? 1 : 0), .HOST_ALL(NL > 1 ? 1 : 0), .WB_PORTS(WB_PORTS),
                  .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
                  .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND),
                  .FTZ(FTZ), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL),
@@ -624,10 +638,12 @@ module fp3_top #(
   // scheduler and the register file hang on a register of their own, not
   // on the issue register across the die (a critical path: 5.9 ns of
   // routing).
+  // With one write-back port the move line is as long as the add line
+  // and takes its input as that does.
   wire          mov_issue;
   wire [XW-1:0] mov_rd;
   generate
-    if (PICK != 0) begin : g_mov_copy
+    if (PICK != 0 && !WB1) begin : g_mov_copy
       fp3_keep #(.W(1 + XW)) u_mov_copy (
         .clk_i (clk_i),
         .d_i   ({pick_mov, pick_rd}),
