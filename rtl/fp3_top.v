@@ -200,7 +200,14 @@ module fp3_top #(
   // With one write-back port (WB_PORTS = 1) the add/sub core's, so that
   // no two units write back in one cycle.
   localparam [0:0]   WB1 = WB_PORTS == 1;
+`ifdef FP3_MUTANT_MOV_SHORT
+  // A broken build for formal/sched.sby's mutant_wb1: the move path a
+  // cycle shorter than the add/sub core, so that a move and an add issued
+  // a cycle apart write back in one cycle.
+  localparam integer MOV_LATENCY = WB1 ? ADD_LATENCY - 1 : 1 + PICK;
+`else
   localparam integer MOV_LATENCY = WB1 ? ADD_LATENCY : 1 + PICK;
+`endif
   // The div/sqrt unit is built (either core): else its tag line never
   // starts an operation, and synthesis removes it and its compares.
   localparam [0:0] HAS_DSU = HAS_DIV != 0 || HAS_SQRT != 0;
