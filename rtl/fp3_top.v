@@ -553,13 +553,27 @@ module fp3_top #(
   // The register file answers a read of the issue cycle t in cycle t + READ;
   // the rest of the issued operation waits beside it (one copy for all
   // lanes).
-  fp_pipe #(.WIDTH(1 + 3 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
+  fp_pipe #(.WIDTH(3 + 1 + 3 + 1 + 32 + CW), .DEPTH(READ)) u_read (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (issue && issue_unit != UNIT_NONE),
-    .data_i  ({beq, issue_unit, issue_sub, issue_sop, issue_imm, imm, issue_ctx}),
+    .data_i  ({issue_unit, issue_sub, issue_sop, issue_imm, imm, issue_ctx}),
     .valid_o (rd_valid),
-    .data_o  ({rd_beq, rd_unit, rd_sub, rd_sop, rd_imm, rd_immval, rd_ctx})
+    .data_o  ({rd_unit, rd_sub, rd_sop, rd_imm, rd_immval, rd_ctx})
+  );
+  // A beq (no unit) rides in a valid bit of its own, which reset clears:
+  // as a data bit it would leave reset holding whatever it held, and an
+  // outcome of it could reach a run started within READ + LD + BC
+  // cycles of the reset (formal/sched.sby bmc_wb1_fmax).
+  wire rd_beq_nil;   // (no data: the valid bit is the beq)
+  wire unused_rd_beq_nil = &{1'b0, rd_beq_nil};
+  fp_pipe #(.WIDTH(1), .DEPTH(READ)) u_read_beq (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (issue && beq),
+    .data_i  (1'b0),
+    .valid_o (rd_beq),
+    .data_o  (rd_beq_nil)
   );
 
   // ---- write-back tag lines ------------------------------------------------

@@ -65,9 +65,12 @@ for job in "$@"; do
         case "$vcd" in /*) ;; *) vcd="$vcd";; esac
         echo "        trace: $vcd"
       done
-    sed -n 's/.*summary: *failed assertion \([^ ]*\) at \([^ ]*\).*/\1 \2/p' "$dir.log" |
-      sort -u | while read -r name loc; do
-        echo "        failed assertion: $name at $(repo_path "$loc")"
+    # (a name may hold escaped identifiers of generate blocks, which Yosys
+    # writes with a backslash and a space: "\g_lane[0].u_lane .u_regs.x")
+    sed -n 's/.*summary: *failed assertion \(.*\) at \([^ ]*\)\( step .*\)\{0,1\}$/\1|\2/p' "$dir.log" |
+      sort -u | while IFS='|' read -r name loc; do
+        name=${name//\\/}
+        echo "        failed assertion: ${name// /} at $(repo_path "$loc")"
       done
     # (unreached covers: the lines under "unreached cover statements:")
     sed -n 's/.*summary:   \([^ ]*\) at \([^ ]*\)$/\1 \2/p' "$dir.log" |

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail.  Five broken copies, each of
+# test_formal_mutant.sh -- the proofs can fail.  Six broken copies, each of
 # which must FAIL its property set, and scripts/formal.sh must name the
 # counterexample trace (an existing VCD) and the failing assertion's
 # file:line in the repository:
@@ -28,6 +28,11 @@
 #                          host's FLAGS read without the staged cycle, so
 #                          a write-back of the last cycle is missing):
 #                          flags_staged_exact in rtl/fp3_top.v
+#   sched.sby:mutant_wb1   rtl/fp3_top.v with FP3_MUTANT_MOV_SHORT (one
+#                          write-back port, the move path a cycle shorter
+#                          than the add/sub core: a move and an add issued
+#                          a cycle apart meet at the port): wb_one_port,
+#                          in2_one_port or clr_one_port in rtl/fp3_regfile.v
 set -u
 cd "$(dirname "$0")/.."
 out=${FORMAL_OUT:-build/formal}/mutant
@@ -56,3 +61,4 @@ check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_fa
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_flags 'flags_staged_exact at rtl/fp3_top\.v:[0-9]+$'
+check formal/sched.sby:mutant_wb1 '(wb|in2|clr)_one_port at rtl/fp3_regfile\.v:[0-9]+$'
