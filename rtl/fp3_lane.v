@@ -17,8 +17,8 @@
 // binary32 significand product), the move path's registers, fp_div and
 // fp_sqrt when built (HAS_DIV, HAS_SQRT), and eight register RAMs of
 // 2**XW x 32 bits (block RAM: fp3_ram; the div/sqrt port's two are never
-// written without the unit and synthesize away), plus the read stages'
-// bypass.  The register file's busy flags and live value table
+// written without the unit and synthesize away; WB_PORTS = 1: two), plus
+// the read stages' bypass.  The register file's busy flags and live value table
 // would be identical in every lane (they see the same indices), so only
 // lane 0 has them (CTRL = 1): fp3_top uses its busy flags (busy_o,
 // idle_o) as the scoreboard, and lanes 1 .. (CTRL = 0) take its LVT

@@ -67,8 +67,18 @@
 //                the same edge as with 0.
 //   CTRL         1: busy flags and LVT (the whole bank); 0: data only, the
 //                LVT's choice from lvt_*_i (lanes 1 .., see "Lanes" below)
+//   WB_PORTS     4: the four write-back ports above, with the LVT; 1: the
+//                units never write back (nor announce, nor clear) in one
+//                cycle (fp3_top WB_PORTS), so their ports are merged into
+//                port 0 at the inputs, whose two RAMs alone are built,
+//                and there is no LVT (lvt_*_o name port 0); the host's
+//                write goes into port 0's RAMs (as with HOST_ALL).  Saves
+//                the LVT (some 9,000 LUT4s at 512 registers, CTRL = 1),
+//                six RAMs and most of the bypass's words (some 1,300
+//                LUT4s a bank with READ_STAGES = 4)
 //   HOST_ALL     1: the host's write goes into all four ports' RAMs and
 //                not into the LVT (banks that share an LVT); 0: port 2's
+//                RAMs, and its LVT entry names port 2 (one lane)
 // Ports (indices XW bits wide, data 32 bits)
 //   ra_i/rb_i (cycle t) -> ra_data_o/rb_data_o (cycle t + READ_STAGES),
 //     bypassed.  Port A reads host_idx_i instead while host_sel_i is set

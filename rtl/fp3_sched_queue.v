@@ -82,6 +82,10 @@
 //   IW            register index width (2**IW flags per context)
 //   AW            instruction address width
 //   PICK_STAGES   0 or 2; FETCH_STAGE 0 or 1 (above)
+//   MOV_LONG      0: the move line is the shortest (1 + PICK_STAGES: its
+//                 announcement is its pick); 1: it is as long as the add
+//                 line (fp3_top WB_PORTS = 1) and counts among the long
+//                 lines (LONG, below)
 // Ports (one-hot vectors: bit c for context c; indices {context, register},
 // XW = CW + IW bits)
 //   clk_i, rst_i      clock (rising edge), synchronous reset

@@ -55,8 +55,8 @@
 //   read     cycles t + 1 .. t + R: the data leave the register-file RAMs,
 //            bypassed (fp3_regfile READ_STAGES = R)
 //   unit     the FP cores take ADD_LATENCY / MUL_LATENCY / DIV_LATENCY
-//            cycles and the move path 1 + P: write-back in cycle
-//            W = t + R + latency.
+//            cycles and the move path 1 + P (WB_PORTS = 1: ADD_LATENCY):
+//            write-back in cycle W = t + R + latency.
 // The scoreboard hears of a write-back P + R cycles ahead (fp3_wb_tag), so
 // that a dependent instruction can issue R - 1 cycles before it and take
 // the value from the bypass: it issues 1 + latency cycles after its
@@ -111,6 +111,21 @@
 //                scheduler's issue loop, two between its grant and the
 //                issue, and three more operand-read stages: a LUT-RAM
 //                register file (see "Pipeline" above)
+//   WB_PORTS     write-back ports of each lane's register file.  4: one
+//                per unit (add/sub, mul, move, div/sqrt), each writing
+//                RAMs of its own, and a live value table (LVT, 2 bits per
+//                register, in flip-flops, with its decoders: about 9,400
+//                LUT4s for 512 registers) naming the RAM that holds each
+//                register's last value (fp3_regfile).  1: every unit
+//                writes back ADD_LATENCY cycles after the operand read, so
+//                no two write-backs share a cycle (one issue per cycle)
+//                and one port, one RAM per read port and no LVT serve
+//                them: the move path is delayed to ADD_LATENCY (a
+//                consumer of a move waits that much longer; with many
+//                contexts the issue slot does not notice), and the build
+//                needs MUL_LATENCY == ADD_LATENCY and no div/sqrt unit
+//                (its latency is its own).  Elaboration errors otherwise.
+//                The chip build uses 1 (docs/lanes.md)
 //   CTX_CHECKED  0: a write to CTX of a number >= NUM_CONTEXTS, or to LANE
 //                of one >= NUM_LANES, is ignored here; 1: the host port's
 //                writer never makes one (fp3_axil refuses it with SLVERR,
@@ -564,7 +579,7 @@ module fp3_top #(
   // A beq (no unit) rides in a valid bit of its own, which reset clears:
   // as a data bit it would leave reset holding whatever it held, and an
   // outcome of it could reach a run started within READ + LD + BC
-  // cycles of the reset (formal/sched.sby bmc_wb1_fmax).
+  // cycles of the reset (formal/sched.sby bmc_fmax_lanes).
   wire rd_beq_nil;   // (no data: the valid bit is the beq)
   wire unused_rd_beq_nil = &{1'b0, rd_beq_nil};
   fp_pipe #(.WIDTH(1), .DEPTH(READ)) u_read_beq (

@@ -63,6 +63,7 @@ module tb_fp3 #(
   parameter integer HAS_SQRT    = 1,
   parameter integer DIV_LATENCY = 8,
   parameter integer FMAX_PIPE   = 0,
+  parameter integer WB_PORTS    = 4,
   parameter integer HALF_PERIOD = 5,       // ns: a 100 MHz clock
   parameter integer MAX_CHECK   = 100000,  // = TBGEN_MAX_CHECK (sw/cli/cmd_tbgen.h)
   parameter integer STALL_LIMIT = 1000     // cycles without progress = hang
@@ -118,7 +119,8 @@ module tb_fp3 #(
     .HAS_DIV     (HAS_DIV),
     .HAS_SQRT    (HAS_SQRT),
     .DIV_LATENCY (DIV_LATENCY),
-    .FMAX_PIPE   (FMAX_PIPE)
+    .FMAX_PIPE   (FMAX_PIPE),
+    .WB_PORTS    (WB_PORTS)
   ) dut (
     .clk_i           (clk),
     .rst_i           (rst),
@@ -276,43 +278,6 @@ module tb_fp3 #(
         ((dut.u_sched.busy_i[xd] && !wd) || (pend && pend_x == xd) || (pick && pick_x == xd));
     end
   endgenerate
-  function [31:0] dbg_reg;  // register r of context c, lane 0 (after the clock edge)
-    input integer c;
-    input [31:0]  r;
-    integer x;
-    begin
-      // The RAM of the write-back port that wrote it last (the LVT).
-      x = c*(1 << IW) + r;
-      if (r >= NUM_REGS)                       dbg_reg = 32'd0;
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd0)
-        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
-        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd2)
-        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram20.g_any.mem[x];
-      else
-        dbg_reg = dut.g_lane[0].u_lane.u_regs.u_ram30.g_any.mem[x];
-    end
-  endfunction
-  function [31:0] dbg_reg_last;  // ... of the last lane
-    input integer c;
-    input [31:0]  r;
-    integer x;
-    begin
-      // Its RAMs; the LVT is lane 0's, which chooses for every lane.
-      x = c*(1 << IW) + r;
-      if (r >= NUM_REGS)                       dbg_reg_last = 32'd0;
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd0)
-        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[x];
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd1)
-        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram10.g_any.mem[x];
-      else if ({dut.g_lane[0].u_lane.u_regs.lvt_hi[x], dut.g_lane[0].u_lane.u_regs.lvt_lo[x]} == 2'd2)
-        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram20.g_any.mem[x];
-      else
-        dbg_reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram30.g_any.mem[x];
-    end
-  endfunction
-
   // ---- derived debug signals -------------------------------------------------
   // A stall is a cycle without issue while some context holds an
   // instruction (the STALLS counter); its cause as text: RAW, WAW, or
@@ -340,15 +305,69 @@ module tb_fp3 #(
     dbg_mul_real = f32_real(tr_mul_data[31:0]);
     dbg_mov_real = f32_real(tr_mov_data[31:0]);
   end
-  always @(posedge clk) begin      // after the edge, like the register file
-    #1;
-    dbg_v = dbg_reg(0, run[R_REG_V]);
-    dbg_s = dbg_reg(0, run[R_REG_S]);
-    dbg_v_last = dbg_reg_last(0, run[R_REG_V]);
-    dbg_s_last = dbg_reg_last(0, run[R_REG_S]);
-    dbg_v_real = f32_real(dbg_v);
-    dbg_s_real = f32_real(dbg_s);
-  end
+  // Register r of context 0 in lane 0 and in the last lane, after the
+  // clock edge, as the register file holds it: the word of the RAM of the
+  // write-back port that wrote it last (the LVT, lane 0's, chooses for
+  // every lane; with WB_PORTS = 1 there is one port and no LVT).
+  generate
+    if (WB_PORTS == 1) begin : g_dbg_regs
+      function [31:0] reg0;
+        input [31:0] r;
+        reg0 = r < NUM_REGS ? dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
+      endfunction
+      function [31:0] reg_last;
+        input [31:0] r;
+        reg_last = r < NUM_REGS ? dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
+      endfunction
+      always @(posedge clk) begin
+        #1;
+        dbg_v = reg0(run[R_REG_V]);
+        dbg_s = reg0(run[R_REG_S]);
+        dbg_v_last = reg_last(run[R_REG_V]);
+        dbg_s_last = reg_last(run[R_REG_S]);
+        dbg_v_real = f32_real(dbg_v);
+        dbg_s_real = f32_real(dbg_s);
+      end
+    end else begin : g_dbg_regs
+      function [1:0] lvt;
+        input [31:0] r;
+        lvt = {dut.g_lane[0].u_lane.u_regs.lvt_hi[r], dut.g_lane[0].u_lane.u_regs.lvt_lo[r]};
+      endfunction
+      function [31:0] reg0;
+        input [31:0] r;
+        begin
+          case (lvt(r))
+            2'd0:    reg0 = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r];
+            2'd1:    reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
+            2'd2:    reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
+            default: reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
+          endcase
+          if (r >= NUM_REGS) reg0 = 32'd0;
+        end
+      endfunction
+      function [31:0] reg_last;
+        input [31:0] r;
+        begin
+          case (lvt(r))
+            2'd0:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r];
+            2'd1:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
+            2'd2:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
+            default: reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
+          endcase
+          if (r >= NUM_REGS) reg_last = 32'd0;
+        end
+      endfunction
+      always @(posedge clk) begin
+        #1;
+        dbg_v = reg0(run[R_REG_V]);
+        dbg_s = reg0(run[R_REG_S]);
+        dbg_v_last = reg_last(run[R_REG_V]);
+        dbg_s_last = reg_last(run[R_REG_S]);
+        dbg_v_real = f32_real(dbg_v);
+        dbg_s_real = f32_real(dbg_s);
+      end
+    end
+  endgenerate
 
   // ---- checking on the trace port -----------------------------------------
   integer errors = 0, mismatches = 0, checked = 0;

@@ -3,12 +3,14 @@
  * --device` knows and a lane cost model measured on the chip build.
  *
  * The model counts the resources of a build of N lanes as a fixed part
- * and a cost per lane, as Yosys mapped the chip build for the LFE5U-85F
- * (16 contexts x 8 lanes, 32 registers a context, the build for clock
- * rate with the multiplier in MULT18X18D; docs/lanes.md "Utilisation",
- * `bash scripts/synth.sh DIR fp3_axil ecp5 NUM_CONTEXTS=16 NUM_LANES=8
- * ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 HAS_DIV=0 HAS_SQRT=0 -keep
- * fp3_top -keep fp3_lane rtl/[a-z]*.v`, LUTs counting a CCU2C as two LUT4s):
+ * and a cost per lane, as Yosys mapped the chip build's shape for the
+ * LFE5U-85F with four write-back ports (WB_PORTS = 4, the register file
+ * `fp3 configure` builds: its latencies differ; 16 contexts x 8 lanes, 32
+ * registers a context, the build for clock rate with the multiplier in
+ * MULT18X18D; docs/lanes.md "One write-back port", `bash scripts/synth.sh
+ * DIR fp3_axil ecp5 NUM_CONTEXTS=16 NUM_LANES=8 ADD_LATENCY=9
+ * MUL_LATENCY=9 FMAX_PIPE=1 HAS_DIV=0 HAS_SQRT=0 -keep fp3_top -keep
+ * fp3_lane rtl/[a-z]*.v`, LUTs counting a CCU2C as two LUT4s):
  *
  *   fixed      scheduler, host port, write-back tags, sticky flags and the
  *              AXI4-Lite wrapper: 13,240 LUT4s, 3 EBR
@@ -26,8 +28,8 @@
  * optimistic above.
  *
  * A device's limit is not its LUT4 count but what nextpnr-ecp5 routes:
- * the 8-lane build of 54,403 LUT4s, 65 % of the LFE5U-85F's, routed
- * (docs/lanes.md "Why 8 lanes"), so the model allows LUTs up to 65.1 %
+ * that 8-lane build of 54,403 LUT4s, 65 % of the LFE5U-85F's, routed on
+ * 8 seeds (docs/lanes.md "Chip build"), so the model allows LUTs up to 65.1 %
  * of the device's, and all of its MULT18X18D and EBR.  It is measured on
  * the LFE5U-85F only; the other ECP5 parts are the same fabric, with the
  * family data sheet's resource counts.
