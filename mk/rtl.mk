@@ -3,20 +3,20 @@
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_CONTEXTS,
 # NUM_LANES, NUM_REGS, IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD,
-# HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY and FMAX_PIPE
-# on the make command line override the defaults of sw/isa/fp3_isa.h
+# HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY, FMAX_PIPE and
+# WB_PORTS on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
 RTL_TOP      := fp3_top
-RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE,\
-                  $(if $($(p)),-G$(p)=$($(p))))
+RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE \
+                  WB_PORTS,$(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
 # MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [NUM_LANES [HAS_DIV
-# HAS_SQRT HAS_SIGN]]]]]].  The test
+# HAS_SQRT HAS_SIGN [WB_PORTS]]]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
 # (shortest add, and no div/sqrt unit: HAS_DIV = HAS_SQRT = 0, the build a
 # program with div or sqrt is refused on; FMAX_PIPE, the build for clock
@@ -71,7 +71,7 @@ RTL_AXIL_CONFIGS := fmax
 # about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
 # the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
-CHIP_LANES      := 8
+CHIP_LANES      := 16
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
                    HAS_DIV=0 HAS_SQRT=0 WB_PORTS=1
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2

@@ -28,7 +28,7 @@ IVERILOG     ?= iverilog
 VVP          ?= vvp
 WAVE_PROGRAM  = $(or $(PROGRAM),programs/ship_rk4.s)
 WAVE_STEPS    = $(or $(STEPS),10)
-WAVE_PARAMS  := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE,\
+WAVE_PARAMS  := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY ROUND FTZ HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT FMAX_PIPE WB_PORTS,\
                   $(if $($(p)),-Ptb_fp3.$(p)=$($(p))))
 # Every module gets 1 ns units (neither the RTL nor the testbench has a
 # `timescale); Icarus takes that from a command file.
