@@ -221,8 +221,8 @@ static int run_tbgen(const fp3_tbgen_args *a) {
       r2 = fp3_engine_write_reg(rtl, r, init[r]);
     if (r2 == 0) r2 = fp3_engine_run(rtl, steps, NULL, &rst);
     if (r2 == 0 && rtl->config.num_regs == FP3_DEFAULT_NUM_REGS) {
-      rtl_lat = (rtl->config.fmax_pipe & 1u) << 16 | (rtl->config.mul_latency & 0xFFu) << 8 |
-                (rtl->config.add_latency & 0xFFu);
+      rtl_lat = (uint32_t)(rtl->config.num_lanes > 1) << 17 | (rtl->config.fmax_pipe & 1u) << 16 |
+                (rtl->config.mul_latency & 0xFFu) << 8 | (rtl->config.add_latency & 0xFFu);
       rtl_cycles = (uint32_t)rst.cycles;
       rtl_stalls = (uint32_t)rst.stalls;
     } else {

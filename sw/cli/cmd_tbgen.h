@@ -37,7 +37,8 @@
 #define TBGEN_RUN_REG_V     10  /* register of .out v, 0xFFFFFFFF: none   */
 #define TBGEN_RUN_REG_S     11  /* register of .out s, 0xFFFFFFFF: none   */
 #define TBGEN_RUN_NCHECK    12  /* integrations with v, s in expected.hex */
-#define TBGEN_RUN_RTL_LAT   13  /* Verilated model: MUL_LAT<<8 | ADD_LAT,
+#define TBGEN_RUN_RTL_LAT   13  /* Verilated model: (NUM_LANES > 1)<<17 |
+                                   FMAX_PIPE<<16 | MUL_LAT<<8 | ADD_LAT,
                                    0 when not run                         */
 #define TBGEN_RUN_RTL_CYCLES 14 /* its CYCLES, low word                   */
 #define TBGEN_RUN_RTL_STALLS 15 /* its STALLS, low word                   */
