@@ -36,8 +36,8 @@ RTL_CFG_nc3     := 0 0 3 4 3 40 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
 # ... and lanes in the build for clock rate: the chip build (CHIP_PARAMS
-# below) in small, 4 contexts x 3 lanes, with its latencies, broadcast
-# stages and split host read.
+# below) in small, 4 contexts x 3 lanes, with its latencies, one write-back
+# port, broadcast stages and split host read.
 RTL_CFG_lf      := 0 0 4 9 9 32 1 1 1 1 3 0 0 1 1
 RTL_TEST_CONFIGS := nc1 nc3 l4 lf
 # ... and the throughput benchmark with 16, 32 and 64.
@@ -64,8 +64,10 @@ RTL_AXIL_CONFIGS := fmax
 # slot idle: 1.23 times the issue bound; f16 below).  Its multiplier is in
 # MULT18X18D with the blocks' own input and output registers (MUL_LATENCY
 # 9: fp_mul_prod LUT = 0, PRE = 1; fp_mul alone 162 MHz), which saves
-# about 1,050 LUT4s a lane against the LUT product.  The limit is routing, not a resource:
-# 8 lanes (54,403 LUT4s, 65 %) route (docs/lanes.md "Chip build").
+# about 1,050 LUT4s a lane against the LUT product.  One write-back port
+# (WB_PORTS=1: the move path delayed to the add's 9 cycles, no live value
+# table) makes a lane about two thirds as large: 16 lanes are 59,619 LUT4s
+# (71 %) and route (docs/lanes.md "Chip build").
 # The chip build and f16 leave out the
 # div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
 # about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
