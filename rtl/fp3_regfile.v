@@ -305,7 +305,7 @@ module fp3_regfile #(
     end else begin : g_ram_port0
       // (Ports 1 .. 3 write nothing: no RAMs; the LVT always names port 0.)
       assign {q10, q11, q20, q21, q30, q31} = {6{32'd0}};
-      wire unused_w = &{1'b0, w1_valid, w1_idx, w1_data, w2_idx, w3_valid, w3_idx, w3_data};
+      wire unused_w = &{1'b0, w1_valid, w1_idx, w1_data, w3_valid, w3_idx, w3_data};
     end
   endgenerate
 

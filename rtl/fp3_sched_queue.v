@@ -61,9 +61,9 @@
 //       two cycles more.
 //   g_copy / g_shared (per context and announcement line)  PICK_STAGES =
 //       2: the announcements of the next cycle as a per-context copy,
-//       registered from pre3_*_i (add, mul, div/sqrt: two cycles earlier
-//       than early_*_i would show, for the registered readiness above) and
-//       pre_*_i (move), kept, so that the four tag lines' indices do not
+//       registered from pre3_*_i (add, mul, div/sqrt, and move with
+//       MOV_LONG: two cycles earlier than early_*_i would show, for the
+//       registered readiness above) and pre_*_i (the short move line), kept, so that the four tag lines' indices do not
 //       each fan out to every context's compares across the die.
 //       Without: early_*_i directly.  (g_no_lead: nothing to copy.)
 //   g_bctx_copy / g_bctx_now  FETCH_STAGE = 1: the lookup's context as a

@@ -60,8 +60,8 @@
 /* FMAX_PIPE's pick stages (rtl/fp3_top.v PICK, fp3_scheduler.v
  * PICK_STAGES): an instruction issues this many cycles after the
  * scheduler grants it, and the move path takes this many cycles more
- * (fp3_top.v MOV_LATENCY = 1 + PICK); ADD_LATENCY and MUL_LATENCY must
- * exceed it. */
+ * (fp3_top.v MOV_LATENCY = 1 + PICK; ADD_LATENCY with WB_PORTS = 1);
+ * ADD_LATENCY and MUL_LATENCY must exceed it. */
 #define FP3_FMAX_PIPE_PICK_STAGES 2
 
 /* FMAX_PIPE's fetch stages (fp3_scheduler.v FETCH_STAGE): the fetch grant
