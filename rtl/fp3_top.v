@@ -912,7 +912,7 @@ module fp3_top #(
         HR_ID[4:0]:         hr_four[32*hk +: 32] = ID_VALUE;
         HR_CTX[4:0]:        hr_four[32*hk +: 32] = {{(32-CW){1'b0}}, ctx_q};
         HR_CONTEXTS[4:0]:   hr_four[32*hk +: 32] = contexts_q;
-        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {NUM_LANES[7:0], 2'd0, HAS_SIGN[0],
+        HR_INFO2[4:0]:      hr_four[32*hk +: 32] = {NUM_LANES[7:0], 1'b0, WB1, HAS_SIGN[0],
                                                     HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0],
                                                     HAS_SUB[0], HAS_ADD[0], NUM_CONTEXTS[15:0]};
         HR_LANE[4:0]:       hr_four[32*hk +: 32] = {{(32-LW){1'b0}}, lane_q};

@@ -639,8 +639,8 @@ module tb_fp3 #(
     expect_eq("INFO0", rd, {IMEM_DEPTH[15:0], NUM_REGS[15:0]});
     host_read(HR_INFO2, rd);
     // (HAS_SIGN 1: fp3_top's default)
-    expect_eq("INFO2", rd, {NL[7:0], 2'd0, 1'b1, HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0], HAS_SUB[0],
-                            HAS_ADD[0], NC[15:0]});
+    expect_eq("INFO2", rd, {NL[7:0], 1'b0, WB_PORTS == 1, 1'b1, HAS_SQRT[0], HAS_DIV[0], HAS_MUL[0],
+                            HAS_SUB[0], HAS_ADD[0], NC[15:0]});
 
     // program (every entry), registers of each context, steps, start
     for (i = 0; i < IMEM_DEPTH; i = i + 1) begin

@@ -1021,13 +1021,14 @@ static const struct {
   unsigned contexts;           /* what the build must report */
   unsigned lanes;
   int fmax_pipe;
+  unsigned wb_ports;  /* WB_PORTS, as INFO2 reports it */
 } context_builds[] = {
-  {&fp3_model_nc1, 1, 1, 0},
-  {&fp3_model_nc3, 3, 1, 1},
-  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0},
-  {&fp3_model_fmax, 8, 1, 1},
-  {&fp3_model_l4, 8, 4, 0},
-  {&fp3_model_lf, 4, 3, 1},
+  {&fp3_model_nc1, 1, 1, 0, 4},
+  {&fp3_model_nc3, 3, 1, 1, 4},
+  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0, 4},
+  {&fp3_model_fmax, 8, 1, 1, 4},
+  {&fp3_model_l4, 8, 4, 0, 4},
+  {&fp3_model_lf, 4, 3, 1, 1},
 };
 #define CONTEXT_BUILDS (int)(sizeof context_builds / sizeof context_builds[0])
 static fp3_engine *context_build(int which) {
@@ -1054,6 +1055,7 @@ static void test_many_ships(void **state) {
     assert_int_equal(er->config.num_contexts, context_builds[which].contexts);
     assert_int_equal(er->config.num_lanes, context_builds[which].lanes);
     assert_int_equal(er->config.fmax_pipe, context_builds[which].fmax_pipe);
+    assert_int_equal(er->config.wb_ports, context_builds[which].wb_ports);
     fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
     assert_non_null(is);
     unsigned nctx = fp3_config_slots(&er->config);

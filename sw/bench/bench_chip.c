@@ -227,11 +227,7 @@ int main(int argc, char **argv) {
     fp3_compiled *comp = NULL;
     char msg[512];
     fp3_compile_opts o;
-    fp3_compile_defaults(&o);
-    o.add_latency = e->config.add_latency;
-    o.mul_latency = e->config.mul_latency;
-    o.num_regs = e->config.num_regs;
-    o.fmax_pipe = e->config.fmax_pipe;
+    fp3_compile_opts_for(&o, &e->config);
     if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc) ||
         fp3_compile(&sc, "rk4", &o, "generated", &comp, msg, sizeof msg)) {
       fprintf(stderr, "bench_chip: %s: compiling: %s\n", builds[b].name, msg);

@@ -54,12 +54,7 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
     if (c->copts) {
       o = *c->copts;
     } else {
-      fp3_compile_defaults(&o);
-      o.add_latency = c->engine->config.add_latency ? c->engine->config.add_latency : o.add_latency;
-      o.mul_latency = c->engine->config.mul_latency ? c->engine->config.mul_latency : o.mul_latency;
-      o.div_latency = c->engine->config.div_latency ? c->engine->config.div_latency : o.div_latency;
-      o.num_regs = c->engine->config.num_regs ? c->engine->config.num_regs : o.num_regs;
-      o.fmax_pipe = c->engine->config.fmax_pipe;
+      fp3_compile_opts_for(&o, &c->engine->config);
     }
     if (fp3_compile(&sc, c->integ_name, &o, c->scene_path, &comp, msg, sizeof msg)) {
       fprintf(stderr, "fp3 run: compiling the scene: %s\n", msg);

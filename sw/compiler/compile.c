@@ -564,6 +564,10 @@ void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw) {
   if (hw->div_latency) o->div_latency = hw->div_latency;
   if (hw->num_regs) o->num_regs = hw->num_regs;
   o->fmax_pipe = hw->fmax_pipe;
+  /* One write-back port: the move path is as long as the add core
+   * (fp3_top WB_PORTS; unit_latency adds FMAX_PIPE's pick stages back). */
+  if (hw->wb_ports == 1)
+    o->mov_latency = o->add_latency - (o->fmax_pipe ? FP3_FMAX_PIPE_PICK_STAGES : 0);
 }
 
 typedef struct regalloc {

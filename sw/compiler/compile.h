@@ -64,7 +64,9 @@ typedef struct fp3_compile_opts {
   unsigned add_latency;  /* add/sub core latency, cycles (ADD_LATENCY)     */
   unsigned mul_latency;  /* mul core latency, cycles (MUL_LATENCY)         */
   unsigned mov_latency;  /* move path latency, cycles (1; FMAX_PIPE adds
-                            FP3_FMAX_PIPE_PICK_STAGES)                    */
+                            FP3_FMAX_PIPE_PICK_STAGES; with one write-back
+                            port, fp3_config.wb_ports 1, the add's less
+                            those: fp3_compile_opts_for)                  */
   unsigned div_latency;  /* div/sqrt unit latency, cycles (DIV_LATENCY)   */
   unsigned num_regs;     /* registers per context (NUM_REGS of the build) */
   unsigned max_regs;     /* 0, or up to FP3_MAX_REGS: a program that does
@@ -87,7 +89,8 @@ void fp3_compile_defaults(fp3_compile_opts *o);
 
 /* The options for the build hw (as an engine reports it, engine.h): the
  * defaults, then hw's latencies (those it gives, nonzero), NUM_REGS and
- * FMAX_PIPE; max_regs 0 (a program that does not fit hw is refused). */
+ * FMAX_PIPE, and the move path's latency with one write-back port;
+ * max_regs 0 (a program that does not fit hw is refused). */
 void fp3_compile_opts_for(fp3_compile_opts *o, const fp3_config *hw);
 
 /* What a compilation produced (instruction counts are static: words of

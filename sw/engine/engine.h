@@ -60,6 +60,11 @@ typedef struct fp3_config {
   unsigned has_sign;    /* 1: the sign group (HAS_SIGN); 0: abs, neg, min,
                            max illegal                                    */
   unsigned div_latency; /* div/sqrt unit, cycles (RTL only; INFO2)        */
+  unsigned wb_ports;    /* write-back ports of a lane's register file
+                           (WB_PORTS, RTL only; INFO2): 4, one per unit;
+                           1, every unit's result written back (and the
+                           move's consumer issuing) as the add's; 0 for
+                           the ISS, which has no timing                   */
   unsigned fmax_pipe;   /* 1: the pipeline for clock rate (FMAX_PIPE, RTL
                            only): same dependent-issue distances after an
                            add or mul of latency >=

@@ -318,6 +318,7 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->base.config.has_div = (info2 >> 19) & 1;
   r->base.config.has_sqrt = (info2 >> 20) & 1;
   r->base.config.has_sign = (info2 >> 21) & 1;
+  r->base.config.wb_ports = (info2 >> 22) & 1 ? 1 : 4;
   r->base.config.div_latency = (info1 >> 19) & 0xFF;
   r->base.config.num_lanes = info2 >> 24;
   if (r->base.config.num_contexts > FP3_MAX_CONTEXTS || r->base.config.num_lanes == 0 ||

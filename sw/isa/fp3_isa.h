@@ -297,7 +297,8 @@
   X(CONTEXTS,   0x010, "RW", "contexts a START runs, 1 .. NUM_CONTEXTS "       \
                              "(reset value 1)")                               \
   X(INFO2,      0x011, "R",  "NUM_CONTEXTS[15:0], HAS_ADD[16], HAS_SUB[17], HAS_MUL[18], "  \
-                             "HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], NUM_LANES[31:24]") \
+                             "HAS_DIV[19], HAS_SQRT[20], HAS_SIGN[21], ONE_WB_PORT[22], "   \
+                             "NUM_LANES[31:24]")                              \
   X(LANE,       0x012, "RW", "lane selected for FLAGS and the register "      \
                              "window, 0 .. NUM_LANES-1 (a larger value: "      \
                              "ignored; SLVERR over AXI)")                     \
