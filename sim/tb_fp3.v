@@ -308,7 +308,8 @@ module tb_fp3 #(
   // Register r of context 0 in lane 0 and in the last lane, after the
   // clock edge, as the register file holds it: the word of the RAM of the
   // write-back port that wrote it last (the LVT, lane 0's, chooses for
-  // every lane; with WB_PORTS = 1 there is one port and no LVT).
+  // every lane; with WB_PORTS = 1 there is one port and no LVT): one
+  // pair of functions per register-file shape, g_dbg_regs.
   generate
     if (WB_PORTS == 1) begin : g_dbg_regs
       function [31:0] reg0;
@@ -319,15 +320,6 @@ module tb_fp3 #(
         input [31:0] r;
         reg_last = r < NUM_REGS ? dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
       endfunction
-      always @(posedge clk) begin
-        #1;
-        dbg_v = reg0(run[R_REG_V]);
-        dbg_s = reg0(run[R_REG_S]);
-        dbg_v_last = reg_last(run[R_REG_V]);
-        dbg_s_last = reg_last(run[R_REG_S]);
-        dbg_v_real = f32_real(dbg_v);
-        dbg_s_real = f32_real(dbg_s);
-      end
     end else begin : g_dbg_regs
       function [1:0] lvt;
         input [31:0] r;
@@ -357,17 +349,17 @@ module tb_fp3 #(
           if (r >= NUM_REGS) reg_last = 32'd0;
         end
       endfunction
-      always @(posedge clk) begin
-        #1;
-        dbg_v = reg0(run[R_REG_V]);
-        dbg_s = reg0(run[R_REG_S]);
-        dbg_v_last = reg_last(run[R_REG_V]);
-        dbg_s_last = reg_last(run[R_REG_S]);
-        dbg_v_real = f32_real(dbg_v);
-        dbg_s_real = f32_real(dbg_s);
-      end
     end
   endgenerate
+  always @(posedge clk) begin
+    #1;
+    dbg_v = g_dbg_regs.reg0(run[R_REG_V]);
+    dbg_s = g_dbg_regs.reg0(run[R_REG_S]);
+    dbg_v_last = g_dbg_regs.reg_last(run[R_REG_V]);
+    dbg_s_last = g_dbg_regs.reg_last(run[R_REG_S]);
+    dbg_v_real = f32_real(dbg_v);
+    dbg_s_real = f32_real(dbg_s);
+  end
 
   // ---- checking on the trace port -----------------------------------------
   integer errors = 0, mismatches = 0, checked = 0;
