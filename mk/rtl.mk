@@ -46,10 +46,11 @@ RTL_CFG_nc32    := 0 0 32
 RTL_CFG_nc64    := 0 0 64
 RTL_BENCH_CONFIGS := nc16 nc32 nc64
 # ... and one build sized to a scene (tests/test_configure.c):
-# words 6-9 are NUM_REGS HAS_ADD HAS_SUB HAS_MUL, 10 FMAX_PIPE, 11 NUM_LANES,
-# 12-14 HAS_DIV HAS_SQRT HAS_SIGN.  `build/fp3 configure scenes/drift.scene`
+# words 4-5 are ADD_LATENCY MUL_LATENCY, 6-9 NUM_REGS HAS_ADD HAS_SUB HAS_MUL,
+# 10 FMAX_PIPE, 11 NUM_LANES, 12-14 HAS_DIV HAS_SQRT HAS_SIGN, 15 WB_PORTS
+# (one write-back port: both latencies 4).  `build/fp3 configure scenes/drift.scene`
 # derives exactly these parameters (the test checks it).
-RTL_CFG_drift   := 1 1 4 4 3 11 1 0 1 0 2 0 0 0
+RTL_CFG_drift   := 1 1 4 4 4 11 1 0 1 0 2 0 0 0 1
 RTL_SCENE_CONFIGS := drift
 # ... and the build for clock rate (docs/fpga.md), the processor inside the
 # AXI4-Lite wrapper's build of the same parameters (mk/axil.mk), which

@@ -295,24 +295,30 @@ EOF2
 
 # ---- fp3 configure: RTL parameters sized to the scene ------------------------------
 expect 0 "usage: fp3 configure" -- configure --help
-expect 0 "^NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1$" -- configure scenes/drift.scene
+expect 0 "^NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1$" -- configure scenes/drift.scene
 expect 0 "HAS_SUB=0 *the program has no sub" -- configure scenes/drift.scene
-expect 0 "^NUM_CONTEXTS=4 NUM_LANES=8 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1$" -- configure scenes/harbour.scene
-expect 0 "^NUM_CONTEXTS=4 NUM_LANES=3 " -- configure scenes/harbour.scene --max-lanes 3
+expect 0 "^NUM_CONTEXTS=5 NUM_LANES=7 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1$" -- configure scenes/harbour.scene
+expect 0 "WB_PORTS=1 *one write-back port a lane .no live value table.: the program has no div or sqrt" -- configure scenes/harbour.scene
+expect 0 "^NUM_CONTEXTS=4 NUM_LANES=8 NUM_REGS=12 .* ADD_LATENCY=4 MUL_LATENCY=3 WB_PORTS=4$" -- configure scenes/harbour.scene --wb-ports 4
+expect 0 "WB_PORTS=4 *four write-back ports .--wb-ports 4." -- configure scenes/harbour.scene --wb-ports 4
+expect 2 "--wb-ports '2': want 1 or 4" -- configure scenes/harbour.scene --wb-ports 2
+expect 0 "^NUM_CONTEXTS=5 NUM_LANES=3 " -- configure scenes/harbour.scene --max-lanes 3
 expect 2 "--max-lanes .0.: want 1..64" -- configure scenes/harbour.scene --max-lanes 0
 expect 2 "--max-lanes .65.: want 1..64" -- configure scenes/harbour.scene --max-lanes 65
 expect 0 "^NUM_CONTEXTS=32 NUM_LANES=1 NUM_REGS=12 " -- configure scenes/harbour.scene --context-per-object
-expect 0 "^NUM_CONTEXTS=4 NUM_LANES=3 NUM_REGS=12 " -- configure scenes/harbour.scene --device ecp5-45
-expect 0 "the LFE5U-45F holds 3: LUT4s .routing." -- configure scenes/harbour.scene --device ecp5-45
-expect 0 "\"device_max_lanes\": 3, \"device_limit\": \"LUT4s .routing.\"" -- configure scenes/harbour.scene --device ecp5-45 --json
+expect 0 "^NUM_CONTEXTS=5 NUM_LANES=6 NUM_REGS=12 " -- configure scenes/harbour.scene --device ecp5-45
+expect 0 "the LFE5U-45F holds 6: LUT4s .routing." -- configure scenes/harbour.scene --device ecp5-45
+expect 0 "lane model .1 write-back port.: 10281 fixed" -- configure scenes/harbour.scene --device ecp5-45
+expect 0 "\"device_max_lanes\": 3, \"device_limit\": \"LUT4s .routing.\"" -- configure scenes/harbour.scene --device ecp5-45 --wb-ports 4 --json
 expect 2 "--device 'ecp5-99': unknown device .known: ecp5-25, ecp5-45, ecp5-85." -- configure scenes/harbour.scene --device ecp5-99
-expect 2 "the LFE5U-25F .ecp5-25. does not hold one lane of this build" -- configure scenes/harbour.scene --device ecp5-25
+expect 0 "^NUM_CONTEXTS=5 NUM_LANES=2 " -- configure scenes/harbour.scene --device ecp5-25
+expect 2 "the LFE5U-25F .ecp5-25. does not hold one lane of this build" -- configure scenes/harbour.scene --device ecp5-25 --wb-ports 4
 expect 0 "^NUM_CONTEXTS=3 NUM_LANES=11 NUM_REGS=7 " -- configure scenes/harbour.scene --integrator euler
-expect 0 "ROUND=0 FTZ=1$" -- configure scenes/harbour.scene --error-budget 1e-9
+expect 0 "ROUND=0 FTZ=1 ADD_LATENCY" -- configure scenes/harbour.scene --error-budget 1e-9
 expect 0 "<- chosen" -- configure "$T/harbour.scene" --literal --steps 50
 out=$("$FP3" configure scenes/drift.scene -o "$T/drift.params" 2>/dev/null); rc=$?
 [ "$rc" -eq 0 ] && [ -z "$out" ] && [ "$(cat "$T/drift.params")" = \
-  "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1" ] \
+  "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1" ] \
   && ! ls "$T"/drift.params.tmp* >/dev/null 2>&1 && ok || bad "configure -o: rc $rc, '$out', $(cat "$T/drift.params")"
 json=$("$FP3" configure scenes/drift.scene --json 2>/dev/null)
 python3 - "$json" <<'EOF2' && ok || bad "configure --json: $json"
@@ -320,7 +326,7 @@ import json, sys
 d = json.loads(sys.argv[1])
 assert d["params"] == {"NUM_CONTEXTS": 4, "NUM_LANES": 2, "NUM_REGS": 11, "HAS_ADD": 1, "HAS_SUB": 0,
                        "HAS_MUL": 1, "HAS_DIV": 0, "HAS_SQRT": 0, "HAS_SIGN": 0,
-                       "ROUND": 1, "FTZ": 1}, d
+                       "ROUND": 1, "FTZ": 1, "ADD_LATENCY": 4, "MUL_LATENCY": 4, "WB_PORTS": 1}, d
 assert d["unit_pc"]["sub"] is None and d["chosen_mode"] == "RTZ+FTZ" and len(d["modes"]) == 4, d
 assert d["modes"][0]["allowed"] and d["modes"][0]["added_error"] == 0, d
 EOF2

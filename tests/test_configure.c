@@ -8,14 +8,17 @@
  *  - fp3_configure derives exact parameters for the example scenes
  *    (scenes/drift.scene: no sub; coast, harbour) and synthetic ones
  *    (one object, 100 objects one context each, euler), the ROUND/FTZ rule
- *    follows the budget, bad options fail;
- *  - the lane cost model (sw/compiler/device.c) gives the measured chip
- *    build back (16 contexts x 32 registers on the LFE5U-85F: 8 lanes,
- *    LUT4s the binding limit; 9 lanes are over the share that routes),
- *    scales lane 0 and the EBR with the registers, and bounds NUM_LANES
- *    through --device; a device without room for one lane is an error;
+ *    follows the budget, one write-back port unless asked for four (the
+ *    program then compiled for the default latencies), bad options fail;
+ *  - the lane cost models (sw/compiler/device.c) give the measured chip
+ *    builds back (16 contexts x 32 registers on the LFE5U-85F: 8 lanes
+ *    with four write-back ports, 16 with one, LUT4s the binding limit; one
+ *    lane more is over the share that routes), scale lane 0 and the EBR
+ *    with the registers, and bound NUM_LANES through --device; a device
+ *    without room for one lane is an error;
  *  - the scene-sized Verilated build `drift` (mk/rtl.mk RTL_CFG_drift:
- *    NUM_CONTEXTS=4 NUM_REGS=11 HAS_SUB=0 ROUND=1 FTZ=1) reports exactly
+ *    NUM_CONTEXTS=4 NUM_REGS=11 HAS_SUB=0 ROUND=1 FTZ=1, one write-back
+ *    port, ADD_LATENCY = MUL_LATENCY = 4) reports exactly
  *    the parameters fp3 configure derives for scenes/drift.scene, runs that
  *    scene's compiled program bit-exact with its golden model, refuses a
  *    program with sub naming HAS_SUB, and -- loaded past the host's check
@@ -158,10 +161,10 @@ static void test_derive_scenes(void **state) {
   static const struct {
     const char *path, *line;
   } cases[] = {
-      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
-      {"scenes/coast.scene", "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+      {"scenes/drift.scene", "NUM_CONTEXTS=4 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1"},
+      {"scenes/coast.scene", "NUM_CONTEXTS=5 NUM_LANES=2 NUM_REGS=11 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1"},
       {"scenes/harbour.scene",
-       "NUM_CONTEXTS=4 NUM_LANES=8 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1"},
+       "NUM_CONTEXTS=5 NUM_LANES=7 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
     fp3_scene sc;
@@ -183,6 +186,23 @@ static void test_derive_scenes(void **state) {
   assert_true(r.unit_pc[0] >= 0 && r.unit_pc[2] >= 0);
   assert_int_equal(r.body_insns, 4);
   assert_int_equal(r.contexts_issue, 4);
+
+  /* four write-back ports asked for: the default latencies, and the
+   * harbour's contexts follow its shorter integration (86 cycles for 22
+   * instructions, against 94 with one port) */
+  fp3_scene hb;
+  read_scene("scenes/harbour.scene", &hb);
+  o.wb_ports = 4;
+  r = configure(&hb, &o);
+  expect_line(&r, "NUM_CONTEXTS=4 NUM_LANES=8 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=3 WB_PORTS=4");
+  assert_int_equal(r.est_later, 86);
+  o.wb_ports = 1;
+  r = configure(&hb, &o);
+  assert_int_equal(r.cfg.wb_ports, 1);
+  assert_int_equal(r.est_later, 94);
+  assert_int_equal(r.contexts_issue, 5);
+  fp3_scene_free(&hb);
+  fp3_configure_defaults(&o);
 
   /* a budget no mode meets but RNE's own: only FTZ, which adds nothing
    * here (no subnormals), is allowed besides RNE */
@@ -208,8 +228,8 @@ static void test_derive_scenes(void **state) {
   assert_int_equal(r.cfg.num_lanes, 2);   /* ceil(100 / 64) */
   o.context_per_object = 0;
   r = configure(&sc, &o);
-  assert_int_equal(r.cfg.num_contexts, 4);
-  assert_int_equal(r.cfg.num_lanes, FP3_CONFIGURE_MAX_LANES);   /* ceil(100 / 4) = 25, capped */
+  assert_int_equal(r.cfg.num_contexts, 5);
+  assert_int_equal(r.cfg.num_lanes, FP3_CONFIGURE_MAX_LANES);   /* ceil(100 / 5) = 20, capped */
   o.max_lanes = 5;
   r = configure(&sc, &o);
   assert_int_equal(r.cfg.num_lanes, 5);
@@ -217,17 +237,25 @@ static void test_derive_scenes(void **state) {
   /* euler: 6 instructions, 14 cycles: 3 contexts; 7 registers */
   o.integrator = "euler";
   r = configure(&sc, &o);
-  expect_line(&r, "NUM_CONTEXTS=3 NUM_LANES=16 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1");
+  expect_line(&r, "NUM_CONTEXTS=3 NUM_LANES=16 NUM_REGS=7 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1");
 
-  /* a device bounds the lanes: 100 objects at 4 contexts want 25 lanes,
-   * the LFE5U-45F holds fewer */
+  /* a device bounds the lanes: 100 objects at 5 contexts want 20 lanes,
+   * the LFE5U-45F holds fewer (by the one-port model) */
   o.integrator = "rk4";
   o.device = fp3_device_find("ecp5-45");
   assert_non_null(o.device);
   r = configure(&sc, &o);
-  assert_int_equal(r.lanes_scene, 25);
+  assert_int_equal(r.lanes_scene, 20);
   assert_int_equal(r.cfg.num_lanes, r.fit.max_lanes);
+  assert_int_equal(r.fit.wb_ports, 1);
   assert_true(r.fit.max_lanes >= 1 && r.fit.max_lanes < FP3_CONFIGURE_MAX_LANES);
+  /* ... and fewer still with four ports */
+  const unsigned lanes1 = r.fit.max_lanes;
+  o.wb_ports = 4;
+  r = configure(&sc, &o);
+  assert_int_equal(r.fit.wb_ports, 4);
+  assert_true(r.fit.max_lanes >= 1 && r.fit.max_lanes < lanes1);
+  o.wb_ports = 0;
   o.device = NULL;
 
   /* bad options and input */
@@ -244,10 +272,15 @@ static void test_derive_scenes(void **state) {
   fp3_configure_defaults(&o);
   o.steps = 0;
   assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  fp3_configure_defaults(&o);
+  o.wb_ports = 2;
+  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "want 1 or 4"));
   fp3_scene empty = {sc.objs, 0};
   fp3_configure_defaults(&o);
   assert_int_equal(fp3_configure(&empty, "t", &o, &bad, NULL, msg, sizeof msg), -1);
   o.device = fp3_device_find("ecp5-25");
+  o.wb_ports = 4;   /* the one-port model finds room for 2 lanes */
   assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "LFE5U-25F"));
   assert_non_null(strstr(msg, "does not hold one lane"));
@@ -267,7 +300,8 @@ static void test_device_lanes(void **state) {
   assert_null(fp3_device_find("ecp5-85x"));
   /* the chip build: 13,240 + 13,429 + 7 x 3,962 = 54,403 <= 54,449; a
    * ninth lane would need 58,365 */
-  assert_int_equal(fp3_device_lanes(d85, 16, 32, 1, &fit), 8);
+  assert_int_equal(fp3_device_lanes(d85, 16, 32, 1, 4, &fit), 8);
+  assert_int_equal(fit.wb_ports, 4);
   assert_int_equal(fit.luts_lane0, 13429);
   assert_int_equal(fit.luts_allowed, 54449);
   assert_int_equal(fit.ebr_lane, 8);
@@ -275,27 +309,44 @@ static void test_device_lanes(void **state) {
   assert_string_equal(fit.limit, "LUT4s (routing)");
   /* a quarter of the registers: lane 0's flags and table a quarter,
    * rounded up */
-  assert_int_equal(fp3_device_lanes(d85, 4, 32, 1, &fit), 9);   /* 13,240 + 6,329 + 8 x 3,962 */
+  assert_int_equal(fp3_device_lanes(d85, 4, 32, 1, 4, &fit), 9);   /* 13,240 + 6,329 + 8 x 3,962 */
   assert_int_equal(fit.luts_lane0, 3962 + 2367);
   /* 64 contexts x 32 registers: lane 0's table four times the chip
    * build's (41,830 LUT4s), more than the share that routes beside the
    * fixed part; 4 EBR a bank */
-  assert_int_equal(fp3_device_lanes(d85, 64, 32, 1, &fit), 0);
+  assert_int_equal(fp3_device_lanes(d85, 64, 32, 1, 4, &fit), 0);
   assert_int_equal(fit.luts_lane0, 3962 + 4 * 9467);
   assert_int_equal(fit.ebr_lane, 32);
   assert_string_equal(fit.limit, "LUT4s (routing)");
   /* no multiplier: no MULT18X18D */
-  fp3_device_lanes(d85, 16, 32, 0, &fit);
+  fp3_device_lanes(d85, 16, 32, 0, 4, &fit);
   assert_int_equal(fit.dsp_lane, 0);
+  /* one write-back port, the chip build of 16 lanes: 10,281 + 16 x 348
+   * (fp3_top and fp3_axil, 15,849) + 4,080 + 15 x 2,646 = 59,619 <=
+   * 59,635 (71.3 %); a 17th lane would need 62,613 */
+  assert_int_equal(fp3_device_lanes(d85, 16, 32, 1, 1, &fit), 16);
+  assert_int_equal(fit.wb_ports, 1);
+  assert_int_equal(fit.luts_fixed + fit.luts_lane0 + 15 * fit.luts_lane, 59619);
+  assert_int_equal(fit.luts_allowed, 59635);
+  assert_int_equal(fit.routable_permille, 713);
+  assert_int_equal(fit.ebr_fixed + 16 * fit.ebr_lane, 35);   /* the build's 35 EBR */
+  assert_int_equal(fit.dsp_lane, 4);
+  assert_string_equal(fit.limit, "LUT4s (routing)");
+  /* its lane 0 beyond a further lane (busy flags only) scales the same
+   * way: 1,434 at 512 registers, a quarter at 128 */
+  fp3_device_lanes(d85, 4, 32, 1, 1, &fit);
+  assert_int_equal(fit.luts_lane0 - fit.luts_lane, 359);
   /* the LFE5U-45F, 128 registers: 13,240 + 6,329 + 2 x 3,962 <= 28,545,
    * a fourth lane not */
   const fp3_device *d45 = fp3_device_find("ecp5-45");
   assert_non_null(d45);
-  assert_int_equal(fp3_device_lanes(d45, 8, 16, 1, &fit), 3);
+  assert_int_equal(fp3_device_lanes(d45, 8, 16, 1, 4, &fit), 3);
   /* the LFE5U-25F: the fixed part and lane 0 are 13,240 + 4,036 of 15,811 */
   const fp3_device *d25 = fp3_device_find("ecp5-25");
   assert_non_null(d25);
-  assert_int_equal(fp3_device_lanes(d25, 1, 4, 1, &fit), 0);
+  assert_int_equal(fp3_device_lanes(d25, 1, 4, 1, 4, &fit), 0);
+  /* ... with one port: 10,281 + 2,996 + 2,994 <= 17,317 (71.3 %) */
+  assert_int_equal(fp3_device_lanes(d25, 1, 4, 1, 1, &fit), 2);
 }
 
 /* The compiled program registers: the one the derived NUM_REGS makes
@@ -315,10 +366,9 @@ static void test_registers_fit(void **state) {
     assert_int_equal(fp3_configure(&sc, "t", &o, &r, &c, msg, sizeof msg), 0);
     assert_true(r.regs_used <= r.cfg.num_regs);
     assert_true(r.cfg.num_regs <= r.regs_default);
-    /* the program compiled for cfg.num_regs, as on such a build */
+    /* the program compiled for the build, as fp3 run --scene does */
     fp3_compile_opts co;
-    fp3_compile_defaults(&co);
-    co.num_regs = r.cfg.num_regs;
+    fp3_compile_opts_for(&co, &r.cfg);
     fp3_compiled *c2 = NULL;
     assert_int_equal(fp3_compile(&sc, ig[i], &co, "t", &c2, msg, sizeof msg), 0);
     assert_string_equal(fp3_compiled_text(c), fp3_compiled_text(c2));
@@ -356,6 +406,17 @@ static void test_sized_rtl(void **state) {
   assert_int_equal(e->config.has_sign, r.cfg.has_sign);
   assert_int_equal(e->config.mode.round, r.cfg.mode.round);
   assert_int_equal(e->config.mode.ftz, r.cfg.mode.ftz);
+  assert_int_equal(e->config.wb_ports, 1);
+  assert_int_equal(e->config.wb_ports, r.cfg.wb_ports);
+  assert_int_equal(e->config.add_latency, r.cfg.add_latency);
+  assert_int_equal(e->config.mul_latency, r.cfg.mul_latency);
+  /* the program fp3 run --scene compiles for the build is configure's */
+  fp3_compile_opts bo;
+  fp3_compile_opts_for(&bo, &e->config);
+  fp3_compiled *cb = NULL;
+  assert_int_equal(fp3_compile(&sc, "rk4", &bo, "scenes/drift.scene", &cb, msg, sizeof msg), 0);
+  assert_string_equal(fp3_compiled_text(cb), fp3_compiled_text(c));
+  fp3_compiled_free(cb);
 
   /* the scene's program, bit-exact, every object, every integration */
   fp3_golden_ref g = fp3_compiled_golden(c);
@@ -375,8 +436,7 @@ static void test_sized_rtl(void **state) {
   fp3_scene coast;
   read_scene("scenes/coast.scene", &coast);
   fp3_compile_opts co;
-  fp3_compile_defaults(&co);
-  co.num_regs = e->config.num_regs;
+  fp3_compile_opts_for(&co, &e->config);
   assert_int_equal(fp3_compile(&coast, "rk4", &co, "coast", &c, msg, sizeof msg), 0);
   fp3_golden_ref gc = fp3_compiled_golden(c);
   assert_int_equal(fp3_run_objects(e, fp3_compiled_image(c), &coast, 10, e->config.mode, &gc,

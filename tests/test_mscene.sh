@@ -92,8 +92,11 @@ k L m x y z vx vy vz
 20 0.8 1.0 -1.2 0.5 0.3 0.2 -0.4 0.6
 EOF
 line=$("$FP3" configure "$tmp/anchors.scene" --steps 100 2>/dev/null)
-check "configure of a 3-D spring scene: NUM_REGS=34, HAS_DIV=1, HAS_SQRT=1" \
-  "grep -q 'NUM_REGS=34 .*HAS_DIV=1 HAS_SQRT=1' <<<\"\$line\""
+check "configure of a 3-D spring scene: NUM_REGS=34, HAS_DIV=1, HAS_SQRT=1, four write-back ports" \
+  "grep -q 'NUM_REGS=34 .*HAS_DIV=1 HAS_SQRT=1 .* ADD_LATENCY=4 MUL_LATENCY=3 WB_PORTS=4\$' <<<\"\$line\""
+err=$("$FP3" configure "$tmp/anchors.scene" --steps 100 --wb-ports 1 -o "$tmp/anchors.cfg" 2>&1 >/dev/null); rc=$?
+check "configure --wb-ports 1 with div: exit 2, names div and its pc, no file" \
+  "[ $rc -eq 2 ] && [ ! -e $tmp/anchors.cfg ] && grep -q 'one write-back port needs a program without div and sqrt.*has div at pc [0-9]' <<<\"\$err\""
 out=$("$FP3" run --scene "$tmp/anchors.scene" --engine iss --steps 100 --json 2>/dev/null)
 check "3-D spring scene on the ISS with 34 registers: bit-exact" \
   "jtest 'd[\"pass\"] and d[\"num_regs\"]==34 and d[\"registers_needed\"]==34'"

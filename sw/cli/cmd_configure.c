@@ -27,7 +27,7 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 configure SCENE [--integrator NAME] [--literal]\n"
           "                     [--error-budget REL] [--steps N] [--context-per-object]\n"
-          "                     [--max-lanes L] [--device NAME]\n"
+          "                     [--max-lanes L] [--device NAME] [--wb-ports P]\n"
           "                     [-o FILE] [--json]\n"
           "\n"
           "Derive the RTL parameters of a processor sized to the scene: compile the\n"
@@ -47,8 +47,16 @@ static void usage(FILE *f) {
           "                   a lane is an adder, a multiplier and a register\n"
           "                   bank, no scheduler logic) and at most what the\n"
           "                   --device holds: LUT4s up to the share that routes\n"
-          "                   (%u per mille), MULT18X18D and EBR, by lane costs\n"
-          "                   measured on the chip build (docs/lanes.md)\n"
+          "                   (%u per mille with one write-back port, %u with\n"
+          "                   four), MULT18X18D and EBR, by lane costs measured\n"
+          "                   on the chip build (docs/lanes.md)\n"
+          "  WB_PORTS, ADD_LATENCY, MUL_LATENCY  one write-back port a lane, both\n"
+          "                   latencies %u, when the program has no div and no\n"
+          "                   sqrt: no two write-backs meet, so a lane's register\n"
+          "                   file needs no live value table (about two thirds of\n"
+          "                   a lane); the program is compiled for those latencies\n"
+          "                   and NUM_CONTEXTS grows to keep the issue slot busy.\n"
+          "                   Otherwise four ports, latencies %u and %u\n"
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
@@ -68,17 +76,25 @@ static void usage(FILE *f) {
           "  --context-per-object  NUM_CONTEXTS = min(objects, 64)\n"
           "  --max-lanes L    NUM_LANES at most L, 1 .. %d (default %d)\n"
           "  --device NAME    the FPGA the build is for: %s (default: none)\n"
+          "  --wb-ports P     1 or 4 write-back ports a lane (default: 1 when the\n"
+          "                   program allows it, else 4)\n"
           "  -o FILE          write the line to FILE (atomically) instead of stdout\n"
           "  --json           the parameters and the reasons as JSON on stdout\n"
           "\n"
           "Output: one line of make variables, e.g.\n"
           "  NUM_CONTEXTS=8 NUM_LANES=2 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1\n"
-          "  HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1\n"
+          "  HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4\n"
+          "  WB_PORTS=1\n"
           "and the reason for each parameter on standard error.  `make synth-scene\n"
           "SCENE=FILE` synthesizes the full and the sized build and compares.\n"
-          "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget;\n"
+          "Exit status: 0 derived; 2 bad arguments, scene, integrator or budget,\n"
+          "--wb-ports 1 for a program with div or sqrt, a device without room;\n"
           "1 the output could not be written.\n",
-          FP3_CONFIGURE_MAX_LANES, FP3_DEVICE_ROUTABLE_PERMILLE, fp3_compile_integrators(),
+          FP3_CONFIGURE_MAX_LANES, FP3_DEVICE_ROUTABLE_PERMILLE_WB1,
+          FP3_DEVICE_ROUTABLE_PERMILLE_WB4,
+          FP3_DEFAULT_ADD_LATENCY > FP3_DEFAULT_MUL_LATENCY ? FP3_DEFAULT_ADD_LATENCY
+                                                            : FP3_DEFAULT_MUL_LATENCY,
+          FP3_DEFAULT_ADD_LATENCY, FP3_DEFAULT_MUL_LATENCY, fp3_compile_integrators(),
           FP3_MAX_LANES, FP3_CONFIGURE_MAX_LANES, fp3_device_names());
 }
 
@@ -112,10 +128,12 @@ static void print_json(const char *scene, const char *integ, const fp3_configure
   fp3_json_string(stdout, line);
   printf(", \"params\": {\"NUM_CONTEXTS\": %u, \"NUM_LANES\": %u, \"NUM_REGS\": %u, "
          "\"HAS_ADD\": %u, \"HAS_SUB\": %u, \"HAS_MUL\": %u, \"HAS_DIV\": %u, "
-         "\"HAS_SQRT\": %u, \"HAS_SIGN\": %u, \"ROUND\": %d, \"FTZ\": %d}",
+         "\"HAS_SQRT\": %u, \"HAS_SIGN\": %u, \"ROUND\": %d, \"FTZ\": %d, "
+         "\"ADD_LATENCY\": %u, \"MUL_LATENCY\": %u, \"WB_PORTS\": %u}",
          r->cfg.num_contexts, r->cfg.num_lanes, r->cfg.num_regs, r->cfg.has_add, r->cfg.has_sub,
          r->cfg.has_mul, r->cfg.has_div, r->cfg.has_sqrt, r->cfg.has_sign,
-         r->cfg.mode.round == FPREF_RTZ, r->cfg.mode.ftz ? 1 : 0);
+         r->cfg.mode.round == FPREF_RTZ, r->cfg.mode.ftz ? 1 : 0, r->cfg.add_latency,
+         r->cfg.mul_latency, r->cfg.wb_ports);
   printf(", \"unit_pc\": {");
   for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) {
     printf("%s\"%s\": ", u ? ", " : "", unit_name[u]);
@@ -172,12 +190,27 @@ static void print_reasons(const char *scene, const char *integ, const char *agai
   fprintf(stderr, ": %u object%s in flight\n", c->num_contexts * c->num_lanes,
           c->num_contexts * c->num_lanes == 1 ? "" : "s");
   if (o->device)
-    fprintf(stderr, "  %-16s lane model: %u fixed + %u lane 0 + %u a further lane LUT4s "
-                    "<= %u (%u per mille of %u), %u MULT18X18D a lane <= %u, %u + %u EBR a "
-                    "lane <= %u\n",
-            "", r->fit.luts_fixed, r->fit.luts_lane0, r->fit.luts_lane, r->fit.luts_allowed,
-            FP3_DEVICE_ROUTABLE_PERMILLE, o->device->luts, r->fit.dsp_lane, o->device->dsps,
-            r->fit.ebr_fixed, r->fit.ebr_lane, o->device->ebrs);
+    fprintf(stderr, "  %-16s lane model (%u write-back port%s): %u fixed + %u lane 0 + %u a "
+                    "further lane LUT4s <= %u (%u per mille of %u), %u MULT18X18D a lane <= "
+                    "%u, %u + %u EBR a lane <= %u\n",
+            "", r->fit.wb_ports, r->fit.wb_ports == 1 ? "" : "s", r->fit.luts_fixed,
+            r->fit.luts_lane0, r->fit.luts_lane, r->fit.luts_allowed, r->fit.routable_permille,
+            o->device->luts, r->fit.dsp_lane, o->device->dsps, r->fit.ebr_fixed,
+            r->fit.ebr_lane, o->device->ebrs);
+  if (c->wb_ports == 1)
+    fprintf(stderr, "  %-16s one write-back port a lane (no live value table): the program "
+                    "has no div or sqrt; every unit writes back after %u cycles (ADD_LATENCY=%u "
+                    "MUL_LATENCY=%u), the program is compiled for that\n",
+            param_text("WB_PORTS", 1, p0, sizeof p0), c->add_latency, c->add_latency,
+            c->mul_latency);
+  else if (o->wb_ports == 4)
+    fprintf(stderr, "  %-16s four write-back ports (--wb-ports 4), the default latencies\n",
+            param_text("WB_PORTS", 4, p0, sizeof p0));
+  else
+    fprintf(stderr, "  %-16s four write-back ports, the default latencies: the program has "
+                    "%s (pc %d), whose unit writes back later than the others\n",
+            param_text("WB_PORTS", 4, p0, sizeof p0), r->unit_pc[3] >= 0 ? "div" : "sqrt",
+            r->unit_pc[3] >= 0 ? r->unit_pc[3] : r->unit_pc[4]);
   if (r->regs_default > FP3_DEFAULT_NUM_REGS)
     fprintf(stderr, "  %-16s the fewest registers the compiler schedules the program into "
                     "(more than the default %u; no spilling)\n",
@@ -261,6 +294,13 @@ int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
                 fp3_device_names());
         return FP3_ARGS_BAD;
       }
+    } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--wb-ports", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      if (strcmp(v, "1") != 0 && strcmp(v, "4") != 0) {
+        fprintf(stderr, "fp3 configure: --wb-ports '%s': want 1 or 4 write-back ports\n", v);
+        return FP3_ARGS_BAD;
+      }
+      o->wb_ports = (unsigned)(v[0] - '0');
     } else if (strcmp(argv[i], "--context-per-object") == 0) {
       o->context_per_object = 1;
     } else if (strcmp(argv[i], "--json") == 0) {
@@ -321,10 +361,10 @@ static int run_configure(const fp3_configure_args *a) {
     }
     fp3_scene_free(&sc);
   }
-  char line[256];
+  char line[288];
   fp3_configure_line(&res.cfg, line, sizeof line);
   if (outp) {
-    char text[260];
+    char text[300];
     snprintf(text, sizeof text, "%s\n", line);
     if (fp3_write_text_atomic(outp, text, msg, sizeof msg)) {
       fprintf(stderr, "fp3 configure: %s\n", msg);

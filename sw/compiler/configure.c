@@ -27,15 +27,37 @@ void fp3_configure_defaults(fp3_configure_opts *o) {
   o->context_per_object = 0;
   o->max_lanes = FP3_CONFIGURE_MAX_LANES;
   o->device = NULL;
+  o->wb_ports = 0;
 }
 
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n) {
   return snprintf(buf, n,
                   "NUM_CONTEXTS=%u NUM_LANES=%u NUM_REGS=%u HAS_ADD=%u HAS_SUB=%u HAS_MUL=%u "
-                  "HAS_DIV=%u HAS_SQRT=%u HAS_SIGN=%u ROUND=%d FTZ=%d",
+                  "HAS_DIV=%u HAS_SQRT=%u HAS_SIGN=%u ROUND=%d FTZ=%d ADD_LATENCY=%u "
+                  "MUL_LATENCY=%u WB_PORTS=%u",
                   c->num_contexts, c->num_lanes ? c->num_lanes : 1, c->num_regs, c->has_add,
                   c->has_sub, c->has_mul, c->has_div, c->has_sqrt, c->has_sign,
-                  c->mode.round == FPREF_RTZ ? 1 : 0, c->mode.ftz ? 1 : 0);
+                  c->mode.round == FPREF_RTZ ? 1 : 0, c->mode.ftz ? 1 : 0,
+                  c->add_latency ? c->add_latency : FP3_DEFAULT_ADD_LATENCY,
+                  c->mul_latency ? c->mul_latency : FP3_DEFAULT_MUL_LATENCY,
+                  c->wb_ports == 1 ? 1u : 4u);
+}
+
+/* The first pc of each unit's instructions in img (r->unit_pc, -1: none). */
+static void find_units(const fp3_image *img, int unit_pc[FP3_CONFIGURE_UNITS]) {
+  for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) unit_pc[u] = -1;
+  for (size_t pc = 0; pc < img->n; pc++) {
+    int u = -1;
+    switch (fp3_insn_opc(img->words[pc])) {
+    case FP3_OP_ADD: u = 0; break;
+    case FP3_OP_SUB: u = 1; break;
+    case FP3_OP_MUL: u = 2; break;
+    case FP3_OP_DIV: u = 3; break;
+    case FP3_OP_SQRT: u = 4; break;
+    case FP3_OP_ABS: case FP3_OP_NEG: case FP3_OP_MIN: case FP3_OP_MAX: u = 5; break;
+    }
+    if (u >= 0 && unit_pc[u] < 0) unit_pc[u] = (int)pc;
+  }
 }
 
 /* Highest register a word of img names, or a binding names, plus one. */
@@ -244,6 +266,10 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
     snprintf(msg, n, "NUM_LANES at most %u: want 1 .. %d lanes", o->max_lanes, FP3_MAX_LANES);
     return -1;
   }
+  if (o->wb_ports != 0 && o->wb_ports != 1 && o->wb_ports != 4) {
+    snprintf(msg, n, "%u write-back ports: want 1 or 4 (0: chosen)", o->wb_ports);
+    return -1;
+  }
   const char *integ = o->integrator ? o->integrator : "rk4";
   fp3_compile_opts co;
   fp3_compile_defaults(&co);
@@ -254,6 +280,36 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   fp3_compiled *c = NULL;
   co.max_regs = FP3_MAX_REGS;
   if (src_compile(src, integ, &co, &c, msg, n)) return -1;
+
+  /* write-back ports: one unless the program divides or takes a root
+   * (the units do not depend on the latencies compiled for) */
+  find_units(fp3_compiled_image(c), r->unit_pc);
+  const int has_divsqrt = r->unit_pc[3] >= 0 || r->unit_pc[4] >= 0;
+  if (o->wb_ports == 1 && has_divsqrt) {
+    const int u = r->unit_pc[3] >= 0 ? 3 : 4;
+    snprintf(msg, n, "one write-back port needs a program without div and sqrt (their unit "
+             "writes back later than the others); this one has %s at pc %d",
+             u == 3 ? "div" : "sqrt", r->unit_pc[u]);
+    fp3_compiled_free(c);
+    return -1;
+  }
+  r->cfg.wb_ports = o->wb_ports ? o->wb_ports : has_divsqrt ? 4 : 1;
+  r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;
+  r->cfg.mul_latency = FP3_DEFAULT_MUL_LATENCY;
+  if (r->cfg.wb_ports == 1) {
+    /* every unit writes back at the same latency: the longer default */
+    const unsigned lat = r->cfg.add_latency > r->cfg.mul_latency ? r->cfg.add_latency
+                                                                  : r->cfg.mul_latency;
+    r->cfg.add_latency = r->cfg.mul_latency = lat;
+    /* the options fp3 run --scene takes from such a build */
+    fp3_compile_opts_for(&co, &r->cfg);
+    if (o->literal) co.fold = co.drop_zero = 0;
+    co.num_regs = FP3_DEFAULT_NUM_REGS;
+    co.max_regs = FP3_MAX_REGS;
+    fp3_compiled_free(c);
+    c = NULL;
+    if (src_compile(src, integ, &co, &c, msg, n)) return -1;
+  }
   co.max_regs = 0;
   co.num_regs = fp3_compiled_stats(c)->num_regs;
   r->regs_default = regs_named(fp3_compiled_image(c));
@@ -281,21 +337,8 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   const fp3_image *img = fp3_compiled_image(c);
   r->regs_used = regs_named(img);
 
-  /* units */
-  for (int u = 0; u < FP3_CONFIGURE_UNITS; u++) r->unit_pc[u] = -1;
-  for (size_t pc = 0; pc < img->n; pc++) {
-    const unsigned opc = fp3_insn_opc(img->words[pc]);
-    int u = -1;
-    switch (opc) {
-    case FP3_OP_ADD: u = 0; break;
-    case FP3_OP_SUB: u = 1; break;
-    case FP3_OP_MUL: u = 2; break;
-    case FP3_OP_DIV: u = 3; break;
-    case FP3_OP_SQRT: u = 4; break;
-    case FP3_OP_ABS: case FP3_OP_NEG: case FP3_OP_MIN: case FP3_OP_MAX: u = 5; break;
-    }
-    if (u >= 0 && r->unit_pc[u] < 0) r->unit_pc[u] = (int)pc;
-  }
+  /* units (their pcs in the program the build runs) */
+  find_units(img, r->unit_pc);
   r->cfg.has_add = r->unit_pc[0] >= 0 || r->unit_pc[1] >= 0;
   r->cfg.has_sub = r->unit_pc[1] >= 0;
   r->cfg.has_mul = r->unit_pc[2] >= 0;
@@ -319,13 +362,13 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   if (nl > o->max_lanes) nl = o->max_lanes;
   if (o->device) {
     const unsigned dl = fp3_device_lanes(o->device, (unsigned)nc, r->cfg.num_regs,
-                                         (int)r->cfg.has_mul, &r->fit);
+                                         (int)r->cfg.has_mul, r->cfg.wb_ports, &r->fit);
     if (dl == 0) {
       snprintf(msg, n, "the %s (%s) does not hold one lane of this build (%s): %u + %u "
                "LUT4s against %u (%u per mille of its %u, the share that routes), %u "
                "MULT18X18D of %u, %u EBR of %u",
                o->device->part, o->device->name, r->fit.limit, r->fit.luts_fixed,
-               r->fit.luts_lane0, r->fit.luts_allowed, FP3_DEVICE_ROUTABLE_PERMILLE,
+               r->fit.luts_lane0, r->fit.luts_allowed, r->fit.routable_permille,
                o->device->luts, r->fit.dsp_lane, o->device->dsps, r->fit.ebr_fixed + r->fit.ebr_lane,
                o->device->ebrs);
       fp3_compiled_free(c);
@@ -335,8 +378,6 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
   }
   r->cfg.num_lanes = (unsigned)nl;
   r->cfg.imem_depth = FP3_DEFAULT_IMEM_DEPTH;
-  r->cfg.add_latency = FP3_DEFAULT_ADD_LATENCY;
-  r->cfg.mul_latency = FP3_DEFAULT_MUL_LATENCY;
 
   /* rounding and subnormals */
   for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {

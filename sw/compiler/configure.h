@@ -53,8 +53,22 @@
  *    xc2v, docs/fpga.md "FP cores": FTZ saves about 40 % of the multiplier, RTZ
  *    little); a tie goes to the earlier mode in the order above.
  *
- * IMEM_DEPTH and the latencies stay at their defaults (the compiler
- * schedules for the default latencies).
+ *  - WB_PORTS, ADD_LATENCY, MUL_LATENCY: one write-back port a lane
+ *    (WB_PORTS=1, docs/lanes.md "One write-back port") when the program
+ *    has no div and no sqrt, with both latencies the longer default
+ *    (FP3_DEFAULT_ADD_LATENCY, 4): every unit and the move path then
+ *    write back that many cycles after the read, so no two write-backs
+ *    meet and a lane's register file is two RAMs without a live value
+ *    table -- about two thirds of a lane's LUT4s on the chip build
+ *    (device.h).  The program is compiled for those latencies (as
+ *    fp3_compile_opts_for does for such a build), so one object's
+ *    integration takes longer and NUM_CONTEXTS, which follows from it,
+ *    grows until the issue slot is busy again: the same throughput for
+ *    fewer LUTs.  A program with div or sqrt gets four ports and the
+ *    default latencies; opts.wb_ports 4 asks for those always.
+ *
+ * IMEM_DEPTH stays at its default, the latencies of a build with four
+ * write-back ports too (the compiler schedules for them).
  */
 #ifndef FP3_CONFIGURE_H
 #define FP3_CONFIGURE_H
@@ -74,8 +88,8 @@
 #define FP3_CONFIGURE_UNITS 6
 /* Default upper bound of the derived NUM_LANES, a bound on the hardware
  * a scene may ask for (16 lanes: 16 adders, multipliers and register
- * banks of 6 EBR); the LFE5U-85F holds about 8 lanes of the build for
- * clock rate (docs/lanes.md "Chip build"). */
+ * banks); the LFE5U-85F holds 16 lanes of the build for clock rate with
+ * one write-back port (docs/lanes.md "Chip build"). */
 #define FP3_CONFIGURE_MAX_LANES 16
 
 /* The candidate FP core modes, in tie-break order. */
@@ -91,16 +105,21 @@ typedef struct fp3_configure_opts {
   int context_per_object; /* 1: NUM_CONTEXTS = min(objects, 64)            */
   unsigned max_lanes;     /* NUM_LANES at most (1 .. FP3_MAX_LANES)        */
   const fp3_device *device; /* NULL, or NUM_LANES at most what it holds   */
+  unsigned wb_ports;      /* 0: one when the program has no div or sqrt,  */
+                          /* else four; 1 or 4: that many (1 with div or  */
+                          /* sqrt is an error)                            */
 } fp3_configure_opts;
 
 /* integrator "rk4", literal 0, budget 1e-4, steps 1000, contexts by the
- * issue rule, max_lanes FP3_CONFIGURE_MAX_LANES, no device. */
+ * issue rule, max_lanes FP3_CONFIGURE_MAX_LANES, no device, write-back
+ * ports chosen (wb_ports 0). */
 void fp3_configure_defaults(fp3_configure_opts *o);
 
 /* What fp3_configure derived, and why. */
 typedef struct fp3_configure_result {
-  fp3_config cfg;          /* the parameters; imem_depth and latencies at  */
-                           /* their defaults                               */
+  fp3_config cfg;          /* the parameters; imem_depth at its default,   */
+                           /* add/mul latencies and wb_ports by the rule   */
+                           /* above                                        */
   size_t objects;          /* objects in the scene                         */
   int unit_pc[FP3_CONFIGURE_UNITS]; /* first pc of an add, sub, mul, div,  */
                            /* sqrt, abs/neg/min/max; -1: none              */
@@ -127,8 +146,9 @@ typedef struct fp3_configure_result {
 /* Derive the parameters for scene sc (scene_name: for the program's
  * header).  Returns 0 and *r, or -1 with a message: unknown integrator,
  * empty scene, bad options (budget not a positive finite number, steps 0,
- * max_lanes outside 1 .. FP3_MAX_LANES), a device that does not hold one
- * lane of the build,
+ * max_lanes outside 1 .. FP3_MAX_LANES, wb_ports not 0, 1 or 4), one
+ * write-back port asked for a program with div or sqrt, a device that
+ * does not hold one lane of the build,
  * out of memory.  *compiled (if not NULL) receives the program compiled
  * for the derived NUM_REGS (free with fp3_compiled_free). */
 int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
@@ -147,7 +167,8 @@ int fp3_configure_model(const fp3_mscene *sc, const fp3_configure_opts *o,
 
 /* The parameters as one line of make variables, no newline:
  * "NUM_CONTEXTS=8 NUM_LANES=2 NUM_REGS=16 HAS_ADD=1 HAS_SUB=0 HAS_MUL=1 HAS_DIV=0
- * HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1".
+ * HAS_SQRT=0 HAS_SIGN=0 ROUND=0 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1"
+ * (a latency or wb_ports of 0: the default, FP3_DEFAULT_*_LATENCY and 4).
  * Returns the length (as snprintf). */
 int fp3_configure_line(const fp3_config *c, char *buf, size_t n);
 

@@ -15,12 +15,22 @@ static const fp3_device devices[] = {
 };
 #define NDEV (sizeof devices / sizeof devices[0])
 
-/* The chip build's figures (device.h). */
-#define FIXED_LUTS 13240u  /* fp3_top alone 13,087 + fp3_axil alone 153 */
+/* The chip build's figures (device.h), per write-back ports. */
+typedef struct lane_model {
+  unsigned fixed_luts;  /* fixed part, less its share of each lane     */
+  unsigned fixed_lane;  /* the fixed part's LUT4s a lane               */
+  unsigned lane0_luts;  /* lane 0 at CHIP_REGS registers               */
+  unsigned lane_luts;   /* a further lane                              */
+  unsigned lane_ebr;    /* EBR a lane per CHIP_REGS registers          */
+  unsigned permille;    /* LUT4s that route, per mille of the device's */
+} lane_model;
+/* four ports: fp3_top alone 13,087 + fp3_axil alone 153 at 8 lanes */
+static const lane_model model_wb4 = {13240u, 0u, 13429u, 3962u, 8u,
+                                     FP3_DEVICE_ROUTABLE_PERMILLE_WB4};
+/* one port: fp3_top + fp3_axil 13,070 at 8 lanes, 15,611 + 238 at 16 */
+static const lane_model model_wb1 = {10281u, 348u, 4080u, 2646u, 2u,
+                                     FP3_DEVICE_ROUTABLE_PERMILLE_WB1};
 #define FIXED_EBR 3u
-#define LANE0_LUTS 13429u
-#define LANE_LUTS 3962u
-#define LANE_EBR 8u
 #define LANE_DSP 4u        /* a binary32 product in MULT18X18D */
 #define CHIP_REGS 512u     /* 16 contexts x 32 registers */
 
@@ -47,15 +57,18 @@ static unsigned scale_up(unsigned x, unsigned long long num, unsigned long long 
 }
 
 unsigned fp3_device_lanes(const fp3_device *d, unsigned num_contexts, unsigned num_regs,
-                          int has_mul, fp3_device_fit *fit) {
+                          int has_mul, unsigned wb_ports, fp3_device_fit *fit) {
+  const lane_model *m = wb_ports == 1 ? &model_wb1 : &model_wb4;
   const unsigned long long regs = (unsigned long long)num_contexts * num_regs;
-  fit->luts_fixed = FIXED_LUTS;
-  fit->luts_lane = LANE_LUTS;
-  fit->luts_lane0 = LANE_LUTS + scale_up(LANE0_LUTS - LANE_LUTS, regs, CHIP_REGS);
+  fit->wb_ports = wb_ports == 1 ? 1 : 4;
+  fit->luts_fixed = m->fixed_luts;
+  fit->luts_lane = m->lane_luts + m->fixed_lane;
+  fit->luts_lane0 = fit->luts_lane + scale_up(m->lane0_luts - m->lane_luts, regs, CHIP_REGS);
   fit->ebr_fixed = FIXED_EBR;
-  fit->ebr_lane = LANE_EBR * (unsigned)((regs + CHIP_REGS - 1) / CHIP_REGS);
+  fit->ebr_lane = m->lane_ebr * (unsigned)((regs + CHIP_REGS - 1) / CHIP_REGS);
   fit->dsp_lane = has_mul ? LANE_DSP : 0;
-  fit->luts_allowed = (unsigned)((unsigned long long)d->luts * FP3_DEVICE_ROUTABLE_PERMILLE / 1000);
+  fit->routable_permille = m->permille;
+  fit->luts_allowed = (unsigned)((unsigned long long)d->luts * m->permille / 1000);
   unsigned n = 0;
   for (;;) { /* one more lane, while every limit holds */
     const unsigned long long k = n + 1;
