@@ -289,10 +289,14 @@ bench-chip: $(BUILD)/bench_chip
 # linked with the chip build only (scripts/bench-simspeed.sh;
 # docs/lanes.md "Simulation speed").  SIMSPEED_BEFORE=path/to/bench_chip,
 # the same program built from another revision: both, alternating.
+# SIMSPEED_BASELINE=path/to/fp3, build/fp3 of another revision: its
+# default build's `fp3 run --objects 64` timed in the same rounds.
 SIMSPEED_ROUNDS ?= 3
 SIMSPEED_BEFORE ?=
+SIMSPEED_BASELINE ?=
 .PHONY: bench-simspeed
-## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships): object-steps per CPU second and ratio (SIMSPEED_BEFORE=)
+## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships): object-steps per CPU second and ratio (SIMSPEED_BEFORE=, SIMSPEED_BASELINE=)
 bench-simspeed:
 	$(MAKE) --no-print-directory $(BUILD)/bench_chip BENCH_CHIP_MODELS=chip
-	bash scripts/bench-simspeed.sh --rounds $(SIMSPEED_ROUNDS) $(BUILD)/bench_chip $(SIMSPEED_BEFORE)
+	bash scripts/bench-simspeed.sh --rounds $(SIMSPEED_ROUNDS) \
+	  $(if $(SIMSPEED_BASELINE),--baseline $(SIMSPEED_BASELINE)) $(BUILD)/bench_chip $(SIMSPEED_BEFORE)
