@@ -6,7 +6,7 @@
 # `FP3 configure SCENE --integrator INTEGRATOR OPTS` (OPTS: more of its
 # options, e.g. "--wb-ports 4", or empty) writes the parameters
 # (OUTDIR/NAME.params, NAME = the scene's file name without .scene, then
-# OPTS as _option-value, e.g. harbour_wb-ports-4); then, per flow,
+# each word of OPTS as _word, e.g. harbour_wb-ports_4); then, per flow,
 # scripts/synth.sh synthesizes fp3_axil with fp3_top kept, once with those
 # parameters (OUTDIR/NAME/) and once with the defaults but the same
 # NUM_LANES (OUTDIR/full-lanesL/, reused while newer than every VERILOG

@@ -18,7 +18,7 @@
  *   lane 0     13,429 LUT4s (register bank, busy flags and live value
  *              table of the 512 registers, FP cores), 4 MULT18X18D, 8 EBR
  *   lane 1 ..  3,962 LUT4s (register bank, FP cores, broadcast stages),
- *              4 MULT18X18D, 8 EBR (six RAMs of 512 x 32)
+ *              4 MULT18X18D, 8 EBR (eight RAMs of 512 x 32, two a port)
  *  one write-back port (WB_PORTS = 1), 8 and 16 lanes:
  *   fixed      10,281 LUT4s + 348 a lane (the trace port, host read and
  *              flags multiplexers grow with the lanes: fp3_top and
