@@ -294,6 +294,8 @@ bench-chip: $(BUILD)/bench_chip
 SIMSPEED_ROUNDS ?= 3
 SIMSPEED_BEFORE ?=
 SIMSPEED_BASELINE ?=
+# tests/test_simspeed.sh: the script's arithmetic and bad input, on stand-ins.
+TEST_SCRIPTS += tests/test_simspeed.sh
 .PHONY: bench-simspeed
 ## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships): object-steps per CPU second and ratio (SIMSPEED_BEFORE=, SIMSPEED_BASELINE=)
 bench-simspeed:
