@@ -212,9 +212,10 @@ synth-contexts: $(SETUP_STAMP)
 
 # ---- RTL against ISS and golden model (cmocka) ------------------------------
 # (It also runs the build for clock rate, the fp3_top model test_axil
-# compares its AXI4-Lite build with: RTL_AXIL_CONFIGS.)
+# compares its AXI4-Lite build with: RTL_AXIL_CONFIGS; and random programs
+# on the scene-sized build: RTL_SCENE_CONFIGS.)
 RTL_ENGINE_OBJS := $(RTL_TEST_OBJS) \
-  $(foreach c,$(RTL_AXIL_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
+  $(foreach c,$(RTL_AXIL_CONFIGS) $(RTL_SCENE_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
 $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS) $(RTL_ENGINE_OBJS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(SAN_FLAGS) -c $< -o $@.o

@@ -38,7 +38,7 @@
 
 /* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */
 extern const fp3_model_ops fp3_model_nc1, fp3_model_nc3, fp3_model_fmax, fp3_model_l4,
-    fp3_model_lf;
+    fp3_model_lf, fp3_model_drift;
 
 #define MAX_REGS 256
 
@@ -791,7 +791,9 @@ static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) 
       case 11: img->words[n++] = random_div_op(c, rd, ra, rb); break;
       case 7: img->words[n++] = fp3_insn_make(FP3_OP_BEQ, 0, ra, rb, target); break;
       case 0: case 1: img->words[n++] = fp3_insn_make(FP3_OP_ADD, rd, ra, rb, 0); break;
-      case 2: img->words[n++] = fp3_insn_make(FP3_OP_SUB, rd, ra, rb, 0); break;
+      case 2: /* an adder without HAS_SUB adds */
+        img->words[n++] = fp3_insn_make(c->has_sub ? FP3_OP_SUB : FP3_OP_ADD, rd, ra, rb, 0);
+        break;
       case 3: case 4: img->words[n++] = fp3_insn_make(FP3_OP_MUL, rd, ra, rb, 0); break;
       case 5: img->words[n++] = fp3_insn_make(FP3_OP_LI, rd, 0, 0, random_value()); break;
       case 6: img->words[n++] = fp3_insn_make(FP3_OP_MOV, rd, ra, 0, 0); break;
@@ -1013,22 +1015,27 @@ static void multi_free(multi_capture *m) {
  * FMAX_PIPE: the full announcement lead; mk/rtl.mk): the
  * FMAX_PIPE scheduler's contexts 3 to 7 run only there (a mutation of
  * context 3's hazard compares passed every test before it was here);
- * the lanes build (8 contexts x 4 lanes, the default latencies); and
+ * the lanes build (8 contexts x 4 lanes, the default latencies);
  * lanes in the build for clock rate (4 contexts x 3 lanes, the chip
- * build's latencies, broadcast stages and split host read). */
+ * build's latencies, broadcast stages and split host read); and the
+ * scene-sized build `drift` (4 contexts x 2 lanes, one write-back port
+ * without FMAX_PIPE, ADD_LATENCY = MUL_LATENCY = 4, RTZ + FTZ, no
+ * subtractor, sign group or div/sqrt unit: random programs only). */
 static const struct {
   const fp3_model_ops *model;  /* NULL: the default build */
   unsigned contexts;           /* what the build must report */
   unsigned lanes;
   int fmax_pipe;
   unsigned wb_ports;  /* WB_PORTS, as INFO2 reports it */
+  int ship;           /* 1: runs programs/ship_rk4.s (0: no subtractor) */
 } context_builds[] = {
-  {&fp3_model_nc1, 1, 1, 0, 4},
-  {&fp3_model_nc3, 3, 1, 1, 4},
-  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0, 4},
-  {&fp3_model_fmax, 8, 1, 1, 4},
-  {&fp3_model_l4, 8, 4, 0, 4},
-  {&fp3_model_lf, 4, 3, 1, 1},
+  {&fp3_model_nc1, 1, 1, 0, 4, 1},
+  {&fp3_model_nc3, 3, 1, 1, 4, 1},
+  {NULL, FP3_DEFAULT_NUM_CONTEXTS, 1, 0, 4, 1},
+  {&fp3_model_fmax, 8, 1, 1, 4, 1},
+  {&fp3_model_l4, 8, 4, 0, 4, 1},
+  {&fp3_model_lf, 4, 3, 1, 1, 1},
+  {&fp3_model_drift, 4, 2, 0, 1, 0},
 };
 #define CONTEXT_BUILDS (int)(sizeof context_builds / sizeof context_builds[0])
 static fp3_engine *context_build(int which) {
@@ -1056,6 +1063,10 @@ static void test_many_ships(void **state) {
     assert_int_equal(er->config.num_lanes, context_builds[which].lanes);
     assert_int_equal(er->config.fmax_pipe, context_builds[which].fmax_pipe);
     assert_int_equal(er->config.wb_ports, context_builds[which].wb_ports);
+    if (!context_builds[which].ship) {
+      fp3_engine_free(er);
+      continue;
+    }
     fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
     assert_non_null(is);
     unsigned nctx = fp3_config_slots(&er->config);
