@@ -26,7 +26,7 @@ FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/is
 # fp_div and fp_sqrt: the latency of the div/sqrt unit (docs/fp-cores.md).
 FPU_DIV_LAT_DEF := 8
 
-# name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY
+# name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY [MUL_FEED]
 # (the names give the add and mul latencies; the variants also take the
 # div/sqrt latencies 1 to 33: every register count up to the full 30 and
 # 29 places of fp_div and fp_sqrt, and output delay stages beyond)
@@ -48,10 +48,16 @@ FPU_CFG_lat_6_9  := 0 0 6 9 30
 FPU_CFG_lat_10_11 := 0 0 10 11 33
 FPU_CFG_lat_8_12 := 0 0 8 12 20
 FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10 10
+# The chip build's multiplier (mk/rtl.mk CHIP_PARAMS): the DSP product of
+# latency 9 behind the feed register (fp_mul FEED), and in RTZ with FTZ at
+# latency 8 (the DSP product of 7).
+FPU_CFG_lat_10_10f := 0 0 10 10 9 1
+FPU_CFG_lat_4_8f_rtz_ftz := 1 1 4 8 4 1
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
 FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6 lat_9_7 lat_7_10 \
-                   lat_6_9 lat_10_11 lat_8_12 lat_9_10_rtz_ftz
+                   lat_6_9 lat_10_11 lat_8_12 lat_9_10_rtz_ftz lat_10_10f \
+                   lat_4_8f_rtz_ftz
 FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
 
 fpu_model_lib  = $(FPU_DIR)/obj_$(1)/Vfpu_$(1)__ALL.a
@@ -67,6 +73,7 @@ $(call fpu_model_lib,$(1)): $(FPU_RTL) $(FPU_RTL_INC) sim/fpu_top.v mk/fpu.mk | 
 	  -GADD_LATENCY=$(word 3,$(FPU_CFG_$(1))) \
 	  -GMUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
 	  -GDIV_LATENCY=$(word 5,$(FPU_CFG_$(1))) \
+	  $(if $(word 6,$(FPU_CFG_$(1))),-GMUL_FEED=$(word 6,$(FPU_CFG_$(1)))) \
 	  -MAKEFLAGS OPT_FAST=-O2 \
 	  --Mdir $(FPU_DIR)/obj_$(1) --prefix Vfpu_$(1) \
 	  sim/fpu_top.v $(FPU_RTL) > $(FPU_DIR)/obj_$(1).log 2>&1 \

@@ -3,20 +3,20 @@
 # Exports RTL_OBJS (what an executable links to use sim/fp3_model.h: the
 # models of all four FP core configurations) and RTL_DEPS.  NUM_CONTEXTS,
 # NUM_LANES, NUM_REGS, IMEM_DEPTH, ADD_LATENCY, MUL_LATENCY, HAS_ADD,
-# HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY, FMAX_PIPE and
-# WB_PORTS on the make command line override the defaults of sw/isa/fp3_isa.h
+# HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY, FMAX_PIPE,
+# WB_PORTS and MUL_FEED on the make command line override the defaults of sw/isa/fp3_isa.h
 # (e.g. `make sim ADD_LATENCY=6`); the C side reads the values back from
 # the model's INFO registers.
 
 RTL_TOP      := fp3_top
 RTL_PARAMS   := $(foreach p,NUM_CONTEXTS NUM_LANES NUM_REGS IMEM_DEPTH ADD_LATENCY MUL_LATENCY HAS_ADD HAS_SUB HAS_MUL HAS_DIV HAS_SQRT HAS_SIGN DIV_LATENCY FMAX_PIPE \
-                  WB_PORTS,$(if $($(p)),-G$(p)=$($(p))))
+                  WB_PORTS MUL_FEED,$(if $($(p)),-G$(p)=$($(p))))
 RTL_VFLAGS   := $(VFLAGS) --trace -MAKEFLAGS OPT_FAST=-O2 --top-module $(RTL_TOP) $(RTL_PARAMS)
 
 # One model per FP core configuration (FP3_MODEL_CONFIGS of
 # sim/fp3_model.h): name := ROUND FTZ [NUM_CONTEXTS [ADD_LATENCY
 # MUL_LATENCY [NUM_REGS HAS_ADD HAS_SUB HAS_MUL [FMAX_PIPE [NUM_LANES [HAS_DIV
-# HAS_SQRT HAS_SIGN [WB_PORTS]]]]]]].  The test
+# HAS_SQRT HAS_SIGN [WB_PORTS [MUL_FEED]]]]]]]].  The test
 # programs also get models with 1 and 3 contexts, with other core latencies
 # (shortest add, and no div/sqrt unit: HAS_DIV = HAS_SQRT = 0, the build a
 # program with div or sqrt is refused on; FMAX_PIPE, the build for clock
@@ -36,9 +36,10 @@ RTL_CFG_nc3     := 0 0 3 4 3 40 1 1 1 1
 # ... and with lanes: 8 contexts of 4 lanes each (32 objects in flight).
 RTL_CFG_l4      := 0 0 8 4 3 32 1 1 1 0 4
 # ... and lanes in the build for clock rate: the chip build (CHIP_PARAMS
-# below) in small, 4 contexts x 3 lanes, with its latencies, one write-back
-# port, broadcast stages and split host read.
-RTL_CFG_lf      := 0 0 4 9 9 32 1 1 1 1 3 0 0 1 1
+# below) in small, 4 contexts x 3 lanes, with its latencies and multiplier
+# (the feed register in front of the DSP blocks), one write-back port,
+# broadcast stages and split host read.
+RTL_CFG_lf      := 0 0 4 10 10 32 1 1 1 1 3 0 0 1 1 1
 RTL_TEST_CONFIGS := nc1 nc3 l4 lf
 # ... and the throughput benchmark with 16, 32 and 64.
 RTL_CFG_nc16    := 0 0 16
@@ -63,9 +64,12 @@ RTL_AXIL_CONFIGS := fmax
 # the LFE5U-85F (mk/pnr.mk CHIP=ecp5-85 places the same parameters).  16
 # contexts hide the build for clock rate's latencies (8 leave the issue
 # slot idle: 1.23 times the issue bound; f16 below).  Its multiplier is in
-# MULT18X18D with the blocks' own input and output registers (MUL_LATENCY
-# 9: fp_mul_prod LUT = 0, PRE = 1; fp_mul alone 162 MHz), which saves
-# about 1,050 LUT4s a lane against the LUT product.  One write-back port
+# MULT18X18D with the blocks' own input and output registers (fp_mul_prod
+# LUT = 0, PRE = 1; fp_mul alone 162 MHz), which saves about 1,050 LUT4s a
+# lane against the LUT product, and a fabric register in front of them
+# (MUL_FEED: MUL_LATENCY 10 is the DSP product of 9 and that register):
+# the route from a lane's logic to its blocks, across a full chip, gets a
+# cycle of its own.  One write-back port
 # (WB_PORTS=1: the move path delayed to the add's 9 cycles, no live value
 # table) makes a lane about two thirds as large: 16 lanes are 59,619 LUT4s
 # (71 %) and route (docs/lanes.md "Chip build").
@@ -75,12 +79,12 @@ RTL_AXIL_CONFIGS := fmax
 # the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
 CHIP_LANES      := 16
-CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=9 MUL_LATENCY=9 FMAX_PIPE=1 \
-                   HAS_DIV=0 HAS_SQRT=0 WB_PORTS=1
+CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=10 MUL_LATENCY=10 \
+                   MUL_FEED=1 FMAX_PIPE=1 HAS_DIV=0 HAS_SQRT=0 WB_PORTS=1
 RTL_CFG_l2      := 0 0 8 4 3 32 1 1 1 0 2
 RTL_CFG_l8      := 0 0 8 4 3 32 1 1 1 0 8
 RTL_CFG_l16     := 0 0 8 4 3 32 1 1 1 0 16
-RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 9 9 32 1 1 1 1 $(CHIP_LANES) 0 0 1 1
+RTL_CFG_chip    := 0 0 $(CHIP_CONTEXTS) 10 10 32 1 1 1 1 $(CHIP_LANES) 0 0 1 1 1
 # ... and the build for clock rate with 16 contexts, one lane: whether
 # twice the contexts hide its latencies (a context's timing does not
 # depend on its lanes).
@@ -89,7 +93,7 @@ RTL_CHIP_CONFIGS := l2 l8 l16 chip f16
 
 # The -G flags of configuration $(1): the words of RTL_CFG_$(1), in order.
 RTL_CFG_PARAMS := ROUND FTZ NUM_CONTEXTS ADD_LATENCY MUL_LATENCY NUM_REGS HAS_ADD HAS_SUB HAS_MUL FMAX_PIPE \
-                  NUM_LANES HAS_DIV HAS_SQRT HAS_SIGN WB_PORTS
+                  NUM_LANES HAS_DIV HAS_SQRT HAS_SIGN WB_PORTS MUL_FEED
 rtl_gparams = $(join $(patsubst %,-G%=,$(wordlist 1,$(words $(RTL_CFG_$(1))),$(RTL_CFG_PARAMS))),$(RTL_CFG_$(1)))
 
 rtl_objdir  = $(BUILD)/obj_fp3_$(1)

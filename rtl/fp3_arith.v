@@ -22,6 +22,8 @@
 //                instruction issues one read-stage cycle more after its
 //                producer, thanks to the register-file bypass)
 //   MUL_LATENCY  the same for fp_mul
+//   MUL_FEED     fp_mul FEED: 1 puts a fabric register in front of its DSP
+//                blocks (MUL_LATENCY 7 to 10; rtl/fp_mul.v)
 //   MOV_LATENCY  the same for the move path, >= 1
 //   DIV_LATENCY  the same for fp_div and fp_sqrt (their LATENCY), >= 1
 //   ROUND, FTZ   core options, see rtl/fp_add.v (0 = RNE, IEEE subnormals)
@@ -49,6 +51,7 @@
 module fp3_arith #(
   parameter integer ADD_LATENCY = 4,
   parameter integer MUL_LATENCY = 3,
+  parameter integer MUL_FEED    = 0,
   parameter integer ROUND       = 0,
   parameter integer FTZ         = 0,
   parameter integer MOV_LATENCY = 1,
@@ -110,7 +113,7 @@ module fp3_arith #(
   // ---- mul core ------------------------------------------------------------
   generate
     if (HAS_MUL != 0) begin : g_mul
-      fp_mul #(.LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ)) u_mul (
+      fp_mul #(.LATENCY(MUL_LATENCY), .FEED(MUL_FEED), .ROUND(ROUND), .FTZ(FTZ)) u_mul (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (mul_go),

@@ -47,6 +47,8 @@
 //   IMEM_DEPTH   instruction memory entries of fp3_top, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles
 //   MUL_LATENCY  mul core latency in cycles
+//   MUL_FEED     1: a fabric register in front of the multipliers' DSP
+//                blocks (fp3_top)
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
 //   HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV, HAS_SQRT, HAS_SIGN, DIV_LATENCY
@@ -65,6 +67,7 @@ module fp3_axil #(
   parameter integer IMEM_DEPTH   = 256,
   parameter integer ADD_LATENCY  = 4,
   parameter integer MUL_LATENCY  = 3,
+  parameter integer MUL_FEED     = 0,
   parameter integer ROUND        = 0,
   parameter integer FTZ          = 0,
   parameter integer HAS_ADD      = 1,
@@ -336,6 +339,7 @@ module fp3_axil #(
     .IMEM_DEPTH   (IMEM_DEPTH),
     .ADD_LATENCY  (ADD_LATENCY),
     .MUL_LATENCY  (MUL_LATENCY),
+    .MUL_FEED     (MUL_FEED),
     .ROUND        (ROUND),
     .FTZ          (FTZ),
     .HAS_ADD      (HAS_ADD),

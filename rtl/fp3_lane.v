@@ -50,7 +50,7 @@
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
 // FLAGS_AHEAD, CTRL, HOST_ALL, WB_PORTS) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
-// MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
+// MUL_FEED, MOV_LATENCY, DIV_LATENCY, ROUND, FTZ, HAS_ADD, HAS_SUB, HAS_MUL, HAS_DIV,
 // HAS_SQRT, HAS_SIGN), passed through unchanged; IN_STAGES (0 .. 2),
 // OUT_STAGES, EQ_STAGE and HOST_STAGES (0 or 1 each), the broadcast stages
 // above (0: none, the lane of a one-lane build).
@@ -74,6 +74,7 @@ module fp3_lane #(
   parameter integer WB_PORTS    = 4,
   parameter integer ADD_LATENCY = 4,
   parameter integer MUL_LATENCY = 3,
+  parameter integer MUL_FEED    = 0,
   parameter integer MOV_LATENCY = 1,
   parameter integer DIV_LATENCY = 8,
   parameter integer ROUND       = 0,
@@ -286,7 +287,8 @@ module fp3_lane #(
   // The units' own valid bits equal the shared tag lines' (same depth from
   // the same issue); fp3_top uses the tag lines'.
   wire add_valid, mul_valid, mov_valid, div_valid;
-  fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
+  fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .MUL_FEED(MUL_FEED),
+              .ROUND(ROUND), .FTZ(FTZ),
               .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .HAS_ADD(HAS_ADD),
               .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT),
               .HAS_SIGN(HAS_SIGN)) u_arith (

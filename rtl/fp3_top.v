@@ -91,6 +91,11 @@
 //   IMEM_DEPTH   instruction memory entries, 2..1024
 //   ADD_LATENCY  add/sub core latency in cycles (operands to result)
 //   MUL_LATENCY  mul core latency in cycles
+//   MUL_FEED     1: a fabric register in front of each lane's multiplier
+//                DSP blocks (fp_mul FEED; MUL_LATENCY 7 to 10, whose
+//                product is in DSP blocks as at MUL_LATENCY - 1): on a
+//                chip full of lanes the route to the blocks gets a cycle
+//                of its own.  Results as with 0; only the latency counts
 //   ROUND        0 round to nearest even, 1 round toward zero
 //   FTZ          0 IEEE subnormals, 1 flush subnormals to zero
 //   HAS_ADD      0: no add/sub core; add and sub are illegal instructions
@@ -145,6 +150,7 @@ module fp3_top #(
   parameter integer IMEM_DEPTH   = 256,
   parameter integer ADD_LATENCY  = 4,
   parameter integer MUL_LATENCY  = 3,
+  parameter integer MUL_FEED     = 0,
   parameter integer ROUND        = 0,
   parameter integer FTZ          = 0,
   parameter integer HAS_ADD      = 1,
@@ -493,7 +499,7 @@ module fp3_top #(
     for (ln = 0; ln < NL; ln = ln + 1) begin : g_lane
       fp3_lane #(.ENTRIES(1 << XW), .XW(XW), .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE),
                  .CTRL(ln == 0 ? 1 : 0), .HOST_ALL(NL > 1 ? 1 : 0), .WB_PORTS(WB_PORTS),
-                 .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY),
+                 .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .MUL_FEED(MUL_FEED),
                  .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND),
                  .FTZ(FTZ), .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL),
                  .HAS_DIV(HAS_DIV), .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN),

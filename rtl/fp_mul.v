@@ -50,6 +50,19 @@
 //              m4a = rounding increment and overflow (fp_round);
 //              m4b = flush to zero, flags, special result
 //                    (fp_round_pack).
+//   FEED     0: as the table above
+//            1: one more register, in the fabric, between m1b and the DSP
+//            blocks' input registers: the places of LATENCY - 1 (which
+//            must be 7 to 10 here, so that the table's LATENCY - 1 is 6 to
+//            9: the DSP product with the blocks' own registers) plus this
+//            one, e.g. LATENCY 10:
+//              in | m1a | m1b | feed | m2a | m2b | m2c | m3a m3b | m4a
+//              | m4b | out
+//            Why: with many lanes on one chip the route from m1b's shift to
+//            a lane's MULT18X18D crosses much of the device (8 to 11 ns of
+//            routing on the 16-lane LFE5U-85F build, docs/lanes.md); the
+//            feed register splits it in two cycles.  It costs 67 flip-flops
+//            (the significands and what rides beside them) and a cycle.
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
 //            kept, no flag: x86 DAZ) and tiny results flushed to +-0 with
@@ -84,6 +97,7 @@
 
 module fp_mul #(
   parameter integer LATENCY = 3, // issue to result, rising edges, >= 1
+  parameter integer FEED    = 0, // 1: a fabric register in front of the DSP blocks
   parameter integer ROUND   = 0, // 0 RNE, 1 RTZ
   parameter integer FTZ     = 0  // 1: flush subnormal inputs and results
 ) (
@@ -136,9 +150,11 @@ module fp_mul #(
     end
   endfunction
 
-  localparam [9:0]   BND      = bounds(LATENCY);
-  localparam integer DEPTH_O  = (LATENCY > N_FULL) ? LATENCY - N_FULL + 1 : 1;
-  localparam integer LUT_PROD = (LATENCY >= N_LUT) ? 1 : 0;
+  // The table's row: that of LATENCY less the feed register.
+  localparam integer LAT_T    = LATENCY - ((FEED != 0) ? 1 : 0);
+  localparam [9:0]   BND      = bounds(LAT_T);
+  localparam integer DEPTH_O  = (LAT_T > N_FULL) ? LAT_T - N_FULL + 1 : 1;
+  localparam integer LUT_PROD = (LAT_T >= N_LUT) ? 1 : 0;
   // The DSP product with a register in front (m1b | m2a) and one after
   // (m2a | m2b), L = 6 to 9: both are the DSP blocks' own (fp_mul_prod
   // PRE = 1), which take the significands a cycle early, from m1b.
@@ -148,6 +164,11 @@ module fp_mul #(
     if (LATENCY < 1) begin : g_bad_latency
       // Elaboration error on purpose: LATENCY must be at least 1.
       fp_mul_error_LATENCY_must_be_at_least_1 u_error ();
+    end
+    if ((FEED != 0) && ((FEED != 1) || (DSP_REG == 0))) begin : g_bad_feed
+      // Elaboration error on purpose: the feed register stands in front
+      // of the DSP blocks' input registers, LATENCY 7 to 10.
+      fp_mul_error_FEED_needs_LATENCY_7_to_10 u_error ();
     end
   endgenerate
 
@@ -259,14 +280,30 @@ module fp_mul #(
   wire c1b_spec_nv = (a_nan & ~s1_aman[22]) | (b_nan & ~s1_bman[22]) | c1b_dnan;
 
   localparam integer W2 = WR + 10 + 24 + 24;
-  wire          s2_valid;
-  wire [W2-1:0] s2_data;
-  fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_M2] ? 1 : 0)) u_pipe2 (
+
+  // feed (FEED = 1): m1b's results once more, in the fabric; the DSP
+  // blocks take their significands from here.
+  wire          sf_valid;
+  wire [W2-1:0] sf_data;
+  fp_pipe #(.WIDTH(W2), .DEPTH((FEED != 0) ? 1 : 0)) u_pipe_feed (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s1_valid),
     .data_i  ({c1b_spec, c1b_spec_nv, c1b_nan, c1b_nan_b, c1b_dnan, c1b_inf,
                s1_asign, s1_bsign, c1b_exp, c1b_aman, c1b_bman}),
+    .valid_o (sf_valid),
+    .data_o  (sf_data)
+  );
+  wire [23:0] sf_aman = sf_data[47:24];
+  wire [23:0] sf_bman = sf_data[23:0];
+
+  wire          s2_valid;
+  wire [W2-1:0] s2_data;
+  fp_pipe #(.WIDTH(W2), .DEPTH(BND[B_M2] ? 1 : 0)) u_pipe2 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (sf_valid),
+    .data_i  (sf_data),
     .valid_o (s2_valid),
     .data_o  (s2_data)
   );
@@ -334,8 +371,8 @@ module fp_mul #(
     .clk_i    (clk_i),
     .rst_i    (rst_i),
     .valid_i  (s2_valid),
-    .a_i      ((DSP_REG != 0) ? c1b_aman : s2_aman),
-    .b_i      ((DSP_REG != 0) ? c1b_bman : s2_bman),
+    .a_i      ((DSP_REG != 0) ? sf_aman : s2_aman),
+    .b_i      ((DSP_REG != 0) ? sf_bman : s2_bman),
     .side_i   ({s2_spec, c2_spec_y, s2_spec_nv, c2_sign, c2_exp_a, c2_exp_b,
                 c2_ge2, c2_shift}),
     .valid_o  (sp_valid),
