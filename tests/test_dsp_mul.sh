@@ -10,7 +10,9 @@
 #     every cycle for 20,000 cycles (sim/tb_dsp_mul.v);
 #   - fp_mul takes the registered blocks at MUL_LATENCY 6 to 9 (four
 #     MULT18X18D, all three registers on) and not at 5 (four, none on)
-#     nor at 10 (the LUT product: none).
+#     nor at 10 (the LUT product: none); at 10 with FEED = 1 it takes
+#     them with the feed register in front, at least the 48 significand
+#     flip-flops more than at 9.
 set -euo pipefail
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 synth() { # OUTNAME TOP PARAM... -- FILES
@@ -46,15 +48,21 @@ done
 # fp_mul's product by latency: registered blocks from 6 to 9 only.
 # (every RTL file read, as make synth reads them: no second list of
 # fp_mul's submodules to keep beside mk/fpu.mk's)
-for spec in 5:4:0 6:4:4 9:4:4 10:0:0; do
+for spec in 5:4:0 6:4:4 9:4:4 10:0:0 10,FEED=1:4:4; do
   IFS=: read -r lat blocks on <<<"$spec"
-  synth fp_mul ecp5 LATENCY=$lat rtl/*.v
-  base="$tmp/fp_mul_LATENCY-${lat}_ecp5"
+  params="LATENCY=${lat/,/ }"                                  # LATENCY=10 FEED=1
+  synth fp_mul ecp5 $params rtl/*.v
+  base="$tmp/fp_mul_$(echo "$params" | sed 's/=/-/g; s/ /_/g')_ecp5"
   got_blocks=$(count MULT18X18D "${base}_stat.txt")
   got_on=$(regs_on REG_OUTPUT_CLK "$base.v")
   got_in=$(regs_on REG_INPUTA_CLK "$base.v")
   [ "$got_blocks" = "$blocks" ] && [ "$got_on" = "$on" ] && [ "$got_in" = "$on" ] || {
-    echo "FAIL: fp_mul LATENCY = $lat: $got_blocks MULT18X18D, $got_in/$got_on with input/output" \
+    echo "FAIL: fp_mul $params: $got_blocks MULT18X18D, $got_in/$got_on with input/output" \
          "registers; want $blocks, $on/$on"; exit 1; }
-  echo "PASS: fp_mul LATENCY = $lat: $blocks MULT18X18D, $on with their input and output registers"
+  echo "PASS: fp_mul $params: $blocks MULT18X18D, $on with their input and output registers"
 done
+ff9=$(count TRELLIS_FF "$tmp/fp_mul_LATENCY-9_ecp5_stat.txt")
+ff10f=$(count TRELLIS_FF "$tmp/fp_mul_LATENCY-10_FEED-1_ecp5_stat.txt")
+[ $((ff10f - ff9)) -ge 48 ] || {
+  echo "FAIL: fp_mul LATENCY=10 FEED=1 has $ff10f flip-flops, LATENCY=9 $ff9: no feed register"; exit 1; }
+echo "PASS: fp_mul FEED=1: $((ff10f - ff9)) flip-flops in front of the blocks ($ff9 at latency 9, $ff10f)"
