@@ -70,7 +70,7 @@ RTL_AXIL_CONFIGS := fmax
 # (MUL_FEED: MUL_LATENCY 10 is the DSP product of 9 and that register):
 # the route from a lane's logic to its blocks, across a full chip, gets a
 # cycle of its own.  One write-back port
-# (WB_PORTS=1: the move path delayed to the add's 9 cycles, no live value
+# (WB_PORTS=1: the move path delayed to the add's 10 cycles, no live value
 # table) makes a lane about two thirds as large: 16 lanes are 59,619 LUT4s
 # (71 %) and route (docs/lanes.md "Chip build").
 # The chip build and f16 leave out the
