@@ -71,8 +71,8 @@ RTL_AXIL_CONFIGS := fmax
 # the route from a lane's logic to its blocks, across a full chip, gets a
 # cycle of its own.  One write-back port
 # (WB_PORTS=1: the move path delayed to the add's 10 cycles, no live value
-# table) makes a lane about two thirds as large: 16 lanes are 59,619 LUT4s
-# (71 %) and route (docs/lanes.md "Chip build").
+# table) makes a lane about two thirds as large: 16 lanes are 58,968 LUT4s
+# (70.5 %) and route (docs/lanes.md "Chip build").
 # The chip build and f16 leave out the
 # div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
 # about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;

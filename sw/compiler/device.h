@@ -27,10 +27,10 @@
  *              registers, no live value table, FP cores), 4 MULT18X18D,
  *              2 EBR
  *   lane 1 ..  2,646 LUT4s, 4 MULT18X18D, 2 EBR (two RAMs of 512 x 32)
- *  (the chip build now takes latencies 10 and 10 with the multiplier's
- *  feed register, MUL_FEED=1: 58,968 LUT4s at 16 lanes, lane 0 4,048, a
- *  lane 2,598, fp3_top 15,712; within 1.1 % of the model, which keeps the
- *  figures above)
+ *  (measured at latencies 9 and 9; the chip build's latencies 10 and 10
+ *  with the multiplier's feed register, MUL_FEED=1, synthesize to 58,968
+ *  LUT4s at 16 lanes, lane 0 4,048, a lane 2,598, fp3_top 15,712: within
+ *  1.1 % of the model)
  *
  * Scaled to the build asked for: lane 0's busy flags (and, with four
  * ports, live value table) -- its LUTs beyond another lane's, 9,467 or
