@@ -238,10 +238,21 @@ sim: $(BUILD)/fp3
 	$(BUILD)/fp3 run --engine rtl --program programs/ship_rk4.s --steps $(SIM_STEPS)
 
 # ---- 10^6 random programs, RTL against ISS (a benchmark, not a test) ---------
+# Programs COSIM_FIRST .. COSIM_FIRST+COSIM_PROGRAMS-1 on the default build
+# and every lanes build, in COSIM_JOBS ranges at once (scripts/bench-cosim.sh;
+# logs in build/bench/cosim/).  Program p is the same in any split, so
+# `make bench-cosim COSIM_FIRST=500000 COSIM_PROGRAMS=500000` and the same
+# from 0 cover the 10^6 of one run.
+COSIM_FIRST    ?= 0
+COSIM_PROGRAMS ?= 1000000
+COSIM_JOBS     ?= $(shell nproc)
 .PHONY: bench-cosim
-## bench-cosim: 10^6 random hazard-dense programs, RTL against the ISS bit for bit
+## bench-cosim: 10^6 random hazard-dense programs on every build, RTL against the ISS bit for bit (COSIM_FIRST=, COSIM_PROGRAMS=, COSIM_JOBS=)
 bench-cosim: $(BUILD)/tests/test_engines
-	FP3_RANDOM_PROGRAMS=1000000 $(BUILD)/tests/test_engines
+	bash scripts/bench-cosim.sh $(BUILD)/tests/test_engines $(COSIM_FIRST) $(COSIM_PROGRAMS) $(COSIM_JOBS) $(BUILD)/bench/cosim
+# tests/test_bench_cosim.sh: the ranges' split, sums and failures on a
+# stand-in, and the same programs in any split on test_engines.
+TEST_SCRIPTS += tests/test_bench_cosim.sh
 
 # ---- throughput of many objects (make bench-parallel) -------------------------
 RTL_BENCH_OBJS := $(foreach c,$(RTL_BENCH_CONFIGS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))

@@ -13,6 +13,7 @@
  *  - a program with an instruction of a unit the build lacks (div, sqrt
  *    on a build without HAS_DIV, HAS_SQRT) refused naming the parameter.
  */
+#include <errno.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -804,15 +805,40 @@ static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) 
   img->n = n;
 }
 
-/* How many random programs (FP3_RANDOM_PROGRAMS, default 10^4: make
- * bench-cosim runs 10^6). */
+/* Which random programs run: FP3_RANDOM_PROGRAMS of them from index
+ * FP3_RANDOM_FIRST (default 10^4 from 0; make bench-cosim runs 10^6 in
+ * ranges side by side, scripts/bench-cosim.sh).  Program p of a sequence
+ * starts the generator at program_seed(sequence, p), so a range runs the
+ * same programs as the whole run does, and a failure replays alone from
+ * the seed it prints: FP3_RANDOM_SEED=<seed> runs that one program on
+ * every build (random_replay). */
 static long random_programs = 10000;
+static long random_first = 0;
+static int random_bench = 0;    /* FP3_RANDOM_PROGRAMS or _FIRST given */
+static int random_replay = 0;   /* FP3_RANDOM_SEED given: replay_seed */
+static uint64_t replay_seed;
+/* The sum (mod 2^64) of the seeds of the programs run, over every build:
+ * printed after a range (FP3_RANDOM_FIRST), so the ranges' sums add up to
+ * the whole run's whatever the split (scripts/bench-cosim.sh adds them). */
+static uint64_t random_digest = 0;
 
-/* Every program draws its core configuration from its own seed, so a
- * failure replays alone: FP3_RANDOM_SEED=<seed> FP3_RANDOM_PROGRAMS=1. */
+/* The seed of program p of sequence `seq` (one a test and build): the
+ * splitmix64 output function (Steele, Lea and Flood, "Fast splittable
+ * pseudorandom number generators", OOPSLA 2014) of seq's p-th step, never
+ * 0 (the xorshift generator's fixed point). */
+static uint64_t program_seed(uint64_t seq, long p) {
+  if (random_replay) return replay_seed;
+  uint64_t z = (seq << 32) + 0x9E3779B97F4A7C15ull * (uint64_t)(p + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return z ? z : 1;
+}
+
+/* Every program draws its core configuration from its own seed. */
 static void test_random_programs(void **state) {
   (void)state;
-  const long programs = random_programs;
+  const long first = random_first, programs = random_programs;
   fp3_engine *er[4], *ei[4];
   for (int m = 0; m < 4; m++) {
     er[m] = fp3_engine_rtl_new_mode(all_modes[m], NULL);
@@ -820,10 +846,12 @@ static void test_random_programs(void **state) {
     assert_non_null(er[m]);
     assert_non_null(ei[m]);
   }
-  for (long p = 0; p < programs; p++) {
-    uint64_t seed = rng_state;
+  for (long p = first; p < first + programs; p++) {
+    uint64_t seed = rng_state = program_seed(0, p);
+    random_digest += seed;
     int mi = (int)(rnd() % 4);
-    if (p && p % 100000 == 0) print_message("%ld random programs\n", p);
+    if (p > first && (p - first) % 50000 == 0)
+      print_message("%ld of %ld random programs\n", p - first, programs);
     fp3_image img;
     unsigned nregs = 2 + (unsigned)(rnd() % 5);
     random_program(&img, nregs, &er[mi]->config);
@@ -1143,12 +1171,18 @@ static void test_random_programs_contexts(void **state) {
     fp3_engine *is = fp3_engine_iss_new_config(&er->config);   /* lanes in lock step */
     assert_non_null(is);
     unsigned nctx = fp3_config_slots(&er->config);
-    /* make bench-cosim's count on each lanes build, else 300 a build */
-    const long programs = er->config.num_lanes > 1 && random_programs > 10000 ? random_programs
-                                                                               : 300;
-    for (long p = 0; p < programs; p++) {
-      if (p && p % 100000 == 0) print_message("%ld random programs on lanes\n", p);
-      uint64_t seed = rng_state;
+    /* make bench-cosim's range on each lanes build and none on the
+     * others (the default build's range is test_random_programs'); a
+     * replay's one program on every build; else 300 a build */
+    const int asked = random_replay || (random_bench && er->config.num_lanes > 1);
+    const long first = asked ? random_first : 0;
+    const long programs = asked ? random_programs : random_bench ? 0 : 300;
+    for (long p = first; p < first + programs; p++) {
+      if (p > first && (p - first) % 50000 == 0)
+        print_message("%ld of %ld random programs on %u x %u slots\n", p - first, programs,
+                      er->config.num_contexts, er->config.num_lanes);
+      uint64_t seed = rng_state = program_seed(1u + (unsigned)which, p);
+      random_digest += seed;
       fp3_image img;
       random_program(&img, 2 + (unsigned)(rnd() % 5), &er->config);
       memset(init, 0, sizeof init);
@@ -1162,9 +1196,10 @@ static void test_random_programs_contexts(void **state) {
       assert_int_equal(sa.flags, sb.flags);
       assert_int_equal(sa.issued, sb.issued);
       for (unsigned k = 0; k < contexts; k++) {
-        char what[112];
-        snprintf(what, sizeof what, "random program %ld on %u x %u slots (seed 0x%016llx), slot %u",
-                 p, er->config.num_contexts, er->config.num_lanes, (unsigned long long)seed, k);
+        char what[144];
+        snprintf(what, sizeof what,
+                 "random program %ld on %u x %u slots, slot %u (replay: FP3_RANDOM_SEED=0x%016llx)",
+                 p, er->config.num_contexts, er->config.num_lanes, k, (unsigned long long)seed);
         compare_captures(&ma.c[k], &mb.c[k], what);
       }
       multi_free(&ma);
@@ -1385,15 +1420,42 @@ static int teardown(void **state) {
   return 0;
 }
 
+/* An environment variable's value as a number of at least `least`, or
+ * exit 2 naming it. */
+static unsigned long long env_number(const char *name, unsigned long long least) {
+  const char *v = getenv(name);
+  char *end = NULL;
+  errno = 0;
+  unsigned long long n = strtoull(v, &end, 0);
+  if (!*v || *end || errno || v[0] == '-' || n < least) {
+    fprintf(stderr, "test_engines: %s='%s' is not a whole number >= %llu\n", name, v, least);
+    exit(2);
+  }
+  return n;
+}
+
 int main(void) {
-  const char *count = getenv("FP3_RANDOM_PROGRAMS");
-  const char *seed = getenv("FP3_RANDOM_SEED");
-  if (count) random_programs = strtol(count, NULL, 0);
-  if (seed) {
-    /* Replay: only the random programs, from that seed. */
-    rng_state = strtoull(seed, NULL, 0);
-    const struct CMUnitTest replay[] = {cmocka_unit_test(test_random_programs)};
-    return cmocka_run_group_tests(replay, setup, teardown);
+  if (getenv("FP3_RANDOM_PROGRAMS")) {
+    random_programs = (long)env_number("FP3_RANDOM_PROGRAMS", 1);
+    random_bench = 1;
+  }
+  if (getenv("FP3_RANDOM_FIRST")) {
+    random_first = (long)env_number("FP3_RANDOM_FIRST", 0);
+    random_bench = 1;
+  }
+  if (getenv("FP3_RANDOM_SEED")) {
+    replay_seed = env_number("FP3_RANDOM_SEED", 1);
+    random_replay = 1;
+    random_programs = 1;
+  }
+  if (random_bench || random_replay) {
+    /* A range of random programs, or a replay: those tests alone. */
+    const struct CMUnitTest random[] = {cmocka_unit_test(test_random_programs),
+                                        cmocka_unit_test(test_random_programs_contexts)};
+    int failed = cmocka_run_group_tests(random, setup, teardown);
+    printf("random programs %ld .. %ld: seed digest 0x%016llx\n", random_first,
+           random_first + random_programs - 1, (unsigned long long)random_digest);
+    return failed;
   }
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_ship_rk4),
