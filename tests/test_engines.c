@@ -850,7 +850,7 @@ static void test_random_programs(void **state) {
     uint64_t seed = rng_state = program_seed(0, p);
     random_digest += seed;
     int mi = (int)(rnd() % 4);
-    if (p > first && (p - first) % 50000 == 0)
+    if (p > first && (p - first) % 10000 == 0)
       print_message("%ld of %ld random programs\n", p - first, programs);
     fp3_image img;
     unsigned nregs = 2 + (unsigned)(rnd() % 5);
@@ -1178,7 +1178,7 @@ static void test_random_programs_contexts(void **state) {
     const long first = asked ? random_first : 0;
     const long programs = asked ? random_programs : random_bench ? 0 : 300;
     for (long p = first; p < first + programs; p++) {
-      if (p > first && (p - first) % 50000 == 0)
+      if (p > first && (p - first) % 10000 == 0)
         print_message("%ld of %ld random programs on %u x %u slots\n", p - first, programs,
                       er->config.num_contexts, er->config.num_lanes);
       uint64_t seed = rng_state = program_seed(1u + (unsigned)which, p);
@@ -1420,31 +1420,37 @@ static int teardown(void **state) {
   return 0;
 }
 
-/* An environment variable's value as a number of at least `least`, or
- * exit 2 naming it. */
-static unsigned long long env_number(const char *name, unsigned long long least) {
+/* An environment variable's value as a number from `least` to `most`,
+ * or exit 2 naming it. */
+static unsigned long long env_number(const char *name, unsigned long long least,
+                                     unsigned long long most) {
   const char *v = getenv(name);
   char *end = NULL;
   errno = 0;
   unsigned long long n = strtoull(v, &end, 0);
-  if (!*v || *end || errno || v[0] == '-' || n < least) {
-    fprintf(stderr, "test_engines: %s='%s' is not a whole number >= %llu\n", name, v, least);
+  if (!*v || *end || errno || v[0] == '-' || n < least || n > most) {
+    fprintf(stderr, "test_engines: %s='%s' is not a whole number from %llu to %llu\n", name, v,
+            least, most);
     exit(2);
   }
   return n;
 }
 
+/* The largest program index or count a range takes (far beyond any run,
+ * and first + count stays within a long). */
+#define RANDOM_INDEX_MAX 1000000000000ull
+
 int main(void) {
   if (getenv("FP3_RANDOM_PROGRAMS")) {
-    random_programs = (long)env_number("FP3_RANDOM_PROGRAMS", 1);
+    random_programs = (long)env_number("FP3_RANDOM_PROGRAMS", 1, RANDOM_INDEX_MAX);
     random_bench = 1;
   }
   if (getenv("FP3_RANDOM_FIRST")) {
-    random_first = (long)env_number("FP3_RANDOM_FIRST", 0);
+    random_first = (long)env_number("FP3_RANDOM_FIRST", 0, RANDOM_INDEX_MAX);
     random_bench = 1;
   }
   if (getenv("FP3_RANDOM_SEED")) {
-    replay_seed = env_number("FP3_RANDOM_SEED", 1);
+    replay_seed = env_number("FP3_RANDOM_SEED", 1, UINT64_MAX);
     random_replay = 1;
     random_programs = 1;
   }
@@ -1453,8 +1459,9 @@ int main(void) {
     const struct CMUnitTest random[] = {cmocka_unit_test(test_random_programs),
                                         cmocka_unit_test(test_random_programs_contexts)};
     int failed = cmocka_run_group_tests(random, setup, teardown);
-    printf("random programs %ld .. %ld: seed digest 0x%016llx\n", random_first,
-           random_first + random_programs - 1, (unsigned long long)random_digest);
+    if (!random_replay)
+      printf("random programs %ld .. %ld: seed digest 0x%016llx\n", random_first,
+             random_first + random_programs - 1, (unsigned long long)random_digest);
     return failed;
   }
   const struct CMUnitTest tests[] = {
