@@ -31,11 +31,11 @@ rm -f "$out"/cosim-*.log
 echo "bench-cosim: random programs $first .. $((first + count - 1)), $jobs ranges at once; logs $out/cosim-K.log"
 # Range k (1 .. jobs): an equal share, the first (count mod jobs) ranges
 # one program more.
-declare -a pid rfirst rcount t0
+declare -a pid rfirst rcount
 base=$((count / jobs)) extra=$((count % jobs)) at=$first
 for k in $(seq 1 "$jobs"); do
   n=$base; [ "$k" -le "$extra" ] && n=$((n + 1))
-  rfirst[$k]=$at; rcount[$k]=$n; t0[$k]=$SECONDS
+  rfirst[$k]=$at; rcount[$k]=$n
   FP3_RANDOM_FIRST=$at FP3_RANDOM_PROGRAMS=$n "$bin" > "$out/cosim-$k.log" 2>&1 &
   pid[$k]=$!
   at=$((at + n))
@@ -49,7 +49,7 @@ while running; do
   for k in $(seq 1 "$jobs"); do
     kill -0 "${pid[$k]}" 2>/dev/null || continue
     last=$(grep -a "random programs" "$out/cosim-$k.log" | tail -1 || true)
-    echo "  range $k ($((SECONDS - t0[$k])) s): ${last:-started}"
+    echo "  range $k ($SECONDS s): ${last:-started}"
   done
 done
 

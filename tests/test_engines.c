@@ -808,7 +808,7 @@ static void random_program(fp3_image *img, unsigned nregs, const fp3_config *c) 
 /* Which random programs run: FP3_RANDOM_PROGRAMS of them from index
  * FP3_RANDOM_FIRST (default 10^4 from 0; make bench-cosim runs 10^6 in
  * ranges side by side, scripts/bench-cosim.sh).  Program p of a sequence
- * starts the generator at program_seed(sequence, p), so a range runs the
+ * starts the generator at program_start(sequence, p), so a range runs the
  * same programs as the whole run does, and a failure replays alone from
  * the seed it prints: FP3_RANDOM_SEED=<seed> runs that one program on
  * every build (random_replay). */
@@ -822,17 +822,19 @@ static uint64_t replay_seed;
  * the whole run's whatever the split (scripts/bench-cosim.sh adds them). */
 static uint64_t random_digest = 0;
 
-/* The seed of program p of sequence `seq` (one a test and build): the
- * splitmix64 output function (Steele, Lea and Flood, "Fast splittable
- * pseudorandom number generators", OOPSLA 2014) of seq's p-th step, never
- * 0 (the xorshift generator's fixed point). */
-static uint64_t program_seed(uint64_t seq, long p) {
-  if (random_replay) return replay_seed;
+/* Starts program p of sequence `seq` (one a test and build): the
+ * generator at its seed, the splitmix64 output function (Steele, Lea and
+ * Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014) of
+ * seq's p-th step, never 0 (the xorshift generator's fixed point), or the
+ * replayed seed; the seed counted in random_digest.  Returns the seed. */
+static uint64_t program_start(uint64_t seq, long p) {
   uint64_t z = (seq << 32) + 0x9E3779B97F4A7C15ull * (uint64_t)(p + 1);
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   z ^= z >> 31;
-  return z ? z : 1;
+  rng_state = random_replay ? replay_seed : z ? z : 1;
+  random_digest += rng_state;
+  return rng_state;
 }
 
 /* Every program draws its core configuration from its own seed. */
@@ -847,8 +849,7 @@ static void test_random_programs(void **state) {
     assert_non_null(ei[m]);
   }
   for (long p = first; p < first + programs; p++) {
-    uint64_t seed = rng_state = program_seed(0, p);
-    random_digest += seed;
+    uint64_t seed = program_start(0, p);
     int mi = (int)(rnd() % 4);
     if (p > first && (p - first) % 10000 == 0)
       print_message("%ld of %ld random programs\n", p - first, programs);
@@ -1181,8 +1182,7 @@ static void test_random_programs_contexts(void **state) {
       if (p > first && (p - first) % 10000 == 0)
         print_message("%ld of %ld random programs on %u x %u slots\n", p - first, programs,
                       er->config.num_contexts, er->config.num_lanes);
-      uint64_t seed = rng_state = program_seed(1u + (unsigned)which, p);
-      random_digest += seed;
+      uint64_t seed = program_start(1u + (unsigned)which, p);
       fp3_image img;
       random_program(&img, 2 + (unsigned)(rnd() % 5), &er->config);
       memset(init, 0, sizeof init);
