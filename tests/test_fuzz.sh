@@ -6,7 +6,7 @@
 #    NAME/; the project's programs, scenes or models) runs once through
 #    build/fuzz/fuzz_NAME, which is built with ASan and UBSan: a crash,
 #    leak, hang (10 s) or sanitizer report fails the test.
-# 2. Fuzz: each harness FUZZ_TEST_SECONDS (default 20) from its seeds in a
+# 2. Fuzz: each harness FUZZ_TEST_SECONDS (default 10) from its seeds in a
 #    fresh working folder (scripts/fuzz.sh); a crash fails the test and
 #    the reproducer's path is printed (the folder is then kept).
 #
@@ -15,7 +15,7 @@ set -u
 cd "$(dirname "$0")/.."
 bindir=${FUZZ_BIN_DIR:-build/fuzz}
 names=${FUZZ_HARNESSES:-asm image scene model testfloat options}
-secs=${FUZZ_TEST_SECONDS:-20}
+secs=${FUZZ_TEST_SECONDS:-10}
 fail=0
 
 for name in $names; do
