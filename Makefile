@@ -54,7 +54,7 @@ RTL_INC    := rtl/fp3_isa.vh rtl/fp3_sched.vh rtl/fp_recur.vh
 TEST_BINS    :=
 TEST_SCRIPTS :=
 
-.PHONY: all sim test lint synth setup clean help
+.PHONY: all sim test test-build lint synth setup clean help
 ## all: build the command-line tool build/fp3 (the default goal)
 all: $(BUILD)/fp3
 
@@ -94,7 +94,18 @@ include $(filter-out $(MK_BASE),$(sort $(wildcard mk/*.mk)))
 clean:
 	rm -rf $(BUILD)
 
-# TEST_BINS / TEST_SCRIPTS are filled in by the mk/*.mk fragments.
+# TEST_BINS / TEST_SCRIPTS are filled in by the mk/*.mk fragments, and so
+# are test-build's other prerequisites.  make test builds them in a make of
+# its own with TEST_JOBS recipes at once (default: one per CPU; the
+# Verilated models and the C library compile side by side), then runs the
+# tests one after another; a test that runs make itself gets the serial
+# make of the command line, and benchmarks, which time themselves, are
+# never run in parallel.
+TEST_JOBS ?= $(shell nproc)
 ## test: the whole test suite (installs what is missing first); closes with "tests: N passed, M failed"
-test: $(SETUP_STAMP) $(TEST_BINS)
+test: $(SETUP_STAMP)
+	@$(MAKE) --no-print-directory -j$(TEST_JOBS) test-build
 	@bash scripts/run-tests.sh $(TEST_BINS) $(TEST_SCRIPTS)
+
+## test-build: build what make test runs, TEST_JOBS recipes at once (default: one per CPU)
+test-build: $(SETUP_STAMP) $(TEST_BINS)

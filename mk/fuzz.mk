@@ -59,4 +59,4 @@ fuzz-build: $(FUZZ_BINS)
 export FUZZ_BIN_DIR := $(abspath $(FUZZ_DIR))
 export FUZZ_HARNESSES := $(FUZZ_NAMES)
 TEST_SCRIPTS += tests/test_fuzz.sh
-test: $(FUZZ_BINS)
+test-build: $(FUZZ_BINS)

@@ -229,7 +229,7 @@ TEST_BINS += $(BUILD)/tests/test_engines
 
 # ---- one source of truth, tool acceptance -----------------------------------
 TEST_SCRIPTS += tests/test_isa_sync.sh tests/test_rtl_tools.sh tests/test_ram_ebr.sh tests/test_dsp_mul.sh tests/test_rr_arbiter.sh
-test: $(BUILD)/gen_isa
+test-build: $(BUILD)/gen_isa
 
 # ---- make sim: the default ship scene on the RTL ----------------------------
 SIM_STEPS ?= 10000

@@ -56,4 +56,4 @@ TEST_BINS += $(BUILD)/tests/test_sw
 # tests/test_cli.sh runs the CLI named by $FP3_BIN.
 TEST_SCRIPTS += tests/test_cli.sh
 export FP3_BIN := $(abspath $(BUILD)/fp3)
-test: $(BUILD)/fp3
+test-build: $(BUILD)/fp3
