@@ -98,9 +98,9 @@ clean:
 # are test-build's other prerequisites.  make test builds them in a make of
 # its own with TEST_JOBS recipes at once (default: one per CPU; the
 # Verilated models and the C library compile side by side), then runs the
-# tests one after another; a test that runs make itself gets the serial
-# make of the command line, and benchmarks, which time themselves, are
-# never run in parallel.
+# tests one after another.  Only test-build is given -j: every other
+# target, the benchmarks among them (they time themselves), runs one
+# recipe at a time unless the command line asks for more.
 TEST_JOBS ?= $(shell nproc)
 ## test: the whole test suite (installs what is missing first); closes with "tests: N passed, M failed"
 test: $(SETUP_STAMP)
