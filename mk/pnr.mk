@@ -27,7 +27,8 @@ PNR_SYNTH_DIR   := $(BUILD)/synth
 PNR_PARAMS      ?=
 # CHIP=ecp5-85: the chip build, lanes that fill the LFE5U-85F
 # (CHIP_PARAMS of mk/rtl.mk, docs/lanes.md); its seeds' median Fmax goes
-# to $(PNR_DIR)/chip_fmax_median.txt for make bench-chip.
+# to $(PNR_DIR)/chip_fmax_median.txt for make bench-chip (every seed placed
+# from the same netlist: a sweep may be run in parts, scripts/pnr-seeds.sh).
 CHIP            ?=
 ifeq ($(CHIP),ecp5-85)
 PNR_PARAMS      := $(CHIP_PARAMS)

@@ -9,7 +9,10 @@
 # machine.  A line per seed as it ends, then the table of all seeds, their
 # least, median, mean and greatest Fmax, and the best seed (ties: the lower
 # seed); the median (of an even count, the mean of the middle two) also
-# alone in OUTDIR/fmax_median.txt.
+# alone in OUTDIR/fmax_median.txt.  A sweep may be run in parts (SEED...
+# of each call): the table covers every seed-K/ in OUTDIR placed from the
+# same netlist (its SHA-256 in seed-K/netlist.sha256), this call's seeds
+# and earlier calls'; seeds of another netlist are left out.
 # Outputs in OUTDIR: seed-K/ per seed (pnr.sh's log, report,
 # configuration); pnr_seeds.csv (seed,fmax_mhz,levels,logic_ns,routing_ns,
 # from,to); pnr_summary.csv gets the best seed's row; NAME_ecp5.config is
@@ -18,7 +21,7 @@
 # netlist does not fit), 0 otherwise, also when timing misses.
 set -euo pipefail
 if [ $# -lt 4 ] || [ "${1:-}" = -h ] || [ "${1:-}" = --help ]; then
-  sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
   [ $# -ge 1 ] && { [ "$1" = -h ] || [ "$1" = --help ]; } && exit 0
   exit 2
 fi
@@ -36,11 +39,15 @@ mkdir -p "$out"
 rm -f "$out/${name}_ecp5.config"
 echo "pnr-seeds: $name, ${#seeds[@]} seeds (${seeds[*]}), $jobs at a time"
 
-# One seed: pnr.sh into seed-K/, its output kept in seed-K/pnr.out.
+sum=$(sha256sum < "$json" | cut -d' ' -f1)
+
+# One seed: pnr.sh into seed-K/, its output kept in seed-K/pnr.out; the
+# netlist's checksum written once it has placed.
 one() {
   local s=$1 dir="$out/seed-$1"
   rm -rf "$dir"; mkdir -p "$dir"
   if PNR_SEED=$s bash "$here/pnr.sh" ecp5 "$name" "$json" "$dir" > "$dir/pnr.out" 2>&1; then
+    echo "$sum" > "$dir/netlist.sha256"
     echo "  seed $s: $(grep -o 'Fmax [0-9.]* MHz' "$dir/pnr.out")"
   else
     echo "  seed $s: does not place (see $dir/pnr.out)"; return 1
@@ -57,10 +64,21 @@ done
 while [ "$running" -gt 0 ]; do wait -n || failed=1; running=$((running - 1)); done
 [ "$failed" -eq 0 ] || { echo "pnr-seeds: $name does not place on every seed" >&2; exit 1; }
 
+# Every seed placed from this netlist, in this call or an earlier one.
+all=()
+for d in "$out"/seed-*/; do
+  s=${d%/}; s=${s##*/seed-}
+  [[ "$s" =~ ^[0-9]+$ ]] && [ "$(cat "$d/netlist.sha256" 2>/dev/null)" = "$sum" ] &&
+    [ -f "$d/pnr_summary.csv" ] && all+=("$s")
+done
+mapfile -t all < <(printf '%s\n' "${all[@]}" | sort -n)
+[ ${#all[@]} -eq ${#seeds[@]} ] ||
+  echo "pnr-seeds: with the earlier placements of this netlist in $out: ${#all[@]} seeds (${all[*]})"
+
 # pnr.sh's summary row: name,device,luts,ffs,dsps,brams,fmax_mhz,target_mhz,
 # levels,logic_ns,routing_ns,from,to.
 echo "seed,fmax_mhz,levels,logic_ns,routing_ns,from,to" > "$out/pnr_seeds.csv.tmp"
-for s in "${seeds[@]}"; do
+for s in "${all[@]}"; do
   tail -1 "$out/seed-$s/pnr_summary.csv" |
     awk -F, -v s="$s" 'BEGIN{OFS=","} {print s,$7,$9,$10,$11,$12,$13}'
 done >> "$out/pnr_seeds.csv.tmp"

@@ -5,8 +5,9 @@
 # nextpnr does, so the sweep's bookkeeping is checked without minutes of
 # place and route: every seed run once, the best one chosen (ties: the
 # lower seed), least / median / mean / greatest right, the best placement's
-# configuration kept, bad arguments refused, and a seed that does not
-# place failing the sweep without leaving a "best" configuration.
+# configuration kept, a sweep in parts taken whole (the seeds of one
+# netlist only), bad arguments refused, and a seed that does not place
+# failing the sweep without leaving a "best" configuration.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -60,6 +61,22 @@ FAKE_FMAX="1:130.0 2:150.0 3:142.0 4:120.0" bash scripts/pnr-seeds.sh core "$tmp
 grep -q "least 120.0, median 136.0, mean 135.5, greatest 150.0 MHz (seed 2)" "$tmp/log" ||
   { cat "$tmp/log"; fail "pnr-seeds.sh: wrong median of an even count"; }
 
+# A sweep in parts: the second call's table and median cover the first
+# call's seeds of the same netlist too, not those of another netlist.
+FAKE_FMAX="1:130.0 2:150.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/parts" 1 2 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on the first part of a sweep"; }
+FAKE_FMAX="3:142.0 4:120.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/parts" 3 4 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on the second part of a sweep"; }
+grep -q "least 120.0, median 136.0, mean 135.5, greatest 150.0 MHz (seed 2)" "$tmp/log" &&
+  [ "$(cat "$tmp/parts/fmax_median.txt")" = 136.0 ] &&
+  [ "$(cat "$tmp/parts/core_ecp5.config")" = "configuration of seed 2" ] ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: a sweep in two parts is not the sweep of all four seeds"; }
+echo '{"another": 1}' > "$tmp/net2.json"
+FAKE_FMAX="5:99.0" bash scripts/pnr-seeds.sh core "$tmp/net2.json" "$tmp/parts" 5 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on another netlist"; }
+grep -q "Fmax over 1 seeds: least 99.0, median 99.0" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: another netlist's sweep counted the earlier netlist's seeds"; }
+
 # Ties: the lower seed.
 FAKE_FMAX="4:140.0 2:140.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/tie" 4 2 > "$tmp/log" 2>&1 ||
   { cat "$tmp/log"; fail "pnr-seeds.sh failed on a tie"; }
@@ -81,4 +98,4 @@ done
 set +e; PNR_JOBS=0 bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/b" 1 > "$tmp/log" 2>&1; rc=$?; set -e
 [ "$rc" -eq 2 ] && grep -q "bad PNR_JOBS" "$tmp/log" || fail "pnr-seeds.sh: PNR_JOBS=0 not refused"
 bash scripts/pnr-seeds.sh --help | grep -q "seed sweep" || fail "pnr-seeds.sh --help"
-echo "PASS: test_pnr_seeds (pnr-seeds.sh: sweep, best seed, ties, a seed that does not place, bad arguments)"
+echo "PASS: test_pnr_seeds (pnr-seeds.sh: sweep, best seed, ties, a sweep in parts, a seed that does not place, bad arguments)"
