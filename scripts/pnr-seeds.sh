@@ -68,8 +68,8 @@ while [ "$running" -gt 0 ]; do wait -n || failed=1; running=$((running - 1)); do
 all=()
 for d in "$out"/seed-*/; do
   s=${d%/}; s=${s##*/seed-}
-  [[ "$s" =~ ^[0-9]+$ ]] && [ "$(cat "$d/netlist.sha256" 2>/dev/null)" = "$sum" ] &&
-    [ -f "$d/pnr_summary.csv" ] && all+=("$s")
+  if [[ "$s" =~ ^[0-9]+$ ]] && [ "$(cat "$d/netlist.sha256" 2>/dev/null)" = "$sum" ] &&
+     [ -f "$d/pnr_summary.csv" ]; then all+=("$s"); fi
 done
 mapfile -t all < <(printf '%s\n' "${all[@]}" | sort -n)
 [ ${#all[@]} -eq ${#seeds[@]} ] ||
