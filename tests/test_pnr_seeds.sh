@@ -76,6 +76,12 @@ FAKE_FMAX="5:99.0" bash scripts/pnr-seeds.sh core "$tmp/net2.json" "$tmp/parts" 
   { cat "$tmp/log"; fail "pnr-seeds.sh failed on another netlist"; }
 grep -q "Fmax over 1 seeds: least 99.0, median 99.0" "$tmp/log" ||
   { cat "$tmp/log"; fail "pnr-seeds.sh: another netlist's sweep counted the earlier netlist's seeds"; }
+# ... and back on the first netlist (seed 3 placed again), whose seeds
+# are the four, with seed 5's directory of the other netlist the last.
+FAKE_FMAX="3:142.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/parts" 3 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on a third part"; }
+grep -q "Fmax over 4 seeds: least 120.0, median 136.0" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: the third part is not the sweep of the first netlist's four seeds"; }
 
 # Ties: the lower seed.
 FAKE_FMAX="4:140.0 2:140.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/tie" 4 2 > "$tmp/log" 2>&1 ||
