@@ -86,16 +86,14 @@ mv "$out/pnr_seeds.csv.tmp" "$out/pnr_seeds.csv"
 best=$(tail -n +2 "$out/pnr_seeds.csv" | sort -t, -k2,2gr -k1,1n | head -1 | cut -d, -f1)
 # The median (of an even count, the mean of the two middle values) is the
 # figure a placement of this netlist can be expected to reach; the
-# greatest is the best seed's.
-tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g | awk -v n="$name" -v b="$best" '
+# greatest is the best seed's.  It goes alone into fmax_median.txt too.
+tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g |
+  awk -v n="$name" -v b="$best" -v mf="$out/fmax_median.txt" '
   { v[NR] = $1; s += $1 }
   END { med = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
         printf "pnr-seeds: %s: Fmax over %d seeds: least %.1f, median %.1f, mean %.1f, greatest %.1f MHz (seed %s)\n",
-               n, NR, v[1], med, s / NR, v[NR], b }'
-median=$(tail -n +2 "$out/pnr_seeds.csv" | cut -d, -f2 | sort -g |
-  awk '{ f[NR] = $1 } END { if (NR % 2) printf "%.1f", f[(NR + 1) / 2];
-                            else printf "%.1f", (f[NR / 2] + f[NR / 2 + 1]) / 2 }')
-echo "$median" > "$out/fmax_median.txt"
+               n, NR, v[1], med, s / NR, v[NR], b
+        printf "%.1f\n", med > mf }'
 awk -F, '{ printf "  %-5s %-9s %-7s %-9s %-11s %s\n", $1, $2, $3, $4, $5, $6 " -> " $7 }' \
   "$out/pnr_seeds.csv" | cut -c1-150
 tail -1 "$out/seed-$best/pnr_summary.csv" >> "$out/pnr_summary.csv"
