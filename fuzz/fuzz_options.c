@@ -2,10 +2,9 @@
  * fuzz_options.c -- libFuzzer harness for the command line: the parse step
  * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
  * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
- * fp3_parse_run, fp3_parse_compile, fp3_parse_configure,
- * fp3_parse_frames, fp3_parse_bench, fp3_parse_tbgen, fp3_parse_testfloat
- * and, for the model
- * forms of run, compile, frames and bench, fp3_parse_model, with the
+ * fp3_parse_compile, fp3_parse_configure, fp3_parse_frames,
+ * fp3_parse_bench, fp3_parse_tbgen, fp3_parse_testfloat and, for run and
+ * the model forms of compile, frames and bench, fp3_parse_model, with the
  * option-value parsers of sw/cli/cliopt.c they share.  The run steps
  * (files, engines) are never called.
  *
@@ -22,8 +21,8 @@
  * every string option points into argv (each is read, so ASan sees a
  * stray pointer), and the options the run step relies on hold: the
  * required file names are there, counts are in range, combinations the
- * parse step refuses (--trace with several objects, --literal with
- * --compile, a scene without --seed's objects) never come out.
+ * parse step refuses (--trace with several objects or the ISS, a scene
+ * without --seed's objects) never come out.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -93,7 +92,12 @@ static const fp3_model *spring(void) {
 static void parse_model(const char *cmd, int argc, char **argv) {
   fp3_model_args a;
   if (fp3_parse_model(argc, argv, cmd, &a) != FP3_ARGS_RUN) return;
-  if (!a.scene && !a.file) fail(cmd, "neither --model nor a scene");
+  if (!a.scene && !a.file && strcmp(cmd, "run") != 0) fail(cmd, "neither --model nor a scene");
+  if (a.trace && (a.objects || a.scene || strcmp(a.engine, "rtl") != 0))
+    fail(cmd, "--trace with several objects or the ISS");
+  if (a.win_count < 1) fail(cmd, "an empty trace window");
+  check_str(cmd, a.program, 0);
+  check_str(cmd, a.trace, 0);
   if (a.scene && a.file) fail(cmd, "both --model and a scene");
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
@@ -110,24 +114,6 @@ static void parse_model(const char *cmd, int argc, char **argv) {
     if (fp3_model_args_values(spring(), &a, in, y0) == 0 && !(in[0] > 0.0f))
       fail(cmd, "a step h <= 0");
   }
-}
-
-static void parse_run(int argc, char **argv) {
-  fp3_run_args a;
-  if (fp3_parse_run(argc, argv, &a) != FP3_ARGS_RUN) return;
-  char msg[256];
-  if (!a.integ || a.steps < 1) fail("run", "no integrator or no steps");
-  if (a.trace && (a.objects || a.scene || strcmp(a.engine_name, "rtl") != 0))
-    fail("run", "--trace with several objects or the ISS");
-  if (a.literal && a.compile) fail("run", "--literal and --compile");
-  if (a.compile && (a.program || !(a.objects || a.scene))) fail("run", "--compile misplaced");
-  if (a.seeded && (!a.objects || a.scene)) fail("run", "--seed without --objects");
-  if (a.win_count < 1) fail("run", "an empty trace window");
-  if (fp3_ship_validate(&a.p, msg, sizeof msg) != 0) fail("run", "an invalid scene");
-  check_str("run", a.engine_name, 1);
-  check_str("run", a.program, 0);
-  check_str("run", a.trace, 0);
-  check_str("run", a.scene, 0);
 }
 
 static void parse_frames(int argc, char **argv) {
@@ -249,10 +235,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   const char *cmd = cmds[c];
   const int has_model_form = strcmp(cmd, "run") == 0 || strcmp(cmd, "compile") == 0 ||
                              strcmp(cmd, "frames") == 0 || strcmp(cmd, "bench") == 0;
-  if (has_model_form && (model || names_model(argc, argv))) parse_model(cmd, argc, argv);
+  if (strcmp(cmd, "run") == 0 || (has_model_form && (model || names_model(argc, argv))))
+    parse_model(cmd, argc, argv);
   else if (strcmp(cmd, "asm") == 0) parse_asm(argc, argv);
   else if (strcmp(cmd, "disasm") == 0) parse_disasm(argc, argv);
-  else if (strcmp(cmd, "run") == 0) parse_run(argc, argv);
   else if (strcmp(cmd, "compile") == 0) parse_compile(argc, argv);
   else if (strcmp(cmd, "configure") == 0) parse_configure(argc, argv);
   else if (strcmp(cmd, "frames") == 0) parse_frames(argc, argv);

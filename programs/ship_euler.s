@@ -10,6 +10,7 @@
 ; chain C v -> F -> a -> h a -> v.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator euler                ; the golden model it computes (docs/models.md)
 
 .reg cv    r10      ; C v
 .reg F     r11      ; T - C v [N]

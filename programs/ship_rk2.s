@@ -9,6 +9,7 @@
 ; rk2_init / rk2_step in sw/ref/integrators.c.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator rk2                  ; the golden model it computes (docs/models.md)
 
 .reg half  r7       ; 0.5
 .reg hh    r8       ; h/2

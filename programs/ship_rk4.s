@@ -28,6 +28,7 @@
 ; Registers: 9 hold the scene and the constants, 14 are temporaries.
 
 .include "ship_rk4_common.inc"   ; registers, bindings, prologue
+.integrator rk4se                ; the golden model it computes (docs/models.md)
 
 body:
 .include "ship_rk4_velocity.inc" ; k1, k2, k3, k4 and v1

@@ -21,9 +21,10 @@
 ; (beq, mul, add, endi) instead of 33.
 
 .include "ship_rk4_common.inc"   ; registers, bindings, prologue
+.integrator rk4se                ; the golden model it computes (docs/models.md)
 
 .reg vp    r24      ; the velocity the last velocity stages started from
-.in  nv0,  vp       ; -v0: never bit-identical to v0, so the first beq falls through
+.in  -v0,  vp       ; -v0: never bit-identical to v0, so the first beq falls through
 
 body:
         ; Asleep: the last integration left v bit-identical (v1 == v0 with

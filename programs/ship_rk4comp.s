@@ -15,6 +15,7 @@
 ; ADD_LATENCY 4, MUL_LATENCY 3): y = d - c lies on the chain, twice.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator rk4secomp            ; the golden model it computes (docs/models.md)
 
 .reg half  r7
 .reg two   r8

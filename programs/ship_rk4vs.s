@@ -14,6 +14,7 @@
 ; ADD_LATENCY 4, MUL_LATENCY 3).
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator rk4vs                ; the golden model it computes (docs/models.md)
 
 .reg half  r7       ; 0.5
 .reg two   r8       ; 2.0

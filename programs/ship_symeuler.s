@@ -9,6 +9,7 @@
 ; nothing to fill the stalls with.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator symeuler             ; the golden model it computes (docs/models.md)
 
 .reg cv    r10      ; C v
 .reg F     r11      ; T - C v [N]

@@ -12,6 +12,7 @@
 ; h/tau < 2.  Golden model: verlet_init / verlet_step, sw/ref/integrators.c.
 
 .include "ship_scene.inc"        ; T C minv h v s and their bindings
+.integrator verletp              ; the golden model it computes (docs/models.md)
 
 .reg half  r7       ; 0.5
 .reg hh    r8       ; h/2

@@ -48,6 +48,8 @@
 #include "engine.h"
 #include "fpref.h"
 #include "golden.h"
+#include "integrators.h"
+#include "objects.h"
 #include "model.h"
 #include "modelref.h"
 #include "mscene.h"
@@ -279,6 +281,64 @@ static void test_ship_literal(void **st) {
   drop(m);
 }
 
+/* Each ship integrator's golden model (sw/ref/integrators.c, the ship
+ * programs' operations) equals the literal golden model of its model
+ * integrator on models/ship.fp3m, bit for bit after every integration,
+ * on scenes of every kind (generated ships: drag, no drag, the default
+ * ship moving backwards). */
+static void test_ship_integrators(void **st) {
+  (void)st;
+  static const char *const pairs[][2] = {
+      {"euler", "euler"}, {"symeuler", "symeuler"}, {"verlet", "verletp"}, {"rk2", "rk2"},
+      {"rk4", "rk4se"},   {"rk4vs", "rk4vs"},       {"rk4comp", "rk4secomp"},
+      {"rk4vscomp", "rk4vscomp"}};
+  fp3_model *m = load("models/ship.fp3m");
+  fp3_scene sc;
+  assert_int_equal(fp3_scene_generate(7, 40, 1.0f / 60.0f, &sc), 0);
+  fp3_ship_default(&sc.objs[0]);
+  sc.objs[1] = sc.objs[0];
+  sc.objs[1].v0 = -12.5f;
+  sc.objs[1].s0 = 16777216.0f;
+  for (size_t q = 0; q < sizeof pairs / sizeof pairs[0]; q++) {
+    const fp3_integrator *ig = fp3_integrator_find(pairs[q][0]);
+    assert_non_null(ig);
+    assert_true(fp3_model_integrator_applies(m, pairs[q][1]));
+    assert_int_equal(fp3_model_carried(m, pairs[q][1]),
+                     strstr(pairs[q][1], "comp") || strcmp(pairs[q][1], "verletp") == 0 ? 4 : 2);
+    for (size_t o = 0; o < sc.n; o++) {
+      const fp3_ship_params *p = &sc.objs[o];
+      const float in[4] = {p->h, p->T, p->C, p->m};
+      float y[4] = {p->v0, p->s0, 0, 0};
+      fp3_istate g;
+      ig->init(&g, p);
+      fp3_model_start_literal(m, pairs[q][1], in, y);
+      for (int k = 1; k <= 500; k++) {
+        assert_int_equal(fp3_model_step_literal(m, pairs[q][1], in, y), 0);
+        ig->step(&g);
+        if (fpref_bits(y[0]) != fpref_bits(g.v) || fpref_bits(y[1]) != fpref_bits(g.s))
+          fail_msg("ship %s = model %s, object %zu, integration %d: v 0x%08X s 0x%08X, "
+                   "ship golden v 0x%08X s 0x%08X", pairs[q][0], pairs[q][1], o, k,
+                   fpref_bits(y[0]), fpref_bits(y[1]), fpref_bits(g.v), fpref_bits(g.s));
+      }
+    }
+  }
+  fp3_scene_free(&sc);
+  /* the shapes each needs: an unsplit model takes neither, a split one
+   * whose position moves with an expression takes rk4se but not verletp */
+  fp3_model *un = parse("param k\nstate x, v\nx' = v\nv' = -k*x\n");
+  float in[2] = {0.015625f, 40}, y[4] = {0.5f, -0.25f, 0, 0};
+  assert_false(fp3_model_integrator_applies(un, "rk4se"));
+  assert_int_equal(fp3_model_step_literal(un, "rk4vs", in, y), -1);
+  fp3_model *ex = parse("param k\nposition x\nvelocity v\nx' = 2*v\nv' = -k*x\n");
+  assert_true(fp3_model_integrator_applies(ex, "rk4se"));
+  assert_false(fp3_model_integrator_applies(ex, "verletp"));
+  assert_int_equal(fp3_model_pair(ex, 0), -1);
+  drop(ex);
+  drop(un);
+  assert_false(fp3_model_integrator_known("rk4x"));
+  drop(m);
+}
+
 /* GSL rk8pd against the `exact` lines of the models that have them (ship,
  * damped spring, oscillator), every state variable. */
 static void test_gsl_exact(void **st) {
@@ -414,18 +474,16 @@ static void run_check(fp3_engine *e, fp3_compiled *c, const fp3_model *m, const 
   if (fp3_engine_run(e, steps, &obs, &st)) fail_msg("%s: %s", what, fp3_engine_error(e));
   assert_int_equal(st.error, FP3_ERR_NONE);
   assert_int_equal(st.steps_done, steps);
-  float y[FP3_MODEL_MAX_VARS], yl[2 * FP3_MODEL_MAX_VARS] = {0}; /* rk4comp: y, then c */
+  /* the state, then what the integrator carries (compensations, accelerations) */
+  float y[FP3_MODEL_MAX_VARS], yl[2 * FP3_MODEL_MAX_VARS] = {0};
   uint32_t cur[FP3_MODEL_MAX_VARS];
+  char integ[32] = "";
+  sscanf(what, "%*s %31s", integ); /* "MODEL INTEGRATOR literal|folded" */
   for (unsigned i = 0; i < m->nstate; i++) yl[i] = y0[i], cur[i] = fpref_bits(y0[i]);
+  if (literal) fp3_model_start_literal(m, integ, in, yl);
   for (uint32_t k = 1; k <= steps; k++) {
     fp3_compiled_model_step(c, y);
-    if (literal) {
-      const char *integ = strstr(what, "rk4comp") ? "rk4comp" : strstr(what, "rk4") ? "rk4"
-                        : strstr(what, "rk2") ? "rk2"
-                        : strstr(what, "symeuler") ? "symeuler"
-                        : strstr(what, "verlet") ? "verlet" : "euler";
-      fp3_model_step_literal(m, integ, in, yl);
-    }
+    if (literal) assert_int_equal(fp3_model_step_literal(m, integ, in, yl), 0);
     for (unsigned i = 0; i < m->nstate; i++) {
       size_t q = (size_t)(k - 1) * m->nstate + i;
       if (h.seen[q]) cur[i] = h.v[q];
@@ -508,14 +566,15 @@ static void test_engines(void **st) {
   assert_non_null(rtl);
   assert_non_null(big);
   assert_true(big->config.num_regs > rtl->config.num_regs);
-  static const char *const integs[] = {"euler", "rk2", "rk4", "rk4comp", "symeuler", "verlet"};
+  static const char *const integs[] = {"euler",   "rk2",       "rk4",   "rk4comp",
+                                       "symeuler", "verlet",   "rk4se", "rk4secomp",
+                                       "rk4vs",    "rk4vscomp", "verletp"};
   unsigned ran = 0, on_rtl = 0, on_big = 0, iss_only = 0, most_regs = 0, big_top = 0, refused = 0;
   for (size_t i = 0; i < NOBJS; i++) {
     fp3_model *m = load(objs[i].file);
     for (size_t g = 0; g < sizeof integs / sizeof integs[0]; g++)
       for (int lit = 1; lit >= 0; lit--) {
-        if (strcmp(integs[g], "symeuler") == 0 && !fp3_model_split(m)) continue;
-        if (strcmp(integs[g], "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL)) continue;
+        if (!fp3_model_integrator_applies(m, integs[g])) continue;
         fp3_compile_opts o;
         fp3_compile_opts_for(&o, &rtl->config);
         o.fold = o.drop_zero = !lit;
@@ -538,9 +597,13 @@ static void test_engines(void **st) {
         if (cs->num_regs > most_regs) most_regs = cs->num_regs;
         /* each new state value is written into its register by the
          * instruction that makes it: no mov, except rk4comp's new y_i,
-         * which (t - y_i) must not overwrite before reading y_i */
-        if (cs->body_insns != cs->body_arith + 1 +
-                                  (strcmp(integs[g], "rk4comp") == 0 ? m->nstate : 0))
+         * which (t - y_i) must not overwrite before reading y_i (every
+         * compensated integrator), and verletp's carried accelerations,
+         * at most one each, made while the old one is still read */
+        const unsigned movs = cs->body_insns - cs->body_arith - 1;
+        const int comp = strstr(integs[g], "comp") != NULL;
+        if (comp ? movs != m->nstate
+                 : strcmp(integs[g], "verletp") == 0 ? movs > m->nstate : movs != 0)
           fail_msg("%s: %u instructions per integration, %u arithmetic", what, cs->body_insns,
                    cs->body_arith);
         fp3_config icfg = rtl->config;
@@ -821,6 +884,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
       cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_ship_literal, teardown),
+      cmocka_unit_test_teardown(test_ship_integrators, teardown),
       cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
       cmocka_unit_test_teardown(test_rigidbody_invariants, teardown),
       cmocka_unit_test_teardown(test_engines, teardown),       cmocka_unit_test_teardown(test_regs40, teardown),

@@ -261,8 +261,11 @@ static void test_asm_errors(void **state) {
   expect_error("add r1, , r3\n", "t.s:1: empty operand");
   expect_error("add r1 r2, r3\n", "t.s:1: bad operand 'r1 r2' (missing comma?)");
   expect_error(".bogus 1\n", "t.s:1: unknown directive '.bogus'");
-  expect_error(".in x, r1\n", "t.s:1: unknown .in name 'x'");
-  expect_error(".out v0, r1\n", "t.s:1: unknown .out name 'v0'");
+  expect_error(".in 3x, r1\n", "t.s:1: bad .in name '3x'");
+  expect_error(".out -v, r1\n", "t.s:1: bad .out name '-v'");
+  expect_error(".in a.b, r1\n", "t.s:1: bad .in name 'a.b'");
+  expect_error(".model ship.fp3m\n", "t.s:1: .model takes one file name in double quotes");
+  expect_error(".integrator\n", "t.s:1: .integrator takes one integrator name");
   expect_error(".in T, r1\n.in T, r2\n", "t.s:2: duplicate .in T");
   expect_error(".in T, r1\n.in C, r1\n", "t.s:2: r1 is already bound by .in T");
   expect_error(".in T\n", "t.s:1: wrong operand count: .in takes 2");
@@ -608,6 +611,16 @@ static void test_hex_roundtrip(void **state) {
   assert_memory_equal(back.line, img.line, img.n * sizeof img.line[0]);
   assert_memory_equal(back.in_reg, img.in_reg, sizeof img.in_reg);
   assert_memory_equal(back.out_reg, img.out_reg, sizeof img.out_reg);
+  /* the bindings by name, the model and the integrator travel too */
+  assert_int_equal(back.nbind_in, img.nbind_in);
+  assert_int_equal(back.nbind_out, img.nbind_out);
+  for (unsigned i = 0; i < img.nbind_in; i++) {
+    assert_string_equal(back.bind_in[i].name, img.bind_in[i].name);
+    assert_int_equal(back.bind_in[i].reg, img.bind_in[i].reg);
+  }
+  assert_string_equal(back.model, img.model);
+  assert_string_equal(back.integrator, "rk4se");
+  assert_non_null(strstr(img.model, "models/ship.fp3m"));
 
   /* the file is what $readmemh reads: comments, then 16 hex digits a line */
   FILE *f = fopen(path, "r");
@@ -655,7 +668,8 @@ static void test_hex_read_errors(void **state) {
       {"// x\n00000000000000000\n", ":2: expected one word"},
       {"000000000000000g\n", ":1: expected one word"},
       {"0000000000000000 0000000000000000\n", ":1: expected one word"},
-      {"// .in X r1\n", ":1: unknown .in parameter 'X'"},
+      {"// .in 1X r1\n", ":1: bad .in name '1X'"},
+      {"// .in -v r1\n// .in T r1\n", ":2: r1 is already bound by .in -v"},
       {"// .in T r77\n", ":1: malformed binding"},
       {"// .out v r1\n// .out v r2\n", ":2: duplicate .out v"},
   };

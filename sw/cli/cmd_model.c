@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cliopt.h"
+#include "cmd_run.h"
 #include "compile.h"
 #include "engine.h"
 #include "fpenv.h"
@@ -83,7 +84,10 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   memset(a, 0, sizeof *a);
   a->integ = "rk4";
   a->engine = "rtl";
-  a->steps = strcmp(cmd, "frames") == 0 ? DEFAULT_FRAMES : DEFAULT_STEPS;
+  a->steps = strcmp(cmd, "frames") == 0 ? DEFAULT_FRAMES
+             : strcmp(cmd, "run") == 0   ? FP3_RUN_DEFAULT_STEPS
+                                         : DEFAULT_STEPS;
+  a->win_count = FP3_RUN_TRACE_WINDOW;
   a->points = DEFAULT_POINTS;
   a->seed = 1;
   a->mode = FPREF_IEEE;
@@ -173,6 +177,34 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->points = (unsigned)k;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--program", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->program = v;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--trace-window", &v)) != 0) {
+      unsigned long long first, count;
+      if (r < 0) return FP3_ARGS_BAD;
+      if (fp3_parse_pair(v, 0, UINT64_MAX, 1, UINT64_MAX, "all", &first, &count)) {
+        fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
+                        "COUNT >= 1 or 'all')\n", v);
+        return FP3_ARGS_BAD;
+      }
+      a->win_first = first;
+      a->win_count = count;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--trace", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->trace = v;
+    } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--compile") == 0) {
+      fprintf(stderr, "fp3 run: --compile is gone: a model's program is compiled unless "
+                      "--program FILE.s names a hand-written one\n");
+      return FP3_ARGS_BAD;
+    } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--strict") == 0) {
+      fprintf(stderr, "fp3 run: --strict is gone: a state that is not finite always fails "
+                      "the run; a model's stability bound: fp3 bench --model FILE "
+                      "--stability FILE.csv\n");
+      return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
       a->no_rest_skip = 1;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--json") == 0) {
@@ -195,16 +227,29 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
     fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if (!a->scene && (!a->file || !a->file[0])) {
+  if ((strcmp(cmd, "run") != 0 && !a->scene && !a->file) || (a->file && !a->file[0])) {
     fprintf(stderr, "fp3 %s: --model needs a file\n", cmd);
     return FP3_ARGS_BAD;
   }
   if (a->seeded && (!a->objects || a->scene)) {
-    fprintf(stderr, "fp3 %s: --seed goes with --model FILE --objects N\n", cmd);
+    fprintf(stderr, "fp3 %s: --seed goes with --objects N\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if ((a->mode.round != FPREF_RNE || a->mode.ftz) && !a->scene && !a->objects) {
-    fprintf(stderr, "fp3 %s: --round and --ftz go with a model scene or --objects N\n", cmd);
+  if ((a->mode.round != FPREF_RNE || a->mode.ftz) && strcmp(cmd, "run") != 0) {
+    fprintf(stderr, "fp3 %s: --round and --ftz go with fp3 run\n", cmd);
+    return FP3_ARGS_BAD;
+  }
+  if (a->trace && (a->objects || a->scene)) {
+    fprintf(stderr, "fp3 run: --trace is for one object\n");
+    return FP3_ARGS_BAD;
+  }
+  if (a->trace && strcmp(a->engine, "rtl") != 0) {
+    fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
+    return FP3_ARGS_BAD;
+  }
+  if (a->program && a->literal && !a->scene) {
+    fprintf(stderr, "fp3 run: --literal goes with --integrator (a compiled program); "
+                    "--program runs the program as written\n");
     return FP3_ARGS_BAD;
   }
   if (!fpenv_supported(a->mode)) {
@@ -229,7 +274,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
  * and `fp3 compile`): a program that needs more than hw's NUM_REGS is
  * compiled for the fewest that run it (fp3_compile_opts.max_regs); else
  * it is refused with the numbers. */
-static fp3_compiled *compile_for(const fp3_model *m, const fp3_model_args *a,
+fp3_compiled *fp3_model_compile_for(const fp3_model *m, const fp3_model_args *a,
                                  const unsigned char *zero, const fp3_config *hw, int grow,
                                  const char *cmd) {
   fp3_compile_opts o;
@@ -258,7 +303,7 @@ static fp3_compiled *compile_for(const fp3_model *m, const fp3_model_args *a,
 /* The ISS reshaped for program c when c was compiled for more registers
  * than it has (compile_for with grow): same contexts, lanes and mode,
  * NUM_REGS the program's, said on stderr.  0, or -1 (message printed). */
-static int fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd) {
+int fp3_model_fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd) {
   const unsigned need = fp3_compiled_stats(c)->num_regs;
   if (need <= (*e)->config.num_regs) return 0;
   fp3_config cfg = (*e)->config;
@@ -276,15 +321,6 @@ static int fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd) {
   return 0;
 }
 
-/* zero[k] = 1 for the params that are zero in every object of sc. */
-static void scene_zero(const fp3_mscene *sc, unsigned char *zero) {
-  const fp3_model *m = sc->model;
-  for (unsigned k = 0; k < m->nparam; k++) {
-    zero[k] = sc->n > 0;
-    for (size_t i = 0; i < sc->n && zero[k]; i++) zero[k] = sc->in[i * m->nparam + k] == 0.0f;
-  }
-}
-
 int fp3_cmd_compile_model(int argc, char **argv) {
   fp3_model_args a;
   int r = fp3_parse_model(argc, argv, "compile", &a);
@@ -298,7 +334,7 @@ int fp3_cmd_compile_model(int argc, char **argv) {
       fprintf(stderr, "fp3 compile: %s\n", msg);
       return EXIT_USAGE;
     }
-    scene_zero(&sc, zero);
+    fp3_mscene_zero(&sc, zero);
     m = sc.model;
     sc.model = NULL;
     fp3_mscene_free(&sc);
@@ -310,7 +346,7 @@ int fp3_cmd_compile_model(int argc, char **argv) {
       return EXIT_USAGE;
     }
   }
-  fp3_compiled *c = compile_for(m, &a, zero, NULL, 1, "compile");
+  fp3_compiled *c = fp3_model_compile_for(m, &a, zero, NULL, 1, "compile");
   int rc = c ? 0 : EXIT_USAGE;
   if (c && a.out && fp3_compiled_write(c, a.out, msg, sizeof msg)) {
     fprintf(stderr, "fp3 compile: %s\n", msg);
@@ -333,17 +369,8 @@ int fp3_cmd_compile_model(int argc, char **argv) {
 
 /* ---- run ------------------------------------------------------------------ */
 
-typedef struct runobs {
-  unsigned nstate, reg[FP3_MODEL_MAX_VARS];
-  uint32_t steps;
-  uint32_t *v;
-  unsigned char *seen;
-  uint64_t cyc_first, cyc_last;
-  uint32_t endis;
-} runobs;
-
-static void on_write(void *ctx, unsigned reg, uint32_t value, uint32_t k) {
-  runobs *o = ctx;
+void fp3_state_obs_write(void *ctx, unsigned reg, uint32_t value, uint32_t k) {
+  fp3_state_obs *o = ctx;
   if (!o->v || k < 1 || k > o->steps) return;
   for (unsigned i = 0; i < o->nstate; i++)
     if (o->reg[i] == reg) {
@@ -352,8 +379,8 @@ static void on_write(void *ctx, unsigned reg, uint32_t value, uint32_t k) {
     }
 }
 
-static void on_endi(void *ctx, uint32_t k, uint64_t cycle) {
-  runobs *o = ctx;
+void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle) {
+  fp3_state_obs *o = ctx;
   if (k == 1) o->cyc_first = cycle;
   o->cyc_last = cycle;
   o->endis = k;
@@ -417,429 +444,6 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
   return 0;
 }
 
-static int run_many(const fp3_model_args *a);
-
-int fp3_cmd_run_model(int argc, char **argv) {
-  fp3_model_args a;
-  int r = fp3_parse_model(argc, argv, "run", &a);
-  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
-  if (a.scene || a.objects) return run_many(&a);
-  fp3_model *m = malloc(sizeof *m);
-  char msg[512];
-  int rc = EXIT_USAGE;
-  fp3_compiled *c = NULL;
-  fp3_engine *e = NULL;
-  runobs ob;
-  memset(&ob, 0, sizeof ob);
-  if (!m) return EXIT_FAIL;
-  if (fp3_model_load(a.file, m, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 run: %s\n", msg);
-    goto out;
-  }
-  float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
-  if (fp3_model_args_values(m, &a, in, y0)) goto out;
-  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-  for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
-  e = fp3_engine_new(a.engine);
-  if (!e || fp3_engine_error(e)[0]) {
-    fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a.engine, e ? ": " : "",
-            e ? fp3_engine_error(e) : "");
-    rc = EXIT_FAIL;
-    goto out;
-  }
-  const int iss = strcmp(a.engine, "iss") == 0;
-  if (!(c = compile_for(m, &a, zero, &e->config, iss, "run"))) goto out;
-  rc = EXIT_FAIL;
-  if (iss && fit_engine(&e, c, "run")) goto out;
-  unsigned regs[4 * FP3_MODEL_MAX_VARS];
-  uint32_t vals[4 * FP3_MODEL_MAX_VARS];
-  size_t nw = fp3_compiled_model_start(c, in, y0, regs, vals, 4 * FP3_MODEL_MAX_VARS);
-  const fp3_image *img = fp3_compiled_image(c);
-  int erc = fp3_engine_load(e, img->words, img->n);
-  for (size_t w = 0; w < nw && erc == 0; w++) erc = fp3_engine_write_reg(e, regs[w], vals[w]);
-  ob.nstate = m->nstate;
-  ob.steps = a.steps;
-  for (unsigned i = 0; i < m->nstate; i++) ob.reg[i] = fp3_compiled_state_reg(c, i);
-  if ((uint64_t)a.steps * m->nstate <= MAX_CHECKED) {
-    ob.v = calloc((size_t)a.steps * m->nstate, sizeof *ob.v);
-    ob.seen = calloc((size_t)a.steps * m->nstate, 1);
-    if (!ob.v || !ob.seen) {
-      fprintf(stderr, "fp3 run: out of memory\n");
-      goto out;
-    }
-  }
-  fp3_status st;
-  memset(&st, 0, sizeof st);
-  if (erc == 0) {
-    fp3_observer obs = {.ctx = &ob, .on_write = on_write, .on_endi = on_endi};
-    erc = fp3_engine_run(e, a.steps, &obs, &st);
-  }
-  if (erc) {
-    fprintf(stderr, "fp3 run: %s engine: %s\n", a.engine, fp3_engine_error(e));
-    goto out;
-  }
-  uint32_t done = st.steps_done < a.steps ? st.steps_done : a.steps;
-  /* the bit-for-bit check, every integration; the first non-finite value */
-  uint32_t cur[FP3_MODEL_MAX_VARS], mism_k = 0, nonfinite_k = 0;
-  unsigned mism_i = 0, nonfinite_i = 0;
-  uint64_t mismatches = 0;
-  float g[FP3_MODEL_MAX_VARS], gl[FP3_MODEL_MAX_VARS] = {0};
-  uint32_t gwant = 0, ggot = 0;
-  for (unsigned i = 0; i < m->nstate; i++) cur[i] = fpref_bits(y0[i]);
-  for (uint32_t k = 1; k <= done; k++) {
-    fp3_compiled_model_step(c, g);
-    for (unsigned i = 0; i < m->nstate; i++) {
-      size_t q = (size_t)(k - 1) * m->nstate + i;
-      if (ob.v && ob.seen[q]) cur[i] = ob.v[q];
-      if (!ob.v && k == done) fp3_engine_read_reg(e, ob.reg[i], &cur[i]);
-      if ((ob.v || k == done) && cur[i] != fpref_bits(g[i])) {
-        if (!mismatches++) {
-          mism_k = k, mism_i = i, ggot = cur[i], gwant = fpref_bits(g[i]);
-        }
-      }
-      if (!nonfinite_k && !isfinite(g[i])) nonfinite_k = k, nonfinite_i = i;
-    }
-  }
-  for (unsigned i = 0; i < m->nstate; i++) gl[i] = g[i];
-  /* the references */
-  double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], ref[FP3_MODEL_MAX_VARS];
-  double ex[FP3_MODEL_MAX_VARS];
-  int have_ref = 0, have_exact = 0;
-  for (unsigned k = 0; k < m->nparam; k++) din[k] = in[k];
-  for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k];
-  char rmsg[256] = "";
-  if (done > 0 && !nonfinite_k)
-    have_ref = fp3_model_gsl(m, din, dy0, done, NULL, NULL, ref, rmsg, sizeof rmsg) == 0;
-  for (unsigned i = 0; i < m->nstate; i++)
-    have_exact |= fp3_model_exact(m, i, din, dy0, (double)done * din[0], &ex[i]) == 0;
-  double cyc_per = ob.endis >= 2 ? (double)(ob.cyc_last - ob.cyc_first) / (ob.endis - 1) : NAN;
-  int ok = st.error == FP3_ERR_NONE && done == a.steps && mismatches == 0 && !nonfinite_k;
-  const fp3_compile_stats *cs = fp3_compiled_stats(c);
-  char flags[96];
-  fp3_flags_text(st.flags, flags, sizeof flags);
-  if (a.json) {
-    printf("{\"engine\": ");
-    fp3_json_string(stdout, a.engine);
-    printf(", \"model\": ");
-    fp3_json_string(stdout, m->name);
-    printf(", \"program\": ");
-    fp3_json_string(stdout, m->file);
-    printf(", \"words\": %zu, \"body_insns\": %u", img->n, cs->body_insns);
-    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
-           e->config.num_regs);
-    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, a.steps, st.steps_done);
-    printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, fp3_error_name(st.error), st.fault_pc);
-    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
-           st.cycles, st.issued, st.stalls);
-    printf(", \"cycles_first_step\": ");
-    if (ob.endis >= 1) printf("%" PRIu64, ob.cyc_first + 1); else printf("null");
-    fp3_json_member_double(stdout, "cycles_per_step", cyc_per);
-    printf(", \"golden_mismatches\": %" PRIu64, mismatches);
-    if (mismatches)
-      printf(", \"first_mismatch\": {\"integration\": %" PRIu32 ", \"result\": \"%s\", "
-             "\"got\": \"0x%08" PRIX32 "\", \"want\": \"0x%08" PRIX32 "\"}",
-             mism_k, m->state[mism_i], ggot, gwant);
-    else
-      printf(", \"first_mismatch\": null");
-    printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, st.flags);
-    printf(", \"round\": \"rne\", \"ftz\": false, \"params\": {");
-    for (unsigned k = 0; k < m->nparam; k++) {
-      printf("%s\"%s\": ", k ? ", " : "", m->param[k]);
-      fp3_json_float(stdout, in[k]);
-    }
-    for (unsigned k = 0; k < m->nstate; k++) {
-      printf(", \"%s0\": ", m->state[k]);
-      fp3_json_float(stdout, y0[k]);
-    }
-    printf("}, \"results\": [{");
-    for (unsigned k = 0; k < m->nstate; k++) {
-      printf("%s\"%s\": ", k ? ", " : "", m->state[k]);
-      fp3_json_float(stdout, fpref_float(cur[k]));
-      printf(", \"%s_golden\": ", m->state[k]);
-      fp3_json_float(stdout, gl[k]);
-      printf(", \"%s_ref\": ", m->state[k]);
-      fp3_json_double(stdout, have_ref ? ref[k] : NAN);
-      if (have_exact) {
-        printf(", \"%s_exact\": ", m->state[k]);
-        fp3_json_double(stdout, m->exact[k] >= 0 ? ex[k] : NAN);
-      }
-    }
-    printf("}], \"integrator\": ");
-    fp3_json_string(stdout, a.integ);
-    printf(", \"literal\": %s", a.literal ? "true" : "false");
-    printf(", \"nonfinite_from\": ");
-    if (nonfinite_k) printf("{\"integration\": %" PRIu32 ", \"variable\": \"%s\"}", nonfinite_k,
-                            m->state[nonfinite_i]);
-    else printf("null");
-    printf(", \"pass\": %s}\n", ok ? "true" : "false");
-  } else {
-    printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %" PRIu32 " integrations\n",
-           a.engine, m->name, m->file, a.integ, a.literal ? "literal" : "folded", a.steps);
-    printf("program: %zu words, %u instructions per integration, %u registers needed "
-           "(NUM_REGS %u)\n", img->n, cs->body_insns, cs->regs_needed, e->config.num_regs);
-    printf("\n%-12s %16s %16s %22s %12s\n", "state", "value", "golden", "reference (GSL)", "error");
-    for (unsigned k = 0; k < m->nstate; k++) {
-      printf("%-12s %16.9g %16.9g", m->state[k], (double)fpref_float(cur[k]), (double)gl[k]);
-      if (have_ref) printf(" %22.15g %12.3g", ref[k], (double)fpref_float(cur[k]) - ref[k]);
-      printf("\n");
-    }
-    if (!have_ref && rmsg[0]) printf("reference: %s\n", rmsg);
-    if (have_exact && have_ref) {
-      printf("exact solution (the model's `exact` lines) against GSL:");
-      for (unsigned k = 0; k < m->nstate; k++)
-        if (m->exact[k] >= 0) printf(" %s %.3g", m->state[k], ex[k] - ref[k]);
-      printf("\n");
-    }
-    printf("golden model: %" PRIu64 " mismatches in %" PRIu32 " integrations%s\n", mismatches,
-           done, ob.v ? " (every state variable, bit for bit)" : " (the final state only)");
-    if (mismatches)
-      printf("  first at integration %" PRIu32 ": %s = 0x%08" PRIX32 ", golden 0x%08" PRIX32 "\n",
-             mism_k, m->state[mism_i], ggot, gwant);
-    if (ob.endis >= 1) {
-      printf("cycles: first integration %" PRIu64, ob.cyc_first + 1);
-      if (ob.endis >= 2) printf(", later %.2f per integration", cyc_per);
-      printf("; total %" PRIu64 "\n", st.cycles);
-    }
-    printf("flags: %s\n", flags);
-    if (nonfinite_k)
-      printf("NON-FINITE: state variable %s is not finite after integration %" PRIu32
-             " (flags: %s)\n", m->state[nonfinite_i], nonfinite_k, flags);
-    if (st.error != FP3_ERR_NONE)
-      printf("run error: %s at pc %" PRIu32 "\n", fp3_error_name(st.error), st.fault_pc);
-    printf("%s\n", ok ? "PASS: bit-exact with the golden model" : "FAIL");
-  }
-  if (nonfinite_k)
-    fprintf(stderr, "fp3 run: %s: state variable %s is not finite after integration %" PRIu32
-            " of %s\n", m->file, m->state[nonfinite_i], nonfinite_k, a.integ);
-  rc = ok ? 0 : EXIT_FAIL;
-out:
-  free(ob.v);
-  free(ob.seen);
-  fp3_engine_free(e);
-  fp3_compiled_free(c);
-  free(m);
-  return rc;
-}
-
-/* ---- many objects: a model scene, or --objects N ------------------------ */
-
-#define SHOW_OBJECTS 8 /* rows of the human report */
-
-
-/* The scene of a: read from a->scene, or --objects N generated from the
- * --set values.  0, or the exit status of the failure (message printed). */
-static int many_scene(const fp3_model_args *a, fp3_mscene *sc) {
-  char msg[512];
-  if (a->scene) {
-    if (fp3_mscene_read(a->scene, sc, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 run: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    if (a->objects && a->objects != sc->n) {
-      fprintf(stderr, "fp3 run: --objects %zu, but %s has %zu objects\n", a->objects, a->scene,
-              sc->n);
-      fp3_mscene_free(sc);
-      return EXIT_USAGE;
-    }
-    return 0;
-  }
-  fp3_model *m = malloc(sizeof *m);
-  float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
-  if (!m) return EXIT_FAIL;
-  if (fp3_model_load(a->file, m, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 run: %s\n", msg);
-    free(m);
-    return EXIT_USAGE;
-  }
-  if (fp3_model_args_values(m, a, in, y0)) {
-    free(m);
-    return EXIT_USAGE;
-  }
-  if (fp3_mscene_generate(m, in, y0, a->objects, a->seed, sc)) {
-    fprintf(stderr, "fp3 run: out of memory for %zu objects\n", a->objects);
-    return EXIT_FAIL;
-  }
-  return 0;
-}
-
-static int run_many(const fp3_model_args *a) {
-  fp3_mscene sc;
-  int rc = many_scene(a, &sc);
-  if (rc) return rc;
-  const fp3_model *m = sc.model;
-  const unsigned np = m->nparam, ns = m->nstate;
-  char msg[512];
-  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-  fp3_compiled *c = NULL;
-  fp3_state_result res;
-  double *ref = NULL;
-  memset(&res, 0, sizeof res);
-  scene_zero(&sc, zero);
-  rc = EXIT_FAIL;
-  fp3_engine *e = strcmp(a->engine, "iss") == 0 ? fp3_engine_iss_new_mode(a->mode)
-                                                : fp3_engine_rtl_new_mode(a->mode, NULL);
-  if (!e || fp3_engine_error(e)[0]) {
-    fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a->engine, e ? ": " : "",
-            e ? fp3_engine_error(e) : "");
-    goto out;
-  }
-  const int iss = strcmp(a->engine, "iss") == 0;
-  if (!(c = compile_for(m, a, zero, &e->config, iss, "run"))) {
-    rc = EXIT_USAGE;
-    goto out;
-  }
-  if (iss && fit_engine(&e, c, "run")) goto out;
-  fp3_scene_gold sg;
-  fp3_scene_gold_init(&sg, c, &sc);
-  const fp3_image *img = fp3_compiled_image(c);
-  if (fp3_run_state_objects(e, img->words, img->n, sc.n, a->steps, a->mode, &sg.golden, &res, msg,
-                            sizeof msg)) {
-    fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
-    goto out;
-  }
-  /* the GSL reference of every object (rk8pd, 1e-12) and the largest error */
-  ref = malloc(sc.n * ns * sizeof *ref);
-  if (!ref) {
-    fprintf(stderr, "fp3 run: out of memory\n");
-    goto out;
-  }
-  double max_err = 0.0;
-  size_t ref_fail = 0;
-  for (size_t o = 0; o < sc.n; o++) {
-    double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS];
-    for (unsigned k = 0; k < np; k++) din[k] = sc.in[o * np + k];
-    for (unsigned k = 0; k < ns; k++) dy0[k] = sc.y0[o * ns + k];
-    char rmsg[256];
-    if (res.nonfinite_object != SIZE_MAX ||
-        fp3_model_gsl(m, din, dy0, a->steps, NULL, NULL, ref + o * ns, rmsg, sizeof rmsg)) {
-      for (unsigned k = 0; k < ns; k++) ref[o * ns + k] = NAN;
-      ref_fail++;
-      continue;
-    }
-    for (unsigned k = 0; k < ns; k++) {
-      double d = fabs((double)fpref_float(res.y[o * ns + k]) - ref[o * ns + k]);
-      if (d > max_err || d != d) max_err = d;
-    }
-  }
-  const double object_steps = (double)res.objects * (double)a->steps;
-  const double per = (double)res.cycles / object_steps;
-  const int nonfinite = res.nonfinite_object != SIZE_MAX;
-  const int ok = res.mismatches == 0 && res.error == FP3_ERR_NONE && !nonfinite;
-  const fp3_compile_stats *cs = fp3_compiled_stats(c);
-  char flags[96];
-  fp3_flags_text(res.flags, flags, sizeof flags);
-  const char *where = a->scene ? a->scene : "generated (--objects, --seed)";
-  if (a->json) {
-    printf("{\"engine\": ");
-    fp3_json_string(stdout, a->engine);
-    printf(", \"model\": ");
-    fp3_json_string(stdout, m->name);
-    printf(", \"model_file\": ");
-    fp3_json_string(stdout, sc.model_path);
-    printf(", \"scene\": ");
-    fp3_json_string(stdout, where);
-    printf(", \"integrator\": ");
-    fp3_json_string(stdout, a->integ);
-    printf(", \"literal\": %s, \"insns_per_step\": %u, \"registers\": %u",
-           a->literal ? "true" : "false", cs->body_insns, cs->regs);
-    printf(", \"registers_needed\": %u, \"num_regs\": %u", cs->regs_needed,
-           e->config.num_regs);
-    printf(", \"est_cycles_per_step\": %u", cs->est_cycles_later);
-    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"lanes\": %u"
-           ", \"batches\": %zu", a->steps, res.objects, res.contexts, res.lanes, res.batches);
-    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64
-           ", \"cycles_per_object_step\": %.9g", res.cycles, res.issued, res.stalls, per);
-    printf(", \"golden_mismatches\": %" PRIu64, res.mismatches);
-    if (res.mismatches)
-      printf(", \"first_mismatch\": {\"object\": %zu, \"integration\": %" PRIu32
-             ", \"variable\": \"%s\", \"got\": \"0x%08" PRIX32 "\", \"want\": \"0x%08" PRIX32
-             "\"}", res.first_object, res.first_step, m->state[res.first_var], res.first_got,
-             res.first_want);
-    else
-      printf(", \"first_mismatch\": null");
-    printf(", \"nonfinite_from\": ");
-    if (nonfinite)
-      printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\"}",
-             res.nonfinite_object, res.nonfinite_step, m->state[res.nonfinite_var]);
-    else
-      printf("null");
-    printf(", \"error\": \"%s\"", fp3_error_name(res.error));
-    if (res.error)
-      printf(", \"error_object\": %zu, \"fault_pc\": %" PRIu32, res.error_object, res.error_pc);
-    printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
-           a->mode.ftz ? "true" : "false");
-    printf(", \"flags\": \"%s\", \"max_error_ref\": ", flags);
-    fp3_json_double(stdout, ref_fail == sc.n ? NAN : max_err);
-    printf(", \"results\": [");
-    for (size_t o = 0; o < sc.n; o++) {
-      printf("%s{", o ? ", " : "");
-      for (unsigned k = 0; k < ns; k++) {
-        printf("%s\"%s\": ", k ? ", " : "", m->state[k]);
-        fp3_json_float(stdout, fpref_float(res.y[o * ns + k]));
-        printf(", \"%s_ref\": ", m->state[k]);
-        fp3_json_double(stdout, ref[o * ns + k]);
-      }
-      printf("}");
-    }
-    printf("], \"pass\": %s}\n", ok ? "true" : "false");
-  } else {
-    printf("FP3 run: engine %s, model %s (%s), integrator %s %s, %zu objects, %" PRIu32
-           " integrations each\n", a->engine, m->name, sc.model_path, a->integ,
-           a->literal ? "literal" : "folded", res.objects, a->steps);
-    printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
-           "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
-           cs->regs_needed, e->config.num_regs, cs->est_cycles_later);
-    printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n", where, res.contexts,
-           res.lanes, res.batches, res.batches == 1 ? "" : "es");
-    printf("  object");
-    for (unsigned k = 0; k < ns; k++) printf(" %14s %14s", m->state[k], "reference");
-    printf("\n");
-    for (size_t o = 0; o < sc.n && o < SHOW_OBJECTS; o++) {
-      printf("%8zu", o);
-      for (unsigned k = 0; k < ns; k++)
-        printf(" %14.7g %14.7g", (double)fpref_float(res.y[o * ns + k]), ref[o * ns + k]);
-      printf("\n");
-    }
-    if (sc.n > SHOW_OBJECTS) printf("     ... (%zu more)\n", sc.n - SHOW_OBJECTS);
-    printf("\ngolden model: %" PRIu64 " mismatches in %.0f object-steps (every state variable, "
-           "bit for bit)\n", res.mismatches, object_steps);
-    if (res.mismatches)
-      printf("  first: object %zu, integration %" PRIu32 ", %s = 0x%08" PRIX32
-             ", golden 0x%08" PRIX32 "\n", res.first_object, res.first_step,
-             m->state[res.first_var], res.first_got, res.first_want);
-    if (ref_fail < sc.n)
-      printf("error against the GSL reference (rk8pd, 1e-12): largest %.3g over %zu objects\n",
-             max_err, sc.n - ref_fail);
-    printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
-           res.cycles, per, (double)res.issued / object_steps);
-    printf("flags: %s\n", flags);
-    if (res.error)
-      printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
-             fp3_error_text(res.error), res.error_pc);
-    if (ok)
-      printf("PASS: %zu objects x %" PRIu32 " integrations on %s bit-exact with the golden "
-             "model\n", res.objects, a->steps, a->engine);
-    else
-      printf("FAIL\n");
-  }
-  if (nonfinite) {
-    size_t o = res.nonfinite_object;
-    char line[32] = "";
-    if (sc.line && sc.line[o]) snprintf(line, sizeof line, ":%d", sc.line[o]);
-    fprintf(stderr, "fp3 run: %s%s: object %zu: state variable %s is not finite after "
-            "integration %" PRIu32 " of %s\n", a->scene ? a->scene : m->file, line, o,
-            m->state[res.nonfinite_var], res.nonfinite_step, a->integ);
-  }
-  rc = ok ? 0 : EXIT_FAIL;
-out:
-  free(ref);
-  fp3_state_result_free(&res);
-  fp3_compiled_free(c);
-  fp3_engine_free(e);
-  fp3_mscene_free(&sc);
-  return rc;
-}
-
 /* ---- frames ------------------------------------------------------------------ */
 
 int fp3_cmd_frames_model(int argc, char **argv) {
@@ -854,7 +458,7 @@ int fp3_cmd_frames_model(int argc, char **argv) {
   }
   const fp3_model *m = sc.model;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-  scene_zero(&sc, zero);
+  fp3_mscene_zero(&sc, zero);
   int rc = EXIT_FAIL;
   fp3_compiled *c = NULL;
   fp3_engine *e = fp3_engine_new(a.engine);
@@ -863,11 +467,11 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     goto out;
   }
   const int iss = strcmp(a.engine, "iss") == 0;
-  if (!(c = compile_for(m, &a, zero, &e->config, iss, "frames"))) {
+  if (!(c = fp3_model_compile_for(m, &a, zero, &e->config, iss, "frames"))) {
     rc = EXIT_USAGE;
     goto out;
   }
-  if (iss && fit_engine(&e, c, "frames")) goto out;
+  if (iss && fp3_model_fit_engine(&e, c, "frames")) goto out;
   /* the golden model steps each object from everything the program
    * carries (rk4comp: the state and its compensations), so a frame is
    * checked from the values in the bank, and an object rests when all of
@@ -944,7 +548,7 @@ static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, cons
   unsigned regs[512];
   uint32_t vals[512];
   const size_t cells = (size_t)steps * m->nstate;
-  runobs ob;
+  fp3_state_obs ob;
   memset(&ob, 0, sizeof ob);
   ob.nstate = m->nstate;
   ob.steps = steps;
@@ -958,7 +562,7 @@ static int bench_engine(fp3_engine *e, fp3_compiled *c, const fp3_model *m, cons
   int erc = fp3_engine_load(e, img->words, img->n);
   for (size_t w = 0; w < nw && erc == 0; w++) erc = fp3_engine_write_reg(e, regs[w], vals[w]);
   fp3_status st;
-  fp3_observer obs = {.ctx = &ob, .on_write = on_write, .on_endi = on_endi};
+  fp3_observer obs = {.ctx = &ob, .on_write = fp3_state_obs_write, .on_endi = fp3_state_obs_endi};
   if (erc || fp3_engine_run(e, steps, &obs, &st)) goto done;
   uint32_t cur[FP3_MODEL_MAX_VARS];
   for (unsigned i = 0; i < m->nstate; i++) cur[i] = fpref_bits(y0[i]), y[i] = y0[i];
@@ -1082,12 +686,12 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     fp3_model_args ai = a;
     ai.integ = ig;
     const int iss = strcmp(a.engine, "iss") == 0;
-    fp3_compiled *c = compile_for(m, &ai, zero, &e->config, iss, "bench");
+    fp3_compiled *c = fp3_model_compile_for(m, &ai, zero, &e->config, iss, "bench");
     if (!c) {
       rc = EXIT_USAGE;
       goto out;
     }
-    if (iss && fit_engine(&e, c, "bench")) {
+    if (iss && fp3_model_fit_engine(&e, c, "bench")) {
       fp3_compiled_free(c);
       goto out;
     }

@@ -1,9 +1,12 @@
 /*
- * cmd_model.h -- the model language on the command line (docs/models.md):
+ * cmd_model.h -- what the subcommands share about models (docs/models.md):
+ * the options of run, compile, frames and bench, the --set values,
+ * compiling a model for an engine, watching state registers; and the
+ * model forms of compile, frames and bench:
  *
- *   fp3 run --model FILE [--integrator NAME] [--literal] [--set NAME=VALUE ...]
- *           [--steps N] [--engine rtl|iss] [--json]
  *   fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]
+ *   fp3 frames --scene MODEL_SCENE ...
+ *   fp3 bench --model FILE ...
  */
 #ifndef FP3_CMD_MODEL_H
 #define FP3_CMD_MODEL_H
@@ -11,6 +14,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "compile.h"
+#include "engine.h"
 #include "fpref.h"
 #include "model.h"
 
@@ -18,6 +23,9 @@
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {
   const char *file, *integ, *engine, *out;
+  const char *program; /* run: --program FILE.s (a hand-written program)  */
+  const char *trace;   /* run: --trace FILE.vcd                          */
+  uint64_t win_first, win_count; /* run: --trace-window FIRST:COUNT      */
   const char *scene;   /* --scene, or compile's positional SCENE        */
   size_t objects;      /* run: --objects (0: none)                      */
   uint64_t seed;       /* run: --seed                                   */
@@ -53,14 +61,36 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
  * model file. */
 int fp3_args_have_model(int argc, char **argv);
 
-/* `fp3 run --model`: one object of a model compiled for an integrator,
- * run on an engine, checked bit for bit after every integration against
- * the compiled program's golden model, and compared with the GSL
- * reference (rk8pd at 1e-12) and the model's `exact` lines.  argv[0] is
- * "run".  Exit status: 0 pass, 1 mismatch, run error or non-finite state,
- * 2 bad arguments, model or values (a message on stderr naming the file,
- * line and column, or the missing NAME). */
-int fp3_cmd_run_model(int argc, char **argv);
+/* Compile model m for a's integrator (a->literal: the literal form; else
+ * folded, the params zero[k] = 1 removed) for the build hw (NULL: the
+ * default build).  grow: the build may have more registers (the ISS, and
+ * `fp3 compile`): a program that needs more than hw's NUM_REGS is
+ * compiled for the fewest that run it; else it is refused with the
+ * numbers.  The program, or NULL with the message on stderr ("fp3 CMD:
+ * ..."). */
+fp3_compiled *fp3_model_compile_for(const fp3_model *m, const fp3_model_args *a,
+                                    const unsigned char *zero, const fp3_config *hw, int grow,
+                                    const char *cmd);
+
+/* The ISS *e reshaped for program c when c needs more registers than it
+ * has (fp3_model_compile_for with grow), said on stderr.  0, or -1. */
+int fp3_model_fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd);
+
+/* The state registers of one object watched during a run
+ * (fp3_observer): v[(k - 1) nstate + i] the value of state variable i
+ * after integration k (seen[] marks the written ones; v NULL: none kept),
+ * and the cycles of the first and last endi. */
+typedef struct fp3_state_obs {
+  unsigned nstate, reg[2 * FP3_MODEL_MAX_VARS];
+  uint32_t steps;
+  uint32_t *v;
+  unsigned char *seen;
+  uint64_t cyc_first, cyc_last;
+  uint32_t endis;
+} fp3_state_obs;
+
+void fp3_state_obs_write(void *ctx, unsigned reg, uint32_t value, uint32_t k);
+void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle);
 
 /* `fp3 compile --model`: the program text (to -o FILE atomically, else
  * stdout).  argv[0] is "compile".  Exit status as fp3_cmd_compile. */

@@ -1,8 +1,15 @@
 /*
- * cmd_run.c -- `fp3 run`: a program on an engine, every integration
- * checked against the golden model bit for bit and compared with the
- * exact solution (cmd_run.h).  The many-objects form is cmd_objects.c,
- * the model form cmd_model.c.
+ * cmd_run.c -- `fp3 run` (cmd_run.h): a model's program on an engine, every
+ * state variable of every object checked bit for bit against the golden
+ * model after every integration, and compared with the GSL reference and
+ * the model's exact solution.
+ *
+ * One path: a model (--model, a model scene's, a program's `.model`, or
+ * models/ship.fp3m), a program for it (compiled for an integrator, or a
+ * hand-written one bound to the model by name, fp3_compile_bind), one
+ * object or many (--objects N, --scene), an engine.  Scenes in the ship's
+ * five-column format still run on the ship scene compiler's path
+ * (cmd_objects.c).
  */
 #include "cmd_run.h"
 
@@ -12,9 +19,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include "analytic.h"
 #include "asm.h"
 #include "cliopt.h"
 #include "cmd_asm.h"
@@ -22,29 +29,96 @@
 #include "cmd_objects.h"
 #include "compile.h"
 #include "engine.h"
-#include "fp3_isa.h"
 #include "fpenv.h"
-#include "golden.h"
-#include "image.h"
+#include "fpref.h"
+#include "integrators.h"
+#include "model.h"
+#include "modelref.h"
+#include "mscene.h"
 #include "report.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 
-#define DEFAULT_PROGRAM "programs/ship_rk4.s"
-#define DEFAULT_STEPS 10000u
-#define MAX_OBJECTS 1000000u /* --objects */
-#define TABLE_ROWS 5     /* first integrations shown in the table   */
-#define PAPER_FIRST 445  /* cycles of the first integration (paper) */
-#define PAPER_LATER 418  /* cycles of each later integration        */
-#define TRACE_WINDOW_DEFAULT 10000u /* cycles fp3 run --trace writes */
+#define DEFAULT_MODEL "models/ship.fp3m"
+#define DEFAULT_PROGRAM "programs/ship_rk4.s" /* the paper's RK4 program */
+#define MAX_CHECKED (1u << 26) /* object-steps x state variables kept for the check */
+#define TABLE_ROWS 5           /* first integrations shown in the report */
+#define SHOW_OBJECTS 8         /* objects shown in the report of many    */
+/* The paper's measured cycles of the ship's RK4 (Woulfe & Manzke 2006,
+ * §5): the first integration and each later one. */
+#define PAPER_FIRST 445
+#define PAPER_LATER 418
 
-/* ---- output files ---------------------------------------------------------- */
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: fp3 run [--model FILE.fp3m] [--program FILE.s | --integrator NAME [--literal]]\n"
+          "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss]\n"
+          "               [--objects N [--seed S] | --scene FILE]\n"
+          "               [--round rne|rtz] [--ftz] [--json]\n"
+          "               [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
+          "\n"
+          "Run a model's program on the engine and compare every state variable\n"
+          "after every integration with the golden model, bit for bit; report the\n"
+          "error against GSL rk8pd (1e-12) and the model's exact solution.\n"
+          "Without --model, --program, --integrator and --scene: the paper's\n"
+          "program %s on models/ship.fp3m.\n"
+          "\n"
+          "  --model FILE      the model (.fp3m, docs/models.md; default %s, or\n"
+          "                    the program's `.model`, or the scene's)\n"
+          "  --program FILE    a hand-written program for the model: its `.integrator`\n"
+          "                    names the golden model, its `.in`/`.out` lines bind\n"
+          "                    registers to the model's names (programs/ship_*.s)\n"
+          "  --integrator I    compile the model for I: %s\n"
+          "                    (default rk4)\n"
+          "  --literal         the integrator exactly as docs/models.md writes it\n"
+          "                    (default: folded)\n"
+          "  --set NAME=VALUE  h, a param or a state variable's initial value (NAME or\n"
+          "                    NAME0), binary32; the model file's defaults otherwise\n"
+          "  --steps N         integrations, 1..4294967295 (default %u)\n"
+          "  --engine E        rtl (Verilated RTL, default) or iss (simulator; its\n"
+          "                    cycles are instructions, one issued a cycle)\n"
+          "  --objects N       N objects on the contexts and lanes, in batches: object 0\n"
+          "                    the --set values, the others each value (h excepted)\n"
+          "                    times its own factor in [0.75, 1.25] from --seed S\n"
+          "  --scene FILE      a model scene ('model FILE', 'h STEP', a header naming\n"
+          "                    the columns, one object a line; scenes/); a ship scene\n"
+          "                    of five columns 'T C m v0 s0' runs the ship scene\n"
+          "                    compiler's program (fp3 compile --help)\n"
+          "  --round R, --ftz  the cores' rounding (rne, rtz) and flush-to-zero; the\n"
+          "                    host values, the ISS and the golden model follow\n"
+          "  --json            one JSON object (docs/json.md) instead of the report\n"
+          "  --trace FILE      waveform of a one-object run on the rtl engine: a VCD of\n"
+          "                    cycles FIRST .. FIRST+COUNT-1 (default 0:%u; COUNT\n"
+          "                    'all': to the end)\n"
+          "\n"
+          "Exit status: 0 the run finished without error and bit-exact with the\n"
+          "golden model; 1 it did not (or a state went non-finite); 2 bad\n"
+          "arguments, model or program.\n",
+          DEFAULT_PROGRAM, DEFAULT_MODEL, fp3_model_integrators(), FP3_RUN_DEFAULT_STEPS,
+          FP3_RUN_TRACE_WINDOW);
+}
+
+/* A shipped file (models/, programs/): relative to the working directory,
+ * else to the executable (build/fp3 -> ../). */
+static void find_shipped(const char *rel, char *path, size_t n) {
+  snprintf(path, n, "%s", rel);
+  if (access(rel, R_OK) == 0) return;
+  char exe[4096];
+  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (k <= 0) return;
+  exe[k] = '\0';
+  char *slash = strrchr(exe, '/');
+  if (!slash) return;
+  *slash = '\0';
+  char alt[8192];
+  snprintf(alt, sizeof alt, "%s/../%s", exe, rel);
+  if (access(alt, R_OK) == 0) snprintf(path, n, "%s", alt);
+}
 
 /* Whether the file `path` can be written (created or replaced): 0, or -1
- * with "PATH: reason" (the folder's or the file's, from errno) in msg.
- * Nothing is created: the writer (here the Verilated model's VCD writer,
- * which says only that it failed) opens it later. */
+ * with "PATH: reason" in msg.  Nothing is created: the Verilated model's
+ * VCD writer, which says only that it failed, opens it later. */
 static int check_writable(const char *path, char *msg, size_t n) {
   const char *slash = strrchr(path, '/');
   char dir[4096];
@@ -68,667 +142,652 @@ static int check_writable(const char *path, char *msg, size_t n) {
   return 0;
 }
 
-/* ---- fp3 run: observing and checking ------------------------------------ */
-
-enum { OV = 0, OS = 1 }; /* the two checked results */
-
-typedef struct checker {
-  fp3_track t;            /* v and s after every integration (t.last: integrations requested) */
-  /* golden values of integrations base .. base+count-1 */
-  fp3_istate gst;                 /* golden state of the integrator */
-  const fp3_integrator *integ;    /* --integrator (default rk4)     */
-  fp3_diverge div;                /* run-time divergence watch      */
-  float *gv, *gs;
-  size_t cap, count;
-  uint32_t base;
-  int oom;
-  fp3_ship_params p;
-  fpref_mode mode;        /* core options the golden model follows */
-  /* comparison */
-  uint64_t mismatches;
-  uint32_t first_k;
-  int first_which;
-  uint32_t first_got, first_want;
-  int64_t max_ulp;
-  /* error against the exact solution */
-  double max_abs[2], max_rel[2];
-  double final_abs[2], final_rel[2];
-  /* table rows */
-  uint32_t row[2][TABLE_ROWS];
-  uint32_t last[2];
-  uint32_t last_k[2];
-  /* endi */
-  uint32_t endis;
-  uint64_t cyc_first, cyc_last;
-} checker;
-
-/* Golden (v, s) after integration k >= 1, computed on demand. */
-static int golden_at(checker *c, uint32_t k, float *v, float *s) {
-  uint32_t lo = c->t.next_k[OV] < c->t.next_k[OS] ? c->t.next_k[OV] : c->t.next_k[OS];
-  if (k < c->base) return -1; /* cannot happen: finalised in order */
-  while (k >= c->base + c->count) {
-    if (c->count == c->cap) {
-      /* drop integrations both results are past */
-      size_t drop = lo > c->base ? lo - c->base : 0;
-      if (drop > c->count) drop = c->count;
-      if (drop) {
-        memmove(c->gv, c->gv + drop, (c->count - drop) * sizeof *c->gv);
-        memmove(c->gs, c->gs + drop, (c->count - drop) * sizeof *c->gs);
-        c->count -= drop;
-        c->base += (uint32_t)drop;
-      }
-      if (c->count == c->cap) {
-        size_t cap = c->cap ? c->cap * 2 : 256;
-        float *nv = realloc(c->gv, cap * sizeof *nv);
-        if (!nv) return -1;
-        c->gv = nv;
-        float *ns = realloc(c->gs, cap * sizeof *ns);
-        if (!ns) return -1;
-        c->gs = ns;
-        c->cap = cap;
-      }
-    }
-    fpenv_saved env;
-    if (fpenv_enter(c->mode, &env) != 0) return -1; /* checked before the run */
-    c->integ->step(&c->gst);
-    fpenv_leave(&env);
-    c->gv[c->count] = c->gst.v;
-    c->gs[c->count] = c->gst.s;
-    c->count++;
-  }
-  *v = c->gv[k - c->base];
-  *s = c->gs[k - c->base];
-  return 0;
+/* 1 if paths a and b name the same file. */
+static int same_file(const char *a, const char *b) {
+  struct stat sa, sb;
+  if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return strcmp(a, b) == 0;
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-static void exact_at(const checker *c, uint32_t k, double *v, double *s) {
-  fp3_ship_exact(c->p.T, c->p.C, c->p.m, c->p.v0, c->p.s0,
-                 (double)k * (double)c->p.h, v, s);
+/* ---- what runs: the model, its program, the engine -------------------------- */
+
+typedef struct run_setup {
+  char model_path[4200], program_path[4200];
+  const char *program;   /* the hand-written program, or NULL: compiled  */
+  fp3_image img;         /* its image                                    */
+  fp3_model *m;          /* the model (a scene's own, or malloc'd here)  */
+  fp3_mscene sc;         /* many objects: the scene (owns m)             */
+  int many;
+  float in[FP3_MODEL_MAX_VARS], y0[FP3_MODEL_MAX_VARS]; /* one object      */
+  fp3_engine *e;
+  fp3_compiled *c;
+  const char *integ;     /* the program's integrator                     */
+  int literal;           /* the program is the literal integrator        */
+} run_setup;
+
+static void setup_free(run_setup *s) {
+  fp3_compiled_free(s->c);
+  fp3_engine_free(s->e);
+  if (s->many) fp3_mscene_free(&s->sc);
+  else free(s->m);
 }
 
-/* Result `which` after integration k is `bits`. */
-static void finalise(void *ctx, int which, uint32_t k, uint32_t bits) {
-  checker *c = ctx;
-  float gv, gs;
-  if (golden_at(c, k, &gv, &gs)) {
-    c->oom = 1;
-    return;
+/* Assemble the program of a (--program, or the paper's by default). */
+static int setup_program(const fp3_model_args *a, run_setup *s) {
+  const char *p = a->program;
+  if (!p) {
+    if (a->file || a->scene || a->integ_given || a->literal) return 0;
+    find_shipped(DEFAULT_PROGRAM, s->program_path, sizeof s->program_path);
+    p = s->program_path;
   }
-  uint32_t want = fpref_bits(which == OV ? gv : gs);
-  if (bits != want) {
-    if (c->mismatches == 0) {
-      c->first_k = k;
-      c->first_which = which;
-      c->first_got = bits;
-      c->first_want = want;
-    }
-    c->mismatches++;
-    int64_t d = fp3_ulp_distance(bits, want);
-    if (d > c->max_ulp) c->max_ulp = d;
-  }
-  double ev, es;
-  exact_at(c, k, &ev, &es);
-  double exact = which == OV ? ev : es;
-  double got = (double)fpref_float(bits);
-  double abs_err = fabs(got - exact);
-  double rel_err = exact != 0.0 ? abs_err / fabs(exact) : (abs_err == 0 ? 0 : INFINITY);
-  if (!(abs_err <= c->max_abs[which])) c->max_abs[which] = abs_err;
-  if (!(rel_err <= c->max_rel[which])) c->max_rel[which] = rel_err;
-  c->final_abs[which] = abs_err;
-  c->final_rel[which] = rel_err;
-  if (which == OV)
-    fp3_diverge_update(&c->div, k, fpref_float(bits), 0.0f);
-  else if (!isfinite(fpref_float(bits)) &&
-           (!c->div.nonfinite || k < c->div.nonfinite))
-    c->div.nonfinite = k;
-  if (k <= TABLE_ROWS) c->row[which][k - 1] = bits;
-  c->last[which] = bits;
-  c->last_k[which] = k;
-}
-
-static void obs_write(void *ctx, unsigned reg, uint32_t value,
-                      uint32_t integration) {
-  fp3_track_write(&((checker *)ctx)->t, reg, value, integration);
-}
-
-static void obs_endi(void *ctx, uint32_t integration, uint64_t cycle) {
-  checker *c = ctx;
-  c->endis = integration;
-  if (integration == 1) c->cyc_first = cycle;
-  c->cyc_last = cycle;
-}
-
-/* ---- fp3 run ------------------------------------------------------------ */
-
-static void usage_run(FILE *f) {
-  fprintf(f,
-          "usage: fp3 run [--engine rtl|iss] [--integrator NAME] [--strict]\n"
-          "               [--objects N [--seed S] | --scene FILE]\n"
-          "               [--literal | --compile]\n"
-          "               [--program FILE.s] [--steps N]\n"
-          "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
-          "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
-          "       fp3 run --model FILE.fp3m ...   a model file (fp3 run --model x --help,\n"
-          "                                       docs/models.md)\n"
-          "\n"
-          "Assemble the program, write its .in registers, run N integrations\n"
-          "on the engine and compare the .out results v and s after every\n"
-          "integration with the golden model (sw/ref/golden.c), bit for bit, and\n"
-          "with the exact solution of the ship ODE.\n"
-          "\n"
-          "  --engine E       rtl (Verilated RTL, default) or iss (simulator)\n"
-          "  --integrator I   integrator: program programs/ship_I.s and its\n"
-          "                   golden model (sw/ref/integrators.c): euler, symeuler,\n"
-          "                   verlet, rk2, rk4 (default, the paper's), rk4vs,\n"
-          "                   rk4comp, rk4vscomp.  A warning when h/tau =\n"
-          "                   h C/m exceeds its stability bound; divergence\n"
-          "                   (non-finite v or s, |v - T/C| growing past\n"
-          "                   twice its start) is reported with the\n"
-          "                   integration it began\n"
-          "  --strict         the bound warning is an error (exit 2), and a\n"
-          "                   divergence fails the run (exit 1)\n"
-          "  --program FILE   assembly program (default %s, or that of\n"
-          "                   --integrator; checked against its golden model)\n"
-          "  --steps N        integrations, 1..4294967295 (default %u)\n"
-          "  --set NAME=VALUE scene parameter, binary32 (repeatable):\n"
-          "                   T thrust [N] (default 50000), C drag [kg/s]\n"
-          "                   (5000), m mass [kg] (10000), h step [s] (1/60),\n"
-          "                   v0 [m/s] (0), s0 [m] (0).  m > 0, h > 0, C >= 0,\n"
-          "                   all finite.  minv = 1.0f/m is derived.\n"
-          "  --round R        FP core rounding: rne (default) or rtz\n"
-          "  --ftz            FP cores flush subnormals to zero\n"
-          "                   (the ISS and the golden model follow; the RTL\n"
-          "                   model of that configuration is chosen)\n"
-          "  --objects N      many ships at once on the contexts (in batches of\n"
-          "                   NUM_CONTEXTS): a scene generated from --seed S\n"
-          "                   (default 1), or all of --scene FILE; every object\n"
-          "                   is checked against its golden model\n"
-          "  --scene FILE     scene file: 'h STEP' once, then one object per\n"
-          "                   line 'T C m v0 s0' ('#' comments; docs/skipping.md);\n"
-          "                   runs the scene compiler's program for the scene\n"
-          "                   (fp3 compile --help; integrators euler, symeuler,\n"
-          "                   rk2, rk4), checked against the IR's golden model;\n"
-          "                   a model scene ('model FILE' first, docs/models.md)\n"
-          "                   runs its model (fp3 run --model x --help)\n"
-          "  --literal        with --scene: the integrator's literal program\n"
-          "                   programs/ship_I.s and its golden model instead\n"
-          "  --compile        with --objects N: the compiled program too\n"
-          "  --json           one JSON object instead of the report\n"
-          "  --trace FILE     waveform of the run (rtl engine only): a VCD of\n"
-          "                   every signal, cycles FIRST .. FIRST+COUNT-1 of the\n"
-          "                   run (cycle 0 is the first after START)\n"
-          "  --trace-window FIRST:COUNT  cycles to write (default 0:%u; COUNT\n"
-          "                   'all': to the end of the run)\n"
-          "\n"
-          "Exit status: 0 the run finished without error and bit-exact with\n"
-          "the golden model; 1 it did not; 2 bad arguments or program.\n",
-          DEFAULT_PROGRAM, DEFAULT_STEPS, TRACE_WINDOW_DEFAULT);
-}
-
-/* The default program: relative to the working directory, else to the
- * executable (build/fp3 -> programs/). */
-static int open_default(const char *rel, char *path, size_t n) {
-  if (access(rel, R_OK) == 0) {
-    snprintf(path, n, "%s", rel);
-    return 0;
-  }
-  char exe[4096];
-  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (k > 0) {
-    exe[k] = '\0';
-    char *slash = strrchr(exe, '/');
-    if (slash) {
-      *slash = '\0';
-      snprintf(path, n, "%s/../%s", exe, rel);
-      if (access(path, R_OK) == 0) return 0;
-    }
-  }
-  snprintf(path, n, "%s", rel);
-  return -1;
-}
-
-static void print_row(const checker *c, uint32_t k, uint32_t vb, uint32_t sb) {
-  double ev, es;
-  exact_at(c, k, &ev, &es);
-  printf("%10" PRIu32 "  %10.4f  %15.9g %15.9g  %15.9g %15.9g\n", k,
-         (double)k * (double)c->p.h, (double)fpref_float(vb), ev,
-         (double)fpref_float(sb), es);
-}
-
-int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
-  memset(a, 0, sizeof *a);
-  a->engine_name = "rtl";
-  a->win_count = TRACE_WINDOW_DEFAULT;
-  a->steps = DEFAULT_STEPS;
-  a->seed = 1;
-  a->mode = FPREF_IEEE;
-  fp3_ship_default(&a->p);
-  for (int i = 1; i < argc; i++) {
-    const char *v;
-    unsigned long long k;
-    int r;
-    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
-    if ((r = fp3_opt_value(argc, argv, &i, "run", "--engine", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
-        fprintf(stderr, "fp3 run: unknown engine '%s' (rtl or iss)\n", v);
-        return FP3_ARGS_BAD;
-      }
-      a->engine_name = v;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--program", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->program = v;
-    } else if ((r = fp3_opt_count(argc, argv, &i, "run", "--steps", 1, UINT32_MAX,
-                                  "integrations", &k)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->steps = (uint32_t)k;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--set", &v)) != 0) {
-      if (r < 0 || fp3_ship_set("run", &a->p, v)) return FP3_ARGS_BAD;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace-window", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      unsigned long long first, count;
-      if (fp3_parse_pair(v, 0, UINT64_MAX, 1, UINT64_MAX, "all", &first, &count)) {
-        fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
-                        "COUNT >= 1 or 'all')\n", v);
-        return FP3_ARGS_BAD;
-      }
-      a->win_first = first;
-      a->win_count = count;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->trace = v;
-    } else if ((r = fp3_opt_mode(argc, argv, &i, "run", &a->mode)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-    } else if (strcmp(argv[i], "--json") == 0) {
-      a->json = 1;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--integrator", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->integ = fp3_integrator_find(v);
-      if (!a->integ) {
-        fprintf(stderr, "fp3 run: unknown integrator '%s' (%s)\n", v,
-                fp3_integrator_names());
-        return FP3_ARGS_BAD;
-      }
-    } else if (strcmp(argv[i], "--strict") == 0) {
-      a->strict = 1;
-    } else if (strcmp(argv[i], "--literal") == 0) {
-      a->literal = 1;
-    } else if (strcmp(argv[i], "--compile") == 0) {
-      a->compile = 1;
-    } else if ((r = fp3_opt_count(argc, argv, &i, "run", "--objects", 1, MAX_OBJECTS,
-                                  "objects", &k)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->objects = (size_t)k;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--scene", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->scene = v;
-    } else if ((r = fp3_opt_seed(argc, argv, &i, "run", &a->seed)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->seeded = 1;
-    } else {
-      fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n",
-              argv[i]);
-      return FP3_ARGS_BAD;
-    }
-  }
-  if (a->seeded && (!a->objects || a->scene)) {
-    fprintf(stderr, "fp3 run: --seed goes with --objects N (a generated scene)\n");
-    return FP3_ARGS_BAD;
-  }
-  if (a->literal && a->compile) {
-    fprintf(stderr, "fp3 run: --literal or --compile, not both\n");
-    return FP3_ARGS_BAD;
-  }
-  if (a->compile && (a->program || !(a->objects || a->scene))) {
-    fprintf(stderr, "fp3 run: --compile goes with --scene FILE or --objects N, "
-                    "without --program\n");
-    return FP3_ARGS_BAD;
-  }
-  /* a scene file runs the scene compiler's program unless told otherwise */
-  if (a->scene && !a->literal && !a->program) a->compile = 1;
-  if (a->trace && (a->objects || a->scene)) {
-    fprintf(stderr, "fp3 run: --trace is for one object\n");
-    return FP3_ARGS_BAD;
-  }
-  char msg[512];
-  if (fp3_ship_validate(&a->p, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 run: %s\n", msg);
-    return FP3_ARGS_BAD;
-  }
-  if (a->trace && strcmp(a->engine_name, "rtl") != 0) {
-    fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
-    return FP3_ARGS_BAD;
-  }
-  if (!fpenv_supported(a->mode)) {
-    fprintf(stderr, "fp3 run: --ftz: this host cannot run the golden model with "
-                    "flush-to-zero (needs x86 SSE)\n");
-    return FP3_ARGS_BAD;
-  }
-  if (!a->integ) a->integ = fp3_integrator_find("rk4");
-  if (a->compile && !fp3_compile_knows(a->integ->name)) {
-    fprintf(stderr, "fp3 run: the scene compiler does not know integrator '%s' (%s); "
-                    "--literal runs programs/ship_%s.s\n",
-            a->integ->name, fp3_compile_integrators(), a->integ->name);
-    return FP3_ARGS_BAD;
-  }
-  {
-    double hot = fp3_h_over_tau(&a->p);
-    if (a->p.C > 0.0f && hot > a->integ->bound) {
-      fprintf(stderr,
-              "fp3 run: %s: h/tau = h C/m = %.6g exceeds the stability bound "
-              "%.6g of integrator %s: the integration will diverge\n",
-              a->strict ? "error" : "warning", hot, a->integ->bound, a->integ->name);
-      if (a->strict) return FP3_ARGS_BAD;
-    }
-  }
-  return FP3_ARGS_RUN;
-}
-
-/* The run step: assemble, create the engine, run, check and report. */
-static int run_run(const fp3_run_args *a) {
-  const char *engine_name = a->engine_name, *program = a->program, *trace = a->trace;
-  const uint64_t win_first = a->win_first, win_count = a->win_count;
-  const uint32_t steps = a->steps;
-  const int json = a->json, strict = a->strict;
-  const size_t objects = a->objects;
-  const char *scene = a->scene;
-  const uint64_t seed = a->seed;
-  const int compile = a->compile;
-  const fp3_integrator *integ = a->integ;
-  const fpref_mode mode = a->mode;
-  const fp3_ship_params p = a->p;
-  char defpath[4200];
-  if (!program) {
-    open_default(integ->program, defpath, sizeof defpath);
-    program = defpath;
-  }
-
-  /* assemble */
-  fp3_image img;
   char *errs = NULL;
-  if (fp3_asm_file(program, &img, &errs) != 0) {
+  if (fp3_asm_file(p, &s->img, &errs) != 0) {
     fp3_print_asm_errors(errs);
     free(errs);
     return EXIT_USAGE;
   }
   free(errs);
-  if (fp3_refuse_endless("run", program, &img)) return EXIT_USAGE;
-  for (int w = 0; w < FP3_OUT_COUNT; w++)
-    if (img.out_reg[w] < 0) {
-      fprintf(stderr,
-              "fp3 run: %s has no '.out %s, rN': nothing to check against "
-              "the golden model\n",
-              program, fp3_out_name(w));
-      return EXIT_USAGE;
-    }
+  if (fp3_refuse_endless("run", p, &s->img)) return EXIT_USAGE;
+  s->program = p;
+  return 0;
+}
 
-  /* engine */
-  if (trace && strcmp(engine_name, "iss") != 0) {
-    char why[4096 + 256]; /* a folder name of up to 4095 bytes and the reason */
-    if (check_writable(trace, why, sizeof why)) {
-      fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", trace, why);
+/* The model: --model, the scene's, the program's `.model`, or the ship;
+ * a program's `.model` must be the same file.  Many objects: the scene
+ * (read, or generated from the values). */
+static int setup_model(const fp3_model_args *a, run_setup *s) {
+  char msg[512];
+  const char *mp = a->file;
+  if (!mp && !a->scene && s->program && s->img.model[0]) mp = s->img.model;
+  if (!mp && !a->scene) {
+    find_shipped(DEFAULT_MODEL, s->model_path, sizeof s->model_path);
+    mp = s->model_path;
+  }
+  if (a->scene) {
+    if (fp3_mscene_read(a->scene, &s->sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 run: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    s->many = 1;
+    s->m = s->sc.model;
+    if (a->objects && a->objects != s->sc.n) {
+      fprintf(stderr, "fp3 run: --objects %zu, but %s has %zu objects\n", a->objects, a->scene,
+              s->sc.n);
+      return EXIT_USAGE;
+    }
+    mp = s->sc.model_path;
+  } else {
+    if (!(s->m = malloc(sizeof *s->m))) return EXIT_FAIL;
+    if (fp3_model_load(mp, s->m, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 run: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    if (fp3_model_args_values(s->m, a, s->in, s->y0)) return EXIT_USAGE;
+    if (a->objects) {
+      fp3_model *m = s->m;
+      s->m = NULL;
+      if (fp3_mscene_generate(m, s->in, s->y0, a->objects, a->seed, &s->sc)) {
+        fprintf(stderr, "fp3 run: out of memory for %zu objects\n", a->objects);
+        return EXIT_FAIL;
+      }
+      s->many = 1;
+      s->m = s->sc.model;
+    }
+  }
+  if (s->program && s->img.model[0] && !same_file(s->img.model, mp)) {
+    fprintf(stderr, "fp3 run: %s is a program of %s (its .model line), not of %s\n", s->program,
+            s->img.model, mp);
+    return EXIT_USAGE;
+  }
+  return 0;
+}
+
+/* The engine (with the trace of one object) and the program for it. */
+static int setup_engine(const fp3_model_args *a, run_setup *s) {
+  char msg[512];
+  const int iss = strcmp(a->engine, "iss") == 0;
+  if (a->trace) {
+    char why[4096 + 256];
+    if (check_writable(a->trace, why, sizeof why)) {
+      fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", a->trace, why);
       return EXIT_USAGE;
     }
   }
-  fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new_mode(mode)
-                                                  : fp3_engine_rtl_new_mode(mode, trace);
-  if (!e) {
-    fprintf(stderr, "fp3 run: cannot create the %s engine\n", engine_name);
+  s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace);
+  if (!s->e || fp3_engine_error(s->e)[0]) {
+    fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a->engine, s->e ? ": " : "",
+            s->e ? fp3_engine_error(s->e) : "");
     return EXIT_FAIL;
   }
-  if (fp3_engine_error(e)[0]) {
-    fprintf(stderr, "fp3 run: %s engine: %s\n", engine_name,
-            fp3_engine_error(e));
-    fp3_engine_free(e);
-    return EXIT_FAIL;
+  if (a->trace) fp3_engine_rtl_trace_window(s->e, a->win_first, a->win_count);
+  if (s->program) {
+    fp3_compile_opts o;
+    fp3_compile_opts_for(&o, &s->e->config);
+    if (a->integ_given && strcmp(a->integ, s->img.integrator) != 0) {
+      fprintf(stderr, "fp3 run: --integrator %s, but %s computes %s (its .integrator line)\n",
+              a->integ, s->program, s->img.integrator[0] ? s->img.integrator : "nothing named");
+      return EXIT_USAGE;
+    }
+    if (fp3_compile_bind(s->m, &s->img, s->program, &o, &s->c, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 run: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    s->integ = s->img.integrator;
+    s->literal = 1;
+  } else {
+    unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+    if (s->many) fp3_mscene_zero(&s->sc, zero);
+    else
+      for (unsigned k = 0; k < s->m->nparam; k++) zero[k] = s->in[k] == 0.0f;
+    if (!(s->c = fp3_model_compile_for(s->m, a, zero, &s->e->config, iss, "run")))
+      return EXIT_USAGE;
+    if (iss && fp3_model_fit_engine(&s->e, s->c, "run")) return EXIT_FAIL;
+    s->integ = a->integ;
+    s->literal = a->literal;
   }
-  if (trace) fp3_engine_rtl_trace_window(e, win_first, win_count);
-  if (objects || scene) {
-    fp3_integ_golden gstore;
-    const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, integ);
-    fp3_objects_cmd oc = {e, &img, program, integ->name, &golden, compile, NULL, scene,
-                          objects, seed, p.h, steps, mode, json};
-    int orc = fp3_cmd_run_objects(&oc);
-    fp3_engine_free(e);
-    return orc;
+  return 0;
+}
+
+/* ---- the report's common parts ------------------------------------------------ */
+
+/* The JSON members every `fp3 run` object starts with. */
+static void json_head(const fp3_model_args *a, const run_setup *s, const char *scene) {
+  const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
+  printf("{\"engine\": ");
+  fp3_json_string(stdout, a->engine);
+  printf(", \"cycles_counted\": \"%s\"",
+         strcmp(a->engine, "iss") == 0 ? "instructions issued (the ISS issues one a cycle)"
+                                       : "clock cycles");
+  printf(", \"model\": ");
+  fp3_json_string(stdout, s->m->name);
+  printf(", \"model_file\": ");
+  fp3_json_string(stdout, s->m->file);
+  printf(", \"program\": ");
+  if (s->program) fp3_json_string(stdout, s->program);
+  else printf("null");
+  printf(", \"scene\": ");
+  if (scene) fp3_json_string(stdout, scene);
+  else printf("null");
+  printf(", \"integrator\": ");
+  fp3_json_string(stdout, s->integ);
+  printf(", \"literal\": %s, \"words\": %zu, \"insns_per_step\": %u", s->literal ? "true" : "false",
+         fp3_compiled_image(s->c)->n, cs->body_insns);
+  printf(", \"registers_needed\": %u, \"num_regs\": %u, \"est_cycles_per_step\": %u",
+         cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
+  printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
+         a->mode.ftz ? "true" : "false");
+}
+
+/* "run_error": null, or the first context error with its object and pc. */
+static void json_run_error(unsigned error, size_t object, uint32_t pc) {
+  printf(", \"run_error\": ");
+  if (error == FP3_ERR_NONE) printf("null");
+  else printf("{\"error\": \"%s\", \"object\": %zu, \"pc\": %" PRIu32 "}", fp3_error_name(error),
+              object, pc);
+}
+
+/* One object's results: each state variable, its golden value (gold,
+ * or NULL), GSL reference (NAN: none) and exact solution (NAN: none). */
+static void json_object(const fp3_model *m, const uint32_t *y, const float *gold,
+                        const double *ref, const double *ex) {
+  printf("{");
+  for (unsigned k = 0; k < m->nstate; k++) {
+    printf("%s\"%s\": ", k ? ", " : "", m->state[k]);
+    fp3_json_float(stdout, fpref_float(y[k]));
+    if (gold) {
+      printf(", \"%s_golden\": ", m->state[k]);
+      fp3_json_float(stdout, gold[k]);
+    }
+    printf(", \"%s_ref\": ", m->state[k]);
+    fp3_json_double(stdout, ref[k]);
+    printf(", \"%s_exact\": ", m->state[k]);
+    fp3_json_double(stdout, ex[k]);
   }
+  printf("}");
+}
+
+/* The GSL reference (rk8pd, 1e-12) and the exact solution after `steps`
+ * integrations of an object (params in, initial state y0): 0 with ref[]
+ * and ex[] (NAN where there is none), rmsg the reason of a missing
+ * reference. */
+static void references(const fp3_model *m, const float *in, const float *y0, uint32_t steps,
+                       int want_ref, double *ref, double *ex, char *rmsg, size_t n) {
+  double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS];
+  for (unsigned k = 0; k < m->nparam; k++) din[k] = in[k];
+  for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k], ref[k] = ex[k] = NAN;
+  if (want_ref && steps > 0 && fp3_model_gsl(m, din, dy0, steps, NULL, NULL, ref, rmsg, n))
+    for (unsigned k = 0; k < m->nstate; k++) ref[k] = NAN;
+  for (unsigned k = 0; k < m->nstate; k++)
+    if (fp3_model_exact(m, k, din, dy0, (double)steps * din[0], &ex[k])) ex[k] = NAN;
+}
+
+/* ---- one object --------------------------------------------------------------- */
+
+static int run_one(const fp3_model_args *a, run_setup *s) {
+  const fp3_model *m = s->m;
+  const unsigned ns = m->nstate;
+  fp3_compiled *c = s->c;
+  fp3_engine *e = s->e;
+  fp3_state_obs ob;
+  memset(&ob, 0, sizeof ob);
   int rc = EXIT_FAIL;
-  checker c;
-  memset(&c, 0, sizeof c);
-  c.p = p;
-  c.mode = mode;
-  c.t.last = steps;
-  c.t.final = finalise;
-  c.t.ctx = &c;
-  c.base = 1;
-  c.integ = integ;
-  fp3_diverge_init(&c.div, &p);
-  {
-    fpenv_saved env;
-    if (fpenv_enter(mode, &env) == 0) {
-      integ->init(&c.gst, &p); /* prologue arithmetic in the cores' mode */
-      fpenv_leave(&env);
-    } else {
-      integ->init(&c.gst, &p);
+  unsigned regs[4 * FP3_MODEL_MAX_VARS];
+  uint32_t vals[4 * FP3_MODEL_MAX_VARS];
+  fpenv_saved env;
+  if (fpenv_enter(a->mode, &env)) return EXIT_USAGE; /* checked by the parse */
+  size_t nw = fp3_compiled_model_start(c, s->in, s->y0, regs, vals, 4 * FP3_MODEL_MAX_VARS);
+  fpenv_leave(&env);
+  const fp3_image *img = fp3_compiled_image(c);
+  int erc = fp3_engine_load(e, img->words, img->n);
+  if (erc) {
+    fprintf(stderr, "fp3 run: %s: refused by the %s engine: %s\n",
+            s->program ? s->program : m->file, a->engine, fp3_engine_error(e));
+    return EXIT_FAIL;
+  }
+  for (size_t w = 0; w < nw && erc == 0; w++) erc = fp3_engine_write_reg(e, regs[w], vals[w]);
+  ob.nstate = ns;
+  ob.steps = a->steps;
+  for (unsigned i = 0; i < ns; i++) ob.reg[i] = fp3_compiled_state_reg(c, i);
+  if ((uint64_t)a->steps * ns <= MAX_CHECKED) {
+    ob.v = calloc((size_t)a->steps * ns, sizeof *ob.v);
+    ob.seen = calloc((size_t)a->steps * ns, 1);
+    if (!ob.v || !ob.seen) {
+      fprintf(stderr, "fp3 run: out of memory\n");
+      goto out;
     }
   }
-  const float minv = fp3_ship_minv(p.m);
-  float inval[FP3_IN_COUNT];
-  fp3_in_values(&p, inval);
   fp3_status st;
   memset(&st, 0, sizeof st);
-  int erc = fp3_engine_load(e, img.words, img.n);
-  if (erc != 0) { /* the program does not fit this build: name it */
-    fprintf(stderr, "fp3 run: %s: refused by the %s engine: %s\n", program, engine_name,
-            fp3_engine_error(e));
-    fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
-    goto out;
-  }
-  for (int i = 0; i < FP3_IN_COUNT && erc == 0; i++)
-    if (img.in_reg[i] >= 0)
-      erc = fp3_engine_write_reg(e, (unsigned)img.in_reg[i],
-                                 fpref_bits(inval[i]));
-  for (int w = 0; w < 2 && erc == 0; w++) {
-    c.t.reg[w] = img.out_reg[w];
-    c.t.next_k[w] = 1;
-    erc = fp3_engine_read_reg(e, (unsigned)c.t.reg[w], &c.t.cur[w]);
-  }
   if (erc == 0) {
-    fp3_observer obs = {.ctx = &c, .on_write = obs_write, .on_endi = obs_endi};
-    erc = fp3_engine_run(e, steps, &obs, &st);
+    fp3_observer obs = {.ctx = &ob, .on_write = fp3_state_obs_write, .on_endi = fp3_state_obs_endi};
+    erc = fp3_engine_run(e, a->steps, &obs, &st);
   }
-  if (erc != 0) {
-    fprintf(stderr, "fp3 run: %s engine: %s\n", engine_name,
-            fp3_engine_error(e));
-    fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
+  if (erc) {
+    fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, fp3_engine_error(e));
     goto out;
   }
-  if (trace) {
-    if (win_first >= st.cycles)
+  if (a->trace) {
+    if (a->win_first >= st.cycles)
       fprintf(stderr, "fp3 run: trace %s: empty, the run has %" PRIu64
-              " cycles (--trace-window FIRST:COUNT)\n", trace, st.cycles);
+              " cycles (--trace-window FIRST:COUNT)\n", a->trace, st.cycles);
     else
       fprintf(stderr, "fp3 run: trace %s: cycles %" PRIu64 "..%" PRIu64
-              " of the run's %" PRIu64 " (--trace-window FIRST:COUNT for others)\n",
-              trace, win_first,
-              (win_count > st.cycles - win_first ? st.cycles : win_first + win_count) - 1,
+              " of the run's %" PRIu64 " (--trace-window FIRST:COUNT for others)\n", a->trace,
+              a->win_first,
+              (a->win_count > st.cycles - a->win_first ? st.cycles : a->win_first + a->win_count) - 1,
               st.cycles);
   }
-  /* the results of the last integrations are the values left at the end */
-  uint32_t done = st.steps_done < steps ? st.steps_done : steps;
-  for (int w = 0; w < 2; w++) fp3_track_advance(&c.t, w, done + 1);
-  if (c.oom) {
+  const uint32_t done = st.steps_done < a->steps ? st.steps_done : a->steps;
+  /* the bit-for-bit check, every integration; the first non-finite value;
+   * the first rows of the report */
+  uint32_t cur[FP3_MODEL_MAX_VARS], mism_k = 0, nonfinite_k = 0, gwant = 0, ggot = 0;
+  uint32_t row[TABLE_ROWS][FP3_MODEL_MAX_VARS];
+  unsigned mism_i = 0, nonfinite_i = 0;
+  uint64_t mismatches = 0;
+  float g[FP3_MODEL_MAX_VARS] = {0};
+  for (unsigned i = 0; i < ns; i++) cur[i] = fpref_bits(s->y0[i]), g[i] = s->y0[i];
+  fpenv_enter(a->mode, &env);
+  for (uint32_t k = 1; k <= done; k++) {
+    fp3_compiled_model_step(c, g);
+    for (unsigned i = 0; i < ns; i++) {
+      size_t q = (size_t)(k - 1) * ns + i;
+      if (ob.v && ob.seen[q]) cur[i] = ob.v[q];
+      if (!ob.v && k == done) fp3_engine_read_reg(e, ob.reg[i], &cur[i]);
+      if ((ob.v || k == done) && cur[i] != fpref_bits(g[i]) && !mismatches++)
+        mism_k = k, mism_i = i, ggot = cur[i], gwant = fpref_bits(g[i]);
+      if (!nonfinite_k && !isfinite(g[i])) nonfinite_k = k, nonfinite_i = i;
+      if (k <= TABLE_ROWS) row[k - 1][i] = ob.v ? cur[i] : fpref_bits(g[i]);
+    }
+  }
+  fpenv_leave(&env);
+  double ref[FP3_MODEL_MAX_VARS], ex[FP3_MODEL_MAX_VARS];
+  char rmsg[256] = "";
+  references(m, s->in, s->y0, done, !nonfinite_k, ref, ex, rmsg, sizeof rmsg);
+  const int have_ref = done > 0 && !nonfinite_k && !isnan(ref[0]);
+  const double cyc_first = ob.endis >= 1 ? (double)ob.cyc_first + 1.0 : NAN;
+  const double cyc_per =
+      ob.endis >= 2 ? (double)(ob.cyc_last - ob.cyc_first) / (double)(ob.endis - 1) : NAN;
+  const int ok = st.error == FP3_ERR_NONE && done == a->steps && mismatches == 0 && !nonfinite_k;
+  const int paper = strcmp(m->name, "ship") == 0;
+  char flags[96];
+  fp3_flags_text(st.flags, flags, sizeof flags);
+  if (a->json) {
+    json_head(a, s, NULL);
+    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32 ", \"objects\": 1", a->steps,
+           st.steps_done);
+    printf(", \"contexts\": 1, \"lanes\": 1, \"batches\": 1");
+    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64, st.cycles,
+           st.issued, st.stalls);
+    fp3_json_member_double(stdout, "cycles_first_step", cyc_first);
+    fp3_json_member_double(stdout, "cycles_per_object_step", cyc_per);
+    printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", mismatches);
+    if (mismatches)
+      printf("{\"object\": 0, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
+             "\"0x%08" PRIX32 "\", \"want\": \"0x%08" PRIX32 "\"}", mism_k, m->state[mism_i],
+             ggot, gwant);
+    else
+      printf("null");
+    printf(", \"nonfinite_from\": ");
+    if (nonfinite_k)
+      printf("{\"object\": 0, \"integration\": %" PRIu32 ", \"variable\": \"%s\"}", nonfinite_k,
+             m->state[nonfinite_i]);
+    else
+      printf("null");
+    json_run_error(st.error, 0, st.fault_pc);
+    printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32 ", \"params\": {", flags, st.flags);
+    for (unsigned k = 0; k < m->nparam; k++) {
+      printf("%s\"%s\": ", k ? ", " : "", m->param[k]);
+      fp3_json_float(stdout, s->in[k]);
+    }
+    for (unsigned k = 0; k < ns; k++) {
+      printf(", \"%s0\": ", m->state[k]);
+      fp3_json_float(stdout, s->y0[k]);
+    }
+    printf("}, \"max_error_ref\": ");
+    double emax = have_ref ? 0.0 : NAN;
+    for (unsigned k = 0; have_ref && k < ns; k++)
+      if (!(fabs((double)fpref_float(cur[k]) - ref[k]) <= emax))
+        emax = fabs((double)fpref_float(cur[k]) - ref[k]);
+    fp3_json_double(stdout, emax);
+    printf(", \"results\": [");
+    json_object(m, cur, g, ref, ex);
+    printf("], \"pass\": %s}\n", ok ? "true" : "false");
+  } else {
+    printf("FP3 run: engine %s, model %s (%s), ", a->engine, m->name, m->file);
+    if (s->program) printf("program %s (%s)", s->program, s->integ);
+    else printf("integrator %s %s", s->integ, s->literal ? "literal" : "folded");
+    printf(", %" PRIu32 " integrations\n", a->steps);
+    const fp3_compile_stats *cs = fp3_compiled_stats(c);
+    printf("program: %zu words, %u instructions per integration, %u registers (NUM_REGS %u)\n",
+           img->n, cs->body_insns, cs->regs_needed, e->config.num_regs);
+    printf("object:");
+    for (unsigned k = 0; k < m->nparam; k++)
+      printf(" %s = %.9g", m->param[k], (double)s->in[k]);
+    for (unsigned k = 0; k < ns; k++) printf(", %s0 = %.9g", m->state[k], (double)s->y0[k]);
+    printf("\n");
+    if (done > 0) { /* the first integrations against the exact solution */
+      printf("\n%10s %10s", "step", "t");
+      for (unsigned k = 0; k < ns && k < 4; k++)
+        printf(" %15s%s", m->state[k], isnan(ex[0]) ? "" : "           exact");
+      printf("\n");
+      for (uint32_t k = 1; k <= done && k <= TABLE_ROWS; k++) {
+        double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS], exk;
+        for (unsigned q = 0; q < m->nparam; q++) din[q] = s->in[q];
+        for (unsigned q = 0; q < ns; q++) dy0[q] = s->y0[q];
+        printf("%10" PRIu32 " %10.4f", k, (double)k * (double)s->in[0]);
+        for (unsigned q = 0; q < ns && q < 4; q++) {
+          printf(" %15.9g", (double)fpref_float(row[k - 1][q]));
+          if (!isnan(ex[0]))
+            printf(" %15.9g",
+                   fp3_model_exact(m, q, din, dy0, (double)k * din[0], &exk) ? NAN : exk);
+        }
+        printf("\n");
+      }
+      if (done > TABLE_ROWS) printf("%10s\n", "...");
+    }
+    printf("\n%-12s %16s %16s %22s %12s %12s\n", "state", "value", "golden", "reference (GSL)",
+           "error", "exact");
+    for (unsigned k = 0; k < ns; k++) {
+      printf("%-12s %16.9g %16.9g", m->state[k], (double)fpref_float(cur[k]), (double)g[k]);
+      if (have_ref) printf(" %22.15g %12.3g", ref[k], (double)fpref_float(cur[k]) - ref[k]);
+      else printf(" %22s %12s", "-", "-");
+      if (!isnan(ex[k])) printf(" %12.9g", ex[k]);
+      printf("\n");
+    }
+    if (!have_ref && rmsg[0]) printf("reference: %s\n", rmsg);
+    printf("golden model: %" PRIu64 " mismatches in %" PRIu32 " integrations%s\n", mismatches,
+           done, ob.v ? " (every state variable, bit for bit)" : " (the final state only)");
+    if (mismatches)
+      printf("  first at integration %" PRIu32 ": %s = 0x%08" PRIX32 " (%.9g), golden 0x%08" PRIX32
+             " (%.9g), %" PRId64 " ulp\n", mism_k, m->state[mism_i], ggot,
+             (double)fpref_float(ggot), gwant, (double)fpref_float(gwant),
+             fp3_ulp_distance(ggot, gwant));
+    if (ob.endis >= 1) {
+      printf("cycles: first integration %.0f", cyc_first);
+      if (paper) printf(" (paper %d)", PAPER_FIRST);
+      if (ob.endis >= 2) {
+        printf(", later %.2f per integration", cyc_per);
+        if (paper) printf(" (paper %d)", PAPER_LATER);
+      }
+      printf("\n");
+    }
+    printf("        total %" PRIu64 " %s, %" PRIu64 " issued, %" PRIu64 " stalls\n", st.cycles,
+           strcmp(a->engine, "iss") == 0 ? "instructions" : "cycles", st.issued, st.stalls);
+    printf("flags: %s\n", flags);
+    if (nonfinite_k)
+      printf("NON-FINITE: state variable %s is not finite after integration %" PRIu32
+             " (flags: %s)\n", m->state[nonfinite_i], nonfinite_k, flags);
+    if (st.error != FP3_ERR_NONE)
+      printf("run error: %s at pc %" PRIu32 ": %s\n", fp3_error_name(st.error), st.fault_pc,
+             fp3_engine_error(e)[0] ? fp3_engine_error(e) : fp3_error_text(st.error));
+    if (ok)
+      printf("PASS: %" PRIu32 " integrations on %s bit-exact with the golden model\n", a->steps,
+             a->engine);
+    else if (st.error != FP3_ERR_NONE)
+      printf("FAIL: run error %s after %" PRIu32 " of %" PRIu32 " integrations\n",
+             fp3_error_name(st.error), st.steps_done, a->steps);
+    else if (done != a->steps)
+      printf("FAIL: the run ended after %" PRIu32 " of %" PRIu32 " integrations\n", done,
+             a->steps);
+    else if (mismatches)
+      printf("FAIL: %" PRIu64 " golden mismatches, first at integration %" PRIu32 "\n",
+             mismatches, mism_k);
+    else
+      printf("FAIL: a state variable is not finite\n");
+  }
+  if (nonfinite_k)
+    fprintf(stderr, "fp3 run: %s: state variable %s is not finite after integration %" PRIu32
+            " of %s\n", m->file, m->state[nonfinite_i], nonfinite_k, s->integ);
+  rc = ok ? 0 : EXIT_FAIL;
+out:
+  free(ob.v);
+  free(ob.seen);
+  return rc;
+}
+
+/* ---- many objects: a model scene, or --objects N -------------------------- */
+
+static int run_many(const fp3_model_args *a, run_setup *s) {
+  const fp3_mscene *sc = &s->sc;
+  const fp3_model *m = s->m;
+  const unsigned np = m->nparam, ns = m->nstate;
+  char msg[512];
+  fp3_state_result res;
+  memset(&res, 0, sizeof res);
+  double *ref = NULL, *ex = NULL;
+  int rc = EXIT_FAIL;
+  fp3_scene_gold sg;
+  fp3_scene_gold_init(&sg, s->c, sc);
+  const fp3_image *img = fp3_compiled_image(s->c);
+  if (fp3_run_state_objects(s->e, img->words, img->n, sc->n, a->steps, a->mode, &sg.golden, &res,
+                            msg, sizeof msg)) {
+    fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
+    goto out;
+  }
+  ref = malloc(sc->n * ns * sizeof *ref);
+  ex = malloc(sc->n * ns * sizeof *ex);
+  if (!ref || !ex) {
     fprintf(stderr, "fp3 run: out of memory\n");
     goto out;
   }
-
-  double cyc_first = (double)c.cyc_first + 1.0;
-  double cyc_per = c.endis >= 2 ? (double)(c.cyc_last - c.cyc_first) /
-                                      (double)(c.endis - 1)
-                                : NAN;
-  int ok = st.error == FP3_ERR_NONE && done == steps && c.mismatches == 0;
-  char flags[96];
-  fp3_flags_text(st.flags, flags, sizeof flags);
-  double fin_v = NAN, fin_s = NAN;
-  if (done > 0) exact_at(&c, done, &fin_v, &fin_s);
-  float gv = 0, gs = 0;
-  if (done > 0) golden_at(&c, done, &gv, &gs);
-
-  if (json) {
-    printf("{\"engine\": ");
-    fp3_json_string(stdout, engine_name);
-    printf(", \"program\": ");
-    fp3_json_string(stdout, program);
-    printf(", \"words\": %zu", img.n);
-    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32, steps,
-           st.steps_done);
-    printf(", \"error\": \"%s\", \"fault_pc\": %" PRIu32, fp3_error_name(st.error),
-           st.fault_pc);
-    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64
-           ", \"stalls\": %" PRIu64,
-           st.cycles, st.issued, st.stalls);
-    printf(", \"cycles_first_step\": ");
-    if (c.endis >= 1) printf("%.9g", cyc_first); else printf("null");
-    printf(", \"cycles_per_step\": ");
-    if (c.endis >= 2) printf("%.9g", cyc_per); else printf("null");
-    printf(", \"paper_cycles_first_step\": %d, \"paper_cycles_per_step\": %d",
-           PAPER_FIRST, PAPER_LATER);
-    printf(", \"golden_mismatches\": %" PRIu64, c.mismatches);
-    if (c.mismatches)
-      printf(", \"first_mismatch\": {\"integration\": %" PRIu32
-             ", \"result\": \"%s\", \"got\": \"0x%08" PRIX32
-             "\", \"want\": \"0x%08" PRIX32 "\", \"ulp\": %" PRId64 "}",
-             c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
-             c.first_want, fp3_ulp_distance(c.first_got, c.first_want));
-    else
-      printf(", \"first_mismatch\": null");
-    printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, st.flags);
-    printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(mode),
-           mode.ftz ? "true" : "false");
-    printf(", \"params\": {\"T\": ");
-    fp3_json_float(stdout, p.T);
-    fp3_json_member_float(stdout, "C", p.C);
-    fp3_json_member_float(stdout, "m", p.m);
-    fp3_json_member_float(stdout, "minv", minv);
-    fp3_json_member_float(stdout, "h", p.h);
-    fp3_json_member_float(stdout, "v0", p.v0);
-    fp3_json_member_float(stdout, "s0", p.s0);
-    printf("}, \"results\": [{\"v\": ");
-    fp3_json_float(stdout, fpref_float(c.last[OV]));
-    fp3_json_member_float(stdout, "s", fpref_float(c.last[OS]));
-    fp3_json_member_float(stdout, "v_golden", gv);
-    fp3_json_member_float(stdout, "s_golden", gs);
-    fp3_json_member_double(stdout, "v_exact", fin_v);
-    fp3_json_member_double(stdout, "s_exact", fin_s);
-    fp3_json_member_double(stdout, "v_max_abs_err", c.max_abs[OV]);
-    fp3_json_member_double(stdout, "s_max_abs_err", c.max_abs[OS]);
-    printf("}], \"integrator\": ");
-    fp3_json_string(stdout, integ->name);
-    fp3_json_member_double(stdout, "h_over_tau", fp3_h_over_tau(&p));
-    printf(", \"stability_bound\": %.9g", integ->bound);
-    printf(", \"diverged_from\": ");
-    if (c.div.detected) printf("%" PRIu32, c.div.began); else printf("null");
-    printf(", \"nonfinite_from\": ");
-    if (c.div.nonfinite) printf("%" PRIu32, c.div.nonfinite); else printf("null");
-    printf(", \"pass\": %s}\n", ok ? "true" : "false");
-  } else {
-    printf("FP3 run: engine %s, program %s (%zu words), %" PRIu32
-           " integrations\n",
-           engine_name, program, img.n, steps);
-    printf("scene: T = %.9g N, C = %.9g kg/s, m = %.9g kg (1/m = %.9g), "
-           "h = %.9g s, v0 = %.9g m/s, s0 = %.9g m\n",
-           (double)p.T, (double)p.C, (double)p.m, (double)minv, (double)p.h,
-           (double)p.v0, (double)p.s0);
-    if (p.C > 0)
-      printf("       tau = m/C = %.6g s, terminal velocity T/C = %.6g m/s\n",
-             (double)p.m / (double)p.C, (double)p.T / (double)p.C);
-    if (done > 0) {
-      printf("\n%10s  %10s  %15s %15s  %15s %15s\n", "step", "t [s]",
-             "v [m/s]", "v exact", "s [m]", "s exact");
-      for (uint32_t k = 1; k <= done && k <= TABLE_ROWS; k++)
-        print_row(&c, k, c.row[OV][k - 1], c.row[OS][k - 1]);
-      if (done > TABLE_ROWS + 1) printf("%10s\n", "...");
-      if (done > TABLE_ROWS) print_row(&c, done, c.last[OV], c.last[OS]);
-      printf("\n");
+  const int nonfinite = res.nonfinite_object != SIZE_MAX;
+  double max_err = 0.0;
+  size_t ref_fail = 0;
+  for (size_t o = 0; o < sc->n; o++) {
+    char rmsg[256];
+    references(m, sc->in + o * np, sc->y0 + o * ns, a->steps, !nonfinite, ref + o * ns,
+               ex + o * ns, rmsg, sizeof rmsg);
+    if (isnan(ref[o * ns])) {
+      ref_fail++;
+      continue;
     }
-    printf("golden model: %" PRIu64 " mismatches in %" PRIu32
-           " integrations (v and s, bit for bit)\n",
-           c.mismatches, done);
-    if (c.mismatches)
-      printf("  first at integration %" PRIu32 ": %s = 0x%08" PRIX32
-             " (%.9g), golden 0x%08" PRIX32 " (%.9g), %" PRId64
-             " ulp; worst %" PRId64 " ulp\n",
-             c.first_k, c.first_which == OV ? "v" : "s", c.first_got,
-             (double)fpref_float(c.first_got), c.first_want,
-             (double)fpref_float(c.first_want),
-             fp3_ulp_distance(c.first_got, c.first_want), c.max_ulp);
-    if (c.endis >= 1) {
-      printf("cycles: first integration %.0f (paper %d)", cyc_first,
-             PAPER_FIRST);
-      if (c.endis >= 2)
-        printf(", later %.2f per integration (paper %d)", cyc_per,
-               PAPER_LATER);
-      printf("\n");
+    for (unsigned k = 0; k < ns; k++) {
+      double d = fabs((double)fpref_float(res.y[o * ns + k]) - ref[o * ns + k]);
+      if (d > max_err || d != d) max_err = d;
     }
-    printf("        total %" PRIu64 " cycles, %" PRIu64 " issued, %" PRIu64
-           " stalls\n",
-           st.cycles, st.issued, st.stalls);
-    printf("flags: %s\n", flags);
-    if (done > 0) {
-      printf("error vs exact solution:  final abs      final rel      "
-             "max abs        max rel\n");
-      for (int w = 0; w < 2; w++)
-        printf("  %s %*s %14.6g %14.6g %14.6g %14.6g\n", w == OV ? "v" : "s",
-               20, "", c.final_abs[w], c.final_rel[w], c.max_abs[w],
-               c.max_rel[w]);
-      printf("  (integrator %s: %s)\n", integ->name, integ->desc);
-    }
-    if (c.div.detected)
-      printf("DIVERGED: |v - T/C| grows from integration %" PRIu32
-             " on and reached %.6g at integration %" PRIu32
-             " (twice its start, h/tau = %.6g, bound %.6g)\n",
-             c.div.began, c.div.detected_dist, c.div.detected,
-             fp3_h_over_tau(&p), integ->bound);
-    if (c.div.nonfinite)
-      printf("DIVERGED: v or s not finite from integration %" PRIu32
-             " on (flags: %s)\n",
-             c.div.nonfinite, flags);
-    if (st.error != FP3_ERR_NONE)
-      printf("run error: %s at pc %" PRIu32 ": %s\n", fp3_error_name(st.error),
-             st.fault_pc,
-             fp3_engine_error(e)[0] ? fp3_engine_error(e) : fp3_error_text(st.error));
-    if (ok)
-      printf("PASS: %" PRIu32 " integrations on %s bit-exact with the golden "
-             "model\n",
-             steps, engine_name);
-    else if (st.error != FP3_ERR_NONE)
-      printf("FAIL: run error %s after %" PRIu32 " of %" PRIu32
-             " integrations\n",
-             fp3_error_name(st.error), st.steps_done, steps);
-    else if (done != steps)
-      printf("FAIL: the run ended after %" PRIu32 " of %" PRIu32
-             " integrations\n",
-             done, steps);
-    else
-      printf("FAIL: %" PRIu64 " golden mismatches, first at integration %" PRIu32
-             "\n",
-             c.mismatches, c.first_k);
   }
-  if (ok && strict && (c.div.detected || c.div.nonfinite)) {
-    fprintf(stderr, "fp3 run: --strict: the integration diverged\n");
-    ok = 0;
+  const double object_steps = (double)res.objects * (double)a->steps;
+  const double per = (double)res.cycles / object_steps;
+  const int ok = res.mismatches == 0 && res.error == FP3_ERR_NONE && !nonfinite;
+  const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
+  char flags[96];
+  fp3_flags_text(res.flags, flags, sizeof flags);
+  const char *where = a->scene ? a->scene : "generated (--objects, --seed)";
+  if (a->json) {
+    json_head(a, s, where);
+    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32 ", \"objects\": %zu", a->steps,
+           res.error ? 0 : a->steps, res.objects);
+    printf(", \"contexts\": %u, \"lanes\": %u, \"batches\": %zu", res.contexts, res.lanes,
+           res.batches);
+    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64, res.cycles,
+           res.issued, res.stalls);
+    printf(", \"cycles_first_step\": null, \"cycles_per_object_step\": %.9g", per);
+    printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
+    if (res.mismatches)
+      printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
+             "\"0x%08" PRIX32 "\", \"want\": \"0x%08" PRIX32 "\"}", res.first_object,
+             res.first_step, m->state[res.first_var], res.first_got, res.first_want);
+    else
+      printf("null");
+    printf(", \"nonfinite_from\": ");
+    if (nonfinite)
+      printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\"}",
+             res.nonfinite_object, res.nonfinite_step, m->state[res.nonfinite_var]);
+    else
+      printf("null");
+    json_run_error(res.error, res.error_object, res.error_pc);
+    printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32 ", \"params\": null", flags,
+           res.flags);
+    printf(", \"max_error_ref\": ");
+    fp3_json_double(stdout, ref_fail == sc->n ? NAN : max_err);
+    printf(", \"results\": [");
+    for (size_t o = 0; o < sc->n; o++) {
+      printf("%s", o ? ", " : "");
+      json_object(m, res.y + o * ns, NULL, ref + o * ns, ex + o * ns);
+    }
+    printf("], \"pass\": %s}\n", ok ? "true" : "false");
+  } else {
+    printf("FP3 run: engine %s, model %s (%s), ", a->engine, m->name, sc->model_path);
+    if (s->program) printf("program %s (%s)", s->program, s->integ);
+    else printf("integrator %s %s", s->integ, s->literal ? "literal" : "folded");
+    printf(", %zu objects, %" PRIu32 " integrations each\n", res.objects, a->steps);
+    printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
+           "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
+           cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
+    printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n", where, res.contexts,
+           res.lanes, res.batches, res.batches == 1 ? "" : "es");
+    printf("  object");
+    for (unsigned k = 0; k < ns; k++) printf(" %14s %14s", m->state[k], "reference");
+    printf("\n");
+    for (size_t o = 0; o < sc->n && o < SHOW_OBJECTS; o++) {
+      printf("%8zu", o);
+      for (unsigned k = 0; k < ns; k++)
+        printf(" %14.7g %14.7g", (double)fpref_float(res.y[o * ns + k]), ref[o * ns + k]);
+      printf("\n");
+    }
+    if (sc->n > SHOW_OBJECTS) printf("     ... (%zu more)\n", sc->n - SHOW_OBJECTS);
+    printf("\ngolden model: %" PRIu64 " mismatches in %.0f object-steps (every state variable, "
+           "bit for bit)\n", res.mismatches, object_steps);
+    if (res.mismatches)
+      printf("  first: object %zu, integration %" PRIu32 ", %s = 0x%08" PRIX32
+             ", golden 0x%08" PRIX32 "\n", res.first_object, res.first_step,
+             m->state[res.first_var], res.first_got, res.first_want);
+    if (ref_fail < sc->n)
+      printf("error against the GSL reference (rk8pd, 1e-12): largest %.3g over %zu objects\n",
+             max_err, sc->n - ref_fail);
+    printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
+           res.cycles, per, (double)res.issued / object_steps);
+    printf("flags: %s\n", flags);
+    if (res.error)
+      printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
+             fp3_error_text(res.error), res.error_pc);
+    if (ok)
+      printf("PASS: %zu objects x %" PRIu32 " integrations on %s bit-exact with the golden "
+             "model\n", res.objects, a->steps, a->engine);
+    else
+      printf("FAIL\n");
+  }
+  if (nonfinite) {
+    size_t o = res.nonfinite_object;
+    char line[32] = "";
+    if (sc->line && sc->line[o]) snprintf(line, sizeof line, ":%d", sc->line[o]);
+    fprintf(stderr, "fp3 run: %s%s: object %zu: state variable %s is not finite after "
+            "integration %" PRIu32 " of %s\n", a->scene ? a->scene : m->file, line, o,
+            m->state[res.nonfinite_var], res.nonfinite_step, s->integ);
   }
   rc = ok ? 0 : EXIT_FAIL;
 out:
-  free(c.gv);
-  free(c.gs);
+  free(ref);
+  free(ex);
+  fp3_state_result_free(&res);
+  return rc;
+}
+
+/* ---- a ship scene of five columns ----------------------------------------- */
+
+/* `fp3 run --scene FILE` on a ship scene ('T C m v0 s0' a line, sw/scene/
+ * objects.h): the ship scene compiler's program (or with --literal or
+ * --program the hand-written one) on cmd_objects.c's path. */
+static int run_ship_scene(const fp3_model_args *a) {
+  const char *iname = a->integ_given ? a->integ : "rk4";
+  const fp3_integrator *ig = fp3_integrator_find(iname);
+  const int compile = !a->literal && !a->program;
+  if (!ig) {
+    fprintf(stderr, "fp3 run: a ship scene runs the ship's integrators (%s), not '%s'\n",
+            fp3_integrator_names(), iname);
+    return EXIT_USAGE;
+  }
+  if (compile && !fp3_compile_knows(ig->name)) {
+    fprintf(stderr, "fp3 run: the scene compiler does not know integrator '%s' (%s); "
+            "--literal runs programs/ship_%s.s\n", ig->name, fp3_compile_integrators(), ig->name);
+    return EXIT_USAGE;
+  }
+  char path[4200];
+  if (a->program) snprintf(path, sizeof path, "%s", a->program);
+  else find_shipped(ig->program, path, sizeof path);
+  fp3_image img;
+  char *errs = NULL;
+  if (fp3_asm_file(path, &img, &errs) != 0) {
+    fp3_print_asm_errors(errs);
+    free(errs);
+    return EXIT_USAGE;
+  }
+  free(errs);
+  if (fp3_refuse_endless("run", path, &img)) return EXIT_USAGE;
+  fp3_engine *e = strcmp(a->engine, "iss") == 0 ? fp3_engine_iss_new_mode(a->mode)
+                                                : fp3_engine_rtl_new_mode(a->mode, NULL);
+  if (!e || fp3_engine_error(e)[0]) {
+    fprintf(stderr, "fp3 run: cannot create the %s engine\n", a->engine);
+    fp3_engine_free(e);
+    return EXIT_FAIL;
+  }
+  fp3_integ_golden gstore;
+  const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, ig);
+  fp3_objects_cmd oc = {e,         &img,       path,    ig->name, &golden, compile, NULL, a->scene,
+                        a->objects, a->seed, 0.0f, a->steps, a->mode, a->json};
+  int rc = fp3_cmd_run_objects(&oc);
   fp3_engine_free(e);
   return rc;
 }
 
+/* ---- fp3 run ------------------------------------------------------------------ */
+
 int fp3_cmd_run(int argc, char **argv) {
-  if (fp3_args_have_model(argc, argv)) return fp3_cmd_run_model(argc, argv);
-  fp3_run_args a;
-  int r = fp3_parse_run(argc, argv, &a);
-  return r == FP3_ARGS_RUN ? run_run(&a) : fp3_args_exit(r, usage_run);
+  fp3_model_args a;
+  int r = fp3_parse_model(argc, argv, "run", &a);
+  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
+  if (a.scene && !fp3_scene_is_model(a.scene)) return run_ship_scene(&a);
+  run_setup s;
+  memset(&s, 0, sizeof s);
+  fp3_image_init(&s.img);
+  int rc = setup_program(&a, &s);
+  if (!rc) rc = setup_model(&a, &s);
+  if (!rc) rc = setup_engine(&a, &s);
+  if (!rc && a.trace && s.many) {
+    fprintf(stderr, "fp3 run: --trace is for one object\n");
+    rc = EXIT_USAGE;
+  }
+  if (!rc) rc = s.many ? run_many(&a, &s) : run_one(&a, &s);
+  setup_free(&s);
+  return rc;
 }

@@ -83,6 +83,7 @@ typedef struct builder {
   int in_state[MAX_IN]; /* the state variable an input initialises, or -1 */
   char st_name[MAX_STATE][FP3_MODEL_NAME_LEN];
   const fp3_model *model;      /* a model's program, else NULL (the ship) */
+  char integ[16];              /* a model's integrator (fp3_model_integrators) */
   const unsigned char *pzero;  /* model params zero in every object (drop_zero) */
   int err;
 } builder;
@@ -530,17 +531,26 @@ static int schedule(const builder *b, const fp3_compile_opts *o, bins *bi, int n
 /* ---- text ------------------------------------------------------------------- */
 
 /* "name = a op b" for a comment. */
+/* A node's name in the comments: its own, or tN (N its IR index) for a
+ * temporary nobody named. */
+static const char *label(const builder *b, int i, char *buf, size_t n) {
+  if (b->nd[i].name[0]) return b->nd[i].name;
+  snprintf(buf, n, "t%d", i);
+  return buf;
+}
+
 static void describe(const builder *b, int i, char *s, size_t n) {
   const node *x = &b->nd[i];
   static const char *const sym[NK_COUNT] = {"?", "?", "?", "+", "-", "*", "/"};
-  const char *nm_ = x->name[0] ? x->name : "t";
+  char l0[16], l1[16], l2[16];
+  const char *r = label(b, i, l0, sizeof l0), *a = label(b, x->a, l1, sizeof l1);
   if (sym[x->kind])
-    snprintf(s, n, "%s = %s %s %s", nm_, b->nd[x->a].name, sym[x->kind], b->nd[x->b].name);
+    snprintf(s, n, "%s = %s %s %s", r, a, sym[x->kind], label(b, x->b, l2, sizeof l2));
   else if (unary_kind(x->kind))
-    snprintf(s, n, "%s = %s(%s)", nm_, kind_mnemonic[x->kind], b->nd[x->a].name);
+    snprintf(s, n, "%s = %s(%s)", r, kind_mnemonic[x->kind], a);
   else
-    snprintf(s, n, "%s = %s(%s, %s)", nm_, kind_mnemonic[x->kind], b->nd[x->a].name,
-             b->nd[x->b].name);
+    snprintf(s, n, "%s = %s(%s, %s)", r, kind_mnemonic[x->kind], a,
+             label(b, x->b, l2, sizeof l2));
 }
 
 /* ---- compile ---------------------------------------------------------------- */
@@ -1246,6 +1256,104 @@ static ref m_nm(builder *b, ref r, const char *what, unsigned i) {
   return nm(b, r, s_);
 }
 
+/* out[i] = y_i + d, Kahan-compensated with the carried c_i (state ns + i):
+ * yk = d - c; t = y + yk; c = (t - y) - yk (fp3_model_step_literal). */
+static void m_kahan(builder *b, const fp3_model *m, ref yi, ref d, unsigned i) {
+  const unsigned ns = m->nstate;
+  ref nc = state(b, (int)(ns + i)), ny = yi;
+  nc.neg ^= 1;
+  ny.neg ^= 1;
+  ref yk = m_nm(b, m_add(b, d, nc), "yk", i);
+  ref t_ = m_nm(b, m_add(b, yi, yk), "n", i);
+  ref z = m_nm(b, m_add(b, t_, ny), "z", i);
+  yk.neg ^= 1;
+  b->out[ns + i] = m_add(b, z, yk);
+  b->out[i] = t_;
+}
+
+/* RK4's weighted sum of k1..k4: literal ((k1 + 2 k2) + 2 k3) + k4, or
+ * folded (k1 + k4) + 2 (k2 + k3). */
+static ref m_rk4_sum(builder *b, ref two, ref k1, ref k2, ref k3, ref k4) {
+  if (b->fold) return m_add(b, m_add(b, k1, k4), mul(b, two, m_add(b, k2, k3)));
+  ref sum = m_add(b, k1, mul(b, two, k2));
+  sum = m_add(b, sum, mul(b, two, k3));
+  return m_add(b, sum, k4);
+}
+
+/* rk4se, rk4secomp, rk4vs, rk4vscomp (fp3_model_step_literal). */
+static void m_build_rk4_split(builder *b, const fp3_model *m, const ref *y, ref h, int se,
+                              int comp) {
+  const unsigned ns = m->nstate;
+  static const char *const ktag[3] = {"k1", "k2", "k3"}, *const ytag[3] = {"y2", "y3", "y4"};
+  static const char *const ftag[4] = {"1", "2", "3", "4"};
+  ref f[4][MAX_STATE], k[3][MAX_STATE], t[MAX_STATE];
+  ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
+  ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
+  m_f(b, m, y, f[0], ftag[0]);
+  for (unsigned st = 0; st < 3; st++) {
+    for (unsigned j = 0; j < ns; j++) k[st][j] = m_nm(b, mul(b, h, f[st][j]), ktag[st], j);
+    for (unsigned j = 0; j < ns; j++)
+      t[j] = se && m->role[j] == FP3_MR_POSITION
+                 ? y[j]
+                 : m_nm(b, m_add(b, y[j], st < 2 ? mul(b, half, k[st][j]) : k[st][j]),
+                        ytag[st], j);
+    m_f(b, m, t, f[st + 1], ftag[st + 1]);
+  }
+  for (unsigned i = 0; i < ns; i++) {
+    ref d;
+    if (m->role[i] == FP3_MR_VELOCITY) {
+      ref k4 = m_nm(b, mul(b, h, f[3][i]), "k4", i);
+      d = mul(b, sixth, m_nm(b, m_rk4_sum(b, two, k[0][i], k[1][i], k[2][i], k4), "sum", i));
+    } else if (!se) { /* (h sixth) ((f1 + 2 (f2 + f3)) + f4) */
+      ref h6 = nm(b, mul(b, h, sixth), "h6");
+      ref u = m_add(b, f[0][i], mul(b, two, m_add(b, f[1][i], f[2][i])));
+      d = mul(b, h6, m_nm(b, m_add(b, u, f[3][i]), "u", i));
+    } else {
+      continue;
+    }
+    if (comp) m_kahan(b, m, y[i], d, i);
+    else b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
+  }
+  if (!se) return;
+  for (unsigned j = 0; j < ns; j++) t[j] = m->role[j] == FP3_MR_VELOCITY ? b->out[j] : y[j];
+  m_f(b, m, t, f[0], "5"); /* positions by the new velocities */
+  for (unsigned i = 0; i < ns; i++)
+    if (m->role[i] == FP3_MR_POSITION) {
+      ref d = m_nm(b, mul(b, h, f[0][i]), "d", i);
+      if (comp) m_kahan(b, m, y[i], d, i);
+      else b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
+    }
+}
+
+/* verletp (fp3_model_step_literal): a_u carried in state ns + u. */
+static void m_build_verletp(builder *b, const fp3_model *m, const ref *y, ref h) {
+  const unsigned ns = m->nstate;
+  ref f[MAX_STATE], t[MAX_STATE], a[MAX_STATE];
+  ref half = konst(b, FP3_GOLDEN_HALF, "half");
+  ref hh = nm(b, mul(b, half, h), "hh");
+  ref hh2 = nm(b, mul(b, half, nm(b, mul(b, h, h), "hsq")), "hh2");
+  for (unsigned i = 0; i < ns; i++) a[i] = state(b, (int)(ns + i));
+  for (unsigned i = 0; i < ns; i++) {
+    if (m->role[i] == FP3_MR_POSITION) {
+      const unsigned p = (unsigned)fp3_model_pair(m, i);
+      ref ds = m_nm(b, m_add(b, mul(b, h, y[p]), mul(b, hh2, a[p])), "ds", i);
+      t[i] = m_nm(b, m_add(b, y[i], ds), "n", i);
+    } else {
+      t[i] = m_nm(b, m_add(b, y[i], mul(b, h, a[i])), "up", i);
+    }
+  }
+  m_f(b, m, t, f, "p");
+  for (unsigned i = 0; i < ns; i++)
+    b->out[i] = m->role[i] == FP3_MR_POSITION
+                    ? t[i]
+                    : m_nm(b, m_add(b, y[i], mul(b, hh, m_nm(b, m_add(b, a[i], f[i]), "sa", i))),
+                           "n", i);
+  for (unsigned i = 0; i < ns; i++) t[i] = b->out[i];
+  m_f(b, m, t, f, "a"); /* the next integration's acceleration */
+  for (unsigned i = 0; i < ns; i++)
+    b->out[ns + i] = m->role[i] == FP3_MR_VELOCITY ? f[i] : a[i];
+}
+
 /* The literal integrators of model.h (fp3_model_step_literal), or folded
  * (b->fold: RK4's sum as (k1 + k4) + 2 (k2 + k3)). */
 static int m_build(builder *b, const fp3_model *m, const char *integ) {
@@ -1304,6 +1412,14 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
       b->out[ns + i] = m_add(b, z, yk);
       b->out[i] = t_;
     }
+  } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
+    if (!fp3_model_integrator_known(integ)) return -1;
+    if (!fp3_model_split(m)) return -2;
+    m_build_rk4_split(b, m, y, h, integ[4] == 's' && integ[5] == 'e', strstr(integ, "comp") != NULL);
+  } else if (strcmp(integ, "verletp") == 0) {
+    if (!fp3_model_split(m)) return -2;
+    if (!fp3_model_integrator_applies(m, integ)) return -4;
+    m_build_verletp(b, m, y, h);
   } else if (strcmp(integ, "symeuler") == 0) {
     if (!fp3_model_split(m)) return -2;
     m_f(b, m, y, f, "1");
@@ -1334,7 +1450,7 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
   } else {
     return -1;
   }
-  for (unsigned i = 0; i < ns; i++) b->out[i] = m_value(b, b->out[i]);
+  for (int i = 0; i < b->nstate; i++) b->out[i] = m_value(b, b->out[i]);
   return 0;
 }
 
@@ -1348,11 +1464,13 @@ static int model_ir(builder *b, const fp3_model *m, const char *integ,
   b->pzero = pzero;
   /* rk4comp carries a compensation per state variable (c_NAME, 0 at
    * the start) beside it */
-  const unsigned carried = m->nstate * (strcmp(integ, "rk4comp") == 0 ? 2u : 1u);
+  const unsigned carried = fp3_model_carried(m, integ);
   b->nstate = (int)carried;
   b->nin = (int)(m->nparam + carried);
+  snprintf(b->integ, sizeof b->integ, "%s", integ);
   for (unsigned i = 0; i < carried; i++)
-    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s%.24s", i < m->nstate ? "" : "c_",
+    snprintf(b->st_name[i], FP3_MODEL_NAME_LEN, "%s%.24s",
+             i < m->nstate ? "" : strcmp(integ, "verletp") == 0 ? "a_" : "c_",
              m->state[i % m->nstate]);
   for (int k = 0; k < b->nin; k++) {
     unsigned q = (unsigned)k;
@@ -1377,9 +1495,14 @@ static int model_ir(builder *b, const fp3_model *m, const char *integ,
              m->state[reads]);
     return -1;
   }
+  if (rc == -4) {
+    snprintf(msg, n, "integrator verletp needs each position's derivative to be a velocity "
+             "(x' = v)");
+    return -1;
+  }
   if (rc == -2) {
-    snprintf(msg, n, "%s: integrator %s needs the state split into positions and velocities "
-             "(`position` and `velocity` lines, docs/models.md)", m->file, integ);
+    snprintf(msg, n, "integrator %s needs the state split into positions and velocities "
+             "(`position` and `velocity` lines, docs/models.md)", integ);
     return -1;
   }
   if (b->err) {
@@ -1432,6 +1555,129 @@ out:
   return rc;
 }
 
+/* The IR node an `.in` name stands for: a param's or an initial state's
+ * input leaf (NAME, or NAME0 for state variable NAME), or a
+ * parameter-only let (an invariant node of that name); -1 if none. */
+static int bind_node(builder *b, const fp3_model *m, const char *name) {
+  int k = fp3_model_param(m, name);
+  if (k >= 0) return leaf(b, NK_IN, k, 0, m->param[k]).n;
+  k = fp3_model_state(m, name);
+  size_t len = strlen(name);
+  if (k < 0 && len > 1 && name[len - 1] == '0') {
+    char base[FP3_BIND_NAME_LEN];
+    snprintf(base, sizeof base, "%.*s", (int)(len - 1), name);
+    k = fp3_model_state(m, base);
+  }
+  if (k >= 0) return leaf(b, NK_IN, (int)m->nparam + k, 0, b->in_name[m->nparam + (unsigned)k]).n;
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].inv && op_kind(b->nd[i].kind) && strcmp(b->nd[i].name, name) == 0) return i;
+  return -1;
+}
+
+int fp3_compile_bind(const fp3_model *m, const fp3_image *img, const char *program,
+                     const fp3_compile_opts *o, fp3_compiled **outp, char *msg, size_t n) {
+  *outp = NULL;
+  const char *integ = img->integrator;
+  if (!integ[0]) {
+    snprintf(msg, n, "%s: no `.integrator NAME` line: the program names the integrator whose "
+             "golden model it computes (%s)", program, fp3_model_integrators());
+    return -1;
+  }
+  if (!fp3_model_integrator_known(integ)) {
+    snprintf(msg, n, "%s: .integrator %s: not an integrator of the model language (%s)", program,
+             integ, fp3_model_integrators());
+    return -1;
+  }
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_compile_opts lit = *o;
+  lit.fold = lit.drop_zero = 0;
+  char why[400];
+  if (model_ir(&c->b, m, integ, &lit, NULL, why, sizeof why)) {
+    snprintf(msg, n, "%s: .integrator %s on model %s (%s): %s", program, integ, m->name, m->file,
+             why);
+    goto fail;
+  }
+  builder *b = &c->b;
+  c->img = *img;
+  for (int k = 0; k < MAX_IN; k++) c->in_reg[k] = -1;
+  for (int k = 0; k < MAX_STATE; k++) c->state_reg[k] = -1;
+  for (int k = 0; k < MAX_NODES; k++) c->host_reg[k] = -1;
+  for (unsigned q = 0; q < img->nbind_in; q++) {
+    const fp3_binding *x = &img->bind_in[q];
+    const int neg = x->name[0] == '-';
+    int i = bind_node(b, m, x->name + neg);
+    if (i < 0) {
+      snprintf(msg, n, "%s:%d: .in %s: model %s (%s) has no param, state variable or "
+               "parameter-only let '%s'", program, x->line, x->name, m->name, m->file,
+               x->name + neg);
+      goto fail;
+    }
+    if (neg) { /* the host flips the sign bit: an invariant node of its own */
+      node z = {NK_NEG, i, -1, -1, 0, 1, 0, 1, ""};
+      i = new_node(b, z);
+      snprintf(b->nd[i].name, sizeof b->nd[i].name, "%s", x->name);
+    }
+    if (b->err) {
+      snprintf(msg, n, "model %s: the IR has more than %d nodes", m->name, MAX_NODES);
+      goto fail;
+    }
+    if (b->nd[i].kind == NK_IN) c->in_reg[b->nd[i].id] = x->reg;
+    else c->host_reg[i] = x->reg;
+  }
+  for (unsigned q = 0; q < img->nbind_out; q++) {
+    const fp3_binding *x = &img->bind_out[q];
+    int k = -1;
+    for (int w = 0; w < b->nstate; w++)
+      if (strcmp(b->st_name[w], x->name) == 0) k = w;
+    if (k < 0) {
+      snprintf(msg, n, "%s:%d: .out %s: model %s (%s) has no state variable '%s'", program,
+               x->line, x->name, m->name, m->file, x->name);
+      goto fail;
+    }
+    c->state_reg[k] = x->reg;
+  }
+  for (unsigned i = 0; i < m->nstate; i++)
+    if (c->state_reg[i] < 0) {
+      snprintf(msg, n, "%s: no `.out %s, rN`: state variable %s of model %s is not checked "
+               "against the golden model", program, m->state[i], m->state[i], m->name);
+      goto fail;
+    }
+  /* the figures of compiled programs, from the image */
+  fp3_compile_stats *st = &c->stats;
+  unsigned top = 0;
+  for (size_t k = 0; k < img->n; k++) {
+    const uint64_t w = img->words[k];
+    const int uses = fp3_opc_uses(fp3_insn_opc(w));
+    const unsigned r[3] = {fp3_insn_rd(w), fp3_insn_ra(w), fp3_insn_rb(w)};
+    const int used[3] = {FP3_USES_RD, FP3_USES_RA, FP3_USES_RB};
+    for (int f = 0; f < 3; f++)
+      if (uses > 0 && (uses & used[f]) && r[f] + 1 > top) top = r[f] + 1;
+  }
+  for (unsigned q = 0; q < img->nbind_in; q++)
+    if ((unsigned)img->bind_in[q].reg + 1 > top) top = (unsigned)img->bind_in[q].reg + 1;
+  st->body_insns = st->literal_body_insns = fp3_image_body_insns(img);
+  size_t endi_at = 0;
+  for (size_t k = 0; k < img->n; k++)
+    if (fp3_insn_opc(img->words[k]) == FP3_OP_ENDI) endi_at = k;
+  for (size_t k = endi_at + 1 - st->body_insns; st->body_insns && k <= endi_at; k++) {
+    const unsigned opc = fp3_insn_opc(img->words[k]);
+    st->body_arith += opc == FP3_OP_ADD || opc == FP3_OP_SUB || opc == FP3_OP_MUL;
+  }
+  st->prologue_insns = (unsigned)img->n - st->body_insns;
+  st->regs = st->regs_needed = top;
+  st->num_regs = o->num_regs > top ? o->num_regs : top;
+  fp3_estimate_cycles(img, o, 3, &st->est_cycles_first, &st->est_cycles_later);
+  *outp = c;
+  return 0;
+fail:
+  fp3_compiled_free(c);
+  return -1;
+}
+
 unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i) {
   return (unsigned)c->state_reg[i];
 }
@@ -1450,8 +1696,9 @@ size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y
                                 unsigned *reg, uint32_t *val, size_t max) {
   const builder *b = &c->b;
   const fp3_model *m = b->model;
-  float yc[MAX_STATE] = {0}; /* the carried values: the state, compensations 0 */
+  float yc[MAX_STATE] = {0}; /* the carried values: the state, then the others */
   for (unsigned k = 0; k < m->nstate; k++) yc[k] = y0[k];
+  fp3_model_start_literal(m, b->integ, in, yc);
   begin_carried(c, in, yc);
   size_t w = 0;
   for (int k = 0; k < b->nin && w < max; k++)

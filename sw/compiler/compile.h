@@ -214,6 +214,24 @@ int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_comp
                       const unsigned char *param_zero, fp3_compiled **out, char *msg,
                       size_t n);
 
+/* A hand-written program as the program of model m: img (assembled from
+ * `program`, named in messages) names its integrator (`.integrator`) and
+ * binds its registers by name (asm.h `.in` / `.out`).  The result is used
+ * as a compiled model's (fp3_compiled_model_start writes the bound
+ * inputs, fp3_compiled_model_step is the integrator's literal golden
+ * model, fp3_model_step_literal, as the IR of a --literal compile
+ * evaluates it), and so runs wherever a compiled program runs.  Its
+ * stats come from the image: body_insns (fp3_image_body_insns), the
+ * registers it names, the cycle estimate for the latencies of o.
+ * Carried values the program does not bind (compensations) have no
+ * register (fp3_compiled_state_reg gives UINT_MAX).  Returns 0 and
+ * *out, or -1 with "PROGRAM:LINE: reason": no or an unknown .integrator,
+ * one that does not apply to m, an `.in` name that is no param, state
+ * variable (NAME or NAME0) or parameter-only let of m, an `.out` name
+ * that is no state variable, a state variable without `.out`. */
+int fp3_compile_bind(const fp3_model *m, const fp3_image *img, const char *program,
+                     const fp3_compile_opts *o, fp3_compiled **out, char *msg, size_t n);
+
 /* Start the golden model of a compiled model for one object: in[] = h and
  * the params (m->nparam values), y0 the initial state; the host values
  * are computed in the caller's FP environment (fpenv_enter for the cores'

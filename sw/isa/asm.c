@@ -337,27 +337,45 @@ static void do_binding(asm_state *st, int is_in, char **ops, int nops,
               dir, nops);
     return;
   }
-  int id = is_in ? fp3_in_lookup(ops[0]) : fp3_out_lookup(ops[0]);
-  if (id < 0) {
-    add_error(st, line, "unknown %s name '%s' (expected %s)", dir, ops[0],
-              is_in ? FP3_IN_NAMES_TEXT : "v s");
+  const char *name = ops[0];
+  if (!is_ident(name[0] == '-' && is_in ? name + 1 : name) || strchr(name, '.')) {
+    add_error(st, line, "bad %s name '%s': a model's param, state variable (NAME0: its "
+              "initial value) or parameter-only let%s", dir, name,
+              is_in ? ", '-' before it for the negated value" : "");
     return;
   }
   unsigned reg;
   if (parse_reg(st, ops[1], line, &reg)) return;
-  int *slots = is_in ? st->img->in_reg : st->img->out_reg;
-  int count = is_in ? FP3_IN_COUNT : FP3_OUT_COUNT;
-  if (slots[id] >= 0) {
-    add_error(st, line, "duplicate %s %s", dir, ops[0]);
-    return;
-  }
-  for (int i = 0; i < count; i++)
-    if (slots[i] == (int)reg) {
-      add_error(st, line, "r%u is already bound by %s %s", reg, dir,
-                is_in ? fp3_in_name(i) : fp3_out_name(i));
+  char why[160];
+  if (fp3_image_bind(st->img, is_in, name, (int)reg, line, why, sizeof why))
+    add_error(st, line, "%s", why);
+}
+
+/* `.model "FILE"` (beside the program, as .include finds files) and
+ * `.integrator NAME`: what the program computes. */
+static void do_model(asm_state *st, int is_model, char **ops, int nops, int line) {
+  const char *arg = nops == 1 ? ops[0] : "";
+  size_t len = strlen(arg);
+  if (is_model) {
+    if (nops != 1 || len < 3 || arg[0] != '"' || arg[len - 1] != '"') {
+      add_error(st, line, ".model takes one file name in double quotes");
       return;
     }
-  slots[id] = (int)reg;
+    const char *slash = strrchr(st->fname, '/');
+    int dlen = (arg[1] != '/' && slash) ? (int)(slash - st->fname) + 1 : 0;
+    if ((size_t)dlen + len - 2 >= sizeof st->img->model) {
+      add_error(st, line, ".model: the path is too long");
+      return;
+    }
+    snprintf(st->img->model, sizeof st->img->model, "%.*s%.*s", dlen, st->fname,
+             (int)len - 2, arg + 1);
+  } else {
+    if (nops != 1 || !is_ident(arg) || len >= sizeof st->img->integrator) {
+      add_error(st, line, ".integrator takes one integrator name");
+      return;
+    }
+    memcpy(st->img->integrator, arg, len + 1);
+  }
 }
 
 static void do_include(asm_state *st, char **ops, int nops, int line);
@@ -412,6 +430,8 @@ static void do_directive(asm_state *st, const char *dir, char **ops, int nops,
     do_binding(st, 1, ops, nops, line);
   } else if (strcasecmp(dir, ".out") == 0) {
     do_binding(st, 0, ops, nops, line);
+  } else if (strcasecmp(dir, ".model") == 0 || strcasecmp(dir, ".integrator") == 0) {
+    do_model(st, strcasecmp(dir, ".model") == 0, ops, nops, line);
   } else if (strcasecmp(dir, ".include") == 0) {
     do_include(st, ops, nops, line);
   } else if (strcasecmp(dir, ".word") == 0) {

@@ -13,10 +13,20 @@
  *   beq ra, rb, LABEL          LABEL must lie ahead of the beq
  *   halt / nop
  *   .reg NAME rN               register alias (`.reg NAME, rN` too)
- *   .in NAME, rN               host writes parameter NAME (T C m minv h
- *                              v0 s0, and the folded inputs hm hmT hmC
- *                              of image.h) into rN before the run
- *   .out NAME, rN              rN holds result NAME (v s)
+ *   .in NAME, rN               the host writes NAME into rN before the
+ *                              run: a param of the program's model, a
+ *                              state variable's initial value (NAME or
+ *                              NAME0), a parameter-only let (minv), or
+ *                              -NAME, the same with its sign bit flipped;
+ *                              the ship scene compiler's folded inputs hm
+ *                              hmT hmC (image.h)
+ *   .out NAME, rN              rN holds state variable NAME after every
+ *                              integration
+ *   .model "FILE"              the model the program integrates (a
+ *                              relative FILE is found beside the program)
+ *   .integrator NAME           the model integrator whose literal golden
+ *                              model the program computes, operation for
+ *                              operation (fp3_model_step_literal)
  *   .regs N                    the program is for a build with NUM_REGS >= N
  *                              (2 .. 256): registers r0 .. r(N-1); before the
  *                              first register named.  Engines check each

@@ -48,6 +48,39 @@ int fp3_out_lookup(const char *name) {
   return -1;
 }
 
+int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int line,
+                   char *why, size_t n) {
+  const char *dir = is_in ? ".in" : ".out";
+  fp3_binding *list = is_in ? img->bind_in : img->bind_out;
+  unsigned *count = is_in ? &img->nbind_in : &img->nbind_out;
+  if (strlen(name) >= FP3_BIND_NAME_LEN) {
+    snprintf(why, n, "%s name '%s' longer than %d characters", dir, name, FP3_BIND_NAME_LEN - 1);
+    return -1;
+  }
+  for (unsigned i = 0; i < *count; i++) {
+    if (strcmp(list[i].name, name) == 0) {
+      snprintf(why, n, "duplicate %s %s", dir, name);
+      return -1;
+    }
+    if (list[i].reg == reg) {
+      snprintf(why, n, "r%d is already bound by %s %s", reg, dir, list[i].name);
+      return -1;
+    }
+  }
+  if (*count == FP3_MAX_BINDINGS) {
+    snprintf(why, n, "more than %d %s bindings", FP3_MAX_BINDINGS, dir);
+    return -1;
+  }
+  fp3_binding *b = &list[(*count)++];
+  snprintf(b->name, sizeof b->name, "%s", name);
+  b->reg = reg;
+  b->line = line;
+  /* the table slot of a name the tables know; -v0 is nv0 */
+  int id = is_in ? fp3_in_lookup(strcmp(name, "-v0") == 0 ? "nv0" : name) : fp3_out_lookup(name);
+  if (id >= 0) (is_in ? img->in_reg : img->out_reg)[id] = reg;
+  return 0;
+}
+
 uint64_t fp3_insn_make(unsigned opc, unsigned rd, unsigned ra, unsigned rb,
                        uint32_t imm) {
   const uint64_t rmask = (1u << FP3_REG_WIDTH) - 1u;
@@ -170,19 +203,15 @@ int fp3_image_validate(const fp3_image *img, char *msg, size_t n) {
       return -1;
     }
   }
-  for (int i = 0; i < FP3_IN_COUNT; i++) {
-    if (img->in_reg[i] >= FP3_DEFAULT_NUM_REGS) {
-      snprintf(msg, n, ".in %s: register r%d out of range", in_names[i],
-               img->in_reg[i]);
-      return -1;
-    }
-  }
-  for (int i = 0; i < FP3_OUT_COUNT; i++) {
-    if (img->out_reg[i] >= FP3_DEFAULT_NUM_REGS) {
-      snprintf(msg, n, ".out %s: register r%d out of range", out_names[i],
-               img->out_reg[i]);
-      return -1;
-    }
+  for (int side = 0; side < 2; side++) {
+    const fp3_binding *list = side ? img->bind_out : img->bind_in;
+    const unsigned count = side ? img->nbind_out : img->nbind_in;
+    for (unsigned i = 0; i < count; i++)
+      if (list[i].reg >= FP3_DEFAULT_NUM_REGS) {
+        snprintf(msg, n, "%s %s: register r%d out of range", side ? ".out" : ".in",
+                 list[i].name, list[i].reg);
+        return -1;
+      }
   }
   return 0;
 }
@@ -211,13 +240,12 @@ int fp3_image_write(const fp3_image *img, const char *path,
               img->n) < 0)
     bad = 1;
   if (source && fprintf(f, "// source: %s\n", source) < 0) bad = 1;
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (img->in_reg[i] >= 0 &&
-        fprintf(f, "// .in %s r%d\n", in_names[i], img->in_reg[i]) < 0)
-      bad = 1;
-  for (int i = 0; i < FP3_OUT_COUNT; i++)
-    if (img->out_reg[i] >= 0 &&
-        fprintf(f, "// .out %s r%d\n", out_names[i], img->out_reg[i]) < 0)
+  if (img->model[0] && fprintf(f, "// .model %s\n", img->model) < 0) bad = 1;
+  if (img->integrator[0] && fprintf(f, "// .integrator %s\n", img->integrator) < 0) bad = 1;
+  for (unsigned i = 0; i < img->nbind_in; i++)
+    if (fprintf(f, "// .in %s r%d\n", img->bind_in[i].name, img->bind_in[i].reg) < 0) bad = 1;
+  for (unsigned i = 0; i < img->nbind_out; i++)
+    if (fprintf(f, "// .out %s r%d\n", img->bind_out[i].name, img->bind_out[i].reg) < 0)
       bad = 1;
   for (size_t i = 0; i < img->n && !bad; i++) {
     int r;
@@ -267,10 +295,26 @@ static int parse_reg_token(const char *s, int *reg) {
  * text.  Returns 0 or -1 with a reason. */
 static int read_comment(const char *c, fp3_image *img, int *word_line,
                         char *why, size_t n) {
-  char kind[8], name[16], reg[16], extra[2];
+  char kind[16], name[FP3_BIND_NAME_LEN + 8], reg[16], extra[2];
   while (*c == ' ' || *c == '\t') c++;
   if (c[0] == '.') {
-    int k = sscanf(c, "%7s %15s %15s %1s", kind, name, reg, extra);
+    int k = sscanf(c, "%15s %39s %15s %1s", kind, name, reg, extra);
+    if (strcmp(kind, ".model") == 0 || strcmp(kind, ".integrator") == 0) {
+      const int is_model = kind[1] == 'm';
+      char *dst = is_model ? img->model : img->integrator;
+      const size_t cap = is_model ? sizeof img->model : sizeof img->integrator;
+      const char *v = c + strlen(kind);
+      while (*v == ' ' || *v == '\t') v++;
+      size_t len = strcspn(v, "\r\n");
+      while (len && (v[len - 1] == ' ' || v[len - 1] == '\t')) len--;
+      if (k < 2 || len >= cap) {
+        snprintf(why, n, "malformed %s comment '%s'", kind, c);
+        return -1;
+      }
+      memcpy(dst, v, len);
+      dst[len] = '\0';
+      return 0;
+    }
     int is_in = strcmp(kind, ".in") == 0, is_out = strcmp(kind, ".out") == 0;
     if (!is_in && !is_out) return 0; /* some other remark */
     int r;
@@ -278,18 +322,14 @@ static int read_comment(const char *c, fp3_image *img, int *word_line,
       snprintf(why, n, "malformed binding comment '%s'", c);
       return -1;
     }
-    int id = is_in ? fp3_in_lookup(name) : fp3_out_lookup(name);
-    if (id < 0) {
-      snprintf(why, n, "unknown %s parameter '%s'", kind, name);
+    const char *id = name[0] == '-' ? name + 1 : name;
+    int ok = (isalpha((unsigned char)id[0]) || id[0] == '_') && !(name[0] == '-' && is_out);
+    for (const char *q = id; ok && *q; q++) ok = isalnum((unsigned char)*q) || *q == '_';
+    if (!ok) {
+      snprintf(why, n, "bad %s name '%s'", kind, name);
       return -1;
     }
-    int *slot = is_in ? &img->in_reg[id] : &img->out_reg[id];
-    if (*slot >= 0) {
-      snprintf(why, n, "duplicate %s %s", kind, name);
-      return -1;
-    }
-    *slot = r;
-    return 0;
+    return fp3_image_bind(img, is_in, name, r, 0, why, n);
   }
   if (c[0] == '@' && word_line) {
     unsigned long addr;

@@ -68,15 +68,41 @@ enum fp3_out_param {
   FP3_OUT_COUNT
 };
 
-/* A program image.  in_reg / out_reg: register bound to each parameter,
- * -1 when the program does not bind it. */
+/* Bindings by name (`.in NAME, rN` / `.out NAME, rN`), in program order.
+ * A name is an identifier, an `.in` name may carry a leading '-' (the
+ * value with its sign bit flipped).  The model binder
+ * (fp3_compile_bind, compile.h) resolves them against a model: a param,
+ * a state variable (or NAME0, its initial value), a parameter-only let. */
+#define FP3_MAX_BINDINGS 64
+#define FP3_BIND_NAME_LEN 32
+typedef struct fp3_binding {
+  char name[FP3_BIND_NAME_LEN];
+  int reg;
+  int line; /* source line, 0: unknown (read from an image file) */
+} fp3_binding;
+
+/* A program image.  in_reg / out_reg: register bound to each parameter of
+ * the tables above, -1 when the program does not bind it (the same
+ * bindings as bind_in / bind_out where the names are the tables'). */
 typedef struct fp3_image {
   uint64_t words[FP3_DEFAULT_IMEM_DEPTH];
   int line[FP3_DEFAULT_IMEM_DEPTH]; /* source line of each word, 0: unknown */
   size_t n;                         /* words used                          */
   int in_reg[FP3_IN_COUNT];
   int out_reg[FP3_OUT_COUNT];
+  fp3_binding bind_in[FP3_MAX_BINDINGS], bind_out[FP3_MAX_BINDINGS];
+  unsigned nbind_in, nbind_out;
+  char model[256];     /* `.model "FILE"`: the model the program integrates
+                          (a path as the program's reader opens it), or "" */
+  char integrator[32]; /* `.integrator NAME`: the model integrator whose
+                          literal golden model the program computes, or "" */
 } fp3_image;
+
+/* Record binding `name` -> reg (is_in: an input, else a result) in both
+ * forms.  0, or -1 with the reason in why: a name given twice, a register
+ * bound twice on the same side, more than FP3_MAX_BINDINGS. */
+int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int line,
+                   char *why, size_t n);
 
 /* An empty image: no words, nothing bound. */
 void fp3_image_init(fp3_image *img);

@@ -664,12 +664,143 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
   for (unsigned i = 0; i < m->nstate; i++) f[i] = val[m->deriv[i]];
 }
 
-const char *fp3_model_integrators(void) { return "euler rk2 rk4 rk4comp symeuler verlet"; }
+/* The table of integrators: name, carried values per state variable (2:
+ * a compensation or an acceleration beside it), the shape it needs. */
+enum { NEED_NONE, NEED_SPLIT, NEED_VERLET, NEED_PAIRED };
+static const struct {
+  const char *name;
+  unsigned carried;
+  int need;
+} integ_table[] = {
+    {"euler", 1, NEED_NONE},      {"rk2", 1, NEED_NONE},        {"rk4", 1, NEED_NONE},
+    {"rk4comp", 2, NEED_NONE},    {"symeuler", 1, NEED_SPLIT},  {"verlet", 1, NEED_VERLET},
+    {"rk4se", 1, NEED_SPLIT},     {"rk4secomp", 2, NEED_SPLIT}, {"rk4vs", 1, NEED_SPLIT},
+    {"rk4vscomp", 2, NEED_SPLIT}, {"verletp", 2, NEED_PAIRED},
+};
+#define INTEG_COUNT (sizeof integ_table / sizeof integ_table[0])
 
-int fp3_model_integrator_known(const char *name) {
-  return strcmp(name, "euler") == 0 || strcmp(name, "rk2") == 0 || strcmp(name, "rk4") == 0 ||
-         strcmp(name, "rk4comp") == 0 || strcmp(name, "symeuler") == 0 ||
-         strcmp(name, "verlet") == 0;
+static int integ_index(const char *name) {
+  for (unsigned i = 0; i < INTEG_COUNT; i++)
+    if (strcmp(integ_table[i].name, name) == 0) return (int)i;
+  return -1;
+}
+
+const char *fp3_model_integrators(void) {
+  return "euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp";
+}
+
+int fp3_model_integrator_known(const char *name) { return integ_index(name) >= 0; }
+
+unsigned fp3_model_carried(const fp3_model *m, const char *integ) {
+  int k = integ_index(integ);
+  return m->nstate * (k >= 0 ? integ_table[k].carried : 1u);
+}
+
+int fp3_model_pair(const fp3_model *m, unsigned pos) {
+  if (pos >= m->nstate || m->role[pos] != FP3_MR_POSITION) return -1;
+  const fp3_mexpr *x = &m->node[m->deriv[pos]];
+  if (x->kind != FP3_ME_STATE || m->role[x->id] != FP3_MR_VELOCITY) return -1;
+  return x->id;
+}
+
+int fp3_model_integrator_applies(const fp3_model *m, const char *integ) {
+  int k = integ_index(integ);
+  if (k < 0) return 0;
+  switch (integ_table[k].need) {
+  case NEED_SPLIT: return fp3_model_split(m);
+  case NEED_VERLET: return fp3_model_verlet_ok(m, NULL, NULL);
+  case NEED_PAIRED:
+    if (!fp3_model_split(m)) return 0;
+    for (unsigned i = 0; i < m->nstate; i++)
+      if (m->role[i] == FP3_MR_POSITION && fp3_model_pair(m, i) < 0) return 0;
+    return 1;
+  default: return 1;
+  }
+}
+
+void fp3_model_start_literal(const fp3_model *m, const char *integ, const float *in,
+                             float *y) {
+  const unsigned ns = m->nstate, carried = fp3_model_carried(m, integ);
+  for (unsigned i = ns; i < carried; i++) y[i] = 0.0f;
+  if (strcmp(integ, "verletp") == 0) { /* the acceleration at the start */
+    float val[FP3_MODEL_MAX_NODES], f[FP3_MODEL_MAX_VARS];
+    fp3_model_eval_f(m, in, y, f, val);
+    for (unsigned i = 0; i < ns; i++)
+      if (m->role[i] == FP3_MR_VELOCITY) y[ns + i] = f[i];
+  }
+}
+
+/* y += d, Kahan-compensated (Kahan 1965): *c, carried from one
+ * integration to the next, holds -(what the rounding has lost so far). */
+static void kahan_add(float *y, float *c, float d) {
+  const float yk = d - *c;
+  const float t = *y + yk;
+  const float z = t - *y;
+  *c = z - yk;
+  *y = t;
+}
+
+/* rk4se, rk4secomp, rk4vs, rk4vscomp (model.h): the RK4 stages of the
+ * velocities (se: positions held), then the positions. */
+static void step_rk4_split(const fp3_model *m, int se, int comp, const float *in, float *y) {
+  const unsigned ns = m->nstate;
+  const float h = in[0];
+  float val[FP3_MODEL_MAX_NODES];
+  float f[4][FP3_MODEL_MAX_VARS], t[FP3_MODEL_MAX_VARS], k[3][FP3_MODEL_MAX_VARS];
+  fp3_model_eval_f(m, in, y, f[0], val);
+  for (unsigned s = 0; s < 3; s++) {
+    for (unsigned j = 0; j < ns; j++) k[s][j] = h * f[s][j];
+    for (unsigned j = 0; j < ns; j++)
+      t[j] = se && m->role[j] == FP3_MR_POSITION ? y[j]
+             : s < 2                             ? y[j] + 0.5f * k[s][j]
+                                                 : y[j] + k[s][j];
+    fp3_model_eval_f(m, in, t, f[s + 1], val);
+  }
+  for (unsigned i = 0; i < ns; i++) {
+    float d;
+    if (m->role[i] == FP3_MR_VELOCITY) {
+      const float k4 = h * f[3][i];
+      d = 0.16666667f * (((k[0][i] + 2.0f * k[1][i]) + 2.0f * k[2][i]) + k4);
+    } else if (!se) { /* the s-stages of RK4 on x' = f: h/6 (f1 + 2 (f2 + f3) + f4) */
+      const float h6 = h * 0.16666667f;
+      d = h6 * ((f[0][i] + 2.0f * (f[1][i] + f[2][i])) + f[3][i]);
+    } else {
+      continue;
+    }
+    if (comp) kahan_add(&y[i], &y[ns + i], d);
+    else y[i] = y[i] + d;
+  }
+  if (!se) return;
+  fp3_model_eval_f(m, in, y, f[0], val); /* positions by the new velocities */
+  for (unsigned i = 0; i < ns; i++)
+    if (m->role[i] == FP3_MR_POSITION) {
+      const float d = h * f[0][i];
+      if (comp) kahan_add(&y[i], &y[ns + i], d);
+      else y[i] = y[i] + d;
+    }
+}
+
+/* verletp (model.h): positions by h u + h^2/2 a, an Euler-predicted
+ * velocity, the trapezoid of the accelerations, a carried. */
+static void step_verletp(const fp3_model *m, const float *in, float *y) {
+  const unsigned ns = m->nstate;
+  const float h = in[0], hh = 0.5f * h, hh2 = 0.5f * (h * h);
+  float val[FP3_MODEL_MAX_NODES], f[FP3_MODEL_MAX_VARS], t[FP3_MODEL_MAX_VARS];
+  const float *a = y + ns;
+  for (unsigned i = 0; i < ns; i++) {
+    if (m->role[i] == FP3_MR_POSITION) {
+      const unsigned p = (unsigned)fp3_model_pair(m, i);
+      t[i] = y[i] + ((h * y[p]) + (hh2 * a[p]));
+    } else {
+      t[i] = y[i] + h * a[i];
+    }
+  }
+  fp3_model_eval_f(m, in, t, f, val); /* at the new positions, predicted velocities */
+  for (unsigned i = 0; i < ns; i++)
+    y[i] = m->role[i] == FP3_MR_POSITION ? t[i] : y[i] + hh * (a[i] + f[i]);
+  fp3_model_eval_f(m, in, y, f, val); /* the next integration's acceleration */
+  for (unsigned i = 0; i < ns; i++)
+    if (m->role[i] == FP3_MR_VELOCITY) y[ns + i] = f[i];
 }
 
 int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *in,
@@ -721,6 +852,12 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
     fp3_model_eval_f(m, in, y, f, val);
     for (unsigned i = 0; i < ns; i++)
       if (m->role[i] == FP3_MR_POSITION) y[i] = y[i] + h * f[i];
+  } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
+    if (!fp3_model_integrator_applies(m, integ)) return -1;
+    step_rk4_split(m, integ[4] == 's' && integ[5] == 'e', strstr(integ, "comp") != NULL, in, y);
+  } else if (strcmp(integ, "verletp") == 0) {
+    if (!fp3_model_integrator_applies(m, integ)) return -1;
+    step_verletp(m, in, y);
   } else if (strcmp(integ, "verlet") == 0 && fp3_model_verlet_ok(m, NULL, NULL)) {
     const float hh = 0.5f * h;
     fp3_model_eval_f(m, in, y, f, val); /* kick: half a step of velocity */

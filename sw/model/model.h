@@ -117,9 +117,33 @@ const char *fp3_mexpr_op_name(int kind);
 /* ---- the literal golden model (C binary32) ------------------------------- */
 
 /* Integrators of the literal golden model: "euler rk2 rk4 rk4comp symeuler
- * verlet". */
+ * verlet rk4se rk4secomp rk4vs rk4vscomp verletp" (fp3_model_step_literal
+ * defines each). */
 const char *fp3_model_integrators(void);
 int fp3_model_integrator_known(const char *name);
+
+/* 1 if integrator `integ` is defined for model m's shape: symeuler,
+ * rk4se, rk4secomp, rk4vs and rk4vscomp need the split state
+ * (fp3_model_split), verlet fp3_model_verlet_ok, verletp the split state
+ * with every position's derivative a velocity (fp3_model_pair); the
+ * others take any model.  0 for an unknown name. */
+int fp3_model_integrator_applies(const fp3_model *m, const char *integ);
+
+/* Values an integration of `integ` carries from one integration to the
+ * next: nstate, or 2 nstate for rk4comp, rk4secomp, rk4vscomp (a Kahan
+ * compensation per state variable after the state) and verletp (an
+ * acceleration per velocity after the state; 0 in a position's slot). */
+unsigned fp3_model_carried(const fp3_model *m, const char *integ);
+
+/* The velocity that position `pos` moves with, when its derivative is
+ * exactly that state variable (x' = u); else -1. */
+int fp3_model_pair(const fp3_model *m, unsigned pos);
+
+/* Start a literal integration: y holds the initial state (nstate values)
+ * and gets the other carried values (fp3_model_carried): compensations 0,
+ * verletp's accelerations f_u(y), in the caller's FP environment. */
+void fp3_model_start_literal(const fp3_model *m, const char *integ, const float *in,
+                             float *y);
 
 /* Derivatives f(y) of the model in binary32, the tree's operations in the
  * literal meaning; in[] holds h and the params (in[0] = h), y the state;
@@ -145,9 +169,26 @@ void fp3_model_eval_f(const fp3_model *m, const float *in, const float *y, float
  *             u); u_i += hh f_i(x, u) at the new x (needs
  *             fp3_model_verlet_ok: accelerations free of velocities;
  *             second order, symplectic, time-reversible)
+ * The split-state forms of the paper's ship programs (programs/ship_*.s;
+ * velocities u, positions x; sixth = 0.16666667):
+ *   rk4se:    the velocities by rk4 with the positions held, then the
+ *             positions by the new velocities, x_i += h f_i(x, u_new)
+ *             (the paper's RK4: first order in position)
+ *   rk4secomp: rk4se with every update y_i += d_i Kahan-compensated as
+ *             rk4comp's
+ *   rk4vs:    rk4 on every state variable, each position's increment
+ *             (h sixth) ((f1 + 2 (f2 + f3)) + f4) of its derivatives at
+ *             the four stages (h sixth computed once)
+ *   rk4vscomp: rk4vs with the updates Kahan-compensated
+ *   verletp:  velocity Verlet for velocity-dependent forces, with an
+ *             Euler-predicted velocity (needs every position's derivative
+ *             a velocity, x' = u): a carried (a = f_u(y) at the start),
+ *             hh = 0.5 h, hh2 = 0.5 (h h); x_i += (h u + hh2 a);
+ *             up = u + h a; u += hh (a + f_u(x_new, up)); a = f_u(y_new)
+ * y holds fp3_model_carried values (fp3_model_start_literal fills them).
  * Each product and sum one binary32 operation, in the order written.
- * Returns 0, or -1 for an unknown integrator, symeuler on an unsplit
- * model or verlet where fp3_model_verlet_ok is 0.  Runs in the caller's FP environment (fpenv_enter for RTZ/FTZ). */
+ * Returns 0, or -1 for an unknown integrator or one that does not apply
+ * to m (fp3_model_integrator_applies).  Runs in the caller's FP environment (fpenv_enter for RTZ/FTZ). */
 int fp3_model_step_literal(const fp3_model *m, const char *integrator, const float *in,
                            float *y);
 

@@ -303,6 +303,14 @@ int fp3_mscene_generate(fp3_model *m, const float *in, const float *y0, size_t n
   return 0;
 }
 
+void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero) {
+  const fp3_model *m = sc->model;
+  for (unsigned k = 0; k < m->nparam; k++) {
+    zero[k] = sc->n > 0;
+    for (size_t i = 0; i < sc->n && zero[k]; i++) zero[k] = sc->in[i * m->nparam + k] == 0.0f;
+  }
+}
+
 void fp3_mscene_free(fp3_mscene *s) {
   free(s->model);
   free(s->in);

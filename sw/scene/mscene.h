@@ -54,6 +54,10 @@ int fp3_scene_is_model(const char *path);
  * not finite; no objects. */
 int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n);
 
+/* zero[k] = 1 for each param k of sc's model that is zero in every object
+ * (a term the compiler may drop, fp3_compile_model's param_zero), else 0. */
+void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero);
+
 /* n objects of model m (loaded by the caller, owned by s afterwards), all
  * from base values in[] (h and params) and y0[] (states), each non-h value
  * of object i >= 1 scaled by its own factor uniform in [0.75, 1.25] from a
