@@ -318,9 +318,11 @@ static void test_defaults(void **st) {
   for (size_t i = 0; i < NOBJS; i++) {
     m = load(objs[i].file);
     for (unsigned k = 0; k < m->nparam; k++)
-      if (!m->param_has_def[k]) fail_msg("%s: param %s has no default", objs[i].file, m->param[k]);
+      if (!m->param_has_def[k])
+        fail_msg("%s: param %s has no default", objs[i].file, m->param[k]);
     for (unsigned k = 0; k < m->nstate; k++)
-      if (!m->state_has_def[k]) fail_msg("%s: state %s has no default", objs[i].file, m->state[k]);
+      if (!m->state_has_def[k])
+        fail_msg("%s: state %s has no default", objs[i].file, m->state[k]);
     drop(m);
   }
   m = load("models/ship.fp3m"); /* the paper's default scene */
@@ -908,7 +910,8 @@ static void test_lanes(void **st) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
-      cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_defaults, teardown),
+      cmocka_unit_test_teardown(test_errors, teardown),
+      cmocka_unit_test_teardown(test_defaults, teardown),
       cmocka_unit_test_teardown(test_ship_literal, teardown),
       cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
       cmocka_unit_test_teardown(test_rigidbody_invariants, teardown),

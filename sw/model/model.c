@@ -352,7 +352,9 @@ static int default_value(parser *ps, const char *at, const char *name, unsigned 
   *has = 0;
   if (*ps->p != '=') return 0;
   ps->p++;
-  if (signed_number(ps, "a default is a signed number, finite in binary32 (NAME = NUMBER)", f, d)) return -1;
+  if (signed_number(ps, "a default is a signed number, finite in binary32 (NAME = NUMBER)",
+                    f, d))
+    return -1;
   skip_ws(ps);
   if (*ps->p == '=') return fail(ps, at, "'%s' is given a default twice", name);
   *has = 1;
@@ -375,7 +377,7 @@ static int name_list(parser *ps, int is_param, int role) {
         return fail(ps, at, "'h' is given a default twice (the first at line %d)",
                     m->param_def_line[0]);
       const char *num = ps->p + 1;
-      while (*num == ' ' || *num == '\t') num++;
+      while (*num == ' ' || *num == '\t' || *num == '\r') num++;
       if (default_value(ps, at, name, &m->param_has_def[0], &m->param_def[0],
                         &m->param_def_d[0]))
         return -1;
