@@ -6,7 +6,9 @@
  * uses it: its derivatives are evaluated once (fp3_model_eval_f, every
  * param and state 1.0, so that a node index the parser let through out of
  * range shows as an ASan report), and each variable name is looked up.
+ * Its defaults must be as the parser promises: finite, the step's above 0.
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,6 +39,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (fp3_model_param(&m, m.param[i]) != (int)i) abort();
   for (unsigned i = 0; i < m.nstate; i++)
     if (fp3_model_state(&m, m.state[i]) != (int)i) abort();
+  for (unsigned i = 0; i < m.nparam; i++)
+    if (m.param_has_def[i] > 1 || (m.param_has_def[i] && !isfinite(m.param_def[i]))) abort();
+  for (unsigned i = 0; i < m.nstate; i++)
+    if (m.state_has_def[i] > 1 || (m.state_has_def[i] && !isfinite(m.state_def[i]))) abort();
+  if (m.param_has_def[0] && !(m.param_def[0] > 0.0f)) abort();
   fp3_model_split(&m);
   return 0;
 }

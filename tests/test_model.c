@@ -5,7 +5,9 @@
  *    unary minus, hex floats and named constants give the tree the
  *    grammar says (checked by the literal golden model against the same
  *    formula in plain C); every kind of bad input is refused with
- *    FILE:LINE:COL and its reason;
+ *    FILE:LINE:COL and its reason; defaults (`param k = 40`, `param h =
+ *    STEP`, `position x = 0.5`) are read as const reads a number, leave
+ *    the equations as they are, and every shipped model gives them all;
  *  - the literal golden model: models/ship.fp3m equals the ship golden
  *    model (sw/ref/golden.c) bit for bit in v under rk4 and in v and s
  *    under euler, where the literal forms coincide;
@@ -229,6 +231,21 @@ static void test_errors(void **st) {
       {"position x\nstate v\nx' = v\nv' = 1\n", "a split state needs"},
       {"state x\nconst c = x\nx' = c\n", "t.fp3m:2:11: a const is a number"},
       {"state x\nx' = foo(x)\n", "t.fp3m:2:6: unknown function 'foo'"},
+      /* defaults: a signed number, finite in binary32, once; h only so, > 0 */
+      {"param k = 1e39\nstate x\nx' = k\n", "t.fp3m:1:11: number '1e39' overflows binary32"},
+      {"param k = inf\nstate x\nx' = k\n", "t.fp3m:1:11: a default is a signed number"},
+      {"param k = x\nstate x\nx' = k\n", "t.fp3m:1:11: a default is a signed number"},
+      {"state x =\nx' = 1\n", "t.fp3m:1:10: a default is a signed number"},
+      {"position x = 0.5q\nvelocity v\nx' = v\nv' = 1\n", "t.fp3m:1:14: bad number '0.5q'"},
+      {"param k = 1 = 2\nstate x\nx' = k\n", "t.fp3m:1:7: 'k' is given a default twice"},
+      {"param h = 0.5\nstate x\nparam a, h = 0.25\nx' = a\n",
+       "t.fp3m:3:10: 'h' is given a default twice (the first at line 1)"},
+      {"param h = 0\nstate x\nx' = 1\n", "t.fp3m:1:11: the step h must be above 0"},
+      {"param h = -0.5\nstate x\nx' = 1\n",
+       "t.fp3m:1:11: the step h must be above 0 (its default is -0.5)"},
+      {"param h = -0\nstate x\nx' = 1\n", "t.fp3m:1:11: the step h must be above 0"},
+      {"state h = 1\nh' = 1\n", "t.fp3m:1:7: 'h' is reserved"},
+      {"param k = 2 3\nstate x\nx' = k\n", "t.fp3m:1:13: unexpected '3'"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
     fp3_model *m = own(malloc(sizeof *m), free);
@@ -243,6 +260,79 @@ static void test_errors(void **st) {
   fp3_model m;
   assert_int_equal(fp3_model_load("models/no-such.fp3m", &m, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "models/no-such.fp3m: cannot read"));
+}
+
+/* Defaults: `param NAME = NUMBER` (h too), `state NAME = NUMBER`: flags,
+ * binary32 values as strtof and const read them (a minus flips the sign
+ * bit), the strtod value; the equations are the same with or without. */
+static void test_defaults(void **st) {
+  (void)st;
+  static const char with[] = "param k = 40, c, m = 0x1.8p1\n"
+                             "param h = 0.0166666675   # 1/60 in binary32\n"
+                             "position x = -0.5\n"
+                             "velocity v, u = -0\n"
+                             "x' = v\nv' = -(k*x + c*v) / m\nu' = 1\n";
+  static const char without[] = "param k, c, m\n\nposition x\nvelocity v, u\n"
+                                "x' = v\nv' = -(k*x + c*v) / m\nu' = 1\n";
+  fp3_model *m = parse(with), *b = parse(without);
+  assert_int_equal(m->nparam, 4); /* h, k, c, m */
+  assert_int_equal(m->param_has_def[0], 1);
+  assert_int_equal(fpref_bits(m->param_def[0]), fpref_bits(1.0f / 60.0f));
+  assert_int_equal(m->param_def_line[0], 2);
+  assert_int_equal(m->param_line[0], 0);
+  assert_int_equal(m->param_has_def[1], 1);
+  assert_true(m->param_def[1] == 40.0f && m->param_def_d[1] == 40.0);
+  assert_int_equal(m->param_def_line[1], 1);
+  assert_int_equal(m->param_has_def[2], 0);
+  assert_int_equal(m->param_def_line[2], 0);
+  assert_true(m->param_has_def[3] && m->param_def[3] == 3.0f);
+  assert_true(m->state_has_def[0] && m->state_def[0] == -0.5f && m->state_def_d[0] == -0.5);
+  assert_int_equal(m->state_has_def[1], 0);
+  assert_true(m->state_has_def[2]);
+  assert_int_equal(fpref_bits(m->state_def[2]), 0x80000000u); /* -0 is -0 */
+  assert_true(m->state_def_d[2] == 0.0 && signbit(m->state_def_d[2]));
+  /* the double keeps what binary32 rounds: 0.1 */
+  fp3_model *d = parse("state x = 0.1\nx' = 1\n");
+  assert_true(d->state_def[0] == 0.1f && d->state_def_d[0] == 0.1);
+  drop(d);
+  /* the same equations, node for node */
+  assert_int_equal(m->nn, b->nn);
+  for (unsigned i = 0; i < m->nn; i++) {
+    const fp3_mexpr *x = &m->node[i], *y = &b->node[i];
+    assert_true(x->kind == y->kind && x->a == y->a && x->b == y->b && x->id == y->id &&
+                x->bits == y->bits && x->dval == y->dval && x->exact_only == y->exact_only);
+  }
+  assert_memory_equal(m->deriv, b->deriv, sizeof m->deriv);
+  drop(b);
+  drop(m);
+  /* mixed, and h not named: h has no default */
+  m = parse("param T, C = 5000\nstate v\nv' = T - C*v\n");
+  assert_false(m->param_has_def[0]);
+  assert_false(m->param_has_def[1]);
+  assert_true(m->param_has_def[2] && m->param_def[2] == 5000.0f);
+  assert_false(m->state_has_def[0]);
+  drop(m);
+  /* a const still takes its signed number as before */
+  m = parse("const k = - 0x1p-2\nstate x\nx' = k\n");
+  assert_int_equal(m->node[m->def_node[0]].bits, fpref_bits(-0.25f));
+  drop(m);
+  /* every shipped model gives every value: fp3 run --model needs no --set */
+  for (size_t i = 0; i < NOBJS; i++) {
+    m = load(objs[i].file);
+    for (unsigned k = 0; k < m->nparam; k++)
+      if (!m->param_has_def[k])
+        fail_msg("%s: param %s has no default", objs[i].file, m->param[k]);
+    for (unsigned k = 0; k < m->nstate; k++)
+      if (!m->state_has_def[k])
+        fail_msg("%s: state %s has no default", objs[i].file, m->state[k]);
+    drop(m);
+  }
+  m = load("models/ship.fp3m"); /* the paper's default scene */
+  assert_int_equal(fpref_bits(m->param_def[0]), fpref_bits(1.0f / 60.0f));
+  assert_true(m->param_def[1] == 50000.0f && m->param_def[2] == 5000.0f &&
+              m->param_def[3] == 10000.0f);
+  assert_true(m->state_def[0] == 0.0f && m->state_def[1] == 0.0f);
+  drop(m);
 }
 
 /* models/ship.fp3m under the literal golden model is the ship's golden
@@ -883,7 +973,9 @@ static void test_lanes(void **st) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test_teardown(test_shipped_parse, teardown), cmocka_unit_test_teardown(test_tree, teardown),
-      cmocka_unit_test_teardown(test_errors, teardown),        cmocka_unit_test_teardown(test_ship_literal, teardown),
+      cmocka_unit_test_teardown(test_errors, teardown),
+      cmocka_unit_test_teardown(test_defaults, teardown),
+      cmocka_unit_test_teardown(test_ship_literal, teardown),
       cmocka_unit_test_teardown(test_ship_integrators, teardown),
       cmocka_unit_test_teardown(test_gsl_exact, teardown),     cmocka_unit_test_teardown(test_golden_vs_gsl, teardown),
       cmocka_unit_test_teardown(test_rigidbody_invariants, teardown),

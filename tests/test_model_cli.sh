@@ -3,7 +3,9 @@
 # shipped models (docs/models.md): a run passes bit-exact on both engines
 # with its reference in the JSON; bad input (a syntax error, a missing
 # value, an unknown name, a missing unit) exits non-zero with FILE:LINE
-# and leaves no output file.
+# and leaves no output file.  Defaults: every shipped model runs with no
+# --set, as the docs' values; --set overrides a default, --set NAME0 is
+# state NAME; the values still missing are named in one message.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 FP3=${FP3_BIN:-build/fp3}
@@ -25,8 +27,45 @@ check "ship euler literal passes" "grep -q '^PASS' <<<\"\$out\""
 printf 'state x\nx'"'"' = x +\n' >"$tmp/bad.fp3m"
 err=$("$FP3" run --model "$tmp/bad.fp3m" --set h=1 --set x=1 2>&1); rc=$?
 check "syntax error: exit 2, FILE:LINE:COL" "[ $rc -eq 2 ] && grep -q 'bad.fp3m:2:9: expected an expression' <<<\"\$err\""
-err=$("$FP3" run --model models/spring.fp3m --set h=0.01 --set k=1 --set m=1 --set x=1 --set v=0 2>&1); rc=$?
-check "missing param named with its line" "[ $rc -eq 2 ] && grep -q \"models/spring.fp3m:3: param 'c' has no value\" <<<\"\$err\""
+# defaults (docs/models.md): the model file's values unless --set gives
+# others; what has neither is named, all of it in one message, exit 2
+printf 'param k, c = 0.5, m\nposition x\nvelocity v = 0\nx'"'"' = v\nv'"'"' = -(k*x + c*v)/m\n' \
+  >"$tmp/nd.fp3m"
+err=$("$FP3" run --model "$tmp/nd.fp3m" --set m=1 --engine iss 2>&1); rc=$?
+want="fp3 run: $tmp/nd.fp3m: no value for the step h, param k (line 1), state variable x (line 2): \
+give --set h=VALUE --set k=VALUE --set x=VALUE, or a default in the model file (param h = VALUE)"
+check "every missing value in one message, exit 2" "[ $rc -eq 2 ] && [ \"\$err\" = \"\$want\" ]"
+err=$("$FP3" run --model "$tmp/nd.fp3m" --set h=0.01 --set k=1 --set m=1 --engine iss 2>&1); rc=$?
+check "one missing state: its keyword in the hint" \
+  "[ $rc -eq 2 ] && grep -qF 'no value for state variable x (line 2): give --set x=VALUE, or a default in the model file (position x = VALUE)' <<<\"\$err\""
+"$FP3" run --model "$tmp/nd.fp3m" --set h=0.01 --set k=1 --set m=1 --set x0=1 --engine iss --steps 5 >/dev/null 2>&1
+check "--set x0= gives state x's initial value" "[ $? -eq 0 ]"
+json() { "$FP3" run "$@" --engine iss --steps 20 --json 2>/dev/null | python3 -c \
+  'import json,sys; d=json.load(sys.stdin); assert d["pass"]; print(json.dumps(d["results"]))'; }
+def=$(json --model models/spring.fp3m)
+check "spring with no --set: the defaults are the docs' values" \
+  "[ -n \"\$def\" ] && [ \"\$def\" = \"\$(json --model models/spring.fp3m $spring)\" ]"
+check "--set k=41 overrides the default k = 40" \
+  "over=\$(json --model models/spring.fp3m --set k=41) && [ -n \"\$over\" ] && [ \"\$over\" != \"\$def\" ] && \
+   [ \"\$over\" = \"\$(json --model models/spring.fp3m $spring --set k=41)\" ]"
+check "--set x0=0.25 is --set x=0.25" \
+  "a0=\$(json --model models/spring.fp3m --set x0=0.25) && [ -n \"\$a0\" ] && [ \"\$a0\" != \"\$def\" ] && \
+   [ \"\$a0\" = \"\$(json --model models/spring.fp3m --set x=0.25)\" ]"
+check "ship: --set v0=1 --set s0=0 as the ship program takes them" \
+  "v1=\$(json --model models/ship.fp3m --set v0=1 --set s0=0) && [ -n \"\$v1\" ] && \
+   [ \"\$v1\" = \"\$(json --model models/ship.fp3m --set v=1)\" ] && [ \"\$v1\" != \"\$(json --model models/ship.fp3m)\" ]"
+check "ship with no --set is the paper's default scene" \
+  "[ \"\$(json --model models/ship.fp3m)\" = \"\$(json --model models/ship.fp3m --set h=0.0166666675 \
+     --set T=50000 --set C=5000 --set m=10000 --set v=0 --set s=0)\" ]"
+out=$("$FP3" run --model models/spring.fp3m --objects 64 --steps 20 2>&1); rc=$?
+check "fp3 run --model models/spring.fp3m --objects 64 --steps 20: no --set, passes" \
+  "[ $rc -eq 0 ] && grep -q '^PASS' <<<\"\$out\""
+for f in models/*.fp3m; do
+  integ=rk4; [ "$f" = models/rigidbody.fp3m ] && integ=rk2 # its rk4 exceeds IMEM_DEPTH
+  "$FP3" run --model "$f" --integrator $integ --engine iss --steps 20 >/dev/null 2>&1 && \
+    "$FP3" run --model "$f" --integrator $integ --engine iss --steps 20 --objects 64 >/dev/null 2>&1
+  check "$f $integ: one object and --objects 64 with no --set" "[ $? -eq 0 ]"
+done
 err=$("$FP3" run --model models/spring.fp3m $spring --set q=1 2>&1); rc=$?
 check "unknown --set name" "[ $rc -eq 2 ] && grep -q \"no param or state 'q'\" <<<\"\$err\""
 if ! printf 'sqrt r1, r2\nhalt\n' | "$FP3" asm /dev/stdin -o "$tmp/x.hex" >/dev/null 2>&1; then

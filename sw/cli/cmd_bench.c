@@ -53,7 +53,7 @@ static void usage_bench(FILE *f) {
           "  --rtl-long-steps M RTL integrations of the long runs (100000)\n"
           "  --repeats R        timing repeats, median taken (default 7)\n"
           "\n"
-          "fp3 bench --model FILE --set NAME=VALUE ... [--integrator I] [--t-end T]\n"
+          "fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator I] [--t-end T]\n"
           "          [--points K] [--engine rtl|iss] [-o FILE.csv]: a model's\n"
           "  work-precision sweep (fp3 bench --model x --help, docs/models.md)\n"
           "\n"

@@ -48,11 +48,11 @@ static void usage(FILE *f) {
           "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss] [--json]\n"
           "       fp3 run --scene MODEL_SCENE [--objects N] [--integrator NAME] [--literal]\n"
           "               [--steps N] [--engine rtl|iss] [--json]\n"
-          "       fp3 run --model FILE --objects N [--seed S] --set NAME=VALUE ...\n"
+          "       fp3 run --model FILE --objects N [--seed S] [--set NAME=VALUE ...]\n"
           "       fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]\n"
           "       fp3 compile MODEL_SCENE [--integrator NAME] [--literal] [-o OUT.s]\n"
           "       fp3 frames --scene MODEL_SCENE [--frames F] [--no-rest-skip] [...]\n"
-          "       fp3 bench --model FILE --set NAME=VALUE ... [--points K] [--t-end T]\n"
+          "       fp3 bench --model FILE [--set NAME=VALUE ...] [--points K] [--t-end T]\n"
           "               [--stability FILE.csv] [--long FILE.csv [--long-steps N]]\n"
           "               [-o FILE.csv]  (docs/models.md)\n"
           "\n"
@@ -61,16 +61,19 @@ static void usage(FILE *f) {
           "                    columns (every param and state variable), one object per\n"
           "                    line (scenes/springs.scene); all objects on the contexts,\n"
           "                    in batches, each checked bit for bit every integration\n"
-          "  --objects N       with --model: N objects, object 0 the --set values, the\n"
-          "                    others each value (h excepted) times its own factor in\n"
-          "                    [0.75, 1.25] from --seed S (default 1)\n"
+          "  --objects N       with --model: N objects, object 0 the values (--set, else\n"
+          "                    the model's defaults), the others each value (h excepted)\n"
+          "                    times its own factor in [0.75, 1.25] from --seed S\n"
+          "                    (default 1)\n"
           "  --integrator I    %s (default rk4; symeuler and verlet need `position`\n"
           "                    and `velocity` lines)\n"
           "  --literal         the integrator exactly as docs/models.md writes it, bit for\n"
           "                    bit (default: folded: parameter-only divisions become\n"
           "                    products with the host's reciprocal, zero terms removed)\n"
-          "  --set NAME=VALUE  h, every param and every state variable's initial value\n"
-          "                    (binary32; each one required)\n"
+          "  --set NAME=VALUE  h, a param or a state variable's initial value (binary32),\n"
+          "                    over the model file's default (`param k = 40`); each one\n"
+          "                    without a default is required.  NAME0 is state NAME's\n"
+          "                    initial value where the model has no NAME0 (--set v0=1)\n"
           "  --steps N         integrations (default %u)\n"
           "  --round rne|rtz, --ftz  the cores' rounding and subnormal mode (with a scene\n"
           "                    or --objects; host values computed in the same mode)\n"
@@ -386,7 +389,10 @@ void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle) {
   o->endis = k;
 }
 
-/* --set NAME=VALUE into in[] (params) or y0[] (states). */
+/* --set NAME=VALUE into in[] (params) or y0[] (states), marking given[]
+ * (params, then states).  NAME0 names state variable NAME's initial value
+ * where the model has no param or state called NAME0 (the ship program's
+ * --set v0 and s0). */
 static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
                      unsigned char *given) {
   const char *eq = strchr(arg, '=');
@@ -412,6 +418,11 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
     return 0;
   }
   k = fp3_model_state(m, name);
+  if (k < 0 && len > 1 && name[len - 1] == '0') { /* NAME0: NAME's initial value */
+    name[len - 1] = '\0';
+    k = fp3_model_state(m, name);
+    name[len - 1] = '0';
+  }
   if (k >= 0) {
     y0[k] = v;
     given[m->nparam + (unsigned)k] = 1;
@@ -422,21 +433,65 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
   return -1;
 }
 
-/* Every --set into in[] and y0[]; each param, h and state variable must
- * be given (else FILE:LINE of its declaration), h > 0.  0 or -1. */
+/* The declaration keyword of state variable i (for "a default in the
+ * model file (position x = VALUE)"). */
+static const char *state_keyword(const fp3_model *m, unsigned i) {
+  return m->role[i] == FP3_MR_POSITION ? "position"
+         : m->role[i] == FP3_MR_VELOCITY ? "velocity"
+                                         : "state";
+}
+
+/* The model's defaults into in[] and y0[], then every --set over them;
+ * whatever is still without a value is named, all of it in one message
+ * (each with its declaring line), h > 0.  0 or -1. */
 int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0) {
   unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
+  for (unsigned k = 0; k < m->nparam; k++)
+    if (m->param_has_def[k]) {
+      in[k] = m->param_def[k];
+      given[k] = 1;
+    }
+  for (unsigned k = 0; k < m->nstate; k++)
+    if (m->state_has_def[k]) {
+      y0[k] = m->state_def[k];
+      given[m->nparam + k] = 1;
+    }
   for (int i = 0; i < a->nset; i++)
     if (apply_set(m, a->set[i], in, y0, given)) return -1;
-  for (unsigned k = 0; k < m->nparam + m->nstate; k++)
-    if (!given[k]) {
-      int st = k >= m->nparam;
-      const char *nm = st ? m->state[k - m->nparam] : m->param[k];
-      fprintf(stderr, "fp3 run: %s:%d: %s '%s' has no value: give --set %s=VALUE\n", m->file,
-              st ? m->state_line[k - m->nparam] : m->param_line[k] ? m->param_line[k] : 1,
-              st ? "state variable" : k == 0 ? "the step" : "param", nm, nm);
+  char *text = NULL;
+  size_t tlen = 0;
+  FILE *f = NULL;
+  unsigned missing = 0, first = 0;
+  for (unsigned k = 0; k < m->nparam + m->nstate; k++) {
+    if (given[k]) continue;
+    if (!f && !(f = open_memstream(&text, &tlen))) {
+      fprintf(stderr, "fp3 run: out of memory\n");
       return -1;
     }
+    if (!missing++) first = k;
+    const int st = k >= m->nparam;
+    const unsigned i = st ? k - m->nparam : k;
+    if (k == 0)
+      fprintf(f, "%sthe step h", missing > 1 ? ", " : "");
+    else
+      fprintf(f, "%s%s %s (line %d)", missing > 1 ? ", " : "",
+              st ? "state variable" : "param", st ? m->state[i] : m->param[i],
+              st ? m->state_line[i] : m->param_line[i]);
+  }
+  if (missing) {
+    fprintf(f, ": give");
+    for (unsigned k = 0; k < m->nparam + m->nstate; k++)
+      if (!given[k])
+        fprintf(f, " --set %s=VALUE", k >= m->nparam ? m->state[k - m->nparam] : m->param[k]);
+    const int st = first >= m->nparam;
+    fprintf(f, ", or a default in the model file (%s %s = VALUE)",
+            st ? state_keyword(m, first - m->nparam) : "param",
+            st ? m->state[first - m->nparam] : m->param[first]);
+    fclose(f);
+    fprintf(stderr, "fp3 run: %s: no value for %s\n", m->file, text);
+    free(text);
+    return -1;
+  }
   if (!(in[0] > 0.0f)) {
     fprintf(stderr, "fp3 run: --set h=%g: the step must be above 0\n", (double)in[0]);
     return -1;

@@ -51,10 +51,16 @@ typedef struct fp3_model_args {
  * which only the model file gives (fp3_model_args_values). */
 int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a);
 
-/* Every --set of a into in[] (params, in[0] the step h) and y0[] (initial
- * state) of model m.  Each param, h and state variable must be given
- * (else "FILE:LINE: param 'k' has no value"), each value finite, h > 0.
- * 0, or -1 with the message on stderr. */
+/* The values of one object of model m into in[] (params, in[0] the step
+ * h) and y0[] (initial state): the model file's defaults (`param k = 40`,
+ * `position x = 0.5`, `param h = 0.015625`), each overridden by a --set
+ * of a (the last --set of a name counts).  --set NAME0=VALUE gives state
+ * variable NAME's initial value where m has no param or state NAME0.
+ * Each value finite, h > 0.  0, or -1 with the message on stderr; what
+ * still has no value is named in one message, each with its declaring
+ * line: "fp3 run: FILE: no value for param k (line 3), state variable x
+ * (line 5): give --set k=VALUE --set x=VALUE, or a default in the model
+ * file (param k = VALUE)". */
 int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0);
 
 /* 1 if argv[1..argc) holds --model (or --model=FILE): the command is for a
@@ -103,7 +109,7 @@ int fp3_cmd_compile_model(int argc, char **argv);
  * bit-identical, 1 a mismatch or error, 2 bad usage or scene. */
 int fp3_cmd_frames_model(int argc, char **argv);
 
-/* `fp3 bench --model FILE --set NAME=VALUE ... [--integrator NAME]
+/* `fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]
  * [--t-end T] [--points K] [--literal] [--engine rtl|iss] [-o FILE.csv]`:
  * the work-precision sweep of one object: for each integrator (all that
  * apply, or --integrator) the compiled program runs BENCH_RTL_STEPS

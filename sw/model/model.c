@@ -188,6 +188,52 @@ static int name_ref(parser *ps, const char *at, const char *name) {
   return fail(ps, at, "unknown name '%s'", name);
 }
 
+/* 1 if a number starts at p: a digit, or '.' and a digit. */
+static int starts_number(const char *p) {
+  return isdigit((unsigned char)*p) || (*p == '.' && isdigit((unsigned char)p[1]));
+}
+
+/* The number at the cursor (starts_number), decimal or hex float: *f as
+ * strtof reads it (RNE, once), *d as strtod does; the cursor moves past
+ * it.  0, or -1 for a bad number or one not finite in binary32. */
+static int number(parser *ps, float *f, double *d) {
+  const char *at = ps->p;
+  char *end = NULL;
+  const char *q = at;
+  while (isalnum((unsigned char)*q) || *q == '.' ||
+         ((*q == '+' || *q == '-') &&
+          (q[-1] == 'e' || q[-1] == 'E' || q[-1] == 'p' || q[-1] == 'P')))
+    q++;
+  char buf[128];
+  size_t len = (size_t)(q - at);
+  if (len >= sizeof buf) return fail(ps, at, "number too long");
+  memcpy(buf, at, len);
+  buf[len] = '\0';
+  *f = strtof(buf, &end);
+  if (end != buf + len) return fail(ps, at, "bad number '%s'", buf);
+  if (!isfinite(*f)) return fail(ps, at, "number '%s' overflows binary32", buf);
+  *d = strtod(buf, NULL);
+  ps->p = q;
+  return 0;
+}
+
+/* A signed number, '-'? NUMBER, as `const` and defaults take it: the
+ * minus flips the sign bit (so `-0` is -0).  what: the message when no
+ * number follows.  0, or -1. */
+static int signed_number(parser *ps, const char *what, float *f, double *d) {
+  skip_ws(ps);
+  int neg = *ps->p == '-';
+  if (neg) ps->p++;
+  skip_ws(ps);
+  if (!starts_number(ps->p)) return fail(ps, ps->p, "%s", what);
+  if (number(ps, f, d)) return -1;
+  if (neg) {
+    *f = -*f;
+    *d = -*d;
+  }
+  return 0;
+}
+
 /* primary := NUMBER | NAME | NAME '(' args ')' | '(' expr ')' */
 static int primary(parser *ps) {
   skip_ws(ps);
@@ -198,26 +244,13 @@ static int primary(parser *ps) {
     if (e < 0 || expect(ps, ')')) return -1;
     return e;
   }
-  if (isdigit((unsigned char)*at) || (*at == '.' && isdigit((unsigned char)at[1]))) {
-    /* decimal or hex float, as strtof reads it (RNE, once) */
-    char *end = NULL;
-    const char *q = at;
-    while (isalnum((unsigned char)*q) || *q == '.' ||
-           ((*q == '+' || *q == '-') && (q[-1] == 'e' || q[-1] == 'E' || q[-1] == 'p' ||
-                                         q[-1] == 'P')))
-      q++;
-    char buf[128];
-    size_t len = (size_t)(q - at);
-    if (len >= sizeof buf) return fail(ps, at, "number too long");
-    memcpy(buf, at, len);
-    buf[len] = '\0';
-    float f = strtof(buf, &end);
-    if (end != buf + len) return fail(ps, at, "bad number '%s'", buf);
-    if (!isfinite(f)) return fail(ps, at, "number '%s' overflows binary32", buf);
+  if (starts_number(at)) {
+    float f;
+    double d;
+    if (number(ps, &f, &d)) return -1;
     fp3_mexpr x = mk(FP3_ME_NUM, -1, -1);
     x.bits = fpref_bits(f);
-    x.dval = strtod(buf, NULL);
-    ps->p = q;
+    x.dval = d;
     return new_node(ps, at, x);
   }
   char name[FP3_MODEL_NAME_LEN];
@@ -300,7 +333,8 @@ static int fresh(parser *ps, const char *at, const char *name) {
   for (size_t i = 0; i < sizeof reserved / sizeof reserved[0]; i++)
     if (strcmp(reserved[i], name) == 0)
       return fail(ps, at, "'%s' is reserved%s", name,
-                  strcmp(name, "h") == 0   ? " (the step, a parameter of every model)"
+                  strcmp(name, "h") == 0   ? " (the step, a parameter of every model; "
+                                             "`param h = NUMBER` gives its default)"
                   : strcmp(name, "t") == 0 ? " (time, in `exact` lines)"
                                            : "");
   int line;
@@ -309,28 +343,75 @@ static int fresh(parser *ps, const char *at, const char *name) {
   return 0;
 }
 
-/* param / state / position / velocity: a comma-separated list of names. */
+/* `= NUMBER` after the name at `at` on a declaration line, if there is
+ * one: *has 1 and the number in *f, *d; else *has 0.  A second `=` is a
+ * default given twice.  0, or -1. */
+static int default_value(parser *ps, const char *at, const char *name, unsigned char *has,
+                         float *f, double *d) {
+  skip_ws(ps);
+  *has = 0;
+  if (*ps->p != '=') return 0;
+  ps->p++;
+  if (signed_number(ps, "a default is a signed number, finite in binary32 (NAME = NUMBER)",
+                    f, d))
+    return -1;
+  skip_ws(ps);
+  if (*ps->p == '=') return fail(ps, at, "'%s' is given a default twice", name);
+  *has = 1;
+  return 0;
+}
+
+/* param / state / position / velocity: a comma-separated list of names,
+ * each with an optional default `= NUMBER`.  h, the step (param 0 of
+ * every model), may be named once on a param line, with a default > 0. */
 static int name_list(parser *ps, int is_param, int role) {
   fp3_model *m = ps->m;
   for (;;) {
     skip_ws(ps);
     const char *at = ps->p;
     char name[FP3_MODEL_NAME_LEN];
-    if (ident(ps, name) || fresh(ps, at, name)) return -1;
-    if (is_param) {
+    if (ident(ps, name)) return -1;
+    skip_ws(ps);
+    if (is_param && strcmp(name, "h") == 0 && *ps->p == '=') {
+      if (m->param_has_def[0])
+        return fail(ps, at, "'h' is given a default twice (the first at line %d)",
+                    m->param_def_line[0]);
+      const char *num = ps->p + 1;
+      while (*num == ' ' || *num == '\t' || *num == '\r') num++;
+      if (default_value(ps, at, name, &m->param_has_def[0], &m->param_def[0],
+                        &m->param_def_d[0]))
+        return -1;
+      if (!(m->param_def[0] > 0.0f))
+        return fail(ps, num, "the step h must be above 0 (its default is %.9g)",
+                    (double)m->param_def[0]);
+      m->param_def_line[0] = ps->lineno;
+    } else if (fresh(ps, at, name)) {
+      return -1;
+    } else if (is_param) {
       if (m->nparam == FP3_MODEL_MAX_VARS)
         return fail(ps, at, "more than %d params (h included)", FP3_MODEL_MAX_VARS);
-      snprintf(m->param[m->nparam], FP3_MODEL_NAME_LEN, "%s", name);
-      m->param_line[m->nparam++] = ps->lineno;
+      unsigned k = m->nparam;
+      snprintf(m->param[k], FP3_MODEL_NAME_LEN, "%s", name);
+      m->param_line[k] = ps->lineno;
+      if (default_value(ps, at, name, &m->param_has_def[k], &m->param_def[k],
+                        &m->param_def_d[k]))
+        return -1;
+      if (m->param_has_def[k]) m->param_def_line[k] = ps->lineno;
+      m->nparam++;
     } else {
       if (m->nstate == FP3_MODEL_MAX_VARS)
         return fail(ps, at, "more than %d state variables", FP3_MODEL_MAX_VARS);
-      snprintf(m->state[m->nstate], FP3_MODEL_NAME_LEN, "%s", name);
-      m->state_line[m->nstate] = ps->lineno;
-      m->role[m->nstate] = role;
-      m->deriv[m->nstate] = -1;
-      m->exact[m->nstate] = -1;
-      ps->decl_col[m->nstate++] = col(ps, at);
+      unsigned k = m->nstate;
+      snprintf(m->state[k], FP3_MODEL_NAME_LEN, "%s", name);
+      m->state_line[k] = ps->lineno;
+      m->role[k] = role;
+      m->deriv[k] = -1;
+      m->exact[k] = -1;
+      ps->decl_col[k] = col(ps, at);
+      if (default_value(ps, at, name, &m->state_has_def[k], &m->state_def[k],
+                        &m->state_def_d[k]))
+        return -1;
+      m->nstate++;
     }
     skip_ws(ps);
     if (*ps->p != ',') return end_of_line(ps);
@@ -357,17 +438,14 @@ static int def_line(parser *ps, int is_let) {
   } else {
     skip_ws(ps);
     const char *num = ps->p;
-    int neg = *num == '-';
-    if (neg) ps->p++;
-    skip_ws(ps);
-    if (!(isdigit((unsigned char)*ps->p) || *ps->p == '.'))
-      return fail(ps, ps->p, "a const is a number (write `let` for an expression)");
-    e = primary(ps);
-    if (e >= 0 && neg) {
-      fp3_mexpr x = m->node[e];
-      x.bits ^= 0x80000000u;
-      x.dval = -x.dval;
-      m->node[e] = x;
+    float f;
+    double d;
+    e = -1;
+    if (!signed_number(ps, "a const is a number (write `let` for an expression)", &f, &d)) {
+      fp3_mexpr x = mk(FP3_ME_NUM, -1, -1);
+      x.bits = fpref_bits(f);
+      x.dval = d;
+      e = new_node(ps, num, x);
     }
   }
   if (e < 0 || end_of_line(ps)) return -1;

@@ -5,8 +5,11 @@
  * meaning for the references (modelref.h).
  *
  *   model projectile
- *   param kd, g                  # per-object inputs (h is always one)
- *   state x, vx                  # or: position x / velocity vx (the split)
+ *   param kd, g = 9.81           # per-object inputs (h is always one), a
+ *                                # default where `= NUMBER` follows a name
+ *   param h = 0.015625           # the step's default (h named only so)
+ *   state x, vx = 30             # or: position x / velocity vx (the split);
+ *                                # `= NUMBER`: the initial value's default
  *   const half = 0.5             # a named binary32 constant
  *   let sp = sqrt(vx*vx)         # defined before use
  *   x'  = vx                     # one equation per state variable
@@ -67,9 +70,24 @@ typedef struct fp3_model {
   unsigned nparam;                    /* params, h first                  */
   char param[FP3_MODEL_MAX_VARS][FP3_MODEL_NAME_LEN];
   int param_line[FP3_MODEL_MAX_VARS]; /* declaring line (0 for h)         */
+  /* Defaults: `param k = 40` (h: `param h = 0.015625`), `position x =
+   * 0.5`.  has_def 1 where the file gives one; def is the number as
+   * strtof reads it (binary32, RNE, the sign a flipped sign bit), def_d
+   * as strtod does.  The run's values are these unless --set gives
+   * others (fp3_model_args_values, sw/cli/cmd_model.h); they are not
+   * part of the equations, so no compiled program depends on them.
+   * param_def_line: the line giving a param's default (for h the `param
+   * h = NUMBER` line; 0 without one). */
+  unsigned char param_has_def[FP3_MODEL_MAX_VARS];
+  float param_def[FP3_MODEL_MAX_VARS];
+  double param_def_d[FP3_MODEL_MAX_VARS];
+  int param_def_line[FP3_MODEL_MAX_VARS];
   unsigned nstate;
   char state[FP3_MODEL_MAX_VARS][FP3_MODEL_NAME_LEN];
   int state_line[FP3_MODEL_MAX_VARS];
+  unsigned char state_has_def[FP3_MODEL_MAX_VARS]; /* the initial value's default, */
+  float state_def[FP3_MODEL_MAX_VARS];             /* as the params' above       */
+  double state_def_d[FP3_MODEL_MAX_VARS];
   int role[FP3_MODEL_MAX_VARS];       /* enum fp3_mrole                   */
   int deriv[FP3_MODEL_MAX_VARS];      /* node of NAME' (every one set)    */
   int exact[FP3_MODEL_MAX_VARS];      /* node of `exact NAME`, -1: none   */
@@ -84,9 +102,11 @@ typedef struct fp3_model {
 /* Parse model text `src` (NUL-terminated); `file` names it in messages and
  * in m->file.  Returns 0, or -1 with "FILE:LINE:COL: reason" in msg:
  * syntax errors, unknown names, a name declared twice or reserved (h, t,
- * function names), a state variable with no equation or two, a let that
- * refers to itself or to a later let (a cycle or use before definition),
- * more names or nodes than the limits above. */
+ * function names; h may be named once, on a param line, with a default),
+ * a state variable with no equation or two, a let that refers to itself
+ * or to a later let (a cycle or use before definition), more names or
+ * nodes than the limits above, a default that is not a signed number or
+ * not finite in binary32 or given twice, a default step h <= 0. */
 int fp3_model_parse(const char *src, const char *file, fp3_model *m, char *msg, size_t n);
 
 /* Read and parse a file (fp3_model_parse); "FILE: cannot read" on I/O errors. */
