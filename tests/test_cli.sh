@@ -147,7 +147,10 @@ expect 1 "at pc 1"                     -- "${ISS[@]}" --program "$T/fault.s" --s
 # ---- a program that computes something else: golden mismatches, exit 1 ----------------
 cp programs/*.inc "$T/"   # the files the ship programs include
 sed 's/^\( *\)add  s, s, hv/\1sub  s, s, hv/' programs/ship_rk4.s >"$T/wrong.s"
-expect 1 "FAIL: .* golden mismatches, first at integration 1" -- "${ISS[@]}" --program "$T/wrong.s" --steps 20
+expect 2 "wrong.s: its .model line names $T/../models/ship.fp3m: .*--model FILE names the model" \
+  -- "${ISS[@]}" --program "$T/wrong.s" --steps 20
+expect 1 "FAIL: .* golden mismatches, first at integration 1" -- "${ISS[@]}" --program "$T/wrong.s" \
+  --model models/ship.fp3m --steps 20
 
 # ---- things that work ---------------------------------------------------------------
 expect 0 "PASS: 200 integrations on iss bit-exact" -- "${ISS[@]}" --steps 200
@@ -237,7 +240,7 @@ if python3 - "$json" <<'EOF'
 import json, sys
 d = json.loads(sys.argv[1])
 assert d["objects"] == 5 and len(d["results"]) == 5, d
-assert d["golden_mismatches"] == 0 and d["error"] == "NONE"
+assert d["golden_mismatches"] == 0 and d["run_error"] is None and d["pass"]
 assert d["cycles_per_object_step"] > 0 and "utilization" in d
 moored = d["results"][4]
 assert moored["v"] == 0 and moored["s"] == 0          # at rest stays at rest
@@ -296,7 +299,7 @@ json=$("$FP3" run --scene "$T/harbour.scene" --steps 100 --json 2>&1); rc=$?
 python3 - "$json" <<'EOF2' && ok || bad "run --scene (rtl, compiled) --json: $json"
 import json, sys
 d = json.loads(sys.argv[1])
-assert d["engine"] == "rtl" and d["compiled"] and d["golden_mismatches"] == 0, d
+assert d["engine"] == "rtl" and not d["literal"] and d["golden_mismatches"] == 0, d
 assert d["insns_per_step"] < d["literal_insns_per_step"] and d["cycles_per_object_step"] > 0, d
 EOF2
 

@@ -18,7 +18,7 @@ for eng in iss rtl; do
     out=$("$FP3" run --model models/spring.fp3m $spring --steps 300 --engine $eng $lit --json)
     check "spring $eng $lit: pass, x and x_ref" \
       "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); r=d[\"results\"][0]; \
-sys.exit(0 if d[\"pass\"] and d[\"golden_mismatches\"]==0 and abs(r[\"x\"]-r[\"x_ref\"])<1e-5 and \"cycles_per_step\" in d else 1)'"
+sys.exit(0 if d[\"pass\"] and d[\"golden_mismatches\"]==0 and abs(r[\"x\"]-r[\"x_ref\"])<1e-5 and \"cycles_per_object_step\" in d else 1)'"
   done
 done
 out=$("$FP3" run --model models/ship.fp3m --set h=0.0166666675 --set T=50000 --set C=5000 \

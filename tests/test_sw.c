@@ -513,9 +513,11 @@ static void test_image_validate(void **state) {
   assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "word 3: imm field"));
   img.words[3] = 0;
-  img.in_reg[FP3_IN_T] = 40;
+  char why[160];
+  assert_int_equal(fp3_image_bind(&img, 1, "T", 40, 1, why, sizeof why), 0);
+  assert_int_equal(img.in_reg[FP3_IN_T], 40);
   assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), -1);
-  assert_non_null(strstr(msg, ".in T"));
+  assert_non_null(strstr(msg, ".in T: register r40 out of range"));
 }
 
 static char tmpdir[64];

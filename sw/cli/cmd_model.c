@@ -111,7 +111,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                (r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
-        fprintf(stderr, "fp3 %s: --engine wants rtl or iss, got '%s'\n", cmd, v);
+        fprintf(stderr, "fp3 %s: unknown engine '%s' (rtl or iss)\n", cmd, v);
         return FP3_ARGS_BAD;
       }
       a->engine = v;
@@ -217,8 +217,11 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--json") == 0) {
       a->json = 1;
     } else {
-      fprintf(stderr, "fp3 %s: '%s' does not go with --model (see fp3 %s --model x --help)\n",
-              cmd, argv[i], cmd);
+      if (strcmp(cmd, "run") == 0)
+        fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n", argv[i]);
+      else
+        fprintf(stderr, "fp3 %s: '%s' does not go with --model (see fp3 %s --model x --help)\n",
+                cmd, argv[i], cmd);
       return FP3_ARGS_BAD;
     }
   }
@@ -735,9 +738,7 @@ int fp3_cmd_bench_model(int argc, char **argv) {
   unsigned rows = 0;
   for (char *save = NULL, *ig = strtok_r(names, " ", &save); ig;
        ig = strtok_r(NULL, " ", &save)) {
-    if (!a.integ_given && ((strcmp(ig, "symeuler") == 0 && !fp3_model_split(m)) ||
-                           (strcmp(ig, "verlet") == 0 && !fp3_model_verlet_ok(m, NULL, NULL))))
-      continue;
+    if (!a.integ_given && !fp3_model_integrator_applies(m, ig)) continue;
     fp3_model_args ai = a;
     ai.integ = ig;
     const int iss = strcmp(a.engine, "iss") == 0;

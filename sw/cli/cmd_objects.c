@@ -8,6 +8,7 @@
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 
 #include "analytic.h"
@@ -88,48 +89,66 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
   fp3_flags_text(res.flags, flags, sizeof flags);
   const int ok = res.mismatches == 0 && res.error == FP3_ERR_NONE;
 
-  if (c->json) {
+  if (c->json) { /* the keys of every fp3 run (docs/json.md) */
+    const char *eng = c->engine->ops->name;
     printf("{\"engine\": ");
-    fp3_json_string(stdout, c->engine->ops->name);
-    printf(", \"program\": ");
-    fp3_json_string(stdout, program);
-    printf(", \"compiled\": %s, \"insns_per_step\": %u", comp ? "true" : "false", insns);
-    if (comp)
-      printf(", \"literal_insns_per_step\": %u, \"est_cycles_per_step\": %u",
-             fp3_compiled_stats(comp)->literal_body_insns,
-             fp3_compiled_stats(comp)->est_cycles_later);
+    fp3_json_string(stdout, eng);
+    printf(", \"cycles_counted\": \"%s\"",
+           strcmp(eng, "iss") == 0 ? "instructions issued (the ISS issues one a cycle)"
+                                   : "clock cycles");
+    printf(", \"model\": \"ship\", \"model_file\": null, \"program\": ");
+    if (comp) printf("null");
+    else fp3_json_string(stdout, program);
+    printf(", \"scene\": ");
+    fp3_json_string(stdout, c->scene_path ? c->scene_path : "generated (--objects, --seed)");
     printf(", \"integrator\": ");
     fp3_json_string(stdout, c->integ_name);
-    printf(", \"steps\": %" PRIu32 ", \"objects\": %zu, \"contexts\": %u, \"lanes\": %u, "
-           "\"batches\": %zu", c->steps, res.objects, res.contexts, res.lanes, res.batches);
-    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
-           res.cycles, res.issued, res.stalls);
-    printf(", \"cycles_per_object_step\": %.9g, \"issued_per_object_step\": %.9g",
-           per_object_step, issue_bound);
-    printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    printf(", \"literal\": %s, \"words\": %zu, \"insns_per_step\": %u",
+           comp ? "false" : "true", img->n, insns);
+    printf(", \"registers_needed\": null, \"num_regs\": %u, \"est_cycles_per_step\": ",
+           c->engine->config.num_regs);
+    if (comp) printf("%u", fp3_compiled_stats(comp)->est_cycles_later);
+    else printf("null");
+    if (comp)
+      printf(", \"literal_insns_per_step\": %u", fp3_compiled_stats(comp)->literal_body_insns);
     printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(c->mode),
            c->mode.ftz ? "true" : "false");
-    printf(", \"golden_mismatches\": %" PRIu64, res.mismatches);
+    printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32 ", \"objects\": %zu", c->steps,
+           res.error ? 0 : c->steps, res.objects);
+    printf(", \"contexts\": %u, \"lanes\": %u, \"batches\": %zu", res.contexts, res.lanes,
+           res.batches);
+    printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
+           res.cycles, res.issued, res.stalls);
+    printf(", \"cycles_first_step\": null, \"cycles_per_object_step\": %.9g", per_object_step);
+    printf(", \"issued_per_object_step\": %.9g", issue_bound);
+    printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
     if (res.mismatches)
-      printf(", \"first_mismatch\": {\"object\": %zu, \"integration\": %" PRIu32 "}",
+      printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": null}",
              res.first_object, res.first_step);
     else
-      printf(", \"first_mismatch\": null");
-    printf(", \"error\": \"%s\"", fp3_error_name(res.error));
-    if (res.error) printf(", \"error_object\": %zu, \"fault_pc\": %" PRIu32, res.error_object, res.error_pc);
+      printf("null");
+    printf(", \"nonfinite_from\": null, \"run_error\": ");
+    if (res.error)
+      printf("{\"error\": \"%s\", \"object\": %zu, \"pc\": %" PRIu32 "}",
+             fp3_error_name(res.error), res.error_object, res.error_pc);
+    else
+      printf("null");
     printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32, flags, res.flags);
-    printf(", \"results\": [");
+    printf(", \"params\": null, \"max_error_ref\": null, \"results\": [");
     for (size_t i = 0; i < res.objects; i++) {
       double ve, se;
       exact(&sc.objs[i], c->steps, &ve, &se);
       printf("%s{\"v\": ", i ? ", " : "");
       fp3_json_float(stdout, fpref_float(res.v[i]));
-      fp3_json_member_float(stdout, "s", fpref_float(res.s[i]));
+      printf(", \"v_ref\": null");
       fp3_json_member_double(stdout, "v_exact", ve);
+      fp3_json_member_float(stdout, "s", fpref_float(res.s[i]));
+      printf(", \"s_ref\": null");
       fp3_json_member_double(stdout, "s_exact", se);
       printf("}");
     }
-    printf("]}\n");
+    printf("], \"pass\": %s}\n", ok ? "true" : "false");
   } else {
     printf("FP3 run: engine %s, program %s (%s), %zu objects, %" PRIu32 " integrations each\n",
            c->engine->ops->name, program, c->integ_name, res.objects, c->steps);

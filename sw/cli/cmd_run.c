@@ -112,8 +112,8 @@ static void find_shipped(const char *rel, char *path, size_t n) {
   if (!slash) return;
   *slash = '\0';
   char alt[8192];
-  snprintf(alt, sizeof alt, "%s/../%s", exe, rel);
-  if (access(alt, R_OK) == 0) snprintf(path, n, "%s", alt);
+  if ((size_t)snprintf(alt, sizeof alt, "%s/../%s", exe, rel) < n && access(alt, R_OK) == 0)
+    memcpy(path, alt, strlen(alt) + 1);
 }
 
 /* Whether the file `path` can be written (created or replaced): 0, or -1
@@ -152,7 +152,7 @@ static int same_file(const char *a, const char *b) {
 /* ---- what runs: the model, its program, the engine -------------------------- */
 
 typedef struct run_setup {
-  char model_path[4200], program_path[4200];
+  char model_path[8192], program_path[8192];
   const char *program;   /* the hand-written program, or NULL: compiled  */
   fp3_image img;         /* its image                                    */
   fp3_model *m;          /* the model (a scene's own, or malloc'd here)  */
@@ -219,7 +219,11 @@ static int setup_model(const fp3_model_args *a, run_setup *s) {
   } else {
     if (!(s->m = malloc(sizeof *s->m))) return EXIT_FAIL;
     if (fp3_model_load(mp, s->m, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 run: %s\n", msg);
+      if (mp == s->img.model)
+        fprintf(stderr, "fp3 run: %s: its .model line names %s: %s (--model FILE names "
+                "the model)\n", s->program, mp, msg);
+      else
+        fprintf(stderr, "fp3 run: %s\n", msg);
       return EXIT_USAGE;
     }
     if (fp3_model_args_values(s->m, a, s->in, s->y0)) return EXIT_USAGE;
@@ -234,7 +238,9 @@ static int setup_model(const fp3_model_args *a, run_setup *s) {
       s->m = s->sc.model;
     }
   }
-  if (s->program && s->img.model[0] && !same_file(s->img.model, mp)) {
+  /* a program's .model must be the model of the run, when it is there */
+  if (s->program && s->img.model[0] && access(s->img.model, R_OK) == 0 &&
+      !same_file(s->img.model, mp)) {
     fprintf(stderr, "fp3 run: %s is a program of %s (its .model line), not of %s\n", s->program,
             s->img.model, mp);
     return EXIT_USAGE;
@@ -742,7 +748,7 @@ static int run_ship_scene(const fp3_model_args *a) {
             "--literal runs programs/ship_%s.s\n", ig->name, fp3_compile_integrators(), ig->name);
     return EXIT_USAGE;
   }
-  char path[4200];
+  char path[8192];
   if (a->program) snprintf(path, sizeof path, "%s", a->program);
   else find_shipped(ig->program, path, sizeof path);
   fp3_image img;
@@ -763,8 +769,10 @@ static int run_ship_scene(const fp3_model_args *a) {
   }
   fp3_integ_golden gstore;
   const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, ig);
-  fp3_objects_cmd oc = {e,         &img,       path,    ig->name, &golden, compile, NULL, a->scene,
-                        a->objects, a->seed, 0.0f, a->steps, a->mode, a->json};
+  fp3_ship_params dflt; /* the step until the scene's `h` line */
+  fp3_ship_default(&dflt);
+  fp3_objects_cmd oc = {e,          &img,    path,   ig->name, &golden, compile, NULL, a->scene,
+                        a->objects, a->seed, dflt.h, a->steps, a->mode, a->json};
   int rc = fp3_cmd_run_objects(&oc);
   fp3_engine_free(e);
   return rc;

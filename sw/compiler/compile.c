@@ -1328,7 +1328,7 @@ static void m_build_rk4_split(builder *b, const fp3_model *m, const ref *y, ref 
 /* verletp (fp3_model_step_literal): a_u carried in state ns + u. */
 static void m_build_verletp(builder *b, const fp3_model *m, const ref *y, ref h) {
   const unsigned ns = m->nstate;
-  ref f[MAX_STATE], t[MAX_STATE], a[MAX_STATE];
+  ref f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}}, a[MAX_STATE] = {{0, 0}};
   ref half = konst(b, FP3_GOLDEN_HALF, "half");
   ref hh = nm(b, mul(b, half, h), "hh");
   ref hh2 = nm(b, mul(b, half, nm(b, mul(b, h, h), "hsq")), "hh2");
@@ -1415,7 +1415,7 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
   } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
     if (!fp3_model_integrator_known(integ)) return -1;
     if (!fp3_model_split(m)) return -2;
-    m_build_rk4_split(b, m, y, h, integ[4] == 's' && integ[5] == 'e', strstr(integ, "comp") != NULL);
+    m_build_rk4_split(b, m, y, h, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL);
   } else if (strcmp(integ, "verletp") == 0) {
     if (!fp3_model_split(m)) return -2;
     if (!fp3_model_integrator_applies(m, integ)) return -4;

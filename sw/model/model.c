@@ -863,7 +863,7 @@ static void step_rk4_split(const fp3_model *m, int se, int comp, const float *in
 static void step_verletp(const fp3_model *m, const float *in, float *y) {
   const unsigned ns = m->nstate;
   const float h = in[0], hh = 0.5f * h, hh2 = 0.5f * (h * h);
-  float val[FP3_MODEL_MAX_NODES], f[FP3_MODEL_MAX_VARS], t[FP3_MODEL_MAX_VARS];
+  float val[FP3_MODEL_MAX_NODES], f[FP3_MODEL_MAX_VARS], t[FP3_MODEL_MAX_VARS] = {0};
   const float *a = y + ns;
   for (unsigned i = 0; i < ns; i++) {
     if (m->role[i] == FP3_MR_POSITION) {
@@ -932,7 +932,7 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
       if (m->role[i] == FP3_MR_POSITION) y[i] = y[i] + h * f[i];
   } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
     if (!fp3_model_integrator_applies(m, integ)) return -1;
-    step_rk4_split(m, integ[4] == 's' && integ[5] == 'e', strstr(integ, "comp") != NULL, in, y);
+    step_rk4_split(m, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL, in, y);
   } else if (strcmp(integ, "verletp") == 0) {
     if (!fp3_model_integrator_applies(m, integ)) return -1;
     step_verletp(m, in, y);
