@@ -98,6 +98,10 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
   if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0) fail(cmd, "an engine");
+  if (a.trace.path && (strcmp(cmd, "run") != 0 || a.scene || a.objects ||
+                       strcmp(a.engine, "rtl") != 0))
+    fail(cmd, "--trace off one object on the RTL");
+  check_str(cmd, a.trace.path, 0);
   check_str(cmd, a.file, 0);
   check_str(cmd, a.scene, 0);
   check_str(cmd, a.integ, 1);
@@ -117,16 +121,17 @@ static void parse_run(int argc, char **argv) {
   if (fp3_parse_run(argc, argv, &a) != FP3_ARGS_RUN) return;
   char msg[256];
   if (!a.integ || a.steps < 1) fail("run", "no integrator or no steps");
-  if (a.trace && (a.objects || a.scene || strcmp(a.engine_name, "rtl") != 0))
+  if (a.trace.path && (a.objects || a.scene || strcmp(a.engine_name, "rtl") != 0))
     fail("run", "--trace with several objects or the ISS");
   if (a.literal && a.compile) fail("run", "--literal and --compile");
   if (a.compile && (a.program || !(a.objects || a.scene))) fail("run", "--compile misplaced");
   if (a.seeded && (!a.objects || a.scene)) fail("run", "--seed without --objects");
-  if (a.win_count < 1) fail("run", "an empty trace window");
+  if (a.trace.win_count < 1) fail("run", "an empty trace window");
+  if (a.trace.limit < 1) fail("run", "a trace limit of 0 bytes");
   if (fp3_ship_validate(&a.p, msg, sizeof msg) != 0) fail("run", "an invalid scene");
   check_str("run", a.engine_name, 1);
   check_str("run", a.program, 0);
-  check_str("run", a.trace, 0);
+  check_str("run", a.trace.path, 0);
   check_str("run", a.scene, 0);
 }
 

@@ -45,6 +45,7 @@ static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 run --model FILE [--integrator NAME] [--literal]\n"
           "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss] [--json]\n"
+          "               [--trace FILE.vcd [--trace-window FIRST:COUNT] [--trace-limit SIZE]]\n"
           "       fp3 run --scene MODEL_SCENE [--objects N] [--integrator NAME] [--literal]\n"
           "               [--steps N] [--engine rtl|iss] [--json]\n"
           "       fp3 run --model FILE --objects N [--seed S] --set NAME=VALUE ...\n"
@@ -75,7 +76,11 @@ static void usage(FILE *f) {
           "                    or --objects; host values computed in the same mode)\n"
           "  --engine E        rtl (default) or iss\n"
           "  --json            one JSON object: results[0] has every state variable by\n"
-          "                    name and NAME_ref, its GSL reference value\n",
+          "                    name and NAME_ref, its GSL reference value\n"
+          "  --trace FILE.vcd, --trace-window FIRST:COUNT, --trace-limit SIZE  one\n"
+          "                    object on the rtl engine: a waveform, as fp3 run's\n"
+          "                    (fp3 run --help); the size is estimated from the\n"
+          "                    compiler's cycles per integration\n",
           fp3_model_integrators(), DEFAULT_STEPS);
 }
 
@@ -88,6 +93,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   a->seed = 1;
   a->mode = FPREF_IEEE;
   a->long_steps = 100000u;
+  fp3_trace_opts_init(&a->trace);
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
@@ -181,6 +187,9 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       a->literal = 1;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--json") == 0) {
       a->json = 1;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_trace_opt(argc, argv, &i, cmd, &a->trace)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
     } else {
       fprintf(stderr, "fp3 %s: '%s' does not go with --model (see fp3 %s --model x --help)\n",
               cmd, argv[i], cmd);
@@ -216,6 +225,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
             cmd);
     return FP3_ARGS_BAD;
   }
+  if (fp3_trace_check(&a->trace, cmd, a->engine, a->scene || a->objects)) return FP3_ARGS_BAD;
   if (strcmp(cmd, "bench") == 0 && a->scene) {
     fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
     return FP3_ARGS_BAD;
@@ -440,7 +450,8 @@ int fp3_cmd_run_model(int argc, char **argv) {
   if (fp3_model_args_values(m, &a, in, y0)) goto out;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++) zero[k] = in[k] == 0.0f;
-  e = fp3_engine_new(a.engine);
+  if (fp3_trace_writable(&a.trace, "run")) goto out;
+  e = a.trace.path ? fp3_engine_rtl_new(a.trace.path) : fp3_engine_new(a.engine);
   if (!e || fp3_engine_error(e)[0]) {
     fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a.engine, e ? ": " : "",
             e ? fp3_engine_error(e) : "");
@@ -449,6 +460,11 @@ int fp3_cmd_run_model(int argc, char **argv) {
   }
   const int iss = strcmp(a.engine, "iss") == 0;
   if (!(c = compile_for(m, &a, zero, &e->config, iss, "run"))) goto out;
+  if (fp3_trace_prepare(&a.trace, "run", e,
+                        fp3_trace_run_cycles(a.steps, fp3_compiled_stats(c)->est_cycles_first,
+                                             fp3_compiled_stats(c)->est_cycles_later),
+                        "by the compiler"))
+    goto out;
   rc = EXIT_FAIL;
   if (iss && fit_engine(&e, c, "run")) goto out;
   unsigned regs[4 * FP3_MODEL_MAX_VARS];
@@ -478,6 +494,7 @@ int fp3_cmd_run_model(int argc, char **argv) {
     fprintf(stderr, "fp3 run: %s engine: %s\n", a.engine, fp3_engine_error(e));
     goto out;
   }
+  fp3_trace_note(&a.trace, "run", st.cycles);
   uint32_t done = st.steps_done < a.steps ? st.steps_done : a.steps;
   /* the bit-for-bit check, every integration; the first non-finite value */
   uint32_t cur[FP3_MODEL_MAX_VARS], mism_k = 0, nonfinite_k = 0;

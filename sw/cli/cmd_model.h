@@ -3,6 +3,7 @@
  *
  *   fp3 run --model FILE [--integrator NAME] [--literal] [--set NAME=VALUE ...]
  *           [--steps N] [--engine rtl|iss] [--json]
+ *           [--trace FILE.vcd [--trace-window FIRST:COUNT] [--trace-limit SIZE]]
  *   fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]
  */
 #ifndef FP3_CMD_MODEL_H
@@ -13,6 +14,7 @@
 
 #include "fpref.h"
 #include "model.h"
+#include "traceopt.h"
 
 /* The options of the model forms of run, compile, frames and bench
  * (fp3 run --model x --help); each command takes its own subset. */
@@ -34,6 +36,8 @@ typedef struct fp3_model_args {
                           (default 600)                                 */
   const char *set[2 * FP3_MODEL_MAX_VARS + 8]; /* --set NAME=VALUE      */
   int nset;
+  fp3_trace_opts trace; /* run, one object: --trace, --trace-window,
+                           --trace-limit                                */
 } fp3_model_args;
 
 /* The parse step of the model form of command cmd ("run", "compile",

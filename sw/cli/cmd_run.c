@@ -27,6 +27,7 @@
 #include "golden.h"
 #include "image.h"
 #include "report.h"
+#include "traceopt.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -37,36 +38,13 @@
 #define TABLE_ROWS 5     /* first integrations shown in the table   */
 #define PAPER_FIRST 445  /* cycles of the first integration (paper) */
 #define PAPER_LATER 418  /* cycles of each later integration        */
-#define TRACE_WINDOW_DEFAULT 10000u /* cycles fp3 run --trace writes */
-
-/* ---- output files ---------------------------------------------------------- */
-
-/* Whether the file `path` can be written (created or replaced): 0, or -1
- * with "PATH: reason" (the folder's or the file's, from errno) in msg.
- * Nothing is created: the writer (here the Verilated model's VCD writer,
- * which says only that it failed) opens it later. */
-static int check_writable(const char *path, char *msg, size_t n) {
-  const char *slash = strrchr(path, '/');
-  char dir[4096];
-  if (!slash) {
-    snprintf(dir, sizeof dir, ".");
-  } else {
-    size_t len = (size_t)(slash - path);
-    if (len == 0) len = 1; /* "/x.vcd" */
-    if (len >= sizeof dir) len = sizeof dir - 1;
-    memcpy(dir, path, len);
-    dir[len] = '\0';
-  }
-  if (access(dir, W_OK | X_OK) != 0) {
-    snprintf(msg, n, "%s: %s", dir, strerror(errno));
-    return -1;
-  }
-  if (access(path, F_OK) == 0 && access(path, W_OK) != 0) {
-    snprintf(msg, n, "%s: %s", path, strerror(errno));
-    return -1;
-  }
-  return 0;
-}
+/* The run's cycles for the trace's size estimate (--trace-limit): each
+ * integration this many cycles per instruction word of the program, an
+ * upper bound for the shipped programs on the default build (2.2 to 4
+ * cycles a word; rk4, 34 words: 121 cycles for the first integration, 113
+ * for each later one, estimated as 136).  A program of long dependency
+ * chains can take more. */
+#define TRACE_CYCLES_PER_WORD 4u
 
 /* ---- fp3 run: observing and checking ------------------------------------ */
 
@@ -207,7 +185,8 @@ static void usage_run(FILE *f) {
           "               [--literal | --compile]\n"
           "               [--program FILE.s] [--steps N]\n"
           "               [--set NAME=VALUE ...] [--round rne|rtz] [--ftz]\n"
-          "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
+          "               [--json] [--trace FILE.vcd [--trace-window FIRST:COUNT]\n"
+          "               [--trace-limit SIZE]]\n"
           "       fp3 run --model FILE.fp3m ...   a model file (fp3 run --model x --help,\n"
           "                                       docs/models.md)\n"
           "\n"
@@ -259,10 +238,16 @@ static void usage_run(FILE *f) {
           "                   run (cycle 0 is the first after START)\n"
           "  --trace-window FIRST:COUNT  cycles to write (default 0:%u; COUNT\n"
           "                   'all': to the end of the run)\n"
+          "  --trace-limit SIZE  refuse (exit 2) a trace estimated above SIZE\n"
+          "                   bytes (K, M, G, T: KiB .. TiB; default 1G; 'none':\n"
+          "                   no limit); about 24 KB a cycle, a warning above\n"
+          "                   100M.  The file appears when the run has finished\n"
+          "                   (written as FILE.tmp.PID until then, removed on an\n"
+          "                   error, SIGINT or SIGTERM)\n"
           "\n"
           "Exit status: 0 the run finished without error and bit-exact with\n"
           "the golden model; 1 it did not; 2 bad arguments or program.\n",
-          DEFAULT_PROGRAM, DEFAULT_STEPS, TRACE_WINDOW_DEFAULT);
+          DEFAULT_PROGRAM, DEFAULT_STEPS, FP3_TRACE_WINDOW_DEFAULT);
 }
 
 /* The default program: relative to the working directory, else to the
@@ -298,7 +283,7 @@ static void print_row(const checker *c, uint32_t k, uint32_t vb, uint32_t sb) {
 int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
   memset(a, 0, sizeof *a);
   a->engine_name = "rtl";
-  a->win_count = TRACE_WINDOW_DEFAULT;
+  fp3_trace_opts_init(&a->trace);
   a->steps = DEFAULT_STEPS;
   a->seed = 1;
   a->mode = FPREF_IEEE;
@@ -324,19 +309,8 @@ int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
       a->steps = (uint32_t)k;
     } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--set", &v)) != 0) {
       if (r < 0 || fp3_ship_set("run", &a->p, v)) return FP3_ARGS_BAD;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace-window", &v)) != 0) {
+    } else if ((r = fp3_trace_opt(argc, argv, &i, "run", &a->trace)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
-      unsigned long long first, count;
-      if (fp3_parse_pair(v, 0, UINT64_MAX, 1, UINT64_MAX, "all", &first, &count)) {
-        fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
-                        "COUNT >= 1 or 'all')\n", v);
-        return FP3_ARGS_BAD;
-      }
-      a->win_first = first;
-      a->win_count = count;
-    } else if ((r = fp3_opt_value(argc, argv, &i, "run", "--trace", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->trace = v;
     } else if ((r = fp3_opt_mode(argc, argv, &i, "run", &a->mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
     } else if (strcmp(argv[i], "--json") == 0) {
@@ -386,17 +360,11 @@ int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
   }
   /* a scene file runs the scene compiler's program unless told otherwise */
   if (a->scene && !a->literal && !a->program) a->compile = 1;
-  if (a->trace && (a->objects || a->scene)) {
-    fprintf(stderr, "fp3 run: --trace is for one object\n");
+  if (fp3_trace_check(&a->trace, "run", a->engine_name, a->objects || a->scene))
     return FP3_ARGS_BAD;
-  }
   char msg[512];
   if (fp3_ship_validate(&a->p, msg, sizeof msg)) {
     fprintf(stderr, "fp3 run: %s\n", msg);
-    return FP3_ARGS_BAD;
-  }
-  if (a->trace && strcmp(a->engine_name, "rtl") != 0) {
-    fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
     return FP3_ARGS_BAD;
   }
   if (!fpenv_supported(a->mode)) {
@@ -426,8 +394,7 @@ int fp3_parse_run(int argc, char **argv, fp3_run_args *a) {
 
 /* The run step: assemble, create the engine, run, check and report. */
 static int run_run(const fp3_run_args *a) {
-  const char *engine_name = a->engine_name, *program = a->program, *trace = a->trace;
-  const uint64_t win_first = a->win_first, win_count = a->win_count;
+  const char *engine_name = a->engine_name, *program = a->program, *trace = a->trace.path;
   const uint32_t steps = a->steps;
   const int json = a->json, strict = a->strict;
   const size_t objects = a->objects;
@@ -463,13 +430,7 @@ static int run_run(const fp3_run_args *a) {
     }
 
   /* engine */
-  if (trace && strcmp(engine_name, "iss") != 0) {
-    char why[4096 + 256]; /* a folder name of up to 4095 bytes and the reason */
-    if (check_writable(trace, why, sizeof why)) {
-      fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", trace, why);
-      return EXIT_USAGE;
-    }
-  }
+  if (fp3_trace_writable(&a->trace, "run")) return EXIT_USAGE;
   fp3_engine *e = strcmp(engine_name, "iss") == 0 ? fp3_engine_iss_new_mode(mode)
                                                   : fp3_engine_rtl_new_mode(mode, trace);
   if (!e) {
@@ -482,7 +443,13 @@ static int run_run(const fp3_run_args *a) {
     fp3_engine_free(e);
     return EXIT_FAIL;
   }
-  if (trace) fp3_engine_rtl_trace_window(e, win_first, win_count);
+  if (fp3_trace_prepare(&a->trace, "run", e,
+                        fp3_trace_run_cycles(steps, TRACE_CYCLES_PER_WORD * (uint64_t)img.n,
+                                             TRACE_CYCLES_PER_WORD * (uint64_t)img.n),
+                        "at 4 cycles an integration per word of the program")) {
+    fp3_engine_free(e);
+    return EXIT_USAGE;
+  }
   if (objects || scene) {
     fp3_integ_golden gstore;
     const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, integ);
@@ -543,17 +510,7 @@ static int run_run(const fp3_run_args *a) {
     fprintf(stderr, "FAIL: the %s engine failed\n", engine_name);
     goto out;
   }
-  if (trace) {
-    if (win_first >= st.cycles)
-      fprintf(stderr, "fp3 run: trace %s: empty, the run has %" PRIu64
-              " cycles (--trace-window FIRST:COUNT)\n", trace, st.cycles);
-    else
-      fprintf(stderr, "fp3 run: trace %s: cycles %" PRIu64 "..%" PRIu64
-              " of the run's %" PRIu64 " (--trace-window FIRST:COUNT for others)\n",
-              trace, win_first,
-              (win_count > st.cycles - win_first ? st.cycles : win_first + win_count) - 1,
-              st.cycles);
-  }
+  fp3_trace_note(&a->trace, "run", st.cycles);
   /* the results of the last integrations are the values left at the end */
   uint32_t done = st.steps_done < steps ? st.steps_done : steps;
   for (int w = 0; w < 2; w++) fp3_track_advance(&c.t, w, done + 1);

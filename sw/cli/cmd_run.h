@@ -11,14 +11,13 @@
 #include "fpref.h"
 #include "golden.h"
 #include "integrators.h"
+#include "traceopt.h"
 
 /* `fp3 run`'s options (not those of `fp3 run --model`, fp3_model_args). */
 typedef struct fp3_run_args {
   const char *engine_name;     /* --engine: "rtl" (default) or "iss"        */
   const char *program;         /* --program, or NULL: programs/ship_I.s     */
-  const char *trace;           /* --trace FILE.vcd, or NULL                 */
-  uint64_t win_first;          /* --trace-window FIRST:COUNT [cycles]       */
-  uint64_t win_count;          /* (UINT64_MAX: to the end of the run)       */
+  fp3_trace_opts trace;        /* --trace, --trace-window, --trace-limit    */
   uint32_t steps;              /* --steps, integrations (default 10000)     */
   int json, strict;            /* --json, --strict                          */
   int literal, compile;        /* --literal; --compile, or a scene file
