@@ -85,7 +85,9 @@ no_trace f.vcd "a failed run"
 # ---- the size estimate and --trace-limit --------------------------------
 # 10,000 integrations of the ship (about 1.1 million cycles, about 24 KB
 # each): about 30 GiB, above the default 1 GiB
-"$FP3" run --steps 10000 --trace "$T/l.vcd" --trace-window 0:all >/dev/null 2>"$T/l.err"; rc=$?
+# (timeout: a CLI without the limit would write those 30 GiB)
+timeout 20 "$FP3" run --steps 10000 --trace "$T/l.vcd" --trace-window 0:all >/dev/null \
+  2>"$T/l.err"; rc=$?
 [ $rc -eq 2 ] && ok || bad "a 30 GiB trace: exit $rc, want 2"
 has "$T/l.err" "about [0-9.]* GiB" "the estimate" && ok
 has "$T/l.err" "window 0:all" "the window" && ok
@@ -127,7 +129,7 @@ has "$T/s.out" "PASS" "run --model --trace: the run" && ok
 "$FP3" "${SPRING[@]}" --steps 5 --trace "$T/s2.vcd" --trace-window 20:all >/dev/null 2>&1
 vcd s2.vcd "run --model --trace-window 20:all"
 # the model's limit comes from the compiler's cycles per integration
-"$FP3" "${SPRING[@]}" --steps 1000000 --trace "$T/s3.vcd" --trace-window 0:all \
+timeout 20 "$FP3" "${SPRING[@]}" --steps 1000000 --trace "$T/s3.vcd" --trace-window 0:all \
   >/dev/null 2>"$T/s3.err"; rc=$?
 [ $rc -eq 2 ] && ok || bad "run --model, a huge trace: exit $rc, want 2"
 has "$T/s3.err" "GiB.*--trace-limit SIZE" "run --model: the limit" && ok

@@ -6,7 +6,6 @@
  */
 #include "cmd_run.h"
 
-#include <errno.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -240,10 +239,10 @@ static void usage_run(FILE *f) {
           "                   'all': to the end of the run)\n"
           "  --trace-limit SIZE  refuse (exit 2) a trace estimated above SIZE\n"
           "                   bytes (K, M, G, T: KiB .. TiB; default 1G; 'none':\n"
-          "                   no limit); about 24 KB a cycle, a warning above\n"
-          "                   100M.  The file appears when the run has finished\n"
-          "                   (written as FILE.tmp.PID until then, removed on an\n"
-          "                   error, SIGINT or SIGTERM)\n"
+          "                   no limit); about 24 KB a cycle; a warning above\n"
+          "                   100M.  FILE appears when the run has finished:\n"
+          "                   until then it is FILE.tmp.PID, removed if the run\n"
+          "                   fails and on SIGINT or SIGTERM\n"
           "\n"
           "Exit status: 0 the run finished without error and bit-exact with\n"
           "the golden model; 1 it did not; 2 bad arguments or program.\n",
