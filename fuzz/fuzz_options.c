@@ -93,11 +93,11 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   fp3_model_args a;
   if (fp3_parse_model(argc, argv, cmd, &a) != FP3_ARGS_RUN) return;
   if (!a.scene && !a.file && strcmp(cmd, "run") != 0) fail(cmd, "neither --model nor a scene");
-  if (a.trace && (a.objects || a.scene || strcmp(a.engine, "rtl") != 0))
+  if (a.trace.path && (a.objects || a.scene || strcmp(a.engine, "rtl") != 0))
     fail(cmd, "--trace with several objects or the ISS");
-  if (a.win_count < 1) fail(cmd, "an empty trace window");
+  if (a.trace.win_count < 1) fail(cmd, "an empty trace window");
   check_str(cmd, a.program, 0);
-  check_str(cmd, a.trace, 0);
+  check_str(cmd, a.trace.path, 0);
   if (a.scene && a.file) fail(cmd, "both --model and a scene");
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");

@@ -53,7 +53,7 @@ $(BUILD)/tests/test_sw: tests/test_sw.c $(SW_SAN_LIB) $(RTL_DEPS) | $(SETUP_STAM
 	  $(VERILATOR_LDLIBS)
 TEST_BINS += $(BUILD)/tests/test_sw
 
-# tests/test_cli.sh runs the CLI named by $FP3_BIN.
-TEST_SCRIPTS += tests/test_cli.sh
+# tests/test_cli.sh and tests/test_trace.sh run the CLI named by $FP3_BIN.
+TEST_SCRIPTS += tests/test_cli.sh tests/test_trace.sh
 export FP3_BIN := $(abspath $(BUILD)/fp3)
 test-build: $(BUILD)/fp3

@@ -60,8 +60,10 @@ typedef struct fp3_model_out {
 
 typedef struct fp3_model_ops {
   /* A new model, held in reset for two cycles.  trace_path: a VCD
-   * waveform of every signal to write, or NULL.  Returns NULL if out of
-   * memory or if the trace file cannot be opened (message on stderr). */
+   * waveform of every signal to write, or NULL; the file is complete once
+   * destroy has closed it (the RTL engine gives a temporary name here and
+   * renames the file after a finished run: engine.h).  Returns NULL if out
+   * of memory or if the trace file cannot be opened (message on stderr). */
   fp3_model *(*create)(const char *trace_path);
   void (*destroy)(fp3_model *m);
   /* One clock cycle; `in` may be NULL (no host access), `out` may be

@@ -175,6 +175,9 @@ stamps() { grep -c '^#' "$1"; }
 "$FP3" run --steps 300 --trace "$T/def.vcd" >/dev/null 2>"$T/def.err"; rc=$?
 [ $rc -eq 0 ] && ok || bad "fp3 run --trace exited $rc"
 has "$T/def.err" "trace $T/def.vcd: cycles 0..9999 of the run's [0-9]* " "default window" && ok
+# 10,000 cycles at about 24 KB: above 100 MiB, a warning with the estimate
+has "$T/def.err" "warning: --trace $T/def.vcd: the waveform will be about 2[0-9][0-9] MiB" \
+  "the size warning" && ok
 n=$(stamps "$T/def.vcd"); [ "$n" -ge 20000 ] && [ "$n" -le 20035 ] && ok || bad "default window: $n timestamps"
 "$FP3" run --steps 300 --trace "$T/win.vcd" --trace-window 1000:50 >/dev/null 2>"$T/win.err"; rc=$?
 [ $rc -eq 0 ] && ok || bad "fp3 run --trace-window exited $rc"

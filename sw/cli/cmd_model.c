@@ -44,29 +44,21 @@ int fp3_args_have_model(int argc, char **argv) {
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: fp3 run --model FILE [--integrator NAME] [--literal]\n"
-          "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss] [--json]\n"
-          "       fp3 run --scene MODEL_SCENE [--objects N] [--integrator NAME] [--literal]\n"
-          "               [--steps N] [--engine rtl|iss] [--json]\n"
-          "       fp3 run --model FILE --objects N [--seed S] [--set NAME=VALUE ...]\n"
-          "       fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]\n"
+          "usage: fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]\n"
           "       fp3 compile MODEL_SCENE [--integrator NAME] [--literal] [-o OUT.s]\n"
-          "       fp3 frames --scene MODEL_SCENE [--frames F] [--no-rest-skip] [...]\n"
-          "       fp3 bench --model FILE [--set NAME=VALUE ...] [--points K] [--t-end T]\n"
-          "               [--stability FILE.csv] [--long FILE.csv [--long-steps N]]\n"
-          "               [-o FILE.csv]  (docs/models.md)\n"
+          "       fp3 frames --scene MODEL_SCENE [--frames F] [--integrator NAME] [--literal]\n"
+          "               [--no-rest-skip] [--engine rtl|iss] [--json]\n"
+          "       fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]\n"
+          "               [--points K] [--t-end T] [--stability FILE.csv]\n"
+          "               [--long FILE.csv [--long-steps N]] [--engine rtl|iss] [-o FILE.csv]\n"
+          "       (fp3 run --help for runs; docs/models.md)\n"
           "\n"
           "  --model FILE      a model file (.fp3m, docs/models.md; models/ has examples)\n"
           "  --scene FILE      a model scene: 'model FILE', 'h STEP', a header naming the\n"
           "                    columns (every param and state variable), one object per\n"
-          "                    line (scenes/springs.scene); all objects on the contexts,\n"
-          "                    in batches, each checked bit for bit every integration\n"
-          "  --objects N       with --model: N objects, object 0 the values (--set, else\n"
-          "                    the model's defaults), the others each value (h excepted)\n"
-          "                    times its own factor in [0.75, 1.25] from --seed S\n"
-          "                    (default 1)\n"
-          "  --integrator I    %s (default rk4; symeuler and verlet need `position`\n"
-          "                    and `velocity` lines)\n"
+          "                    line (scenes/springs.scene)\n"
+          "  --integrator I    %s\n"
+          "                    (default rk4; each needs the shape docs/models.md names)\n"
           "  --literal         the integrator exactly as docs/models.md writes it, bit for\n"
           "                    bit (default: folded: parameter-only divisions become\n"
           "                    products with the host's reciprocal, zero terms removed)\n"
@@ -74,13 +66,8 @@ static void usage(FILE *f) {
           "                    over the model file's default (`param k = 40`); each one\n"
           "                    without a default is required.  NAME0 is state NAME's\n"
           "                    initial value where the model has no NAME0 (--set v0=1)\n"
-          "  --steps N         integrations (default %u)\n"
-          "  --round rne|rtz, --ftz  the cores' rounding and subnormal mode (with a scene\n"
-          "                    or --objects; host values computed in the same mode)\n"
-          "  --engine E        rtl (default) or iss\n"
-          "  --json            one JSON object: results[0] has every state variable by\n"
-          "                    name and NAME_ref, its GSL reference value\n",
-          fp3_model_integrators(), DEFAULT_STEPS);
+          "  --engine E        rtl (default) or iss\n",
+          fp3_model_integrators());
 }
 
 int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
@@ -90,11 +77,11 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   a->steps = strcmp(cmd, "frames") == 0 ? DEFAULT_FRAMES
              : strcmp(cmd, "run") == 0   ? FP3_RUN_DEFAULT_STEPS
                                          : DEFAULT_STEPS;
-  a->win_count = FP3_RUN_TRACE_WINDOW;
   a->points = DEFAULT_POINTS;
   a->seed = 1;
   a->mode = FPREF_IEEE;
   a->long_steps = 100000u;
+  fp3_trace_opts_init(&a->trace);
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
@@ -184,21 +171,6 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                (r = fp3_opt_value(argc, argv, &i, cmd, "--program", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->program = v;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--trace-window", &v)) != 0) {
-      unsigned long long first, count;
-      if (r < 0) return FP3_ARGS_BAD;
-      if (fp3_parse_pair(v, 0, UINT64_MAX, 1, UINT64_MAX, "all", &first, &count)) {
-        fprintf(stderr, "fp3 run: --trace-window '%s': want FIRST:COUNT (cycles, "
-                        "COUNT >= 1 or 'all')\n", v);
-        return FP3_ARGS_BAD;
-      }
-      a->win_first = first;
-      a->win_count = count;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--trace", &v)) != 0) {
-      if (r < 0) return FP3_ARGS_BAD;
-      a->trace = v;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--compile") == 0) {
       fprintf(stderr, "fp3 run: --compile is gone: a model's program is compiled unless "
                       "--program FILE.s names a hand-written one\n");
@@ -216,6 +188,9 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       a->literal = 1;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--json") == 0) {
       a->json = 1;
+    } else if (strcmp(cmd, "run") == 0 &&
+               (r = fp3_trace_opt(argc, argv, &i, cmd, &a->trace)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
     } else {
       if (strcmp(cmd, "run") == 0)
         fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n", argv[i]);
@@ -245,14 +220,6 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
     fprintf(stderr, "fp3 %s: --round and --ftz go with fp3 run\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if (a->trace && (a->objects || a->scene)) {
-    fprintf(stderr, "fp3 run: --trace is for one object\n");
-    return FP3_ARGS_BAD;
-  }
-  if (a->trace && strcmp(a->engine, "rtl") != 0) {
-    fprintf(stderr, "fp3 run: --trace needs --engine rtl\n");
-    return FP3_ARGS_BAD;
-  }
   if (a->program && a->literal && !a->scene) {
     fprintf(stderr, "fp3 run: --literal goes with --integrator (a compiled program); "
                     "--program runs the program as written\n");
@@ -267,6 +234,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
             cmd);
     return FP3_ARGS_BAD;
   }
+  if (fp3_trace_check(&a->trace, cmd, a->engine, a->scene || a->objects)) return FP3_ARGS_BAD;
   if (strcmp(cmd, "bench") == 0 && a->scene) {
     fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
     return FP3_ARGS_BAD;

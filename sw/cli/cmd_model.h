@@ -18,14 +18,13 @@
 #include "engine.h"
 #include "fpref.h"
 #include "model.h"
+#include "traceopt.h"
 
 /* The options of the model forms of run, compile, frames and bench
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {
   const char *file, *integ, *engine, *out;
   const char *program; /* run: --program FILE.s (a hand-written program)  */
-  const char *trace;   /* run: --trace FILE.vcd                          */
-  uint64_t win_first, win_count; /* run: --trace-window FIRST:COUNT      */
   const char *scene;   /* --scene, or compile's positional SCENE        */
   size_t objects;      /* run: --objects (0: none)                      */
   uint64_t seed;       /* run: --seed                                   */
@@ -42,6 +41,8 @@ typedef struct fp3_model_args {
                           (default 600)                                 */
   const char *set[2 * FP3_MODEL_MAX_VARS + 8]; /* --set NAME=VALUE      */
   int nset;
+  fp3_trace_opts trace; /* run, one object: --trace, --trace-window,
+                           --trace-limit                                */
 } fp3_model_args;
 
 /* The parse step of the model form of command cmd ("run", "compile",

@@ -36,6 +36,7 @@
 #include "modelref.h"
 #include "mscene.h"
 #include "report.h"
+#include "traceopt.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -56,7 +57,7 @@ static void usage(FILE *f) {
           "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss]\n"
           "               [--objects N [--seed S] | --scene FILE]\n"
           "               [--round rne|rtz] [--ftz] [--json]\n"
-          "               [--trace FILE.vcd [--trace-window FIRST:COUNT]]\n"
+          "               [--trace FILE.vcd [--trace-window FIRST:COUNT] [--trace-limit SIZE]]\n"
           "\n"
           "Run a model's program on the engine and compare every state variable\n"
           "after every integration with the golden model, bit for bit; report the\n"
@@ -90,13 +91,16 @@ static void usage(FILE *f) {
           "  --json            one JSON object (docs/json.md) instead of the report\n"
           "  --trace FILE      waveform of a one-object run on the rtl engine: a VCD of\n"
           "                    cycles FIRST .. FIRST+COUNT-1 (default 0:%u; COUNT\n"
-          "                    'all': to the end)\n"
+          "                    'all': to the end), written under a temporary name and\n"
+          "                    renamed when the run is over (none left on a failure or a\n"
+          "                    signal); its size is estimated first and refused above\n"
+          "                    --trace-limit SIZE (default 1G; K, M, G, T or none)\n"
           "\n"
           "Exit status: 0 the run finished without error and bit-exact with the\n"
           "golden model; 1 it did not (or a state went non-finite); 2 bad\n"
           "arguments, model or program.\n",
           DEFAULT_PROGRAM, DEFAULT_MODEL, fp3_model_integrators(), FP3_RUN_DEFAULT_STEPS,
-          FP3_RUN_TRACE_WINDOW);
+          FP3_TRACE_WINDOW_DEFAULT);
 }
 
 /* A shipped file (models/, programs/): relative to the working directory,
@@ -114,32 +118,6 @@ static void find_shipped(const char *rel, char *path, size_t n) {
   char alt[8192];
   if ((size_t)snprintf(alt, sizeof alt, "%s/../%s", exe, rel) < n && access(alt, R_OK) == 0)
     memcpy(path, alt, strlen(alt) + 1);
-}
-
-/* Whether the file `path` can be written (created or replaced): 0, or -1
- * with "PATH: reason" in msg.  Nothing is created: the Verilated model's
- * VCD writer, which says only that it failed, opens it later. */
-static int check_writable(const char *path, char *msg, size_t n) {
-  const char *slash = strrchr(path, '/');
-  char dir[4096];
-  if (!slash) {
-    snprintf(dir, sizeof dir, ".");
-  } else {
-    size_t len = (size_t)(slash - path);
-    if (len == 0) len = 1; /* "/x.vcd" */
-    if (len >= sizeof dir) len = sizeof dir - 1;
-    memcpy(dir, path, len);
-    dir[len] = '\0';
-  }
-  if (access(dir, W_OK | X_OK) != 0) {
-    snprintf(msg, n, "%s: %s", dir, strerror(errno));
-    return -1;
-  }
-  if (access(path, F_OK) == 0 && access(path, W_OK) != 0) {
-    snprintf(msg, n, "%s: %s", path, strerror(errno));
-    return -1;
-  }
-  return 0;
 }
 
 /* 1 if paths a and b name the same file. */
@@ -252,20 +230,13 @@ static int setup_model(const fp3_model_args *a, run_setup *s) {
 static int setup_engine(const fp3_model_args *a, run_setup *s) {
   char msg[512];
   const int iss = strcmp(a->engine, "iss") == 0;
-  if (a->trace) {
-    char why[4096 + 256];
-    if (check_writable(a->trace, why, sizeof why)) {
-      fprintf(stderr, "fp3 run: cannot write the trace file %s (%s)\n", a->trace, why);
-      return EXIT_USAGE;
-    }
-  }
-  s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace);
+  if (fp3_trace_writable(&a->trace, "run")) return EXIT_USAGE;
+  s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace.path);
   if (!s->e || fp3_engine_error(s->e)[0]) {
     fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a->engine, s->e ? ": " : "",
             s->e ? fp3_engine_error(s->e) : "");
     return EXIT_FAIL;
   }
-  if (a->trace) fp3_engine_rtl_trace_window(s->e, a->win_first, a->win_count);
   if (s->program) {
     fp3_compile_opts o;
     fp3_compile_opts_for(&o, &s->e->config);
@@ -291,6 +262,13 @@ static int setup_engine(const fp3_model_args *a, run_setup *s) {
     s->integ = a->integ;
     s->literal = a->literal;
   }
+  /* the waveform's size, from the program's cycles, against --trace-limit */
+  const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
+  if (!s->many && fp3_trace_prepare(&a->trace, "run", s->e,
+                                    fp3_trace_run_cycles(a->steps, cs->est_cycles_first,
+                                                         cs->est_cycles_later),
+                                    "by the scheduler's estimate of the program"))
+    return EXIT_USAGE;
   return 0;
 }
 
@@ -412,17 +390,7 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
     fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, fp3_engine_error(e));
     goto out;
   }
-  if (a->trace) {
-    if (a->win_first >= st.cycles)
-      fprintf(stderr, "fp3 run: trace %s: empty, the run has %" PRIu64
-              " cycles (--trace-window FIRST:COUNT)\n", a->trace, st.cycles);
-    else
-      fprintf(stderr, "fp3 run: trace %s: cycles %" PRIu64 "..%" PRIu64
-              " of the run's %" PRIu64 " (--trace-window FIRST:COUNT for others)\n", a->trace,
-              a->win_first,
-              (a->win_count > st.cycles - a->win_first ? st.cycles : a->win_first + a->win_count) - 1,
-              st.cycles);
-  }
+  fp3_trace_note(&a->trace, "run", st.cycles);
   const uint32_t done = st.steps_done < a->steps ? st.steps_done : a->steps;
   /* the bit-for-bit check, every integration; the first non-finite value;
    * the first rows of the report */
@@ -791,10 +759,6 @@ int fp3_cmd_run(int argc, char **argv) {
   int rc = setup_program(&a, &s);
   if (!rc) rc = setup_model(&a, &s);
   if (!rc) rc = setup_engine(&a, &s);
-  if (!rc && a.trace && s.many) {
-    fprintf(stderr, "fp3 run: --trace is for one object\n");
-    rc = EXIT_USAGE;
-  }
   if (!rc) rc = s.many ? run_many(&a, &s) : run_one(&a, &s);
   setup_free(&s);
   return rc;

@@ -7,7 +7,6 @@
 #define FP3_CMD_RUN_H
 
 #define FP3_RUN_DEFAULT_STEPS 10000u /* --steps: integrations            */
-#define FP3_RUN_TRACE_WINDOW 10000u  /* --trace-window's COUNT [cycles]  */
 
 /* argv[0] is "run".  Exit status: 0 the run finished without error and
  * bit-exact with the golden model, 1 it did not (or a state went

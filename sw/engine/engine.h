@@ -199,12 +199,25 @@ fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode);
  * out of memory or when c has no context or more than FP3_MAX_CONTEXTS
  * contexts, FP3_MAX_LANES lanes, or num_regs is 1 or above FP3_MAX_REGS. */
 fp3_engine *fp3_engine_iss_new_config(const fp3_config *c);
-/* trace_path: waveform file to write (NULL: none). */
+/* trace_path: VCD waveform file to write (NULL: none), every signal of the
+ * model.  The model writes it under a temporary name in the same folder,
+ * TRACE_PATH.tmp.PID; fp3_engine_free closes it and renames it to
+ * trace_path if a run completed (fp3_engine_run returned 0, whatever the
+ * program did) and none failed, and removes it otherwise (no run, a
+ * failed run), so trace_path is never a cut-off waveform.  While the
+ * temporary is open, SIGINT, SIGTERM and SIGHUP remove it and then end
+ * the process with the signal's default action (the exit status is the
+ * signal's); a signal the process ignores stays ignored, and the earlier
+ * actions are restored when the engine is freed.  At most 4 traced
+ * engines at once.  NULL (a message on stderr) if the temporary cannot be
+ * created, the name is too long, or 4 traced engines are open. */
 fp3_engine *fp3_engine_rtl_new(const char *trace_path);
-/* The RTL built with core options `mode` (parameters ROUND, FTZ). */
+/* The RTL built with core options `mode` (parameters ROUND, FTZ);
+ * trace_path as fp3_engine_rtl_new's. */
 fp3_engine *fp3_engine_rtl_new_mode(fpref_mode mode, const char *trace_path);
 /* The RTL of one Verilated build (model_ops: a `const fp3_model_ops *` of
- * sim/fp3_model.h, e.g. a test build with another NUM_CONTEXTS). */
+ * sim/fp3_model.h, e.g. a test build with another NUM_CONTEXTS);
+ * trace_path as fp3_engine_rtl_new's. */
 fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_path);
 /* Waveform window of an RTL engine created with a trace path: each run
  * writes only its cycles first .. first+count-1 (cycle 0 is the first

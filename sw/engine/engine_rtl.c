@@ -12,10 +12,14 @@
  * fails the run.  A write-back carries every lane's value (fp3_top trace
  * port); each lane's is reported as its object slot's (engine.h).
  */
+#include <errno.h>
 #include <limits.h>
+#include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "engine.h"
 #include "fp3_isa.h"
@@ -41,7 +45,114 @@ typedef struct rtl_engine {
   unsigned read_cycles;          /* host-port read latency, 1 + 3 FMAX_PIPE (+ 1 with lanes) */
   int win_set;                   /* waveform window, in cycles of a run */
   uint64_t win_first, win_count;
+  char *trace_path;              /* the waveform's final name (NULL: none) */
+  int trace_slot;                /* its temporary's slot of trace_tmp[] (-1: none) */
+  int run_ok, run_failed;        /* a run returned 0; a run returned -1 */
 } rtl_engine;
+
+/* ---- the waveform file -----------------------------------------------------
+ *
+ * A traced engine's model writes its VCD to a temporary beside the trace
+ * file, PATH.tmp.PID; rtl_destroy closes it (the model's destroy flushes
+ * the VCD writer) and renames it to PATH if a run completed and none
+ * failed, else removes it.  So PATH is never a cut-off waveform: it is
+ * either the whole window of finished runs or absent.
+ *
+ * While any temporary is open, SIGINT, SIGTERM and SIGHUP run
+ * trace_on_signal, which removes every open temporary (unlink is
+ * async-signal-safe, the names are in static buffers, each written before
+ * its slot is marked live), puts back the signal's default action and
+ * raises the signal again, so the process ends with the signal's status
+ * as it would have without the handler.  A signal the process ignored
+ * when the first temporary opened stays ignored (a background job's
+ * SIGINT); the earlier actions come back when the last temporary closes.
+ * A process can hold TRACE_SLOTS traced engines at once. */
+#define TRACE_SLOTS 4
+#define TRACE_NAME_MAX (4096 + 32) /* PATH_MAX and ".tmp." and a pid */
+
+static char trace_tmp[TRACE_SLOTS][TRACE_NAME_MAX];
+static volatile sig_atomic_t trace_live[TRACE_SLOTS];
+static const int trace_signals[] = {SIGINT, SIGTERM, SIGHUP};
+#define TRACE_NSIG (sizeof trace_signals / sizeof trace_signals[0])
+static struct sigaction trace_old[TRACE_NSIG]; /* actions before the handler */
+static int trace_hooked[TRACE_NSIG];           /* the handler is installed   */
+static int trace_open;                         /* live slots                 */
+
+static void trace_on_signal(int sig) {
+  for (int k = 0; k < TRACE_SLOTS; k++)
+    if (trace_live[k]) unlink(trace_tmp[k]);
+  struct sigaction dfl;
+  memset(&dfl, 0, sizeof dfl);
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  sigaction(sig, &dfl, NULL);
+  sigset_t one;
+  sigemptyset(&one);
+  sigaddset(&one, sig);
+  sigprocmask(SIG_UNBLOCK, &one, NULL); /* the handler runs with sig blocked */
+  raise(sig);
+}
+
+/* Claim a slot for the temporary of `path` (its name into trace_tmp[k]),
+ * installing the handler with the first.  k, or -1 with a message on
+ * stderr (the name too long, every slot taken). */
+static int trace_claim(const char *path) {
+  int k = 0;
+  while (k < TRACE_SLOTS && trace_live[k]) k++;
+  if (k == TRACE_SLOTS) {
+    fprintf(stderr, "fp3: cannot trace to %s: %d waveforms are being written already\n", path,
+            TRACE_SLOTS);
+    return -1;
+  }
+  int n = snprintf(trace_tmp[k], sizeof trace_tmp[k], "%s.tmp.%ld", path, (long)getpid());
+  if (n < 0 || (size_t)n >= sizeof trace_tmp[k]) {
+    fprintf(stderr, "fp3: cannot trace to %s: the name is too long\n", path);
+    return -1;
+  }
+  atomic_signal_fence(memory_order_seq_cst); /* the name before the mark */
+  trace_live[k] = 1;
+  if (trace_open++ == 0) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = trace_on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (size_t i = 0; i < TRACE_NSIG; i++) sigaddset(&sa.sa_mask, trace_signals[i]);
+    for (size_t i = 0; i < TRACE_NSIG; i++) {
+      trace_hooked[i] = 0;
+      if (sigaction(trace_signals[i], NULL, &trace_old[i]) != 0 ||
+          trace_old[i].sa_handler == SIG_IGN)
+        continue;
+      trace_hooked[i] = sigaction(trace_signals[i], &sa, NULL) == 0;
+    }
+  }
+  return k;
+}
+
+/* Give slot k back (its file renamed or removed); the last one restores
+ * the signals' earlier actions. */
+static void trace_release(int k) {
+  trace_live[k] = 0;
+  if (--trace_open == 0)
+    for (size_t i = 0; i < TRACE_NSIG; i++)
+      if (trace_hooked[i]) sigaction(trace_signals[i], &trace_old[i], NULL);
+}
+
+/* The model is closed: keep the temporary as the trace file or remove it. */
+static void trace_finish(rtl_engine *r) {
+  if (r->trace_slot < 0) return;
+  const char *tmp = trace_tmp[r->trace_slot];
+  if (r->run_ok && !r->run_failed) {
+    if (rename(tmp, r->trace_path) != 0) {
+      fprintf(stderr, "fp3: cannot rename the trace %s to %s: %s\n", tmp, r->trace_path,
+              strerror(errno));
+      unlink(tmp);
+    }
+  } else {
+    unlink(tmp);
+  }
+  trace_release(r->trace_slot);
+  r->trace_slot = -1;
+}
 
 static void host_write(const rtl_engine *m, unsigned addr, uint32_t value) {
   fp3_model_in in = {1, (uint16_t)addr, value};
@@ -150,8 +261,8 @@ static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contex
   return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
 
-static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
-                   const fp3_observer *obs, fp3_status *st) {
+static int rtl_run_once(fp3_engine *e, uint32_t steps, unsigned contexts,
+                        const fp3_observer *obs, fp3_status *st) {
   rtl_engine *r = (rtl_engine *)e;
   tag_fifo fifo[FP3_NUM_UNITS];   /* [unit]: write-back port u is unit u + 1 */
   memset(fifo, 0, sizeof fifo);
@@ -265,9 +376,21 @@ static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
   return 0;
 }
 
+/* A run, remembered for the waveform (trace_finish). */
+static int rtl_run(fp3_engine *e, uint32_t steps, unsigned contexts,
+                   const fp3_observer *obs, fp3_status *st) {
+  rtl_engine *r = (rtl_engine *)e;
+  int rc = rtl_run_once(e, steps, contexts, obs, st);
+  if (rc == 0) r->run_ok = 1;
+  else r->run_failed = 1;
+  return rc;
+}
+
 static void rtl_destroy(fp3_engine *e) {
   rtl_engine *r = (rtl_engine *)e;
   r->mops->destroy(r->model);
+  trace_finish(r);
+  free(r->trace_path);
   free(r);
 }
 
@@ -297,8 +420,22 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
   r->ctx_sel = UINT_MAX;
   r->lane_sel = UINT_MAX;
   r->read_cycles = 5; /* the longest, until INFO1 and INFO2 tell */
-  r->model = r->mops->create(trace_path);
+  r->trace_slot = -1;
+  if (trace_path) {
+    if (!(r->trace_path = strdup(trace_path))) {
+      free(r);
+      return NULL;
+    }
+    if ((r->trace_slot = trace_claim(trace_path)) < 0) {
+      free(r->trace_path);
+      free(r);
+      return NULL;
+    }
+  }
+  r->model = r->mops->create(trace_path ? trace_tmp[r->trace_slot] : NULL);
   if (!r->model) {
+    trace_finish(r); /* no run: removed, should the writer have created it */
+    free(r->trace_path);
     free(r);
     return NULL;
   }
