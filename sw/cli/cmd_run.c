@@ -260,6 +260,7 @@ static int setup_engine(const fp3_model_args *a, run_setup *s) {
     return EXIT_FAIL;
   }
   if (a->trace) fp3_engine_rtl_trace_window(s->e, a->win_first, a->win_count);
+  fp3_engine_show_progress(s->e, a->json ? NULL : "fp3 run");
   if (s->program) {
     fp3_compile_opts o;
     fp3_compile_opts_for(&o, &s->e->config);
@@ -761,6 +762,7 @@ static int run_ship_scene(const fp3_model_args *a) {
     fp3_engine_free(e);
     return EXIT_FAIL;
   }
+  fp3_engine_show_progress(e, a->json ? NULL : "fp3 run");
   fp3_integ_golden gstore;
   const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, ig);
   fp3_objects_cmd oc = {e,         &img,       path,    ig->name, &golden, compile, NULL, a->scene,
