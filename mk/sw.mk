@@ -55,5 +55,8 @@ TEST_BINS += $(BUILD)/tests/test_sw
 
 # tests/test_cli.sh and tests/test_trace.sh run the CLI named by $FP3_BIN.
 TEST_SCRIPTS += tests/test_cli.sh tests/test_trace.sh
+# tests/test_progress.sh: the progress line of long runs on a (pseudo-)
+# terminal, none with stderr to a file or --json ($FP3_BIN).
+TEST_SCRIPTS += tests/test_progress.sh
 export FP3_BIN := $(abspath $(BUILD)/fp3)
 test-build: $(BUILD)/fp3

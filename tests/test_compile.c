@@ -264,7 +264,7 @@ static void on_endi(void *ctx, uint32_t integration, uint64_t cycle) {
  * counts it); *later, from the last endi but one to the last. */
 static void endi_cycles(fp3_engine *e, const fp3_image *img, unsigned *first, unsigned *later) {
   uint64_t at[ENDIS] = {0};
-  fp3_observer obs = {at, NULL, on_endi, NULL, NULL};
+  fp3_observer obs = {at, NULL, on_endi, NULL, NULL, NULL};
   fp3_status st;
   assert_int_equal(fp3_engine_load(e, img->words, img->n), 0);
   assert_int_equal(fp3_engine_run(e, ENDIS, &obs, &st), 0);

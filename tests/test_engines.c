@@ -337,7 +337,7 @@ static void run_harbour_on(fp3_engine *e, const char *program, const fp3_integra
   assert_int_equal(fp3_asm_file(program, &img, &errors), 0);
   fp3_scene sc;
   assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &sc), 0);
-  fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f, 0};
+  fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f};
   if (fp3_run_frames(e, &img, &sc, ig, e->config.mode, &o, res, msg, sizeof msg))
     fail_msg("%s", msg);
   fp3_scene_free(&sc);

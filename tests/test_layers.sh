@@ -2,7 +2,7 @@
 # test_layers.sh -- the dependency arrows of sw/ point one way.
 #
 # Each folder of sw/ is one layer, ranked from the bottom up:
-#   common (formatting and file helpers) < isa (assembler, disassembler,
+#   common (formatting and file helpers, the progress line) < isa (assembler, disassembler,
 #   program images) < ref (golden models and references) < model (the
 #   model language: parser, literal golden model, GSL reference) < engine (ISS,
 #   RTL engine, vector runner) < scene (many objects, sleeping) <

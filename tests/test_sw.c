@@ -24,6 +24,7 @@
 #include "fpref.h"
 #include "golden.h"
 #include "image.h"
+#include "progress.h"
 
 #define SHIP "programs/ship_rk4.s"
 
@@ -1236,6 +1237,191 @@ static void test_analytic_vs_golden(void **state) {
   assert_true(ev < 1e-4);
 }
 
+/* ---- the progress line (progress.h) ----------------------------------------- */
+
+static void test_progress_format(void **state) {
+  (void)state;
+  char b[256];
+  /* 123,456 of 10^7 in 3.0864 s: 40,000/s, 246.9 s left */
+  size_t len = fp3_progress_format(b, sizeof b, "fp3 run", 123456, 10000000, "integrations",
+                                   3.0864);
+  assert_string_equal(b, "fp3 run: 123,456 of 10,000,000 integrations (1.2 %), 40,000/s, "
+                         "about 4 min left");
+  assert_int_equal(len, strlen(b));
+  fp3_progress_format(b, sizeof b, "fp3 run", 4294967295u, 4294967295u, "integrations", 1.0);
+  assert_string_equal(b, "fp3 run: 4,294,967,295 of 4,294,967,295 integrations (100.0 %), "
+                         "4,294,967,295/s");
+  /* the percentage rounds down: 100.0 only at the end */
+  fp3_progress_format(b, sizeof b, "x", 9999, 10000, "frames", 1.0);
+  assert_string_equal(b, "x: 9,999 of 10,000 frames (99.9 %), 9,999/s, about 1 s left");
+  /* nothing done yet: no rate, no time left */
+  fp3_progress_format(b, sizeof b, "fp3 frames", 0, 600, "frames", 2.5);
+  assert_string_equal(b, "fp3 frames: 0 of 600 frames (0.0 %)");
+  /* slow rates in three digits; seconds, minutes, hours, days */
+  fp3_progress_format(b, sizeof b, "x", 10, 100, "frames", 4.0);
+  assert_string_equal(b, "x: 10 of 100 frames (10.0 %), 2.5/s, about 36 s left");
+  fp3_progress_format(b, sizeof b, "x", 1000, 1000 + 5400 * 1000, "steps", 1.0);
+  assert_string_equal(b, "x: 1,000 of 5,401,000 steps (0.0 %), 1,000/s, about 1.5 h left");
+  fp3_progress_format(b, sizeof b, "x", 1000, 1000 + 3 * 86400 * 1000ull, "steps", 1.0);
+  assert_string_equal(b, "x: 1,000 of 259,201,000 steps (0.0 %), 1,000/s, about 3.0 days left");
+  /* total unknown: count and rate */
+  fp3_progress_format(b, sizeof b, "x", 999, 0, "steps", 1.0);
+  assert_string_equal(b, "x: 999 steps, 999/s");
+  /* a short buffer: cut, terminated */
+  len = fp3_progress_format(b, 12, "fp3 run", 123456, 10000000, "integrations", 1.0);
+  assert_string_equal(b, "fp3 run: 12");
+  assert_int_equal(len, 11);
+}
+
+/* A fake clock: each read returns *t, then advances it by step seconds. */
+typedef struct fake_clock {
+  double t, step;
+  unsigned reads;
+} fake_clock;
+
+static double fake_read(void *ctx) {
+  fake_clock *c = ctx;
+  double now = c->t;
+  c->t += c->step;
+  c->reads++;
+  return now;
+}
+
+/* Lines drawn in an output text: the '\r'-separated pieces that are not
+ * blank (the erase is '\r', spaces, '\r'). */
+static unsigned drawn_lines(const char *text) {
+  unsigned k = 0;
+  for (const char *p = text; *p;) {
+    const char *q = strchr(p, '\r');
+    size_t len = q ? (size_t)(q - p) : strlen(p);
+    int blank = 1;
+    for (size_t i = 0; i < len; i++) blank &= p[i] == ' ';
+    k += !blank && len > 0;
+    p += len + (q != NULL);
+  }
+  return k;
+}
+
+static void test_progress_throttle(void **state) {
+  (void)state;
+  char *text = NULL;
+  size_t size = 0;
+  FILE *f = open_memstream(&text, &size);
+  assert_non_null(f);
+  /* a clock read every 1/16 s of run: the stride stays 1 */
+  fake_clock c = {100.0, 0.0625, 0};
+  fp3_progress p;
+  fp3_progress_start_on(&p, f, "fp3 run", 1000, "integrations", 0, fake_read, &c);
+  for (uint64_t k = 1; k <= 31; k++) fp3_progress_update(&p, k);
+  fflush(f);
+  assert_int_equal(size, 0); /* under FP3_PROGRESS_DELAY: nothing */
+  fp3_progress_update(&p, 32);
+  fflush(f);
+  assert_true(size > 0); /* 2 s: the first line */
+  assert_int_equal(text[0], '\r');
+  assert_int_equal(text[size - 1], '\r');
+  assert_string_equal(text, "\rfp3 run: 32 of 1,000 integrations (3.2 %), 16/s, about 1 min "
+                            "left\r");
+  /* then one line every FP3_PROGRESS_PERIOD (4 reads of 1/16 s) */
+  for (uint64_t k = 33; k <= 140; k++) fp3_progress_update(&p, k);
+  fflush(f);
+  assert_int_equal(drawn_lines(text), 28);
+  assert_non_null(strstr(text, "\rfp3 run: 36 of 1,000"));
+  assert_null(strstr(text, "\rfp3 run: 37 of 1,000"));
+  assert_non_null(strstr(text, "\rfp3 run: 140 of 1,000 integrations (14.0 %), 16/s, about 54 s "
+                               "left\r"));
+  /* a shorter line is padded over the longer one before it */
+  fp3_progress_update(&p, 1000);
+  for (int i = 0; i < 5; i++) fp3_progress_update(&p, 1000);
+  fflush(f);
+  size_t before = size;
+  fp3_progress_finish(&p);
+  fflush(f);
+  /* finish erases the line: '\r', as many spaces as it had, '\r' */
+  const char *erase = text + before;
+  assert_non_null(strstr(text, "\rfp3 run: 1,000 of 1,000 integrations (100.0 %), 111/s"
+                               "             \r")); /* 13 spaces over the longer line */
+  size_t last = strlen("fp3 run: 1,000 of 1,000 integrations (100.0 %), 111/s");
+  assert_true(size - before == last + 2);
+  assert_int_equal(erase[0], '\r');
+  for (size_t i = 1; i <= last; i++) assert_int_equal(erase[i], ' ');
+  assert_int_equal(erase[last + 1], '\r');
+  fp3_progress_finish(&p); /* twice: nothing more */
+  fp3_progress_update(&p, 5);
+  fflush(f);
+  assert_int_equal(size, before + last + 2);
+  fclose(f);
+  free(text);
+
+  /* a fast caller: the clock is read far less often than every update */
+  f = open_memstream(&text, &size);
+  fake_clock fast = {0.0, 1e-4, 0};
+  fp3_progress_start_on(&p, f, "x", 0, "steps", 0, fake_read, &fast);
+  for (uint64_t k = 1; k <= 10000000; k++) fp3_progress_update(&p, k);
+  fp3_progress_finish(&p);
+  fclose(f);
+  assert_true(fast.reads < 200);
+  assert_int_equal(size, 0); /* never 2 s of run: nothing shown */
+  free(text);
+
+  /* a line wider than the terminal is cut to its width */
+  f = open_memstream(&text, &size);
+  fake_clock slow = {0.0, 3.0, 0};
+  fp3_progress_start_on(&p, f, "fp3 run", 1000, "integrations", 20, fake_read, &slow);
+  fp3_progress_update(&p, 10);
+  fflush(f);
+  assert_int_equal(size, 22);
+  assert_memory_equal(text, "\rfp3 run: 10 of 1,000\r", 22);
+  fp3_progress_finish(&p);
+  fclose(f);
+  free(text);
+
+  /* off: no stream, no label, or not asked for */
+  fp3_progress_start_on(&p, NULL, "x", 10, "steps", 0, fake_read, &slow);
+  assert_null(p.out);
+  fp3_progress_start_on(&p, stderr, NULL, 10, "steps", 0, fake_read, &slow);
+  assert_null(p.out);
+  fp3_progress_start(&p, "x", 10, "steps", 0);
+  assert_null(p.out);
+  fp3_progress_start(&p, "x", 10, "steps", 1);
+  if (!isatty(fileno(stderr))) assert_null(p.out); /* not a terminal: off */
+  fp3_progress_finish(&p);
+}
+
+/* An engine run reports its integrations to the observer's progress line. */
+static void test_progress_engine_run(void **state) {
+  (void)state;
+  fp3_image img;
+  assemble("    li r1, 1.0\n"
+           "b:  add r2, r2, r1\n"
+           "    endi b\n", &img);
+  fp3_engine *e = fp3_engine_iss_new();
+  assert_non_null(e);
+  assert_int_equal(fp3_engine_load(e, img.words, img.n), 0);
+  char *text = NULL;
+  size_t size = 0;
+  FILE *f = open_memstream(&text, &size);
+  fake_clock c = {0.0, 0.0625, 0};
+  fp3_progress p;
+  fp3_progress_start_on(&p, f, "fp3 run", 1000, "integrations", 0, fake_read, &c);
+  fp3_observer obs = {.progress = &p};
+  fp3_status st;
+  assert_int_equal(fp3_engine_run(e, 1000, &obs, &st), 0);
+  assert_int_equal(st.steps_done, 1000);
+  fflush(f);
+  assert_non_null(strstr(text, "\rfp3 run: 40 of 1,000 integrations (4.0 %)"));
+  assert_non_null(strstr(text, "\rfp3 run: 996 of 1,000 integrations (99.6 %)"));
+  assert_non_null(strstr(text, "\rfp3 run: 1,000 of 1,000 integrations (100.0 %)"));
+  fp3_progress_finish(&p);
+  fclose(f);
+  free(text);
+  /* the engine's own line: off unless stderr is a terminal */
+  fp3_engine_show_progress(e, "fp3 run");
+  assert_int_equal(fp3_engine_run(e, 10, NULL, &st), 0);
+  assert_int_equal(st.steps_done, 10);
+  fp3_engine_free(e);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_asm_instructions),
@@ -1265,6 +1451,9 @@ int main(void) {
       cmocka_unit_test(test_golden_no_drag),
       cmocka_unit_test(test_analytic_known),
       cmocka_unit_test(test_analytic_vs_golden),
+      cmocka_unit_test(test_progress_format),
+      cmocka_unit_test(test_progress_throttle),
+      cmocka_unit_test(test_progress_engine_run),
   };
   return cmocka_run_group_tests(tests, make_tmpdir, remove_tmpdir);
 }

@@ -667,6 +667,9 @@ int fp3_bench_run(const fp3_bench_opts *o) {
     rc = EXIT_FAIL;
     goto out;
   }
+  /* a run longer than a few seconds (the long runs) shows its progress */
+  fp3_engine_show_progress(rtl, "fp3 bench");
+  fp3_engine_show_progress(iss, "fp3 bench");
   /* cost of each program: one short RTL run, bit-exact on RTL and ISS */
   printf("Integrators (RTL cycles, ADD_LATENCY %u, MUL_LATENCY %u; CPU ns per "
          "golden step, median of %" PRIu32 "):\n",

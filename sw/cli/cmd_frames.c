@@ -71,7 +71,7 @@ int fp3_parse_frames(int argc, char **argv, fp3_frames_args *a) {
   a->json = 0;
   a->ig = fp3_integrator_find("rk4");
   a->opts = (fp3_frames_opts){.frames = 600, .rest_skip = 1, .wake_frame = 0, .wake_count = 0,
-                              .wake_vinf = 4.0f, .progress = 0};
+                              .wake_vinf = 4.0f};
   fp3_frames_opts *o = &a->opts;
   unsigned long long frames = 600;
   for (int i = 1; i < argc; i++) {
@@ -141,7 +141,6 @@ int fp3_parse_frames(int argc, char **argv, fp3_frames_args *a) {
     }
   }
   o->frames = (uint32_t)frames;
-  o->progress = !a->json && frames >= 100;
   /* Every frame is a START, which runs the program's prologue again; the
    * compensated ship programs' prologue sets the Kahan compensations to
    * 0 (programs/ship_rk4comp.s), so frame by frame they integrate
@@ -194,6 +193,7 @@ static int run_frames(const fp3_frames_args *a) {
     fp3_scene_free(&sc);
     return EXIT_FAIL;
   }
+  fp3_engine_show_progress(e, json ? NULL : "fp3 frames");
   fp3_frames_result res;
   int rc = fp3_run_frames(e, &img, &sc, ig, (fpref_mode){FPREF_RNE, 0}, &o, &res, msg, sizeof msg);
   fp3_engine_free(e);

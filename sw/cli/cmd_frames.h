@@ -20,7 +20,7 @@ typedef struct fp3_frames_args {
   double fmax;                 /* --fmax [MHz], > 0                          */
   int json;                    /* --json                                     */
   const fp3_integrator *ig;    /* --integrator's golden model                */
-  fp3_frames_opts opts;        /* frames, rest skipping, waking, progress    */
+  fp3_frames_opts opts;        /* frames, rest skipping, waking              */
 } fp3_frames_args;
 
 /* The parse step of `fp3 frames` (not of a model scene, fp3_parse_model):

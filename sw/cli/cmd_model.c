@@ -290,6 +290,7 @@ int fp3_model_fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd)
   fprintf(stderr, "fp3 %s: the program needs %u registers (NUM_REGS is %u): the ISS runs it as "
           "a build with NUM_REGS=%u\n", cmd, fp3_compiled_stats(c)->regs_needed,
           (*e)->config.num_regs, need);
+  fp3_engine_show_progress(ne, (*e)->progress);
   fp3_engine_free(*e);
   *e = ne;
   return 0;
@@ -498,6 +499,7 @@ int fp3_cmd_frames_model(int argc, char **argv) {
     goto out;
   }
   if (iss && fp3_model_fit_engine(&e, c, "frames")) goto out;
+  fp3_engine_show_progress(e, a.json ? NULL : "fp3 frames");
   /* the golden model steps each object from everything the program
    * carries (rk4comp: the state and its compensations), so a frame is
    * checked from the values in the bank, and an object rests when all of
@@ -684,6 +686,7 @@ int fp3_cmd_bench_model(int argc, char **argv) {
     fprintf(stderr, "fp3 bench: cannot create the %s engine\n", a.engine);
     goto out;
   }
+  fp3_engine_show_progress(e, "fp3 bench");
   if (a.stab && !(scsv = open_memstream(&stext, &slen))) goto out;
   if (scsv)
     fprintf(scsv, "model,integrator,h_stable,trial_steps,growth_bound\n");

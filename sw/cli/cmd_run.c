@@ -237,6 +237,7 @@ static int setup_engine(const fp3_model_args *a, run_setup *s) {
             s->e ? fp3_engine_error(s->e) : "");
     return EXIT_FAIL;
   }
+  fp3_engine_show_progress(s->e, a->json ? NULL : "fp3 run");
   if (s->program) {
     fp3_compile_opts o;
     fp3_compile_opts_for(&o, &s->e->config);
@@ -735,6 +736,7 @@ static int run_ship_scene(const fp3_model_args *a) {
     fp3_engine_free(e);
     return EXIT_FAIL;
   }
+  fp3_engine_show_progress(e, a->json ? NULL : "fp3 run");
   fp3_integ_golden gstore;
   const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, ig);
   fp3_ship_params dflt; /* the step until the scene's `h` line */

@@ -69,7 +69,16 @@ int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value) {
 
 int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
                    fp3_status *st) {
-  return e->ops->run(e, steps, 1, obs, st);
+  fp3_progress p;
+  fp3_progress_start(&p, e->progress, steps, "integrations", e->progress != NULL);
+  if (!p.out) return e->ops->run(e, steps, 1, obs, st);
+  /* the caller's observer, with the progress line fed by its endi events */
+  fp3_observer w = {0};
+  if (obs) w = *obs;
+  w.progress = &p;
+  int rc = e->ops->run(e, steps, 1, &w, st);
+  fp3_progress_finish(&p);
+  return rc;
 }
 
 int fp3_engine_write_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
@@ -103,6 +112,7 @@ void fp3_observe_endi(const fp3_observer *obs, unsigned context,
   if (!obs) return;
   if (obs->on_ctx_endi) obs->on_ctx_endi(obs->ctx, context, integration, cycle);
   if (context == 0 && obs->on_endi) obs->on_endi(obs->ctx, integration, cycle);
+  if (context == 0 && obs->progress) fp3_progress_update(obs->progress, integration);
 }
 
 void fp3_engine_free(fp3_engine *e) {
@@ -111,6 +121,10 @@ void fp3_engine_free(fp3_engine *e) {
 
 const char *fp3_engine_error(const fp3_engine *e) {
   return e ? e->error : "no engine";
+}
+
+void fp3_engine_show_progress(fp3_engine *e, const char *label) {
+  if (e) e->progress = label;
 }
 
 void fp3_track_advance(fp3_track *t, int which, uint32_t upto) {

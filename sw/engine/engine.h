@@ -42,6 +42,7 @@
 
 #include "fp3_isa.h"
 #include "fpref.h"
+#include "progress.h"
 
 /* Build configuration of an engine (see FP3_CONFIG in fp3_isa.h). */
 typedef struct fp3_config {
@@ -115,7 +116,9 @@ typedef struct fp3_ctx_status {
 
 /* Observer callbacks; any may be NULL.  on_write and on_endi report
  * context 0 only (one-object runs); on_ctx_write and on_ctx_endi report
- * every context. */
+ * every context.  progress (may be NULL): each endi of context 0 reports
+ * its integration to it (fp3_progress_update), as fp3_engine_run's
+ * progress line does. */
 typedef struct fp3_observer {
   void *ctx;
   /* A result was written to register `reg`. */
@@ -128,6 +131,7 @@ typedef struct fp3_observer {
                        uint32_t value, uint32_t integration);
   void (*on_ctx_endi)(void *ctx, unsigned context, uint32_t integration,
                       uint64_t cycle);
+  fp3_progress *progress;
 } fp3_observer;
 
 /* The values two watched registers hold after each integration, rebuilt
@@ -185,6 +189,8 @@ struct fp3_engine {
   const fp3_engine_ops *ops;
   fp3_config config;
   char error[256]; /* last error message */
+  const char *progress; /* label of the progress line, NULL: none
+                           (fp3_engine_show_progress)                     */
 };
 
 /* Constructors.  Return NULL when out of memory (or, for the RTL, when the
@@ -246,5 +252,17 @@ int fp3_engine_run_contexts(fp3_engine *e, uint32_t steps, unsigned contexts,
 int fp3_engine_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs);
 void fp3_engine_free(fp3_engine *e);
 const char *fp3_engine_error(const fp3_engine *e);
+
+/* Progress of long runs on a terminal (progress.h).  After
+ * fp3_engine_show_progress(e, "fp3 run") the runs on e that may last long
+ * show a progress line on stderr when it is a terminal, prefixed with the
+ * label: fp3_engine_run counts the integrations of context 0, and the runs
+ * of many objects (fp3_run_objects, fp3_run_state_objects) their
+ * object-steps, those frame by frame (fp3_run_frames,
+ * fp3_run_state_frames) their frames.  fp3_engine_run_contexts alone shows
+ * none: its caller knows the whole run.  label NULL (an engine's default)
+ * shows none; the CLI passes NULL for --json.  label must outlive the
+ * engine's runs. */
+void fp3_engine_show_progress(fp3_engine *e, const char *label);
 
 #endif /* FP3_ENGINE_H */

@@ -10,6 +10,7 @@
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "fpref.h"
+#include "progress.h"
 
 typedef struct frames_run {
   fp3_engine *e;
@@ -153,6 +154,8 @@ int fp3_run_frames(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
   res->first_object = SIZE_MAX;
   res->error_object = SIZE_MAX;
   int rc = 0;
+  fp3_progress prog;
+  fp3_progress_start(&prog, e->progress, o->frames, "frames", e->progress != NULL);
   for (uint32_t f = 1; f <= o->frames && rc == 0; f++) {
     if (f == o->wake_frame) {
       for (size_t i = 0; i < sc->n && res->woken < o->wake_count; i++)
@@ -175,10 +178,9 @@ int fp3_run_frames(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
     }
     if (k && rc == 0) rc = run_batch(&r, k, o, res, msg, n);
     if (rc == 0) check_frame(&r, f, res);
-    if (o->progress && (f % 100 == 0 || f == o->frames))
-      fprintf(stderr, "frames: %u of %u, %llu cycles\n", f, o->frames,
-              (unsigned long long)res->cycles);
+    fp3_progress_update(&prog, f);
   }
+  fp3_progress_finish(&prog);
   for (size_t i = 0; i < sc->n; i++) res->asleep_last += r.asleep[i];
   run_free(&r);
   return rc;

@@ -40,7 +40,6 @@ typedef struct fp3_frames_opts {
   uint32_t wake_frame; /* before this frame (1-based; 0: never) ...         */
   size_t wake_count;   /* ... the first wake_count objects with T = 0 ...   */
   float wake_vinf;     /* ... get thrust T = wake_vinf * C (C > 0 ones) [m/s] */
-  int progress;        /* print progress on stderr                          */
 } fp3_frames_opts;
 
 typedef struct fp3_frames_result {
@@ -67,7 +66,8 @@ typedef struct fp3_frames_result {
 
 /* Run scene sc for o->frames frames on engine e with program img (its
  * `.in` registers written from each object, fp3_in_registers), checked
- * against the golden model of integrator ig in core options `mode`.
+ * against the golden model of integrator ig in core options `mode`; the
+ * frames count on the engine's progress line (fp3_engine_show_progress).
  * Returns 0 when the frames ran (mismatches and errors are in *res), -1
  * with a message (engine failure, out of memory, program without .out v
  * and s, bad options). */

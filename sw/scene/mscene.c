@@ -15,6 +15,7 @@
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "objects.h"
+#include "progress.h"
 
 /* Skip blanks. */
 static char *skip_blank(char *p) {
@@ -407,6 +408,8 @@ typedef struct srec {
   uint32_t *val;  /* [(ctx * (steps + 1) + k) * nstate + i] */
   uint8_t *seen;
   int bad_tag;
+  fp3_progress *progress; /* object-steps of the whole run */
+  uint64_t done;          /* object-steps ended (endi of any slot) so far */
 } srec;
 
 static void srec_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
@@ -425,6 +428,13 @@ static void srec_write(void *ctx, unsigned context, unsigned reg, uint32_t value
   }
 }
 
+/* An integration of one object ended: one object-step more. */
+static void srec_endi(void *ctx, unsigned context, uint32_t integ, uint64_t cycle) {
+  srec *b = ctx;
+  (void)context, (void)integ, (void)cycle;
+  fp3_progress_update(b->progress, ++b->done);
+}
+
 int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                           uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
                           fp3_state_result *res, char *msg, size_t n) {
@@ -439,7 +449,10 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
   }
   if (golden_fits(mode, ns, golden->reg, nregs, msg, n)) return -1;
   size_t slots = (size_t)nctx * (steps + 1) * ns;
-  srec b = {golden, steps, malloc(slots * sizeof(uint32_t)), malloc(slots), 0};
+  fp3_progress prog;
+  srec b = {golden, steps, malloc(slots * sizeof(uint32_t)), malloc(slots), 0, &prog, 0};
+  fp3_progress_start(&prog, e->progress, (uint64_t)nobj * steps, "object-steps",
+                     e->progress != NULL);
   res->y = calloc(nobj * (ns ? ns : 1), sizeof *res->y);
   uint32_t *regs = calloc(nregs, sizeof *regs);
   float y[FP3_MODEL_MAX_VARS];
@@ -464,8 +477,10 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
           fp3_ctx_write_bank(e, c, regs, nregs, msg, n))
         goto out;
     memset(b.seen, 0, slots);
-    fp3_observer obs = {.ctx = &b, .on_ctx_write = srec_write};
+    fp3_observer obs = {.ctx = &b, .on_ctx_write = srec_write,
+                        .on_ctx_endi = prog.out ? srec_endi : NULL};
     fp3_status st;
+    b.done = (uint64_t)first * steps; /* a batch ends with all its steps */
     if (fp3_ctx_run_batch(e, steps, k, &obs, &b.bad_tag, &st, msg, n)) goto out;
     res->batches++;
     res->cycles += st.cycles;
@@ -518,6 +533,7 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
   }
   rc = 0;
 out:
+  fp3_progress_finish(&prog);
   free(b.val);
   free(b.seen);
   free(regs);
@@ -555,6 +571,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
   size_t *awake = malloc((nobj ? nobj : 1) * sizeof *awake);
   int rc = -1;
   fpenv_saved env;
+  fp3_progress prog = {0}; /* off until the frames start */
   if (!bank || !before || !gy || !asleep || !awake) {
     snprintf(msg, n, "out of memory");
     goto out;
@@ -573,6 +590,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
   res->contexts = e->config.num_contexts;
   res->lanes = e->config.num_lanes ? e->config.num_lanes : 1;
   res->first_object = res->error_object = SIZE_MAX;
+  fp3_progress_start(&prog, e->progress, frames, "frames", e->progress != NULL);
   for (uint32_t f = 1; f <= frames; f++) {
     size_t na = 0;
     for (size_t o = 0; o < nobj; o++)
@@ -587,6 +605,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
       }
       fp3_status st;
       if (fp3_ctx_run_batch(e, 1, k, NULL, NULL, &st, msg, n)) goto out;
+      fp3_progress_update(&prog, f - 1);
       res->batches++;
       res->cycles += st.cycles;
       res->issued += st.issued;
@@ -624,10 +643,12 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
         }
       }
     }
+    fp3_progress_update(&prog, f);
   }
   for (size_t o = 0; o < nobj; o++) res->asleep_last += asleep[o];
   rc = 0;
 out:
+  fp3_progress_finish(&prog);
   free(bank);
   free(before);
   free(gy);

@@ -133,7 +133,8 @@ typedef struct fp3_state_result {
  * bit with golden->step (run in `mode`).  Returns 0 when the runs took
  * place (mismatches, errors and non-finite states are in *res), or -1 with
  * a message (engine failure, out of memory, a register beyond NUM_REGS,
- * too much to record). */
+ * too much to record).  The object-steps count on the engine's progress line
+ * (fp3_engine_show_progress). */
 int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                           uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
                           fp3_state_result *res, char *msg, size_t n);
@@ -185,8 +186,9 @@ typedef struct fp3_state_frames_result {
  * but its bank and the instruction memory) and is not run again: every
  * later frame would leave it so.  Every object, awake or asleep, is
  * compared after every frame with golden->step_from, which steps it every
- * frame: the evidence that skipping changes no bit.  Returns 0 when the
- * frames ran (results in *res), or -1 with a message. */
+ * frame: the evidence that skipping changes no bit.  The frames count on
+ * the engine's progress line (fp3_engine_show_progress).  Returns 0 when
+ * the frames ran (results in *res), or -1 with a message. */
 int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                          uint32_t frames, int rest_skip, fpref_mode mode,
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,

@@ -13,6 +13,7 @@
 #include "fpenv.h"
 #include "fpref.h"
 #include "mscene.h"
+#include "progress.h"
 
 /* ---- scene files --------------------------------------------------------- */
 
@@ -219,6 +220,8 @@ typedef struct batch_rec {
   uint32_t *val[2];   /* [ctx * (steps + 1) + integration] */
   uint8_t *seen[2];
   int bad_tag;        /* a write tagged beyond the run: engine fault */
+  fp3_progress *progress; /* object-steps of the whole run */
+  uint64_t done;      /* object-steps ended (endi of any slot) so far */
 } batch_rec;
 
 static void rec_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
@@ -237,6 +240,13 @@ static void rec_write(void *ctx, unsigned context, unsigned reg, uint32_t value,
     b->val[w][at] = value;
     b->seen[w][at] = 1;
   }
+}
+
+/* An integration of one object ended: one object-step more. */
+static void rec_endi(void *ctx, unsigned context, uint32_t integ, uint64_t cycle) {
+  batch_rec *b = ctx;
+  (void)context, (void)integ, (void)cycle;
+  fp3_progress_update(b->progress, ++b->done);
 }
 
 void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]) {
@@ -318,8 +328,11 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
              nctx, steps, bytes / 1e6);
     return -1;
   }
+  fp3_progress prog;
   batch_rec b = {img->out_reg[FP3_OUT_V], img->out_reg[FP3_OUT_S], steps, {NULL, NULL},
-                 {NULL, NULL}, 0};
+                 {NULL, NULL}, 0, &prog, 0};
+  fp3_progress_start(&prog, e->progress, (uint64_t)sc->n * steps, "object-steps",
+                     e->progress != NULL);
   size_t slots = (size_t)nctx * (steps + 1);
   res->v = calloc(sc->n, sizeof *res->v);
   res->s = calloc(sc->n, sizeof *res->s);
@@ -350,8 +363,10 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
       if (fp3_ctx_write_bank(e, c, regs, e->config.num_regs, msg, n)) goto out;
     }
     for (int w = 0; w < 2; w++) memset(b.seen[w], 0, slots);
-    fp3_observer obs = {.ctx = &b, .on_ctx_write = rec_write};
+    fp3_observer obs = {.ctx = &b, .on_ctx_write = rec_write,
+                        .on_ctx_endi = prog.out ? rec_endi : NULL};
     fp3_status st;
+    b.done = (uint64_t)first * steps; /* a batch ends with all its steps */
     if (fp3_ctx_run_batch(e, steps, k, &obs, &b.bad_tag, &st, msg, n)) goto out;
     res->batches++;
     res->cycles += st.cycles;
@@ -400,6 +415,7 @@ int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
   }
   rc = 0;
 out:
+  fp3_progress_finish(&prog);
   for (int w = 0; w < 2; w++) {
     free(b.val[w]);
     free(b.seen[w]);

@@ -130,6 +130,8 @@ int fp3_objects_check(const fp3_engine *e, const fp3_image *img, fpref_mode mode
  * batches of fp3_config_slots(&e->config) objects (contexts x lanes), writing each object's `.in`
  * registers (fp3_in_registers), and compare v and s of every object after
  * every integration with the golden model (run in core options `mode`).
+ * The object-steps count on the engine's progress line
+ * (fp3_engine_show_progress).
  * Returns 0 when the runs took place (mismatches and errors are in *res),
  * or -1 with a message (engine failure, out of memory, program without
  * .out v/s). */
