@@ -58,5 +58,8 @@ TEST_SCRIPTS += tests/test_cli.sh tests/test_trace.sh
 # tests/test_progress.sh: the progress line of long runs on a (pseudo-)
 # terminal, none with stderr to a file or --json ($FP3_BIN).
 TEST_SCRIPTS += tests/test_progress.sh
+# tests/test_json.sh: every subcommand's --json against docs/fp3.schema.json
+# (Python's jsonschema; $FP3_BIN).
+TEST_SCRIPTS += tests/test_json.sh
 export FP3_BIN := $(abspath $(BUILD)/fp3)
 test-build: $(BUILD)/fp3

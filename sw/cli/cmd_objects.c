@@ -119,7 +119,8 @@ int fp3_cmd_run_objects(const fp3_objects_cmd *c) {
            res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64,
            res.cycles, res.issued, res.stalls);
-    printf(", \"cycles_first_step\": null, \"cycles_per_object_step\": %.9g", per_object_step);
+    printf(", \"cycles_first_step\": null, \"cycles_later_step\": null");
+    printf(", \"cycles_per_object_step\": %.9g", per_object_step);
     printf(", \"issued_per_object_step\": %.9g", issue_bound);
     printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);

@@ -434,7 +434,8 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64, st.cycles,
            st.issued, st.stalls);
     fp3_json_member_double(stdout, "cycles_first_step", cyc_first);
-    fp3_json_member_double(stdout, "cycles_per_object_step", cyc_per);
+    fp3_json_member_double(stdout, "cycles_later_step", cyc_per);
+    printf(", \"cycles_per_object_step\": %.9g", (double)st.cycles / (double)a->steps);
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", mismatches);
     if (mismatches)
       printf("{\"object\": 0, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
@@ -616,7 +617,8 @@ static int run_many(const fp3_model_args *a, run_setup *s) {
            res.batches);
     printf(", \"cycles\": %" PRIu64 ", \"issued\": %" PRIu64 ", \"stalls\": %" PRIu64, res.cycles,
            res.issued, res.stalls);
-    printf(", \"cycles_first_step\": null, \"cycles_per_object_step\": %.9g", per);
+    printf(", \"cycles_first_step\": null, \"cycles_later_step\": null");
+    printf(", \"cycles_per_object_step\": %.9g", per);
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
     if (res.mismatches)
       printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
@@ -703,23 +705,35 @@ out:
 /* `fp3 run --scene FILE` on a ship scene ('T C m v0 s0' a line, sw/scene/
  * objects.h): the ship scene compiler's program (or with --literal or
  * --program the hand-written one) on cmd_objects.c's path. */
+/* The ship integrator (sw/ref/integrators.c) of a model integrator of the
+ * ship's programs (docs/models.md), or NULL. */
+static const char *ship_integrator(const char *model_integ) {
+  static const char *const pairs[][2] = {
+      {"euler", "euler"}, {"symeuler", "symeuler"}, {"verletp", "verlet"},
+      {"rk2", "rk2"},     {"rk4se", "rk4"},         {"rk4vs", "rk4vs"},
+      {"rk4secomp", "rk4comp"}, {"rk4vscomp", "rk4vscomp"}};
+  for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
+    if (strcmp(pairs[i][0], model_integ) == 0) return pairs[i][1];
+  return NULL;
+}
+
 static int run_ship_scene(const fp3_model_args *a) {
   const char *iname = a->integ_given ? a->integ : "rk4";
   const fp3_integrator *ig = fp3_integrator_find(iname);
   const int compile = !a->literal && !a->program;
-  if (!ig) {
+  if (!ig && !a->program) {
     fprintf(stderr, "fp3 run: a ship scene runs the ship's integrators (%s), not '%s'\n",
             fp3_integrator_names(), iname);
     return EXIT_USAGE;
   }
-  if (compile && !fp3_compile_knows(ig->name)) {
+  if (compile && !fp3_compile_knows(iname)) {
     fprintf(stderr, "fp3 run: the scene compiler does not know integrator '%s' (%s); "
-            "--literal runs programs/ship_%s.s\n", ig->name, fp3_compile_integrators(), ig->name);
+            "--literal runs programs/ship_%s.s\n", iname, fp3_compile_integrators(), iname);
     return EXIT_USAGE;
   }
   char path[8192];
   if (a->program) snprintf(path, sizeof path, "%s", a->program);
-  else find_shipped(ig->program, path, sizeof path);
+  else find_shipped(ig->program, path, sizeof path); /* ig: not NULL without --program */
   fp3_image img;
   char *errs = NULL;
   if (fp3_asm_file(path, &img, &errs) != 0) {
@@ -729,6 +743,17 @@ static int run_ship_scene(const fp3_model_args *a) {
   }
   free(errs);
   if (fp3_refuse_endless("run", path, &img)) return EXIT_USAGE;
+  if (a->program) { /* the golden model of the program's .integrator */
+    const char *sn = ship_integrator(img.integrator);
+    if (!sn || (a->integ_given && strcmp(a->integ, img.integrator) != 0 &&
+                strcmp(a->integ, sn) != 0)) {
+      fprintf(stderr, "fp3 run: %s: .integrator '%s' is not one of the ship's programs' "
+              "(a ship scene; %s), or not --integrator %s\n", path, img.integrator,
+              fp3_integrator_names(), a->integ);
+      return EXIT_USAGE;
+    }
+    ig = fp3_integrator_find(sn);
+  }
   fp3_engine *e = strcmp(a->engine, "iss") == 0 ? fp3_engine_iss_new_mode(a->mode)
                                                 : fp3_engine_rtl_new_mode(a->mode, NULL);
   if (!e || fp3_engine_error(e)[0]) {

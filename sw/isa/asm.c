@@ -351,6 +351,25 @@ static void do_binding(asm_state *st, int is_in, char **ops, int nops,
     add_error(st, line, "%s", why);
 }
 
+/* Drop each "DIR/../" of path p in place (DIR not "..", "." or empty):
+ * programs/../models/ship.fp3m is models/ship.fp3m.  The same file as long
+ * as DIR is a folder, not a link elsewhere, which holds for the paths
+ * .model joins. */
+static void drop_dotdot(char *p) {
+  for (char *q = p; (q = strstr(q, "/../")) != NULL;) {
+    char *seg = q;
+    while (seg > p && seg[-1] != '/') seg--;
+    const size_t len = (size_t)(q - seg);
+    if (len == 0 || (len == 2 && seg[0] == '.' && seg[1] == '.') ||
+        (len == 1 && seg[0] == '.')) {
+      q += 3;
+      continue;
+    }
+    memmove(seg, q + 4, strlen(q + 4) + 1);
+    q = seg > p ? seg - 1 : p;
+  }
+}
+
 /* `.model "FILE"` (beside the program, as .include finds files) and
  * `.integrator NAME`: what the program computes. */
 static void do_model(asm_state *st, int is_model, char **ops, int nops, int line) {
@@ -369,6 +388,7 @@ static void do_model(asm_state *st, int is_model, char **ops, int nops, int line
     }
     snprintf(st->img->model, sizeof st->img->model, "%.*s%.*s", dlen, st->fname,
              (int)len - 2, arg + 1);
+    drop_dotdot(st->img->model);
   } else {
     if (nops != 1 || !is_ident(arg) || len >= sizeof st->img->integrator) {
       add_error(st, line, ".integrator takes one integrator name");
