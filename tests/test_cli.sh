@@ -147,7 +147,7 @@ expect 1 "at pc 1"                     -- "${ISS[@]}" --program "$T/fault.s" --s
 # ---- a program that computes something else: golden mismatches, exit 1 ----------------
 cp programs/*.inc "$T/"   # the files the ship programs include
 sed 's/^\( *\)add  s, s, hv/\1sub  s, s, hv/' programs/ship_rk4.s >"$T/wrong.s"
-expect 2 "wrong.s: its .model line names $T/../models/ship.fp3m: .*--model FILE names the model" \
+expect 2 "wrong.s: its .model line names .*models/ship.fp3m: .*--model FILE names the model" \
   -- "${ISS[@]}" --program "$T/wrong.s" --steps 20
 expect 1 "FAIL: .* golden mismatches, first at integration 1" -- "${ISS[@]}" --program "$T/wrong.s" \
   --model models/ship.fp3m --steps 20
