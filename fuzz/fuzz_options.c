@@ -2,9 +2,9 @@
  * fuzz_options.c -- libFuzzer harness for the command line: the parse step
  * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
  * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
- * fp3_parse_compile, fp3_parse_configure, fp3_parse_frames,
- * fp3_parse_bench, fp3_parse_tbgen, fp3_parse_testfloat and, for run and
- * the model forms of compile, frames and bench, fp3_parse_model, with the
+ * fp3_parse_compile, fp3_parse_configure, fp3_parse_bench,
+ * fp3_parse_tbgen, fp3_parse_testfloat and, for run, frames and the model
+ * forms of compile and bench, fp3_parse_model, with the
  * option-value parsers of sw/cli/cliopt.c they share.  The run steps
  * (files, engines) are never called.
  *
@@ -35,7 +35,6 @@
 #include "cmd_compile.h"
 #include "cmd_configure.h"
 #include "cmd_disasm.h"
-#include "cmd_frames.h"
 #include "cmd_model.h"
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
@@ -92,7 +91,8 @@ static const fp3_model *spring(void) {
 static void parse_model(const char *cmd, int argc, char **argv) {
   fp3_model_args a;
   if (fp3_parse_model(argc, argv, cmd, &a) != FP3_ARGS_RUN) return;
-  if (!a.scene && !a.file && strcmp(cmd, "run") != 0) fail(cmd, "neither --model nor a scene");
+  if (!a.scene && !a.file && strcmp(cmd, "run") != 0 && !a.harbour)
+    fail(cmd, "neither --model, a scene nor a harbour");
   if (a.trace.path && (a.objects || a.scene || strcmp(a.engine, "rtl") != 0))
     fail(cmd, "--trace with several objects or the ISS");
   if (a.trace.win_count < 1) fail(cmd, "an empty trace window");
@@ -116,15 +116,6 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   }
 }
 
-static void parse_frames(int argc, char **argv) {
-  fp3_frames_args a;
-  if (fp3_parse_frames(argc, argv, &a) != FP3_ARGS_RUN) return;
-  if (!a.ig || a.opts.frames < 1 || a.ships < 1 || !(a.fmax > 0.0)) fail("frames", "a count");
-  if (a.opts.wake_frame && a.opts.wake_count < 1) fail("frames", "an empty --wake");
-  check_str("frames", a.scene_path, 0);
-  check_str("frames", a.program, 1);
-  check_str("frames", a.engine_name, 1);
-}
 
 static void parse_bench(int argc, char **argv) {
   fp3_bench_opts o;
@@ -235,13 +226,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   const char *cmd = cmds[c];
   const int has_model_form = strcmp(cmd, "run") == 0 || strcmp(cmd, "compile") == 0 ||
                              strcmp(cmd, "frames") == 0 || strcmp(cmd, "bench") == 0;
-  if (strcmp(cmd, "run") == 0 || (has_model_form && (model || names_model(argc, argv))))
+  if (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0 ||
+      (has_model_form && (model || names_model(argc, argv))))
     parse_model(cmd, argc, argv);
   else if (strcmp(cmd, "asm") == 0) parse_asm(argc, argv);
   else if (strcmp(cmd, "disasm") == 0) parse_disasm(argc, argv);
   else if (strcmp(cmd, "compile") == 0) parse_compile(argc, argv);
   else if (strcmp(cmd, "configure") == 0) parse_configure(argc, argv);
-  else if (strcmp(cmd, "frames") == 0) parse_frames(argc, argv);
   else if (strcmp(cmd, "bench") == 0) parse_bench(argc, argv);
   else if (strcmp(cmd, "testfloat") == 0) parse_testfloat(argc, argv);
   else parse_tbgen(argc, argv);

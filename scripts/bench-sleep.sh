@@ -35,7 +35,7 @@ PY
 run awake --program programs/ship_rk4.s --no-rest-skip
 run beq --no-rest-skip
 run beq+rest
-run beq+rest+wake --wake $((F / 2)):$((N / 10))
+run beq+rest+wake --wake $((F / 2)):$((N / 10)):T=4*C
 mv "$csv.tmp" "$csv"
 python3 - "$csv" "$md" <<'PY'
 import csv, sys

@@ -364,12 +364,12 @@ expect 1 "$T/adir" -- configure scenes/drift.scene -o "$T/adir"
 
 # ---- fp3 frames: sleeping objects -------------------------------------------------
 expect 0 "usage: fp3 frames" -- frames --help
-expect 0 "golden model: bit-identical" -- frames --engine iss --harbour 20 --frames 30 --wake 10:2
+expect 0 "golden model: bit-identical" -- frames --engine iss --harbour 20 --frames 30 --wake 10:2:T=4*C
 expect 0 '"pass": true' -- frames --engine iss --scene scenes/harbour.scene --frames 20 --json
 expect 2 "frames '0'" -- frames --frames 0
 expect 2 "harbour '-3'" -- frames --harbour -3
 expect 2 "want FRAME:COUNT" -- frames --wake 5
-expect 2 "want FRAME:COUNT, FRAME 1.." -- frames --wake 0:2
+expect 2 "want FRAME:COUNT:..., FRAME 1.." -- frames --wake 0:2:T=1
 expect 2 "fmax 'x'" -- frames --fmax x
 expect 2 "unknown integrator 'leapfrog'" -- frames --integrator leapfrog
 expect 2 "engine 'gpu'" -- frames --engine gpu

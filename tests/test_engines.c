@@ -30,7 +30,8 @@
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "fpref.h"
-#include "frames.h"
+#include "compile.h"
+#include "mscene.h"
 #include "golden.h"
 #include "integrators.h"
 #include "image.h"
@@ -326,28 +327,49 @@ static void test_ship_rk4_cycles(void **state) {
   capture_free(&a);
 }
 
-/* A harbour frame by frame (frames.h): awake, sleeping in the program,
- * and sleeping with the host skipping objects at rest, with a wake; every
- * object equals the RK4 golden model after every frame in each. */
-static void run_harbour_on(fp3_engine *e, const char *program, const fp3_integrator *ig,
-                           int rest_skip, uint32_t wake_frame, fp3_frames_result *res) {
+/* A harbour of the ship model frame by frame (mscene.h
+ * fp3_run_state_frames): awake, sleeping in the program, and sleeping
+ * with the host skipping objects at rest, with a wake (thrust T = 4 C for
+ * 3 moored ships); every object equals the golden model of the program's
+ * .integrator (or of integ, when not NULL: a wrong one) after every
+ * frame in each. */
+static void run_harbour_on(fp3_engine *e, const char *program, const char *integ,
+                           int rest_skip, uint32_t wake_frame, fp3_state_frames_result *res) {
   fp3_image img;
-  char *errors = NULL, msg[256];
+  char *errors = NULL, msg[512];
   fp3_image_init(&img);
   assert_int_equal(fp3_asm_file(program, &img, &errors), 0);
-  fp3_scene sc;
-  assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &sc), 0);
-  fp3_frames_opts o = {40, rest_skip, wake_frame, 3, 4.0f};
-  if (fp3_run_frames(e, &img, &sc, ig, e->config.mode, &o, res, msg, sizeof msg))
+  if (integ) snprintf(img.integrator, sizeof img.integrator, "%s", integ);
+  fp3_model *m = malloc(sizeof *m);
+  assert_non_null(m);
+  if (fp3_model_load(img.model, m, msg, sizeof msg)) fail_msg("%s", msg);
+  fp3_scene ships;
+  fp3_mscene sc;
+  assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &ships), 0);
+  if (fp3_mscene_from_ships(&ships, m, "harbour", &sc, msg, sizeof msg)) fail_msg("%s", msg);
+  fp3_scene_free(&ships);
+  fp3_compile_opts o;
+  fp3_compile_opts_for(&o, &e->config);
+  fp3_compiled *c = NULL;
+  if (fp3_compile_bind(sc.model, &img, program, &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  fp3_scene_gold g;
+  fp3_scene_gold_init(&g, c, &sc);
+  fp3_scene_waker w;
+  if (wake_frame &&
+      fp3_scene_waker_init(&w, c, &sc, wake_frame, 3, "T", 4.0f, "C", msg, sizeof msg))
     fail_msg("%s", msg);
-  fp3_scene_free(&sc);
+  if (fp3_run_state_frames(e, img.words, img.n, sc.n, 40, rest_skip, wake_frame ? &w.wake : NULL,
+                           e->config.mode, &g.stepper, res, msg, sizeof msg))
+    fail_msg("%s", msg);
+  fp3_compiled_free(c);
+  fp3_mscene_free(&sc);
   assert_int_equal(res->error, FP3_ERR_NONE);
   assert_int_equal(res->object_frames + res->skipped, 48 * 40);
 }
 
-static void run_harbour(const char *program, const fp3_integrator *ig, int rest_skip,
-                        uint32_t wake_frame, fp3_frames_result *res) {
-  run_harbour_on(rtl, program, ig, rest_skip, wake_frame, res);
+static void run_harbour(const char *program, const char *integ, int rest_skip,
+                        uint32_t wake_frame, fp3_state_frames_result *res) {
+  run_harbour_on(rtl, program, integ, rest_skip, wake_frame, res);
 }
 
 /* fp3 frames on the lanes build (8 contexts x 4 lanes): the awake
@@ -358,11 +380,10 @@ static void test_frames_lanes(void **state) {
   (void)state;
   fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_l4, NULL);
   assert_non_null(e);
-  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
-  fp3_frames_result awake, beq, rest;
-  run_harbour_on(e, "programs/ship_rk4.s", rk4, 0, 0, &awake);
-  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 0, 0, &beq);
-  run_harbour_on(e, "programs/ship_rk4_sleep.s", rk4, 1, 0, &rest);
+  fp3_state_frames_result awake, beq, rest;
+  run_harbour_on(e, "programs/ship_rk4.s", NULL, 0, 0, &awake);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", NULL, 0, 0, &beq);
+  run_harbour_on(e, "programs/ship_rk4_sleep.s", NULL, 1, 0, &rest);
   assert_int_equal(awake.lanes, 4);
   assert_int_equal(awake.contexts, 8);
   assert_int_equal(awake.mismatches, 0);
@@ -378,12 +399,11 @@ static void test_frames_lanes(void **state) {
 
 static void test_frames_sleeping(void **state) {
   (void)state;
-  const fp3_integrator *rk4 = fp3_integrator_find("rk4");
-  fp3_frames_result awake, beq, rest, woken, wrong;
-  run_harbour("programs/ship_rk4.s", rk4, 0, 0, &awake);
-  run_harbour("programs/ship_rk4_sleep.s", rk4, 0, 0, &beq);
-  run_harbour("programs/ship_rk4_sleep.s", rk4, 1, 0, &rest);
-  run_harbour("programs/ship_rk4_sleep.s", rk4, 1, 20, &woken);
+  fp3_state_frames_result awake, beq, rest, woken, wrong;
+  run_harbour("programs/ship_rk4.s", NULL, 0, 0, &awake);
+  run_harbour("programs/ship_rk4_sleep.s", NULL, 0, 0, &beq);
+  run_harbour("programs/ship_rk4_sleep.s", NULL, 1, 0, &rest);
+  run_harbour("programs/ship_rk4_sleep.s", NULL, 1, 20, &woken);
   assert_int_equal(awake.mismatches, 0);
   assert_int_equal(beq.mismatches, 0);
   assert_int_equal(rest.mismatches, 0);
@@ -398,7 +418,7 @@ static void test_frames_sleeping(void **state) {
   print_message("harbour of 48, 40 frames: %.1f, %.1f, %.1f cycles per frame (awake, beq, "
                 "beq + rest)\n", awake.cycles / 40.0, beq.cycles / 40.0, rest.cycles / 40.0);
   /* the check can fail: another integrator's golden model differs */
-  run_harbour("programs/ship_rk4_sleep.s", fp3_integrator_find("rk2"), 1, 0, &wrong);
+  run_harbour("programs/ship_rk4_sleep.s", "rk2", 1, 0, &wrong);
   assert_true(wrong.mismatches > 0);
 }
 

@@ -103,7 +103,7 @@ form run 1 -- run "${ISS[@]}" --scene scenes/harbour.scene --program "$T/fault.s
 
 # ---- fp3 frames ---------------------------------------------------------------
 form frames 0 -- frames --harbour 50 --frames 20 "${ISS[@]}"
-form frames 0 -- frames --harbour 20 --seed 3 --frames 5 --no-rest-skip --wake 2:3 "${ISS[@]}"
+form frames 0 -- frames --harbour 20 --seed 3 --frames 5 --no-rest-skip --wake 2:3:T=4*C "${ISS[@]}"
 form frames 0 -- frames --scene scenes/drift.scene --program programs/ship_euler.s --integrator euler --frames 5 "${ISS[@]}"
 form frames 0 -- frames --scene scenes/fleet.scene --frames 20 "${ISS[@]}"
 form frames 0 -- frames --scene scenes/springs.scene --frames 5 --literal --no-rest-skip "${ISS[@]}"
@@ -197,7 +197,7 @@ if "run" in samples:
     reject("run with an undocumented key", "run", with_("run", ["cycles_total"], 1))
     reject("run with an unknown engine", "run", with_("run", ["engine"], "fpga"))
     reject("run with a NaN token", "run", json.dumps(with_("run", ["max_error_ref"], float("nan"))))
-reject("frames without error", "frames", without("frames", "error"))
+reject("frames without run_error", "frames", without("frames", "run_error"))
 reject("frames with cycles_per_frame a string", "frames", with_("frames", ["cycles_per_frame"], "1.5"))
 reject("compile without registers", "compile", without("compile", "registers"))
 reject("compile with fold a string", "compile", with_("compile", ["fold"], "true"))

@@ -978,7 +978,7 @@ static void test_lanes(void **st) {
     drop(r.y);
   }
   fp3_state_frames_result fr;
-  if (fp3_run_state_frames(l4, img->words, img->n, sc->n, 8, 1, FPREF_IEEE, &sg.stepper, &fr, msg,
+  if (fp3_run_state_frames(l4, img->words, img->n, sc->n, 8, 1, NULL, FPREF_IEEE, &sg.stepper, &fr, msg,
                            sizeof msg))
     fail_msg("%s", msg);
   assert_int_equal(fr.mismatches, 0);

@@ -109,10 +109,14 @@ for eng in iss rtl; do
   check "frames rk4comp $eng: the springs, every frame bit-exact, none at rest" \
     "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"object_frames_skipped\"]==0 and d[\"object_frames_run\"]==24*20 else 1)'"
 done
-# ... but a ship program's prologue restarts them each frame: refused, saying so
-err=$("$FP3" frames --harbour 20 --integrator rk4comp --frames 3 2>&1); rc=$?
-check "frames refuses rk4comp on a ship program, naming the prologue and the model scene" \
-  "[ $rc -eq 2 ] && grep -q 'restarts its Kahan compensations at 0' <<<\"\$err\" && grep -q 'scenes/fleet.scene' <<<\"\$err\""
+# ... so does the ship's harbour compiled for rk4comp; the hand-written
+# ship_rk4comp.s keeps them where nothing binds them: refused, saying so
+out=$("$FP3" frames --harbour 20 --integrator rk4comp --frames 30 --engine iss --json)
+check "frames --harbour rk4comp (compiled): every frame bit-exact" \
+  "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"woken\"]==0 else 1)'"
+err=$("$FP3" frames --harbour 20 --program programs/ship_rk4comp.s --frames 3 2>&1); rc=$?
+check "frames refuses ship_rk4comp.s: its compensations have no register the host reads" \
+  "[ $rc -eq 2 ] && grep -q 'binds no register for value 2' <<<\"\$err\" && grep -q 'integrator rk4secomp' <<<\"\$err\""
 out=$("$FP3" frames --scene scenes/fleet.scene --integrator rk4comp --frames 30 --json)
 check "frames rk4comp: the 12 moored ships rest, every frame bit-exact" \
   "echo '$out' | python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if d[\"pass\"] and d[\"asleep_at_end\"]==12 and d[\"object_frames_skipped\"]>0 else 1)'"

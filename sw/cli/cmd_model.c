@@ -23,11 +23,15 @@
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 #define DEFAULT_STEPS 1000u  /* fp3 run --model: integrations          */
-#define DEFAULT_FRAMES 600u  /* fp3 frames with a model scene: 10 s      */
+#define DEFAULT_FRAMES 600u  /* fp3 frames: 10 s at h = 1/60 s          */
 #define DEFAULT_POINTS 6u    /* fp3 bench --model: step sizes            */
 /* object-steps x state variables the bit-for-bit check keeps */
 #define MAX_CHECKED (1u << 26)
 #define MAX_MODEL_OBJECTS 1000000u /* --objects */
+#define DEFAULT_HARBOUR 1000u /* fp3 frames: ships of the default harbour */
+/* fp3 frames --fmax: MHz, the default build's Fmax on the LFE5U-85F-6
+ * (README "Results", make pnr) */
+#define DEFAULT_FMAX 40.5
 
 int fp3_args_have_model(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
@@ -39,6 +43,42 @@ int fp3_args_have_model(int argc, char **argv) {
     if (argv[i][0] != '-' && (i == 1 || argv[i - 1][0] != '-') && fp3_scene_is_model(argv[i]))
       return 1;
   }
+  return 0;
+}
+
+/* --wake F:K:NAME=VALUE[*PARAM] into a (fp3_model_args).  0, or -1 with
+ * the message on stderr. */
+static int parse_wake(const char *v, fp3_model_args *a) {
+  unsigned long long f, k;
+  char pair[64], rule[128];
+  const char *c2 = strchr(v, ':') ? strchr(strchr(v, ':') + 1, ':') : NULL;
+  if (!c2) {
+    fprintf(stderr, "fp3 frames: --wake '%s': want FRAME:COUNT:NAME=VALUE[*PARAM] (the ship's "
+            "harbour: --wake 300:100:T=4*C, thrust T = 4 C for 100 moored ships)\n", v);
+    return -1;
+  }
+  snprintf(pair, sizeof pair, "%.*s", (int)(c2 - v), v);
+  snprintf(rule, sizeof rule, "%s", c2 + 1);
+  if (fp3_parse_pair(pair, 1, 10000000u, 1, MAX_MODEL_OBJECTS, NULL, &f, &k)) {
+    fprintf(stderr, "fp3 frames: --wake '%s': want FRAME:COUNT:..., FRAME 1..10000000, COUNT "
+            "1..%u\n", v, MAX_MODEL_OBJECTS);
+    return -1;
+  }
+  char *eq = strchr(rule, '='), *times = eq ? strchr(eq, '*') : NULL, *end;
+  if (times) *times = '\0';
+  if (eq) *eq = '\0';
+  float val = eq ? strtof(eq + 1, &end) : 0.0f;
+  if (!eq || eq == rule || strlen(rule) >= sizeof a->wake_param || !eq[1] || *end ||
+      !isfinite(val) || (times && (!times[1] || strlen(times + 1) >= sizeof a->wake_times))) {
+    fprintf(stderr, "fp3 frames: --wake '%s': the change is NAME=VALUE or NAME=VALUE*PARAM "
+            "(a param of the model, a finite number)\n", v);
+    return -1;
+  }
+  a->wake_frame = (uint32_t)f;
+  a->wake_count = (size_t)k;
+  snprintf(a->wake_param, sizeof a->wake_param, "%s", rule);
+  snprintf(a->wake_times, sizeof a->wake_times, "%s", times ? times + 1 : "");
+  a->wake_value = val;
   return 0;
 }
 
@@ -81,6 +121,8 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   a->seed = 1;
   a->mode = FPREF_IEEE;
   a->long_steps = 100000u;
+  a->fmax = DEFAULT_FMAX;
+  const int runlike = strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0;
   fp3_trace_opts_init(&a->trace);
   for (int i = 1; i < argc; i++) {
     const char *v;
@@ -107,7 +149,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   "integrations", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->steps = (uint32_t)k;
-    } else if (strcmp(cmd, "frames") != 0 && strcmp(cmd, "compile") != 0 &&
+    } else if (strcmp(cmd, "compile") != 0 &&
                (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       if (a->nset == (int)(sizeof a->set / sizeof a->set[0])) {
@@ -124,16 +166,15 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       a->scene = v;
     } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
       a->scene = argv[i];
-    } else if (strcmp(cmd, "run") == 0 &&
+    } else if (runlike &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--objects", 1, MAX_MODEL_OBJECTS,
                                   "objects", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->objects = (size_t)k;
-    } else if (strcmp(cmd, "run") == 0 && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
+    } else if (runlike && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->seeded = 1;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_mode(argc, argv, &i, cmd, &a->mode)) != 0) {
+    } else if (runlike && (r = fp3_opt_mode(argc, argv, &i, cmd, &a->mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--frames", 1, 10000000u, "frames",
@@ -167,8 +208,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->points = (unsigned)k;
-    } else if (strcmp(cmd, "run") == 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--program", &v)) != 0) {
+    } else if (runlike && (r = fp3_opt_value(argc, argv, &i, cmd, "--program", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->program = v;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--compile") == 0) {
@@ -179,6 +219,26 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       fprintf(stderr, "fp3 run: --strict is gone: a state that is not finite always fails "
                       "the run; a model's stability bound: fp3 bench --model FILE "
                       "--stability FILE.csv\n");
+      return FP3_ARGS_BAD;
+    } else if (strcmp(cmd, "frames") == 0 &&
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--harbour", 1, MAX_MODEL_OBJECTS, "ships",
+                                  &a->harbour)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+    } else if (strcmp(cmd, "frames") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--fmax", &v)) != 0) {
+      char *end;
+      if (r < 0) return FP3_ARGS_BAD;
+      a->fmax = strtod(v, &end);
+      if (*end || !(a->fmax > 0.0) || !isfinite(a->fmax)) {
+        fprintf(stderr, "fp3 frames: --fmax '%s': a positive clock in MHz\n", v);
+        return FP3_ARGS_BAD;
+      }
+    } else if (strcmp(cmd, "frames") == 0 &&
+               (r = fp3_opt_value(argc, argv, &i, cmd, "--wake", &v)) != 0) {
+      if (r < 0 || parse_wake(v, a)) return FP3_ARGS_BAD;
+    } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--wake-vinf") == 0) {
+      fprintf(stderr, "fp3 frames: --wake-vinf is gone: --wake F:K:T=V*C gives K moored "
+                      "ships thrust T = V C\n");
       return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 && strcmp(argv[i], "--no-rest-skip") == 0) {
       a->no_rest_skip = 1;
@@ -200,36 +260,43 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       return FP3_ARGS_BAD;
     }
   }
-  if (strcmp(cmd, "frames") == 0 && !a->scene) {
-    fprintf(stderr, "fp3 frames: a model needs --scene MODEL_SCENE\n");
+  if (strcmp(cmd, "frames") == 0 && !a->scene && !a->file && !a->objects && !a->harbour)
+    a->harbour = DEFAULT_HARBOUR; /* the sleeping benchmark's scene */
+  if (strcmp(cmd, "frames") == 0 && !!a->scene + !!a->objects + !!a->harbour > 1) {
+    fprintf(stderr, "fp3 frames: one of --scene FILE, --objects N, --harbour N\n");
     return FP3_ARGS_BAD;
   }
-  if (a->scene && a->file) {
+  if (strcmp(cmd, "frames") == 0 && a->file && !a->objects && !a->harbour) {
+    fprintf(stderr, "fp3 frames: --model FILE goes with --objects N (or --harbour N)\n");
+    return FP3_ARGS_BAD;
+  }
+  if (a->scene && a->file && fp3_scene_is_model(a->scene)) {
     fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if ((strcmp(cmd, "run") != 0 && !a->scene && !a->file) || (a->file && !a->file[0])) {
+  if ((!runlike && !a->scene && !a->file) || (a->file && !a->file[0])) {
     fprintf(stderr, "fp3 %s: --model needs a file\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if (a->seeded && (!a->objects || a->scene)) {
-    fprintf(stderr, "fp3 %s: --seed goes with --objects N\n", cmd);
+  if (a->seeded && ((!a->objects && !a->harbour) || a->scene)) {
+    fprintf(stderr, "fp3 %s: --seed goes with --objects N%s\n", cmd,
+            strcmp(cmd, "frames") == 0 ? " or --harbour N" : "");
     return FP3_ARGS_BAD;
   }
-  if ((a->mode.round != FPREF_RNE || a->mode.ftz) && strcmp(cmd, "run") != 0) {
-    fprintf(stderr, "fp3 %s: --round and --ftz go with fp3 run\n", cmd);
+  if ((a->mode.round != FPREF_RNE || a->mode.ftz) && !runlike) {
+    fprintf(stderr, "fp3 %s: --round and --ftz go with fp3 run and fp3 frames\n", cmd);
     return FP3_ARGS_BAD;
   }
   if (a->program && a->literal && !a->scene) {
-    fprintf(stderr, "fp3 run: --literal goes with --integrator (a compiled program); "
-                    "--program runs the program as written\n");
+    fprintf(stderr, "fp3 %s: --literal goes with --integrator (a compiled program); "
+            "--program runs the program as written\n", cmd);
     return FP3_ARGS_BAD;
   }
   if (!fpenv_supported(a->mode)) {
     fprintf(stderr, "fp3 %s: this host cannot run the golden model in that mode\n", cmd);
     return FP3_ARGS_BAD;
   }
-  if (a->scene && a->nset) {
+  if ((a->scene || a->harbour) && a->nset) {
     fprintf(stderr, "fp3 %s: --set does not go with a scene: its objects give the values\n",
             cmd);
     return FP3_ARGS_BAD;
@@ -469,97 +536,6 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
     return -1;
   }
   return 0;
-}
-
-/* ---- frames ------------------------------------------------------------------ */
-
-int fp3_cmd_frames_model(int argc, char **argv) {
-  fp3_model_args a;
-  int r = fp3_parse_model(argc, argv, "frames", &a);
-  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
-  fp3_mscene sc;
-  char msg[512];
-  if (fp3_mscene_read(a.scene, &sc, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 frames: %s\n", msg);
-    return EXIT_USAGE;
-  }
-  const fp3_model *m = sc.model;
-  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-  fp3_mscene_zero(&sc, zero);
-  int rc = EXIT_FAIL;
-  fp3_compiled *c = NULL;
-  fp3_engine *e = fp3_engine_new(a.engine);
-  if (!e || fp3_engine_error(e)[0]) {
-    fprintf(stderr, "fp3 frames: cannot create the %s engine\n", a.engine);
-    goto out;
-  }
-  const int iss = strcmp(a.engine, "iss") == 0;
-  if (!(c = fp3_model_compile_for(m, &a, zero, &e->config, iss, "frames"))) {
-    rc = EXIT_USAGE;
-    goto out;
-  }
-  if (iss && fp3_model_fit_engine(&e, c, "frames")) goto out;
-  fp3_engine_show_progress(e, a.json ? NULL : "fp3 frames");
-  /* the golden model steps each object from everything the program
-   * carries (rk4comp: the state and its compensations), so a frame is
-   * checked from the values in the bank, and an object rests when all of
-   * them, compensations included, come back bit-identical */
-  fp3_scene_gold sg;
-  fp3_scene_gold_init(&sg, c, &sc);
-  const fp3_image *img = fp3_compiled_image(c);
-  fp3_state_frames_result res;
-  if (fp3_run_state_frames(e, img->words, img->n, sc.n, a.steps, !a.no_rest_skip, FPREF_IEEE,
-                           &sg.stepper, &res, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 frames: %s\n", msg);
-    goto out;
-  }
-  const int pass = res.mismatches == 0 && res.error == FP3_ERR_NONE;
-  const double per = (double)res.cycles / res.frames;
-  const uint64_t all = (uint64_t)res.objects * res.frames;
-  if (a.json) {
-    printf("{\"model\": ");
-    fp3_json_string(stdout, m->name);
-    printf(", \"scene\": ");
-    fp3_json_string(stdout, a.scene);
-    printf(", \"integrator\": ");
-    fp3_json_string(stdout, a.integ);
-    printf(", \"objects\": %zu, \"frames\": %" PRIu32 ", \"contexts\": %u, \"lanes\": %u"
-           ", \"rest_skip\": %s"
-           ", \"batches\": %" PRIu64 ", \"cycles\": %" PRIu64 ", \"cycles_per_frame\": %.2f"
-           ", \"object_frames_run\": %" PRIu64 ", \"object_frames_skipped\": %" PRIu64
-           ", \"asleep_at_end\": %zu, \"golden_mismatches\": %" PRIu64 ", \"error\": \"%s\""
-           ", \"pass\": %s}\n", res.objects, res.frames, res.contexts, res.lanes,
-           a.no_rest_skip ? "false" : "true", res.batches, res.cycles, per, res.object_frames,
-           res.skipped, res.asleep_last, res.mismatches, fp3_error_name(res.error),
-           pass ? "true" : "false");
-  } else {
-    printf("fp3 frames: %zu objects of model %s (%s), %" PRIu32 " frames, %s %s, %s engine, "
-           "%u contexts x %u lanes%s\n", res.objects, m->name, a.scene, res.frames, a.integ,
-           a.literal ? "literal" : "folded", a.engine, res.contexts, res.lanes,
-           a.no_rest_skip ? ", no rest skip" : "");
-    printf("  cycles per frame          %.2f (START to DONE of %" PRIu64 " batches)\n", per,
-           res.batches);
-    printf("  object-frames run         %" PRIu64 " of %" PRIu64 " (%" PRIu64
-           " skipped at rest); %zu at rest at the end\n", res.object_frames, all, res.skipped,
-           res.asleep_last);
-    if (res.error != FP3_ERR_NONE)
-      printf("  ERROR %s in object %zu at pc %" PRIu32 "\n", fp3_error_name(res.error),
-             res.error_object, res.error_pc);
-    const unsigned v = res.first_var % m->nstate;
-    if (res.mismatches)
-      printf("  FAIL: %" PRIu64 " mismatches against the golden model, first object %zu frame "
-             "%" PRIu32 " %s %s\n", res.mismatches, res.first_object, res.first_frame,
-             res.first_var < m->nstate ? "variable" : "the compensation of", m->state[v]);
-    else
-      printf("  golden model: bit-identical, every state variable%s of every object after "
-             "every frame\n", fp3_compiled_carried(c) > m->nstate ? " and its compensation" : "");
-  }
-  rc = pass ? 0 : EXIT_FAIL;
-out:
-  fp3_compiled_free(c);
-  fp3_engine_free(e);
-  fp3_mscene_free(&sc);
-  return rc;
 }
 
 /* ---- bench: the work-precision sweep of a model ---------------------------- */

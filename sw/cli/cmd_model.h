@@ -43,6 +43,16 @@ typedef struct fp3_model_args {
   int nset;
   fp3_trace_opts trace; /* run, one object: --trace, --trace-window,
                            --trace-limit                                */
+  unsigned long long harbour; /* frames: --harbour N, a generated harbour
+                           of the ship model (0: none)                  */
+  double fmax;         /* frames: --fmax [MHz] for frames per second     */
+  uint32_t wake_frame; /* frames: --wake F:K:NAME=VALUE[*PARAM]: before
+                          frame F (0: never) ...                          */
+  size_t wake_count;   /* ... the first K objects whose param NAME is 0 ... */
+  char wake_param[FP3_MODEL_NAME_LEN]; /* ... get NAME = VALUE, or VALUE
+                          times their param PARAM (binary32)              */
+  float wake_value;
+  char wake_times[FP3_MODEL_NAME_LEN]; /* PARAM, or "" */
 } fp3_model_args;
 
 /* The parse step of the model form of command cmd ("run", "compile",
@@ -102,13 +112,6 @@ void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle);
 /* `fp3 compile --model`: the program text (to -o FILE atomically, else
  * stdout).  argv[0] is "compile".  Exit status as fp3_cmd_compile. */
 int fp3_cmd_compile_model(int argc, char **argv);
-
-/* `fp3 frames --scene MODEL_SCENE [--frames F] [--integrator NAME]
- * [--literal] [--no-rest-skip] [--engine rtl|iss] [--json]`: a model
- * scene frame by frame with rest skipping (mscene.h
- * fp3_run_state_frames).  argv[0] is "frames".  Exit status: 0 all
- * bit-identical, 1 a mismatch or error, 2 bad usage or scene. */
-int fp3_cmd_frames_model(int argc, char **argv);
 
 /* `fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]
  * [--t-end T] [--points K] [--literal] [--engine rtl|iss] [-o FILE.csv]`:

@@ -36,12 +36,12 @@
 #include "modelref.h"
 #include "mscene.h"
 #include "report.h"
+#include "runsetup.h"
 #include "traceopt.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 
-#define DEFAULT_MODEL "models/ship.fp3m"
 #define DEFAULT_PROGRAM "programs/ship_rk4.s" /* the paper's RK4 program */
 #define MAX_CHECKED (1u << 26) /* object-steps x state variables kept for the check */
 #define TABLE_ROWS 5           /* first integrations shown in the report */
@@ -99,256 +99,13 @@ static void usage(FILE *f) {
           "Exit status: 0 the run finished without error and bit-exact with the\n"
           "golden model; 1 it did not (or a state went non-finite); 2 bad\n"
           "arguments, model or program.\n",
-          DEFAULT_PROGRAM, DEFAULT_MODEL, fp3_model_integrators(), FP3_RUN_DEFAULT_STEPS,
+          DEFAULT_PROGRAM, FP3_DEFAULT_MODEL, fp3_model_integrators(), FP3_RUN_DEFAULT_STEPS,
           FP3_TRACE_WINDOW_DEFAULT);
-}
-
-/* A shipped file (models/, programs/): relative to the working directory,
- * else to the executable (build/fp3 -> ../). */
-static void find_shipped(const char *rel, char *path, size_t n) {
-  snprintf(path, n, "%s", rel);
-  if (access(rel, R_OK) == 0) return;
-  char exe[4096];
-  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (k <= 0) return;
-  exe[k] = '\0';
-  char *slash = strrchr(exe, '/');
-  if (!slash) return;
-  *slash = '\0';
-  char alt[8192];
-  if ((size_t)snprintf(alt, sizeof alt, "%s/../%s", exe, rel) < n && access(alt, R_OK) == 0)
-    memcpy(path, alt, strlen(alt) + 1);
-}
-
-/* 1 if paths a and b name the same file. */
-static int same_file(const char *a, const char *b) {
-  struct stat sa, sb;
-  if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return strcmp(a, b) == 0;
-  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
-
-/* ---- what runs: the model, its program, the engine -------------------------- */
-
-typedef struct run_setup {
-  char model_path[8192], program_path[8192];
-  const char *program;   /* the hand-written program, or NULL: compiled  */
-  fp3_image img;         /* its image                                    */
-  fp3_model *m;          /* the model (a scene's own, or malloc'd here)  */
-  fp3_mscene sc;         /* many objects: the scene (owns m)             */
-  int many;
-  float in[FP3_MODEL_MAX_VARS], y0[FP3_MODEL_MAX_VARS]; /* one object      */
-  fp3_engine *e;
-  fp3_compiled *c;
-  const char *integ;     /* the program's integrator                     */
-  int literal;           /* the program is the literal integrator        */
-} run_setup;
-
-static void setup_free(run_setup *s) {
-  fp3_compiled_free(s->c);
-  fp3_engine_free(s->e);
-  if (s->many) fp3_mscene_free(&s->sc);
-  else free(s->m);
-}
-
-/* Assemble the program of a (--program, or the paper's by default). */
-static int setup_program(const fp3_model_args *a, run_setup *s) {
-  const char *p = a->program;
-  if (!p) {
-    if (a->file || a->scene || a->integ_given || a->literal) return 0;
-    find_shipped(DEFAULT_PROGRAM, s->program_path, sizeof s->program_path);
-    p = s->program_path;
-  }
-  char *errs = NULL;
-  if (fp3_asm_file(p, &s->img, &errs) != 0) {
-    fp3_print_asm_errors(errs);
-    free(errs);
-    return EXIT_USAGE;
-  }
-  free(errs);
-  if (fp3_refuse_endless("run", p, &s->img)) return EXIT_USAGE;
-  s->program = p;
-  return 0;
-}
-
-/* The model: --model, the scene's, the program's `.model`, or the ship;
- * a program's `.model` must be the same file.  Many objects: the scene
- * (read, or generated from the values). */
-static int setup_model(const fp3_model_args *a, run_setup *s) {
-  char msg[512];
-  const char *mp = a->file;
-  if (!mp && !a->scene && s->program && s->img.model[0]) mp = s->img.model;
-  if (!mp && !a->scene) {
-    find_shipped(DEFAULT_MODEL, s->model_path, sizeof s->model_path);
-    mp = s->model_path;
-  }
-  if (a->scene) {
-    if (fp3_mscene_read(a->scene, &s->sc, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 run: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    s->many = 1;
-    s->m = s->sc.model;
-    if (a->objects && a->objects != s->sc.n) {
-      fprintf(stderr, "fp3 run: --objects %zu, but %s has %zu objects\n", a->objects, a->scene,
-              s->sc.n);
-      return EXIT_USAGE;
-    }
-    mp = s->sc.model_path;
-  } else {
-    if (!(s->m = malloc(sizeof *s->m))) return EXIT_FAIL;
-    if (fp3_model_load(mp, s->m, msg, sizeof msg)) {
-      if (mp == s->img.model)
-        fprintf(stderr, "fp3 run: %s: its .model line names %s: %s (--model FILE names "
-                "the model)\n", s->program, mp, msg);
-      else
-        fprintf(stderr, "fp3 run: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    if (fp3_model_args_values(s->m, a, s->in, s->y0)) return EXIT_USAGE;
-    if (a->objects) {
-      fp3_model *m = s->m;
-      s->m = NULL;
-      if (fp3_mscene_generate(m, s->in, s->y0, a->objects, a->seed, &s->sc)) {
-        fprintf(stderr, "fp3 run: out of memory for %zu objects\n", a->objects);
-        return EXIT_FAIL;
-      }
-      s->many = 1;
-      s->m = s->sc.model;
-    }
-  }
-  /* a program's .model must be the model of the run, when it is there */
-  if (s->program && s->img.model[0] && access(s->img.model, R_OK) == 0 &&
-      !same_file(s->img.model, mp)) {
-    fprintf(stderr, "fp3 run: %s is a program of %s (its .model line), not of %s\n", s->program,
-            s->img.model, mp);
-    return EXIT_USAGE;
-  }
-  return 0;
-}
-
-/* The engine (with the trace of one object) and the program for it. */
-static int setup_engine(const fp3_model_args *a, run_setup *s) {
-  char msg[512];
-  const int iss = strcmp(a->engine, "iss") == 0;
-  if (fp3_trace_writable(&a->trace, "run")) return EXIT_USAGE;
-  s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace.path);
-  if (!s->e || fp3_engine_error(s->e)[0]) {
-    fprintf(stderr, "fp3 run: cannot create the %s engine%s%s\n", a->engine, s->e ? ": " : "",
-            s->e ? fp3_engine_error(s->e) : "");
-    return EXIT_FAIL;
-  }
-  fp3_engine_show_progress(s->e, a->json ? NULL : "fp3 run");
-  if (s->program) {
-    fp3_compile_opts o;
-    fp3_compile_opts_for(&o, &s->e->config);
-    if (a->integ_given && strcmp(a->integ, s->img.integrator) != 0) {
-      fprintf(stderr, "fp3 run: --integrator %s, but %s computes %s (its .integrator line)\n",
-              a->integ, s->program, s->img.integrator[0] ? s->img.integrator : "nothing named");
-      return EXIT_USAGE;
-    }
-    if (fp3_compile_bind(s->m, &s->img, s->program, &o, &s->c, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 run: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    s->integ = s->img.integrator;
-    s->literal = 1;
-  } else {
-    unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-    if (s->many) fp3_mscene_zero(&s->sc, zero);
-    else
-      for (unsigned k = 0; k < s->m->nparam; k++) zero[k] = s->in[k] == 0.0f;
-    if (!(s->c = fp3_model_compile_for(s->m, a, zero, &s->e->config, iss, "run")))
-      return EXIT_USAGE;
-    if (iss && fp3_model_fit_engine(&s->e, s->c, "run")) return EXIT_FAIL;
-    s->integ = a->integ;
-    s->literal = a->literal;
-  }
-  /* the waveform's size, from the program's cycles, against --trace-limit */
-  const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
-  if (!s->many && fp3_trace_prepare(&a->trace, "run", s->e,
-                                    fp3_trace_run_cycles(a->steps, cs->est_cycles_first,
-                                                         cs->est_cycles_later),
-                                    "by the scheduler's estimate of the program"))
-    return EXIT_USAGE;
-  return 0;
-}
-
-/* ---- the report's common parts ------------------------------------------------ */
-
-/* The JSON members every `fp3 run` object starts with. */
-static void json_head(const fp3_model_args *a, const run_setup *s, const char *scene) {
-  const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
-  printf("{\"engine\": ");
-  fp3_json_string(stdout, a->engine);
-  printf(", \"cycles_counted\": \"%s\"",
-         strcmp(a->engine, "iss") == 0 ? "instructions issued (the ISS issues one a cycle)"
-                                       : "clock cycles");
-  printf(", \"model\": ");
-  fp3_json_string(stdout, s->m->name);
-  printf(", \"model_file\": ");
-  fp3_json_string(stdout, s->m->file);
-  printf(", \"program\": ");
-  if (s->program) fp3_json_string(stdout, s->program);
-  else printf("null");
-  printf(", \"scene\": ");
-  if (scene) fp3_json_string(stdout, scene);
-  else printf("null");
-  printf(", \"integrator\": ");
-  fp3_json_string(stdout, s->integ);
-  printf(", \"literal\": %s, \"words\": %zu, \"insns_per_step\": %u", s->literal ? "true" : "false",
-         fp3_compiled_image(s->c)->n, cs->body_insns);
-  printf(", \"registers_needed\": %u, \"num_regs\": %u, \"est_cycles_per_step\": %u",
-         cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
-  printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
-         a->mode.ftz ? "true" : "false");
-}
-
-/* "run_error": null, or the first context error with its object and pc. */
-static void json_run_error(unsigned error, size_t object, uint32_t pc) {
-  printf(", \"run_error\": ");
-  if (error == FP3_ERR_NONE) printf("null");
-  else printf("{\"error\": \"%s\", \"object\": %zu, \"pc\": %" PRIu32 "}", fp3_error_name(error),
-              object, pc);
-}
-
-/* One object's results: each state variable, its golden value (gold,
- * or NULL), GSL reference (NAN: none) and exact solution (NAN: none). */
-static void json_object(const fp3_model *m, const uint32_t *y, const float *gold,
-                        const double *ref, const double *ex) {
-  printf("{");
-  for (unsigned k = 0; k < m->nstate; k++) {
-    printf("%s\"%s\": ", k ? ", " : "", m->state[k]);
-    fp3_json_float(stdout, fpref_float(y[k]));
-    if (gold) {
-      printf(", \"%s_golden\": ", m->state[k]);
-      fp3_json_float(stdout, gold[k]);
-    }
-    printf(", \"%s_ref\": ", m->state[k]);
-    fp3_json_double(stdout, ref[k]);
-    printf(", \"%s_exact\": ", m->state[k]);
-    fp3_json_double(stdout, ex[k]);
-  }
-  printf("}");
-}
-
-/* The GSL reference (rk8pd, 1e-12) and the exact solution after `steps`
- * integrations of an object (params in, initial state y0): 0 with ref[]
- * and ex[] (NAN where there is none), rmsg the reason of a missing
- * reference. */
-static void references(const fp3_model *m, const float *in, const float *y0, uint32_t steps,
-                       int want_ref, double *ref, double *ex, char *rmsg, size_t n) {
-  double din[FP3_MODEL_MAX_VARS], dy0[FP3_MODEL_MAX_VARS];
-  for (unsigned k = 0; k < m->nparam; k++) din[k] = in[k];
-  for (unsigned k = 0; k < m->nstate; k++) dy0[k] = y0[k], ref[k] = ex[k] = NAN;
-  if (want_ref && steps > 0 && fp3_model_gsl(m, din, dy0, steps, NULL, NULL, ref, rmsg, n))
-    for (unsigned k = 0; k < m->nstate; k++) ref[k] = NAN;
-  for (unsigned k = 0; k < m->nstate; k++)
-    if (fp3_model_exact(m, k, din, dy0, (double)steps * din[0], &ex[k])) ex[k] = NAN;
 }
 
 /* ---- one object --------------------------------------------------------------- */
 
-static int run_one(const fp3_model_args *a, run_setup *s) {
+static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
   const fp3_model *m = s->m;
   const unsigned ns = m->nstate;
   fp3_compiled *c = s->c;
@@ -417,7 +174,7 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
   fpenv_leave(&env);
   double ref[FP3_MODEL_MAX_VARS], ex[FP3_MODEL_MAX_VARS];
   char rmsg[256] = "";
-  references(m, s->in, s->y0, done, !nonfinite_k, ref, ex, rmsg, sizeof rmsg);
+  fp3_run_references(m, s->in, s->y0, done, !nonfinite_k, ref, ex, rmsg, sizeof rmsg);
   const int have_ref = done > 0 && !nonfinite_k && !isnan(ref[0]);
   const double cyc_first = ob.endis >= 1 ? (double)ob.cyc_first + 1.0 : NAN;
   const double cyc_per =
@@ -427,7 +184,7 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
   char flags[96];
   fp3_flags_text(st.flags, flags, sizeof flags);
   if (a->json) {
-    json_head(a, s, NULL);
+    fp3_run_json_head(a, s, NULL);
     printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32 ", \"objects\": 1", a->steps,
            st.steps_done);
     printf(", \"contexts\": 1, \"lanes\": 1, \"batches\": 1");
@@ -449,7 +206,7 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
              m->state[nonfinite_i]);
     else
       printf("null");
-    json_run_error(st.error, 0, st.fault_pc);
+    fp3_run_json_error(st.error, 0, st.fault_pc);
     printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32 ", \"params\": {", flags, st.flags);
     for (unsigned k = 0; k < m->nparam; k++) {
       printf("%s\"%s\": ", k ? ", " : "", m->param[k]);
@@ -466,7 +223,7 @@ static int run_one(const fp3_model_args *a, run_setup *s) {
         emax = fabs((double)fpref_float(cur[k]) - ref[k]);
     fp3_json_double(stdout, emax);
     printf(", \"results\": [");
-    json_object(m, cur, g, ref, ex);
+    fp3_run_json_object(m, cur, g, ref, ex);
     printf("], \"pass\": %s}\n", ok ? "true" : "false");
   } else {
     printf("FP3 run: engine %s, model %s (%s), ", a->engine, m->name, m->file);
@@ -563,7 +320,7 @@ out:
 
 /* ---- many objects: a model scene, or --objects N -------------------------- */
 
-static int run_many(const fp3_model_args *a, run_setup *s) {
+static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   const fp3_mscene *sc = &s->sc;
   const fp3_model *m = s->m;
   const unsigned np = m->nparam, ns = m->nstate;
@@ -591,7 +348,7 @@ static int run_many(const fp3_model_args *a, run_setup *s) {
   size_t ref_fail = 0;
   for (size_t o = 0; o < sc->n; o++) {
     char rmsg[256];
-    references(m, sc->in + o * np, sc->y0 + o * ns, a->steps, !nonfinite, ref + o * ns,
+    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, a->steps, !nonfinite, ref + o * ns,
                ex + o * ns, rmsg, sizeof rmsg);
     if (isnan(ref[o * ns])) {
       ref_fail++;
@@ -610,7 +367,7 @@ static int run_many(const fp3_model_args *a, run_setup *s) {
   fp3_flags_text(res.flags, flags, sizeof flags);
   const char *where = a->scene ? a->scene : "generated (--objects, --seed)";
   if (a->json) {
-    json_head(a, s, where);
+    fp3_run_json_head(a, s, where);
     printf(", \"steps\": %" PRIu32 ", \"steps_done\": %" PRIu32 ", \"objects\": %zu", a->steps,
            res.error ? 0 : a->steps, res.objects);
     printf(", \"contexts\": %u, \"lanes\": %u, \"batches\": %zu", res.contexts, res.lanes,
@@ -632,7 +389,7 @@ static int run_many(const fp3_model_args *a, run_setup *s) {
              res.nonfinite_object, res.nonfinite_step, m->state[res.nonfinite_var]);
     else
       printf("null");
-    json_run_error(res.error, res.error_object, res.error_pc);
+    fp3_run_json_error(res.error, res.error_object, res.error_pc);
     printf(", \"flags\": \"%s\", \"flags_bits\": %" PRIu32 ", \"params\": null", flags,
            res.flags);
     printf(", \"max_error_ref\": ");
@@ -640,7 +397,7 @@ static int run_many(const fp3_model_args *a, run_setup *s) {
     printf(", \"results\": [");
     for (size_t o = 0; o < sc->n; o++) {
       printf("%s", o ? ", " : "");
-      json_object(m, res.y + o * ns, NULL, ref + o * ns, ex + o * ns);
+      fp3_run_json_object(m, res.y + o * ns, NULL, ref + o * ns, ex + o * ns);
     }
     printf("], \"pass\": %s}\n", ok ? "true" : "false");
   } else {
@@ -733,7 +490,7 @@ static int run_ship_scene(const fp3_model_args *a) {
   }
   char path[8192];
   if (a->program) snprintf(path, sizeof path, "%s", a->program);
-  else find_shipped(ig->program, path, sizeof path); /* ig: not NULL without --program */
+  else fp3_find_shipped(ig->program, path, sizeof path); /* ig: not NULL without --program */
   fp3_image img;
   char *errs = NULL;
   if (fp3_asm_file(path, &img, &errs) != 0) {
@@ -780,13 +537,13 @@ int fp3_cmd_run(int argc, char **argv) {
   int r = fp3_parse_model(argc, argv, "run", &a);
   if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
   if (a.scene && !fp3_scene_is_model(a.scene)) return run_ship_scene(&a);
-  run_setup s;
+  fp3_run_setup s;
   memset(&s, 0, sizeof s);
   fp3_image_init(&s.img);
-  int rc = setup_program(&a, &s);
-  if (!rc) rc = setup_model(&a, &s);
-  if (!rc) rc = setup_engine(&a, &s);
+  int rc = fp3_run_setup_program(&a, &s, "run", DEFAULT_PROGRAM);
+  if (!rc) rc = fp3_run_setup_model(&a, &s, "run");
+  if (!rc) rc = fp3_run_setup_engine(&a, &s, "run");
   if (!rc) rc = s.many ? run_many(&a, &s) : run_one(&a, &s);
-  setup_free(&s);
+  fp3_run_setup_free(&s);
   return rc;
 }

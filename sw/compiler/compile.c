@@ -1694,11 +1694,16 @@ static void begin_carried(fp3_compiled *c, const float *in, const float *yc) {
 
 size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
                                 unsigned *reg, uint32_t *val, size_t max) {
-  const builder *b = &c->b;
-  const fp3_model *m = b->model;
+  const fp3_model *m = c->b.model;
   float yc[MAX_STATE] = {0}; /* the carried values: the state, then the others */
   for (unsigned k = 0; k < m->nstate; k++) yc[k] = y0[k];
-  fp3_model_start_literal(m, b->integ, in, yc);
+  fp3_model_start_literal(m, c->b.integ, in, yc);
+  return fp3_compiled_model_start_from(c, in, yc, reg, val, max);
+}
+
+size_t fp3_compiled_model_start_from(fp3_compiled *c, const float *in, const float *yc,
+                                     unsigned *reg, uint32_t *val, size_t max) {
+  const builder *b = &c->b;
   begin_carried(c, in, yc);
   size_t w = 0;
   for (int k = 0; k < b->nin && w < max; k++)
@@ -1754,6 +1759,50 @@ void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *s
   for (unsigned i = 0; i < carried; i++) g->reg[i] = fp3_compiled_state_reg(c, i);
   g->golden = (fp3_state_golden){g, ns, g->reg, sg_start, sg_step};
   g->stepper = (fp3_state_stepper){g, carried, g->reg, sg_start, sg_step_from};
+}
+
+/* ---- waking objects of a scene -------------------------------------------- */
+
+/* fp3_state_wake.wake of fp3_scene_waker (compile.h). */
+static int waker_wake(void *ctx, size_t obj, uint32_t *bank, unsigned nregs) {
+  fp3_scene_waker *w = ctx;
+  const unsigned np = w->sc->model->nparam, carried = fp3_compiled_carried(w->c);
+  float *in = w->sc->in + obj * np;
+  const float v = w->times >= 0 ? w->value * in[w->times] : w->value;
+  if (in[w->param] != 0.0f || v == 0.0f) return 0;
+  in[w->param] = v;
+  float yc[MAX_STATE];
+  for (unsigned i = 0; i < carried; i++) yc[i] = fpref_float(bank[w->c->state_reg[i]]);
+  unsigned reg[MAX_IN + MAX_NODES];
+  uint32_t val[MAX_IN + MAX_NODES];
+  const size_t nw = fp3_compiled_model_start_from(w->c, in, yc, reg, val, MAX_IN + MAX_NODES);
+  for (size_t k = 0; k < nw; k++)
+    if (reg[k] < nregs) bank[reg[k]] = val[k];
+  return 1;
+}
+
+int fp3_scene_waker_init(fp3_scene_waker *w, fp3_compiled *c, fp3_mscene *sc, uint32_t frame,
+                         size_t count, const char *param, float value, const char *times,
+                         char *msg, size_t n) {
+  const fp3_model *m = sc->model;
+  memset(w, 0, sizeof *w);
+  w->c = c;
+  w->sc = sc;
+  w->value = value;
+  w->param = fp3_model_param(m, param);
+  w->times = times && times[0] ? fp3_model_param(m, times) : -1;
+  if (w->param <= 0 || (times && times[0] && w->times <= 0)) {
+    snprintf(msg, n, "model %s (%s) has no param '%s'", m->name, m->file,
+             w->param <= 0 ? param : times);
+    return -1;
+  }
+  for (unsigned i = 0; i < fp3_compiled_carried(c); i++)
+    if (c->state_reg[i] < 0) {
+      snprintf(msg, n, "the program binds no register for carried value %u", i);
+      return -1;
+    }
+  w->wake = (fp3_state_wake){frame, count, waker_wake, w};
+  return 0;
 }
 
 /* ---- golden model -------------------------------------------------------- */

@@ -241,6 +241,13 @@ int fp3_compile_bind(const fp3_model *m, const fp3_image *img, const char *progr
 size_t fp3_compiled_model_start(fp3_compiled *c, const float *in, const float *y0,
                                 unsigned *reg, uint32_t *val, size_t max);
 
+/* fp3_compiled_model_start from any carried values yc[]
+ * (fp3_compiled_carried of them: the state, then compensations or
+ * accelerations) instead of an initial state: the writes that restart an
+ * object from where it is, with params in[] (a woken object's new ones). */
+size_t fp3_compiled_model_start_from(fp3_compiled *c, const float *in, const float *yc,
+                                     unsigned *reg, uint32_t *val, size_t max);
+
 /* One integration of the golden model: y (m->nstate values) gets the new
  * state (the compensations of rk4comp stay inside c). */
 void fp3_compiled_model_step(fp3_compiled *c, float *y);
@@ -280,5 +287,28 @@ typedef struct fp3_scene_gold {
 } fp3_scene_gold;
 
 void fp3_scene_gold_init(fp3_scene_gold *g, fp3_compiled *c, const fp3_mscene *sc);
+
+/* Waking objects of scene sc run frame by frame with program c
+ * (fp3_run_state_frames): before frame `frame`, the first `count`
+ * objects whose param `param` is 0 get param = value, or value times
+ * their param `times` (NULL or "": none) in binary32, when that is not 0;
+ * such an object restarts from the carried values its bank holds with its
+ * new params (fp3_compiled_model_start_from writes its bank's
+ * host-written registers: params, host values, initial values), and the
+ * golden model steps it with the new params too (they are sc's).
+ * w->wake is what fp3_run_state_frames takes.  0, or -1 with the reason:
+ * a name that is no param of the model (h neither), a carried value
+ * without a register. */
+typedef struct fp3_scene_waker {
+  fp3_compiled *c;
+  fp3_mscene *sc;
+  int param, times;
+  float value;
+  fp3_state_wake wake;
+} fp3_scene_waker;
+
+int fp3_scene_waker_init(fp3_scene_waker *w, fp3_compiled *c, fp3_mscene *sc, uint32_t frame,
+                         size_t count, const char *param, float value, const char *times,
+                         char *msg, size_t n);
 
 #endif /* FP3_COMPILE_H */

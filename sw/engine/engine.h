@@ -258,8 +258,8 @@ const char *fp3_engine_error(const fp3_engine *e);
  * show a progress line on stderr when it is a terminal, prefixed with the
  * label: fp3_engine_run counts the integrations of context 0, and the runs
  * of many objects (fp3_run_objects, fp3_run_state_objects) their
- * object-steps, those frame by frame (fp3_run_frames,
- * fp3_run_state_frames) their frames.  fp3_engine_run_contexts alone shows
+ * object-steps, those frame by frame (fp3_run_state_frames) their
+ * frames.  fp3_engine_run_contexts alone shows
  * none: its caller knows the whole run.  label NULL (an engine's default)
  * shows none; the CLI passes NULL for --json.  label must outlive the
  * engine's runs. */

@@ -312,6 +312,44 @@ void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero) {
   }
 }
 
+int fp3_mscene_from_ships(const fp3_scene *ships, fp3_model *m, const char *what,
+                          fp3_mscene *s, char *msg, size_t n) {
+  static const char *const cols[5] = {"T", "C", "m", "v", "s"};
+  int at[5];
+  memset(s, 0, sizeof *s);
+  for (int k = 0; k < 5; k++) {
+    at[k] = k < 3 ? fp3_model_param(m, cols[k]) : fp3_model_state(m, cols[k]);
+    if (at[k] < 0 || m->nparam != 4 || m->nstate != 2) {
+      snprintf(msg, n, "%s: a ship scene ('T C m v0 s0' a line) is a scene of a model with "
+               "params T, C, m and state variables v, s; %s (%s) is not", what, m->name,
+               m->file);
+      free(m);
+      return -1;
+    }
+  }
+  s->model = m;
+  snprintf(s->model_path, sizeof s->model_path, "%s", m->file);
+  size_t cap = 0;
+  if (grow(s, ships->n ? ships->n : 1, &cap)) {
+    snprintf(msg, n, "out of memory for %zu objects", ships->n);
+    fp3_mscene_free(s);
+    return 1;
+  }
+  for (size_t i = 0; i < ships->n; i++) {
+    const fp3_ship_params *p = &ships->objs[i];
+    const float v[5] = {p->T, p->C, p->m, p->v0, p->s0};
+    float *in = s->in + i * m->nparam, *y0 = s->y0 + i * m->nstate;
+    in[0] = p->h;
+    for (int k = 0; k < 5; k++) {
+      if (k < 3) in[at[k]] = v[k];
+      else y0[at[k]] = v[k];
+    }
+    s->line[i] = 0;
+  }
+  s->n = ships->n;
+  return 0;
+}
+
 void fp3_mscene_free(fp3_mscene *s) {
   free(s->model);
   free(s->in);
@@ -549,7 +587,8 @@ void fp3_state_result_free(fp3_state_result *res) {
 /* ---- frames ------------------------------------------------------------------ */
 
 int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
-                         uint32_t frames, int rest_skip, fpref_mode mode,
+                         uint32_t frames, int rest_skip, const fp3_state_wake *wake,
+                         fpref_mode mode,
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,
                          char *msg, size_t n) {
   memset(res, 0, sizeof *res);
@@ -592,6 +631,12 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
   res->first_object = res->error_object = SIZE_MAX;
   fp3_progress_start(&prog, e->progress, frames, "frames", e->progress != NULL);
   for (uint32_t f = 1; f <= frames; f++) {
+    if (wake && wake->frame == f)
+      for (size_t o = 0; o < nobj && res->woken < wake->count; o++)
+        if (wake->wake(wake->ctx, o, bank + o * nregs, nregs)) {
+          asleep[o] = 0;
+          res->woken++;
+        }
     size_t na = 0;
     for (size_t o = 0; o < nobj; o++)
       if (!asleep[o]) awake[na++] = o;
@@ -610,6 +655,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
       res->cycles += st.cycles;
       res->issued += st.issued;
       res->object_frames += k;
+      res->host_words += 2u * k * nregs; /* each bank written, then read back */
       for (unsigned c = 0; c < k; c++) {
         size_t o = awake[first + c];
         uint32_t *b = bank + o * nregs;

@@ -25,6 +25,7 @@
 #include "engine.h"
 #include "fpref.h"
 #include "model.h"
+#include "objects.h"
 
 /* A model scene: n objects of one model. */
 typedef struct fp3_mscene {
@@ -57,6 +58,14 @@ int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n);
 /* zero[k] = 1 for each param k of sc's model that is zero in every object
  * (a term the compiler may drop, fp3_compile_model's param_zero), else 0. */
 void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero);
+
+/* A scene of ships (objects.h: T C m v0 s0 and h each) as a scene of
+ * model m (loaded by the caller, owned by s afterwards, freed on a
+ * failure), which must have params T, C, m and state variables v, s
+ * (models/ship.fp3m); what names the scene in messages.  Returns 0; -1
+ * with the reason in msg (another model); 1 out of memory. */
+int fp3_mscene_from_ships(const fp3_scene *ships, fp3_model *m, const char *what,
+                          fp3_mscene *s, char *msg, size_t n);
 
 /* n objects of model m (loaded by the caller, owned by s afterwards), all
  * from base values in[] (h and params) and y0[] (states), each non-h value
@@ -175,7 +184,22 @@ typedef struct fp3_state_frames_result {
   size_t first_object;
   uint32_t first_frame;
   unsigned first_var;      /* index into the stepper's carried values      */
+  size_t woken;            /* objects woken (fp3_state_wake)               */
+  uint64_t host_words;     /* register words the host wrote and read back  */
 } fp3_state_frames_result;
+
+/* Waking objects between two frames: before frame `frame` (1-based; 0:
+ * never), wake(ctx, obj, bank, nregs) is asked for object 0, 1, ... until
+ * `count` have been woken; it returns 1 when it changed object obj (its
+ * params, and the registers of its bank the host writes, restarted from
+ * the carried values the bank holds), which is then awake, else 0.  The
+ * golden model steps it from the same values with its new params. */
+typedef struct fp3_state_wake {
+  uint32_t frame;
+  size_t count;
+  int (*wake)(void *ctx, size_t obj, uint32_t *bank, unsigned nregs);
+  void *ctx;
+} fp3_state_wake;
 
 /* Run nobj objects frame by frame: each frame one integration (STEPS = 1)
  * of every awake object, in batches of contexts x lanes (fp3_config_slots,
@@ -186,11 +210,13 @@ typedef struct fp3_state_frames_result {
  * but its bank and the instruction memory) and is not run again: every
  * later frame would leave it so.  Every object, awake or asleep, is
  * compared after every frame with golden->step_from, which steps it every
- * frame: the evidence that skipping changes no bit.  The frames count on
+ * frame: the evidence that skipping changes no bit.  wake (NULL: none)
+ * wakes objects between two frames.  The frames count on
  * the engine's progress line (fp3_engine_show_progress).  Returns 0 when
  * the frames ran (results in *res), or -1 with a message. */
 int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
-                         uint32_t frames, int rest_skip, fpref_mode mode,
+                         uint32_t frames, int rest_skip, const fp3_state_wake *wake,
+                         fpref_mode mode,
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,
                          char *msg, size_t n);
 
