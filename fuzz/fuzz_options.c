@@ -9,10 +9,9 @@
  * (files, engines) are never called.
  *
  * The input is an argument vector, one argument per line.  The first line
- * names the subcommand (argv[0]), as on the fp3 command line; "CMD model"
- * picks CMD's model form, which fp3 also picks for --model FILE or
- * --model=FILE (and for a model scene, which the harness does not read);
- * another first line picks a parser by its first byte.  When the model
+ * names the subcommand (argv[0]), as on the fp3 command line; "bench
+ * model" picks bench's model form, which fp3 also picks for --model FILE
+ * or --model=FILE; another first line picks a parser by its first byte.  When the model
  * form of run or bench accepts, its --set values are resolved against a
  * fixed model (a damped spring, parsed once: fp3_model_args_values), as
  * the run step does first.
@@ -165,7 +164,9 @@ static void parse_testfloat(int argc, char **argv) {
 static void parse_compile(int argc, char **argv) {
   fp3_compile_args a;
   if (fp3_parse_compile(argc, argv, &a) != FP3_ARGS_RUN) return;
-  if (!a.scene || (a.json && !a.out)) fail("compile", "no scene, or --json without -o");
+  if (!a.scene == !a.model || (a.json && !a.out))
+    fail("compile", "not one of a scene and --model, or --json without -o");
+  check_str("compile", a.model, 0);
   if (a.opts.add_latency < 1 || a.opts.add_latency > 64 || a.opts.mul_latency < 1 ||
       a.opts.mul_latency > 64)
     fail("compile", "a latency out of range");
@@ -184,8 +185,8 @@ static void parse_configure(int argc, char **argv) {
   check_str("configure", a.opts.integrator, 1);
 }
 
-/* 1 if argv holds --model or --model=FILE (fp3_args_have_model without
- * its look into scene files). */
+/* 1 if argv holds --model or --model=FILE: fp3 bench's model form, as
+ * cmd_bench.c decides it. */
 static int names_model(int argc, char **argv) {
   for (int i = 1; i < argc; i++)
     if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
@@ -224,7 +225,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (strcmp(first, cmds[k]) == 0) c = k;
   if (c == ncmds) c = (unsigned char)first[0] % ncmds;
   const char *cmd = cmds[c];
-  const int has_model_form = strcmp(cmd, "run") == 0 || strcmp(cmd, "compile") == 0 ||
+  const int has_model_form = strcmp(cmd, "run") == 0 ||
                              strcmp(cmd, "frames") == 0 || strcmp(cmd, "bench") == 0;
   if (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0 ||
       (has_model_form && (model || names_model(argc, argv))))

@@ -128,8 +128,16 @@ int fp3_parse_bench(int argc, char **argv, fp3_bench_opts *o) {
   return FP3_ARGS_RUN;
 }
 
+/* 1 if argv names a model (--model FILE, --model=FILE): the model's bench
+ * (cmd_model.h); the ship's bench of h/tau sweeps otherwise. */
+static int names_model(int argc, char **argv) {
+  for (int i = 1; i < argc; i++)
+    if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
+  return 0;
+}
+
 int fp3_cmd_bench(int argc, char **argv) {
-  if (fp3_args_have_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
+  if (names_model(argc, argv)) return fp3_cmd_bench_model(argc, argv);
   fp3_bench_opts o;
   int r = fp3_parse_bench(argc, argv, &o);
   return r == FP3_ARGS_RUN ? fp3_bench_run(&o) : fp3_args_exit(r, usage_bench);

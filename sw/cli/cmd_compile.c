@@ -1,6 +1,6 @@
 /*
- * cmd_compile.c -- `fp3 compile SCENE`: the scene compiler on the command
- * line (cmd_compile.h, compile.h).
+ * cmd_compile.c -- `fp3 compile`: a model or a scene compiled into a
+ * program (cmd_compile.h, compile.h).
  */
 #include "cmd_compile.h"
 
@@ -10,6 +10,8 @@
 
 #include "cliopt.h"
 #include "compile.h"
+#include "model.h"
+#include "mscene.h"
 #include "objects.h"
 #include "report.h"
 
@@ -18,13 +20,16 @@
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: fp3 compile SCENE [--integrator NAME] [-o PROGRAM.s]\n"
+          "usage: fp3 compile (SCENE | --model FILE.fp3m) [--integrator NAME] [-o PROGRAM.s]\n"
           "                   [--literal | --no-fold] [--keep-zero]\n"
           "                   [--add-latency N] [--mul-latency N] [--fmax-pipe]\n"
           "                   [--json]\n"
           "\n"
-          "Compile the scene file SCENE ('h STEP', then 'T C m v0 s0' per object,\n"
-          "see fp3 run --help) and an integrator into an FP3 program that computes\n"
+          "Compile a model for an integrator into an FP3 program: --model FILE, or a\n"
+          "model scene ('model FILE' first; params zero in every object removed),\n"
+          "docs/models.md; the integrators: %s.\n"
+          "A ship scene ('h STEP', then 'T C m v0 s0' per object, see fp3 run --help)\n"
+          "runs the ship scene compiler, which computes\n"
           "only what the scene needs: constants folded on the host (hmT =\n"
           "(h*minv)*T, hmC = (h*minv)*C: new .in inputs), terms that are zero in\n"
           "every object removed (no drag when every C = 0, no thrust when every\n"
@@ -33,7 +38,8 @@ static void usage(FILE *f) {
           "fp3 run --scene runs the compiled program by default and checks every\n"
           "object after every integration against the IR's golden model.\n"
           "\n"
-          "  --integrator I   %s (default rk4)\n"
+          "  --model FILE     the model (instead of a scene)\n"
+          "  --integrator I   default rk4; a ship scene: %s\n"
           "  -o FILE          write the assembly to FILE (atomically: on any error\n"
           "                   no file is left); default: standard output\n"
           "  --no-fold        no folded inputs: the integrator's literal operations\n"
@@ -54,14 +60,14 @@ static void usage(FILE *f) {
           "for the RTL of these latencies and pipeline).\n"
           "Exit status: 0 written; 2 bad arguments, scene or integrator; 1 the\n"
           "output could not be written.\n",
-          fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
+          fp3_model_integrators(), fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
           (unsigned)FP3_DEFAULT_MUL_LATENCY, FP3_FMAX_PIPE_FULL_LEAD_LATENCY,
           FP3_FMAX_PIPE_FETCH_SPACING, FP3_FMAX_PIPE_ISSUE_SPACING,
           FP3_FMAX_PIPE_PICK_STAGES + 1);
 }
 
 int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
-  a->scene = a->out = NULL;
+  a->scene = a->out = a->model = NULL;
   a->integ = "rk4";
   a->json = 0;
   fp3_compile_defaults(&a->opts);
@@ -74,6 +80,9 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
     if ((r = fp3_opt_output(argc, argv, &i, "compile", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->out = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--model", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->model = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--integrator", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->integ = v;
@@ -99,8 +108,9 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
       return FP3_ARGS_BAD;
     }
   }
-  if (!a->scene) {
-    fprintf(stderr, "fp3 compile: no scene file (see fp3 compile --help)\n");
+  if (!a->scene == !a->model) {
+    fprintf(stderr, "fp3 compile: %s (see fp3 compile --help)\n",
+            a->model ? "--model FILE or a scene, not both" : "no scene file or --model FILE");
     return FP3_ARGS_BAD;
   }
   if (a->json && !a->out) {
@@ -111,22 +121,78 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
   return FP3_ARGS_RUN;
 }
 
+/* The model of a (--model, or a model scene's, whose params zero in every
+ * object go into zero[]) compiled for a's integrator and options, for as
+ * many registers as it needs.  0 and *c, or the exit status; *mp the model
+ * (the caller frees it after c). */
+static int compile_model(const fp3_compile_args *a, unsigned char *zero, size_t *objects,
+                         fp3_model **mp, fp3_compiled **c) {
+  char msg[512];
+  fp3_model *m = NULL;
+  if (a->scene) {
+    fp3_mscene sc;
+    if (fp3_mscene_read(a->scene, &sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    fp3_mscene_zero(&sc, zero);
+    *objects = sc.n;
+    m = sc.model;
+    sc.model = NULL;
+    fp3_mscene_free(&sc);
+  } else {
+    if (!(m = malloc(sizeof *m))) return EXIT_FAIL;
+    if (fp3_model_load(a->model, m, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      free(m);
+      return EXIT_USAGE;
+    }
+  }
+  fp3_compile_opts o = a->opts;
+  o.max_regs = FP3_MAX_REGS; /* compiled for the fewest registers that hold it */
+  int rc = 0;
+  if (!fp3_model_integrator_known(a->integ)) {
+    fprintf(stderr, "fp3 compile: unknown integrator '%s' for a model (%s)\n", a->integ,
+            fp3_model_integrators());
+    rc = EXIT_USAGE;
+  } else if (fp3_compile_model(m, a->integ, &o, zero, c, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 compile: %s: %s\n", m->file, msg);
+    rc = EXIT_USAGE;
+  }
+  *mp = m; /* the program reads it: freed after */
+  return rc;
+}
+
 /* The run step: read, compile, write, report. */
 static int run_compile(const fp3_compile_args *a) {
   const char *scene = a->scene, *outp = a->out, *integ = a->integ;
+  const char *what = scene ? scene : a->model;
   const int json = a->json;
   const fp3_compile_opts o = a->opts;
+  const int model = a->model || fp3_scene_is_model(scene);
   char msg[512];
-  fp3_scene sc;
-  if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 compile: %s\n", msg);
-    return EXIT_USAGE;
-  }
-  fp3_compiled *c;
-  if (fp3_compile(&sc, integ, &o, scene, &c, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 compile: %s: %s\n", scene, msg);
-    fp3_scene_free(&sc);
-    return EXIT_USAGE;
+  fp3_scene sc = {NULL, 0};
+  fp3_compiled *c = NULL;
+  fp3_model *m = NULL;
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  size_t objects = 0;
+  if (model) {
+    int rc = compile_model(a, zero, &objects, &m, &c);
+    if (rc) {
+      free(m);
+      return rc;
+    }
+  } else {
+    if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s\n", msg);
+      return EXIT_USAGE;
+    }
+    objects = sc.n;
+    if (fp3_compile(&sc, integ, &o, scene, &c, msg, sizeof msg)) {
+      fprintf(stderr, "fp3 compile: %s: %s\n", scene, msg);
+      fp3_scene_free(&sc);
+      return EXIT_USAGE;
+    }
   }
   int rc = 0;
   if (outp) {
@@ -140,20 +206,31 @@ static int run_compile(const fp3_compile_args *a) {
   const fp3_compile_stats *st = fp3_compiled_stats(c);
   if (rc == 0 && json) {
     printf("{\"scene\": ");
-    fp3_json_string(stdout, scene);
-    printf(", \"objects\": %zu, \"integrator\": ", sc.n);
+    if (scene) fp3_json_string(stdout, scene);
+    else printf("null");
+    printf(", \"model_file\": ");
+    if (a->model) fp3_json_string(stdout, a->model);
+    else printf("null");
+    printf(", \"objects\": %zu, \"integrator\": ", objects);
     fp3_json_string(stdout, integ);
     printf(", \"fold\": %s, \"drop_zero\": %s, \"no_drag\": %s, \"no_thrust\": %s",
            o.fold ? "true" : "false", o.drop_zero ? "true" : "false",
            st->no_drag ? "true" : "false", st->no_thrust ? "true" : "false");
     printf(", \"insns_per_step\": %u, \"arith_per_step\": %u, \"literal_insns_per_step\": %u",
            st->body_insns, st->body_arith, st->literal_body_insns);
-    printf(", \"prologue_insns\": %u, \"hoisted\": %u, \"dead_removed\": %u, \"registers\": %u",
-           st->prologue_insns, st->hoisted, st->dead_removed, st->regs);
+    printf(", \"prologue_insns\": %u, \"hoisted\": %u, \"dead_removed\": %u, \"registers\": %u"
+           ", \"registers_needed\": %u, \"num_regs\": %u", st->prologue_insns, st->hoisted,
+           st->dead_removed, st->regs, st->regs_needed, st->num_regs);
     printf(", \"add_latency\": %u, \"mul_latency\": %u, \"fmax_pipe\": %s", o.add_latency,
            o.mul_latency, o.fmax_pipe ? "true" : "false");
     printf(", \"est_cycles_first_step\": %u, \"est_cycles_per_step\": %u}\n",
            st->est_cycles_first, st->est_cycles_later);
+  } else if (rc == 0 && model) {
+    fprintf(stderr, "fp3 compile: %s: %s %s: %u instructions per integration (literal program "
+            "%u), prologue %u, %u registers needed (NUM_REGS %u), about %u cycles per "
+            "integration (one object)\n", what, integ, o.fold ? "folded" : "literal",
+            st->body_insns, st->literal_body_insns, st->prologue_insns, st->regs_needed,
+            st->num_regs, st->est_cycles_later);
   } else if (rc == 0) {
     fprintf(stderr,
             "fp3 compile: %s (%zu objects), %s: %u instructions per integration "
@@ -165,6 +242,7 @@ static int run_compile(const fp3_compile_args *a) {
             o.drop_zero && st->no_thrust ? "; no thrust" : "");
   }
   fp3_compiled_free(c);
+  free(m);
   fp3_scene_free(&sc);
   return rc;
 }

@@ -1,6 +1,8 @@
 /*
- * cmd_compile.h -- `fp3 compile SCENE`: the scene compiler (compile.h) on
- * the command line.
+ * cmd_compile.h -- `fp3 compile`: a model (--model FILE, a model scene)
+ * compiled for an integrator (fp3_compile_model), or a ship scene ('T C m
+ * v0 s0' a line) by the ship scene compiler (fp3_compile), on the command
+ * line (compile.h).
  */
 #ifndef FP3_CMD_COMPILE_H
 #define FP3_CMD_COMPILE_H
@@ -9,7 +11,8 @@
 
 /* `fp3 compile SCENE`'s options (fp3 compile --help). */
 typedef struct fp3_compile_args {
-  const char *scene;      /* the scene file (required)                     */
+  const char *scene;      /* the scene file (a model scene or a ship scene) */
+  const char *model;      /* --model FILE (instead of a scene)             */
   const char *out;        /* -o FILE, or NULL: standard output             */
   const char *integ;      /* --integrator (default rk4; the compiler checks
                              it, fp3_compile)                              */
@@ -17,7 +20,7 @@ typedef struct fp3_compile_args {
   fp3_compile_opts opts;  /* latencies, --fmax-pipe, folding               */
 } fp3_compile_args;
 
-/* The parse step of `fp3 compile SCENE` (not of a model, fp3_parse_model):
+/* The parse step of `fp3 compile`:
  * FP3_ARGS_RUN with *a filled, FP3_ARGS_HELP, or FP3_ARGS_BAD with the
  * message on stderr (cliopt.h). */
 int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a);

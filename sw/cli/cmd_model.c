@@ -33,18 +33,6 @@
  * (README "Results", make pnr) */
 #define DEFAULT_FMAX 40.5
 
-int fp3_args_have_model(int argc, char **argv) {
-  for (int i = 1; i < argc; i++) {
-    if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
-    if (strcmp(argv[i], "--scene") == 0 && i + 1 < argc && fp3_scene_is_model(argv[i + 1]))
-      return 1;
-    if (strncmp(argv[i], "--scene=", 8) == 0 && fp3_scene_is_model(argv[i] + 8)) return 1;
-    /* a positional SCENE (fp3 compile, fp3 configure, fp3 frames) */
-    if (argv[i][0] != '-' && (i == 1 || argv[i - 1][0] != '-') && fp3_scene_is_model(argv[i]))
-      return 1;
-  }
-  return 0;
-}
 
 /* --wake F:K:NAME=VALUE[*PARAM] into a (fp3_model_args).  0, or -1 with
  * the message on stderr. */
@@ -84,14 +72,10 @@ static int parse_wake(const char *v, fp3_model_args *a) {
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]\n"
-          "       fp3 compile MODEL_SCENE [--integrator NAME] [--literal] [-o OUT.s]\n"
-          "       fp3 frames --scene MODEL_SCENE [--frames F] [--integrator NAME] [--literal]\n"
-          "               [--no-rest-skip] [--engine rtl|iss] [--json]\n"
-          "       fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]\n"
+          "usage: fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]\n"
           "               [--points K] [--t-end T] [--stability FILE.csv]\n"
           "               [--long FILE.csv [--long-steps N]] [--engine rtl|iss] [-o FILE.csv]\n"
-          "       (fp3 run --help for runs; docs/models.md)\n"
+          "       (fp3 run, fp3 frames, fp3 compile --help for the others; docs/models.md)\n"
           "\n"
           "  --model FILE      a model file (.fp3m, docs/models.md; models/ has examples)\n"
           "  --scene FILE      a model scene: 'model FILE', 'h STEP', a header naming the\n"
@@ -136,8 +120,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       if (r < 0) return FP3_ARGS_BAD;
       a->integ = v;
       a->integ_given = 1;
-    } else if (strcmp(cmd, "compile") != 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
         fprintf(stderr, "fp3 %s: unknown engine '%s' (rtl or iss)\n", cmd, v);
@@ -149,23 +132,19 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   "integrations", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->steps = (uint32_t)k;
-    } else if (strcmp(cmd, "compile") != 0 &&
-               (r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
+    } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--set", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       if (a->nset == (int)(sizeof a->set / sizeof a->set[0])) {
         fprintf(stderr, "fp3 %s: too many --set\n", cmd);
         return FP3_ARGS_BAD;
       }
       a->set[a->nset++] = v;
-    } else if (strcmp(cmd, "run") != 0 && strcmp(cmd, "frames") != 0 &&
-               (r = fp3_opt_output(argc, argv, &i, cmd, &v)) != 0) {
+    } else if (!runlike && (r = fp3_opt_output(argc, argv, &i, cmd, &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->out = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--scene", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->scene = v;
-    } else if (strcmp(cmd, "compile") == 0 && argv[i][0] != '-' && !a->scene) {
-      a->scene = argv[i];
     } else if (runlike &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--objects", 1, MAX_MODEL_OBJECTS,
                                   "objects", &k)) != 0) {
@@ -361,52 +340,6 @@ int fp3_model_fit_engine(fp3_engine **e, const fp3_compiled *c, const char *cmd)
   fp3_engine_free(*e);
   *e = ne;
   return 0;
-}
-
-int fp3_cmd_compile_model(int argc, char **argv) {
-  fp3_model_args a;
-  int r = fp3_parse_model(argc, argv, "compile", &a);
-  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
-  fp3_model *m = NULL;
-  char msg[512];
-  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-  if (a.scene) { /* a model scene: params zero in every object are removed */
-    fp3_mscene sc;
-    if (fp3_mscene_read(a.scene, &sc, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 compile: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    fp3_mscene_zero(&sc, zero);
-    m = sc.model;
-    sc.model = NULL;
-    fp3_mscene_free(&sc);
-  } else {
-    if (!(m = malloc(sizeof *m))) return EXIT_FAIL;
-    if (fp3_model_load(a.file, m, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 compile: %s\n", msg);
-      free(m);
-      return EXIT_USAGE;
-    }
-  }
-  fp3_compiled *c = fp3_model_compile_for(m, &a, zero, NULL, 1, "compile");
-  int rc = c ? 0 : EXIT_USAGE;
-  if (c && a.out && fp3_compiled_write(c, a.out, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 compile: %s\n", msg);
-    rc = EXIT_FAIL;
-  } else if (c && !a.out) {
-    fputs(fp3_compiled_text(c), stdout);
-  }
-  if (c && a.out && rc == 0) {
-    const fp3_compile_stats *s = fp3_compiled_stats(c);
-    fprintf(stderr, "fp3 compile: %s: model %s, %s %s: %u instructions per integration, "
-            "prologue %u, %u registers needed (NUM_REGS %u), about %u cycles per "
-            "integration (one object)\n", a.out, m->name, a.integ,
-            a.literal ? "literal" : "folded", s->body_insns, s->prologue_insns, s->regs_needed,
-            s->num_regs, s->est_cycles_later);
-  }
-  fp3_compiled_free(c);
-  free(m);
-  return rc;
 }
 
 /* ---- run ------------------------------------------------------------------ */

@@ -1,11 +1,9 @@
 /*
  * cmd_model.h -- what the subcommands share about models (docs/models.md):
- * the options of run, compile, frames and bench, the --set values,
- * compiling a model for an engine, watching state registers; and the
- * model forms of compile, frames and bench:
+ * the options of run, frames and bench, the --set values, compiling a
+ * model for an engine, watching state registers; and the model form of
+ * bench:
  *
- *   fp3 compile --model FILE [--integrator NAME] [--literal] [-o OUT.s]
- *   fp3 frames --scene MODEL_SCENE ...
  *   fp3 bench --model FILE ...
  */
 #ifndef FP3_CMD_MODEL_H
@@ -20,12 +18,12 @@
 #include "model.h"
 #include "traceopt.h"
 
-/* The options of the model forms of run, compile, frames and bench
+/* The options of run, frames and the model form of bench
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {
   const char *file, *integ, *engine, *out;
   const char *program; /* run: --program FILE.s (a hand-written program)  */
-  const char *scene;   /* --scene, or compile's positional SCENE        */
+  const char *scene;   /* --scene FILE                                  */
   size_t objects;      /* run: --objects (0: none)                      */
   uint64_t seed;       /* run: --seed                                   */
   int literal, json, seeded;
@@ -55,8 +53,7 @@ typedef struct fp3_model_args {
   char wake_times[FP3_MODEL_NAME_LEN]; /* PARAM, or "" */
 } fp3_model_args;
 
-/* The parse step of the model form of command cmd ("run", "compile",
- * "frames" or "bench"): FP3_ARGS_RUN with *a filled, FP3_ARGS_HELP, or
+/* The parse step of command cmd ("run", "frames" or "bench"): FP3_ARGS_RUN with *a filled, FP3_ARGS_HELP, or
  * FP3_ARGS_BAD with the message on stderr (cliopt.h).  The --set values
  * are kept as text: they name the model's params and state variables,
  * which only the model file gives (fp3_model_args_values). */
@@ -74,14 +71,11 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a);
  * file (param k = VALUE)". */
 int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0);
 
-/* 1 if argv[1..argc) holds --model (or --model=FILE): the command is for a
- * model file. */
-int fp3_args_have_model(int argc, char **argv);
 
 /* Compile model m for a's integrator (a->literal: the literal form; else
  * folded, the params zero[k] = 1 removed) for the build hw (NULL: the
  * default build).  grow: the build may have more registers (the ISS, and
- * `fp3 compile`): a program that needs more than hw's NUM_REGS is
+ * bench): a program that needs more than hw's NUM_REGS is
  * compiled for the fewest that run it; else it is refused with the
  * numbers.  The program, or NULL with the message on stderr ("fp3 CMD:
  * ..."). */
@@ -108,10 +102,6 @@ typedef struct fp3_state_obs {
 
 void fp3_state_obs_write(void *ctx, unsigned reg, uint32_t value, uint32_t k);
 void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle);
-
-/* `fp3 compile --model`: the program text (to -o FILE atomically, else
- * stdout).  argv[0] is "compile".  Exit status as fp3_cmd_compile. */
-int fp3_cmd_compile_model(int argc, char **argv);
 
 /* `fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]
  * [--t-end T] [--points K] [--literal] [--engine rtl|iss] [-o FILE.csv]`:

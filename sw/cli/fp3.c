@@ -10,7 +10,8 @@
  *   fp3 bench [options]              integrators: work-precision benchmark,
  *                                    stability and long runs (sw/bench/bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
- *   fp3 compile SCENE [-o FILE.s]    the scene compiler (sw/compiler/compile.h)
+ *   fp3 compile SCENE|--model FILE   a program compiled for a model or scene
+ *                                    (sw/compiler/compile.h)
  *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
  *                                    (sw/compiler/configure.h)
  *   fp3 frames [options]             a scene frame by frame with sleeping
@@ -54,8 +55,8 @@ static void usage(FILE *f) {
           "  bench [options]           integrators: work-precision benchmark,\n"
           "                            stability bounds, long runs\n"
           "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n"
-          "  compile SCENE [-o FILE.s] the scene compiler: a program folded for\n"
-          "                            the scene (fp3 run --scene uses it)\n"
+          "  compile SCENE|--model M   a model or a scene compiled into a program\n"
+          "                            (fp3 run compiles it itself)\n"
           "  configure SCENE [-o FILE] RTL parameters sized to the scene\n"
           "                            (make variables; make synth-scene)\n"
           "  frames [options]          a scene frame by frame with sleeping\n"
@@ -78,9 +79,7 @@ int main(int argc, char **argv) {
   if (strcmp(cmd, "testfloat") == 0)
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
-  if (strcmp(cmd, "compile") == 0)
-    return fp3_args_have_model(argc - 1, argv + 1) ? fp3_cmd_compile_model(argc - 1, argv + 1)
-                                                   : fp3_cmd_compile(argc - 1, argv + 1);
+  if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
   if (strcmp(cmd, "configure") == 0) return fp3_cmd_configure(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   if (strcmp(cmd, "frames") == 0) return fp3_cmd_frames(argc - 1, argv + 1);
