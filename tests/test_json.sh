@@ -108,9 +108,11 @@ form frames 0 -- frames --scene scenes/drift.scene --program programs/ship_euler
 form frames 0 -- frames --scene scenes/fleet.scene --frames 20 "${ISS[@]}"
 form frames 0 -- frames --scene scenes/springs.scene --frames 5 --literal --no-rest-skip "${ISS[@]}"
 
-# ---- fp3 compile (ship scenes) ----------------------------------------------------
+# ---- fp3 compile (ship scenes, a model, a model scene) -------------------------------
 form compile 0 -- compile scenes/harbour.scene -o "$T/harbour.s"
 form compile 0 -- compile scenes/coast.scene -o "$T/coast.s" --literal --integrator euler
+form compile 0 -- compile --model models/spring.fp3m -o "$T/spring.s"
+form compile 0 -- compile scenes/springs.scene -o "$T/springs.s" --integrator rk2 --literal
 
 # ---- fp3 configure (ship and model scenes) ----------------------------------------
 form configure 0 -- configure scenes/harbour.scene
