@@ -131,16 +131,7 @@ printf '.integrator euler\n.model "%s/models/spring.fp3m"\nb: nop\n   endi b\n' 
 expect 2 "is a program of .*spring.fp3m (its .model line), not of" -- "${ISS[@]}" --program "$T/other.s" --model models/ship.fp3m
 
 # ---- a program that faults: FAIL, exit 1 ---------------------------------------------
-cat >"$T/fault.s" <<'EOF'
-.integrator euler
-.in v0, r5
-.in s0, r6
-.out v, r5
-.out s, r6
-b:      nop
-        .word 0x0F00000000000000
-        endi b
-EOF
+cp tests/data/fault.s "$T/fault.s"   # ILLEGAL_INSN at pc 1
 expect 1 "FAIL: run error ILLEGAL_INSN" -- "${ISS[@]}" --program "$T/fault.s" --steps 3
 expect 1 "at pc 1"                     -- "${ISS[@]}" --program "$T/fault.s" --steps 3
 

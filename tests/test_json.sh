@@ -55,16 +55,7 @@ form() {
 # ---- programs that fail on purpose ------------------------------------------
 # a fault (ILLEGAL_INSN at pc 1) and a wrong result (s - h v for s + h v);
 # the ship programs' includes and .model line (../models) resolve in $T
-cat >"$T/fault.s" <<'EOF'
-.integrator euler
-.in v0, r5
-.in s0, r6
-.out v, r5
-.out s, r6
-b:      nop
-        .word 0x0F00000000000000
-        endi b
-EOF
+cp tests/data/fault.s "$T/fault.s"   # ILLEGAL_INSN at pc 1
 mkdir -p "$T/programs" "$T/models"
 cp programs/*.inc "$T/programs/"
 cp models/ship.fp3m "$T/models/"
