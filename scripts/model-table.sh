@@ -61,7 +61,7 @@ r = a["results"][0]
 err = max(abs(r[k] - r[k + "_ref"]) for k in r if k + "_ref" in r)
 big = eng == "rtl" and a["num_regs"] != 32  # the build with more registers
 print("| %s | %s%s | %d | %d | %s | %.2f | %.2f | %s | %.2g |" % (
-    m, ig, " literal" if lit else "", a["body_insns"], a["registers_needed"],
+    m, ig, " literal" if lit else "", a["insns_per_step"], a["registers_needed"],
     eng.upper() + ("" if eng == "rtl" and not big else " (NUM_REGS %d)" % a["num_regs"]),
     a["cycles_later_step"], b["cycles_per_object_step"],
     b["est_cycles_per_step"] if big else est, err))
