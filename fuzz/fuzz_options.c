@@ -130,10 +130,9 @@ static void parse_bench(int argc, char **argv) {
 static void parse_tbgen(int argc, char **argv) {
   fp3_tbgen_args a;
   if (fp3_parse_tbgen(argc, argv, &a) != FP3_ARGS_RUN) return;
-  char msg[256];
   if (!a.in || !a.dir) fail("tbgen", "no program or no folder");
   if (a.steps < 1 || a.steps > TBGEN_MAX_CHECK) fail("tbgen", "--steps out of range");
-  if (fp3_ship_validate(&a.p, msg, sizeof msg) != 0) fail("tbgen", "an invalid scene");
+  for (int i = 0; i < a.model.nset; i++) check_str("tbgen", a.model.set[i], 0);
   check_str("tbgen", a.in, 0);
   check_str("tbgen", a.dir, 0);
 }

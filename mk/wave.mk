@@ -1,23 +1,30 @@
 # wave.mk -- make wave: the RTL in Icarus Verilog with a self-checking
 # testbench (sim/tb_fp3.v) and a waveform for GTKWave (sim/fp3.gtkw).
 #
-#   make wave [PROGRAM=programs/ship_rk4.s] [STEPS=10] [WAVE_FORMAT=vcd|fst]
-#             [SET='T=0 v0=0'] [WAVE_ARGS='+dump_load +watchdog=N ...']
+#   make wave [PROGRAM=programs/ship_rk4.s] [MODEL=models/ship.fp3m] [STEPS=10]
+#             [WAVE_FORMAT=vcd|fst] [SET='T=0 v0=0']
+#             [WAVE_ARGS='+dump_load +watchdog=N ...']
 #
-# SET: scene parameters NAME=VALUE (fp3 run --set), e.g. a ship at rest.
+# PROGRAM: a model's hand-written program (fp3 run --program: .model,
+# .integrator, .in/.out by the model's names); MODEL: its model when the
+# program has no .model line.  SET: values NAME=VALUE of the model's
+# object (fp3 run --set: h, params, NAME or NAME0 of a state variable),
+# e.g. a ship at rest.
 #
-# 1. build/fp3 tbgen assembles PROGRAM and writes program.hex, init.hex,
-#    run.hex and expected.hex (ISS results, Verilator cycle counts) into
-#    $(WAVE_DIR); an assembler error stops make here.
+# 1. build/fp3 tbgen assembles PROGRAM, binds it to its model and writes
+#    program.hex, init.hex, run.hex and expected.hex (ISS results checked
+#    against the golden model, Verilator cycle counts) into $(WAVE_DIR);
+#    an assembler, model or binding error stops make here.
 # 2. iverilog -g2005 compiles the testbench and the modules it needs from
 #    rtl/ (a library directory, -y), with the model parameters
 #    NUM_CONTEXTS NUM_LANES NUM_REGS ... FTZ HAS_ADD HAS_SUB HAS_MUL of mk/rtl.mk when given
-#    (with NUM_LANES every lane runs the scene and is checked).
+#    (with NUM_LANES every lane runs the object and is checked).
 # 3. vvp runs it: PASS or FAIL, the watchdog ends a hung run; make fails
 #    unless the last word is PASS.  The waveform is $(WAVE_DIR)/fp3.vcd
 #    (or .fst): gtkwave $(WAVE_DIR)/fp3.vcd sim/fp3.gtkw
 #
-# tests/test_wave.sh runs it on the ship program, and its negative cases.
+# tests/test_wave.sh runs it on the ship program and a spring program, and
+# its negative cases.
 
 WAVE_DIR     ?= $(BUILD)/wave
 WAVE_FORMAT  ?= vcd
@@ -40,7 +47,7 @@ WAVE_VVPFMT  := $(if $(filter fst,$(WAVE_FORMAT)),-fst,)
 wave: $(BUILD)/fp3 | $(SETUP_STAMP)
 	@mkdir -p $(WAVE_DIR)
 	$(BUILD)/fp3 tbgen $(WAVE_PROGRAM) -o $(WAVE_DIR) --steps $(WAVE_STEPS) \
-	  $(foreach s,$(SET),--set $(s)) \
+	  $(if $(MODEL),--model $(MODEL)) $(foreach s,$(SET),--set $(s)) \
 	  $(if $(filter 1,$(ROUND)),--round rtz) $(if $(filter 1,$(FTZ)),--ftz)
 	@printf '+timescale+1ns/1ns\n' > $(WAVE_DIR)/iverilog.cmd
 	$(IVERILOG) $(WAVE_IVFLAGS) -c $(WAVE_DIR)/iverilog.cmd -o $(WAVE_DIR)/tb_fp3.vvp \

@@ -12,11 +12,17 @@
 //
 //   program.hex   the assembled program (64-bit words)
 //   init.hex      the registers before the run
-//   run.hex       16 words: steps, word counts, expected status
-//   expected.hex  final registers, then v and s after every integration
+//   run.hex       32 words: steps, word counts, expected status, the
+//                 registers and names of the two state variables checked
+//   expected.hex  final registers, then those two after every integration
+//
+// The two checked are the model's first two state variables (the ship's
+// v and s, the spring's x and v; one of a one-state model): the messages
+// name them as run.hex does.
 //
 // Checks (each mismatch is printed; the last line is PASS or FAIL):
-//   - v and s of every context and lane after every integration, bit for bit,
+//   - the two state variables of every context and lane after every
+//     integration, bit for bit,
 //     tagged with their integration exactly as sw/engine/engine_rtl.c does (one
 //     FIFO of {context, integration} per unit, pushed at issue, popped at
 //     write-back, which must name the same context);
@@ -79,12 +85,16 @@ module tb_fp3 #(
   localparam integer READ     = 1 + 3 * FMAX_PIPE;   // operand-read stages
   localparam integer LD       = NUM_LANES > 1 ? 2 : 0; // lanes: their broadcast stages (fp3_top LD)
   localparam integer HREAD    = READ + (NUM_LANES > 1 ? 1 : 0);   // host read cycles
-  localparam integer RUN_WORDS = 16;                 // run.hex layout
+  // run.hex layout (sw/cli/cmd_tbgen.h, format version TBGEN_VERSION):
+  // R_REG_V, R_REG_S the registers of the model's state variables 0 and
+  // 1 (32'hFFFFFFFF: none, a one-state model), R_NAME_V, R_NAME_S their
+  // names, NAME_WORDS words each, a Verilog string.
+  localparam integer RUN_WORDS = 32, RUN_VERSION = 2, NAME_WORDS = 8;
   localparam integer R_MAGIC = 0, R_VERSION = 1, R_NWORDS = 2, R_NUM_REGS = 3,
                      R_STEPS = 4, R_ERROR = 5, R_FAULT_PC = 6, R_STEPS_DONE = 7,
                      R_ISSUED = 8, R_FLAGS = 9, R_REG_V = 10, R_REG_S = 11,
                      R_NCHECK = 12, R_RTL_LAT = 13, R_RTL_CYCLES = 14,
-                     R_RTL_STALLS = 15;
+                     R_RTL_STALLS = 15, R_NAME_V = 16, R_NAME_S = 24;
   localparam integer FIFO_DEPTH = 64;                // > longest latency + 1
   localparam integer TAG_CTX    = 26;                // FIFO entry: {ctx, integration}
   localparam integer MAX_REPORT = 10;                // mismatches printed
@@ -298,7 +308,7 @@ module tb_fp3 #(
   end
   wire [8*4-1:0] dbg_op        = dbg_issue ? mnemonic(dbg_opc) : "";
   real       dbg_add_real, dbg_mul_real, dbg_mov_real, dbg_v_real, dbg_s_real;
-  reg [31:0] dbg_v, dbg_s;         // the .out registers v and s of context 0
+  reg [31:0] dbg_v, dbg_s;         // state variables 0 and 1 (run.hex) of context 0
   reg [31:0] dbg_v_last, dbg_s_last;   // ... of its last lane
   always @(*) begin
     dbg_add_real = f32_real(tr_add_data[31:0]);
@@ -375,7 +385,8 @@ module tb_fp3 #(
   // (Set once run.hex and +contexts are read.)
   reg rtl_timed = 1'b0;
   reg         started = 1'b0;
-  reg [31:0]  cur     [0:2*NC*NL-1];  // latest v, s of context c, lane l: [(2c + w) NL + l]
+  reg [31:0]  cur     [0:2*NC*NL-1];  // latest state 0, 1 of context c, lane l: [(2c + w) NL + l]
+  reg [8*4*NAME_WORDS-1:0] sname [0:1];  // their names (run.hex)
   integer     next_k  [0:2*NC*NL-1];  // next integration to finalise
   integer     endis   [0:NC-1];    // endi issued per context
   reg [31:0]  tagq    [0:5*FIFO_DEPTH-1];  // unit u: u*FIFO_DEPTH ..
@@ -390,8 +401,9 @@ module tb_fp3 #(
     end
   endtask
 
-  // Result w (0 v, 1 s) of context c, lane l after integrations
-  // next_k .. upto-1 is its latest value.
+  // Result w (state variable 0 or 1) of context c, lane l after
+  // integrations next_k .. upto-1 is its latest value (none without its
+  // register).
   task finalise;
     input integer c;
     input integer l;
@@ -401,19 +413,19 @@ module tb_fp3 #(
     integer i2;
     begin
       i2 = (2*c + w) * NL + l;
-      while (next_k[i2] < upto && next_k[i2] <= run[R_NCHECK]) begin
+      while (run[R_REG_V + w] < NUM_REGS && next_k[i2] < upto && next_k[i2] <= run[R_NCHECK]) begin
         want = expect_[NUM_REGS + 2*(next_k[i2]-1) + w];
         checked = checked + 1;
         if (cur[i2] !== want) begin
           mismatches = mismatches + 1;
           errors = errors + 1;
           if (mismatches <= MAX_REPORT && NL == 1)
-            $display("MISMATCH: context %0d, integration %0d: %s = %h (%g), expected %h (%g)",
-                     c, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
+            $display("MISMATCH: context %0d, integration %0d: %0s = %h (%g), expected %h (%g)",
+                     c, next_k[i2], sname[w], cur[i2], f32_real(cur[i2]), want,
                      f32_real(want));
           else if (mismatches <= MAX_REPORT)
-            $display("MISMATCH: context %0d, lane %0d, integration %0d: %s = %h (%g), expected %h (%g)",
-                     c, l, next_k[i2], w == 0 ? "v" : "s", cur[i2], f32_real(cur[i2]), want,
+            $display("MISMATCH: context %0d, lane %0d, integration %0d: %0s = %h (%g), expected %h (%g)",
+                     c, l, next_k[i2], sname[w], cur[i2], f32_real(cur[i2]), want,
                      f32_real(want));
         end
         next_k[i2] = next_k[i2] + 1;
@@ -588,10 +600,14 @@ module tb_fp3 #(
     rtl_timed = contexts == 1 && run[R_RTL_LAT][31:18] == 14'd0 &&
                 run[R_RTL_LAT][16:0] == {FMAX_PIPE[0], MUL_LATENCY[7:0], ADD_LATENCY[7:0]} &&
                 (NL > 1 || !run[R_RTL_LAT][17]);
-    if (run[R_MAGIC] !== ID_VALUE || run[R_VERSION] !== 32'd1) begin
-      $display("FAIL: tb_fp3: %0s/run.hex is not an fp3 tbgen file of version 1", dir);
+    if (run[R_MAGIC] !== ID_VALUE || run[R_VERSION] !== RUN_VERSION) begin
+      $display("FAIL: tb_fp3: %0s/run.hex is not an fp3 tbgen file of version %0d (run fp3 tbgen again)",
+               dir, RUN_VERSION);
       finish(1);
     end
+    for (u = 0; u < 2; u = u + 1)
+      for (i = 0; i < NAME_WORDS; i = i + 1)
+        sname[u][32*(NAME_WORDS-1-i) +: 32] = run[(u == 0 ? R_NAME_V : R_NAME_S) + i];
     if (run[R_NUM_REGS] != NUM_REGS || run[R_NWORDS] > IMEM_DEPTH || run[R_NWORDS] == 0 ||
         run[R_NCHECK] > MAX_CHECK) begin
       $display("FAIL: tb_fp3: the files are for %0d registers and %0d words (%0d checked integrations); this build has %0d registers, %0d words (%0d)",
@@ -733,11 +749,15 @@ module tb_fp3 #(
     else
       $display("tb_fp3: no Verilator cycle count for this configuration: cycles not compared");
     if (errors == 0) begin
-      $display("PASS: tb_fp3: %0d context(s) x %0d integrations, v and s bit-exact after each (%0d values), %0d registers each, status and counters as expected, %0d lane(s) per context",
-               contexts, run[R_STEPS_DONE], checked, NUM_REGS, NL);
+      if (run[R_REG_S] < NUM_REGS)
+        $display("PASS: tb_fp3: %0d context(s) x %0d integrations, %0s and %0s bit-exact after each (%0d values), %0d registers each, status and counters as expected, %0d lane(s) per context",
+                 contexts, run[R_STEPS_DONE], sname[0], sname[1], checked, NUM_REGS, NL);
+      else
+        $display("PASS: tb_fp3: %0d context(s) x %0d integrations, %0s bit-exact after each (%0d values), %0d registers each, status and counters as expected, %0d lane(s) per context",
+                 contexts, run[R_STEPS_DONE], sname[0], checked, NUM_REGS, NL);
       finish(0);
     end else begin
-      $display("FAIL: tb_fp3: %0d errors (%0d v/s mismatches in %0d values)", errors, mismatches, checked);
+      $display("FAIL: tb_fp3: %0d errors (%0d state mismatches in %0d values)", errors, mismatches, checked);
       finish(1);
     end
   end

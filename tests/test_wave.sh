@@ -148,6 +148,119 @@ vvp -n "$LANES_VVP" +dir="$T/wlbad" +contexts=2 >"$T/lbad.log" 2>&1; rc=$?
 [ $rc -ne 0 ] && ok || bad "NUM_LANES=3, a corrupted value: vvp exited 0"
 has "$T/lbad.log" "MISMATCH: context 1, lane 2, integration 3" "NUM_LANES=3, corrupted" && ok
 
+# ---- another model: euler on the damped spring (models/spring.fp3m) ------
+# A hand-written program bound to the model by its names (fp3 run
+# --program's path): no .model line here, so make wave's MODEL= names it;
+# --set by the model's names (x0: the NAME0 alias of state variable x).
+# The checked pair is the model's first two state variables, x and v.
+cat >"$T/spring_euler.s" <<'EOS'
+; euler on the damped spring: x += h v; v += h (-(k x + c v) minv)
+.integrator euler
+.reg h r1
+.reg k r2
+.reg c r3
+.reg x r4
+.reg v r5
+.reg minv r6
+.in h, h
+.in k, k
+.in c, c
+.in x0, x
+.in v0, v
+.in minv, minv
+.out x, x
+.out v, v
+body:
+        mul  r7, k, x        ; k x
+        mul  r8, c, v        ; c v
+        mul  r9, h, v        ; h x'
+        add  r10, r7, r8     ; k x + c v
+        add  x, x, r9        ; x + h x'
+        mul  r11, r10, minv  ; -v'
+        mul  r12, h, r11     ; -h v'
+        sub  v, v, r12       ; v + h v'
+        endi body
+EOS
+SW=$T/wspring
+make -s --no-print-directory wave PROGRAM="$T/spring_euler.s" MODEL=models/spring.fp3m STEPS=5 \
+  SET="k=30 x0=1" WAVE_DIR="$SW" >"$T/spring.log" 2>&1 || { bad "make wave (spring) failed"; tail -20 "$T/spring.log"; }
+has "$T/spring.log" "model spring, 5 integrations, 5 checked (x, v)" "make wave (spring)" && ok
+has "$T/spring.log" "^PASS: tb_fp3: 1 context(s) x 5 integrations, x and v bit-exact after each (10 values)" \
+  "make wave (spring)" && ok
+has "$SW/init.hex" "^3f800000  // r4$" "spring: --set x0=1 in x's register" && ok
+has "$SW/run.hex" "^00000004  // 10 register of state variable 0 (x)" "spring run.hex" && ok
+# the same program with its .model line: the same files
+{ printf '.model "%s/models/spring.fp3m"\n' "$PWD"; cat "$T/spring_euler.s"; } >"$T/spring_model.s"
+"$FP3" tbgen "$T/spring_model.s" -o "$T/wspring2" --steps 5 --set k=30 --set x0=1 --no-rtl \
+  >"$T/spring2.log" 2>&1 || bad "tbgen of a program with .model failed"
+for f in program init expected; do
+  cmp -s <(grep -v '^//' "$SW/$f.hex" | sed 's, *//.*,,') \
+         <(grep -v '^//' "$T/wspring2/$f.hex" | sed 's, *//.*,,') && ok \
+    || bad "spring: $f.hex differs between --model and .model"
+done
+cp -r "$SW" "$T/spring_bad"                 # a corrupted x names x in the message
+corrupt "$SW/expected.hex" '// 3: x' >"$T/spring_bad/expected.hex"
+"${VVP[@]}" +dir="$T/spring_bad" >"$T/spring_bad.log" 2>&1 && bad "corrupted x: vvp exited 0"
+has "$T/spring_bad.log" "MISMATCH: context 0, integration 3: x = " "corrupted x" && ok
+# a file of the previous format is refused
+cp -r "$SW" "$T/spring_v1"
+sed 's,^00000002\(  //  1 format version\),00000001\1,' "$SW/run.hex" >"$T/spring_v1/run.hex"
+cmp -s "$SW/run.hex" "$T/spring_v1/run.hex" && bad "could not change run.hex's version"
+"${VVP[@]}" +dir="$T/spring_v1" >"$T/spring_v1.log" 2>&1 && bad "run.hex version 1: vvp exited 0"
+has "$T/spring_v1.log" "is not an fp3 tbgen file of version 2" "run.hex version 1" && ok
+
+# ---- a one-state model: one value checked, the second register none ------
+printf 'model decay\nparam h = 0.125, a = 2\nstate y = 1\ny'"'"' = -a*y\n' >"$T/decay.fp3m"
+cat >"$T/decay_euler.s" <<'EOS'
+.model "decay.fp3m"
+.integrator euler
+.in h, r1
+.in a, r2
+.in y0, r3
+.out y, r3
+body:
+        mul  r4, r2, r3      ; a y
+        mul  r5, r1, r4      ; -h y'
+        sub  r3, r3, r5      ; y + h y'
+        endi body
+EOS
+"$FP3" tbgen "$T/decay_euler.s" -o "$T/wdecay" --steps 4 --no-rtl >"$T/decay.log" 2>&1 \
+  && ok || { bad "tbgen (one-state model) failed"; cat "$T/decay.log"; }
+has "$T/wdecay/run.hex" "^ffffffff  // 11 register of state variable 1" "one-state run.hex" && ok
+"${VVP[@]}" +dir="$T/wdecay" >"$T/decay_tb.log" 2>&1 || bad "one-state model: vvp failed"
+has "$T/decay_tb.log" "^PASS: tb_fp3: 1 context(s) x 4 integrations, y bit-exact after each (4 values)" \
+  "one-state model" && ok
+
+# ---- tbgen refuses what is not a model's program, and writes nothing -----
+# tbgen_refused RC PATTERN WHAT ARGS...: fp3 tbgen ARGS -o DIR exits RC
+# with PATTERN on stderr and leaves DIR missing.
+tbgen_refused() {
+  local want=$1 pat=$2 what=$3 dir=$T/refused rc; shift 3
+  rm -rf "$dir"
+  "$FP3" tbgen "$@" -o "$dir" --no-rtl >"$T/refused.log" 2>&1; rc=$?
+  [ $rc -eq "$want" ] && ok || bad "$what: tbgen exited $rc, not $want"
+  has "$T/refused.log" "$pat" "$what" && ok
+  [ ! -e "$dir" ] && ok || bad "$what: tbgen wrote into $dir"
+}
+grep -v '^\.integrator' "$T/spring_euler.s" >"$T/no_integ.s"
+tbgen_refused 2 "no_integ.s: no \`.integrator NAME\` line" "no .integrator" \
+  "$T/no_integ.s" --model models/spring.fp3m
+tbgen_refused 2 "spring_euler.s has no \`.model \"FILE.fp3m\"\` line: give --model FILE.fp3m" \
+  "no model" "$T/spring_euler.s"
+tbgen_refused 2 "is a program of .*spring.fp3m (its .model line), not of models/ship.fp3m" \
+  "--model against .model" "$T/spring_model.s" --model models/ship.fp3m
+tbgen_refused 2 "has no param or state 'T'" "--set of another model's name" \
+  "$T/spring_model.s" --set T=1
+{ grep -v '^\.out *s' programs/ship_scene.inc | sed 's,^\.model .*,,'
+  grep -v '^\.include' programs/ship_euler.s; } >"$T/ship_no_s.s"
+tbgen_refused 2 "no \`.out s, rN\`: state variable s of model ship" "a ship program without .out s" \
+  "$T/ship_no_s.s" --model models/ship.fp3m
+# a program that computes something else than its .integrator: the ISS
+# disagrees with the golden model, exit 1
+sed 's/^\( *\)sub  v, v, r12/\1add  v, v, r12/' "$T/spring_model.s" >"$T/spring_wrong.s"
+tbgen_refused 1 "the ISS disagrees with the golden model (.integrator euler, model .*spring.fp3m): after integration 1 v = " \
+  "a wrong program" "$T/spring_wrong.s"
+
 # ---- FST -----------------------------------------------------------------
 vvp -n "$ND_VVP" -fst +dir="$W" +wave="$T/fp3.fst" >"$T/fst.log" 2>&1; rc=$?
 [ $rc -eq 0 ] && [ -s "$T/fst.log" ] && [ -s "$T/fp3.fst" ] && ok || bad "vvp -fst: exit $rc, no FST"
