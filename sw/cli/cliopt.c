@@ -128,30 +128,6 @@ int fp3_parse_pair(const char *v, unsigned long long lo1, unsigned long long hi1
   return fp3_parse_count(colon + 1, lo2, hi2, b);
 }
 
-int fp3_ship_set(const char *cmd, fp3_ship_params *p, const char *arg) {
-  static const char *const names[] = {"T", "C", "m", "h", "v0", "s0"};
-  float *slots[] = {&p->T, &p->C, &p->m, &p->h, &p->v0, &p->s0};
-  const char *eq = strchr(arg, '=');
-  if (!eq || eq == arg) {
-    fprintf(stderr, "fp3 %s: --set wants NAME=VALUE, got '%s'\n", cmd, arg);
-    return -1;
-  }
-  size_t nl = (size_t)(eq - arg);
-  for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-    if (strlen(names[i]) != nl || strncmp(arg, names[i], nl) != 0) continue;
-    char *end;
-    float f = strtof(eq + 1, &end);
-    if (end == eq + 1 || *end != '\0') {
-      fprintf(stderr, "fp3 %s: --set %s: '%s' is not a number\n", cmd, names[i], eq + 1);
-      return -1;
-    }
-    *slots[i] = f;
-    return 0;
-  }
-  fprintf(stderr, "fp3 %s: unknown parameter '%.*s' in --set (T C m h v0 s0)\n", cmd, (int)nl,
-          arg);
-  return -1;
-}
 
 int fp3_is_help(const char *a) { return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0; }
 

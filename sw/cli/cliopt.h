@@ -8,7 +8,6 @@
 #include <stdio.h>
 
 #include "fpref.h"
-#include "golden.h"
 
 /* Every subcommand is two steps: a parse step, fp3_parse_CMD(argc, argv,
  * &args), that turns the argument vector into the subcommand's options
@@ -77,14 +76,6 @@ int fp3_opt_mode(int argc, char **argv, int *i, const char *cmd, fpref_mode *mod
 int fp3_parse_pair(const char *v, unsigned long long lo1, unsigned long long hi1,
                    unsigned long long lo2, unsigned long long hi2, const char *all,
                    unsigned long long *a, unsigned long long *b);
-
-/* --set NAME=VALUE of the ship's scene (fp3 run, fp3 tbgen): NAME one of
- * T C m h v0 s0, VALUE a binary32 number (strtof) stored in that field of
- * *p (fp3_ship_validate checks the scene as a whole).  0, or -1 with a
- * message on stderr: "fp3 CMD: --set wants NAME=VALUE, got 'A'", "fp3
- * CMD: unknown parameter 'N' in --set (T C m h v0 s0)", "fp3 CMD: --set
- * N: 'V' is not a number". */
-int fp3_ship_set(const char *cmd, fp3_ship_params *p, const char *arg);
 
 /* 1 if a is --help or -h. */
 int fp3_is_help(const char *a);

@@ -96,6 +96,7 @@ static void usage(FILE *f) {
 
 int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   memset(a, 0, sizeof *a);
+  a->cmd = cmd;
   a->integ = "rk4";
   a->engine = "rtl";
   a->steps = strcmp(cmd, "frames") == 0 ? DEFAULT_FRAMES
@@ -365,11 +366,11 @@ void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle) {
  * (params, then states).  NAME0 names state variable NAME's initial value
  * where the model has no param or state called NAME0 (the ship program's
  * --set v0 and s0). */
-static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
-                     unsigned char *given) {
+static int apply_set(const char *cmd, const fp3_model *m, const char *arg, float *in,
+                     float *y0, unsigned char *given) {
   const char *eq = strchr(arg, '=');
   if (!eq || eq == arg) {
-    fprintf(stderr, "fp3 run: --set wants NAME=VALUE, got '%s'\n", arg);
+    fprintf(stderr, "fp3 %s: --set wants NAME=VALUE, got '%s'\n", cmd, arg);
     return -1;
   }
   char name[FP3_MODEL_NAME_LEN];
@@ -380,7 +381,7 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
   char *end;
   float v = strtof(eq + 1, &end);
   if (!eq[1] || *end || !isfinite(v)) {
-    fprintf(stderr, "fp3 run: --set %s: '%s' is not a finite number\n", name, eq + 1);
+    fprintf(stderr, "fp3 %s: --set %s: '%s' is not a finite number\n", cmd, name, eq + 1);
     return -1;
   }
   int k = fp3_model_param(m, name);
@@ -400,7 +401,7 @@ static int apply_set(const fp3_model *m, const char *arg, float *in, float *y0,
     given[m->nparam + (unsigned)k] = 1;
     return 0;
   }
-  fprintf(stderr, "fp3 run: --set %s: model %s (%s) has no param or state '%s'\n", name,
+  fprintf(stderr, "fp3 %s: --set %s: model %s (%s) has no param or state '%s'\n", cmd, name,
           m->name, m->file, name);
   return -1;
 }
@@ -417,6 +418,7 @@ static const char *state_keyword(const fp3_model *m, unsigned i) {
  * whatever is still without a value is named, all of it in one message
  * (each with its declaring line), h > 0.  0 or -1. */
 int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in, float *y0) {
+  const char *cmd = a->cmd ? a->cmd : "run";
   unsigned char given[2 * FP3_MODEL_MAX_VARS] = {0};
   for (unsigned k = 0; k < m->nparam; k++)
     if (m->param_has_def[k]) {
@@ -429,7 +431,7 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
       given[m->nparam + k] = 1;
     }
   for (int i = 0; i < a->nset; i++)
-    if (apply_set(m, a->set[i], in, y0, given)) return -1;
+    if (apply_set(cmd, m, a->set[i], in, y0, given)) return -1;
   char *text = NULL;
   size_t tlen = 0;
   FILE *f = NULL;
@@ -437,7 +439,7 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
   for (unsigned k = 0; k < m->nparam + m->nstate; k++) {
     if (given[k]) continue;
     if (!f && !(f = open_memstream(&text, &tlen))) {
-      fprintf(stderr, "fp3 run: out of memory\n");
+      fprintf(stderr, "fp3 %s: out of memory\n", cmd);
       return -1;
     }
     if (!missing++) first = k;
@@ -460,12 +462,12 @@ int fp3_model_args_values(const fp3_model *m, const fp3_model_args *a, float *in
             st ? state_keyword(m, first - m->nparam) : "param",
             st ? m->state[first - m->nparam] : m->param[first]);
     fclose(f);
-    fprintf(stderr, "fp3 run: %s: no value for %s\n", m->file, text);
+    fprintf(stderr, "fp3 %s: %s: no value for %s\n", cmd, m->file, text);
     free(text);
     return -1;
   }
   if (!(in[0] > 0.0f)) {
-    fprintf(stderr, "fp3 run: --set h=%g: the step must be above 0\n", (double)in[0]);
+    fprintf(stderr, "fp3 %s: --set h=%g: the step must be above 0\n", cmd, (double)in[0]);
     return -1;
   }
   return 0;

@@ -21,6 +21,7 @@
 /* The options of run, frames and the model form of bench
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {
+  const char *cmd;     /* the command, for messages ("run", "frames", ...) */
   const char *file, *integ, *engine, *out;
   const char *program; /* run: --program FILE.s (a hand-written program)  */
   const char *scene;   /* --scene FILE                                  */

@@ -132,6 +132,7 @@ int fp3_parse_tbgen(int argc, char **argv, fp3_tbgen_args *a) {
   a->use_rtl = 1;
   a->mode = FPREF_IEEE;
   fp3_model_args *m = &a->model;
+  m->cmd = "tbgen";
   m->integ = "";
   m->engine = "iss";
   m->mode = FPREF_IEEE;

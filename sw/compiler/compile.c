@@ -1204,7 +1204,9 @@ static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char
     ref a = x->a >= 0 ? r[x->a] : (ref){0, 0}, c = x->b >= 0 ? r[x->b] : (ref){0, 0};
     switch (x->kind) {
     case FP3_ME_NUM: {
-      const char *cn = "c";
+      char num[24]; /* an unnamed number is named by its value */
+      snprintf(num, sizeof num, "%.9g", (double)fpref_float(x->bits));
+      const char *cn = num;
       for (unsigned d = 0; d < m->ndef; d++)
         if (m->def_node[d] == (int)i) cn = m->def[d];
       if (b->drop_zero && (x->bits & 0x7FFFFFFFu) == 0) {
