@@ -97,7 +97,6 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   if (a.trace.win_count < 1) fail(cmd, "an empty trace window");
   check_str(cmd, a.program, 0);
   check_str(cmd, a.trace.path, 0);
-  if (a.scene && a.file) fail(cmd, "both --model and a scene");
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
   if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0) fail(cmd, "an engine");

@@ -250,10 +250,6 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
     fprintf(stderr, "fp3 frames: --model FILE goes with --objects N (or --harbour N)\n");
     return FP3_ARGS_BAD;
   }
-  if (a->scene && a->file && fp3_scene_is_model(a->scene)) {
-    fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
-    return FP3_ARGS_BAD;
-  }
   if ((!runlike && !a->scene && !a->file) || (a->file && !a->file[0])) {
     fprintf(stderr, "fp3 %s: --model needs a file\n", cmd);
     return FP3_ARGS_BAD;

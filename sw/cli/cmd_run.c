@@ -476,6 +476,11 @@ static const char *ship_integrator(const char *model_integ) {
 
 static int run_ship_scene(const fp3_model_args *a) {
   const char *iname = a->integ_given ? a->integ : "rk4";
+  if (a->file) {
+    fprintf(stderr, "fp3 run: %s is a ship scene ('T C m v0 s0' a line): its programs are the "
+            "ship's; --model goes with a model scene or one object\n", a->scene);
+    return EXIT_USAGE;
+  }
   const fp3_integrator *ig = fp3_integrator_find(iname);
   const int compile = !a->literal && !a->program;
   if (!ig && !a->program) {
