@@ -65,6 +65,11 @@ expect 0 "usage: fp3 bench"              -- bench --help
 # a state that overflows to a non-finite value fails the run, naming it
 expect 1 "NON-FINITE: state variable v is not finite after integration" \
   -- run --engine iss --program programs/ship_rk4.s --set m=1e-30 --set C=1 --set T=1 --steps 50
+# beyond the stability bound: reported (h/tau = 2.1 > 2 for Euler), still bit-exact
+expect 0 "DIVERGED: state variable v is beyond 1000, 1000 (1 + max |initial state|), from integration 49" \
+  -- run --engine iss --program programs/ship_euler.s --set h=4.2 --steps 100
+out=$("$FP3" run --engine iss --program programs/ship_euler.s --set h=3.8 --steps 100 2>&1)
+if grep -q DIVERGED <<<"$out"; then bad "h/tau = 1.9 reported as diverged"; else ok; fi
 # no drag: an unbounded ship, finite and bit-exact
 expect 0 "PASS" -- run --engine iss --program programs/ship_euler.s --set C=0 --set h=100 --steps 10
 

@@ -519,8 +519,8 @@ done:
 }
 
 #define STAB_STEPS 20000u  /* integrations of one stability trial        */
-#define STAB_GROWTH 1e3     /* a trial is unstable when a state exceeds
-                               STAB_GROWTH (1 + max |initial state|)      */
+#define STAB_GROWTH FP3_GROWTH_BOUND /* a trial is unstable when a state
+                               exceeds STAB_GROWTH (1 + max |initial state|) */
 
 /* 1 if the golden model of c stays finite and bounded for STAB_STEPS
  * integrations of step h (the other inputs in[]). */

@@ -18,6 +18,11 @@
 #include "model.h"
 #include "traceopt.h"
 
+/* A state beyond FP3_GROWTH_BOUND (1 + max |initial state|) counts as
+ * diverged: the trials of `fp3 bench --model --stability` and the
+ * divergence `fp3 run` reports. */
+#define FP3_GROWTH_BOUND 1e3
+
 /* The options of run, frames and the model form of bench
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {

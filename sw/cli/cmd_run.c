@@ -157,6 +157,13 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
   unsigned mism_i = 0, nonfinite_i = 0;
   uint64_t mismatches = 0;
   float g[FP3_MODEL_MAX_VARS] = {0};
+  /* divergence: a state past the growth bound (fp3 bench's criterion);
+   * a position may grow without bound, so only the other states count */
+  double bound = 0.0;
+  uint32_t diverged_k = 0;
+  unsigned diverged_i = 0;
+  for (unsigned i = 0; i < ns; i++) bound = fmax(bound, fabs((double)s->y0[i]));
+  bound = FP3_GROWTH_BOUND * (1.0 + bound);
   for (unsigned i = 0; i < ns; i++) cur[i] = fpref_bits(s->y0[i]), g[i] = s->y0[i];
   fpenv_enter(a->mode, &env);
   for (uint32_t k = 1; k <= done; k++) {
@@ -168,6 +175,8 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
       if ((ob.v || k == done) && cur[i] != fpref_bits(g[i]) && !mismatches++)
         mism_k = k, mism_i = i, ggot = cur[i], gwant = fpref_bits(g[i]);
       if (!nonfinite_k && !isfinite(g[i])) nonfinite_k = k, nonfinite_i = i;
+      if (!diverged_k && m->role[i] != FP3_MR_POSITION && !(fabs((double)g[i]) <= bound))
+        diverged_k = k, diverged_i = i;
       if (k <= TABLE_ROWS) row[k - 1][i] = ob.v ? cur[i] : fpref_bits(g[i]);
     }
   }
@@ -204,6 +213,12 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
     if (nonfinite_k)
       printf("{\"object\": 0, \"integration\": %" PRIu32 ", \"variable\": \"%s\"}", nonfinite_k,
              m->state[nonfinite_i]);
+    else
+      printf("null");
+    printf(", \"diverged_from\": ");
+    if (diverged_k)
+      printf("{\"integration\": %" PRIu32 ", \"variable\": \"%s\", \"bound\": %.9g}",
+             diverged_k, m->state[diverged_i], bound);
     else
       printf("null");
     fp3_run_json_error(st.error, 0, st.fault_pc);
@@ -287,6 +302,11 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
     printf("        total %" PRIu64 " %s, %" PRIu64 " issued, %" PRIu64 " stalls\n", st.cycles,
            strcmp(a->engine, "iss") == 0 ? "instructions" : "cycles", st.issued, st.stalls);
     printf("flags: %s\n", flags);
+    if (diverged_k)
+      printf("DIVERGED: state variable %s is beyond %g, %g (1 + max |initial state|), from "
+             "integration %" PRIu32 " on (the largest stable h: fp3 bench --model %s "
+             "--stability FILE.csv)\n", m->state[diverged_i], bound, FP3_GROWTH_BOUND,
+             diverged_k, m->file);
     if (nonfinite_k)
       printf("NON-FINITE: state variable %s is not finite after integration %" PRIu32
              " (flags: %s)\n", m->state[nonfinite_i], nonfinite_k, flags);
