@@ -196,9 +196,10 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                       "--program FILE.s names a hand-written one\n");
       return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "run") == 0 && strcmp(argv[i], "--strict") == 0) {
-      fprintf(stderr, "fp3 run: --strict is gone: a state that is not finite always fails "
-                      "the run; a model's stability bound: fp3 bench --model FILE "
-                      "--stability FILE.csv\n");
+      fprintf(stderr, "fp3 run: --strict is gone: fp3 run reports a divergence of any model "
+                      "(DIVERGED, diverged_from), a state that is not finite fails the run, and "
+                      "a model's stability bound is fp3 bench --model FILE --stability "
+                      "FILE.csv\n");
       return FP3_ARGS_BAD;
     } else if (strcmp(cmd, "frames") == 0 &&
                (r = fp3_opt_count(argc, argv, &i, cmd, "--harbour", 1, MAX_MODEL_OBJECTS, "ships",

@@ -15,7 +15,7 @@
  *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
  *                                    (sw/compiler/configure.h)
  *   fp3 frames [options]             a scene frame by frame with sleeping
- *                                    objects (sw/scene/frames.h)
+ *                                    objects (sw/scene/mscene.h)
  *
  * Each subcommand is sw/cli/cmd_NAME.c: its parse step (fp3_parse_NAME,
  * cliopt.h) and its run step; this file only dispatches.

@@ -150,7 +150,7 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
 
 void fp3_state_result_free(fp3_state_result *res);
 
-/* ---- frame by frame, with rest skipping (frames.h for ships) ------------- */
+/* ---- frame by frame, with rest skipping --------------------------------- */
 
 /* A golden model that steps any object from any state: step_from() runs
  * one integration of object `obj` from state y (nstate values, at most
