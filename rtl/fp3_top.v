@@ -271,18 +271,21 @@ module fp3_top #(
   endgenerate
 
   // ---- host port -----------------------------------------------------------
+  // The scheduler's run state, status and counters (fp3_scheduler, below),
+  // which the host port reads:
   wire          running;
   wire [NL-1:0] run_l;       // RUNNING's copies, one per lane's read address (fp3_sched_loop)
   wire          done, any_error;
   wire [3:0]    error;
   wire [31:0]   fault_pc, steps_done;
   wire [63:0]   cycles, issued, stalls;
+  // ... and what the host port gives the scheduler and the lanes:
   wire          imem_we, start, clear;
   wire [AW-1:0] imem_idx;
   wire [63:0]   imem_wdata;
-  wire [31:0]   steps_q, steps_last2_q;
-  wire          steps_zero_q, steps_one_q, contexts_bad_q;
-  wire [NUM_CONTEXTS-1:0] contexts_run_q;
+  wire [31:0]   steps, steps_last2;
+  wire          steps_zero, steps_one, contexts_bad;
+  wire [NUM_CONTEXTS-1:0] contexts_run;
   wire [CW-1:0] ctx_sch, ctx_flg;   // CTX: the scheduler's copy, the flags'
   wire [NL-1:0] host_reg_we;        // a register-window write, per lane (LANE's)
   wire [XW-1:0] host_reg_idx;       // ... its index {CTX, register}
@@ -308,12 +311,12 @@ module fp3_top #(
     .imem_wdata_o   (imem_wdata),
     .start_o        (start),
     .clear_o        (clear),
-    .steps_o        (steps_q),
-    .steps_zero_o   (steps_zero_q),
-    .steps_one_o    (steps_one_q),
-    .steps_last2_o  (steps_last2_q),
-    .contexts_bad_o (contexts_bad_q),
-    .contexts_run_o (contexts_run_q),
+    .steps_o        (steps),
+    .steps_zero_o   (steps_zero),
+    .steps_one_o    (steps_one),
+    .steps_last2_o  (steps_last2),
+    .contexts_bad_o (contexts_bad),
+    .contexts_run_o (contexts_run),
     .sel_ctx_o      (ctx_sch),
     .running_i      (running),
     .done_i         (done),
@@ -332,7 +335,7 @@ module fp3_top #(
     .flags_i        (flags_ctx)
   );
 `ifndef FP3_SCHED_CHECK
-  wire unused_steps = &{1'b0, steps_q};   // (STEPS as written: the checker's)
+  wire unused_steps = &{1'b0, steps};   // (STEPS as written: the checker's)
 `endif
 
   // ---- scheduler -----------------------------------------------------------
@@ -341,9 +344,9 @@ module fp3_top #(
   wire          idle;
   wire          issue, issue_sub, issue_imm, endi, beq;
   wire [2:0]    issue_sop;                // sign group: {abs/neg/min/max, fp_sign op}
-  wire          br_taken_q;               // beq resolution (fp3_simd)
-  wire [NUM_CONTEXTS-1:0] br_q;           // ... its context, one-hot (none: no beq)
-  wire [AW-1:0] br_target_q;
+  wire          br_taken;               // beq resolution (fp3_simd)
+  wire [NUM_CONTEXTS-1:0] br;           // ... its context, one-hot (none: no beq)
+  wire [AW-1:0] br_target;
   wire [2:0]    issue_unit;
   wire [31:0]   imm;
   wire [(1<<XW)-1:0] busy;
@@ -380,11 +383,11 @@ module fp3_top #(
     .imem_wdata_i     (imem_wdata),
     .start_i          (start),
     .clear_i          (clear),
-    .steps_zero_i     (steps_zero_q),
-    .steps_one_i      (steps_one_q),
-    .steps_last2_i    (steps_last2_q),
-    .contexts_bad_i   (contexts_bad_q),
-    .contexts_run_i   (contexts_run_q),
+    .steps_zero_i     (steps_zero),
+    .steps_one_i      (steps_one),
+    .steps_last2_i    (steps_last2),
+    .contexts_bad_i   (contexts_bad),
+    .contexts_run_i   (contexts_run),
     .sel_ctx_i        (ctx_sch),
     .running_o        (running),
     .run_copy_o       (run_l),
@@ -408,9 +411,9 @@ module fp3_top #(
     .pre3_valid_i     ({divp3_valid, movp3_valid, mulp3_valid, addp3_valid}),
     .pre3_idx_i       ({divp3_idx, movp3_idx, mulp3_idx, addp3_idx}),
     .idle_i           (idle),
-    .br_i             (br_q),
-    .br_taken_i       (br_taken_q),
-    .br_target_i      (br_target_q),
+    .br_i             (br),
+    .br_taken_i       (br_taken),
+    .br_target_i      (br_target),
     .issue_o          (issue),
     .issue_ctx_o      (issue_ctx),
     .ra_o             (ra),
@@ -465,9 +468,9 @@ module fp3_top #(
     .next2_idx_i   ({divn_idx, movn_idx, muln_idx, addn_idx}),
     .wb_valid_i    ({div_valid, mov_valid, mul_valid, add_valid}),
     .wb_idx_i      ({div_idx, mov_idx, mul_idx, add_idx}),
-    .br_o          (br_q),
-    .br_taken_o    (br_taken_q),
-    .br_target_o   (br_target_q),
+    .br_o          (br),
+    .br_taken_o    (br_taken),
+    .br_target_o   (br_target),
     .run_i         (run_l),
     .host_we_i     (host_reg_we),
     .host_idx_i    (host_reg_idx),
@@ -651,8 +654,8 @@ module fp3_top #(
     .prog_word_i      (imem_wdata),
     .start_i          (start),
     .running_i        (running),
-    .contexts_run_i   (contexts_run_q),
-    .steps_i          (steps_q),
+    .contexts_run_i   (contexts_run),
+    .steps_i          (steps),
     .sel_ctx_i        (ctx_sch),
     .steps_done_sel_i (steps_done),
     .issued_i         (issued),
@@ -676,8 +679,8 @@ module fp3_top #(
     .mov_idx_i        (mov_idx),
     .div_valid_i      (div_valid),
     .div_idx_i        (div_idx),
-    .br_i             (br_q),
-    .br_taken_i       (br_taken_q)
+    .br_i             (br),
+    .br_taken_i       (br_taken)
   );
 `endif
 endmodule
