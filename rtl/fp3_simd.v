@@ -79,8 +79,9 @@
 //   host_we_i     per lane: the host's register write (fp3_host, gated by
 //                 LANE); host_idx_i {context, register}, host_wdata_i
 //   host_rdata_o  every lane's port A read of host_idx_i (lane l in
-//                 [32l +: 32]), READ_STAGES (+ BCAST for lanes 1 ..,
-//                 + BCAST output stage for lane 0) cycles after the address
+//                 [32l +: 32]), READ_STAGES + BCAST cycles after the
+//                 address (lanes 1 .. register the address, lane 0 its
+//                 answer: fp3_lane HOST_STAGES, OUT_STAGES)
 //   flags_clr_i   clear every sticky flag (the run's first cycle)
 //   flags_ctx_i   the context whose flags flags_o shows (fp3_host: CTX)
 //   flags_o       lane l's sticky flags of context flags_ctx_i in [5l +: 5],
