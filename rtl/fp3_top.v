@@ -439,11 +439,11 @@ module fp3_top #(
   wire [3:0]       lt_valid;          // the write-backs in the lanes' time (LD cycles late)
   wire [4*XW-1:0]  lt_idx;
   fp3_simd #(.NUM_CONTEXTS(NUM_CONTEXTS), .CW(CW), .NUM_LANES(NUM_LANES), .IW(IW), .AW(AW),
-              .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE), .BCAST(BC), .WB_PORTS(WB_PORTS),
-              .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .MUL_FEED(MUL_FEED),
-              .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
-              .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV),
-              .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN)) u_lanes (
+             .READ_STAGES(READ), .FLAGS_AHEAD(FMAX_PIPE), .BCAST(BC), .WB_PORTS(WB_PORTS),
+             .ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .MUL_FEED(MUL_FEED),
+             .MOV_LATENCY(MOV_LATENCY), .DIV_LATENCY(DIV_LATENCY), .ROUND(ROUND), .FTZ(FTZ),
+             .HAS_ADD(HAS_ADD), .HAS_SUB(HAS_SUB), .HAS_MUL(HAS_MUL), .HAS_DIV(HAS_DIV),
+             .HAS_SQRT(HAS_SQRT), .HAS_SIGN(HAS_SIGN)) u_lanes (
     .clk_i         (clk_i),
     .rst_i         (rst_i),
     .issue_i       (issue),
