@@ -2,7 +2,7 @@
 // (fp3_regfile: RAMs, live value table, bypass) and an arithmetic unit
 // (fp3_arith: add/sub core, mul core, move path, div/sqrt unit) of its own.
 //
-// fp3_top instantiates NUM_LANES of these side by side.  Every lane
+// fp3_simd instantiates NUM_LANES of these side by side.  Every lane
 // receives the same operation stream: the same register indices, unit,
 // immediate and write-back indices (one scheduler, one set of write-back
 // tag lines), so lane l of context c holds one object and all lanes of a
@@ -10,7 +10,7 @@
 // issue slot, fetch, decode and scoreboard are paid for once).  What a
 // lane has alone is its data: the register values, the results and their
 // exception flags.  The host writes only the lane it selects (host_we_i,
-// gated by fp3_top with LANE) and reads a lane's registers through its
+// gated by fp3_host with LANE) and reads a lane's registers through its
 // read port A.
 //
 // Cost per lane: one fp_add, one fp_mul (4 MULT18X18D on ECP5 for a
@@ -20,7 +20,7 @@
 // written without the unit and synthesize away; WB_PORTS = 1: two), plus
 // the read stages' bypass.  The register file's busy flags and live value table
 // would be identical in every lane (they see the same indices), so only
-// lane 0 has them (CTRL = 1): fp3_top uses its busy flags (busy_o,
+// lane 0 has them (CTRL = 1): fp3_simd uses its busy flags (busy_o,
 // idle_o) as the scoreboard, and lanes 1 .. (CTRL = 0) take its LVT
 // choice of each read (lvt_*_o of lane 0 into their lvt_*_i) and have no
 // flags of their own (fp3_regfile CTRL).  With more than one lane the
@@ -40,13 +40,13 @@
 // scheduler's time: the busy flags' set and clear (set_i, clr*_i: the
 // scoreboard).  OUT_STAGES registers delay the results, their flags, eq_o
 // and ra_data_o further (lane 0 is staged once less than the others, so
-// that its LVT choice reaches them through a register: fp3_top), EQ_STAGE
+// that its LVT choice reaches them through a register: fp3_simd), EQ_STAGE
 // registers the beq compare before it leaves the lane, and HOST_STAGES
 // registers the host port's inputs (lanes 1 .., which read a cycle after
 // lane 0 so that its LVT choice of the same read reaches them through that
 // register).  The cost: about 140 flip-flops per input stage, 180 per
 // output stage and 43 for the host's, and beq, the end of a run and host
-// reads a few cycles later (fp3_top).
+// reads a few cycles later (fp3_simd).
 //
 // Parameters: those of fp3_regfile (ENTRIES, XW, READ_STAGES,
 // FLAGS_AHEAD, CTRL, HOST_ALL, WB_PORTS) and fp3_arith (ADD_LATENCY, MUL_LATENCY,
@@ -285,7 +285,7 @@ module fp3_lane #(
   );
 
   // The units' own valid bits equal the shared tag lines' (same depth from
-  // the same issue); fp3_top uses the tag lines'.
+  // the same issue); fp3_simd uses the tag lines'.
   wire add_valid, mul_valid, mov_valid, div_valid;
   fp3_arith #(.ADD_LATENCY(ADD_LATENCY), .MUL_LATENCY(MUL_LATENCY), .MUL_FEED(MUL_FEED),
               .ROUND(ROUND), .FTZ(FTZ),
@@ -316,7 +316,7 @@ module fp3_lane #(
   wire unused_valid = add_valid ^ mul_valid ^ mov_valid ^ div_valid;
 
   // beq's compare in the lane, beside its operands: one wire a lane to
-  // fp3_top's branch resolution instead of both 32-bit operands (with
+  // fp3_simd's branch resolution instead of both 32-bit operands (with
   // EQ_STAGE registered, so that the wire leaves a flip-flop).
   wire eq = ra_data == rb_data;
   wire eq_s;

@@ -73,7 +73,7 @@
 //                     is kept (not granted now) (fp3_sched_queue)
 //   full_g_i [NC]     ... if the head is granted now
 //   gone_i [NC]       the head granted now (fp3_sched_issue)
-//   br_i [NC], br_taken_i, br_target_i [AW]  a beq resolved (fp3_top):
+//   br_i [NC], br_taken_i, br_target_i [AW]  a beq resolved (fp3_simd):
 //                     its context, outcome and target
 //   actx_o [CW], aword_o [64], adec_o [SCH_DW], apc_o [AW]  the word
 //                     arriving now: its context, the word, its decoded bits

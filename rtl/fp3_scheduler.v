@@ -90,7 +90,7 @@ module fp3_scheduler #(
   input  wire [63:0]                  imem_wdata_i,
   input  wire                         start_i,
   input  wire                         clear_i,
-  // STEPS and CONTEXTS, decided as the host writes them (fp3_top), so
+  // STEPS and CONTEXTS, decided as the host writes them (fp3_host), so
   // that no 32-bit compare sits between START and the run state
   input  wire                         steps_zero_i,  // STEPS == 0
   input  wire                         steps_one_i,   // STEPS == 1

@@ -324,25 +324,25 @@ module tb_fp3 #(
     if (WB_PORTS == 1) begin : g_dbg_regs
       function [31:0] reg0;
         input [31:0] r;
-        reg0 = r < NUM_REGS ? dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
+        reg0 = r < NUM_REGS ? dut.u_lanes.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
       endfunction
       function [31:0] reg_last;
         input [31:0] r;
-        reg_last = r < NUM_REGS ? dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
+        reg_last = r < NUM_REGS ? dut.u_lanes.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r] : 32'd0;
       endfunction
     end else begin : g_dbg_regs
       function [1:0] lvt;
         input [31:0] r;
-        lvt = {dut.g_lane[0].u_lane.u_regs.lvt_hi[r], dut.g_lane[0].u_lane.u_regs.lvt_lo[r]};
+        lvt = {dut.u_lanes.g_lane[0].u_lane.u_regs.lvt_hi[r], dut.u_lanes.g_lane[0].u_lane.u_regs.lvt_lo[r]};
       endfunction
       function [31:0] reg0;
         input [31:0] r;
         begin
           case (lvt(r))
-            2'd0:    reg0 = dut.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r];
-            2'd1:    reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
-            2'd2:    reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
-            default: reg0 = dut.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
+            2'd0:    reg0 = dut.u_lanes.g_lane[0].u_lane.u_regs.u_ram00.g_any.mem[r];
+            2'd1:    reg0 = dut.u_lanes.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
+            2'd2:    reg0 = dut.u_lanes.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
+            default: reg0 = dut.u_lanes.g_lane[0].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
           endcase
           if (r >= NUM_REGS) reg0 = 32'd0;
         end
@@ -351,10 +351,10 @@ module tb_fp3 #(
         input [31:0] r;
         begin
           case (lvt(r))
-            2'd0:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r];
-            2'd1:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
-            2'd2:    reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
-            default: reg_last = dut.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
+            2'd0:    reg_last = dut.u_lanes.g_lane[NL-1].u_lane.u_regs.u_ram00.g_any.mem[r];
+            2'd1:    reg_last = dut.u_lanes.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram10.g_any.mem[r];
+            2'd2:    reg_last = dut.u_lanes.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram20.g_any.mem[r];
+            default: reg_last = dut.u_lanes.g_lane[NL-1].u_lane.u_regs.g_ram_ports.u_ram30.g_any.mem[r];
           endcase
           if (r >= NUM_REGS) reg_last = 32'd0;
         end

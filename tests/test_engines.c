@@ -678,7 +678,7 @@ static void test_fmax_pipe(void **state) {
   fp3_engine_free(e);
 }
 
-/* The lanes' broadcast stages (rtl/fp3_top.v, docs/lanes.md): on the
+/* The lanes' broadcast stages (rtl/fp3_simd.v, docs/lanes.md): on the
  * lanes build (8 contexts x 4 lanes, the default latencies) a run ends
  * FP3_LANES_STAGE_CYCLES later than on the default build, and a taken beq
  * costs FP3_LANES_BEQ_CYCLES more; everything else issues in the same

@@ -24,10 +24,10 @@
 #                          div/sqrt unit's tag line alone a stage short):
 #                          the busy flag's or the div write-back's
 #                          assertion of formal/fp3_sched_check.v
-#   sched.sby:mutant_flags rtl/fp3_top.v with FP3_MUTANT_FLAGS_UNSTAGED (the
+#   sched.sby:mutant_flags rtl/fp3_simd.v with FP3_MUTANT_FLAGS_UNSTAGED (the
 #                          host's FLAGS read without the staged cycle, so
 #                          a write-back of the last cycle is missing):
-#                          flags_staged_exact in rtl/fp3_top.v
+#                          flags_staged_exact in rtl/fp3_simd.v
 #   sched.sby:mutant_wb1   rtl/fp3_top.v with FP3_MUTANT_MOV_SHORT (one
 #                          write-back port, the move path a cycle shorter
 #                          than the add/sub core: a move and an add issued
@@ -60,5 +60,5 @@ check formal/rr_arbiter.sby:mutant 'f_served_within_bound|rr_taken_onehot'
 check formal/rr_arbiter.sby:mutant_issue 'f_served_within_bound at formal/fp3_fair_wait\.v:[0-9]+$'
 check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
-check formal/sched.sby:mutant_flags 'flags_staged_exact at rtl/fp3_top\.v:[0-9]+$'
+check formal/sched.sby:mutant_flags 'flags_staged_exact at rtl/fp3_simd\.v:[0-9]+$'
 check formal/sched.sby:mutant_wb1 '(wb|in2|clr)_one_port at rtl/fp3_regfile\.v:[0-9]+$'
