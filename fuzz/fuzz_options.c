@@ -90,8 +90,8 @@ static const fp3_model *spring(void) {
 static void parse_model(const char *cmd, int argc, char **argv) {
   fp3_model_args a;
   if (fp3_parse_model(argc, argv, cmd, &a) != FP3_ARGS_RUN) return;
-  if (!a.scene && !a.file && strcmp(cmd, "run") != 0 && !a.harbour)
-    fail(cmd, "neither --model, a scene nor a harbour");
+  if (!a.scene && !a.file && strcmp(cmd, "run") != 0 && !a.harbour && !a.objects)
+    fail(cmd, "neither --model, a scene, --objects nor a harbour");
   if (a.trace.path && (a.objects || a.scene || strcmp(a.engine, "rtl") != 0))
     fail(cmd, "--trace with several objects or the ISS");
   if (a.trace.win_count < 1) fail(cmd, "an empty trace window");
