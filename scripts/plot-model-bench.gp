@@ -23,5 +23,6 @@ set xlabel 'RTL cycles to t_end (one object, cycles per integration x integratio
 set ylabel 'largest |state - GSL rk8pd| at t_end'
 floor = 1e-12
 sel(name) = (strcol(2) eq name) ? (column(10) > floor ? column(10) : floor) : NaN
-names = 'euler symeuler verlet rk2 rk4'
+# every integrator the CSV has, in its order
+names = system("tail -n +2 '".csv."' | cut -d, -f2 | awk '!seen[$0]++' | tr '\\n' ' '")
 plot for [n in names] csv skip 1 using 8:(sel(n)) with linespoints title n
