@@ -381,6 +381,11 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   }
   const double object_steps = (double)res.objects * (double)a->steps;
   const double per = (double)res.cycles / object_steps;
+  /* the share of cycles in which the adder / the multiplier took an instruction */
+  const double add_util =
+      res.cycles ? (double)res.unit_issued[FP3_UNIT_ADD] / (double)res.cycles : 0.0;
+  const double mul_util =
+      res.cycles ? (double)res.unit_issued[FP3_UNIT_MUL] / (double)res.cycles : 0.0;
   const int ok = res.mismatches == 0 && res.error == FP3_ERR_NONE && !nonfinite;
   const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
   char flags[96];
@@ -396,6 +401,8 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
            res.issued, res.stalls);
     printf(", \"cycles_first_step\": null, \"cycles_later_step\": null");
     printf(", \"cycles_per_object_step\": %.9g", per);
+    printf(", \"issued_per_object_step\": %.9g", (double)res.issued / object_steps);
+    printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
     if (res.mismatches)
       printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
@@ -451,6 +458,7 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
              max_err, sc->n - ref_fail);
     printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
            res.cycles, per, (double)res.issued / object_steps);
+    printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
     printf("flags: %s\n", flags);
     if (res.error)
       printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,

@@ -524,6 +524,7 @@ int fp3_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, s
     res->cycles += st.cycles;
     res->issued += st.issued;
     res->stalls += st.stalls;
+    for (int u = 0; u < FP3_NUM_UNITS; u++) res->unit_issued[u] += st.unit_issued[u];
     res->flags |= st.flags;
     for (unsigned c = 0; c < k; c++) {
       size_t obj = first + c;

@@ -117,6 +117,7 @@ typedef struct fp3_state_result {
                               lanes objects (engine.h slots)              */
   size_t batches;
   uint64_t cycles, issued, stalls;
+  uint64_t unit_issued[FP3_NUM_UNITS]; /* issued per unit, FP3_UNIT_*       */
   uint32_t flags;          /* sticky exception flags, all batches          */
   unsigned error;          /* first context error (enum fp3_error)         */
   size_t error_object;
