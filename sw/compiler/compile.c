@@ -1282,9 +1282,11 @@ static ref m_rk4_sum(builder *b, ref two, ref k1, ref k2, ref k3, ref k4) {
   return m_add(b, sum, k4);
 }
 
-/* rk4se, rk4secomp, rk4vs, rk4vscomp (fp3_model_step_literal). */
-static void m_build_rk4_split(builder *b, const fp3_model *m, const ref *y, ref h, int se,
-                              int comp) {
+/* The RK4 family (fp3_model_step_literal): rk4 and rk4comp (all: every
+ * state variable in the k form), rk4vs and rk4vscomp, rk4se and rk4secomp
+ * (se); comp: the updates Kahan-compensated. */
+static void m_build_rk4(builder *b, const fp3_model *m, const ref *y, ref h, int all, int se,
+                        int comp) {
   const unsigned ns = m->nstate;
   static const char *const ktag[3] = {"k1", "k2", "k3"}, *const ytag[3] = {"y2", "y3", "y4"};
   static const char *const ftag[4] = {"1", "2", "3", "4"};
@@ -1303,7 +1305,7 @@ static void m_build_rk4_split(builder *b, const fp3_model *m, const ref *y, ref 
   }
   for (unsigned i = 0; i < ns; i++) {
     ref d;
-    if (m->role[i] == FP3_MR_VELOCITY) {
+    if (all || m->role[i] == FP3_MR_VELOCITY) {
       ref k4 = m_nm(b, mul(b, h, f[3][i]), "k4", i);
       d = mul(b, sixth, m_nm(b, m_rk4_sum(b, two, k[0][i], k[1][i], k[2][i], k4), "sum", i));
     } else if (!se) { /* (h sixth) ((f1 + 2 (f2 + f3)) + f4) */
@@ -1361,7 +1363,6 @@ static void m_build_verletp(builder *b, const fp3_model *m, const ref *y, ref h)
 static int m_build(builder *b, const fp3_model *m, const char *integ) {
   const unsigned ns = m->nstate;
   ref y[MAX_STATE] = {{0, 0}}, f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}};
-  ref k1[MAX_STATE] = {{0, 0}}, k2[MAX_STATE] = {{0, 0}}, k3[MAX_STATE] = {{0, 0}};
   for (unsigned i = 0; i < ns; i++) y[i] = state(b, (int)i);
   ref h = leaf(b, NK_IN, 0, 0, "h");
   if (strcmp(integ, "euler") == 0) {
@@ -1374,50 +1375,11 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     m_f(b, m, t, f, "2");
     for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
   } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
-    const int comp = strcmp(integ, "rk4comp") == 0;
-    ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
-    ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
-    m_f(b, m, y, f, "1");
-    for (unsigned j = 0; j < ns; j++) k1[j] = m_nm(b, mul(b, h, f[j]), "k1", j);
-    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k1[j])), "y2", j);
-    m_f(b, m, t, f, "2");
-    for (unsigned j = 0; j < ns; j++) k2[j] = m_nm(b, mul(b, h, f[j]), "k2", j);
-    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, half, k2[j])), "y3", j);
-    m_f(b, m, t, f, "3");
-    for (unsigned j = 0; j < ns; j++) k3[j] = m_nm(b, mul(b, h, f[j]), "k3", j);
-    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], k3[j]), "y4", j);
-    m_f(b, m, t, f, "4");
-    for (unsigned i = 0; i < ns; i++) {
-      ref k4 = m_nm(b, mul(b, h, f[i]), "k4", i), sum;
-      if (b->fold) {
-        sum = m_add(b, m_add(b, k1[i], k4), mul(b, two, m_add(b, k2[i], k3[i])));
-      } else {
-        sum = m_add(b, k1[i], mul(b, two, k2[i]));
-        sum = m_add(b, sum, mul(b, two, k3[i]));
-        sum = m_add(b, sum, k4);
-      }
-      sum = m_nm(b, sum, "sum", i);
-      ref d = mul(b, sixth, sum);
-      if (!comp) {
-        b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
-        continue;
-      }
-      /* y += d, Kahan-compensated: the carried c holds -(what the
-       * rounding of the sums has lost so far) (integrators.c rk4comp) */
-      ref cst = state(b, (int)(ns + i)), nc = cst, ny = y[i];
-      nc.neg ^= 1;
-      ny.neg ^= 1;
-      ref yk = m_nm(b, m_add(b, d, nc), "yk", i);
-      ref t_ = m_nm(b, m_add(b, y[i], yk), "n", i);
-      ref z = m_nm(b, m_add(b, t_, ny), "z", i);
-      yk.neg ^= 1;
-      b->out[ns + i] = m_add(b, z, yk);
-      b->out[i] = t_;
-    }
+    m_build_rk4(b, m, y, h, 1, 0, strcmp(integ, "rk4comp") == 0);
   } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
     if (!fp3_model_integrator_known(integ)) return -1;
     if (!fp3_model_split(m)) return -2;
-    m_build_rk4_split(b, m, y, h, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL);
+    m_build_rk4(b, m, y, h, 0, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL);
   } else if (strcmp(integ, "verletp") == 0) {
     if (!fp3_model_split(m)) return -2;
     if (!fp3_model_integrator_applies(m, integ)) return -4;

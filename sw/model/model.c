@@ -818,9 +818,12 @@ static void kahan_add(float *y, float *c, float d) {
   *y = t;
 }
 
-/* rk4se, rk4secomp, rk4vs, rk4vscomp (model.h): the RK4 stages of the
- * velocities (se: positions held), then the positions. */
-static void step_rk4_split(const fp3_model *m, int se, int comp, const float *in, float *y) {
+/* The RK4 family (model.h): rk4 and rk4comp take every state variable in
+ * the k form (all); rk4vs, rk4vscomp the velocities in it and each
+ * position by (h sixth) (f1 + 2 (f2 + f3) + f4); rk4se, rk4secomp (se) the
+ * velocities with the positions held, then the positions by the new
+ * velocities.  comp: every update Kahan-compensated. */
+static void step_rk4(const fp3_model *m, int all, int se, int comp, const float *in, float *y) {
   const unsigned ns = m->nstate;
   const float h = in[0];
   float val[FP3_MODEL_MAX_NODES];
@@ -836,7 +839,7 @@ static void step_rk4_split(const fp3_model *m, int se, int comp, const float *in
   }
   for (unsigned i = 0; i < ns; i++) {
     float d;
-    if (m->role[i] == FP3_MR_VELOCITY) {
+    if (all || m->role[i] == FP3_MR_VELOCITY) {
       const float k4 = h * f[3][i];
       d = 0.16666667f * (((k[0][i] + 2.0f * k[1][i]) + 2.0f * k[2][i]) + k4);
     } else if (!se) { /* the s-stages of RK4 on x' = f: h/6 (f1 + 2 (f2 + f3) + f4) */
@@ -887,7 +890,6 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
   const float h = in[0];
   float val[FP3_MODEL_MAX_NODES];
   float f[FP3_MODEL_MAX_VARS] = {0}, t[FP3_MODEL_MAX_VARS] = {0};
-  float k1[FP3_MODEL_MAX_VARS], k2[FP3_MODEL_MAX_VARS], k3[FP3_MODEL_MAX_VARS];
   if (strcmp(integ, "euler") == 0) {
     fp3_model_eval_f(m, in, y, f, val);
     for (unsigned i = 0; i < ns; i++) y[i] = y[i] + h * f[i];
@@ -898,31 +900,7 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
     fp3_model_eval_f(m, in, t, f, val);
     for (unsigned i = 0; i < ns; i++) y[i] = y[i] + h * f[i];
   } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
-    const int comp = strcmp(integ, "rk4comp") == 0;
-    fp3_model_eval_f(m, in, y, f, val);
-    for (unsigned j = 0; j < ns; j++) k1[j] = h * f[j];
-    for (unsigned j = 0; j < ns; j++) t[j] = y[j] + 0.5f * k1[j];
-    fp3_model_eval_f(m, in, t, f, val);
-    for (unsigned j = 0; j < ns; j++) k2[j] = h * f[j];
-    for (unsigned j = 0; j < ns; j++) t[j] = y[j] + 0.5f * k2[j];
-    fp3_model_eval_f(m, in, t, f, val);
-    for (unsigned j = 0; j < ns; j++) k3[j] = h * f[j];
-    for (unsigned j = 0; j < ns; j++) t[j] = y[j] + k3[j];
-    fp3_model_eval_f(m, in, t, f, val);
-    for (unsigned i = 0; i < ns; i++) {
-      const float k4 = h * f[i];
-      const float d = 0.16666667f * (((k1[i] + 2.0f * k2[i]) + 2.0f * k3[i]) + k4);
-      if (!comp) {
-        y[i] = y[i] + d;
-        continue;
-      }
-      float *c = &y[ns + i]; /* Kahan: -(what the sums have lost so far) */
-      const float yk = d - *c;
-      const float t_ = y[i] + yk;
-      const float z = t_ - y[i];
-      *c = z - yk;
-      y[i] = t_;
-    }
+    step_rk4(m, 1, 0, strcmp(integ, "rk4comp") == 0, in, y);
   } else if (strcmp(integ, "symeuler") == 0 && fp3_model_split(m)) {
     fp3_model_eval_f(m, in, y, f, val);
     for (unsigned i = 0; i < ns; i++)
@@ -932,7 +910,7 @@ int fp3_model_step_literal(const fp3_model *m, const char *integ, const float *i
       if (m->role[i] == FP3_MR_POSITION) y[i] = y[i] + h * f[i];
   } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
     if (!fp3_model_integrator_applies(m, integ)) return -1;
-    step_rk4_split(m, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL, in, y);
+    step_rk4(m, 0, strncmp(integ, "rk4se", 5) == 0, strstr(integ, "comp") != NULL, in, y);
   } else if (strcmp(integ, "verletp") == 0) {
     if (!fp3_model_integrator_applies(m, integ)) return -1;
     step_verletp(m, in, y);
