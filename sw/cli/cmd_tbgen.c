@@ -21,7 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "asm.h"
 #include "cliopt.h"
@@ -35,6 +34,7 @@
 #include "fpref.h"
 #include "image.h"
 #include "model.h"
+#include "runsetup.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -87,13 +87,6 @@ static int make_dirs(const char *dir) {
   }
   if (mkdir(path, 0777) != 0 && errno != EEXIST) return -1;
   return 0;
-}
-
-/* 1 if paths a and b name the same file. */
-static int same_file(const char *a, const char *b) {
-  struct stat sa, sb;
-  if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return strcmp(a, b) == 0;
-  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 /* ---- writing the files --------------------------------------------------- */
@@ -181,10 +174,7 @@ int fp3_parse_tbgen(int argc, char **argv, fp3_tbgen_args *a) {
 /* ---- the program on its model ------------------------------------------- */
 
 typedef struct tbgen_setup {
-  fp3_image img;
-  fp3_model *m;
-  fp3_compiled *c;
-  float in[FP3_MODEL_MAX_VARS], y0[FP3_MODEL_MAX_VARS];
+  fp3_run_setup r;           /* the program, its model, the values         */
   uint32_t init[NREGS];      /* the registers before the run            */
   unsigned sreg[FP3_MODEL_MAX_VARS]; /* the state variables' registers  */
 } tbgen_setup;
@@ -195,42 +185,24 @@ typedef struct tbgen_setup {
 static int setup(const fp3_tbgen_args *a, tbgen_setup *s) {
   char msg[512];
   char *errs = NULL;
-  fp3_image_init(&s->img);
-  if (fp3_asm_file(a->in, &s->img, &errs) != 0) {
+  fp3_image_init(&s->r.img);
+  if (fp3_asm_file(a->in, &s->r.img, &errs) != 0) {
     fp3_print_asm_errors(errs);
     free(errs);
     return EXIT_USAGE;
   }
   free(errs);
-  const char *mp = a->model.file ? a->model.file : s->img.model;
-  if (!mp[0]) {
+  if (!a->model.file && !s->r.img.model[0]) { /* no fallback to the ship: say which model */
     fprintf(stderr, "fp3 tbgen: %s has no `.model \"FILE.fp3m\"` line: give --model FILE.fp3m "
             "(the ship: --model models/ship.fp3m)\n", a->in);
     return EXIT_USAGE;
   }
-  if (!(s->m = malloc(sizeof *s->m))) {
-    fprintf(stderr, "fp3 tbgen: out of memory\n");
-    return EXIT_FAIL;
-  }
-  if (fp3_model_load(mp, s->m, msg, sizeof msg)) {
-    if (mp == s->img.model)
-      fprintf(stderr, "fp3 tbgen: %s: its .model line names %s: %s (--model FILE names the "
-              "model)\n", a->in, mp, msg);
-    else
-      fprintf(stderr, "fp3 tbgen: %s\n", msg);
-    return EXIT_USAGE;
-  }
-  /* a program's .model must be the model of the run, when it is there */
-  if (s->img.model[0] && mp != s->img.model && access(s->img.model, R_OK) == 0 &&
-      !same_file(s->img.model, mp)) {
-    fprintf(stderr, "fp3 tbgen: %s is a program of %s (its .model line), not of %s\n", a->in,
-            s->img.model, mp);
-    return EXIT_USAGE;
-  }
-  if (fp3_model_args_values(s->m, &a->model, s->in, s->y0)) return EXIT_USAGE;
+  s->r.program = a->in;
+  int rc = fp3_run_setup_model(&a->model, &s->r, "tbgen");
+  if (rc) return rc;
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
-  if (fp3_compile_bind(s->m, &s->img, a->in, &o, &s->c, msg, sizeof msg)) {
+  if (fp3_compile_bind(s->r.m, &s->r.img, a->in, &o, &s->r.c, msg, sizeof msg)) {
     fprintf(stderr, "fp3 tbgen: %s\n", msg);
     return EXIT_USAGE;
   }
@@ -238,7 +210,7 @@ static int setup(const fp3_tbgen_args *a, tbgen_setup *s) {
   uint32_t val[4 * FP3_MODEL_MAX_VARS];
   fpenv_saved env;
   if (fpenv_enter(a->mode, &env)) return EXIT_USAGE; /* checked by the parse */
-  size_t nw = fp3_compiled_model_start(s->c, s->in, s->y0, reg, val, 4 * FP3_MODEL_MAX_VARS);
+  size_t nw = fp3_compiled_model_start(s->r.c, s->r.in, s->r.y0, reg, val, 4 * FP3_MODEL_MAX_VARS);
   fpenv_leave(&env);
   for (size_t w = 0; w < nw; w++) {
     if (reg[w] >= NREGS) {
@@ -248,11 +220,11 @@ static int setup(const fp3_tbgen_args *a, tbgen_setup *s) {
     }
     s->init[reg[w]] = val[w];
   }
-  for (unsigned i = 0; i < s->m->nstate; i++) {
-    s->sreg[i] = fp3_compiled_state_reg(s->c, i);
+  for (unsigned i = 0; i < s->r.m->nstate; i++) {
+    s->sreg[i] = fp3_compiled_state_reg(s->r.c, i);
     if (s->sreg[i] >= NREGS) {
       fprintf(stderr, "fp3 tbgen: %s: state variable %s is in r%u; the testbench's build has "
-              "%d registers\n", a->in, s->m->state[i], s->sreg[i], NREGS);
+              "%d registers\n", a->in, s->r.m->state[i], s->sreg[i], NREGS);
       return EXIT_USAGE;
     }
   }
@@ -265,7 +237,7 @@ static int setup(const fp3_tbgen_args *a, tbgen_setup *s) {
  * state variable written in each integration. */
 static int run_iss(const fp3_tbgen_args *a, const tbgen_setup *s, fp3_state_obs *ob,
                    fp3_status *st, uint32_t *final_regs) {
-  const fp3_image *img = fp3_compiled_image(s->c);
+  const fp3_image *img = fp3_compiled_image(s->r.c);
   memset(st, 0, sizeof *st);
   fp3_engine *iss = fp3_engine_iss_new_mode(a->mode);
   int erc = iss ? fp3_engine_load(iss, img->words, img->n) : -1;
@@ -287,23 +259,23 @@ static int run_iss(const fp3_tbgen_args *a, const tbgen_setup *s, fp3_state_obs 
  * first two.  0, or -1 with the first difference on stderr. */
 static int check_golden(const fp3_tbgen_args *a, tbgen_setup *s, const fp3_state_obs *ob,
                         uint32_t ncheck, uint32_t (*exp)[2]) {
-  const fp3_model *m = s->m;
+  const fp3_model *m = s->r.m;
   const unsigned ns = m->nstate;
   uint32_t cur[FP3_MODEL_MAX_VARS];
   float g[FP3_MODEL_MAX_VARS];
-  for (unsigned i = 0; i < ns; i++) cur[i] = s->init[s->sreg[i]], g[i] = s->y0[i];
+  for (unsigned i = 0; i < ns; i++) cur[i] = s->init[s->sreg[i]], g[i] = s->r.y0[i];
   fpenv_saved env;
   fpenv_enter(a->mode, &env);
   int rc = 0;
   for (uint32_t k = 1; k <= ncheck && rc == 0; k++) {
-    fp3_compiled_model_step(s->c, g);
+    fp3_compiled_model_step(s->r.c, g);
     for (unsigned i = 0; i < ns; i++) {
       size_t q = (size_t)(k - 1) * ns + i;
       if (ob->seen[q]) cur[i] = ob->v[q];
       if (cur[i] != fpref_bits(g[i]) && rc == 0) {
         fprintf(stderr, "fp3 tbgen: %s: the ISS disagrees with the golden model (.integrator "
                 "%s, model %s): after integration %" PRIu32 " %s = 0x%08" PRIx32 " (%.9g), "
-                "golden 0x%08" PRIx32 " (%.9g); nothing written\n", a->in, s->img.integrator,
+                "golden 0x%08" PRIx32 " (%.9g); nothing written\n", a->in, s->r.img.integrator,
                 m->file, k, m->state[i], cur[i], (double)fpref_float(cur[i]), fpref_bits(g[i]),
                 (double)g[i]);
         rc = -1;
@@ -320,7 +292,7 @@ static int check_golden(const fp3_tbgen_args *a, tbgen_setup *s, const fp3_state
  * *cycles, *stalls. */
 static void run_rtl(const fp3_tbgen_args *a, const tbgen_setup *s, uint32_t *lat,
                     uint32_t *cycles, uint32_t *stalls) {
-  const fp3_image *img = fp3_compiled_image(s->c);
+  const fp3_image *img = fp3_compiled_image(s->r.c);
   *lat = *cycles = *stalls = 0;
   fp3_engine *rtl = fp3_engine_rtl_new_mode(a->mode, NULL);
   fp3_status rst;
@@ -345,8 +317,8 @@ static int write_files(const fp3_tbgen_args *a, const tbgen_setup *s, const fp3_
                        const uint32_t *final_regs, uint32_t ncheck, uint32_t (*exp)[2],
                        const uint32_t *rtl) {
   const char *in = a->in, *dir = a->dir;
-  const fp3_model *m = s->m;
-  const fp3_image *img = fp3_compiled_image(s->c);
+  const fp3_model *m = s->r.m;
+  const fp3_image *img = fp3_compiled_image(s->r.c);
   const int two = m->nstate > 1;
   char msg[512], path[4200];
   if (make_dirs(dir) != 0) {
@@ -362,11 +334,11 @@ static int write_files(const fp3_tbgen_args *a, const tbgen_setup *s, const fp3_
   FILE *f = open_out(dir, "init.hex", path, sizeof path);
   if (!f) return -1;
   fprintf(f, "// init.hex -- registers r0..r%d before the run (fp3 tbgen %s)\n", NREGS - 1, in);
-  fprintf(f, "// model %s (%s), .integrator %s:", m->name, m->file, s->img.integrator);
+  fprintf(f, "// model %s (%s), .integrator %s:", m->name, m->file, s->r.img.integrator);
   for (unsigned k = 0; k < m->nparam; k++)
-    fprintf(f, " %s=%.9g", m->param[k], (double)s->in[k]);
+    fprintf(f, " %s=%.9g", m->param[k], (double)s->r.in[k]);
   for (unsigned k = 0; k < m->nstate; k++)
-    fprintf(f, " %s0=%.9g", m->state[k], (double)s->y0[k]);
+    fprintf(f, " %s0=%.9g", m->state[k], (double)s->r.y0[k]);
   fprintf(f, "\n");
   for (unsigned r = 0; r < NREGS; r++) fprintf(f, "%08" PRIx32 "  // r%u\n", s->init[r], r);
   if (close_out(f, path)) return -1;
@@ -450,7 +422,7 @@ static int run_tbgen(const fp3_tbgen_args *a) {
   int rc = setup(a, s);
   if (rc) goto out;
   rc = EXIT_FAIL;
-  const unsigned ns = s->m->nstate;
+  const unsigned ns = s->r.m->nstate;
   ob.nstate = ns;
   ob.steps = a->steps;
   for (unsigned i = 0; i < ns; i++) ob.reg[i] = s->sreg[i];
@@ -471,8 +443,8 @@ static int run_tbgen(const fp3_tbgen_args *a) {
   if (write_files(a, s, &st, final_regs, ncheck, exp, rtl)) goto out;
   printf("fp3 tbgen: %s -> %s/{program,init,run,expected}.hex: %zu words, model %s, "
          "%" PRIu32 " integrations, %" PRIu32 " checked (%s%s%s)", a->in, a->dir,
-         fp3_compiled_image(s->c)->n, s->m->name, a->steps, ncheck, s->m->state[0],
-         ns > 1 ? ", " : "", ns > 1 ? s->m->state[1] : "");
+         fp3_compiled_image(s->r.c)->n, s->r.m->name, a->steps, ncheck, s->r.m->state[0],
+         ns > 1 ? ", " : "", ns > 1 ? s->r.m->state[1] : "");
   if (rtl[0]) printf(", Verilator %" PRIu32 " cycles", rtl[1]);
   printf("\n");
   rc = 0;
@@ -480,8 +452,7 @@ out:
   free(ob.v);
   free(ob.seen);
   free(exp);
-  fp3_compiled_free(s->c);
-  free(s->m);
+  fp3_run_setup_free(&s->r);
   free(s);
   return rc;
 }
