@@ -174,10 +174,7 @@ int fp3_cmd_frames(int argc, char **argv) {
   fp3_image_init(&s.img);
   int rc = fp3_run_setup_program(&a, &s, "frames", DEFAULT_PROGRAM);
   if (!rc) rc = fp3_run_setup_model(&a, &s, "frames");
-  if (!rc && !s.many) { /* --model FILE alone: fp3_parse_model asks for objects */
-    fprintf(stderr, "fp3 frames: a scene, --harbour N or --objects N\n");
-    rc = EXIT_USAGE;
-  }
+  /* fp3_parse_model leaves frames a scene, --objects or a harbour: many objects */
   if (!rc) rc = fp3_run_setup_engine(&a, &s, "frames");
   if (!rc) rc = run_frames(&a, &s);
   fp3_run_setup_free(&s);

@@ -121,14 +121,14 @@ int fp3_run_setup_model(const fp3_model_args *a, fp3_run_setup *s, const char *c
     fp3_find_shipped(FP3_DEFAULT_MODEL, s->model_path, sizeof s->model_path);
     mp = s->model_path;
   }
-  if (a->scene && a->file && fp3_scene_is_model(a->scene)) {
+  const int model_scene = a->scene && fp3_scene_is_model(a->scene); /* else a ship scene */
+  if (model_scene && a->file) {
     fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
     return EXIT_USAGE;
   }
   if (a->scene || a->harbour) {
-    int bad = a->scene && fp3_scene_is_model(a->scene)
-                  ? fp3_mscene_read(a->scene, &s->sc, msg, sizeof msg)
-                  : ship_scene(a, mp, &s->sc, msg, sizeof msg);
+    int bad = model_scene ? fp3_mscene_read(a->scene, &s->sc, msg, sizeof msg)
+                          : ship_scene(a, mp, &s->sc, msg, sizeof msg);
     if (bad) {
       fprintf(stderr, "fp3 %s: %s\n", cmd, msg);
       return bad < 0 ? EXIT_USAGE : EXIT_FAIL;
