@@ -337,17 +337,16 @@ static void do_binding(asm_state *st, int is_in, char **ops, int nops,
               dir, nops);
     return;
   }
-  const char *name = ops[0];
-  if (!is_ident(name[0] == '-' && is_in ? name + 1 : name) || strchr(name, '.')) {
-    add_error(st, line, "bad %s name '%s': a model's param, state variable (NAME0: its "
-              "initial value) or parameter-only let%s", dir, name,
-              is_in ? ", '-' before it for the negated value" : "");
+  char why[200];
+  unsigned reg;
+  /* a bad name is reported before the register (fp3_image_bind's words) */
+  if (!fp3_image_binding_name_ok(is_in, ops[0]) &&
+      fp3_image_bind(st->img, is_in, ops[0], 0, line, why, sizeof why)) {
+    add_error(st, line, "%s", why);
     return;
   }
-  unsigned reg;
   if (parse_reg(st, ops[1], line, &reg)) return;
-  char why[160];
-  if (fp3_image_bind(st->img, is_in, name, (int)reg, line, why, sizeof why))
+  if (fp3_image_bind(st->img, is_in, ops[0], (int)reg, line, why, sizeof why))
     add_error(st, line, "%s", why);
 }
 

@@ -48,9 +48,22 @@ int fp3_out_lookup(const char *name) {
   return -1;
 }
 
+int fp3_image_binding_name_ok(int is_in, const char *name) {
+  const char *id = is_in && name[0] == '-' ? name + 1 : name;
+  int ok = isalpha((unsigned char)id[0]) || id[0] == '_';
+  for (const char *q = id; ok && *q; q++) ok = isalnum((unsigned char)*q) || *q == '_';
+  return ok;
+}
+
 int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int line,
                    char *why, size_t n) {
   const char *dir = is_in ? ".in" : ".out";
+  if (!fp3_image_binding_name_ok(is_in, name)) {
+    snprintf(why, n, "bad %s name '%s': a model's param, state variable (NAME0: its initial "
+             "value) or parameter-only let%s", dir, name,
+             is_in ? ", '-' before it for the negated value" : "");
+    return -1;
+  }
   fp3_binding *list = is_in ? img->bind_in : img->bind_out;
   unsigned *count = is_in ? &img->nbind_in : &img->nbind_out;
   if (strlen(name) >= FP3_BIND_NAME_LEN) {
@@ -320,13 +333,6 @@ static int read_comment(const char *c, fp3_image *img, int *word_line,
     int r;
     if (k != 3 || parse_reg_token(reg, &r)) {
       snprintf(why, n, "malformed binding comment '%s'", c);
-      return -1;
-    }
-    const char *id = name[0] == '-' ? name + 1 : name;
-    int ok = (isalpha((unsigned char)id[0]) || id[0] == '_') && !(name[0] == '-' && is_out);
-    for (const char *q = id; ok && *q; q++) ok = isalnum((unsigned char)*q) || *q == '_';
-    if (!ok) {
-      snprintf(why, n, "bad %s name '%s'", kind, name);
       return -1;
     }
     return fp3_image_bind(img, is_in, name, r, 0, why, n);

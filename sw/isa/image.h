@@ -98,9 +98,14 @@ typedef struct fp3_image {
                           literal golden model the program computes, or "" */
 } fp3_image;
 
+/* 1 if name is a binding's name: an identifier ([A-Za-z_][A-Za-z0-9_]*),
+ * an input's (is_in) also with a leading '-'; else 0. */
+int fp3_image_binding_name_ok(int is_in, const char *name);
+
 /* Record binding `name` -> reg (is_in: an input, else a result) in both
- * forms.  0, or -1 with the reason in why: a name given twice, a register
- * bound twice on the same side, more than FP3_MAX_BINDINGS. */
+ * forms.  0, or -1 with the reason in why: a name that is none
+ * (fp3_image_binding_name_ok), a name given twice, a register bound twice
+ * on the same side, more than FP3_MAX_BINDINGS. */
 int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int line,
                    char *why, size_t n);
 
