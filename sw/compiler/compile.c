@@ -1191,10 +1191,186 @@ static ref m_div(builder *b, ref x, ref y) {
   return r;
 }
 
-/* The model's derivatives at state y (refs): f[i] for each state. */
-static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char *tag) {
+/* ---- the affine fold ------------------------------------------------------ *
+ *
+ * A derivative that is affine in the state with loop-invariant
+ * coefficients, f_i(y) = c_0 + sum_s c_s y_s (the ship's (T - C v) minv =
+ * T minv - (C minv) v, a spring's -(k x + c v)/m), is multiplied by the
+ * step as hm f_i = (hm c_0) + sum_s (hm c_s) y_s: the host computes each
+ * product hm c in binary32 (RNE) once per object, and the loop keeps one
+ * mul per state term and one add per term more, 2 instructions for the
+ * ship instead of 4.  A factor common to every term (the ship's minv) is
+ * kept apart and multiplied into the step first, (hm minv) T: the ship's
+ * hmT = (h minv) T and hmC = (h minv) C of Bourg's folded form.  A
+ * different rounding sequence from the literal program (like every fold):
+ * the program's own IR is its golden model. */
+
+/* An affine form sc (c0 + sum_s c[s] y_s) (n = -1: absent; c: a zero
+ * term, sc: 1). */
+typedef struct lin {
+  int ok;              /* 1: affine in the state, invariant coefficients */
+  ref sc;
+  ref c0;
+  ref c[MAX_STATE];
+} lin;
+
+static int lin_has(ref r) { return r.n >= 0; }
+
+static void lin_clear(lin *l, unsigned ns) {
+  l->ok = 1;
+  l->sc = l->c0 = (ref){-1, 0};
+  for (unsigned s = 0; s < ns; s++) l->c[s] = (ref){-1, 0};
+}
+
+/* r as a coefficient: absent when it is the removed zero term. */
+static ref lin_coef(const builder *b, ref r) { return is_zero(b, r) ? (ref){-1, 0} : r; }
+
+static ref lin_sum(builder *b, ref x, ref y) {
+  if (!lin_has(x)) return y;
+  if (!lin_has(y)) return x;
+  return lin_coef(b, m_add(b, x, y));
+}
+
+/* x * f (div = 0) or x / f (div = 1) for an invariant f. */
+static ref lin_scale(builder *b, ref x, ref f, int div) {
+  if (!lin_has(x)) return x;
+  return lin_coef(b, div ? m_div(b, x, f) : mul(b, f, x));
+}
+
+/* The common factor multiplied into each coefficient. */
+static void lin_unscale(builder *b, lin *l, unsigned ns) {
+  if (!lin_has(l->sc)) return;
+  l->c0 = lin_scale(b, l->c0, l->sc, 0);
+  for (unsigned s = 0; s < ns; s++) l->c[s] = lin_scale(b, l->c[s], l->sc, 0);
+  l->sc = (ref){-1, 0};
+}
+
+static int lin_invariant(const lin *l, unsigned ns) {
+  for (unsigned s = 0; s < ns; s++)
+    if (lin_has(l->c[s])) return 0;
+  return 1;
+}
+
+/* The affine form of model node i (operands' forms in L) whose value is
+ * ri; not affine: ok = 0. */
+static void lin_node(builder *b, const fp3_model *m, lin *L, unsigned i, ref ri) {
+  const unsigned ns = m->nstate;
+  const fp3_mexpr *x = &m->node[i];
+  lin *l = &L[i];
+  lin_clear(l, ns);
+  if (b->nd[ri.n].inv) { /* constants, params, lets of params */
+    l->c0 = lin_coef(b, ri);
+    return;
+  }
+  const lin *a = x->a >= 0 ? &L[x->a] : NULL, *c = x->b >= 0 ? &L[x->b] : NULL;
+  l->ok = 0;
+  switch (x->kind) {
+  case FP3_ME_STATE:
+    l->ok = 1;
+    l->c[x->id] = konst(b, 1.0f, "one");
+    break;
+  case FP3_ME_ADD:
+  case FP3_ME_SUB:
+  case FP3_ME_NEG:
+    if (!a->ok || (c && !c->ok)) break;
+    *l = *a;
+    if (x->kind == FP3_ME_NEG) {
+      l->c0.neg ^= 1;
+      for (unsigned s = 0; s < ns; s++) l->c[s].neg ^= 1;
+      break;
+    }
+    lin e_ = *c;
+    if (!lin_has(l->sc) || !lin_has(e_.sc) || l->sc.n != e_.sc.n || l->sc.neg != e_.sc.neg) {
+      lin_unscale(b, l, ns); /* a factor common to both stays apart */
+      lin_unscale(b, &e_, ns);
+    }
+    for (unsigned s = 0; s <= ns; s++) {
+      ref *d = s < ns ? &l->c[s] : &l->c0;
+      ref e = s < ns ? e_.c[s] : e_.c0;
+      e.neg ^= x->kind == FP3_ME_SUB;
+      *d = lin_sum(b, *d, e);
+    }
+    l->ok = 1;
+    break;
+  case FP3_ME_MUL:
+  case FP3_ME_DIV: {
+    const lin *v = a, *f = c; /* affine v times (or over) invariant f */
+    if (x->kind == FP3_ME_MUL && a->ok && lin_invariant(a, ns)) v = c, f = a;
+    if (!v->ok || !f->ok || !lin_invariant(f, ns)) break;
+    if (!lin_has(f->c0)) { /* a removed zero factor */
+      if (x->kind == FP3_ME_DIV) break;
+      l->ok = 1;
+      break;
+    }
+    *l = *v;
+    if (x->kind == FP3_ME_MUL) {
+      l->sc = lin_has(l->sc) ? mul(b, l->sc, f->c0) : f->c0;
+      break;
+    }
+    lin_unscale(b, l, ns);
+    l->c0 = lin_scale(b, l->c0, f->c0, 1);
+    for (unsigned s = 0; s < ns; s++) l->c[s] = lin_scale(b, l->c[s], f->c0, 1);
+    break;
+  }
+  default: break; /* sqrt, abs, min, max of the state: not affine */
+  }
+}
+
+/* Operations of the loop (non-invariant) under node i, each once. */
+static unsigned loop_ops(const builder *b, int i, unsigned char *seen) {
+  const node *x = &b->nd[i];
+  if (seen[i] || x->inv || !op_kind(x->kind)) return 0;
+  seen[i] = 1;
+  return 1 + loop_ops(b, x->a, seen) + (x->b >= 0 ? loop_ops(b, x->b, seen) : 0);
+}
+
+/* A loop-invariant product the host computes (bound like an input). */
+static ref host_value(builder *b, ref r, const char *pre, const char *fs, const char *of) {
+  node *x = &b->nd[r.n];
+  if (op_kind(x->kind) && x->inv) {
+    x->host = 1;
+    if (!x->name[0]) snprintf(x->name, sizeof x->name, "%.3s%.12s_%.12s", pre, fs, of);
+  }
+  return r;
+}
+
+/* hm * f for state variable i's derivative f at the stage y: the affine
+ * form (L, when given, with b->fold) when it takes fewer instructions
+ * than the expression, else hm f. */
+static ref m_hf(builder *b, ref hm, ref f, const lin *L, const ref *y, unsigned i,
+                const char *pre) {
+  if (!L || !b->fold || !L->ok || b->err) return mul(b, hm, f);
+  const unsigned ns = b->model->nstate;
+  unsigned terms = lin_has(L->c0), muls = 0;
+  for (unsigned s = 0; s < ns; s++) muls += lin_has(L->c[s]);
+  terms += muls;
+  unsigned char *seen = calloc((size_t)b->nn, 1);
+  if (!seen) {
+    b->err = 1;
+    return mul(b, hm, f);
+  }
+  const unsigned expr = loop_ops(b, f.n, seen) + 1;
+  free(seen);
+  if (terms == 0 || muls + terms - 1 >= expr) return mul(b, hm, f);
+  const char *fs = b->st_name[i];
+  if (lin_has(L->sc)) hm = mul(b, hm, L->sc);
+  ref acc = {-1, 0};
+  for (unsigned s = 0; s < ns; s++)
+    if (lin_has(L->c[s]))
+      acc = lin_sum(b, acc, mul(b, host_value(b, mul(b, hm, L->c[s]), pre, fs, b->st_name[s]),
+                                y[s]));
+  if (lin_has(L->c0)) acc = lin_sum(b, acc, host_value(b, mul(b, hm, L->c0), pre, fs, "0"));
+  return acc;
+}
+
+/* The model's derivatives at state y (refs): f[i] for each state, and
+ * with L (b->fold) the affine form of each derivative in L[i]. */
+static void m_fl(builder *b, const fp3_model *m, const ref *y, ref *f, lin *L, const char *tag) {
   ref *r = calloc(m->nn ? m->nn : 1, sizeof *r);
-  if (!r) {
+  lin *nl = L && b->fold ? calloc(m->nn ? m->nn : 1, sizeof *nl) : NULL;
+  if (!r || (L && b->fold && !nl)) {
+    free(r);
+    free(nl);
     b->err = 1;
     return;
   }
@@ -1241,14 +1417,24 @@ static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char
     }
     for (unsigned d = 0; d < m->ndef; d++)
       if (m->def_is_let[d] && m->def_node[d] == (int)i) nm(b, r[i], m->def[d]);
+    if (nl) lin_node(b, m, nl, i, r[i]);
   }
   for (unsigned i = 0; i < m->nstate && !b->err; i++) {
     f[i] = r[m->deriv[i]];
     char s_[FP3_MODEL_NAME_LEN];
     snprintf(s_, sizeof s_, "f%.2s_%.24s", tag, m->state[i]);
     nm(b, f[i], s_);
+    if (L) {
+      if (nl) L[i] = nl[m->deriv[i]];
+      else L[i].ok = 0;
+    }
   }
   free(r);
+  free(nl);
+}
+
+static void m_f(builder *b, const fp3_model *m, const ref *y, ref *f, const char *tag) {
+  m_fl(b, m, y, f, NULL, tag);
 }
 
 /* tag_state: "k1_x" etc. for the comments. */
@@ -1291,22 +1477,24 @@ static void m_build_rk4(builder *b, const fp3_model *m, const ref *y, ref h, int
   static const char *const ktag[3] = {"k1", "k2", "k3"}, *const ytag[3] = {"y2", "y3", "y4"};
   static const char *const ftag[4] = {"1", "2", "3", "4"};
   ref f[4][MAX_STATE], k[3][MAX_STATE], t[MAX_STATE];
+  lin L[MAX_STATE]; /* the affine forms at the latest stage (y, then t) */
   ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
   ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
-  m_f(b, m, y, f[0], ftag[0]);
+  m_fl(b, m, y, f[0], L, ftag[0]);
   for (unsigned st = 0; st < 3; st++) {
-    for (unsigned j = 0; j < ns; j++) k[st][j] = m_nm(b, mul(b, h, f[st][j]), ktag[st], j);
+    for (unsigned j = 0; j < ns; j++)
+      k[st][j] = m_nm(b, m_hf(b, h, f[st][j], &L[j], st ? t : y, j, "h"), ktag[st], j);
     for (unsigned j = 0; j < ns; j++)
       t[j] = se && m->role[j] == FP3_MR_POSITION
                  ? y[j]
                  : m_nm(b, m_add(b, y[j], st < 2 ? mul(b, half, k[st][j]) : k[st][j]),
                         ytag[st], j);
-    m_f(b, m, t, f[st + 1], ftag[st + 1]);
+    m_fl(b, m, t, f[st + 1], L, ftag[st + 1]);
   }
   for (unsigned i = 0; i < ns; i++) {
     ref d;
     if (all || m->role[i] == FP3_MR_VELOCITY) {
-      ref k4 = m_nm(b, mul(b, h, f[3][i]), "k4", i);
+      ref k4 = m_nm(b, m_hf(b, h, f[3][i], &L[i], t, i, "h"), "k4", i);
       d = mul(b, sixth, m_nm(b, m_rk4_sum(b, two, k[0][i], k[1][i], k[2][i], k4), "sum", i));
     } else if (!se) { /* (h sixth) ((f1 + 2 (f2 + f3)) + f4) */
       ref h6 = nm(b, mul(b, h, sixth), "h6");
@@ -1320,10 +1508,10 @@ static void m_build_rk4(builder *b, const fp3_model *m, const ref *y, ref h, int
   }
   if (!se) return;
   for (unsigned j = 0; j < ns; j++) t[j] = m->role[j] == FP3_MR_VELOCITY ? b->out[j] : y[j];
-  m_f(b, m, t, f[0], "5"); /* positions by the new velocities */
+  m_fl(b, m, t, f[0], L, "5"); /* positions by the new velocities */
   for (unsigned i = 0; i < ns; i++)
     if (m->role[i] == FP3_MR_POSITION) {
-      ref d = m_nm(b, mul(b, h, f[0][i]), "d", i);
+      ref d = m_nm(b, m_hf(b, h, f[0][i], &L[i], t, i, "h"), "d", i);
       if (comp) m_kahan(b, m, y[i], d, i);
       else b->out[i] = m_nm(b, m_add(b, y[i], d), "n", i);
     }
@@ -1363,17 +1551,21 @@ static void m_build_verletp(builder *b, const fp3_model *m, const ref *y, ref h)
 static int m_build(builder *b, const fp3_model *m, const char *integ) {
   const unsigned ns = m->nstate;
   ref y[MAX_STATE] = {{0, 0}}, f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}};
+  lin L[MAX_STATE];
   for (unsigned i = 0; i < ns; i++) y[i] = state(b, (int)i);
   ref h = leaf(b, NK_IN, 0, 0, "h");
   if (strcmp(integ, "euler") == 0) {
-    m_f(b, m, y, f, "");
-    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+    m_fl(b, m, y, f, L, "");
+    for (unsigned i = 0; i < ns; i++)
+      b->out[i] = m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], y, i, "h")), "n", i);
   } else if (strcmp(integ, "rk2") == 0) {
     ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
-    m_f(b, m, y, f, "1");
-    for (unsigned j = 0; j < ns; j++) t[j] = m_nm(b, m_add(b, y[j], mul(b, hh, f[j])), "ym", j);
-    m_f(b, m, t, f, "2");
-    for (unsigned i = 0; i < ns; i++) b->out[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
+    m_fl(b, m, y, f, L, "1");
+    for (unsigned j = 0; j < ns; j++)
+      t[j] = m_nm(b, m_add(b, y[j], m_hf(b, hh, f[j], &L[j], y, j, "hh")), "ym", j);
+    m_fl(b, m, t, f, L, "2");
+    for (unsigned i = 0; i < ns; i++)
+      b->out[i] = m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], t, i, "h")), "n", i);
   } else if (strcmp(integ, "rk4") == 0 || strcmp(integ, "rk4comp") == 0) {
     m_build_rk4(b, m, y, h, 1, 0, strcmp(integ, "rk4comp") == 0);
   } else if (strncmp(integ, "rk4se", 5) == 0 || strncmp(integ, "rk4vs", 5) == 0) {
@@ -1386,31 +1578,38 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     m_build_verletp(b, m, y, h);
   } else if (strcmp(integ, "symeuler") == 0) {
     if (!fp3_model_split(m)) return -2;
-    m_f(b, m, y, f, "1");
+    m_fl(b, m, y, f, L, "1");
     for (unsigned i = 0; i < ns; i++)
-      if (m->role[i] == FP3_MR_VELOCITY) t[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
-      else t[i] = y[i];
-    m_f(b, m, t, f, "2");
+      t[i] = m->role[i] == FP3_MR_VELOCITY
+                 ? m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], y, i, "h")), "n", i)
+                 : y[i];
+    m_fl(b, m, t, f, L, "2");
     for (unsigned i = 0; i < ns; i++)
-      b->out[i] = m->role[i] == FP3_MR_POSITION ? m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i)
-                                               : t[i];
+      b->out[i] = m->role[i] == FP3_MR_POSITION
+                      ? m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], t, i, "h")), "n", i)
+                      : t[i];
   } else if (strcmp(integ, "verlet") == 0) {
     /* kick, drift, kick (fp3_model_step_literal); each evaluation of f
      * keeps only the derivatives its update reads (dead code elimination) */
     if (!fp3_model_split(m)) return -2;
     if (!fp3_model_verlet_ok(m, NULL, NULL)) return -3;
     ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
-    m_f(b, m, y, f, "1");
+    m_fl(b, m, y, f, L, "1");
     for (unsigned i = 0; i < ns; i++)
-      t[i] = m->role[i] == FP3_MR_VELOCITY ? m_nm(b, m_add(b, y[i], mul(b, hh, f[i])), "uh", i)
-                                           : y[i];
-    m_f(b, m, t, f, "2");
+      t[i] = m->role[i] == FP3_MR_VELOCITY
+                 ? m_nm(b, m_add(b, y[i], m_hf(b, hh, f[i], &L[i], y, i, "hh")), "uh", i)
+                 : y[i];
+    m_fl(b, m, t, f, L, "2");
+    ref u[MAX_STATE]; /* the stage of f: t is updated below */
+    memcpy(u, t, sizeof u);
     for (unsigned i = 0; i < ns; i++)
-      if (m->role[i] == FP3_MR_POSITION) t[i] = m_nm(b, m_add(b, y[i], mul(b, h, f[i])), "n", i);
-    m_f(b, m, t, f, "3");
+      if (m->role[i] == FP3_MR_POSITION)
+        t[i] = m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], u, i, "h")), "n", i);
+    m_fl(b, m, t, f, L, "3");
     for (unsigned i = 0; i < ns; i++)
-      b->out[i] = m->role[i] == FP3_MR_VELOCITY ? m_nm(b, m_add(b, t[i], mul(b, hh, f[i])), "n", i)
-                                               : t[i];
+      b->out[i] = m->role[i] == FP3_MR_VELOCITY
+                      ? m_nm(b, m_add(b, t[i], m_hf(b, hh, f[i], &L[i], t, i, "hh")), "n", i)
+                      : t[i];
   } else {
     return -1;
   }
