@@ -281,8 +281,8 @@ expect 0 "program: 22 instructions per integration (literal program 31)" -- "${I
 expect 0 "program: 31 instructions per integration" -- "${ISS[@]}" --scene "$T/harbour.scene" --steps 10 --literal
 expect 0 "PASS: 2 objects x 500 integrations on iss" -- "${ISS[@]}" --scene "$T/nodrag.scene" --steps 500 --integrator rk2
 expect 0 "PASS: 24 objects" -- "${ISS[@]}" --objects 24 --seed 3 --steps 100 --integrator symeuler
-expect 2 "does not know integrator 'verlet'" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verlet
-expect 0 "PASS" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verlet --literal --steps 20
+expect 2 "whose verlet is the model integrator verletp" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verlet
+expect 0 "PASS" -- "${ISS[@]}" --scene "$T/harbour.scene" --integrator verletp --literal --steps 20
 expect 2 "--compile is gone" -- "${ISS[@]}" --scene "$T/harbour.scene" --literal --compile
 expect 2 "--compile is gone" -- "${ISS[@]}" --compile
 json=$("$FP3" run --scene "$T/harbour.scene" --steps 100 --json 2>&1); rc=$?

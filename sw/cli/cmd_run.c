@@ -7,9 +7,9 @@
  * One path: a model (--model, a model scene's, a program's `.model`, or
  * models/ship.fp3m), a program for it (compiled for an integrator, or a
  * hand-written one bound to the model by name, fp3_compile_bind), one
- * object or many (--objects N, --scene), an engine.  Scenes in the ship's
- * five-column format still run on the ship scene compiler's path
- * (cmd_objects.c).
+ * object or many (--objects N, --scene), an engine.  A scene in the ship's
+ * five-column format is read as a scene of models/ship.fp3m (runsetup.c),
+ * its integrator the paper's RK4, rk4se (fp3_ship_scene_integrator).
  */
 #include "cmd_run.h"
 
@@ -26,12 +26,10 @@
 #include "cliopt.h"
 #include "cmd_asm.h"
 #include "cmd_model.h"
-#include "cmd_objects.h"
 #include "compile.h"
 #include "engine.h"
 #include "fpenv.h"
 #include "fpref.h"
-#include "integrators.h"
 #include "model.h"
 #include "modelref.h"
 #include "mscene.h"
@@ -84,8 +82,9 @@ static void usage(FILE *f) {
           "                    times its own factor in [0.75, 1.25] from --seed S\n"
           "  --scene FILE      a model scene ('model FILE', 'h STEP', a header naming\n"
           "                    the columns, one object a line; scenes/); a ship scene\n"
-          "                    of five columns 'T C m v0 s0' runs the ship scene\n"
-          "                    compiler's program (fp3 compile --help)\n"
+          "                    of five columns 'h STEP', then 'T C m v0 s0' a line, is a\n"
+          "                    scene of models/ship.fp3m whose integrator is rk4se\n"
+          "                    (the paper's RK4) unless --integrator names another\n"
           "  --round R, --ftz  the cores' rounding (rne, rtz) and flush-to-zero; the\n"
           "                    host values, the ISS and the golden model follow\n"
           "  --json            one JSON object (docs/json.md) instead of the report\n"
@@ -432,9 +431,10 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
     if (s->program) printf("program %s (%s)", s->program, s->integ);
     else printf("integrator %s %s", s->integ, s->literal ? "literal" : "folded");
     printf(", %zu objects, %" PRIu32 " integrations each\n", res.objects, a->steps);
-    printf("program: %u instructions per integration, %u registers needed (NUM_REGS %u); "
-           "scheduler estimate %u cycles per integration of one object\n", cs->body_insns,
-           cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
+    printf("program: %u instructions per integration", cs->body_insns);
+    if (!s->literal) printf(" (literal program %u)", cs->literal_body_insns);
+    printf(", %u registers needed (NUM_REGS %u); scheduler estimate %u cycles per integration of "
+           "one object\n", cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
     printf("scene: %s; %u contexts x %u lanes per batch, %zu batch%s\n\n", where, res.contexts,
            res.lanes, res.batches, res.batches == 1 ? "" : "es");
     printf("  object");
@@ -485,95 +485,17 @@ out:
   return rc;
 }
 
-/* ---- a ship scene of five columns ----------------------------------------- */
-
-/* `fp3 run --scene FILE` on a ship scene ('T C m v0 s0' a line, sw/scene/
- * objects.h): the ship scene compiler's program (or with --literal or
- * --program the hand-written one) on cmd_objects.c's path. */
-/* The ship integrator (sw/ref/integrators.c) of a model integrator of the
- * ship's programs (docs/models.md), or NULL. */
-static const char *ship_integrator(const char *model_integ) {
-  static const char *const pairs[][2] = {
-      {"euler", "euler"}, {"symeuler", "symeuler"}, {"verletp", "verlet"},
-      {"rk2", "rk2"},     {"rk4se", "rk4"},         {"rk4vs", "rk4vs"},
-      {"rk4secomp", "rk4comp"}, {"rk4vscomp", "rk4vscomp"}};
-  for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
-    if (strcmp(pairs[i][0], model_integ) == 0) return pairs[i][1];
-  return NULL;
-}
-
-static int run_ship_scene(const fp3_model_args *a) {
-  const char *iname = a->integ_given ? a->integ : "rk4";
-  if (a->file) {
-    fprintf(stderr, "fp3 run: %s is a ship scene ('T C m v0 s0' a line): its programs are the "
-            "ship's; --model goes with a model scene or one object\n", a->scene);
-    return EXIT_USAGE;
-  }
-  const fp3_integrator *ig = fp3_integrator_find(iname);
-  const int compile = !a->literal && !a->program;
-  if (!ig && !a->program) {
-    fprintf(stderr, "fp3 run: a ship scene runs the ship's integrators (%s), not '%s'\n",
-            fp3_integrator_names(), iname);
-    return EXIT_USAGE;
-  }
-  if (compile && !fp3_compile_knows(iname)) {
-    fprintf(stderr, "fp3 run: the scene compiler does not know integrator '%s' (%s); "
-            "--literal runs programs/ship_%s.s\n", iname, fp3_compile_integrators(), iname);
-    return EXIT_USAGE;
-  }
-  char path[8192];
-  if (a->program) snprintf(path, sizeof path, "%s", a->program);
-  else fp3_find_shipped(ig->program, path, sizeof path); /* ig: not NULL without --program */
-  fp3_image img;
-  char *errs = NULL;
-  if (fp3_asm_file(path, &img, &errs) != 0) {
-    fp3_print_asm_errors(errs);
-    free(errs);
-    return EXIT_USAGE;
-  }
-  free(errs);
-  if (fp3_refuse_endless("run", path, &img)) return EXIT_USAGE;
-  if (a->program) { /* the golden model of the program's .integrator */
-    const char *sn = ship_integrator(img.integrator);
-    if (!sn || (a->integ_given && strcmp(a->integ, img.integrator) != 0 &&
-                strcmp(a->integ, sn) != 0)) {
-      fprintf(stderr, "fp3 run: %s: .integrator '%s' is not one of the ship's programs' "
-              "(a ship scene; %s), or not --integrator %s\n", path, img.integrator,
-              fp3_integrator_names(), a->integ);
-      return EXIT_USAGE;
-    }
-    ig = fp3_integrator_find(sn);
-  }
-  fp3_engine *e = strcmp(a->engine, "iss") == 0 ? fp3_engine_iss_new_mode(a->mode)
-                                                : fp3_engine_rtl_new_mode(a->mode, NULL);
-  if (!e || fp3_engine_error(e)[0]) {
-    fprintf(stderr, "fp3 run: cannot create the %s engine\n", a->engine);
-    fp3_engine_free(e);
-    return EXIT_FAIL;
-  }
-  fp3_engine_show_progress(e, a->json ? NULL : "fp3 run");
-  fp3_integ_golden gstore;
-  const fp3_golden_ref golden = fp3_golden_of_integrator(&gstore, ig);
-  fp3_ship_params dflt; /* the step until the scene's `h` line */
-  fp3_ship_default(&dflt);
-  fp3_objects_cmd oc = {e,          &img,    path,   ig->name, &golden, compile, NULL, a->scene,
-                        a->objects, a->seed, dflt.h, a->steps, a->mode, a->json};
-  int rc = fp3_cmd_run_objects(&oc);
-  fp3_engine_free(e);
-  return rc;
-}
-
 /* ---- fp3 run ------------------------------------------------------------------ */
 
 int fp3_cmd_run(int argc, char **argv) {
   fp3_model_args a;
   int r = fp3_parse_model(argc, argv, "run", &a);
   if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
-  if (a.scene && !fp3_scene_is_model(a.scene)) return run_ship_scene(&a);
   fp3_run_setup s;
   memset(&s, 0, sizeof s);
   fp3_image_init(&s.img);
-  int rc = fp3_run_setup_program(&a, &s, "run", DEFAULT_PROGRAM);
+  /* one object or --objects: the paper's program; a scene: its compiled one */
+  int rc = fp3_run_setup_program(&a, &s, "run", a.scene ? NULL : DEFAULT_PROGRAM);
   if (!rc) rc = fp3_run_setup_model(&a, &s, "run");
   if (!rc) rc = fp3_run_setup_engine(&a, &s, "run");
   if (!rc) rc = s.many ? run_many(&a, &s) : run_one(&a, &s);

@@ -246,6 +246,7 @@ void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const ch
   fp3_json_string(stdout, s->integ);
   printf(", \"literal\": %s, \"words\": %zu, \"insns_per_step\": %u", s->literal ? "true" : "false",
          fp3_compiled_image(s->c)->n, cs->body_insns);
+  if (!s->literal) printf(", \"literal_insns_per_step\": %u", cs->literal_body_insns);
   printf(", \"registers_needed\": %u, \"num_regs\": %u, \"est_cycles_per_step\": %u",
          cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
   printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
