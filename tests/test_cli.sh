@@ -241,16 +241,16 @@ then ok; else bad "run --scene --json output: $json"; fi
 
 # ---- the scene compiler: fp3 compile, fp3 run --scene compiles ------------------------
 expect 0 "usage: fp3 compile" -- compile --help
-expect 0 "rk4: 22 instructions per integration (literal program 31)" -- compile "$T/harbour.scene" -o "$T/harbour.s"
+expect 0 "rk4se folded: 22 instructions per integration (literal program 31)" -- compile "$T/harbour.scene" -o "$T/harbour.s"
 [ -f "$T/harbour.s" ] && ! ls "$T"/harbour.s.tmp* >/dev/null 2>&1 && ok || bad "compile -o wrote no $T/harbour.s"
-grep -q '^\.in  hmT, *r' "$T/harbour.s" && grep -q '^; instructions per integration: 22' "$T/harbour.s" \
-  && ok || bad "the compiled program lacks its .in hmT or its header"
+grep -q '^;   hv_0 .*(host: hv_0 = .* \* T)' "$T/harbour.s" && grep -q '^; instructions per integration: 22' "$T/harbour.s" \
+  && ok || bad "the compiled program lacks its host input (h minv) T or its header"
 expect 0 "" -- asm "$T/harbour.s" -o "$T/harbour.hex"
 expect 0 "instructions per integration: 31" -- compile "$T/harbour.scene" --literal
 printf 'h 0.01\n2000 0 1000 1 -5\n50 0 10 0 0\n' > "$T/nodrag.scene"
-expect 0 "4 instructions per integration .*no drag" -- compile "$T/nodrag.scene"
+expect 0 "4 instructions per integration .*zero in every object: C$" -- compile "$T/nodrag.scene"
 json=$("$FP3" compile "$T/nodrag.scene" --integrator euler -o "$T/nodrag.s" --json 2>&1)
-python3 -c 'import json,sys; d=json.loads(sys.argv[1]); assert d["no_drag"] and d["insns_per_step"] <= d["literal_insns_per_step"], d' "$json" \
+python3 -c 'import json,sys; d=json.loads(sys.argv[1]); assert d["params_zero"] == ["C"] and d["insns_per_step"] <= d["literal_insns_per_step"], d' "$json" \
   && ok || bad "compile --json: $json"
 expect 2 "unknown integrator 'leapfrog'" -- compile "$T/harbour.scene" --integrator leapfrog -o "$T/x.s"
 expect 2 "short.scene:1: expected 5 numbers" -- compile "$T/short.scene" -o "$T/x.s"
@@ -261,7 +261,7 @@ expect 2 "unknown option '--bogus'" -- compile "$T/harbour.scene" --bogus
 expect 2 "want 1..64 cycles" -- compile "$T/harbour.scene" --add-latency 0
 # the build for clock rate (FMAX_PIPE=1, add 9, mul 10): the literal rk4's
 # cycles of one ship as the RTL counts them (docs/fpga.md "Devices and Fmax")
-expect 0 "estimated 275 cycles per later integration (first 296)" -- compile "$T/harbour.scene" \
+expect 0 "estimated 275 cycles per later integration of one object (first 296)" -- compile "$T/harbour.scene" \
   --literal --fmax-pipe --add-latency 9 --mul-latency 10
 expect 2 "FMAX_PIPE needs add and mul latencies of at least 3" -- compile "$T/harbour.scene" \
   --fmax-pipe --mul-latency 2

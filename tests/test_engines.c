@@ -340,13 +340,11 @@ static void run_harbour_on(fp3_engine *e, const char *program, const char *integ
   fp3_image_init(&img);
   assert_int_equal(fp3_asm_file(program, &img, &errors), 0);
   if (integ) snprintf(img.integrator, sizeof img.integrator, "%s", integ);
-  fp3_model *m = malloc(sizeof *m);
-  assert_non_null(m);
-  if (fp3_model_load(img.model, m, msg, sizeof msg)) fail_msg("%s", msg);
   fp3_scene ships;
   fp3_mscene sc;
   assert_int_equal(fp3_scene_harbour(7, 48, 1.0f / 60.0f, &ships), 0);
-  if (fp3_mscene_from_ships(&ships, m, "harbour", &sc, msg, sizeof msg)) fail_msg("%s", msg);
+  if (fp3_mscene_from_ships(&ships, img.model, "harbour", &sc, msg, sizeof msg))
+    fail_msg("%s", msg);
   fp3_scene_free(&ships);
   fp3_compile_opts o;
   fp3_compile_opts_for(&o, &e->config);

@@ -12,7 +12,8 @@
 #include "compile.h"
 #include "model.h"
 #include "mscene.h"
-#include "objects.h"
+#include "cmd_model.h"
+#include "runsetup.h"
 #include "report.h"
 
 #define EXIT_FAIL 1
@@ -26,25 +27,27 @@ static void usage(FILE *f) {
           "                   [--json]\n"
           "\n"
           "Compile a model for an integrator into an FP3 program: --model FILE, or a\n"
-          "model scene ('model FILE' first; params zero in every object removed),\n"
-          "docs/models.md; the integrators: %s.\n"
-          "A ship scene ('h STEP', then 'T C m v0 s0' per object, see fp3 run --help)\n"
-          "runs the ship scene compiler, which computes\n"
-          "only what the scene needs: constants folded on the host (hmT =\n"
-          "(h*minv)*T, hmC = (h*minv)*C: new .in inputs), terms that are zero in\n"
-          "every object removed (no drag when every C = 0, no thrust when every\n"
-          "T = 0), loop invariants moved to the prologue, dead operations removed,\n"
-          "the loop body list-scheduled for the latencies and registers allocated.\n"
+          "scene of it (docs/models.md); the integrators: %s.\n"
+          "A model scene names its model ('model FILE' first); a ship scene ('h STEP',\n"
+          "then 'T C m v0 s0' per object, see fp3 run --help) is a scene of\n"
+          "models/ship.fp3m, whose integrator is rk4se (the paper's RK4) by default.\n"
+          "The compiler folds what it can on the host (a division by a parameter-only\n"
+          "value becomes a product with its reciprocal; a derivative affine in the\n"
+          "state, h f = (h c0) + sum (h c_s) y_s, the ship's hmT - hmC v), removes\n"
+          "the terms of params zero in every object of the scene, moves loop\n"
+          "invariants to the prologue, removes dead operations, list-schedules the\n"
+          "loop body for the latencies and allocates registers.\n"
           "fp3 run --scene runs the compiled program by default and checks every\n"
           "object after every integration against the IR's golden model.\n"
           "\n"
           "  --model FILE     the model (instead of a scene)\n"
-          "  --integrator I   default rk4; a ship scene: %s\n"
+          "  --integrator I   default rk4 (a ship scene: rk4se)\n"
           "  -o FILE          write the assembly to FILE (atomically: on any error\n"
           "                   no file is left); default: standard output\n"
           "  --no-fold        no folded inputs: the integrator's literal operations\n"
           "  --keep-zero      keep terms that are zero in the whole scene\n"
-          "  --literal        both: the operations of programs/ship_I.s\n"
+          "  --literal        both: the integrator's operations as docs/models.md\n"
+          "                   writes them (the ship's rk4se: those of programs/ship_rk4.s)\n"
           "  --add-latency N, --mul-latency N   core latencies (ADD_LATENCY, MUL_LATENCY) to schedule for\n"
           "                   (default %u and %u, sw/isa/fp3_isa.h)\n"
           "  --fmax-pipe      schedule and estimate for the build for clock rate\n"
@@ -60,7 +63,7 @@ static void usage(FILE *f) {
           "for the RTL of these latencies and pipeline).\n"
           "Exit status: 0 written; 2 bad arguments, scene or integrator; 1 the\n"
           "output could not be written.\n",
-          fp3_model_integrators(), fp3_compile_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
+          fp3_model_integrators(), (unsigned)FP3_DEFAULT_ADD_LATENCY,
           (unsigned)FP3_DEFAULT_MUL_LATENCY, FP3_FMAX_PIPE_FULL_LEAD_LATENCY,
           FP3_FMAX_PIPE_FETCH_SPACING, FP3_FMAX_PIPE_ISSUE_SPACING,
           FP3_FMAX_PIPE_PICK_STAGES + 1);
@@ -70,6 +73,7 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
   a->scene = a->out = a->model = NULL;
   a->integ = "rk4";
   a->json = 0;
+  int given = 0; /* --integrator */
   fp3_compile_defaults(&a->opts);
   fp3_compile_opts *o = &a->opts;
   for (int i = 1; i < argc; i++) {
@@ -86,6 +90,7 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "compile", "--integrator", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->integ = v;
+      given = 1;
     } else if ((r = fp3_opt_count(argc, argv, &i, "compile", "--add-latency", 1, 64, "cycles",
                                   &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
@@ -118,6 +123,7 @@ int fp3_parse_compile(int argc, char **argv, fp3_compile_args *a) {
                     "share standard output)\n");
     return FP3_ARGS_BAD;
   }
+  if (fp3_ship_scene_integrator(a->scene, given, &a->integ, "compile")) return FP3_ARGS_BAD;
   return FP3_ARGS_RUN;
 }
 
@@ -131,7 +137,9 @@ static int compile_model(const fp3_compile_args *a, unsigned char *zero, size_t 
   fp3_model *m = NULL;
   if (a->scene) {
     fp3_mscene sc;
-    if (fp3_mscene_read(a->scene, &sc, msg, sizeof msg)) {
+    char ship[4096]; /* the model of a ship scene */
+    fp3_find_shipped(FP3_DEFAULT_MODEL, ship, sizeof ship);
+    if (fp3_mscene_read_any(a->scene, ship, &sc, msg, sizeof msg)) {
       fprintf(stderr, "fp3 compile: %s\n", msg);
       return EXIT_USAGE;
     }
@@ -166,35 +174,18 @@ static int compile_model(const fp3_compile_args *a, unsigned char *zero, size_t 
 /* The run step: read, compile, write, report. */
 static int run_compile(const fp3_compile_args *a) {
   const char *scene = a->scene, *outp = a->out, *integ = a->integ;
-  const char *what = scene ? scene : a->model;
   const int json = a->json;
   const fp3_compile_opts o = a->opts;
-  const int model = a->model || fp3_scene_is_model(scene);
   char msg[512];
-  fp3_scene sc = {NULL, 0};
   fp3_compiled *c = NULL;
   fp3_model *m = NULL;
   unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
   size_t objects = 0;
-  if (model) {
-    int rc = compile_model(a, zero, &objects, &m, &c);
-    if (rc) {
-      free(m);
-      return rc;
-    }
-  } else {
-    if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 compile: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    objects = sc.n;
-    if (fp3_compile(&sc, integ, &o, scene, &c, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 compile: %s: %s\n", scene, msg);
-      fp3_scene_free(&sc);
-      return EXIT_USAGE;
-    }
+  int rc = compile_model(a, zero, &objects, &m, &c);
+  if (rc) {
+    free(m);
+    return rc;
   }
-  int rc = 0;
   if (outp) {
     if (fp3_compiled_write(c, outp, msg, sizeof msg)) {
       fprintf(stderr, "fp3 compile: %s\n", msg);
@@ -204,19 +195,28 @@ static int run_compile(const fp3_compile_args *a) {
     fputs(fp3_compiled_text(c), stdout);
   }
   const fp3_compile_stats *st = fp3_compiled_stats(c);
+  char zeros[256] = ""; /* the params whose terms went */
+  size_t zl = 0;
+  for (unsigned k = 1; k < m->nparam && o.drop_zero; k++)
+    if (zero[k] && zl < sizeof zeros)
+      zl += (size_t)snprintf(zeros + zl, sizeof zeros - zl, "%s%s", zl ? ", " : "", m->param[k]);
   if (rc == 0 && json) {
     printf("{\"scene\": ");
     if (scene) fp3_json_string(stdout, scene);
     else printf("null");
     printf(", \"model_file\": ");
-    if (a->model) fp3_json_string(stdout, a->model);
-    else printf("null");
+    fp3_json_string(stdout, m->file);
     printf(", \"objects\": %zu, \"integrator\": ", objects);
     fp3_json_string(stdout, integ);
-    printf(", \"fold\": %s, \"drop_zero\": %s, \"no_drag\": %s, \"no_thrust\": %s",
-           o.fold ? "true" : "false", o.drop_zero ? "true" : "false",
-           st->no_drag ? "true" : "false", st->no_thrust ? "true" : "false");
-    printf(", \"insns_per_step\": %u, \"arith_per_step\": %u, \"literal_insns_per_step\": %u",
+    printf(", \"fold\": %s, \"drop_zero\": %s, \"params_zero\": [", o.fold ? "true" : "false",
+           o.drop_zero ? "true" : "false");
+    for (unsigned k = 1, first = 1; k < m->nparam; k++)
+      if (zero[k] && o.drop_zero) {
+        printf("%s", first ? "" : ", ");
+        fp3_json_string(stdout, m->param[k]);
+        first = 0;
+      }
+    printf("], \"insns_per_step\": %u, \"arith_per_step\": %u, \"literal_insns_per_step\": %u",
            st->body_insns, st->body_arith, st->literal_body_insns);
     printf(", \"prologue_insns\": %u, \"hoisted\": %u, \"dead_removed\": %u, \"registers\": %u"
            ", \"registers_needed\": %u, \"num_regs\": %u", st->prologue_insns, st->hoisted,
@@ -225,25 +225,20 @@ static int run_compile(const fp3_compile_args *a) {
            o.mul_latency, o.fmax_pipe ? "true" : "false");
     printf(", \"est_cycles_first_step\": %u, \"est_cycles_per_step\": %u}\n",
            st->est_cycles_first, st->est_cycles_later);
-  } else if (rc == 0 && model) {
-    fprintf(stderr, "fp3 compile: %s: %s %s: %u instructions per integration (literal program "
-            "%u), prologue %u, %u registers needed (NUM_REGS %u), about %u cycles per "
-            "integration (one object)\n", what, integ, o.fold ? "folded" : "literal",
-            st->body_insns, st->literal_body_insns, st->prologue_insns, st->regs_needed,
-            st->num_regs, st->est_cycles_later);
   } else if (rc == 0) {
-    fprintf(stderr,
-            "fp3 compile: %s (%zu objects), %s: %u instructions per integration "
-            "(literal program %u), prologue %u; estimated %u cycles per later "
-            "integration (first %u)%s%s%s\n",
-            scene, sc.n, integ, st->body_insns, st->literal_body_insns, st->prologue_insns,
-            st->est_cycles_later, st->est_cycles_first, o.fmax_pipe ? " for FMAX_PIPE=1" : "",
-            o.drop_zero && st->no_drag ? "; no drag" : "",
-            o.drop_zero && st->no_thrust ? "; no thrust" : "");
+    char what[600];
+    if (scene) snprintf(what, sizeof what, "%s (%zu objects)", scene, objects);
+    else snprintf(what, sizeof what, "%s", m->file);
+    fprintf(stderr, "fp3 compile: %s, %s %s: %u instructions per integration (literal program "
+            "%u), prologue %u, %u registers needed (NUM_REGS %u); estimated %u cycles per later "
+            "integration of one object (first %u)%s%s%s\n", what, integ,
+            o.fold ? "folded" : "literal", st->body_insns, st->literal_body_insns,
+            st->prologue_insns, st->regs_needed, st->num_regs, st->est_cycles_later,
+            st->est_cycles_first, o.fmax_pipe ? " for FMAX_PIPE=1" : "",
+            zl ? "; removed, zero in every object: " : "", zeros);
   }
   fp3_compiled_free(c);
   free(m);
-  fp3_scene_free(&sc);
   return rc;
 }
 

@@ -1,8 +1,7 @@
 /*
- * cmd_compile.h -- `fp3 compile`: a model (--model FILE, a model scene)
- * compiled for an integrator (fp3_compile_model), or a ship scene ('T C m
- * v0 s0' a line) by the ship scene compiler (fp3_compile), on the command
- * line (compile.h).
+ * cmd_compile.h -- `fp3 compile`: a model (--model FILE, a scene of it:
+ * a model scene, or a ship scene of models/ship.fp3m) compiled for an
+ * integrator (fp3_compile_model), on the command line (compile.h).
  */
 #ifndef FP3_CMD_COMPILE_H
 #define FP3_CMD_COMPILE_H
@@ -14,8 +13,8 @@ typedef struct fp3_compile_args {
   const char *scene;      /* the scene file (a model scene or a ship scene) */
   const char *model;      /* --model FILE (instead of a scene)             */
   const char *out;        /* -o FILE, or NULL: standard output             */
-  const char *integ;      /* --integrator (default rk4; the compiler checks
-                             it, fp3_compile)                              */
+  const char *integ;      /* --integrator (default rk4, a ship scene's
+                             rk4se; fp3_compile_model checks it)          */
   int json;               /* --json (needs -o)                             */
   fp3_compile_opts opts;  /* latencies, --fmax-pipe, folding               */
 } fp3_compile_args;

@@ -16,7 +16,8 @@
 #include "fpenv.h"
 #include "model.h"
 #include "mscene.h"
-#include "objects.h"
+#include "cmd_model.h"
+#include "runsetup.h"
 #include "report.h"
 
 #define EXIT_FAIL 1
@@ -254,6 +255,7 @@ int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
   a->json = 0;
   fp3_configure_defaults(&a->opts);
   fp3_configure_opts *o = &a->opts;
+  int given = 0; /* --integrator */
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
@@ -264,7 +266,8 @@ int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
       a->out = v;
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--integrator", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
-      o->integrator = v; /* checked by the run step: ship scenes and models know different ones */
+      o->integrator = v; /* checked by the run step */
+      given = 1;
     } else if ((r = fp3_opt_value(argc, argv, &i, "configure", "--error-budget", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       char *end;
@@ -313,6 +316,8 @@ int fp3_parse_configure(int argc, char **argv, fp3_configure_args *a) {
     fprintf(stderr, "fp3 configure: no scene file (see fp3 configure --help)\n");
     return FP3_ARGS_BAD;
   }
+  if (fp3_ship_scene_integrator(a->scene, given, &o->integrator, "configure"))
+    return FP3_ARGS_BAD;
   return FP3_ARGS_RUN;
 }
 
@@ -323,43 +328,25 @@ static int run_configure(const fp3_configure_args *a) {
   const fp3_configure_opts o = a->opts;
   char msg[512];
   fp3_configure_result res;
-  const char *against = "v and s against the exact solution";
-  if (fp3_scene_is_model(scene)) { /* a model scene (mscene.h) */
-    fp3_mscene ms;
-    if (fp3_mscene_read(scene, &ms, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 configure: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    if (!fp3_model_integrator_known(o.integrator)) {
-      fprintf(stderr, "fp3 configure: unknown integrator '%s' for a model (%s)\n", o.integrator,
-              fp3_model_integrators());
-      fp3_mscene_free(&ms);
-      return EXIT_USAGE;
-    }
-    against = "every state variable against the model's GSL reference";
-    int rc = fp3_configure_model(&ms, &o, &res, NULL, msg, sizeof msg);
+  fp3_mscene ms;
+  char ship[4096]; /* the model of a ship scene */
+  fp3_find_shipped(FP3_DEFAULT_MODEL, ship, sizeof ship);
+  if (fp3_mscene_read_any(scene, ship, &ms, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 configure: %s\n", msg);
+    return EXIT_USAGE;
+  }
+  if (!fp3_model_integrator_known(o.integrator)) {
+    fprintf(stderr, "fp3 configure: unknown integrator '%s' for a model (%s)\n", o.integrator,
+            fp3_model_integrators());
     fp3_mscene_free(&ms);
-    if (rc) {
-      fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
-      return EXIT_USAGE;
-    }
-  } else {
-    if (!fp3_compile_knows(o.integrator)) {
-      fprintf(stderr, "fp3 configure: unknown integrator '%s' (the compiler knows: %s)\n",
-              o.integrator, fp3_compile_integrators());
-      return EXIT_USAGE;
-    }
-    fp3_scene sc;
-    if (fp3_scene_read(scene, 1.0f / 60.0f, &sc, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 configure: %s\n", msg);
-      return EXIT_USAGE;
-    }
-    if (fp3_configure(&sc, scene, &o, &res, NULL, msg, sizeof msg)) {
-      fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
-      fp3_scene_free(&sc);
-      return EXIT_USAGE;
-    }
-    fp3_scene_free(&sc);
+    return EXIT_USAGE;
+  }
+  const char *against = "every state variable against the model's GSL reference";
+  int rc = fp3_configure_model(&ms, &o, &res, NULL, msg, sizeof msg);
+  fp3_mscene_free(&ms);
+  if (rc) {
+    fprintf(stderr, "fp3 configure: %s: %s\n", scene, msg);
+    return EXIT_USAGE;
   }
   char line[288];
   fp3_configure_line(&res.cfg, line, sizeof line);

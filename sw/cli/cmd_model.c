@@ -283,7 +283,7 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
     fprintf(stderr, "fp3 bench: --model FILE with --set values (one object), not a scene\n");
     return FP3_ARGS_BAD;
   }
-  if (fp3_ship_scene_integrator(a, cmd)) return FP3_ARGS_BAD;
+  if (fp3_ship_scene_integrator(a->scene, a->integ_given, &a->integ, cmd)) return FP3_ARGS_BAD;
   return FP3_ARGS_RUN;
 }
 
@@ -291,19 +291,20 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
  * integrator is the paper's RK4 unless --integrator says otherwise: rk4se
  * (docs/models.md).  The ship's own names that
  * mean another integrator of a model are refused with the model's name. */
-int fp3_ship_scene_integrator(fp3_model_args *a, const char *cmd) {
-  if (!a->scene || fp3_scene_is_model(a->scene)) return 0;
+int fp3_ship_scene_integrator(const char *scene, int given, const char **integ,
+                              const char *cmd) {
+  if (!scene || fp3_scene_is_model(scene)) return 0;
   static const char *const renamed[][2] = {
       {"rk4", "rk4se"}, {"rk4comp", "rk4secomp"}, {"verlet", "verletp"}};
-  if (!a->integ_given) {
-    a->integ = "rk4se";
+  if (!given) {
+    *integ = "rk4se";
     return 0;
   }
   for (size_t i = 0; i < sizeof renamed / sizeof renamed[0]; i++)
-    if (strcmp(a->integ, renamed[i][0]) == 0) {
+    if (strcmp(*integ, renamed[i][0]) == 0) {
       fprintf(stderr, "fp3 %s: %s is a ship scene, whose %s is the model integrator %s: "
               "--integrator %s (the model's %s is another integrator; it runs on a model "
-              "scene, such as scenes/fleet.scene)\n", cmd, a->scene, renamed[i][0],
+              "scene, such as scenes/fleet.scene)\n", cmd, scene, renamed[i][0],
               renamed[i][1], renamed[i][1], renamed[i][0]);
       return -1;
     }

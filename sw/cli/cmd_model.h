@@ -65,11 +65,14 @@ typedef struct fp3_model_args {
  * which only the model file gives (fp3_model_args_values). */
 int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a);
 
-/* On a ship scene (five columns, sw/scene/objects.h): a->integ defaults to the paper's RK4, the model
- * integrator rk4se, and the ship's names that a model gives another
- * meaning (rk4, rk4comp, verlet) are refused with the model's name.  0, or
- * -1 with the message on stderr.  Called by fp3_parse_model. */
-int fp3_ship_scene_integrator(fp3_model_args *a, const char *cmd);
+/* The integrator of a run, compile or configure of scene (NULL: none):
+ * on a ship scene (five columns, sw/scene/objects.h) *integ, unless given
+ * (--integrator), becomes the paper's RK4, the model integrator rk4se,
+ * and the ship's names that a model gives another meaning (rk4, rk4comp,
+ * verlet) are refused with the model's name.  0, or -1 with the message
+ * on stderr (fp3 CMD: ...). */
+int fp3_ship_scene_integrator(const char *scene, int given, const char **integ,
+                              const char *cmd);
 
 /* The values of one object of model m into in[] (params, in[0] the step
  * h) and y0[] (initial state): the model file's defaults (`param k = 40`,

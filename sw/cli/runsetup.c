@@ -24,31 +24,20 @@
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 
-/* A ship scene (objects.h: `h STEP`, then `T C m v0 s0` a line) or a
- * generated harbour (--harbour N --seed S) as a scene of model file
- * model_path, which must name params T, C, m and state variables v, s.
- * 0; -1 with "FILE:LINE: reason" (a bad scene or model); 1 out of memory. */
-static int ship_scene(const fp3_model_args *a, const char *model_path, fp3_mscene *sc,
-                      char *msg, size_t n) {
+/* A generated harbour (--harbour N --seed S, objects.h) as a scene of
+ * model file model_path, which must name params T, C, m and state
+ * variables v, s.  0; -1 with the reason (another model); 1 out of
+ * memory. */
+static int harbour_scene(const fp3_model_args *a, const char *model_path, fp3_mscene *sc,
+                         char *msg, size_t n) {
   fp3_scene ships;
-  fp3_ship_params dflt; /* the step until a scene's `h` line */
+  fp3_ship_params dflt;
   fp3_ship_default(&dflt);
-  if (a->scene) {
-    if (fp3_scene_read(a->scene, dflt.h, &ships, msg, n)) return -1;
-  } else if (fp3_scene_harbour(a->seed, a->harbour, dflt.h, &ships)) {
+  if (fp3_scene_harbour(a->seed, a->harbour, dflt.h, &ships)) {
     snprintf(msg, n, "out of memory for %llu ships", a->harbour);
     return 1;
   }
-  fp3_model *m = malloc(sizeof *m);
-  int rc = -1;
-  if (!m) {
-    snprintf(msg, n, "out of memory");
-    rc = 1;
-  } else if (fp3_model_load(model_path, m, msg, n) == 0) {
-    rc = fp3_mscene_from_ships(&ships, m, a->scene ? a->scene : "harbour", sc, msg, n);
-    m = NULL; /* the scene's, or freed */
-  }
-  free(m);
+  int rc = fp3_mscene_from_ships(&ships, model_path, "harbour", sc, msg, n);
   fp3_scene_free(&ships);
   return rc;
 }
@@ -121,14 +110,13 @@ int fp3_run_setup_model(const fp3_model_args *a, fp3_run_setup *s, const char *c
     fp3_find_shipped(FP3_DEFAULT_MODEL, s->model_path, sizeof s->model_path);
     mp = s->model_path;
   }
-  const int model_scene = a->scene && fp3_scene_is_model(a->scene); /* else a ship scene */
-  if (model_scene && a->file) {
+  if (a->scene && fp3_scene_is_model(a->scene) && a->file) {
     fprintf(stderr, "fp3 %s: --model or a model scene (it names its model), not both\n", cmd);
     return EXIT_USAGE;
   }
   if (a->scene || a->harbour) {
-    int bad = model_scene ? fp3_mscene_read(a->scene, &s->sc, msg, sizeof msg)
-                          : ship_scene(a, mp, &s->sc, msg, sizeof msg);
+    int bad = a->scene ? fp3_mscene_read_any(a->scene, mp, &s->sc, msg, sizeof msg)
+                       : harbour_scene(a, mp, &s->sc, msg, sizeof msg);
     if (bad) {
       fprintf(stderr, "fp3 %s: %s\n", cmd, msg);
       return bad < 0 ? EXIT_USAGE : EXIT_FAIL;

@@ -312,11 +312,20 @@ void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero) {
   }
 }
 
-int fp3_mscene_from_ships(const fp3_scene *ships, fp3_model *m, const char *what,
+int fp3_mscene_from_ships(const fp3_scene *ships, const char *model_path, const char *what,
                           fp3_mscene *s, char *msg, size_t n) {
   static const char *const cols[5] = {"T", "C", "m", "v", "s"};
   int at[5];
   memset(s, 0, sizeof *s);
+  fp3_model *m = malloc(sizeof *m);
+  if (!m) {
+    snprintf(msg, n, "out of memory");
+    return 1;
+  }
+  if (fp3_model_load(model_path, m, msg, n)) {
+    free(m);
+    return -1;
+  }
   for (int k = 0; k < 5; k++) {
     at[k] = k < 3 ? fp3_model_param(m, cols[k]) : fp3_model_state(m, cols[k]);
     if (at[k] < 0 || m->nparam != 4 || m->nstate != 2) {
@@ -348,6 +357,18 @@ int fp3_mscene_from_ships(const fp3_scene *ships, fp3_model *m, const char *what
   }
   s->n = ships->n;
   return 0;
+}
+
+int fp3_mscene_read_any(const char *path, const char *ship_model, fp3_mscene *s, char *msg,
+                        size_t n) {
+  if (fp3_scene_is_model(path)) return fp3_mscene_read(path, s, msg, n);
+  fp3_scene ships;
+  fp3_ship_params dflt; /* the step until the scene's `h` line */
+  fp3_ship_default(&dflt);
+  if (fp3_scene_read(path, dflt.h, &ships, msg, n)) return -1;
+  int rc = fp3_mscene_from_ships(&ships, ship_model, path, s, msg, n);
+  fp3_scene_free(&ships);
+  return rc;
 }
 
 void fp3_mscene_free(fp3_mscene *s) {

@@ -60,12 +60,20 @@ int fp3_mscene_read(const char *path, fp3_mscene *s, char *msg, size_t n);
 void fp3_mscene_zero(const fp3_mscene *sc, unsigned char *zero);
 
 /* A scene of ships (objects.h: T C m v0 s0 and h each) as a scene of
- * model m (loaded by the caller, owned by s afterwards, freed on a
- * failure), which must have params T, C, m and state variables v, s
- * (models/ship.fp3m); what names the scene in messages.  Returns 0; -1
- * with the reason in msg (another model); 1 out of memory. */
-int fp3_mscene_from_ships(const fp3_scene *ships, fp3_model *m, const char *what,
+ * the model file model_path, which must have params T, C, m and state
+ * variables v, s (models/ship.fp3m); what names the scene in messages.
+ * Returns 0; -1 with the reason in msg (a bad model, or another one); 1
+ * out of memory. */
+int fp3_mscene_from_ships(const fp3_scene *ships, const char *model_path, const char *what,
                           fp3_mscene *s, char *msg, size_t n);
+
+/* A scene file in either format: a model scene (fp3_mscene_read), or a
+ * ship scene ('h STEP', then 'T C m v0 s0' a line, objects.h), read as a
+ * scene of the model file ship_model (models/ship.fp3m: params T, C, m,
+ * state variables v, s; the step 1/60 s until an `h` line).  Returns 0;
+ * -1 with "FILE:LINE: reason" in msg; 1 out of memory. */
+int fp3_mscene_read_any(const char *path, const char *ship_model, fp3_mscene *s, char *msg,
+                        size_t n);
 
 /* n objects of model m (loaded by the caller, owned by s afterwards), all
  * from base values in[] (h and params) and y0[] (states), each non-h value
