@@ -5,12 +5,12 @@
  * 2, 4, 8, 16; the default pipeline), the build for clock rate with one
  * lane and 8 or 16 contexts (fmax, f16) and the chip build (8 contexts
  * with the LFE5U-85F's lanes, mk/pnr.mk CHIP=ecp5-85) that are linked in,
- * run the ship RK4 step on
+ * run the ship's RK4 step (models/ship.fp3m, integrator rk4se) on
  * NUM_CONTEXTS x NUM_LANES ships (a generated scene), once with the
- * literal program (programs/ship_rk4.s, the paper's operations) and once
- * with the compiled one (fp3 compile, folded, for the build's latencies);
- * every object is checked against its golden model after every
- * integration (fp3_run_objects).  Reported: cycles per object-step, the
+ * literal program (programs/ship_rk4.s, the paper's operations, bound to
+ * the model by name) and once with the compiled one (fp3 compile, folded,
+ * for the build's latencies); every object is checked against its golden
+ * model after every integration (fp3_run_state_objects).  Reported: cycles per object-step, the
  * issue bound (instructions issued per object-step: the instructions of
  * one integration / NUM_LANES), their ratio (target <= 1.1), and how fast
  * the Verilated model runs on this host (object-steps per CPU second).
@@ -18,7 +18,10 @@
  * Then, in the same run, the same binary32 step on this machine's CPU
  * (cpu_ship.c, -O3 -march=native -ffp-contract=off): one ship alone (a
  * dependent chain) and 1,024 ships in arrays; ns per object-step (median
- * of 5), every result checked bit for bit against the golden model.
+ * of 5), every result checked bit for bit against the model's literal
+ * rk4se golden model.  This reference is the ship's alone: it is C
+ * written for the compiler to vectorize, the paper's comparison; a model's
+ * own would need a C back end of the compiler.
  *
  * Last, the chip build's ns per object-step at the Fmax given with
  * --fmax-mhz (the median of the placement seeds, mk/pnr.mk; without it,
@@ -33,14 +36,18 @@
 #include <string.h>
 #include <time.h>
 
+#include "asm.h"
 #include "bench.h"
 #include "compile.h"
 #include "cpu_ship.h"
 #include "engine.h"
-#include "golden.h"
-#include "integrators.h"
+#include "model.h"
+#include "mscene.h"
 #include "objects.h"
 #include "../sim/fp3_model.h"
+
+#define SHIP_MODEL "models/ship.fp3m"
+#define SHIP_PROGRAM "programs/ship_rk4.s" /* the paper's RK4: rk4se */
 
 /* The lane builds are linked as make bench-chip's BENCH_CHIP_MODELS say
  * (a model of many lanes takes long to Verilate and compile): weak, a build not
@@ -83,20 +90,35 @@ typedef struct row {
   unsigned error;
 } row;
 
-/* Run img on e for n generated ships (seed 1), every object checked. */
-static int measure(fp3_engine *e, const char *build, const char *prog_name, const fp3_image *img,
-                   const fp3_golden_ref *golden, size_t n, uint32_t steps, row *r) {
-  fp3_scene sc;
-  fp3_objects_result res;
+/* n generated ships (seed 1) as a scene of the ship model. */
+static int ship_scene(size_t n, fp3_mscene *sc) {
+  fp3_scene ships;
   char msg[512];
-  if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc)) {
+  if (fp3_scene_generate(1, n, 1.0f / 60.0f, &ships)) {
     fprintf(stderr, "bench_chip: cannot generate %zu ships\n", n);
     return -1;
   }
+  int rc = fp3_mscene_from_ships(&ships, SHIP_MODEL, "generated", sc, msg, sizeof msg);
+  fp3_scene_free(&ships);
+  if (rc) fprintf(stderr, "bench_chip: %s\n", msg);
+  return rc;
+}
+
+/* Run program c on e for n generated ships, every object checked. */
+static int measure(fp3_engine *e, const char *build, const char *prog_name, fp3_compiled *c,
+                   size_t n, uint32_t steps, row *r) {
+  fp3_mscene sc;
+  fp3_state_result res;
+  char msg[512];
+  if (ship_scene(n, &sc)) return -1;
+  fp3_scene_gold g;
+  fp3_scene_gold_init(&g, c, &sc);
+  const fp3_image *img = fp3_compiled_image(c);
   double t0 = now_s();
-  int rc = fp3_run_objects(e, img, &sc, steps, e->config.mode, golden, &res, msg, sizeof msg);
+  int rc = fp3_run_state_objects(e, img->words, img->n, n, steps, e->config.mode, &g.golden, &res,
+                                 msg, sizeof msg);
   double dt = now_s() - t0;
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
   if (rc) {
     fprintf(stderr, "bench_chip: %s, %s, %zu ships: %s\n", build, prog_name, n, msg);
     return -1;
@@ -105,7 +127,32 @@ static int measure(fp3_engine *e, const char *build, const char *prog_name, cons
   *r = (row){build, e->config.num_contexts, e->config.num_lanes, e->config.fmax_pipe,
              prog_name, n, res.cycles, (double)res.cycles / os, (double)res.issued / os,
              os / dt, res.mismatches, res.error};
-  fp3_objects_result_free(&res);
+  fp3_state_result_free(&res);
+  return 0;
+}
+
+/* The literal program (SHIP_PROGRAM, bound to model m) and the compiled
+ * one, both for engine e's latencies and pipeline.  0, or -1 with the
+ * message on stderr. */
+static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled **lit,
+                         fp3_compiled **comp) {
+  fp3_image img;
+  char *errs = NULL, msg[512];
+  fp3_image_init(&img);
+  if (fp3_asm_file(SHIP_PROGRAM, &img, &errs)) {
+    fprintf(stderr, "bench_chip: %s: %s\n", SHIP_PROGRAM, errs ? errs : "cannot assemble");
+    free(errs);
+    return -1;
+  }
+  free(errs);
+  fp3_compile_opts o;
+  fp3_compile_opts_for(&o, &e->config);
+  const unsigned char zero[FP3_MODEL_MAX_VARS] = {0}; /* the generated ships use every term */
+  if (fp3_compile_bind(m, &img, SHIP_PROGRAM, &o, lit, msg, sizeof msg) ||
+      fp3_compile_model(m, "rk4se", &o, zero, comp, msg, sizeof msg)) {
+    fprintf(stderr, "bench_chip: %s\n", msg);
+    return -1;
+  }
   return 0;
 }
 
@@ -113,28 +160,34 @@ static int measure(fp3_engine *e, const char *build, const char *prog_name, cons
  * (median of 5) of the array form (all n) and of one ship alone; -1 if a
  * result differs from the golden model's. */
 static int cpu_reference(size_t n, uint32_t steps, double *array_ns, double *scalar_ns) {
-  fp3_scene sc;
-  if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc)) return -1;
+  fp3_mscene sc;
+  if (ship_scene(n, &sc)) return -1;
+  const fp3_model *m = sc.model;
+  const int iT = fp3_model_param(m, "T"), iC = fp3_model_param(m, "C"),
+            im = fp3_model_param(m, "m"), iv = fp3_model_state(m, "v"),
+            is = fp3_model_state(m, "s");
   float *mem = malloc(6 * n * sizeof *mem);
-  fp3_ship_state *g = malloc(n * sizeof *g);
-  if (!mem || !g) {
-    free(mem);
-    free(g);
-    fp3_scene_free(&sc);
+  if (!mem) {
+    fp3_mscene_free(&sc);
     return -1;
   }
   cpu_ships a = {mem, mem + n, mem + 2 * n, mem + 3 * n, mem + 4 * n, mem + 5 * n, n};
   int rc = 0;
-  /* bit-exact check first: 100 steps of every ship against the golden model */
+  /* bit-exact check first: 100 steps of every ship against the model's
+   * literal rk4se (its minv = 1/m is the let the host computes) */
   for (size_t i = 0; i < n; i++) {
-    fp3_golden_init(&g[i], &sc.objs[i]);
-    a.T[i] = g[i].T, a.C[i] = g[i].C, a.minv[i] = g[i].minv, a.h[i] = g[i].h;
-    a.v[i] = g[i].v, a.s[i] = g[i].s;
+    const float *in = sc.in + i * m->nparam, *y0 = sc.y0 + i * m->nstate;
+    a.T[i] = in[iT], a.C[i] = in[iC], a.minv[i] = 1.0f / in[im], a.h[i] = in[0];
+    a.v[i] = y0[iv], a.s[i] = y0[is];
   }
   cpu_ship_steps_array(&a, 100);
   for (size_t i = 0; i < n; i++) {
-    for (int k = 0; k < 100; k++) fp3_golden_step(&g[i]);
-    if (memcmp(&a.v[i], &g[i].v, sizeof(float)) || memcmp(&a.s[i], &g[i].s, sizeof(float))) {
+    float y[2 * FP3_MODEL_MAX_VARS];
+    const float *in = sc.in + i * m->nparam;
+    memcpy(y, sc.y0 + i * m->nstate, m->nstate * sizeof *y);
+    fp3_model_start_literal(m, "rk4se", in, y);
+    for (int k = 0; k < 100; k++) fp3_model_step_literal(m, "rk4se", in, y);
+    if (memcmp(&a.v[i], &y[iv], sizeof(float)) || memcmp(&a.s[i], &y[is], sizeof(float))) {
       fprintf(stderr, "bench_chip: the CPU reference differs from the golden model (ship %zu)\n",
               i);
       rc = -1;
@@ -158,8 +211,7 @@ static int cpu_reference(size_t n, uint32_t steps, double *array_ns, double *sca
   volatile float sink = a.v[0] + a.s[n - 1];
   (void)sink;
   free(mem);
-  free(g);
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
   return rc;
 }
 
@@ -192,10 +244,12 @@ int main(int argc, char **argv) {
                 {"l16", &fp3_model_l16, 0}, {"fmax", &fp3_model_fmax, 0},
                 {"f16", &fp3_model_f16, 0},  {"chip", &fp3_model_chip, 0}};
   const size_t nbuilds = sizeof builds / sizeof builds[0];
-  fp3_image lit;
-  fp3_integ_golden rk4_store;
-  fp3_golden_ref rk4;
-  if (fp3_bench_ship_rk4(&lit, &rk4_store, &rk4)) return 2;
+  fp3_model ship;
+  char msg[512];
+  if (fp3_model_load(SHIP_MODEL, &ship, msg, sizeof msg)) {
+    fprintf(stderr, "bench_chip: %s\n", msg);
+    return 2;
+  }
   char tmp[4200];
   FILE *csv = fp3_bench_csv_open(csv_path, tmp, sizeof tmp);
   if (!csv) return 1;
@@ -222,26 +276,18 @@ int main(int argc, char **argv) {
       continue;
     }
     const size_t n = fp3_config_slots(&e->config);
-    /* the compiled program, for this build's latencies and pipeline */
-    fp3_scene sc;
-    fp3_compiled *comp = NULL;
-    char msg[512];
-    fp3_compile_opts o;
-    fp3_compile_opts_for(&o, &e->config);
-    if (fp3_scene_generate(1, n, 1.0f / 60.0f, &sc) ||
-        fp3_compile(&sc, "rk4", &o, "generated", &comp, msg, sizeof msg)) {
-      fprintf(stderr, "bench_chip: %s: compiling: %s\n", builds[b].name, msg);
-      fp3_scene_free(&sc);
+    /* the programs, for this build's latencies and pipeline */
+    fp3_compiled *lit = NULL, *comp = NULL;
+    if (ship_programs(&ship, e, &lit, &comp)) {
+      fp3_compiled_free(lit);
+      fp3_compiled_free(comp);
       fp3_engine_free(e);
       rc = 1;
       continue;
     }
-    fp3_scene_free(&sc);
-    fp3_golden_ref comp_golden = fp3_compiled_golden(comp);
     for (int p = 0; p < 2; p++) {
       row r;
-      if (measure(e, builds[b].name, p ? "compiled" : "literal",
-                  p ? fp3_compiled_image(comp) : &lit, p ? &comp_golden : &rk4, n, steps, &r)) {
+      if (measure(e, builds[b].name, p ? "compiled" : "literal", p ? comp : lit, n, steps, &r)) {
         rc = 1;
         continue;
       }
@@ -258,15 +304,16 @@ int main(int argc, char **argv) {
     /* host speed of the Verilated models: the 8-context build on 64
      * ships against the chip build on 256 (fp3 run --objects) */
     row h;
-    if (strcmp(builds[b].name, "l1") == 0 && measure(e, "l1", "literal", &lit, &rk4, 64, steps, &h) == 0)
+    if (strcmp(builds[b].name, "l1") == 0 && measure(e, "l1", "literal", lit, 64, steps, &h) == 0)
       host_l1_64 = h.host_osps;
     /* (the chip build comes last: it replaces any other) */
     if ((strcmp(builds[b].name, "chip") == 0 || e->config.num_lanes > host_big_lanes) &&
-        measure(e, builds[b].name, "literal", &lit, &rk4, 256, steps, &h) == 0) {
+        measure(e, builds[b].name, "literal", lit, 256, steps, &h) == 0) {
       host_big_256 = h.host_osps;
       host_big = builds[b].name;
       host_big_lanes = e->config.num_lanes;
     }
+    fp3_compiled_free(lit);
     fp3_compiled_free(comp);
     fp3_engine_free(e);
   }
@@ -279,7 +326,7 @@ int main(int argc, char **argv) {
   double cpu_arr = 0.0, cpu_one = 0.0;
   if (cpu_reference(1024, 2000, &cpu_arr, &cpu_one)) rc = 1;
   printf("\nCPU reference (cpu_ship.c, %s), the same binary32 step, bit-exact with the golden "
-         "model:\n  one ship alone:      %.3f ns per object-step\n  1,024 ships, arrays: %.3f ns "
+         "model (rk4se):\n  one ship alone:      %.3f ns per object-step\n  1,024 ships, arrays: %.3f ns "
          "per object-step\n", cpu_ship_flags(), cpu_one, cpu_arr);
 
   printf("\n| machine | ns per object-step |\n| --- | ---: |\n");
