@@ -1,18 +1,20 @@
 /*
- * test_compile.c -- the scene compiler (sw/compiler/compile.c):
+ * test_compile.c -- the compiler (sw/compiler/compile.c) on scenes of the
+ * ship model (models/ship.fp3m), the paper's Equations (1):
  *
- *  - exact instruction counts: rk4 literal = the paper's program, folded,
- *    no drag, no thrust; folding never adds instructions;
+ *  - exact instruction counts of rk4se: literal = the paper's program,
+ *    folded (the affine fold: h f(v) = hmT - hmC v), no drag, no thrust;
+ *    folding never adds instructions;
  *  - dead code elimination removes what nothing reads;
  *  - the literal IR (no folding, no zero removal) is the integrator's
- *    golden model (sw/ref/integrators.c) bit for bit, and removing zero terms
- *    keeps it so on scenes without exact zeros;
+ *    literal golden model (fp3_model_step_literal) bit for bit, and
+ *    removing zero terms keeps it so on scenes without exact zeros;
  *  - the IR golden model equals the ISS bit for bit, every object after
  *    every integration, for random scenes and every integrator and option;
  *    and the RTL for a small scene, whose measured cycles per integration
  *    equal the scheduler's estimate for the engine's latencies, on the
  *    default build and on the build for clock rate (FMAX_PIPE);
- *  - the folded inputs are the host's binary32 products;
+ *  - the folded coefficients are the host's binary32 products;
  *  - the emitted text assembles to the compiled image; bad input fails.
  */
 #include <math.h>
@@ -30,39 +32,52 @@
 #include "compile.h"
 #include "engine.h"
 #include "fpref.h"
-#include "integrators.h"
+#include "model.h"
+#include "mscene.h"
 #include "objects.h"
 #include "../sim/fp3_model.h"
 
 /* FMAX_PIPE 1 (mk/rtl.mk RTL_CFG_nc3, RTL_CFG_fmax) */
 extern const fp3_model_ops fp3_model_nc3, fp3_model_fmax;
 
-static const char *const integrators[] = {"euler", "symeuler", "rk2", "rk4"};
+#define SHIP "models/ship.fp3m"
+/* the ship's programs' integrators (programs/ship_*.s), and the model's rk4 */
+static const char *const integrators[] = {"euler", "symeuler", "rk2", "rk4se", "rk4"};
 #define N_INTEG (sizeof integrators / sizeof integrators[0])
 
-/* Random scene `seed` of n objects; drag 0: every C = 0, thrust 0: every
- * T = 0. */
-static void scene(uint64_t seed, size_t n, int drag, int thrust, fp3_scene *sc) {
-  assert_int_equal(fp3_scene_generate(seed, n, 1.0f / 60.0f, sc), 0);
+/* Random ship scene `seed` of n objects; drag 0: every C = 0, thrust 0:
+ * every T = 0. */
+static void scene(uint64_t seed, size_t n, int drag, int thrust, fp3_mscene *sc) {
+  fp3_scene ships;
+  char msg[300];
+  assert_int_equal(fp3_scene_generate(seed, n, 1.0f / 60.0f, &ships), 0);
   for (size_t i = 0; i < n; i++) {
-    if (!drag) sc->objs[i].C = 0.0f;
-    if (!thrust) sc->objs[i].T = 0.0f;
-    if (sc->objs[i].T == 0.0f && thrust) sc->objs[i].T = 1.0f;
+    if (!drag) ships.objs[i].C = 0.0f;
+    if (!thrust) ships.objs[i].T = 0.0f;
+    if (ships.objs[i].T == 0.0f && thrust) ships.objs[i].T = 1.0f;
   }
+  if (fp3_mscene_from_ships(&ships, SHIP, "test", sc, msg, sizeof msg)) fail_msg("%s", msg);
+  fp3_scene_free(&ships);
 }
 
-static fp3_compiled *compile(const fp3_scene *sc, const char *ig, int fold, int drop_zero) {
+static fp3_compiled *compile_opts(const fp3_mscene *sc, const char *ig, fp3_compile_opts *o) {
+  unsigned char zero[FP3_MODEL_MAX_VARS];
+  fp3_mscene_zero(sc, zero);
+  fp3_compiled *c = NULL;
+  char msg[300];
+  if (fp3_compile_model(sc->model, ig, o, zero, &c, msg, sizeof msg)) fail_msg("%s: %s", ig, msg);
+  return c;
+}
+
+static fp3_compiled *compile(const fp3_mscene *sc, const char *ig, int fold, int drop_zero) {
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
   o.fold = fold;
   o.drop_zero = drop_zero;
-  fp3_compiled *c = NULL;
-  char msg[300];
-  if (fp3_compile(sc, ig, &o, "test", &c, msg, sizeof msg)) fail_msg("%s: %s", ig, msg);
-  return c;
+  return compile_opts(sc, ig, &o);
 }
 
-static unsigned body_insns(const fp3_scene *sc, const char *ig, int fold, int drop_zero) {
+static unsigned body_insns(const fp3_mscene *sc, const char *ig, int fold, int drop_zero) {
   fp3_compiled *c = compile(sc, ig, fold, drop_zero);
   unsigned k = fp3_compiled_stats(c)->body_insns;
   assert_int_equal(k, fp3_image_body_insns(fp3_compiled_image(c)));
@@ -70,11 +85,22 @@ static unsigned body_insns(const fp3_scene *sc, const char *ig, int fold, int dr
   return k;
 }
 
+/* Object i's params and initial state. */
+static const float *obj_in(const fp3_mscene *sc, size_t i) { return sc->in + i * sc->model->nparam; }
+static const float *obj_y0(const fp3_mscene *sc, size_t i) { return sc->y0 + i * sc->model->nstate; }
+
+/* Start compiled program c's golden model on object i of sc. */
+static void gold_start(fp3_compiled *c, const fp3_mscene *sc, size_t i) {
+  unsigned reg[64];
+  uint32_t val[64];
+  fp3_compiled_model_start(c, obj_in(sc, i), obj_y0(sc, i), reg, val, 64);
+}
+
 /* ---- instruction counts ------------------------------------------------------ */
 
 static void test_counts_rk4(void **state) {
   (void)state;
-  fp3_scene all, nodrag, nothrust;
+  fp3_mscene all, nodrag, nothrust;
   scene(1, 16, 1, 1, &all);
   scene(2, 16, 0, 1, &nodrag);
   scene(3, 16, 1, 0, &nothrust);
@@ -83,24 +109,26 @@ static void test_counts_rk4(void **state) {
   char *errs = NULL;
   assert_int_equal(fp3_asm_file("programs/ship_rk4.s", &ship, &errs), 0);
   free(errs);
-  assert_int_equal(body_insns(&all, "rk4", 0, 0), fp3_image_body_insns(&ship));
-  assert_int_equal(body_insns(&all, "rk4", 0, 0), 31);
+  assert_int_equal(body_insns(&all, "rk4se", 0, 0), fp3_image_body_insns(&ship));
+  assert_int_equal(body_insns(&all, "rk4se", 0, 0), 31);
   /* folded: h f(x) = hmT - hmC x (2 instead of 4 per stage), the sum as
    * (k1 + k4) + 2 (k2 + k3): 21 arithmetic + endi */
-  assert_int_equal(body_insns(&all, "rk4", 1, 1), 22);
-  assert_int_equal(body_insns(&all, "rk4", 1, 0), 22); /* nothing zero */
+  assert_int_equal(body_insns(&all, "rk4se", 1, 1), 22);
+  assert_int_equal(body_insns(&all, "rk4se", 1, 0), 22); /* nothing zero */
   /* no drag: every k = hmT, the sum is loop invariant: v += dv; s += h v */
-  assert_int_equal(body_insns(&nodrag, "rk4", 1, 1), 4);
-  assert_int_equal(body_insns(&nodrag, "rk4", 0, 1), 4);
-  /* no thrust: the four subtractions go, negations fold into consumers */
-  assert_int_equal(body_insns(&nothrust, "rk4", 1, 1), 18);
-  assert_int_equal(body_insns(&nothrust, "rk4", 0, 1), 27);
+  assert_int_equal(body_insns(&nodrag, "rk4se", 1, 1), 4);
+  assert_int_equal(body_insns(&nodrag, "rk4se", 0, 1), 4);
+  /* no thrust: the four subtractions go, negations fold into consumers;
+   * unfolded, -k1 - 2 k2 keeps -k1 as a value (a product with the host's
+   * -h), as -(k1 + 2 k2) would differ in the sign of an exact zero */
+  assert_int_equal(body_insns(&nothrust, "rk4se", 1, 1), 18);
+  assert_int_equal(body_insns(&nothrust, "rk4se", 0, 1), 28);
   /* the same scenes keeping zero terms: as the general program */
-  assert_int_equal(body_insns(&nodrag, "rk4", 1, 0), 22);
-  assert_int_equal(body_insns(&nothrust, "rk4", 0, 0), 31);
-  fp3_scene_free(&all);
-  fp3_scene_free(&nodrag);
-  fp3_scene_free(&nothrust);
+  assert_int_equal(body_insns(&nodrag, "rk4se", 1, 0), 22);
+  assert_int_equal(body_insns(&nothrust, "rk4se", 0, 0), 31);
+  fp3_mscene_free(&all);
+  fp3_mscene_free(&nodrag);
+  fp3_mscene_free(&nothrust);
 }
 
 /* Folding and zero removal never cost instructions or estimated cycles,
@@ -108,7 +136,7 @@ static void test_counts_rk4(void **state) {
 static void test_folding_never_worse(void **state) {
   (void)state;
   for (int kind = 0; kind < 3; kind++) {
-    fp3_scene sc;
+    fp3_mscene sc;
     scene(10 + (uint64_t)kind, 8, kind != 1, kind != 2, &sc);
     for (size_t i = 0; i < N_INTEG; i++) {
       fp3_compiled *lit = compile(&sc, integrators[i], 0, 0);
@@ -121,7 +149,7 @@ static void test_folding_never_worse(void **state) {
       fp3_compiled_free(lit);
       fp3_compiled_free(fold);
     }
-    fp3_scene_free(&sc);
+    fp3_mscene_free(&sc);
   }
 }
 
@@ -129,46 +157,44 @@ static void test_folding_never_worse(void **state) {
 
 static void test_dce(void **state) {
   (void)state;
-  fp3_scene nodrag;
+  fp3_mscene nodrag;
   scene(4, 4, 0, 1, &nodrag);
-  /* rk4 builds the trial velocities vt2..vt4; without drag no force reads
-   * them: removed */
-  fp3_compiled *c = compile(&nodrag, "rk4", 1, 1);
+  /* rk4se builds the trial velocities y2_v .. y4_v; without drag no force
+   * reads them: removed */
+  fp3_compiled *c = compile(&nodrag, "rk4se", 1, 1);
   assert_true(fp3_compiled_stats(c)->dead_removed > 0);
-  assert_null(strstr(fp3_compiled_text(c), "vt2"));
-  assert_null(strstr(fp3_compiled_text(c), "vt4"));
+  assert_null(strstr(fp3_compiled_text(c), "y2_v"));
+  assert_null(strstr(fp3_compiled_text(c), "y4_v"));
   fp3_compiled_free(c);
-  /* with drag everything is read */
-  fp3_scene all;
+  /* with drag they are read */
+  fp3_mscene all;
   scene(5, 4, 1, 1, &all);
-  c = compile(&all, "rk4", 1, 1);
-  assert_int_equal(fp3_compiled_stats(c)->dead_removed, 0);
-  assert_non_null(strstr(fp3_compiled_text(c), "vt4"));
+  c = compile(&all, "rk4se", 1, 1);
+  assert_non_null(strstr(fp3_compiled_text(c), "y4_v"));
   fp3_compiled_free(c);
-  fp3_scene_free(&nodrag);
-  fp3_scene_free(&all);
+  fp3_mscene_free(&nodrag);
+  fp3_mscene_free(&all);
 }
 
 /* ---- golden models ------------------------------------------------------------- */
 
 /* The IR golden model of (fold, drop_zero) against the integrator's own,
  * object by object, `steps` integrations. */
-static void expect_ir_is_integrator(const fp3_scene *sc, const char *ig, int drop_zero,
+static void expect_ir_is_integrator(const fp3_mscene *sc, const char *ig, int drop_zero,
                                     uint32_t steps) {
   fp3_compiled *c = compile(sc, ig, 0, drop_zero);
-  fp3_golden_ref ir = fp3_compiled_golden(c);
-  fp3_integ_golden store;
-  fp3_golden_ref ref = fp3_golden_of_integrator(&store, fp3_integrator_find(ig));
+  const fp3_model *m = sc->model;
   for (size_t i = 0; i < sc->n; i++) {
-    ir.start(ir.ctx, &sc->objs[i]);
-    ref.start(ref.ctx, &sc->objs[i]);
+    float y1[2 * FP3_MODEL_MAX_VARS], y2[2 * FP3_MODEL_MAX_VARS];
+    gold_start(c, sc, i);
+    memcpy(y2, obj_y0(sc, i), m->nstate * sizeof *y2);
+    fp3_model_start_literal(m, ig, obj_in(sc, i), y2);
     for (uint32_t k = 1; k <= steps; k++) {
-      float v1, s1, v2, s2;
-      ir.step(ir.ctx, &v1, &s1);
-      ref.step(ref.ctx, &v2, &s2);
-      if (fpref_bits(v1) != fpref_bits(v2) || fpref_bits(s1) != fpref_bits(s2))
+      fp3_compiled_model_step(c, y1);
+      assert_int_equal(fp3_model_step_literal(m, ig, obj_in(sc, i), y2), 0);
+      if (fpref_bits(y1[0]) != fpref_bits(y2[0]) || fpref_bits(y1[1]) != fpref_bits(y2[1]))
         fail_msg("%s, object %zu, integration %u: IR v %a s %a, integrator v %a s %a", ig, i,
-                 k, (double)v1, (double)s1, (double)v2, (double)s2);
+                 k, (double)y1[0], (double)y1[1], (double)y2[0], (double)y2[1]);
     }
   }
   fp3_compiled_free(c);
@@ -176,7 +202,7 @@ static void expect_ir_is_integrator(const fp3_scene *sc, const char *ig, int dro
 
 static void test_literal_ir_is_integrator(void **state) {
   (void)state;
-  fp3_scene all, nodrag;
+  fp3_mscene all, nodrag;
   scene(6, 12, 1, 1, &all);
   scene(7, 12, 0, 1, &nodrag);
   for (size_t i = 0; i < N_INTEG; i++) {
@@ -185,8 +211,8 @@ static void test_literal_ir_is_integrator(void **state) {
     /* the drag terms removed: the same values (T != -0, v finite) */
     expect_ir_is_integrator(&nodrag, integrators[i], 1, 2000);
   }
-  fp3_scene_free(&all);
-  fp3_scene_free(&nodrag);
+  fp3_mscene_free(&all);
+  fp3_mscene_free(&nodrag);
 }
 
 /* A folded program is a different rounding sequence: it must differ from
@@ -194,36 +220,37 @@ static void test_literal_ir_is_integrator(void **state) {
  * folding), yet stay close. */
 static void test_folded_differs(void **state) {
   (void)state;
-  fp3_scene sc;
+  fp3_mscene sc;
   scene(8, 16, 1, 1, &sc);
-  fp3_compiled *lit = compile(&sc, "rk4", 0, 0), *fold = compile(&sc, "rk4", 1, 1);
-  fp3_golden_ref a = fp3_compiled_golden(lit), b = fp3_compiled_golden(fold);
+  fp3_compiled *lit = compile(&sc, "rk4se", 0, 0), *fold = compile(&sc, "rk4se", 1, 1);
   int differ = 0;
   for (size_t i = 0; i < sc.n; i++) {
-    a.start(a.ctx, &sc.objs[i]);
-    b.start(b.ctx, &sc.objs[i]);
-    float v1 = 0, s1 = 0, v2 = 0, s2 = 0;
+    float a[2 * FP3_MODEL_MAX_VARS], b[2 * FP3_MODEL_MAX_VARS];
+    gold_start(lit, &sc, i);
+    gold_start(fold, &sc, i);
     for (int k = 0; k < 500; k++) {
-      a.step(a.ctx, &v1, &s1);
-      b.step(b.ctx, &v2, &s2);
-      differ |= fpref_bits(v1) != fpref_bits(v2);
+      fp3_compiled_model_step(lit, a);
+      fp3_compiled_model_step(fold, b);
+      differ |= fpref_bits(a[0]) != fpref_bits(b[0]);
     }
-    assert_true(fabsf(v1 - v2) <= 1e-4f * (1.0f + fabsf(v1)));
+    assert_true(fabsf(a[0] - b[0]) <= 1e-4f * (1.0f + fabsf(a[0])));
   }
   assert_true(differ);
   fp3_compiled_free(lit);
   fp3_compiled_free(fold);
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 /* ---- engines --------------------------------------------------------------------- */
 
-static void run_on(fp3_engine *e, fp3_compiled *c, const fp3_scene *sc, uint32_t steps,
-                   fp3_objects_result *res) {
-  fp3_golden_ref g = fp3_compiled_golden(c);
+static void run_on(fp3_engine *e, fp3_compiled *c, const fp3_mscene *sc, uint32_t steps,
+                   fp3_state_result *res) {
+  fp3_scene_gold g;
+  fp3_scene_gold_init(&g, c, sc);
+  const fp3_image *img = fp3_compiled_image(c);
   char msg[300];
-  if (fp3_run_objects(e, fp3_compiled_image(c), sc, steps, FPREF_IEEE, &g, res, msg,
-                      sizeof msg))
+  if (fp3_run_state_objects(e, img->words, img->n, sc->n, steps, FPREF_IEEE, &g.golden, res, msg,
+                            sizeof msg))
     fail_msg("%s", msg);
   if (res->mismatches)
     fail_msg("%s: %llu mismatches, first object %zu integration %u", e->ops->name,
@@ -236,17 +263,17 @@ static void test_ir_equals_iss(void **state) {
   fp3_engine *iss = fp3_engine_iss_new();
   assert_non_null(iss);
   for (int kind = 0; kind < 4; kind++) { /* all, no drag, no thrust, neither */
-    fp3_scene sc;
+    fp3_mscene sc;
     scene(20 + (uint64_t)kind, 10, kind != 1 && kind != 3, kind != 2 && kind != 3, &sc);
     for (size_t i = 0; i < N_INTEG; i++)
       for (int opt = 0; opt < 3; opt++) {
         fp3_compiled *c = compile(&sc, integrators[i], opt != 0, opt == 2);
-        fp3_objects_result res;
+        fp3_state_result res;
         run_on(iss, c, &sc, 1000, &res);
-        fp3_objects_result_free(&res);
+        fp3_state_result_free(&res);
         fp3_compiled_free(c);
       }
-    fp3_scene_free(&sc);
+    fp3_mscene_free(&sc);
   }
   fp3_engine_free(iss);
 }
@@ -278,7 +305,7 @@ static void endi_cycles(fp3_engine *e, const fp3_image *img, unsigned *first, un
  * and per later integration are the scheduler's estimates, for every
  * integrator, folded or not. */
 static void expect_compiled_exact(fp3_engine *rtl) {
-  fp3_scene sc, one;
+  fp3_mscene sc, one;
   scene(30, 12, 1, 1, &sc);
   scene(31, 1, 1, 1, &one);
   for (size_t i = 0; i < N_INTEG; i++)
@@ -290,10 +317,8 @@ static void expect_compiled_exact(fp3_engine *rtl) {
       o.mul_latency = rtl->config.mul_latency;
       o.div_latency = rtl->config.div_latency;
       o.fmax_pipe = rtl->config.fmax_pipe;
-      fp3_compiled *c = NULL;
-      char msg[300];
-      if (fp3_compile(&sc, integrators[i], &o, "t", &c, msg, sizeof msg)) fail_msg("%s", msg);
-      fp3_objects_result res, r1, r2;
+      fp3_compiled *c = compile_opts(&sc, integrators[i], &o);
+      fp3_state_result res, r1, r2;
       run_on(rtl, c, &sc, 300, &res);
       run_on(rtl, c, &one, 20, &r1);
       run_on(rtl, c, &one, 40, &r2);
@@ -302,13 +327,13 @@ static void expect_compiled_exact(fp3_engine *rtl) {
       unsigned first, later;
       endi_cycles(rtl, fp3_compiled_image(c), &first, &later);
       assert_int_equal(first, fp3_compiled_stats(c)->est_cycles_first);
-      fp3_objects_result_free(&res);
-      fp3_objects_result_free(&r1);
-      fp3_objects_result_free(&r2);
+      fp3_state_result_free(&res);
+      fp3_state_result_free(&r1);
+      fp3_state_result_free(&r2);
       fp3_compiled_free(c);
     }
-  fp3_scene_free(&sc);
-  fp3_scene_free(&one);
+  fp3_mscene_free(&sc);
+  fp3_mscene_free(&one);
 }
 
 /* Moves, which compiled bodies lack, estimated exactly: dependence chains
@@ -373,37 +398,41 @@ static void test_rtl_fmax_pipe(void **state) {
 
 /* ---- inputs, text, errors -------------------------------------------------------- */
 
+/* The affine fold's coefficients are the host's binary32 products
+ * (h minv) T and (h minv) C, written with v0 and s0 before the run; minv
+ * itself is folded away. */
 static void test_folded_inputs(void **state) {
   (void)state;
-  fp3_scene sc;
+  fp3_mscene sc;
   scene(40, 50, 1, 1, &sc);
-  fp3_compiled *c = compile(&sc, "rk4", 1, 1);
-  const fp3_image *img = fp3_compiled_image(c);
-  assert_true(img->in_reg[FP3_IN_HMT] >= 0 && img->in_reg[FP3_IN_HMC] >= 0);
-  assert_int_equal(img->in_reg[FP3_IN_MINV], -1); /* folded away */
+  fp3_compiled *c = compile(&sc, "rk4se", 1, 1);
+  const fp3_model *m = sc.model;
+  const int iT = fp3_model_param(m, "T"), iC = fp3_model_param(m, "C"), im = fp3_model_param(m, "m");
   for (size_t i = 0; i < sc.n; i++) {
-    const fp3_ship_params *p = &sc.objs[i];
-    volatile float minv = 1.0f / p->m;
-    volatile float hm = p->h * minv;
-    volatile float hmT = hm * p->T, hmC = hm * p->C;
-    float val[FP3_IN_COUNT];
-    fp3_in_values(p, val);
-    assert_int_equal(fpref_bits(val[FP3_IN_HM]), fpref_bits(hm));
-    assert_int_equal(fpref_bits(val[FP3_IN_HMT]), fpref_bits(hmT));
-    assert_int_equal(fpref_bits(val[FP3_IN_HMC]), fpref_bits(hmC));
-    uint32_t regs[FP3_DEFAULT_NUM_REGS] = {0};
-    fp3_in_registers(img, p, regs);
-    assert_int_equal(regs[img->in_reg[FP3_IN_HMT]], fpref_bits(hmT));
-    assert_int_equal(regs[img->in_reg[FP3_IN_HMC]], fpref_bits(hmC));
-    assert_int_equal(regs[img->in_reg[FP3_IN_V0]], fpref_bits(p->v0));
+    const float *in = obj_in(&sc, i), *y0 = obj_y0(&sc, i);
+    volatile float minv = 1.0f / in[im];
+    volatile float hm = in[0] * minv;
+    volatile float hmT = hm * in[iT], hmC = hm * in[iC];
+    unsigned reg[64];
+    uint32_t val[64];
+    size_t nw = fp3_compiled_model_start(c, in, y0, reg, val, 64);
+    int seen_T = 0, seen_C = 0, seen_v0 = 0, seen_minv = 0;
+    for (size_t w = 0; w < nw; w++) {
+      seen_T |= val[w] == fpref_bits(hmT);
+      seen_C |= val[w] == fpref_bits(hmC);
+      seen_v0 |= val[w] == fpref_bits(y0[0]);
+      seen_minv |= val[w] == fpref_bits(minv) && minv != hmT && minv != hmC && minv != in[0];
+    }
+    assert_true(seen_T && seen_C && seen_v0);
+    assert_false(seen_minv);
   }
   fp3_compiled_free(c);
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 static void test_text_assembles(void **state) {
   (void)state;
-  fp3_scene sc;
+  fp3_mscene sc;
   scene(41, 3, 1, 1, &sc);
   for (size_t i = 0; i < N_INTEG; i++) {
     fp3_compiled *c = compile(&sc, integrators[i], 1, 1);
@@ -414,43 +443,41 @@ static void test_text_assembles(void **state) {
     const fp3_image *ci = fp3_compiled_image(c);
     assert_int_equal(img.n, ci->n);
     assert_memory_equal(img.words, ci->words, img.n * sizeof img.words[0]);
-    assert_memory_equal(img.in_reg, ci->in_reg, sizeof img.in_reg);
     char msg[200];
     assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), 0);
     assert_non_null(strstr(fp3_compiled_text(c), "instructions per integration"));
     fp3_compiled_free(c);
   }
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 static void test_errors(void **state) {
   (void)state;
-  fp3_scene sc;
+  fp3_mscene sc;
   scene(42, 3, 1, 1, &sc);
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
   fp3_compiled *c = NULL;
   char msg[300];
-  assert_int_equal(fp3_compile(&sc, "leapfrog", &o, "t", &c, msg, sizeof msg), -1);
+  const fp3_model *m = sc.model;
+  assert_int_equal(fp3_compile_model(m, "leapfrog", &o, NULL, &c, msg, sizeof msg), -1);
   assert_null(c);
   assert_non_null(strstr(msg, "unknown integrator 'leapfrog'"));
-  assert_false(fp3_compile_knows("verlet"));
-  assert_true(fp3_compile_knows("rk4"));
-  o.num_regs = 8; /* rk4 needs more */
-  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  /* the ship's drag reads its velocity: no kick-drift-kick verlet */
+  assert_int_equal(fp3_compile_model(m, "verlet", &o, NULL, &c, msg, sizeof msg), -1);
+  assert_non_null(strstr(msg, "verlet needs accelerations that do not read velocities"));
+  o.num_regs = 8; /* rk4se needs more */
+  assert_int_equal(fp3_compile_model(m, "rk4se", &o, NULL, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "registers"));
   fp3_compile_defaults(&o);
   o.fmax_pipe = 2;
-  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  assert_int_equal(fp3_compile_model(m, "rk4se", &o, NULL, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "fmax_pipe 0 or 1"));
   o.fmax_pipe = 1;
   o.mul_latency = FP3_FMAX_PIPE_PICK_STAGES; /* the RTL refuses to elaborate it */
-  assert_int_equal(fp3_compile(&sc, "rk4", &o, "t", &c, msg, sizeof msg), -1);
+  assert_int_equal(fp3_compile_model(m, "rk4se", &o, NULL, &c, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "FMAX_PIPE needs"));
-  fp3_compile_defaults(&o);
-  fp3_scene empty = {NULL, 0};
-  assert_int_equal(fp3_compile(&empty, "rk4", &o, "t", &c, msg, sizeof msg), -1);
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 int main(void) {

@@ -1119,8 +1119,9 @@ const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c) { return &c->
  * that must exist as a value (an output, sqrt's or min's operand, a sum
  * of two negated terms) is pushed into an invariant factor of a product
  * or quotient, -(a b) = (-a) b with -a computed by the host, or else
- * becomes a neg instruction.  (-a) + (-b) is never rewritten -(a + b):
- * the two differ in the sign of an exact zero. */
+ * becomes a neg instruction.  (-a) + (-b) is rewritten -(a + b) only in a
+ * folded program (its own golden model is its reference): the two differ
+ * in the sign of an exact zero. */
 static ref m_value(builder *b, ref x);
 static void golden_begin(fp3_compiled *c, const float *y0);
 static void golden_advance(fp3_compiled *c, float *y);
@@ -1166,7 +1167,7 @@ static ref m_unary(builder *b, int kind, ref x) {
 }
 
 static ref m_add(builder *b, ref x, ref y) {
-  if (x.neg && y.neg) x = m_value(b, x); /* (-a) + (-b): one negation made */
+  if (x.neg && y.neg && !b->fold) x = m_value(b, x); /* (-a) + (-b): one negation made */
   return add(b, x, y);
 }
 
