@@ -5,7 +5,8 @@
  *  - the check names the unit, the pc and the parameter, for each unit and
  *    for sub on an adder without HAS_SUB; a complete build accepts all;
  *    fp3_engine_load refuses; the ISS reports every unit;
- *  - fp3_configure derives exact parameters for the example scenes
+ *  - fp3_configure_model derives exact parameters for the example ship
+ *    scenes, read as scenes of models/ship.fp3m with its rk4se
  *    (scenes/drift.scene: no sub; coast, harbour) and synthetic ones
  *    (one object, 100 objects one context each, euler), the ROUND/FTZ rule
  *    follows the budget, one write-back port unless asked for four (the
@@ -40,6 +41,7 @@
 #include "engine.h"
 #include "fp3_isa.h"
 #include "image.h"
+#include "mscene.h"
 #include "objects.h"
 #include "../sim/fp3_model.h"
 
@@ -136,16 +138,45 @@ static void test_engine_load_refuses(void **state) {
   fp3_engine_free(e);
 }
 
-static void read_scene(const char *path, fp3_scene *sc) {
+#define SHIP "models/ship.fp3m"
+
+/* A ship scene file as a scene of the ship model. */
+static void read_scene(const char *path, fp3_mscene *sc) {
   char msg[300];
-  if (fp3_scene_read(path, 1.0f / 60.0f, sc, msg, sizeof msg)) fail_msg("%s", msg);
+  if (fp3_mscene_read_any(path, SHIP, sc, msg, sizeof msg)) fail_msg("%s", msg);
 }
 
-static fp3_configure_result configure(const fp3_scene *sc, const fp3_configure_opts *o) {
+/* n generated ships (seed) as a scene of the ship model. */
+static void generate(uint64_t seed, size_t n, fp3_mscene *sc) {
+  fp3_scene ships;
+  char msg[300];
+  assert_int_equal(fp3_scene_generate(seed, n, 1.0f / 60.0f, &ships), 0);
+  if (fp3_mscene_from_ships(&ships, SHIP, "test", sc, msg, sizeof msg)) fail_msg("%s", msg);
+  fp3_scene_free(&ships);
+}
+
+/* The defaults for a ship scene: the paper's RK4. */
+static void ship_defaults(fp3_configure_opts *o) {
+  fp3_configure_defaults(o);
+  o->integrator = "rk4se";
+}
+
+static fp3_configure_result configure(const fp3_mscene *sc, const fp3_configure_opts *o) {
   fp3_configure_result r;
   char msg[300];
-  if (fp3_configure(sc, "test", o, &r, NULL, msg, sizeof msg)) fail_msg("%s", msg);
+  if (fp3_configure_model(sc, o, &r, NULL, msg, sizeof msg)) fail_msg("%s", msg);
   return r;
+}
+
+/* Program c on engine e for every object of sc, `steps` integrations,
+ * checked against c's golden model: 0 with *res, or -1 with msg. */
+static int run_scene(fp3_engine *e, fp3_compiled *c, const fp3_mscene *sc, uint32_t steps,
+                     fp3_state_result *res, char *msg, size_t n) {
+  fp3_scene_gold g;
+  fp3_scene_gold_init(&g, c, sc);
+  const fp3_image *img = fp3_compiled_image(c);
+  return fp3_run_state_objects(e, img->words, img->n, sc->n, steps, e->config.mode, &g.golden,
+                               res, msg, n);
 }
 
 static void expect_line(const fp3_configure_result *r, const char *want) {
@@ -157,7 +188,7 @@ static void expect_line(const fp3_configure_result *r, const char *want) {
 static void test_derive_scenes(void **state) {
   (void)state;
   fp3_configure_opts o;
-  fp3_configure_defaults(&o);
+  ship_defaults(&o);
   static const struct {
     const char *path, *line;
   } cases[] = {
@@ -167,7 +198,7 @@ static void test_derive_scenes(void **state) {
        "NUM_CONTEXTS=5 NUM_LANES=7 NUM_REGS=12 HAS_ADD=1 HAS_SUB=1 HAS_MUL=1 HAS_DIV=0 HAS_SQRT=0 HAS_SIGN=0 ROUND=1 FTZ=1 ADD_LATENCY=4 MUL_LATENCY=4 WB_PORTS=1"},
   };
   for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-    fp3_scene sc;
+    fp3_mscene sc;
     read_scene(cases[i].path, &sc);
     fp3_configure_result r = configure(&sc, &o);
     expect_line(&r, cases[i].line);
@@ -175,11 +206,11 @@ static void test_derive_scenes(void **state) {
     assert_true(r.allowed[0]);
     assert_true(r.added[0] == 0.0);
     assert_true(r.err[0] > 0.0 && r.err[0] < 1e-2);
-    fp3_scene_free(&sc);
+    fp3_mscene_free(&sc);
   }
 
   /* drift: where the units are (pcs of the compiled program) */
-  fp3_scene sc;
+  fp3_mscene sc;
   read_scene("scenes/drift.scene", &sc);
   fp3_configure_result r = configure(&sc, &o);
   assert_int_equal(r.unit_pc[1], -1);
@@ -190,7 +221,7 @@ static void test_derive_scenes(void **state) {
   /* four write-back ports asked for: the default latencies, and the
    * harbour's contexts follow its shorter integration (86 cycles for 22
    * instructions, against 94 with one port) */
-  fp3_scene hb;
+  fp3_mscene hb;
   read_scene("scenes/harbour.scene", &hb);
   o.wb_ports = 4;
   r = configure(&hb, &o);
@@ -201,8 +232,8 @@ static void test_derive_scenes(void **state) {
   assert_int_equal(r.cfg.wb_ports, 1);
   assert_int_equal(r.est_later, 94);
   assert_int_equal(r.contexts_issue, 5);
-  fp3_scene_free(&hb);
-  fp3_configure_defaults(&o);
+  fp3_mscene_free(&hb);
+  ship_defaults(&o);
 
   /* a budget no mode meets but RNE's own: only FTZ, which adds nothing
    * here (no subnormals), is allowed besides RNE */
@@ -214,14 +245,16 @@ static void test_derive_scenes(void **state) {
   assert_int_equal(r.cfg.mode.ftz, 1);
 
   /* one object: one context */
-  fp3_scene one = {sc.objs, 1};
-  fp3_configure_defaults(&o);
-  r = configure(&one, &o);
+  const size_t drift_n = sc.n;
+  sc.n = 1;
+  ship_defaults(&o);
+  r = configure(&sc, &o);
   assert_int_equal(r.cfg.num_contexts, 1);
-  fp3_scene_free(&sc);
+  sc.n = drift_n;
+  fp3_mscene_free(&sc);
 
   /* 100 objects, one context each: 64 */
-  assert_int_equal(fp3_scene_generate(5, 100, 1.0f / 60.0f, &sc), 0);
+  generate(5, 100, &sc);
   o.context_per_object = 1;
   r = configure(&sc, &o);
   assert_int_equal(r.cfg.num_contexts, 64);
@@ -241,7 +274,7 @@ static void test_derive_scenes(void **state) {
 
   /* a device bounds the lanes: 100 objects at 5 contexts want 20 lanes,
    * the LFE5U-45F holds fewer (by the one-port model) */
-  o.integrator = "rk4";
+  o.integrator = "rk4se";
   o.device = fp3_device_find("ecp5-45");
   assert_non_null(o.device);
   r = configure(&sc, &o);
@@ -262,29 +295,31 @@ static void test_derive_scenes(void **state) {
   char msg[300];
   fp3_configure_result bad;
   o.integrator = "leapfrog";
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "leapfrog"));
-  fp3_configure_defaults(&o);
+  ship_defaults(&o);
   o.budget = 0.0;
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
   o.budget = NAN;
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
-  fp3_configure_defaults(&o);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
+  ship_defaults(&o);
   o.steps = 0;
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
-  fp3_configure_defaults(&o);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
+  ship_defaults(&o);
   o.wb_ports = 2;
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "want 1 or 4"));
-  fp3_scene empty = {sc.objs, 0};
-  fp3_configure_defaults(&o);
-  assert_int_equal(fp3_configure(&empty, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  const size_t all_n = sc.n;
+  sc.n = 0;
+  ship_defaults(&o);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
+  sc.n = all_n;
   o.device = fp3_device_find("ecp5-25");
   o.wb_ports = 4;   /* the one-port model finds room for 2 lanes */
-  assert_int_equal(fp3_configure(&sc, "t", &o, &bad, NULL, msg, sizeof msg), -1);
+  assert_int_equal(fp3_configure_model(&sc, &o, &bad, NULL, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "LFE5U-25F"));
   assert_non_null(strstr(msg, "does not hold one lane"));
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 /* The lane cost model against the chip build it was measured on, and its
@@ -354,29 +389,31 @@ static void test_device_lanes(void **state) {
 static void test_registers_fit(void **state) {
   (void)state;
   fp3_configure_opts o;
-  fp3_configure_defaults(&o);
-  const char *ig[] = {"euler", "symeuler", "rk2", "rk4"};
-  fp3_scene sc;
-  assert_int_equal(fp3_scene_generate(11, 16, 1.0f / 60.0f, &sc), 0);
+  ship_defaults(&o);
+  const char *ig[] = {"euler", "symeuler", "rk2", "rk4se"};
+  fp3_mscene sc;
+  generate(11, 16, &sc);
+  unsigned char zero[FP3_MODEL_MAX_VARS];
+  fp3_mscene_zero(&sc, zero);
   for (size_t i = 0; i < 4; i++) {
     o.integrator = ig[i];
     fp3_configure_result r;
     fp3_compiled *c = NULL;
     char msg[300];
-    assert_int_equal(fp3_configure(&sc, "t", &o, &r, &c, msg, sizeof msg), 0);
+    assert_int_equal(fp3_configure_model(&sc, &o, &r, &c, msg, sizeof msg), 0);
     assert_true(r.regs_used <= r.cfg.num_regs);
     assert_true(r.cfg.num_regs <= r.regs_default);
     /* the program compiled for the build, as fp3 run --scene does */
     fp3_compile_opts co;
     fp3_compile_opts_for(&co, &r.cfg);
     fp3_compiled *c2 = NULL;
-    assert_int_equal(fp3_compile(&sc, ig[i], &co, "t", &c2, msg, sizeof msg), 0);
+    assert_int_equal(fp3_compile_model(sc.model, ig[i], &co, zero, &c2, msg, sizeof msg), 0);
     assert_string_equal(fp3_compiled_text(c), fp3_compiled_text(c2));
     assert_int_equal(fp3_compiled_stats(c2)->est_cycles_later, r.est_later);
     fp3_compiled_free(c);
     fp3_compiled_free(c2);
   }
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&sc);
 }
 
 /* The scene-sized build runs its scene bit-exact and refuses the rest. */
@@ -384,14 +421,14 @@ static void test_sized_rtl(void **state) {
   (void)state;
   fp3_engine *e = fp3_engine_rtl_new_model(&fp3_model_drift, NULL);
   assert_non_null(e);
-  fp3_scene sc;
+  fp3_mscene sc;
   read_scene("scenes/drift.scene", &sc);
   fp3_configure_opts o;
-  fp3_configure_defaults(&o);
+  ship_defaults(&o);
   fp3_configure_result r;
   fp3_compiled *c = NULL;
   char msg[300];
-  assert_int_equal(fp3_configure(&sc, "scenes/drift.scene", &o, &r, &c, msg, sizeof msg), 0);
+  assert_int_equal(fp3_configure_model(&sc, &o, &r, &c, msg, sizeof msg), 0);
   /* the model reports the derived parameters */
   assert_int_equal(e->config.num_contexts, r.cfg.num_contexts);
   assert_int_equal(e->config.num_lanes, r.cfg.num_lanes);
@@ -414,37 +451,33 @@ static void test_sized_rtl(void **state) {
   fp3_compile_opts bo;
   fp3_compile_opts_for(&bo, &e->config);
   fp3_compiled *cb = NULL;
-  assert_int_equal(fp3_compile(&sc, "rk4", &bo, "scenes/drift.scene", &cb, msg, sizeof msg), 0);
+  unsigned char zero[FP3_MODEL_MAX_VARS];
+  fp3_mscene_zero(&sc, zero);
+  assert_int_equal(fp3_compile_model(sc.model, "rk4se", &bo, zero, &cb, msg, sizeof msg), 0);
   assert_string_equal(fp3_compiled_text(cb), fp3_compiled_text(c));
   fp3_compiled_free(cb);
 
   /* the scene's program, bit-exact, every object, every integration */
-  fp3_golden_ref g = fp3_compiled_golden(c);
-  fp3_objects_result res;
-  if (fp3_run_objects(e, fp3_compiled_image(c), &sc, 300, e->config.mode, &g, &res, msg,
-                      sizeof msg))
-    fail_msg("%s", msg);
+  fp3_state_result res;
+  if (run_scene(e, c, &sc, 300, &res, msg, sizeof msg)) fail_msg("%s", msg);
   assert_int_equal(res.objects, 8);
   assert_int_equal(res.batches, 1);   /* 4 contexts x 2 lanes: all 8 at once */
   assert_int_equal(res.lanes, 2);
   assert_int_equal(res.error, FP3_ERR_NONE);
   assert_int_equal(res.mismatches, 0);
-  fp3_objects_result_free(&res);
+  fp3_state_result_free(&res);
   fp3_compiled_free(c);
 
   /* a scene with drag needs sub: refused before running, naming it */
-  fp3_scene coast;
+  fp3_mscene coast;
   read_scene("scenes/coast.scene", &coast);
   fp3_compile_opts co;
   fp3_compile_opts_for(&co, &e->config);
-  assert_int_equal(fp3_compile(&coast, "rk4", &co, "coast", &c, msg, sizeof msg), 0);
-  fp3_golden_ref gc = fp3_compiled_golden(c);
-  assert_int_equal(fp3_run_objects(e, fp3_compiled_image(c), &coast, 10, e->config.mode, &gc,
-                                   &res, msg, sizeof msg),
-                   -1);
+  fp3_mscene_zero(&coast, zero);
+  assert_int_equal(fp3_compile_model(coast.model, "rk4se", &co, zero, &c, msg, sizeof msg), 0);
+  assert_int_equal(run_scene(e, c, &coast, 10, &res, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, "uses sub (pc "));
   assert_non_null(strstr(msg, "built with HAS_SUB=0"));
-  fp3_objects_result_free(&res);
 
   /* past the host's check the RTL itself stops at the sub */
   const fp3_image *img = fp3_compiled_image(c);
@@ -458,8 +491,8 @@ static void test_sized_rtl(void **state) {
   assert_int_equal(st.error, FP3_ERR_ILLEGAL_INSN);
   assert_int_equal(st.fault_pc, sub_pc);
   fp3_compiled_free(c);
-  fp3_scene_free(&coast);
-  fp3_scene_free(&sc);
+  fp3_mscene_free(&coast);
+  fp3_mscene_free(&sc);
   fp3_engine_free(e);
 }
 

@@ -744,17 +744,6 @@ out:
   return rc;
 }
 
-int fp3_bench_ship_rk4(fp3_image *img, fp3_integ_golden *store, fp3_golden_ref *golden) {
-  char *errs = NULL;
-  fp3_image_init(img);
-  if (fp3_asm_file("programs/ship_rk4.s", img, &errs)) {
-    fprintf(stderr, "%s", errs ? errs : "programs/ship_rk4.s: assembly failed\n");
-    free(errs);
-    return -1;
-  }
-  *golden = fp3_golden_of_integrator(store, fp3_integrator_find("rk4"));
-  return 0;
-}
 
 FILE *fp3_bench_csv_open(const char *path, char *tmp, size_t n) {
   snprintf(tmp, n, "%s.tmp", path);

@@ -94,12 +94,6 @@ typedef struct fp3_bench_opts {
  * number of steps). */
 int fp3_bench_run(const fp3_bench_opts *o);
 
-/* What the throughput benchmarks (bench_parallel, bench_chip) run: the
- * paper's RK4 ship program, programs/ship_rk4.s, assembled into *img, and
- * the rk4 golden model (*golden, which keeps *store).  Returns 0, or -1
- * with the assembler's message on stderr. */
-int fp3_bench_ship_rk4(fp3_image *img, fp3_integ_golden *store, fp3_golden_ref *golden);
-
 /* A CSV file written whole under a temporary name, PATH.tmp (in tmp, n
  * bytes), renamed to PATH by fp3_bench_csv_close: a failed run leaves no
  * half-written PATH.  NULL (perror) if it cannot be opened. */

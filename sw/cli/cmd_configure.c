@@ -61,16 +61,16 @@ static void usage(FILE *f) {
           "  ROUND, FTZ       the cheapest FP core mode (xc2v LUTs of the cores the\n"
           "                   program needs) whose error stays within the budget:\n"
           "                   the program's golden model in RNE, RTZ, RNE+FTZ and\n"
-          "                   RTZ+FTZ against the exact solution (a model scene:\n"
-          "                   the model's GSL reference), every object, N\n"
-          "                   integrations; error = max over objects of\n"
-          "                   max|x - exact| / max(max|exact|, 1), x = v and s\n"
-          "                   (a model: every state variable).\n"
+          "                   RTZ+FTZ against the model's GSL reference (rk8pd,\n"
+          "                   1e-12), every object, N integrations; error = max\n"
+          "                   over objects and state variables x of\n"
+          "                   max|x - ref| / max(max|ref|, 1).\n"
           "                   RNE (the default build) is always allowed, another\n"
           "                   mode when it adds at most REL to each object's RNE\n"
           "                   error (the integrator's own error is not the mode's).\n"
           "\n"
-          "  --integrator I   %s (default rk4)\n"
+          "  --integrator I   %s\n"
+          "                   (default rk4; a ship scene: rk4se)\n"
           "  --literal        no folding, no zero-term removal (fp3 compile --literal)\n"
           "  --error-budget R relative error a mode may add to RNE's (default 1e-4)\n"
           "  --steps N        integrations of the accuracy check (default 1000)\n"
@@ -95,7 +95,7 @@ static void usage(FILE *f) {
           FP3_DEVICE_ROUTABLE_PERMILLE_WB4,
           FP3_DEFAULT_ADD_LATENCY > FP3_DEFAULT_MUL_LATENCY ? FP3_DEFAULT_ADD_LATENCY
                                                             : FP3_DEFAULT_MUL_LATENCY,
-          FP3_DEFAULT_ADD_LATENCY, FP3_DEFAULT_MUL_LATENCY, fp3_compile_integrators(),
+          FP3_DEFAULT_ADD_LATENCY, FP3_DEFAULT_MUL_LATENCY, fp3_model_integrators(),
           FP3_MAX_LANES, FP3_CONFIGURE_MAX_LANES, fp3_device_names());
 }
 

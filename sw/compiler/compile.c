@@ -44,7 +44,6 @@
  * (unary ones have b = -1). */
 enum node_kind { NK_IN, NK_CONST, NK_STATE, NK_ADD, NK_SUB, NK_MUL, NK_DIV, NK_SQRT, NK_ABS,
                  NK_NEG, NK_MIN, NK_MAX, NK_COUNT };
-enum { ST_V = 0, ST_S = 1 }; /* the ship's loop-carried state */
 
 /* The instruction of each operation, by mnemonic: the assembler's table
  * (fp3_opc_lookup) says whether this ISA has it. */
@@ -54,7 +53,7 @@ static const char *const kind_mnemonic[NK_COUNT] = {
 typedef struct node {
   int kind;
   int a, b;        /* operands (ops)                               */
-  int id;          /* NK_IN: enum fp3_in_param; NK_STATE: ST_*       */
+  int id;          /* NK_IN: input index (b->in_name); NK_STATE: state */
   uint32_t bits;   /* NK_CONST                                     */
   int inv;         /* loop invariant: inputs and constants only     */
   int live;        /* read by an output, directly or not (not through
@@ -74,15 +73,15 @@ typedef struct ref {
 typedef struct builder {
   node nd[MAX_NODES];
   int nn;
-  int fold, drop_zero, no_drag, no_thrust;
+  int fold, drop_zero;
   int zero;        /* the +0 constant standing for a removed term, or -1 */
-  int nstate;      /* loop-carried state variables (the ship: v, s)     */
+  int nstate;      /* loop-carried values (fp3_model_carried)           */
   ref out[MAX_STATE]; /* their next values                              */
   int nin;         /* host inputs NK_IN id 0 .. nin-1                   */
   char in_name[MAX_IN][FP3_MODEL_NAME_LEN];
   int in_state[MAX_IN]; /* the state variable an input initialises, or -1 */
   char st_name[MAX_STATE][FP3_MODEL_NAME_LEN];
-  const fp3_model *model;      /* a model's program, else NULL (the ship) */
+  const fp3_model *model;      /* the model compiled                      */
   char integ[16];              /* a model's integrator (fp3_model_integrators) */
   const unsigned char *pzero;  /* model params zero in every object (drop_zero) */
   int err;
@@ -122,18 +121,6 @@ static int is_one(const builder *b, ref r) {
   return b->nd[r.n].kind == NK_CONST && b->nd[r.n].bits == 0x3F800000u;
 }
 
-/* A scene input; a removed term when it is zero in every object. */
-static ref input(builder *b, int id) {
-  int zero = b->drop_zero && (((id == FP3_IN_C || id == FP3_IN_HMC) && b->no_drag) ||
-                              ((id == FP3_IN_T || id == FP3_IN_HMT) && b->no_thrust));
-  if (zero) {
-    ref z = konst(b, 0.0f, "zero");
-    b->zero = z.n;
-    return z;
-  }
-  return leaf(b, NK_IN, id, 0, fp3_in_name(id));
-}
-
 static ref state(builder *b, int which) {
   return leaf(b, NK_STATE, which, 0, b->st_name[which]);
 }
@@ -164,132 +151,11 @@ static ref add(builder *b, ref x, ref y) {
   return r;
 }
 
-static ref sub(builder *b, ref x, ref y) {
-  y.neg ^= 1;
-  return add(b, x, y);
-}
-
 /* Name a node for the comments (the first name sticks). */
 static ref nm(builder *b, ref r, const char *name) {
   node *x = &b->nd[r.n];
   if (op_kind(x->kind) && !x->name[0]) snprintf(x->name, sizeof x->name, "%s", name);
   return r;
-}
-
-/* ---- the integrators -------------------------------------------------------- */
-
-/* The paper's f(v): (T - C x) * minv (integrators.c accel). */
-static ref lit_accel(builder *b, ref x, const char *tag) {
-  char s[16];
-  snprintf(s, sizeof s, "cv%s", tag);
-  ref cv = nm(b, mul(b, input(b, FP3_IN_C), x), s);
-  snprintf(s, sizeof s, "F%s", tag);
-  ref F = nm(b, sub(b, input(b, FP3_IN_T), cv), s);
-  snprintf(s, sizeof s, "a%s", tag);
-  return nm(b, mul(b, F, input(b, FP3_IN_MINV)), s);
-}
-
-/* Folded h f(x) = hmT - hmC x. */
-static ref fold_k(builder *b, ref x, const char *tag) {
-  char s[16];
-  snprintf(s, sizeof s, "p%s", tag);
-  ref p = nm(b, mul(b, input(b, FP3_IN_HMC), x), s);
-  snprintf(s, sizeof s, "k%s", tag);
-  return nm(b, sub(b, input(b, FP3_IN_HMT), p), s);
-}
-
-/* h f(x): literal h * a, or folded. */
-static ref hf(builder *b, ref x, const char *tag) {
-  if (b->fold) return fold_k(b, x, tag);
-  char s[16];
-  snprintf(s, sizeof s, "k%s", tag);
-  return nm(b, mul(b, input(b, FP3_IN_H), lit_accel(b, x, tag)), s);
-}
-
-static void build_euler(builder *b, int sym) {
-  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
-  ref k = hf(b, v, "");
-  if (b->fold) k = nm(b, k, "dv");
-  ref v1 = nm(b, add(b, v, k), "v1");
-  ref hv = nm(b, mul(b, h, sym ? v1 : v), "hv");
-  b->out[ST_V] = v1;
-  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
-}
-
-static void build_rk2(builder *b) {
-  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
-  ref half = konst(b, FP3_GOLDEN_HALF, "half");
-  ref hk;
-  if (b->fold) { /* h/2 f(v) = (hmT/2) - (hmC/2) v, the halves invariant */
-    ref t = nm(b, mul(b, half, input(b, FP3_IN_HMT)), "hmT2");
-    ref c = nm(b, mul(b, half, input(b, FP3_IN_HMC)), "hmC2");
-    hk = sub(b, t, nm(b, mul(b, c, v), "p1"));
-  } else {
-    ref hh = nm(b, mul(b, half, h), "hh");
-    hk = mul(b, hh, lit_accel(b, v, "1"));
-  }
-  ref vm = nm(b, add(b, v, nm(b, hk, "hk")), "vm");
-  ref hv = nm(b, mul(b, h, vm), "hv");
-  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
-  b->out[ST_V] = nm(b, add(b, v, hf(b, vm, "2")), "v1");
-}
-
-static void build_rk4(builder *b) {
-  ref v = state(b, ST_V), s = state(b, ST_S), h = input(b, FP3_IN_H);
-  ref half = konst(b, FP3_GOLDEN_HALF, "half");
-  ref two = konst(b, FP3_GOLDEN_TWO, "two");
-  ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
-  ref k1 = hf(b, v, "1");
-  ref vt2 = nm(b, add(b, v, nm(b, mul(b, half, k1), "hk1")), "vt2");
-  ref k2 = hf(b, vt2, "2");
-  ref vt3 = nm(b, add(b, v, nm(b, mul(b, half, k2), "hk2")), "vt3");
-  ref k3 = hf(b, vt3, "3");
-  ref vt4 = nm(b, add(b, v, k3), "vt4");
-  ref k4 = hf(b, vt4, "4");
-  ref sum;
-  if (b->fold) { /* (k1 + k4) + 2 (k2 + k3) */
-    ref w = nm(b, mul(b, two, nm(b, add(b, k2, k3), "k23")), "w");
-    sum = add(b, nm(b, add(b, k1, k4), "k14"), w);
-  } else { /* ((k1 + 2 k2) + 2 k3) + k4, as sw/ref/golden.c */
-    sum = nm(b, add(b, k1, nm(b, mul(b, two, k2), "t2")), "sum12");
-    sum = nm(b, add(b, sum, nm(b, mul(b, two, k3), "t3")), "sum123");
-    sum = add(b, sum, k4);
-  }
-  ref dv = nm(b, mul(b, sixth, nm(b, sum, "sum")), "dv");
-  ref v1 = nm(b, add(b, v, dv), "v1");
-  ref hv = nm(b, mul(b, h, v1), "hv");
-  b->out[ST_V] = v1;
-  b->out[ST_S] = nm(b, add(b, s, hv), "s1");
-}
-
-static void build_explicit_euler(builder *b) { build_euler(b, 0); }
-static void build_symplectic_euler(builder *b) { build_euler(b, 1); }
-
-static const struct {
-  const char *name;
-  void (*build)(builder *b);
-} recipes[] = {
-    {"euler", build_explicit_euler},
-    {"symeuler", build_symplectic_euler},
-    {"rk2", build_rk2},
-    {"rk4", build_rk4},
-};
-
-static int build(builder *b, const char *integrator) {
-  for (size_t i = 0; i < sizeof recipes / sizeof recipes[0]; i++)
-    if (strcmp(recipes[i].name, integrator) == 0) {
-      recipes[i].build(b);
-      return 0;
-    }
-  return -1;
-}
-
-const char *fp3_compile_integrators(void) { return "euler symeuler rk2 rk4"; }
-
-int fp3_compile_knows(const char *name) {
-  for (size_t i = 0; i < sizeof recipes / sizeof recipes[0]; i++)
-    if (strcmp(recipes[i].name, name) == 0) return 1;
-  return 0;
 }
 
 static void mark_live(builder *b, int i) {
@@ -327,7 +193,7 @@ struct fp3_compiled {
   fp3_image img;
   fp3_compile_stats stats;
   float val[MAX_NODES];    /* golden model: node values               */
-  float in[MAX_IN];        /* host inputs (the ship: fp3_in_values)    */
+  float in[MAX_IN];        /* host inputs: h, the params, initial values */
   int in_reg[MAX_IN];      /* register of each input, -1: none         */
   int state_reg[MAX_STATE];/* register of each state variable          */
   int host_reg[MAX_NODES]; /* register of each host-computed node, -1   */
@@ -703,43 +569,6 @@ static int schedule_times(const builder *b, const fp3_compile_opts *o, bins *bi,
   return 0;
 }
 
-static int compile_ir(builder *b, const fp3_scene *sc, const char *integrator,
-                      const fp3_compile_opts *o, char *msg, size_t n) {
-  memset(b, 0, sizeof *b);
-  b->fold = o->fold;
-  b->drop_zero = o->drop_zero;
-  b->zero = -1;
-  b->nstate = 2;
-  snprintf(b->st_name[ST_V], FP3_MODEL_NAME_LEN, "v");
-  snprintf(b->st_name[ST_S], FP3_MODEL_NAME_LEN, "s");
-  b->nin = FP3_IN_COUNT;
-  for (int k = 0; k < FP3_IN_COUNT; k++) {
-    snprintf(b->in_name[k], FP3_MODEL_NAME_LEN, "%s", fp3_in_name(k));
-    b->in_state[k] = k == FP3_IN_V0 ? ST_V : k == FP3_IN_S0 ? ST_S : -1;
-  }
-  b->no_drag = b->no_thrust = 1;
-  for (size_t i = 0; i < sc->n; i++) {
-    if (sc->objs[i].C != 0.0f) b->no_drag = 0;
-    if (sc->objs[i].T != 0.0f) b->no_thrust = 0;
-  }
-  if (build(b, integrator)) {
-    snprintf(msg, n, "unknown integrator '%s' (the compiler knows: %s)", integrator,
-             fp3_compile_integrators());
-    return -1;
-  }
-  if (b->err) {
-    snprintf(msg, n, "the IR has more than %d nodes", MAX_NODES);
-    return -1;
-  }
-  if (b->out[ST_V].neg || b->out[ST_S].neg) {
-    snprintf(msg, n, "internal: a negated result");
-    return -1;
-  }
-  mark_live(b, b->out[ST_V].n);
-  mark_live(b, b->out[ST_S].n);
-  return 0;
-}
-
 /* 0 if the options are usable, else -1 with the reason. */
 static int check_opts(const fp3_compile_opts *o, char *msg, size_t n) {
   if (o->num_regs < 4 || o->num_regs > FP3_MAX_REGS || o->max_regs > FP3_MAX_REGS ||
@@ -791,12 +620,11 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
     const char *mn = kind_mnemonic[x->kind];
     const char *flag = x->kind == NK_DIV ? "HAS_DIV" : x->kind == NK_SQRT ? "HAS_SQRT" : NULL;
     if (flag)
-      snprintf(msg, n, "%s %s needs %s: this build has no %s unit (the ISA table has no "
-               "'%s' instruction)", b->model ? "model" : "scene",
-               b->model ? b->model->name : "", mn, flag, mn);
+      snprintf(msg, n, "model %s needs %s: this build has no %s unit (the ISA table has no "
+               "'%s' instruction)", b->model->name, mn, flag, mn);
     else
-      snprintf(msg, n, "%s %s needs %s: the ISA table has no '%s' instruction",
-               b->model ? "model" : "scene", b->model ? b->model->name : "", mn, mn);
+      snprintf(msg, n, "model %s needs %s: the ISA table has no '%s' instruction",
+               b->model->name, mn, mn);
     goto out;
   }
 
@@ -991,29 +819,19 @@ static int backend(fp3_compiled *c, const fp3_compile_opts *o, const char *head,
       o->fmax_pipe ? " for FMAX_PIPE=1" : "",
       unit_latency(o, FP3_UNIT_ADD), unit_latency(o, FP3_UNIT_MUL), unit_latency(o, FP3_UNIT_MOV),
       c->stats.est_cycles_first, c->stats.est_cycles_later);
-  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compiler/compile.c, fp3_compiled_golden)\n\n");
-  if (!b->model) {
-    for (int k = 0; k < b->nin; k++)
-      if (in_reg[k] >= 0) {
-        char nm_[16];
-        snprintf(nm_, sizeof nm_, "%s,", b->in_name[k]);
-        fp3_strbuf_printf(&t, ".in  %-5s r%d\n", nm_, in_reg[k]);
-      }
-    fp3_strbuf_printf(&t, ".out v,    r%d\n.out s,    r%d\n\n", state_reg[ST_V], state_reg[ST_S]);
-  } else {
-    /* a model's names are not the assembler's .in / .out names: the
-     * bindings are comments, and fp3_compiled_model_inputs gives them */
-    fp3_strbuf_printf(&t, "; host inputs (written before the run):\n");
-    for (int k = 0; k < b->nin; k++)
-      if (in_reg[k] >= 0) fp3_strbuf_printf(&t, ";   %-12s r%d\n", b->in_name[k], in_reg[k]);
-    for (int i = 0; i < b->nn; i++)
-      if (b->nd[i].live && b->nd[i].host) {
-        char d[NOTE_LEN];
-        describe(b, i, d, sizeof d);
-        fp3_strbuf_printf(&t, ";   %-12s r%d  (host: %s)\n", b->nd[i].name, ra->reg[i], d);
-      }
-    fp3_strbuf_printf(&t, "; results: the state registers above, after each endi\n\n");
-  }
+  fp3_strbuf_printf(&t, ";\n; golden model: the IR in C binary32 (sw/compiler/compile.c, fp3_compiled_model_step)\n\n");
+  /* a model's names are not the assembler's .in / .out names: the
+   * bindings are comments, and fp3_compiled_model_start gives them */
+  fp3_strbuf_printf(&t, "; host inputs (written before the run):\n");
+  for (int k = 0; k < b->nin; k++)
+    if (in_reg[k] >= 0) fp3_strbuf_printf(&t, ";   %-12s r%d\n", b->in_name[k], in_reg[k]);
+  for (int i = 0; i < b->nn; i++)
+    if (b->nd[i].live && b->nd[i].host) {
+      char d[NOTE_LEN];
+      describe(b, i, d, sizeof d);
+      fp3_strbuf_printf(&t, ";   %-12s r%d  (host: %s)\n", b->nd[i].name, ra->reg[i], d);
+    }
+  fp3_strbuf_printf(&t, "; results: the state registers above, after each endi\n\n");
   if (nregs > FP3_DEFAULT_NUM_REGS) fp3_strbuf_printf(&t, ".regs %u\n\n", nregs);
   for (size_t k = 0; k < ni; k++) {
     const insn *x = &code[k];
@@ -1051,55 +869,6 @@ out:
   return rc;
 }
 
-
-int fp3_compile(const fp3_scene *sc, const char *integrator, const fp3_compile_opts *o,
-                const char *scene_name, fp3_compiled **outp, char *msg, size_t n) {
-  *outp = NULL;
-  if (sc->n == 0) {
-    snprintf(msg, n, "the scene has no objects");
-    return -1;
-  }
-  if (check_opts(o, msg, n)) return -1;
-  fp3_compiled *c = calloc(1, sizeof *c);
-  if (!c) {
-    snprintf(msg, n, "out of memory");
-    return -1;
-  }
-  fp3_strbuf h = {0};
-  int rc = -1;
-  /* the literal program, for the report */
-  fp3_compile_opts lit = *o;
-  lit.fold = lit.drop_zero = 0;
-  if (compile_ir(&c->b, sc, integrator, &lit, msg, n)) goto out;
-  count_literal(c);
-  if (compile_ir(&c->b, sc, integrator, o, msg, n)) goto out;
-  builder *b = &c->b;
-  c->stats.no_drag = b->no_drag;
-  c->stats.no_thrust = b->no_thrust;
-  const char *integ_desc = o->fold ? "folded" : "literal (the paper's operations)";
-  fp3_strbuf_printf(&h, "; %s -- compiled by `fp3 compile` for integrator %s, %s%s\n",
-      scene_name ? scene_name : "scene", integrator, integ_desc,
-      o->drop_zero ? ", terms zero in the scene removed" : "");
-  fp3_strbuf_printf(&h, ";\n; scene: %zu object%s, h = %.9g s\n", sc->n, sc->n == 1 ? "" : "s",
-      (double)sc->objs[0].h);
-  if (o->fold)
-    fp3_strbuf_printf(&h, "; folded: h f(x) = hmT - hmC x with hmT = (h*minv)*T, hmC = (h*minv)*C,\n"
-            ";   computed by the host in binary32 (RNE) once per object\n");
-  if (o->drop_zero && b->no_drag)
-    fp3_strbuf_printf(&h, "; removed: the drag terms (C = 0 in every object)\n");
-  if (o->drop_zero && b->no_thrust)
-    fp3_strbuf_printf(&h, "; removed: the thrust terms (T = 0 in every object)\n");
-  if (h.oom) {
-    snprintf(msg, n, "out of memory");
-    goto out;
-  }
-  rc = backend(c, o, h.s, msg, n);
-out:
-  free(h.s);
-  if (rc) fp3_compiled_free(c);
-  else *outp = c;
-  return rc;
-}
 
 void fp3_compiled_free(fp3_compiled *c) {
   if (!c) return;
@@ -2011,25 +1780,6 @@ static void golden_advance(fp3_compiled *c, float *y) {
   for (int w = 0; w < b->nstate; w++) y[w] = c->val[b->out[w].n];
   for (int i = 0; i < b->nn; i++)
     if (b->nd[i].kind == NK_STATE) c->val[i] = y[b->nd[i].id];
-}
-
-static void golden_start(void *ctx, const fp3_ship_params *p) {
-  fp3_compiled *c = ctx;
-  fp3_in_values(p, c->in);
-  const float y0[2] = {p->v0, p->s0};
-  golden_begin(c, y0);
-}
-
-static void golden_step(void *ctx, float *v, float *s) {
-  float y[2];
-  golden_advance(ctx, y);
-  *v = y[ST_V];
-  *s = y[ST_S];
-}
-
-fp3_golden_ref fp3_compiled_golden(fp3_compiled *c) {
-  fp3_golden_ref g = {c, golden_start, golden_step};
-  return g;
 }
 
 /* ---- output file ----------------------------------------------------------- */

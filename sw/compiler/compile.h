@@ -1,28 +1,36 @@
 /*
- * compile.h -- the scene compiler (`fp3 compile`): from a scene (objects.h)
- * and an integrator, an FP3 program that computes only what the scene
- * needs, and its golden model.
+ * compile.h -- the compiler (`fp3 compile`): from a model (model.h) and an
+ * integrator, and the params that are zero in every object of a scene, an
+ * FP3 program that computes only what the scene needs, and its golden
+ * model.
  *
- * The compiler builds a small expression IR: a DAG of binary32 add, sub
- * and mul over per-object host inputs (`.in`, image.h), constants (`li`)
- * and the loop-carried state v, s.  Then:
+ * The compiler builds a small expression IR: a DAG of binary32 operations
+ * (add, sub, mul, and div, sqrt, abs, neg, min, max where the model has
+ * them) over per-object host inputs (h, the params, each carried value's
+ * initial value), constants (`li`) and the loop-carried state.  Then:
  *
- *  - folding (opts.fold): the integrator is written with the folded host
- *    inputs hmT = (h*minv)*T and hmC = (h*minv)*C, so h f(x) = hmT - hmC*x
- *    costs 2 operations instead of 4, and RK4's weighted sum is summed as
- *    (k1 + k4) + 2 (k2 + k3).  A folded program is a different rounding
- *    sequence from the literal one: its own golden model is its reference;
- *  - zero terms (opts.drop_zero): when C == 0 in every object the drag
- *    products and subtractions go, when T == 0 in every object the thrust
- *    terms go (T - x becomes -x, and the negation is carried into the
- *    consumers: a + (-b) = a - b, (-a) b = -(a b), exact in RNE and RTZ).
- *    For finite values this is the same rounding sequence except for the
- *    sign of an exactly zero intermediate (T = -0, or a sum of two
- *    negated terms that cancels to zero);
+ *  - folding (opts.fold): a derivative affine in the state with
+ *    parameter-only coefficients is multiplied by the step as
+ *    h f = (h c0) + sum_s (h c_s) y_s, each product computed by the host
+ *    (the ship's v' = (T - C v) minv gives h f(v) = hmT - hmC v with hmT =
+ *    (h minv) T, hmC = (h minv) C: 2 operations instead of 4); a division
+ *    by a parameter-only value becomes a product with the host's
+ *    reciprocal; RK4's weighted sum is summed as (k1 + k4) + 2 (k2 + k3);
+ *    a sum of two negated terms becomes one negated sum.  A folded program
+ *    is a different rounding sequence from the literal one: its own golden
+ *    model is its reference;
+ *  - zero terms (opts.drop_zero): the terms of a param that is zero in
+ *    every object go (the ship without drag, C = 0: the drag products and
+ *    subtractions; without thrust, T = 0: T - x becomes -x, and the
+ *    negation is carried into the consumers: a + (-b) = a - b, (-a) b =
+ *    -(a b), exact in RNE and RTZ).  For finite values this is the same
+ *    rounding sequence except for the sign of an exactly zero intermediate
+ *    (a param that is -0);
  *  - common subexpressions are shared, operations on inputs and constants
  *    alone (loop invariants) move to the prologue (run once per run, in
- *    the cores' rounding), and operations nothing reads are removed (dead
- *    code elimination) -- all three exact;
+ *    the cores' rounding) or to the host (div, sqrt and the sign
+ *    operations, which need no unit there), and operations nothing reads
+ *    are removed (dead code elimination) -- all exact;
  *  - the loop body is list-scheduled for in-order single issue (a
  *    dependent instruction issues FP3_READ_CYCLES + `latency` cycles
  *    after its producer, one context every FP3_ISSUE_SPACING cycles
@@ -37,13 +45,14 @@
  *    instruction that stays within the bound first, compile.c schedule),
  *    which fits 3-D RK4 (about 130 instructions) into 32 registers where
  *    latency first needs 36 or more; failing that, the program is
- *    refused with the numbers ("the program needs 34 registers; NUM_REGS
+ *    refused with the numbers ("the program needs 33 registers; NUM_REGS
  *    is 32"), or compiled for a larger build (opts.max_regs).
  *
- * Integrators: euler, symeuler, rk2, rk4 (integrators.h).  With fold = 0
+ * Integrators: those of model.h (fp3_model_integrators).  With fold = 0
  * and drop_zero = 0 the compiled program performs exactly the operations
- * of programs/ship_<name>.s, so its golden model equals the integrator's
- * (sw/ref/integrators.c) bit for bit.
+ * of the integrator's literal golden model (fp3_model_step_literal; the
+ * ship's rk4se: those of programs/ship_rk4.s), so its golden model equals
+ * that one bit for bit.
  */
 #ifndef FP3_COMPILE_H
 #define FP3_COMPILE_H
@@ -55,7 +64,6 @@
 #include "image.h"
 #include "model.h"
 #include "mscene.h"
-#include "objects.h"
 
 /* Compiler options. */
 typedef struct fp3_compile_opts {
@@ -114,27 +122,9 @@ typedef struct fp3_compile_stats {
                                 opts.num_regs, or more with max_regs    */
   unsigned est_cycles_first; /* first integration, prologue included      */
   unsigned est_cycles_later; /* each later integration (steady state)     */
-  int no_drag;               /* C == 0 in every object                    */
-  int no_thrust;             /* T == 0 in every object                    */
 } fp3_compile_stats;
 
 typedef struct fp3_compiled fp3_compiled;
-
-/* Space-separated names of the integrators the compiler knows. */
-const char *fp3_compile_integrators(void);
-
-/* 1 if the compiler knows integrator `name`, else 0. */
-int fp3_compile_knows(const char *name);
-
-/* Compile scene sc for integrator `integrator`; scene_name names the scene
- * in the program's header comment.  Returns 0 and *out (free with
- * fp3_compiled_free), or -1 with a message: unknown integrator, empty
- * scene, bad options (num_regs outside 4..256, a latency of 0, fmax_pipe
- * not 0 or 1, or with a core latency it does not allow), more registers
- * than num_regs, a body longer than the instruction memory. */
-int fp3_compile(const fp3_scene *sc, const char *integrator,
-                const fp3_compile_opts *opts, const char *scene_name,
-                fp3_compiled **out, char *msg, size_t n);
 
 void fp3_compiled_free(fp3_compiled *c);
 
@@ -145,11 +135,6 @@ const char *fp3_compiled_text(const fp3_compiled *c);
 const fp3_image *fp3_compiled_image(const fp3_compiled *c);
 
 const fp3_compile_stats *fp3_compiled_stats(const fp3_compiled *c);
-
-/* The golden model of the compiled program: the IR evaluated in C
- * binary32, one operation per node, independent of the schedule, the
- * registers and the engines.  Its state lives in c (one object at a time). */
-fp3_golden_ref fp3_compiled_golden(fp3_compiled *c);
 
 /* Write the text to path atomically (a temporary file in the same
  * directory, then rename): on error no file is left.  0 or -1 with a
@@ -202,7 +187,7 @@ unsigned fp3_image_body_insns(const fp3_image *img);
  * message: unknown integrator, symeuler on an unsplit model, an operation
  * the ISA table lacks ("model projectile needs sqrt: this build has no
  * HAS_SQRT unit ..."), more registers than num_regs (and max_regs: "the
- * program needs 34 registers; NUM_REGS is 32 ...") or words than
+ * program needs 33 registers; NUM_REGS is 32 ...") or words than
  * IMEM_DEPTH ("the program needs 290 instructions; IMEM_DEPTH is 256").
  * A program compiled for more than FP3_DEFAULT_NUM_REGS registers starts
  * with `.regs N` (asm.h). 

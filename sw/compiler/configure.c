@@ -84,56 +84,6 @@ static double rel_error(double maxdiff, double maxabs) {
   return maxdiff / (maxabs > 1.0 ? maxabs : 1.0);
 }
 
-/* The error of every candidate mode over all objects (r->err). */
-static int measure_modes(fp3_compiled *c, const fp3_scene *sc, uint32_t steps,
-                         fp3_configure_result *r, char *msg, size_t n) {
-  double *vex = malloc(steps * sizeof *vex), *sex = malloc(steps * sizeof *sex);
-  if (!vex || !sex) {
-    free(vex);
-    free(sex);
-    snprintf(msg, n, "out of memory");
-    return -1;
-  }
-  fp3_golden_ref g = fp3_compiled_golden(c);
-  for (int m = 0; m < FP3_CONFIGURE_MODES; m++)
-    r->err[m] = r->added[m] = fpenv_supported(r->mode[m]) ? 0.0 : NAN;
-  for (size_t i = 0; i < sc->n; i++) {
-    const fp3_ship_params *p = &sc->objs[i];
-    double vmax = 0, smax = 0;
-    for (uint32_t k = 1; k <= steps; k++) { /* in the host's default mode */
-      fp3_ship_exact(p->T, p->C, p->m, p->v0, p->s0, (double)k * (double)p->h, &vex[k - 1],
-                     &sex[k - 1]);
-      vmax = fmax(vmax, fabs(vex[k - 1]));
-      smax = fmax(smax, fabs(sex[k - 1]));
-    }
-    double e_rne = 0;
-    for (int m = 0; m < FP3_CONFIGURE_MODES; m++) {
-      if (isnan(r->err[m])) continue;
-      fpenv_saved env;
-      if (fpenv_enter(r->mode[m], &env)) continue;
-      double dv = 0, ds = 0;
-      g.start(g.ctx, p);
-      for (uint32_t k = 1; k <= steps; k++) {
-        float v, s;
-        g.step(g.ctx, &v, &s);
-        /* non-finite results count as infinitely wrong */
-        double ev = isfinite(v) ? fabs((double)v - vex[k - 1]) : INFINITY;
-        double es = isfinite(s) ? fabs((double)s - sex[k - 1]) : INFINITY;
-        if (ev > dv) dv = ev;
-        if (es > ds) ds = es;
-      }
-      fpenv_leave(&env);
-      double e = fmax(rel_error(dv, vmax), rel_error(ds, smax));
-      if (m == 0) e_rne = e;
-      if (e > r->err[m]) r->err[m] = e;
-      if (m > 0 && e - e_rne > r->added[m]) r->added[m] = e - e_rne;
-    }
-  }
-  free(vex);
-  free(sex);
-  return 0;
-}
-
 /* Reference states of one model object at every integration (GSL). */
 typedef struct refrec {
   unsigned ns;
@@ -152,7 +102,8 @@ static void ref_cb(void *ctx, uint32_t k, const double *y) {
 /* The error of every candidate mode for a model scene: the compiled
  * program's golden model in each mode (host values in the same mode)
  * against the GSL reference (modelref.h) at every integration, the same
- * relative measure as measure_modes over every state variable. */
+ * relative measure max_k |x_k - e_k| / max(max_k |e_k|, 1) of every state
+ * variable, the largest. */
 static int measure_model_modes(fp3_compiled *c, const fp3_mscene *sc, uint32_t steps,
                                fp3_configure_result *r, char *msg, size_t n) {
   const fp3_model *m = sc->model;
@@ -205,33 +156,15 @@ static int measure_model_modes(fp3_compiled *c, const fp3_mscene *sc, uint32_t s
   return 0;
 }
 
-/* What is configured: a ship scene or a model scene, compiled and measured
- * by its own front end. */
+/* What is configured: a model scene and its params zero in every object. */
 typedef struct cfg_src {
-  const fp3_scene *ship;   /* a ship scene, or NULL                         */
-  const fp3_mscene *ms;    /* a model scene, or NULL                        */
-  const char *name;        /* the ship scene's name (program header)        */
-  unsigned char zero[FP3_MODEL_MAX_VARS]; /* model params zero everywhere  */
+  const fp3_mscene *ms;
+  unsigned char zero[FP3_MODEL_MAX_VARS];
 } cfg_src;
-
-static int src_compile(const cfg_src *s, const char *integ, const fp3_compile_opts *co,
-                       fp3_compiled **c, char *msg, size_t n) {
-  if (s->ship) return fp3_compile(s->ship, integ, co, s->name, c, msg, n);
-  return fp3_compile_model(s->ms->model, integ, co, s->zero, c, msg, n);
-}
 
 static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
                          fp3_configure_result *r, fp3_compiled **compiled, char *msg,
                          size_t n);
-
-int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
-                  fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n) {
-  cfg_src src;
-  memset(&src, 0, sizeof src);
-  src.ship = sc;
-  src.name = scene_name;
-  return configure_src(&src, o, r, compiled, msg, n);
-}
 
 int fp3_configure_model(const fp3_mscene *sc, const fp3_configure_opts *o,
                         fp3_configure_result *r, fp3_compiled **compiled, char *msg,
@@ -252,8 +185,12 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
                          fp3_configure_result *r, fp3_compiled **compiled, char *msg,
                          size_t n) {
   memset(r, 0, sizeof *r);
-  const size_t nobj = src->ship ? src->ship->n : src->ms->n;
+  const size_t nobj = src->ms->n;
   if (compiled) *compiled = NULL;
+  if (nobj == 0) {
+    snprintf(msg, n, "the scene has no objects");
+    return -1;
+  }
   if (!(o->budget > 0.0) || !isfinite(o->budget)) {
     snprintf(msg, n, "the error budget must be a positive number");
     return -1;
@@ -279,7 +216,7 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
    * for the fewest registers above its NUM_REGS it fits */
   fp3_compiled *c = NULL;
   co.max_regs = FP3_MAX_REGS;
-  if (src_compile(src, integ, &co, &c, msg, n)) return -1;
+  if (fp3_compile_model(src->ms->model, integ, &co, src->zero, &c, msg, n)) return -1;
 
   /* write-back ports: one unless the program divides or takes a root
    * (the units do not depend on the latencies compiled for) */
@@ -308,7 +245,7 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
     co.max_regs = FP3_MAX_REGS;
     fp3_compiled_free(c);
     c = NULL;
-    if (src_compile(src, integ, &co, &c, msg, n)) return -1;
+    if (fp3_compile_model(src->ms->model, integ, &co, src->zero, &c, msg, n)) return -1;
   }
   co.max_regs = 0;
   co.num_regs = fp3_compiled_stats(c)->num_regs;
@@ -324,7 +261,7 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
     ko.num_regs = k;
     fp3_compiled *ck = NULL;
     char kmsg[256];
-    if (src_compile(src, integ, &ko, &ck, kmsg, sizeof kmsg)) continue;
+    if (fp3_compile_model(src->ms->model, integ, &ko, src->zero, &ck, kmsg, sizeof kmsg)) continue;
     const fp3_compile_stats *st = fp3_compiled_stats(ck);
     if (st->est_cycles_first == r->est_first && st->est_cycles_later == r->est_later) {
       fp3_compiled_free(c);
@@ -385,8 +322,7 @@ static int configure_src(const cfg_src *src, const fp3_configure_opts *o,
     r->mode[m].ftz = (m & 2) ? 1 : 0;
     r->luts[m] = (r->cfg.has_add ? add_luts[m] : 0) + (r->cfg.has_mul ? mul_luts[m] : 0);
   }
-  if (src->ship ? measure_modes(c, src->ship, o->steps, r, msg, n)
-                : measure_model_modes(c, src->ms, o->steps, r, msg, n)) {
+  if (measure_model_modes(c, src->ms, o->steps, r, msg, n)) {
     fp3_compiled_free(c);
     return -1;
   }

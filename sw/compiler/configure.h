@@ -1,6 +1,7 @@
 /*
- * configure.h -- hardware sized to the scene (`fp3 configure`): from a scene and an integrator, the RTL parameters of a build
- * that runs the scene's compiled program and nothing more.
+ * configure.h -- hardware sized to the scene (`fp3 configure`): from a
+ * scene of a model (mscene.h) and an integrator, the RTL parameters of a
+ * build that runs the scene's compiled program and nothing more.
  *
  * The scene is compiled as `fp3 run --scene` compiles it (compile.h), and
  * each parameter follows from the compiled program or the scene:
@@ -13,7 +14,7 @@
  *    its estimated cycles of the first and of each later integration of one
  *    object equal those of the compilation with the default NUM_REGS (a
  *    program that needs more than the default, 3-D RK4 folded, gets the
- *    fewest registers the compiler schedules it into: NUM_REGS=34).  A
+ *    fewest registers the compiler schedules it into: NUM_REGS=33).  A
  *    build with NUM_REGS = k compiles exactly that program (`fp3 run
  *    --scene` compiles for the NUM_REGS it reads back from the hardware),
  *    and the program names registers below k only.  (The compiler takes
@@ -39,11 +40,12 @@
  *    runs in batches of NUM_CONTEXTS x NUM_LANES objects;
  *  - ROUND, FTZ: the cheapest FP core mode whose results stay within the
  *    error budget.  Each candidate mode (RNE, RTZ, RNE+FTZ, RTZ+FTZ) runs
- *    the program's golden model (fp3_compiled_golden, in that mode through
- *    fpenv.h) for every object and `steps` integrations; its error is the
- *    largest, over objects and over v and s, of
- *        max_k |x_k - exact(t_k)| / max(max_k |exact(t_k)|, 1)
- *    (analytic.h, k = 1 .. steps).  RNE with subnormals (the default build)
+ *    the program's golden model (fp3_compiled_model_step, in that mode
+ *    through fpenv.h) for every object and `steps` integrations; its error
+ *    is the largest, over objects and state variables, of
+ *        max_k |x_k - ref(t_k)| / max(max_k |ref(t_k)|, 1)
+ *    (ref: the model's GSL reference, modelref.h, rk8pd at 1e-12, k = 1
+ *    .. steps).  RNE with subnormals (the default build)
  *    is always allowed; its error is the integrator's and binary32's own
  *    (the paper's s = s + h v1 is first order: about 1e-3 after 1000 steps
  *    of 1/60 s).  The budget is what a cheaper mode may add to it: a mode
@@ -80,7 +82,6 @@
 #include "device.h"
 #include "engine.h"
 #include "mscene.h"
-#include "objects.h"
 
 /* The instruction groups a build may leave out, in the order of unit_pc:
  * add (or sub), sub, mul, div, sqrt, the sign group (abs, neg, min, max);
@@ -143,24 +144,17 @@ typedef struct fp3_configure_result {
   int chosen;              /* index of the mode in cfg.mode                */
 } fp3_configure_result;
 
-/* Derive the parameters for scene sc (scene_name: for the program's
- * header).  Returns 0 and *r, or -1 with a message: unknown integrator,
- * empty scene, bad options (budget not a positive finite number, steps 0,
- * max_lanes outside 1 .. FP3_MAX_LANES, wb_ports not 0, 1 or 4), one
- * write-back port asked for a program with div or sqrt, a device that
- * does not hold one lane of the build,
- * out of memory.  *compiled (if not NULL) receives the program compiled
- * for the derived NUM_REGS (free with fp3_compiled_free). */
-int fp3_configure(const fp3_scene *sc, const char *scene_name, const fp3_configure_opts *o,
-                  fp3_configure_result *r, fp3_compiled **compiled, char *msg, size_t n);
-
-/* The same for a model scene (mscene.h): its model compiled as `fp3 run
- * --scene` compiles it (params zero in every object removed unless
- * o->literal), the units, NUM_REGS and NUM_CONTEXTS by the rules above;
- * ROUND and FTZ by the same error measure, with the model's GSL reference
- * (modelref.h, rk8pd at 1e-12) at every integration in place of the exact
- * solution, over every state variable.  Errors as fp3_configure, and a
- * reference that fails (a message naming the object). */
+/* Derive the parameters for model scene sc: its model compiled as `fp3
+ * run --scene` compiles it (params zero in every object removed unless
+ * o->literal), the units, NUM_REGS and NUM_CONTEXTS, ROUND and FTZ by the
+ * rules above.  Returns 0 and *r, or -1 with a message: unknown
+ * integrator, empty scene, bad options (budget not a positive finite
+ * number, steps 0, max_lanes outside 1 .. FP3_MAX_LANES, wb_ports not 0,
+ * 1 or 4), one write-back port asked for a program with div or sqrt, a
+ * device that does not hold one lane of the build, a reference that fails
+ * (naming the object), out of memory.  *compiled (if not NULL) receives
+ * the program compiled for the derived NUM_REGS (free with
+ * fp3_compiled_free). */
 int fp3_configure_model(const fp3_mscene *sc, const fp3_configure_opts *o,
                         fp3_configure_result *r, fp3_compiled **compiled, char *msg,
                         size_t n);

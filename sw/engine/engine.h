@@ -257,7 +257,7 @@ const char *fp3_engine_error(const fp3_engine *e);
  * fp3_engine_show_progress(e, "fp3 run") the runs on e that may last long
  * show a progress line on stderr when it is a terminal, prefixed with the
  * label: fp3_engine_run counts the integrations of context 0, and the runs
- * of many objects (fp3_run_objects, fp3_run_state_objects) their
+ * of many objects (fp3_run_state_objects) their
  * object-steps, those frame by frame (fp3_run_state_frames) their
  * frames.  fp3_engine_run_contexts alone shows
  * none: its caller knows the whole run.  label NULL (an engine's default)

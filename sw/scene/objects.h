@@ -1,6 +1,7 @@
 /*
- * objects.h -- scenes of many ships, run on the contexts of an engine and
- * checked object by object against the golden model.
+ * objects.h -- scenes of ships in the paper's five columns, read and
+ * generated; every command reads them as scenes of models/ship.fp3m
+ * (mscene.h fp3_mscene_read_any, fp3_mscene_from_ships).
  *
  * Scene file: text, one object per line, `#` starts a comment:
  *
@@ -19,10 +20,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "engine.h"
 #include "golden.h"
 #include "image.h"
-#include "integrators.h"
 
 /* A scene: n objects, all with the same h (objs[i].h). */
 typedef struct fp3_scene {
@@ -77,68 +76,5 @@ void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]);
 /* Write the `.in` registers of img for object p into regs[] (registers the
  * image does not bind are left alone). */
 void fp3_in_registers(const fp3_image *img, const fp3_ship_params *p, uint32_t *regs);
-
-/* A golden model of one object, as fp3_run_objects() uses it: start() sets
- * the object (v = v0, s = s0, and any prologue arithmetic), step() runs
- * one integration and returns v and s.  Both run inside the cores' FP mode
- * (fpenv_enter).  The state lives in *ctx: one object at a time. */
-typedef struct fp3_golden_ref {
-  void *ctx;
-  void (*start)(void *ctx, const fp3_ship_params *p);
-  void (*step)(void *ctx, float *v, float *s);
-} fp3_golden_ref;
-
-/* Storage of the golden model of an integrator (integrators.h). */
-typedef struct fp3_integ_golden {
-  const fp3_integrator *integ;
-  fp3_istate st;
-} fp3_integ_golden;
-
-/* The golden model of integrator ig, its state in *storage (which must
- * outlive the returned reference). */
-fp3_golden_ref fp3_golden_of_integrator(fp3_integ_golden *storage,
-                                        const fp3_integrator *ig);
-
-/* Outcome of a multi-object run. */
-typedef struct fp3_objects_result {
-  size_t objects;
-  unsigned contexts;       /* contexts per batch (the engine's)            */
-  unsigned lanes;          /* lanes per context (the engine's): a batch is
-                              contexts x lanes objects (engine.h slots)    */
-  size_t batches;
-  uint64_t cycles;         /* sum over batches                             */
-  uint64_t issued, stalls;
-  uint64_t unit_issued[FP3_NUM_UNITS]; /* per unit, FP3_UNIT_*              */
-  uint32_t flags;          /* sticky exception flags, all batches          */
-  unsigned error;          /* first context error (enum fp3_error)         */
-  size_t error_object;     /* ... of this object                           */
-  uint32_t error_pc;
-  uint64_t mismatches;     /* (object, integration, v or s) != golden      */
-  size_t first_object;     /* first mismatch                               */
-  uint32_t first_step;
-  uint32_t *v, *s;         /* final v and s of each object (malloc'd)       */
-} fp3_objects_result;
-
-/* What running objects of program img on engine e needs: `.out v` and
- * `.out s`, every `.in` register inside the engine's NUM_REGS, and a host
- * that can run the golden model in core options `mode`.  Returns 0, or -1
- * with the reason in msg. */
-int fp3_objects_check(const fp3_engine *e, const fp3_image *img, fpref_mode mode, char *msg,
-                      size_t n);
-
-/* Run every object of the scene for `steps` integrations on the engine, in
- * batches of fp3_config_slots(&e->config) objects (contexts x lanes), writing each object's `.in`
- * registers (fp3_in_registers), and compare v and s of every object after
- * every integration with the golden model (run in core options `mode`).
- * The object-steps count on the engine's progress line
- * (fp3_engine_show_progress).
- * Returns 0 when the runs took place (mismatches and errors are in *res),
- * or -1 with a message (engine failure, out of memory, program without
- * .out v/s). */
-int fp3_run_objects(fp3_engine *e, const fp3_image *img, const fp3_scene *sc,
-                    uint32_t steps, fpref_mode mode, const fp3_golden_ref *golden,
-                    fp3_objects_result *res, char *msg, size_t n);
-
-void fp3_objects_result_free(fp3_objects_result *res);
 
 #endif /* FP3_OBJECTS_H */
