@@ -45,8 +45,10 @@
 #include "fp3_isa.h"
 #include "fp3_model.h"
 #include "fpref.h"
+#include "compile.h"
 #include "golden.h"
 #include "image.h"
+#include "model.h"
 
 #define RESP_OKAY   0u
 #define RESP_SLVERR 2u
@@ -357,30 +359,65 @@ static void engine_run(fp3_engine *e, const fp3_image *img, const uint32_t *init
     assert_int_equal(fp3_engine_read_reg(e, r, &res->regs[r]), 0);
 }
 
-static void load_ship(fp3_image *img) {
-  char *errors = NULL;
-  fp3_image_init(img);
-  if (fp3_asm_file("programs/ship_rk4.s", img, &errors) != 0) {
+/* programs/ship_rk4.s, bound by name to models/ship.fp3m (its golden
+ * model: the literal rk4se); sp->c is freed by ship_free. */
+typedef struct ship_prog {
+  fp3_image img;
+  fp3_compiled *c;
+  unsigned vreg, sreg; /* the registers of v and s */
+} ship_prog;
+
+static void load_ship(ship_prog *sp) {
+  static fp3_model m;
+  static int loaded;
+  char *errors = NULL, msg[300];
+  if (!loaded && fp3_model_load("models/ship.fp3m", &m, msg, sizeof msg)) fail_msg("%s", msg);
+  loaded = 1;
+  fp3_image_init(&sp->img);
+  if (fp3_asm_file("programs/ship_rk4.s", &sp->img, &errors) != 0) {
     fprintf(stderr, "%s", errors ? errors : "");
     free(errors);
     fail_msg("programs/ship_rk4.s does not assemble");
   }
+  fp3_compile_opts o;
+  fp3_compile_defaults(&o);
+  if (fp3_compile_bind(&m, &sp->img, "programs/ship_rk4.s", &o, &sp->c, msg, sizeof msg))
+    fail_msg("%s", msg);
+  sp->vreg = fp3_compiled_state_reg(sp->c, 0);
+  sp->sreg = fp3_compiled_state_reg(sp->c, 1);
 }
 
-static void ship_init(const fp3_image *img, const fp3_ship_params *p, uint32_t *init) {
-  float values[FP3_IN_COUNT] = {p->T, p->C, p->m, fp3_ship_minv(p->m), p->h, p->v0, p->s0};
+static void ship_free(ship_prog *sp) { fp3_compiled_free(sp->c); }
+
+/* The register bank the host writes for ship p (init[MAX_REGS], zeroed
+ * first), and the golden model started on it. */
+static void ship_init(ship_prog *sp, const fp3_ship_params *p, uint32_t *init) {
+  const float in[4] = {p->h, p->T, p->C, p->m}, y0[2] = {p->v0, p->s0};
+  unsigned reg[16];
+  uint32_t val[16];
   memset(init, 0, MAX_REGS * sizeof *init);
-  for (int i = 0; i < FP3_IN_COUNT; i++) {
-    if (img->in_reg[i] >= 0) init[img->in_reg[i]] = fpref_bits(values[i]);
-  }
+  const size_t nw = fp3_compiled_model_start(sp->c, in, y0, reg, val, 16);
+  for (size_t w = 0; w < nw; w++) init[reg[w]] = val[w];
+}
+
+/* v and s (bits) after `steps` golden integrations of ship p. */
+static void ship_golden(ship_prog *sp, const fp3_ship_params *p, uint32_t steps, uint32_t *v,
+                        uint32_t *s) {
+  uint32_t init[MAX_REGS];
+  float y[2 * FP3_MODEL_MAX_VARS];
+  ship_init(sp, p, init);
+  for (uint32_t i = 0; i < steps; i++) fp3_compiled_model_step(sp->c, y);
+  *v = fpref_bits(y[0]);
+  *s = fpref_bits(y[1]);
 }
 
 static void check_ship(const build *bd, const fp3_ship_params *p, uint32_t steps, axi_policy pol,
                        uint32_t seed) {
-  fp3_image img;
-  load_ship(&img);
+  ship_prog sp;
+  load_ship(&sp);
+  const fp3_image img = sp.img;
   uint32_t init[MAX_REGS];
-  ship_init(&img, p, init);
+  ship_init(&sp, p, init);
 
   bus b;
   bus_open(&b, bd, seed, pol);
@@ -411,13 +448,13 @@ static void check_ship(const build *bd, const fp3_ship_params *p, uint32_t steps
   assert_int_equal(ax.st.cycles, hp.st.cycles);
   assert_int_equal(ax.st.stalls, hp.st.stalls);
   /* v and s: the golden model. */
-  fp3_ship_state g;
-  fp3_golden_init(&g, p);
-  for (uint32_t i = 0; i < steps; i++) fp3_golden_step(&g);
-  uint32_t v = ax.regs[img.out_reg[FP3_OUT_V]], s = ax.regs[img.out_reg[FP3_OUT_S]];
-  if (v != fpref_bits(g.v) || s != fpref_bits(g.s))
+  uint32_t gv, gs;
+  ship_golden(&sp, p, steps, &gv, &gs);
+  uint32_t v = ax.regs[sp.vreg], s = ax.regs[sp.sreg];
+  if (v != gv || s != gs)
     fail_msg("after %u integrations: AXI v=0x%08X s=0x%08X, golden v=0x%08X s=0x%08X", steps, v, s,
-             fpref_bits(g.v), fpref_bits(g.s));
+             gv, gs);
+  ship_free(&sp);
 }
 
 static void test_ship_back_to_back(void **state) {
@@ -438,12 +475,14 @@ static void test_ship_random_handshakes(void **state) {
  * compares every build's cycle counts exactly with its fp3_top. */
 static void test_ship_cycles(void **state) {
   (void)state;
-  fp3_image img;
-  load_ship(&img);
+  ship_prog sp;
+  load_ship(&sp);
+  const fp3_image img = sp.img;
   uint32_t init[MAX_REGS];
   fp3_ship_params p;
   fp3_ship_default(&p);
-  ship_init(&img, &p, init);
+  ship_init(&sp, &p, init);
+  ship_free(&sp);
   bus b;
   bus_open(&b, &build_default, 3, FAST);
   run_result r1, r2, r10;
@@ -835,8 +874,9 @@ static void test_ship_contexts(void **state) {
       {1000.0f, 100.0f, 100.0f, 2.5f, 0.0f, 0.0f},
   };
   const unsigned nscenes = sizeof scenes / sizeof scenes[0];
-  fp3_image img;
-  load_ship(&img);
+  ship_prog sp;
+  load_ship(&sp);
+  const fp3_image img = sp.img;
   bus b;
   bus_open(&b, *state, 21, RANDOM);
   unsigned nctx = rd_ok(&b, FP3_HR_INFO2) & 0xFFFF, nl = rd_ok(&b, FP3_HR_INFO2) >> 24;
@@ -857,7 +897,7 @@ static void test_ship_contexts(void **state) {
       fp3_ship_params p = scenes[(c + l * nctx) % nscenes];
       p.v0 += (float)l;
       uint32_t init[MAX_REGS];
-      ship_init(&img, &p, init);
+      ship_init(&sp, &p, init);
       wr_ok(&b, FP3_HR_CTX, c);
       wr_ok(&b, FP3_HR_LANE, l);
       for (unsigned r = 0; r < FP3_DEFAULT_NUM_REGS; r++) wr_ok(&b, FP3_HR_REG_BASE + r, init[r]);
@@ -873,17 +913,16 @@ static void test_ship_contexts(void **state) {
       const unsigned c = k % run_ctx, l = k / run_ctx;
       fp3_ship_params p = scenes[(c + l * nctx) % nscenes];
       p.v0 += (float)l;
-      fp3_ship_state g;
-      fp3_golden_init(&g, &p);
-      for (uint32_t i = 0; i < steps; i++) fp3_golden_step(&g);
+      uint32_t gv, gs;
+      ship_golden(&sp, &p, steps, &gv, &gs);
       wr_ok(&b, FP3_HR_CTX, c);
       wr_ok(&b, FP3_HR_LANE, l);
       assert_int_equal(rd_ok(&b, FP3_HR_STEPS_DONE), steps);
-      uint32_t v = rd_ok(&b, FP3_HR_REG_BASE + (unsigned)img.out_reg[FP3_OUT_V]);
-      uint32_t s = rd_ok(&b, FP3_HR_REG_BASE + (unsigned)img.out_reg[FP3_OUT_S]);
-      if (v != fpref_bits(g.v) || s != fpref_bits(g.s))
+      uint32_t v = rd_ok(&b, FP3_HR_REG_BASE + sp.vreg);
+      uint32_t s = rd_ok(&b, FP3_HR_REG_BASE + sp.sreg);
+      if (v != gv || s != gs)
         fail_msg("context %u lane %u: AXI v=0x%08X s=0x%08X, golden v=0x%08X s=0x%08X", c, l,
-                 v, s, fpref_bits(g.v), fpref_bits(g.s));
+                 v, s, gv, gs);
     }
     wr_ok(&b, FP3_HR_CTRL, FP3_CTRL_CLEAR);
     wr_ok(&b, FP3_HR_CTX, 0);
@@ -897,6 +936,7 @@ static void test_ship_contexts(void **state) {
   assert_true(cycles[1] < cycles[0] * nctx); /* contexts overlap */
   wr_ok(&b, FP3_HR_CONTEXTS, 1);
   bus_close(&b);
+  ship_free(&sp);
 }
 
 /* A test on each build: state is the build, cmocka prints "test (build)". */

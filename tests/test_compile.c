@@ -280,24 +280,12 @@ static void test_ir_equals_iss(void **state) {
 
 #define ENDIS 8 /* integrations measured by endi_cycles */
 
-static void on_endi(void *ctx, uint32_t integration, uint64_t cycle) {
-  uint64_t *at = ctx;
-  if (integration <= ENDIS) at[integration - 1] = cycle;
-}
-
 /* One context running img on e for ENDIS integrations (cycles do not
  * depend on the register values): *first, cycles from START to the end of
  * the first integration (the cycle after its endi's issue, as fp3 run
  * counts it); *later, from the last endi but one to the last. */
 static void endi_cycles(fp3_engine *e, const fp3_image *img, unsigned *first, unsigned *later) {
-  uint64_t at[ENDIS] = {0};
-  fp3_observer obs = {at, NULL, on_endi, NULL, NULL, NULL};
-  fp3_status st;
-  assert_int_equal(fp3_engine_load(e, img->words, img->n), 0);
-  assert_int_equal(fp3_engine_run(e, ENDIS, &obs, &st), 0);
-  assert_int_equal(st.error, FP3_ERR_NONE);
-  *first = (unsigned)(at[0] + 1);
-  *later = (unsigned)(at[ENDIS - 1] - at[ENDIS - 2]);
+  assert_int_equal(fp3_engine_endi_cycles(e, img->words, img->n, ENDIS, first, later), 0);
 }
 
 /* On the RTL, compiled for the engine's own latencies and pipeline

@@ -33,8 +33,8 @@
 #include "compile.h"
 #include "mscene.h"
 #include "golden.h"
-#include "integrators.h"
 #include "image.h"
+#include "model.h"
 #include "objects.h"
 #include "../sim/fp3_model.h"
 
@@ -169,6 +169,53 @@ static const ship_case ship_cases[] = {
     {"drifting in the subnormals", 3.0e-39f, 0.5f, 1.0f, 0.25f, 1.0e-37f, 0.0f},
 };
 
+/* A ship program (programs/ship_*.s) bound by name to models/ship.fp3m:
+ * its golden model is the literal one of its `.integrator`. */
+typedef struct ship_prog {
+  fp3_compiled *c;
+  int vreg, sreg; /* the registers of v and s */
+} ship_prog;
+
+static void ship_bind(const fp3_image *img, const char *path, const fp3_engine *e,
+                      ship_prog *sp) {
+  static fp3_model m;
+  static int loaded;
+  char msg[300];
+  if (!loaded && fp3_model_load("models/ship.fp3m", &m, msg, sizeof msg)) fail_msg("%s", msg);
+  loaded = 1;
+  fp3_compile_opts o;
+  fp3_compile_opts_for(&o, &e->config);
+  if (fp3_compile_bind(&m, img, path, &o, &sp->c, msg, sizeof msg)) fail_msg("%s", msg);
+  sp->vreg = (int)fp3_compiled_state_reg(sp->c, 0);
+  sp->sreg = (int)fp3_compiled_state_reg(sp->c, 1);
+}
+
+/* The registers the host writes for ship case sc (v0 raised by dv) into
+ * init[] (the others left alone), computed in core options `mode`, and
+ * the golden model started on it. */
+static void ship_init(ship_prog *sp, const ship_case *sc, float dv, fpref_mode mode,
+                      uint32_t *init) {
+  const float in[4] = {sc->h, sc->T, sc->C, sc->m}, y0[2] = {sc->v0 + dv, sc->s0};
+  unsigned reg[16];
+  uint32_t val[16];
+  fpenv_saved env;
+  assert_int_equal(fpenv_enter(mode, &env), 0);
+  const size_t nw = fp3_compiled_model_start(sp->c, in, y0, reg, val, 16);
+  fpenv_leave(&env);
+  for (size_t w = 0; w < nw; w++) init[reg[w]] = val[w];
+}
+
+/* One golden integration in core options `mode`: v and s (bits). */
+static void ship_step(ship_prog *sp, fpref_mode mode, uint32_t *v, uint32_t *s) {
+  float y[2 * FP3_MODEL_MAX_VARS];
+  fpenv_saved env;
+  assert_int_equal(fpenv_enter(mode, &env), 0);
+  fp3_compiled_model_step(sp->c, y);
+  fpenv_leave(&env);
+  *v = fpref_bits(y[0]);
+  *s = fpref_bits(y[1]);
+}
+
 /* Value of register `reg` after integration k (1-based): the last write
  * tagged with an integration <= k, or the initial value. */
 static uint32_t value_after(const wseq *s, uint32_t init, uint32_t k, size_t *pos) {
@@ -190,11 +237,12 @@ static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
     free(errors);
     fail_msg("%s does not assemble", path);
   }
+  ship_prog sp;
+  ship_bind(&img, path, er, &sp);
   for (size_t k = 0; k < sizeof ship_cases / sizeof ship_cases[0]; k++) {
     const ship_case *sc = &ship_cases[k];
     uint32_t init[MAX_REGS] = {0};
-    fp3_ship_params p = {sc->T, sc->C, sc->m, sc->h, sc->v0, sc->s0};
-    fp3_in_registers(&img, &p, init);
+    ship_init(&sp, sc, 0.0f, er->config.mode, init);
     capture a, b;
     run_on(er, &img, init, MAX_REGS, steps, &a);
     run_on(ei, &img, init, MAX_REGS, steps, &b);
@@ -203,27 +251,23 @@ static void check_ship_program(const char *path, fp3_engine *er, fp3_engine *ei,
     compare_captures(&a, &b, sc->name);
 
     /* Golden model, every integration. */
-    int vreg = img.out_reg[FP3_OUT_V], sreg = img.out_reg[FP3_OUT_S];
-    assert_true(vreg >= 0 && sreg >= 0);
-    fp3_ship_state g;
-    fp3_golden_init(&g, &p);
+    const int vreg = sp.vreg, sreg = sp.sreg;
     size_t vpos = 0, spos = 0;
-    fpenv_saved env;
     for (uint32_t i = 1; i <= steps; i++) {
-      assert_int_equal(fpenv_enter(er->config.mode, &env), 0);
-      fp3_golden_step(&g);
-      fpenv_leave(&env);
+      uint32_t gv, gs;
+      ship_step(&sp, er->config.mode, &gv, &gs);
       uint32_t v = value_after(&a.reg[vreg], init[vreg], i, &vpos);
       uint32_t s = value_after(&a.reg[sreg], init[sreg], i, &spos);
-      if (v != fpref_bits(g.v) || s != fpref_bits(g.s)) {
+      if (v != gv || s != gs) {
         fail_msg("%s, %s: integration %u: RTL v=0x%08X s=0x%08X, golden v=0x%08X s=0x%08X", path,
-                 sc->name, i, v, s, fpref_bits(g.v), fpref_bits(g.s));
+                 sc->name, i, v, s, gv, gs);
       }
     }
     finals[k] = a.final[vreg];
     capture_free(&a);
     capture_free(&b);
   }
+  fp3_compiled_free(sp.c);
 }
 
 #define NCASES (sizeof ship_cases / sizeof ship_cases[0])
@@ -255,10 +299,12 @@ static void test_sleep_at_rest(void **state) {
   while (fp3_insn_opc(img.words[body]) == FP3_OP_LI) body++;
   awake = img.n - body;
   const uint32_t steps = 40;
-  fp3_ship_params p = {0.0f, 5000.0f, 10000.0f, 1.0f / 60.0f, 0.0f, 42.0f};
+  ship_case p = {"at rest", 0.0f, 5000.0f, 10000.0f, 1.0f / 60.0f, 0.0f, 42.0f};
+  ship_prog sp;
+  ship_bind(&img, "programs/ship_rk4_sleep.s", rtl, &sp);
   for (int woken = 0; woken < 2; woken++) {
     uint32_t init[MAX_REGS] = {0};
-    fp3_in_registers(&img, &p, init);
+    ship_init(&sp, &p, 0.0f, rtl->config.mode, init);
     capture a, b;
     run_on(rtl, &img, init, MAX_REGS, steps, &a);
     run_on(iss, &img, init, MAX_REGS, steps, &b);
@@ -270,15 +316,16 @@ static void test_sleep_at_rest(void **state) {
       uint64_t per = a.endi_cycle[steps - 1] - a.endi_cycle[steps - 2];
       assert_int_equal(per, FP3_BEQ_CYCLES + FP3_READ_CYCLES + rtl->config.mul_latency +
                                 2 * FP3_ISSUE_SPACING);
-      assert_int_equal(a.final[img.out_reg[FP3_OUT_S]], fpref_bits(42.0f));
+      assert_int_equal(a.final[sp.sreg], fpref_bits(42.0f));
       p.T = 5000.0f; /* wake it */
     } else {
       assert_true(a.st.issued > body + awake * (steps - 1)); /* not asleep within 40 */
-      assert_true(a.final[img.out_reg[FP3_OUT_V]] != 0);
+      assert_true(a.final[sp.vreg] != 0);
     }
     capture_free(&a);
     capture_free(&b);
   }
+  fp3_compiled_free(sp.c);
 }
 
 /* Every FP core configuration (the RTL built with ROUND/FTZ, the ISS and
@@ -1118,13 +1165,10 @@ static void test_many_ships(void **state) {
     assert_non_null(is);
     unsigned nctx = fp3_config_slots(&er->config);
     memset(init, 0, sizeof init);
-    for (unsigned k = 0; k < nctx; k++) {
-      const ship_case *sc = &ship_cases[k % NCASES];
-      float values[FP3_IN_COUNT] = {sc->T, sc->C, sc->m, fp3_ship_minv(sc->m), sc->h,
-                                    sc->v0 + (float)k, sc->s0};
-      for (int p = 0; p < FP3_IN_COUNT; p++)
-        if (img.in_reg[p] >= 0) init[k][img.in_reg[p]] = fpref_bits(values[p]);
-    }
+    ship_prog sp;
+    ship_bind(&img, "programs/ship_rk4.s", er, &sp);
+    for (unsigned k = 0; k < nctx; k++)
+      ship_init(&sp, &ship_cases[k % NCASES], (float)k, er->config.mode, init[k]);
     fp3_status sa, sb;
     run_contexts_on(er, &img, init, nctx, steps, &ma, &sa);
     run_contexts_on(is, &img, init, nctx, steps, &mb, &sb);
@@ -1138,17 +1182,16 @@ static void test_many_ships(void **state) {
       assert_int_equal(ma.c[k].st.steps_done, steps);
       compare_captures(&ma.c[k], &mb.c[k], what);
       /* golden model of this context's ship */
-      const ship_case *sc = &ship_cases[k % NCASES];
-      fp3_ship_params p = {sc->T, sc->C, sc->m, sc->h, sc->v0 + (float)k, sc->s0};
-      fp3_ship_state g;
-      fp3_golden_init(&g, &p);
-      int vreg = img.out_reg[FP3_OUT_V], sreg = img.out_reg[FP3_OUT_S];
+      uint32_t bank[MAX_REGS] = {0};
+      ship_init(&sp, &ship_cases[k % NCASES], (float)k, er->config.mode, bank);
+      const int vreg = sp.vreg, sreg = sp.sreg;
       size_t vpos = 0, spos = 0;
       for (uint32_t i = 1; i <= steps; i++) {
-        fp3_golden_step(&g);
+        uint32_t gv, gs;
+        ship_step(&sp, er->config.mode, &gv, &gs);
         uint32_t v = value_after(&ma.c[k].reg[vreg], init[k][vreg], i, &vpos);
         uint32_t sv = value_after(&ma.c[k].reg[sreg], init[k][sreg], i, &spos);
-        if (v != fpref_bits(g.v) || sv != fpref_bits(g.s))
+        if (v != gv || sv != gs)
           fail_msg("%s: integration %u differs from the golden model", what, i);
       }
       uint64_t end = ma.c[k].endi_cycle[steps - 1];
@@ -1173,6 +1216,7 @@ static void test_many_ships(void **state) {
     }
     multi_free(&ma);
     multi_free(&mb);
+    fp3_compiled_free(sp.c);
     fp3_engine_free(is);
     fp3_engine_free(er);
   }
@@ -1326,12 +1370,12 @@ static void test_start_after_program(void **state) {
   assert_int_equal(fp3_asm_file("programs/ship_rk4.s", &img, &errors), 0);
   assemble("halt\n", &halts);
   const uint64_t halt = halts.words[0];
-  const ship_case *sc = &ship_cases[0];
-  float values[FP3_IN_COUNT] = {sc->T, sc->C, sc->m, fp3_ship_minv(sc->m), sc->h, sc->v0, sc->s0};
   static uint32_t init[MAX_REGS];
   memset(init, 0, sizeof init);
-  for (int p = 0; p < FP3_IN_COUNT; p++)
-    if (img.in_reg[p] >= 0) init[img.in_reg[p]] = fpref_bits(values[p]);
+  ship_prog sp;
+  ship_bind(&img, "programs/ship_rk4.s", iss, &sp);
+  ship_init(&sp, &ship_cases[0], 0.0f, iss->config.mode, init);
+  fp3_compiled_free(sp.c);
   const uint32_t steps = 3;
   static capture ref;
   run_on(iss, &img, init, MAX_REGS, steps, &ref);

@@ -1,7 +1,8 @@
 /*
  * cpu_ship.c -- the ship's RK4 step on the CPU (cpu_ship.h): Equations
  * (1) of the paper with the operations, operands and order of
- * fp3_golden_step (golden.c), so that every result is bit-identical to
+ * the ship model's literal rk4se (models/ship.fp3m, fp3_model_step_literal;
+ * programs/ship_rk4.s), so that every result is bit-identical to
  * the golden model's (bench_chip checks it) and the timing is of the same
  * 18 multiplies and 12 adds or subtracts per step.
  */
@@ -21,7 +22,7 @@
 
 const char *cpu_ship_flags(void) { return CPU_SHIP_FLAGS; }
 
-/* One RK4 step of one ship: fp3_golden_step's operations, in its order. */
+/* One RK4 step of one ship: rk4se's operations, in its order. */
 static inline void step(float T, float C, float minv, float h, float *vp, float *sp) {
   const float half = FP3_GOLDEN_HALF, two = FP3_GOLDEN_TWO, sixth = FP3_GOLDEN_SIXTH;
   float v = *vp, s = *sp;

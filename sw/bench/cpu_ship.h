@@ -1,6 +1,7 @@
 /*
  * cpu_ship.h -- the ship's RK4 step (paper Equations (1), the operation
- * order of fp3_golden_step in golden.c) on this machine's CPU, timed: the
+ * order of the ship model's literal rk4se, programs/ship_rk4.s) on this
+ * machine's CPU, timed: the
  * reference the FP3 chip build is compared with (make bench-chip).
  *
  * cpu_ship.c is compiled apart, with -O3 -march=native -ffp-contract=off

@@ -81,6 +81,32 @@ int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
   return rc;
 }
 
+/* The cycles of the first, the last but one and the last endi. */
+typedef struct endi_at {
+  uint32_t k;
+  uint64_t first, prev, last;
+} endi_at;
+
+static void on_endi_at(void *ctx, uint32_t integration, uint64_t cycle) {
+  endi_at *a = ctx;
+  if (integration == 1) a->first = cycle;
+  if (integration == a->k - 1) a->prev = cycle;
+  if (integration == a->k) a->last = cycle;
+}
+
+int fp3_engine_endi_cycles(fp3_engine *e, const uint64_t *words, size_t n, uint32_t k,
+                           unsigned *first, unsigned *later) {
+  endi_at at = {k, 0, 0, 0};
+  fp3_observer obs = {.ctx = &at, .on_endi = on_endi_at};
+  fp3_status st;
+  if (k < 2 || fp3_engine_load(e, words, n) || fp3_engine_run(e, k, &obs, &st) ||
+      st.error != FP3_ERR_NONE || !at.last)
+    return -1;
+  *first = (unsigned)(at.first + 1);
+  *later = (unsigned)(at.last - at.prev);
+  return 0;
+}
+
 int fp3_engine_write_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
                              uint32_t value) {
   return e->ops->write_reg(e, context, reg, value);

@@ -243,6 +243,16 @@ int fp3_engine_write_reg(fp3_engine *e, unsigned reg, uint32_t value);
 int fp3_engine_read_reg(fp3_engine *e, unsigned reg, uint32_t *value);
 int fp3_engine_run(fp3_engine *e, uint32_t steps, const fp3_observer *obs,
                    fp3_status *st);
+
+/* One object's cycles (context 0, registers as they are): load words[0..n)
+ * and run k >= 2 integrations; *first gets the cycles from the start to
+ * the end of the first integration (the cycle after its endi issued, as
+ * fp3 run counts cycles_first_step), *later those from the endi of
+ * integration k-1 to that of integration k.  The timing of a program
+ * without beq does not depend on the values.  0, or -1 (load or run
+ * failed, a context error, fewer endi than k). */
+int fp3_engine_endi_cycles(fp3_engine *e, const uint64_t *words, size_t n, uint32_t k,
+                           unsigned *first, unsigned *later);
 int fp3_engine_write_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
                              uint32_t value);
 int fp3_engine_read_ctx_reg(fp3_engine *e, unsigned context, unsigned reg,
