@@ -37,7 +37,7 @@ for m in ${@:-ship spring oscillator projectile orbit spring3d rigidbody}; do
   for ig in euler rk2 rk4 rk4comp symeuler verlet; do
     for lit in "" --literal; do
       "$FP3" compile --model models/$m.fp3m --integrator $ig $lit -o /dev/null 2>/tmp/fp3-table.$$ || continue
-      est=$(sed -n 's/.*about \([0-9]*\) cycles per integration.*/\1/p' /tmp/fp3-table.$$)
+      est=$(sed -n 's/.*estimated \([0-9]*\) cycles per later integration.*/\1/p' /tmp/fp3-table.$$)
       eng=rtl bin=$FP3
       one=$("$bin" run --model models/$m.fp3m ${set[$m]} --integrator $ig $lit --engine rtl \
             --steps 600 --json 2>/tmp/fp3-table-err.$$) || {
