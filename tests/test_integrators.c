@@ -28,12 +28,207 @@
 
 #include "analytic.h"
 #include "asm.h"
-#include "bench.h"
 #include "engine.h"
 #include "fp3_isa.h"
 #include "fpref.h"
 #include "gslref.h"
 #include "integrators.h"
+#include "objects.h"
+
+/* ---- the ship programs on an engine and the golden runs -------------------- */
+
+/* (this test's own: fp3 bench benchmarks models, sw/cli/cmd_bench.c) */
+
+/* Result of one integrator program run on an engine. */
+typedef struct fp3_irun {
+  fp3_status st;           /* engine status and counters                  */
+  uint32_t steps_done;     /* integrations whose v and s were compared    */
+  uint64_t mismatches;     /* v or s != golden, bit for bit               */
+  uint32_t first_mismatch; /* integration of the first one (0: none)      */
+  double cycles_first;     /* cycles of integration 1 (RTL: exact)        */
+  double cycles_per;       /* cycles per later integration (mean; NAN < 2)*/
+  int periodic;            /* 1 if every later integration cost the same  */
+  float v, s;              /* engine results after the last integration   */
+  fp3_diverge div;         /* divergence watch on the engine's v and s    */
+} fp3_irun;
+
+/* Error of a golden (binary32) integration against the exact solution. */
+typedef struct fp3_gerr {
+  float v, s;                 /* after the last integration                 */
+  double v_final_abs, v_final_rel, v_max_abs;   /* [m/s], 1, [m/s]          */
+  double s_final_abs, s_final_rel, s_max_abs;   /* [m], 1, [m]              */
+  /* max_k |v_k - v(t_k)| / max_k |v(t_k)| and the same for s; the larger */
+  double err_norm;
+  fp3_diverge div;            /* divergence watch                           */
+  uint32_t v_last_change;     /* last integration that changed v            */
+  uint64_t s_unmoved;         /* integrations that left s unchanged although
+                                 its increment was not zero (stagnation)    */
+} fp3_gerr;
+
+enum { RV = 0, RS = 1 };
+
+typedef struct irun_ctx {
+  const fp3_integrator *ig;
+  fp3_istate g[2]; /* golden state advanced for v and for s separately */
+  fp3_track t;     /* v and s after every integration */
+  fp3_irun *r;
+  uint64_t first_cyc, prev_cyc, per0;
+  uint32_t endis;
+} irun_ctx;
+
+static void irun_final(void *ctx, int which, uint32_t k, uint32_t bits) {
+  irun_ctx *c = ctx;
+  c->ig->step(&c->g[which]);
+  float want = which == RV ? c->g[which].v : c->g[which].s;
+  if (bits != fpref_bits(want)) {
+    if (!c->r->mismatches) c->r->first_mismatch = k;
+    c->r->mismatches++;
+  }
+  float got = fpref_float(bits);
+  if (which == RV) {
+    fp3_diverge_update(&c->r->div, k, got, 0.0f);
+    c->r->v = got;
+  } else {
+    if (!isfinite(got) && (!c->r->div.nonfinite || k < c->r->div.nonfinite))
+      c->r->div.nonfinite = k;
+    c->r->s = got;
+  }
+}
+
+static void irun_write(void *ctx, unsigned reg, uint32_t value,
+                       uint32_t integration) {
+  fp3_track_write(&((irun_ctx *)ctx)->t, reg, value, integration);
+}
+
+static void irun_endi(void *ctx, uint32_t integration, uint64_t cycle) {
+  irun_ctx *c = ctx;
+  if (integration == 1) c->first_cyc = cycle;
+  if (integration == 2) c->per0 = cycle - c->prev_cyc;
+  if (integration > 2 && cycle - c->prev_cyc != c->per0) c->r->periodic = 0;
+  c->prev_cyc = cycle;
+  c->endis = integration;
+}
+
+static int fp3_irun_program(fp3_engine *e, const fp3_integrator *ig,
+                     const fp3_image *img, const fp3_ship_params *p,
+                     uint32_t steps, fp3_irun *r, char *msg, size_t n) {
+  memset(r, 0, sizeof *r);
+  r->periodic = 1;
+  r->cycles_per = NAN;
+  if (img->out_reg[FP3_OUT_V] < 0 || img->out_reg[FP3_OUT_S] < 0) {
+    snprintf(msg, n, "the program binds no '.out v' or '.out s'");
+    return -1;
+  }
+  irun_ctx c;
+  memset(&c, 0, sizeof c);
+  c.ig = ig;
+  c.r = r;
+  c.t.last = steps;
+  c.t.final = irun_final;
+  c.t.ctx = &c;
+  ig->init(&c.g[RV], p);
+  ig->init(&c.g[RS], p);
+  fp3_diverge_init(&r->div, p);
+  float inval[FP3_IN_COUNT];
+  fp3_in_values(p, inval);
+  int erc = fp3_engine_load(e, img->words, img->n);
+  for (int i = 0; i < FP3_IN_COUNT && erc == 0; i++)
+    if (img->in_reg[i] >= 0)
+      erc = fp3_engine_write_reg(e, (unsigned)img->in_reg[i],
+                                 fpref_bits(inval[i]));
+  c.t.reg[RV] = img->out_reg[FP3_OUT_V];
+  c.t.reg[RS] = img->out_reg[FP3_OUT_S];
+  for (int w = 0; w < 2 && erc == 0; w++) {
+    c.t.next_k[w] = 1;
+    erc = fp3_engine_read_reg(e, (unsigned)c.t.reg[w], &c.t.cur[w]);
+  }
+  if (erc == 0) {
+    fp3_observer obs = {.ctx = &c, .on_write = irun_write, .on_endi = irun_endi};
+    erc = fp3_engine_run(e, steps, &obs, &r->st);
+  }
+  if (erc != 0) {
+    snprintf(msg, n, "%s engine: %s", e->ops->name, fp3_engine_error(e));
+    return -1;
+  }
+  uint32_t done = r->st.steps_done < steps ? r->st.steps_done : steps;
+  for (int w = 0; w < 2; w++) fp3_track_advance(&c.t, w, done + 1);
+  r->steps_done = done;
+  if (c.endis >= 1) r->cycles_first = (double)c.first_cyc + 1.0;
+  if (c.endis >= 2)
+    r->cycles_per =
+        (double)(c.prev_cyc - c.first_cyc) / (double)(c.endis - 1);
+  return 0;
+}
+
+/* ---- golden runs ---------------------------------------------------------- */
+
+static void fp3_golden_errors(const fp3_integrator *ig, const fp3_ship_params *p,
+                       uint32_t n, fp3_gerr *e) {
+  memset(e, 0, sizeof *e);
+  fp3_istate st;
+  ig->init(&st, p);
+  fp3_diverge_init(&e->div, p);
+  double vmax = 0.0, smax = 0.0;
+  for (uint32_t k = 1; k <= n; k++) {
+    float v0 = st.v, s0 = st.s;
+    ig->step(&st);
+    if (st.v != v0) e->v_last_change = k;
+    if (st.s == s0 && st.v != 0.0f) e->s_unmoved++;
+    double ve, se;
+    fp3_ship_exact(p->T, p->C, p->m, p->v0, p->s0, (double)k * (double)p->h,
+                   &ve, &se);
+    double dv = fabs((double)st.v - ve), ds = fabs((double)st.s - se);
+    if (!(dv <= e->v_max_abs)) e->v_max_abs = dv;
+    if (!(ds <= e->s_max_abs)) e->s_max_abs = ds;
+    if (fabs(ve) > vmax) vmax = fabs(ve);
+    if (fabs(se) > smax) smax = fabs(se);
+    e->v_final_abs = dv;
+    e->s_final_abs = ds;
+    e->v_final_rel = ve != 0.0 ? dv / fabs(ve) : dv;
+    e->s_final_rel = se != 0.0 ? ds / fabs(se) : ds;
+    fp3_diverge_update(&e->div, k, st.v, st.s);
+  }
+  e->v = st.v;
+  e->s = st.s;
+  double ev = vmax > 0.0 ? e->v_max_abs / vmax : e->v_max_abs;
+  double es = smax > 0.0 ? e->s_max_abs / smax : e->s_max_abs;
+  e->err_norm = ev > es || isnan(ev) ? ev : es;
+}
+
+static int fp3_golden_diverges(const fp3_integrator *ig, const fp3_ship_params *p,
+                        uint32_t n, uint32_t *began) {
+  fp3_istate st;
+  fp3_diverge d;
+  ig->init(&st, p);
+  fp3_diverge_init(&d, p);
+  for (uint32_t k = 1; k <= n; k++) {
+    ig->step(&st);
+    if (fp3_diverge_update(&d, k, st.v, st.s)) break;
+  }
+  if (began) *began = d.detected ? d.began : d.nonfinite;
+  return d.detected || d.nonfinite;
+}
+
+static int diverges_at(const fp3_integrator *ig, const fp3_ship_params *p,
+                       uint32_t n, double x) {
+  fp3_ship_params q = *p;
+  q.h = (float)(x * (double)p->m / (double)p->C);
+  return fp3_golden_diverges(ig, &q, n, NULL);
+}
+
+static double fp3_measure_bound(const fp3_integrator *ig, const fp3_ship_params *p,
+                         uint32_t n, double lo, double hi) {
+  if (!(p->C > 0.0f) || diverges_at(ig, p, n, lo) || !diverges_at(ig, p, n, hi))
+    return NAN;
+  while (hi - lo > 1e-6 * hi) {
+    double mid = 0.5 * (lo + hi);
+    if (diverges_at(ig, p, n, mid))
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return lo;
+}
 
 static fp3_engine *rtl, *iss;
 

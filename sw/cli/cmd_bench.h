@@ -1,20 +1,16 @@
 /*
- * cmd_bench.h -- `fp3 bench`: the integrator benchmark (bench.h) on the
- * command line.
+ * cmd_bench.h -- `fp3 bench`: the benchmark of a model's integrators
+ * (models/ship.fp3m unless --model names another): the work-precision
+ * sweep and its Pareto table, the stability bounds checked on the
+ * engine, the long runs and their binary32 stagnation (cmd_bench.c,
+ * fp3 bench --help, docs/numerics.md).
  */
 #ifndef FP3_CMD_BENCH_H
 #define FP3_CMD_BENCH_H
 
-#include "bench.h"
-
-/* The parse step of `fp3 bench` (not of `fp3 bench --model`,
- * fp3_parse_model): the options into *o, defaults for those not given
- * (fp3 bench --help).  FP3_ARGS_RUN, FP3_ARGS_HELP, or FP3_ARGS_BAD with
- * the message on stderr (cliopt.h). */
-int fp3_parse_bench(int argc, char **argv, fp3_bench_opts *o);
-
-/* `fp3 bench [options]` (fp3 bench --help).  Exit status 0, 1 when a
- * check failed (an engine not bit-exact), 2 for bad arguments. */
+/* `fp3 bench [options]` (fp3 bench --help).  Exit status 0 done and every
+ * engine run bit-exact, 1 a check failed or a file not written, 2 bad
+ * arguments or model. */
 int fp3_cmd_bench(int argc, char **argv);
 
 #endif /* FP3_CMD_BENCH_H */
