@@ -99,15 +99,18 @@ else bad "pareto.md: cheapest per target '$(echo $got)', the sweep's rows give '
 grep -q "| 1e-03 | rk4" "$T/sw/pareto.md" && ok || bad "pareto.md: 1e-3 not an RK4: $(sed -n 4p "$T/sw/pareto.md")"
 # stability: Euler's bound h = 2 tau = 4 s, the RTL stable just below, diverging just above
 expect 0 "" -- bench --out "$T/st" --only stability --integrator euler
-if grep -q "^ship,euler,3.99999[0-9]*,20000,1000,rtl,3000,0,1,[1-9][0-9]*,1$" "$T/st/stability.csv" &&
-   grep -q "| euler | 4 | stable | diverges from integration [0-9]* | yes |" "$T/st/stability.md"
+# (|1 - h/tau| = 1.04 at 1.02 x 4 s: |v| passes 1000 from 10 at integration 117)
+if grep -q "^ship,euler,4.000[0-4][0-9]*,20000,1000,rtl,3000,0,1,117,1$" "$T/st/stability.csv" &&
+   grep -q "| euler | 4.000[0-4][0-9]* | stable | diverges from integration 117 | yes |" "$T/st/stability.md"
 then ok; else bad "stability: $(cat "$T/st/stability.csv" "$T/st/stability.md")"; fi
 # long runs far out (s = 2^24 m): the plain RK4's s never moves (v h < 1 m,
 # half an ulp), the compensated one's does; every integration bit-exact
 expect 0 "" -- bench --out "$T/far" --only long --set s=16777216 --long-steps 3000 \
   --integrator rk4se,rk4secomp
-if grep -q "^ship,rk4se,rtl,3000,.*,0,.*,16777216,.*,0,2999$" "$T/far/longrun.csv" &&
-   grep -q "^ship,rk4secomp,rtl,3000,.*,0,.*,3000,0$" "$T/far/longrun.csv" &&
+# (columns 6 mismatches, 10 s, 14 s last changed at, 15 s unchanged)
+if awk -F, '$2 == "rk4se" && $6 == 0 && $10 == 16777216 && $14 == 0 && $15 == 2999 { a = 1 }
+            $2 == "rk4secomp" && $6 == 0 && $10 > 16777600 && $14 > 2900 { b = 1 }
+            END { exit !(a && b) }' "$T/far/longrun.csv" &&
    grep -q "| rk4se | rtl, 3000 integrations, bit-exact |" "$T/far/longrun.md"
 then ok; else bad "longrun far out: $(cat "$T/far/longrun.csv")"; fi
 
