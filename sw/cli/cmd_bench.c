@@ -381,41 +381,61 @@ static int take_options(int *argc, char **argv, const char **dir, const char **o
   return 0;
 }
 
-int fp3_cmd_bench(int argc, char **argv) {
-  if (gone_option(argc, argv)) return EXIT_USAGE;
-  /* argv with --model models/ship.fp3m when it names no model, and room
-   * for it */
-  char ship[4096];
+static int bench(fp3_bench_args *b);
+
+int fp3_parse_bench(int argc, char **argv, fp3_bench_args *b) {
+  memset(b, 0, sizeof *b);
+  if (gone_option(argc, argv)) return FP3_ARGS_BAD;
+  /* argv with --model models/ship.fp3m when it names no model */
   char **av = malloc(((size_t)argc + 3) * sizeof *av);
-  if (!av) return EXIT_FAIL;
+  if (!av) return FP3_ARGS_BAD;
   int ac = 0;
   for (int i = 0; i < argc; i++) av[ac++] = argv[i];
   if (!names_model(argc, argv)) {
-    fp3_find_shipped(SHIP_MODEL, ship, sizeof ship);
+    fp3_find_shipped(SHIP_MODEL, b->ship, sizeof b->ship);
     av[ac++] = "--model";
-    av[ac++] = ship;
+    av[ac++] = b->ship;
   }
   av[ac] = NULL;
-  const char *dir = NULL, *only = NULL;
-  double hmax = 0.0;
-  fp3_model_args a;
-  int r = take_options(&ac, av, &dir, &only, &hmax) ? FP3_ARGS_BAD
-                                                   : fp3_parse_model(ac, av, "bench", &a);
+  int r = take_options(&ac, av, &b->dir, &b->only, &b->hmax)
+              ? FP3_ARGS_BAD
+              : fp3_parse_model(ac, av, "bench", &b->a);
   free(av);
-  if (r != FP3_ARGS_RUN) return fp3_args_exit(r, usage);
-  if (only && !dir) {
+  if (r != FP3_ARGS_RUN) return r;
+  if (b->only && !b->dir) {
     fprintf(stderr, "fp3 bench: --only goes with --out DIR\n");
-    return EXIT_USAGE;
+    return FP3_ARGS_BAD;
   }
+  if (b->dir && (b->a.out || b->a.stab || b->a.long_out)) {
+    fprintf(stderr, "fp3 bench: --out DIR writes every part's files; -o, --stability and "
+            "--long name one part's CSV without it\n");
+    return FP3_ARGS_BAD;
+  }
+  return FP3_ARGS_RUN;
+}
+
+int fp3_cmd_bench(int argc, char **argv) {
+  fp3_bench_args *b = malloc(sizeof *b);
+  if (!b) return EXIT_FAIL;
+  int r = fp3_parse_bench(argc, argv, b);
+  if (r != FP3_ARGS_RUN) {
+    free(b);
+    return fp3_args_exit(r, usage);
+  }
+  int rc = bench(b);
+  free(b);
+  return rc;
+}
+
+/* fp3 bench with the options b (fp3_parse_bench's). */
+static int bench(fp3_bench_args *b) {
+  fp3_model_args a = b->a;
+  const char *dir = b->dir, *only = b->only;
+  const double hmax = b->hmax;
   int want_sweep = 1;
   char p_sweep[4200], p_pareto[4200], p_stab[4200], p_stabmd[4200], p_long[4200], p_longmd[4200];
   const char *pareto = NULL, *stabmd = NULL, *longmd = NULL;
   if (dir) {
-    if (a.out || a.stab || a.long_out) {
-      fprintf(stderr, "fp3 bench: --out DIR writes every part's files; -o, --stability and "
-              "--long name one part's CSV without it\n");
-      return EXIT_USAGE;
-    }
     if (out_path(p_sweep, sizeof p_sweep, dir, "sweep.csv") ||
         out_path(p_pareto, sizeof p_pareto, dir, "pareto.md") ||
         out_path(p_stab, sizeof p_stab, dir, "stability.csv") ||
