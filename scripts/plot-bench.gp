@@ -33,8 +33,8 @@ names = system("tail -n +2 '".csv."' | cut -d, -f2 | awk '!seen[$0]++' | tr '\\n
 
 set output png
 set title sprintf("Work-precision, model %s (t_end = %s s)", model, tend) noenhanced
-set xlabel 'engine cycles to t_end (one object: cycles per integration x integrations)'
-set ylabel 'largest |state - GSL rk8pd| at t_end'
+set xlabel 'engine cycles to t_end (one object: cycles per integration x integrations)' noenhanced
+set ylabel 'largest |state - GSL rk8pd| at t_end' noenhanced
 plot for [n in names] csv skip 1 using 8:(sel(n)) with linespoints pointsize 0.8 title n
 
 set output hpng
