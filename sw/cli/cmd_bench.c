@@ -52,7 +52,7 @@
 #define STAB_STEPS 20000u     /* golden integrations of one stability trial     */
 #define STAB_GROWTH FP3_GROWTH_BOUND /* a trial is unstable when a state
                                  exceeds STAB_GROWTH (1 + max |initial state|) */
-#define STAB_ENGINE_STEPS 3000u /* engine integrations at 0.98 and 1.02 bound  */
+#define STAB_ENGINE_STEPS STAB_STEPS /* engine integrations at 0.98 and 1.02 of it */
 #define MAX_ROWS 1024         /* sweep rows kept for the Pareto table           */
 
 static void usage(FILE *f) {
