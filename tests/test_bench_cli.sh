@@ -113,6 +113,13 @@ if awk -F, '$2 == "rk4se" && $6 == 0 && $10 == 16777216 && $14 == 0 && $15 == 29
             END { exit !(a && b) }' "$T/far/longrun.csv" &&
    grep -q "| rk4se | rtl, 3000 integrations, bit-exact |" "$T/far/longrun.md"
 then ok; else bad "longrun far out: $(cat "$T/far/longrun.csv")"; fi
+# any model: the same files (the oscillator's stagnation columns are x and v)
+expect 0 "Pareto front of oscillator" -- bench --model models/oscillator.fp3m --out "$T/osc" \
+  --points 2 --long-steps 100 --integrator rk4,verlet --engine iss
+if [ "$(grep -c '^| 1e-0[2-7] |' "$T/osc/pareto.md")" -eq 6 ] &&
+   grep -q "^model,integrator,engine,steps,.*,x_last_change,x_unchanged,v_last_change,v_unchanged$" "$T/osc/longrun.csv" &&
+   grep -q "^oscillator,verlet,.*,1$" "$T/osc/stability.csv"
+then ok; else bad "oscillator: $(cat "$T/osc/pareto.md" "$T/osc/stability.csv" | head -12)"; fi
 
 echo "test_bench_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
