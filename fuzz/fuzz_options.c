@@ -2,17 +2,16 @@
  * fuzz_options.c -- libFuzzer harness for the command line: the parse step
  * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
  * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
- * fp3_parse_compile, fp3_parse_configure, fp3_parse_bench,
- * fp3_parse_tbgen, fp3_parse_testfloat and, for run, frames and the model
- * forms of compile and bench, fp3_parse_model, with the
+ * fp3_parse_compile, fp3_parse_configure, fp3_parse_bench (fp3_parse_model
+ * and bench's own options), fp3_parse_tbgen, fp3_parse_testfloat and, for
+ * run, frames and the model form of compile, fp3_parse_model, with the
  * option-value parsers of sw/cli/cliopt.c they share.  The run steps
  * (files, engines) are never called.
  *
  * The input is an argument vector, one argument per line.  The first line
- * names the subcommand (argv[0]), as on the fp3 command line; "bench
- * model" picks bench's model form, which fp3 also picks for --model FILE
- * or --model=FILE; another first line picks a parser by its first byte.  When the model
- * form of run or bench accepts, its --set values are resolved against a
+ * names the subcommand (argv[0]), as on the fp3 command line; another
+ * first line picks a parser by its first byte.  When run or bench
+ * accepts, its --set values are resolved against a
  * fixed model (a damped spring, parsed once: fp3_model_args_values), as
  * the run step does first.
  *
@@ -116,14 +115,22 @@ static void parse_model(const char *cmd, int argc, char **argv) {
 
 
 static void parse_bench(int argc, char **argv) {
-  fp3_bench_opts o;
-  if (fp3_parse_bench(argc, argv, &o) != FP3_ARGS_RUN) return;
-  if (!(o.from > 0.0 && o.to > 0.0 && o.t_end > 0.0 && o.per_decade > 0.0 && o.single >= 0.0))
-    fail("bench", "a value <= 0");
-  if (o.long_steps < 1 || o.rtl_long_steps < 1 || o.repeats < 1 || o.repeats > 64)
-    fail("bench", "a count out of range");
-  check_str("bench", o.dir, 1);
-  check_str("bench", o.only, 0);
+  static fp3_bench_args b;
+  if (fp3_parse_bench(argc, argv, &b) != FP3_ARGS_RUN) return;
+  if (!b.a.file || (b.only && !b.dir) || (b.dir && (b.a.out || b.a.stab || b.a.long_out)))
+    fail("bench", "no model, --only without --out, or --out with a part's file");
+  if (b.hmax < 0.0 || b.a.points < 1 || b.a.points > 24 || b.a.long_steps < 2)
+    fail("bench", "a value out of range");
+  check_str("bench", b.dir, 0);
+  check_str("bench", b.only, 0);
+  check_str("bench", b.a.integ, 1);
+  check_str("bench", b.a.out, 0);
+  check_str("bench", b.a.stab, 0);
+  check_str("bench", b.a.long_out, 0);
+  for (int i = 0; i < b.a.nset; i++) check_str("bench", b.a.set[i], 0);
+  float in[FP3_MODEL_MAX_VARS] = {0}, y0[FP3_MODEL_MAX_VARS] = {0};
+  if (fp3_model_args_values(spring(), &b.a, in, y0) == 0 && !(in[0] > 0.0f))
+    fail("bench", "a step h <= 0");
 }
 
 static void parse_tbgen(int argc, char **argv) {
@@ -183,14 +190,6 @@ static void parse_configure(int argc, char **argv) {
   check_str("configure", a.opts.integrator, 1);
 }
 
-/* 1 if argv holds --model or --model=FILE: fp3 bench's model form, as
- * cmd_bench.c decides it. */
-static int names_model(int argc, char **argv) {
-  for (int i = 1; i < argc; i++)
-    if (strcmp(argv[i], "--model") == 0 || strncmp(argv[i], "--model=", 8) == 0) return 1;
-  return 0;
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   static const char *const cmds[] = {"asm",    "disasm", "run",   "compile",
                                      "configure", "frames", "bench", "tbgen",
@@ -223,11 +222,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (strcmp(first, cmds[k]) == 0) c = k;
   if (c == ncmds) c = (unsigned char)first[0] % ncmds;
   const char *cmd = cmds[c];
-  const int has_model_form = strcmp(cmd, "run") == 0 ||
-                             strcmp(cmd, "frames") == 0 || strcmp(cmd, "bench") == 0;
-  if (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0 ||
-      (has_model_form && (model || names_model(argc, argv))))
-    parse_model(cmd, argc, argv);
+  (void)model; /* "bench model": bench has one form */
+  if (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) parse_model(cmd, argc, argv);
   else if (strcmp(cmd, "asm") == 0) parse_asm(argc, argv);
   else if (strcmp(cmd, "disasm") == 0) parse_disasm(argc, argv);
   else if (strcmp(cmd, "compile") == 0) parse_compile(argc, argv);

@@ -19,7 +19,7 @@ TEST_SCRIPTS += tests/test_mscene.sh
 
 # make bench-model: the work-precision sweep and the stability bounds of
 # models/spring.fp3m and models/oscillator.fp3m (fp3 bench --model; CSV
-# and PNG in build/bench/).
+# and PNG in build/bench/: work-precision, error against h).
 .PHONY: bench-model
 ## bench-model: models' work-precision sweep (fp3 bench --model; CSV, PNG in build/bench)
 bench-model: $(BUILD)/fp3
@@ -31,4 +31,5 @@ bench-model: $(BUILD)/fp3
 	  --set x=0.75 --set v=-0.5 --t-end 100 --points 8 -o $(BUILD)/bench/model-oscillator.csv \
 	  --stability $(BUILD)/bench/model-oscillator-stability.csv
 	for m in spring oscillator; do gnuplot -e "csv='$(BUILD)/bench/model-$$m.csv'; \
-	  png='$(BUILD)/bench/model-$$m.png'" scripts/plot-model-bench.gp || exit 1; done
+	  png='$(BUILD)/bench/model-$$m.png'; hpng='$(BUILD)/bench/model-$$m-h.png'" \
+	  scripts/plot-bench.gp || exit 1; done

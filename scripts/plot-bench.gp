@@ -1,49 +1,43 @@
-# plot-bench.gp -- plots of `fp3 bench` (make bench): reads DIR/sweep.csv,
-# writes DIR/work-precision.png (error against RTL cycles) and
-# DIR/error-vs-h.png (error against h/tau, with GSL's double-precision
-# steppers).  Usage: gnuplot -e "dir='build/bench'" scripts/plot-bench.gp
+# plot-bench.gp -- the plots of `fp3 bench` (make bench, make bench-model):
+# reads a sweep CSV, writes the work-precision plot (error at t_end against
+# the engine's cycles to t_end) and the error-against-h plot, one line per
+# integrator, log-log.
+# Usage: gnuplot -e "dir='build/bench'" scripts/plot-bench.gp
+#          (DIR/sweep.csv -> DIR/work-precision.png, DIR/error-vs-h.png)
+#        gnuplot -e "csv='F.csv'; png='W.png'; hpng='H.png'" scripts/plot-bench.gp
 #
-# sweep.csv columns: 1 integrator, 2 kind, 3 h_over_tau, 4 h, 5 steps,
-# 6 t_end, 7 cycles_first, 8 cycles_per_integration, 9 total_cycles,
-# 10 ns_at_paper_clock, 11 cpu_ns_per_step, 12 cpu_ns_total,
-# 13 v_final_abs, 14 v_final_rel, 15 v_max_abs, 16 s_final_abs,
-# 17 s_final_rel, 18 s_max_abs, 19 err_norm, 20 diverged
+# CSV columns: 1 model, 2 integrator, 3 h, 4 steps, 5 t_end,
+# 6 insns_per_step, 7 cycles_per_step, 8 work_cycles, 9 engine_mismatches,
+# 10 error_max, then each state variable and its reference.
 
 if (!exists("dir")) dir = 'build/bench'
-csv = dir.'/sweep.csv'
+if (!exists("csv")) csv = dir.'/sweep.csv'
+if (!exists("png")) png = dir.'/work-precision.png'
+if (!exists("hpng")) hpng = dir.'/error-vs-h.png'
 set datafile separator ','
-set datafile missing 'NaN'
+set datafile missing 'nan'
 set key outside right top noenhanced
 set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
 set grid
 set terminal pngcairo size 1100,620 font ',11'
-
-fp3 = 'euler symeuler verlet rk2 rk4 rk4vs rk4comp rk4vscomp'
-gsl = 'gsl_rk4 gsl_rkf45 gsl_rk8pd'
-
-# keep only the rows of one integrator that did not diverge; errors of 0
-# are drawn at the floor
+model = system("sed -n 2p '".csv."' | cut -d, -f1")
+tend = system("sed -n 2p '".csv."' | cut -d, -f5")
+# errors of 0 drawn at the floor; diverged rows (inf, nan) left out
 floor = 1e-12
-sel(name, col) = (strcol(1) eq name && column(20) == 0) ? \
-                 (column(col) > floor ? column(col) : floor) : NaN
+sel(name) = (strcol(2) eq name && column(10) < 1e30) ? \
+            (column(10) > floor ? column(10) : floor) : NaN
+# every integrator the CSV has, in its order
+names = system("tail -n +2 '".csv."' | cut -d, -f2 | awk '!seen[$0]++' | tr '\\n' ' '")
 
-set output dir.'/work-precision.png'
-set title "Work-precision on the ship (end time 6 tau): error against RTL cost"
-set xlabel 'RTL cycles to the end time (ADD\_LATENCY 4, MUL\_LATENCY 3)'
-set ylabel 'max_t |error| / max_t |value|, worse of v and s'
-set yrange [1e-12:10]
-plot for [n in fp3] csv using (strcol(1) eq n ? column(9) : NaN):(sel(n, 19)) \
-     every ::1 with linespoints pointsize 0.8 title n
+set output png
+set title sprintf("Work-precision, model %s (t_end = %s s)", model, tend) noenhanced
+set xlabel 'engine cycles to t_end (one object: cycles per integration x integrations)' noenhanced
+set ylabel 'largest |state - GSL rk8pd| at t_end' noenhanced
+plot for [n in names] csv skip 1 using 8:(sel(n)) with linespoints pointsize 0.8 title n
 
-set output dir.'/error-vs-h.png'
-set title "Error against the step (binary32 programs and GSL in double)"
-set xlabel 'h / tau'
-set ylabel 'max_t |error| / max_t |value|, worse of v and s'
-set yrange [1e-16:10]
-floor = 1e-16
-plot for [n in fp3] csv using (strcol(1) eq n ? column(3) : NaN):(sel(n, 19)) \
-     every ::1 with linespoints pointsize 0.8 title n, \
-     for [n in gsl] csv using (strcol(1) eq n ? column(3) : NaN):(sel(n, 19)) \
-     every ::1 with lines dashtype 2 lw 2 title n.' (double)'
+set output hpng
+set title sprintf("Error against the step, model %s (binary32 golden model)", model) noenhanced
+set xlabel 'h [s]'
+plot for [n in names] csv skip 1 using 3:(sel(n)) with linespoints pointsize 0.8 title n

@@ -2,7 +2,9 @@
 # test_bench_cli.sh -- the integrator options of the CLI: fp3 run
 # --program (every hand-written ship program bit-exact on the ISS against
 # the ship model's golden model) and --integrator (every integrator the
-# ship takes), non-finite states, and fp3 bench's bad input.
+# ship takes), non-finite states, and fp3 bench: the ship's sweep and
+# its Pareto table (checked against the sweep's rows), the stability
+# bound checked on the engine, binary32 stagnation far out, bad input.
 #
 # The CLI is $FP3_BIN (set by mk/sw.mk), else build/fp3 of this checkout.
 set -u
@@ -54,12 +56,17 @@ expect 2 "needs a value"                 -- run --integrator
 expect 2 "verlet needs accelerations that do not read velocities: v' reads velocity v" \
   -- run --engine iss --integrator verlet
 expect 2 "--strict is gone" -- run --engine iss --strict
-expect 2 "must be > 0"                   -- bench --from 0
-expect 2 "must be > 0"                   -- bench --to -3
-expect 2 "empty sweep"                   -- bench --from 2 --to 1
-expect 2 "not a whole number of steps"   -- bench --h-over-tau 0.7 --t-end 1
+# the ship bench's options in h/tau name their form in h [s]
+expect 2 "--from is gone: the sweep is in h, in seconds: --h-max H" -- bench --from 0
+expect 2 "--to 3 is --h-max 6"           -- bench --to 3
+expect 2 "--set h=H --points 1"          -- bench --h-over-tau 0.7 --t-end 1
+expect 2 "--long-steps N"                -- bench --rtl-long-steps 10
+expect 2 "--points K"                    -- bench --per-decade 4
 expect 2 "unknown argument"              -- bench --bogus
 expect 2 "sweep, stability or long"      -- bench --only everything
+expect 2 "--only goes with --out DIR"    -- bench --only sweep
+expect 2 "--h-max '0': a positive step"  -- bench --h-max 0
+expect 2 "unknown integrator 'leapfrog'" -- bench --integrator leapfrog
 expect 0 "usage: fp3 bench"              -- bench --help
 
 # a state that overflows to a non-finite value fails the run, naming it
@@ -73,9 +80,46 @@ if grep -q DIVERGED <<<"$out"; then bad "h/tau = 1.9 reported as diverged"; else
 # no drag: an unbounded ship, finite and bit-exact
 expect 0 "PASS" -- run --engine iss --program programs/ship_euler.s --set C=0 --set h=100 --steps 10
 
-# a one-point bench (sweep only) writes its CSV
-expect 0 "Pareto" -- bench --out "$T" --only sweep --h-over-tau 0.5 --t-end 12 --repeats 1
-if [ -s "$T/sweep.csv" ] && grep -q "^rk4vs,fp3,5" "$T/sweep.csv"; then ok; else bad "sweep.csv"; fi
+# fp3 bench without --model: the ship through the model path, every
+# integrator that applies, the sweep and its Pareto table
+expect 0 "Pareto front of ship" -- bench --out "$T/sw" --only sweep --h-max 1 --points 4 --t-end 12
+rows=$(tail -n +2 "$T/sw/sweep.csv" | wc -l)
+if [ "$rows" -eq 40 ] && grep -q "^ship,rk4se,0.125,96,12," "$T/sw/sweep.csv"; then ok
+else bad "sweep.csv: $rows rows, want 10 integrators x 4 steps with ship,rk4se,0.125,96"; fi
+# the Pareto table: for each target the row of fewest work_cycles (column
+# 8) among those whose error_max (column 10) is at most the target
+want=$(awk -F, 'NR > 1 { n[NR] = $2; h[NR] = $3; w[NR] = $8; e[NR] = $10 }
+  END { split("1e-2 1e-3 1e-4 1e-5 1e-6 1e-7", t, " ")
+        for (i = 1; i <= 6; i++) { b = 0
+          for (r in n) if (e[r] + 0 <= t[i] + 0 && e[r] != "nan" && (!b || w[r] + 0 < w[b] + 0)) b = r
+          print (b ? n[b] " " h[b] : "none") } }' "$T/sw/sweep.csv")
+got=$(awk -F' *\\| *' 'NR > 2 { print ($3 == "none in the sweep" ? "none" : $3 " " $4) }' "$T/sw/pareto.md")
+if [ -n "$want" ] && [ "$want" = "$got" ]; then ok
+else bad "pareto.md: cheapest per target '$(echo $got)', the sweep's rows give '$(echo $want)'"; fi
+grep -q "| 1e-03 | rk4" "$T/sw/pareto.md" && ok || bad "pareto.md: 1e-3 not an RK4: $(sed -n 4p "$T/sw/pareto.md")"
+# stability: Euler's bound h = 2 tau = 4 s, the RTL stable just below, diverging just above
+expect 0 "" -- bench --out "$T/st" --only stability --integrator euler
+# (|1 - h/tau| = 1.04 at 1.02 x 4 s: |v| passes 1000 from 10 at integration 117)
+if grep -q "^ship,euler,4.000[0-4][0-9]*,20000,1000,rtl,20000,0,1,117,1$" "$T/st/stability.csv" &&
+   grep -q "| euler | 4.000[0-4][0-9]* | stable | diverges from integration 117 | yes |" "$T/st/stability.md"
+then ok; else bad "stability: $(cat "$T/st/stability.csv" "$T/st/stability.md")"; fi
+# long runs far out (s = 2^24 m): the plain RK4's s never moves (v h < 1 m,
+# half an ulp), the compensated one's does; every integration bit-exact
+expect 0 "" -- bench --out "$T/far" --only long --set s=16777216 --long-steps 3000 \
+  --integrator rk4se,rk4secomp
+# (columns 6 mismatches, 10 s, 14 s last changed at, 15 s unchanged)
+if awk -F, '$2 == "rk4se" && $6 == 0 && $10 == 16777216 && $14 == 0 && $15 == 2999 { a = 1 }
+            $2 == "rk4secomp" && $6 == 0 && $10 > 16777600 && $14 > 2900 { b = 1 }
+            END { exit !(a && b) }' "$T/far/longrun.csv" &&
+   grep -q "| rk4se | rtl, 3000 integrations, bit-exact |" "$T/far/longrun.md"
+then ok; else bad "longrun far out: $(cat "$T/far/longrun.csv")"; fi
+# any model: the same files (the oscillator's stagnation columns are x and v)
+expect 0 "Pareto front of oscillator" -- bench --model models/oscillator.fp3m --out "$T/osc" \
+  --points 2 --long-steps 100 --integrator rk4,verlet --engine iss
+if [ "$(grep -c '^| 1e-0[2-7] |' "$T/osc/pareto.md")" -eq 6 ] &&
+   grep -q "^model,integrator,engine,steps,.*,x_last_change,x_unchanged,v_last_change,v_unchanged$" "$T/osc/longrun.csv" &&
+   grep -q "^oscillator,verlet,.*,1$" "$T/osc/stability.csv"
+then ok; else bad "oscillator: $(cat "$T/osc/pareto.md" "$T/osc/stability.csv" | head -12)"; fi
 
 echo "test_bench_cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -222,7 +222,7 @@ expect 2 "seed goes with" -- run --seed 3
 # counts and seeds: one parser (cliopt.c), one message
 expect 2 "--seed 'x1': want an unsigned 64-bit integer" -- run --objects 2 --seed x1
 expect 2 "--seed '-3': want an unsigned 64-bit integer" -- frames --seed -3
-expect 2 "--repeats '65': want 1..64" -- bench --repeats 65
+expect 2 "--points '25': want 1..24" -- bench --points 25
 expect 2 "--trace-window '5': want FIRST:COUNT" -- run --engine iss --trace-window 5
 expect 2 "has 5 objects" -- run --scene "$T/harbour.scene" --objects 4
 json=$("$FP3" run --scene "$T/harbour.scene" --steps 50 --json 2>&1); rc=$?

@@ -1,10 +1,8 @@
 /*
  * cmd_model.h -- what the subcommands share about models (docs/models.md):
  * the options of run, frames and bench, the --set values, compiling a
- * model for an engine, watching state registers; and the model form of
- * bench:
- *
- *   fp3 bench --model FILE ...
+ * model for an engine, watching state registers (fp3 bench itself:
+ * cmd_bench.h).
  */
 #ifndef FP3_CMD_MODEL_H
 #define FP3_CMD_MODEL_H
@@ -19,11 +17,11 @@
 #include "traceopt.h"
 
 /* A state beyond FP3_GROWTH_BOUND (1 + max |initial state|) counts as
- * diverged: the trials of `fp3 bench --model --stability` and the
+ * diverged: the trials and the engine runs of `fp3 bench`'s stability and the
  * divergence `fp3 run` reports. */
 #define FP3_GROWTH_BOUND 1e3
 
-/* The options of run, frames and the model form of bench
+/* The options of run, frames and bench
  * (fp3 run --model x --help); each command takes its own subset. */
 typedef struct fp3_model_args {
   const char *cmd;     /* the command, for messages ("run", "frames", ...) */
@@ -117,26 +115,5 @@ typedef struct fp3_state_obs {
 
 void fp3_state_obs_write(void *ctx, unsigned reg, uint32_t value, uint32_t k);
 void fp3_state_obs_endi(void *ctx, uint32_t k, uint64_t cycle);
-
-/* `fp3 bench --model FILE [--set NAME=VALUE ...] [--integrator NAME]
- * [--t-end T] [--points K] [--literal] [--engine rtl|iss] [-o FILE.csv]`:
- * the work-precision sweep of one object: for each integrator (all that
- * apply, or --integrator) the compiled program runs BENCH_RTL_STEPS
- * integrations on the engine (cycles per integration, checked bit for bit
- * against its golden model), then the golden model integrates to T
- * (default 600 h) with h, h/2, ... h/2^(K-1) (K default 6) and the final
- * state is compared with the GSL reference.  CSV: model, integrator, h,
- * steps, t_end, insns_per_step, cycles_per_step, work_cycles,
- * engine_mismatches, error_max, then NAME and NAME_ref per state
- * variable.  With --stability FILE.csv also the stability bound of each
- * integrator: the largest h (bisection) whose golden run of 20000
- * integrations stays finite and within 1e3 (1 + max |initial state|);
- * columns model, integrator, h_stable, trial_steps, growth_bound.  With
- * --long FILE.csv [--long-steps N] a long run of each integrator on the
- * engine (N integrations, default 100000, every one checked) and its
- * final error against GSL.
- * Exit status: 0 written and every engine run bit-exact, 1 a
- * mismatch or failure, 2 bad arguments or model. */
-int fp3_cmd_bench_model(int argc, char **argv);
 
 #endif /* FP3_CMD_MODEL_H */

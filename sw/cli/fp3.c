@@ -7,8 +7,9 @@
  *                                    every integration against the golden
  *                                    model, bit for bit
  *   fp3 testfloat ...                FP cores against TestFloat vectors
- *   fp3 bench [options]              integrators: work-precision benchmark,
- *                                    stability and long runs (sw/bench/bench.c)
+ *   fp3 bench [--model FILE] [...]   a model's integrators (default the
+ *                                    ship): work-precision, Pareto table,
+ *                                    stability, long runs (cmd_bench.c)
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *   fp3 compile SCENE|--model FILE   a program compiled for a model or scene
  *                                    (sw/compiler/compile.h)
@@ -52,8 +53,9 @@ static void usage(FILE *f) {
           "                            and check it bit for bit against the golden\n"
           "                            model (default: the paper's ship RK4)\n"
           "  testfloat ...             FP cores against TestFloat vectors\n"
-          "  bench [options]           integrators: work-precision benchmark,\n"
-          "                            stability bounds, long runs\n"
+          "  bench [--model FILE]      a model's integrators (default: the ship):\n"
+          "                            work-precision, Pareto table, stability\n"
+          "                            bounds, long runs\n"
           "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n"
           "  compile SCENE|--model M   a model or a scene compiled into a program\n"
           "                            (fp3 run compiles it itself)\n"
