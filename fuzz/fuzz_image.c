@@ -31,9 +31,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     fprintf(stderr, "fuzz_image: the written image does not read back: %s\n", msg);
     abort();
   }
-  if (back.n != img.n || memcmp(back.words, img.words, img.n * sizeof img.words[0]) != 0 ||
-      memcmp(back.in_reg, img.in_reg, sizeof img.in_reg) != 0 ||
-      memcmp(back.out_reg, img.out_reg, sizeof img.out_reg) != 0) {
+  int same = back.n == img.n && back.nbind_in == img.nbind_in &&
+             back.nbind_out == img.nbind_out &&
+             memcmp(back.words, img.words, img.n * sizeof img.words[0]) == 0;
+  for (unsigned i = 0; same && i < img.nbind_in + img.nbind_out; i++) {
+    const fp3_binding *a = i < img.nbind_in ? &img.bind_in[i] : &img.bind_out[i - img.nbind_in];
+    const fp3_binding *b = i < img.nbind_in ? &back.bind_in[i] : &back.bind_out[i - img.nbind_in];
+    same = strcmp(a->name, b->name) == 0 && a->reg == b->reg;
+  }
+  if (!same) {
     fprintf(stderr, "fuzz_image: the image changed in a write/read round trip\n");
     abort();
   }

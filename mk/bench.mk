@@ -10,8 +10,8 @@
 #                 passes options to the first run (BENCH_ARGS='--only sweep':
 #                 the sweep alone, seconds; '--long-steps 1000000').
 #
-# The library sources (sw/ref/integrators.c, sw/ref/gslref.c) reach
-# libfp3.a through mk/sw.mk's wildcard; fp3 bench is sw/cli/cmd_bench.c.
+# fp3 bench is sw/cli/cmd_bench.c; test_integrators runs the paper's
+# programs bound to models/ship.fp3m.
 
 $(BUILD)/tests/test_integrators: tests/test_integrators.c $(BUILD)/sw-san/libfp3.a $(RTL_DEPS)
 	@mkdir -p $(dir $@)

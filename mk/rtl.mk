@@ -280,9 +280,9 @@ CPU_SHIP_FLAGS := -O3 -march=native -ffp-contract=off
 # others are reported as not linked.
 BENCH_CHIP_MODELS ?= l2 l4 l8 l16 fmax f16 chip
 RTL_CHIP_OBJS := $(foreach c,$(BENCH_CHIP_MODELS),$(call rtl_shim,$(c)) $(call rtl_archive,$(c)))
-$(BUILD)/bench/cpu_ship.o: sw/bench/cpu_ship.c sw/bench/cpu_ship.h sw/ref/golden.h
+$(BUILD)/bench/cpu_ship.o: sw/bench/cpu_ship.c sw/bench/cpu_ship.h sw/model/model.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(CWARN) $(CPU_SHIP_FLAGS) -DCPU_SHIP_FLAGS='"$(CPU_SHIP_FLAGS)"' -Isw/ref -c $< -o $@
+	$(CC) $(CSTD) $(CWARN) $(CPU_SHIP_FLAGS) -DCPU_SHIP_FLAGS='"$(CPU_SHIP_FLAGS)"' -Isw/model -c $< -o $@
 BENCH_CHIP_STAMP = $(BUILD)/bench_chip.models.$(shell echo '$(BENCH_CHIP_MODELS)' | md5sum | cut -c1-8)
 $(BENCH_CHIP_STAMP):
 	@mkdir -p $(BUILD)

@@ -10,7 +10,7 @@
 # --literal (programs/ship_rk4.s) and once compiled (the default).
 # Writes OUTDIR/compile.csv and OUTDIR/compile.md: instructions per
 # integration, measured cycles per object-step, and the error of v and s
-# after STEPS integrations against the exact solution (sw/ref/analytic.h):
+# after STEPS integrations against the exact solution (models/ship.fp3m):
 # the largest over the objects, and the mean, of |x - exact| / max(|exact|, 1)
 # (exact: the exact solution, or the GSL reference where the model has none,
 # C = 0).

@@ -46,7 +46,7 @@
 #include "fp3_model.h"
 #include "fpref.h"
 #include "compile.h"
-#include "golden.h"
+#include "objects.h"
 #include "image.h"
 #include "model.h"
 

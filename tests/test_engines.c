@@ -32,10 +32,9 @@
 #include "fpref.h"
 #include "compile.h"
 #include "mscene.h"
-#include "golden.h"
+#include "objects.h"
 #include "image.h"
 #include "model.h"
-#include "objects.h"
 #include "../sim/fp3_model.h"
 
 /* Test builds of the processor with 1 and 3 contexts (mk/rtl.mk). */

@@ -50,7 +50,6 @@
 #include "compile.h"
 #include "engine.h"
 #include "fpref.h"
-#include "golden.h"
 #include "objects.h"
 #include "model.h"
 #include "modelref.h"

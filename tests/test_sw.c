@@ -22,7 +22,7 @@
 #include "engine.h"
 #include "fp3_isa.h"
 #include "fpref.h"
-#include "golden.h"
+#include "objects.h"
 #include "image.h"
 #include "model.h"
 #include "progress.h"
@@ -144,7 +144,7 @@ static void test_asm_instructions(void **state) {
   assert_int_equal(img.line[8], 11);
   /* field layout of the ISA table */
   assert_true(W(FP3_OP_ADD, 2, 1, 31, 0) == 0x0102011F00000000ull);
-  for (int i = 0; i < FP3_IN_COUNT; i++) assert_int_equal(img.in_reg[i], -1);
+  assert_int_equal(img.nbind_in + img.nbind_out, 0);
 }
 
 static void test_asm_labels(void **state) {
@@ -188,23 +188,23 @@ static void test_asm_bindings(void **state) {
            "  .word 0xFF00000000000001\n"
            "  .word 0x1\n",
            &img);
-  assert_int_equal(img.in_reg[FP3_IN_T], 1);
-  assert_int_equal(img.in_reg[FP3_IN_C], 2);
-  assert_int_equal(img.in_reg[FP3_IN_M], 3);
-  assert_int_equal(img.in_reg[FP3_IN_MINV], 4);
-  assert_int_equal(img.in_reg[FP3_IN_H], 5);
-  assert_int_equal(img.in_reg[FP3_IN_V0], 6);
-  assert_int_equal(img.in_reg[FP3_IN_S0], 7);
-  assert_int_equal(img.out_reg[FP3_OUT_V], 6);
-  assert_int_equal(img.out_reg[FP3_OUT_S], 7);
+  /* in program order, names as written, aliases resolved */
+  static const char *const in_names[] = {"T", "C", "m", "minv", "h", "v0", "s0"};
+  assert_int_equal(img.nbind_in, 7);
+  for (unsigned i = 0; i < 7; i++) {
+    assert_string_equal(img.bind_in[i].name, in_names[i]);
+    assert_int_equal(img.bind_in[i].reg, (int)i + 1);
+    assert_int_equal(img.bind_in[i].line, (int)i + 4);
+  }
+  assert_int_equal(img.nbind_out, 2);
+  assert_string_equal(img.bind_out[0].name, "v");
+  assert_int_equal(img.bind_out[0].reg, 6);
+  assert_string_equal(img.bind_out[1].name, "s");
+  assert_int_equal(img.bind_out[1].reg, 7);
   assert_int_equal(img.n, 3);
   assert_true(img.words[0] == W(FP3_OP_ADD, 10, 1, 2, 0));
   assert_true(img.words[1] == 0xFF00000000000001ull); /* raw, unchecked */
   assert_true(img.words[2] == 1);
-  assert_int_equal(fp3_in_lookup("minv"), FP3_IN_MINV);
-  assert_int_equal(fp3_out_lookup("s"), FP3_OUT_S);
-  assert_int_equal(fp3_in_lookup("x"), -1);
-  assert_string_equal(fp3_in_name(FP3_IN_V0), "v0");
 }
 
 static void test_asm_literals(void **state) {
@@ -367,8 +367,14 @@ static void roundtrip(const fp3_image *img) {
       fail_msg("word %zu: %016llx -> %016llx\n%s", i,
                (unsigned long long)img->words[i],
                (unsigned long long)back.words[i], text);
-  assert_memory_equal(back.in_reg, img->in_reg, sizeof img->in_reg);
-  assert_memory_equal(back.out_reg, img->out_reg, sizeof img->out_reg);
+  assert_int_equal(back.nbind_in, img->nbind_in);
+  assert_int_equal(back.nbind_out, img->nbind_out);
+  for (unsigned i = 0; i < img->nbind_in + img->nbind_out; i++) {
+    const fp3_binding *a = i < img->nbind_in ? &img->bind_in[i] : &img->bind_out[i - img->nbind_in];
+    const fp3_binding *b = i < img->nbind_in ? &back.bind_in[i] : &back.bind_out[i - img->nbind_in];
+    assert_string_equal(a->name, b->name);
+    assert_int_equal(a->reg, b->reg);
+  }
   free(text);
 }
 
@@ -517,7 +523,7 @@ static void test_image_validate(void **state) {
   img.words[3] = 0;
   char why[160];
   assert_int_equal(fp3_image_bind(&img, 1, "T", 40, 1, why, sizeof why), 0);
-  assert_int_equal(img.in_reg[FP3_IN_T], 40);
+  assert_int_equal(img.bind_in[img.nbind_in - 1].reg, 40);
   assert_int_equal(fp3_image_validate(&img, msg, sizeof msg), -1);
   assert_non_null(strstr(msg, ".in T: register r40 out of range"));
 }
@@ -613,8 +619,6 @@ static void test_hex_roundtrip(void **state) {
   assert_int_equal(back.n, img.n);
   assert_memory_equal(back.words, img.words, img.n * sizeof img.words[0]);
   assert_memory_equal(back.line, img.line, img.n * sizeof img.line[0]);
-  assert_memory_equal(back.in_reg, img.in_reg, sizeof img.in_reg);
-  assert_memory_equal(back.out_reg, img.out_reg, sizeof img.out_reg);
   /* the bindings by name, the model and the integrator travel too */
   assert_int_equal(back.nbind_in, img.nbind_in);
   assert_int_equal(back.nbind_out, img.nbind_out);
@@ -645,7 +649,6 @@ static void test_hex_roundtrip(void **state) {
   assert_int_equal(words, (int)img.n);
   assert_int_equal(in, 6);
   assert_int_equal(out, 2);
-  assert_non_null(strstr(fp3_in_name(FP3_IN_MINV), "minv"));
 
   /* a hand-written file: blank lines, comments, upper-case digits */
   snprintf(path, sizeof path, "%s/hand.hex", tmpdir);
@@ -658,8 +661,12 @@ static void test_hex_roundtrip(void **state) {
   assert_int_equal(back.n, 2);
   assert_true(back.words[1] == 0x0A00000000000000ull); /* read, not checked */
   assert_int_equal(back.line[1], 9);
-  assert_int_equal(back.in_reg[FP3_IN_H], 4);
-  assert_int_equal(back.out_reg[FP3_OUT_V], 2);
+  assert_int_equal(back.nbind_in, 1);
+  assert_string_equal(back.bind_in[0].name, "h");
+  assert_int_equal(back.bind_in[0].reg, 4);
+  assert_int_equal(back.nbind_out, 1);
+  assert_string_equal(back.bind_out[0].name, "v");
+  assert_int_equal(back.bind_out[0].reg, 2);
 }
 
 static void test_hex_read_errors(void **state) {

@@ -10,7 +10,7 @@
 
 #include <float.h>
 
-#include "golden.h"
+#include "model.h"
 
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "the CPU reference needs float expressions evaluated in float"
@@ -24,7 +24,7 @@ const char *cpu_ship_flags(void) { return CPU_SHIP_FLAGS; }
 
 /* One RK4 step of one ship: rk4se's operations, in its order. */
 static inline void step(float T, float C, float minv, float h, float *vp, float *sp) {
-  const float half = FP3_GOLDEN_HALF, two = FP3_GOLDEN_TWO, sixth = FP3_GOLDEN_SIXTH;
+  const float half = FP3_RK4_HALF, two = FP3_RK4_TWO, sixth = FP3_RK4_SIXTH;
   float v = *vp, s = *sp;
   float k1 = h * ((T - C * v) * minv);
   float k2 = h * ((T - C * (v + half * k1)) * minv);

@@ -17,7 +17,6 @@
 #include "asm.h"
 #include "fp3_isa.h"
 #include "fpref.h"
-#include "golden.h"
 #include "model.h"
 #include "report.h"
 
@@ -1248,8 +1247,8 @@ static void m_build_rk4(builder *b, const fp3_model *m, const ref *y, ref h, int
   static const char *const ftag[4] = {"1", "2", "3", "4"};
   ref f[4][MAX_STATE], k[3][MAX_STATE], t[MAX_STATE];
   lin L[MAX_STATE]; /* the affine forms at the latest stage (y, then t) */
-  ref half = konst(b, FP3_GOLDEN_HALF, "half"), two = konst(b, FP3_GOLDEN_TWO, "two");
-  ref sixth = konst(b, FP3_GOLDEN_SIXTH, "sixth");
+  ref half = konst(b, FP3_RK4_HALF, "half"), two = konst(b, FP3_RK4_TWO, "two");
+  ref sixth = konst(b, FP3_RK4_SIXTH, "sixth");
   m_fl(b, m, y, f[0], L, ftag[0]);
   for (unsigned st = 0; st < 3; st++) {
     for (unsigned j = 0; j < ns; j++)
@@ -1291,7 +1290,7 @@ static void m_build_rk4(builder *b, const fp3_model *m, const ref *y, ref h, int
 static void m_build_verletp(builder *b, const fp3_model *m, const ref *y, ref h) {
   const unsigned ns = m->nstate;
   ref f[MAX_STATE] = {{0, 0}}, t[MAX_STATE] = {{0, 0}}, a[MAX_STATE] = {{0, 0}};
-  ref half = konst(b, FP3_GOLDEN_HALF, "half");
+  ref half = konst(b, FP3_RK4_HALF, "half");
   ref hh = nm(b, mul(b, half, h), "hh");
   ref hh2 = nm(b, mul(b, half, nm(b, mul(b, h, h), "hsq")), "hh2");
   for (unsigned i = 0; i < ns; i++) a[i] = state(b, (int)(ns + i));
@@ -1329,7 +1328,7 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
     for (unsigned i = 0; i < ns; i++)
       b->out[i] = m_nm(b, m_add(b, y[i], m_hf(b, h, f[i], &L[i], y, i, "h")), "n", i);
   } else if (strcmp(integ, "rk2") == 0) {
-    ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
+    ref hh = nm(b, mul(b, konst(b, FP3_RK4_HALF, "half"), h), "hh");
     m_fl(b, m, y, f, L, "1");
     for (unsigned j = 0; j < ns; j++)
       t[j] = m_nm(b, m_add(b, y[j], m_hf(b, hh, f[j], &L[j], y, j, "hh")), "ym", j);
@@ -1363,7 +1362,7 @@ static int m_build(builder *b, const fp3_model *m, const char *integ) {
      * keeps only the derivatives its update reads (dead code elimination) */
     if (!fp3_model_split(m)) return -2;
     if (!fp3_model_verlet_ok(m, NULL, NULL)) return -3;
-    ref hh = nm(b, mul(b, konst(b, FP3_GOLDEN_HALF, "half"), h), "hh");
+    ref hh = nm(b, mul(b, konst(b, FP3_RK4_HALF, "half"), h), "hh");
     m_fl(b, m, y, f, L, "1");
     for (unsigned i = 0; i < ns; i++)
       t[i] = m->role[i] == FP3_MR_VELOCITY

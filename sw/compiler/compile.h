@@ -193,8 +193,9 @@ unsigned fp3_image_body_insns(const fp3_image *img);
  * with `.regs N` (asm.h). 
  * Integrator rk4comp carries a Kahan compensation per state variable in a
  * register of its own (fp3_compiled_carried), 0 at the start.
- * The text binds inputs and results in comments (the assembler's .in/.out
- * names are the ship's): fp3_compiled_model_start gives the writes. */
+ * The text lists inputs and results in comments (the host's folded values
+ * have no name in the model for an `.in` line to bind):
+ * fp3_compiled_model_start gives the writes. */
 int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
                       const unsigned char *param_zero, fp3_compiled **out, char *msg,
                       size_t n);

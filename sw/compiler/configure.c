@@ -8,7 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analytic.h"
 #include "fp3_isa.h"
 #include "fpenv.h"
 #include "image.h"
@@ -72,10 +71,10 @@ static unsigned regs_named(const fp3_image *img) {
     for (int f = 0; f < 3; f++)
       if ((uses & bit[f]) && reg[f] + 1 > top) top = reg[f] + 1;
   }
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (img->in_reg[i] >= 0 && (unsigned)img->in_reg[i] + 1 > top) top = (unsigned)img->in_reg[i] + 1;
-  for (int i = 0; i < FP3_OUT_COUNT; i++)
-    if (img->out_reg[i] >= 0 && (unsigned)img->out_reg[i] + 1 > top) top = (unsigned)img->out_reg[i] + 1;
+  for (unsigned i = 0; i < img->nbind_in + img->nbind_out; i++) {
+    const fp3_binding *bd = i < img->nbind_in ? &img->bind_in[i] : &img->bind_out[i - img->nbind_in];
+    if ((unsigned)bd->reg + 1 > top) top = (unsigned)bd->reg + 1;
+  }
   return top;
 }
 

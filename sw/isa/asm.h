@@ -17,9 +17,8 @@
  *                              run: a param of the program's model, a
  *                              state variable's initial value (NAME or
  *                              NAME0), a parameter-only let (minv), or
- *                              -NAME, the same with its sign bit flipped;
- *                              the ship scene compiler's folded inputs hm
- *                              hmT hmC (image.h)
+ *                              -NAME, the same with its sign bit flipped
+ *                              (fp3_compile_bind resolves the names)
  *   .out NAME, rN              rN holds state variable NAME after every
  *                              integration
  *   .model "FILE"              the model the program integrates (a

@@ -74,12 +74,10 @@ static int is_target(const fp3_image *img, size_t addr) {
 char *fp3_disasm_image(const fp3_image *img) {
   fp3_strbuf b = {NULL, 0, 0, 0};
   fp3_strbuf_printf(&b, "; FP3 program, %zu words (disassembled)\n", img->n);
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (img->in_reg[i] >= 0)
-      fp3_strbuf_printf(&b, ".in %s, r%d\n", fp3_in_name(i), img->in_reg[i]);
-  for (int i = 0; i < FP3_OUT_COUNT; i++)
-    if (img->out_reg[i] >= 0)
-      fp3_strbuf_printf(&b, ".out %s, r%d\n", fp3_out_name(i), img->out_reg[i]);
+  for (unsigned i = 0; i < img->nbind_in; i++)
+    fp3_strbuf_printf(&b, ".in %s, r%d\n", img->bind_in[i].name, img->bind_in[i].reg);
+  for (unsigned i = 0; i < img->nbind_out; i++)
+    fp3_strbuf_printf(&b, ".out %s, r%d\n", img->bind_out[i].name, img->bind_out[i].reg);
   char text[96], why[8];
   for (size_t i = 0; i <= img->n; i++) {
     if (is_target(img, i)) fp3_strbuf_printf(&b, "L%zu:\n", i);

@@ -10,43 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const in_names[FP3_IN_COUNT] = {
-#define X(id, name, desc) name,
-    FP3_IN_PARAMS(X)
-#undef X
-};
-
-static const char *const out_names[FP3_OUT_COUNT] = {
-#define X(id, name, desc) name,
-    FP3_OUT_PARAMS(X)
-#undef X
-};
-
-void fp3_image_init(fp3_image *img) {
-  memset(img, 0, sizeof *img);
-  for (int i = 0; i < FP3_IN_COUNT; i++) img->in_reg[i] = -1;
-  for (int i = 0; i < FP3_OUT_COUNT; i++) img->out_reg[i] = -1;
-}
-
-const char *fp3_in_name(int id) {
-  return (id >= 0 && id < FP3_IN_COUNT) ? in_names[id] : NULL;
-}
-
-const char *fp3_out_name(int id) {
-  return (id >= 0 && id < FP3_OUT_COUNT) ? out_names[id] : NULL;
-}
-
-int fp3_in_lookup(const char *name) {
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (strcmp(name, in_names[i]) == 0) return i;
-  return -1;
-}
-
-int fp3_out_lookup(const char *name) {
-  for (int i = 0; i < FP3_OUT_COUNT; i++)
-    if (strcmp(name, out_names[i]) == 0) return i;
-  return -1;
-}
+void fp3_image_init(fp3_image *img) { memset(img, 0, sizeof *img); }
 
 int fp3_image_binding_name_ok(int is_in, const char *name) {
   const char *id = is_in && name[0] == '-' ? name + 1 : name;
@@ -88,9 +52,6 @@ int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int lin
   snprintf(b->name, sizeof b->name, "%s", name);
   b->reg = reg;
   b->line = line;
-  /* the table slot of a name the tables know; -v0 is nv0 */
-  int id = is_in ? fp3_in_lookup(strcmp(name, "-v0") == 0 ? "nv0" : name) : fp3_out_lookup(name);
-  if (id >= 0) (is_in ? img->in_reg : img->out_reg)[id] = reg;
   return 0;
 }
 

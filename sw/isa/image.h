@@ -1,7 +1,8 @@
 /*
  * image.h -- an FP3 program image: instruction words plus the host
- * bindings of the program (which register receives which scene parameter
- * before a run, which register holds which result), validation of a word
+ * bindings of the program by name (which register receives which of the
+ * model's params or initial values before a run, which register holds
+ * which state variable), validation of a word
  * against the ISA table, and the .hex image file.
  *
  * The .hex file is text that Verilog's $readmemh reads: one 64-bit word
@@ -22,52 +23,6 @@
 
 #include "fp3_isa.h"
 
-/*
- * Parameters the host writes into registers before a run (`.in NAME, rN`):
- * X(ID, "name", description).  minv is 1.0f/m, correctly rounded.  The
- * last three are the folded inputs of compiled programs (sw/compiler/compile.h),
- * products the host computes once per object, each one binary32 RNE
- * operation in the order shown (fp3_in_values in objects.h).  nv0 wakes an
- * object: the velocity stages run until a `beq v, vp` finds v unchanged
- * (docs/skipping.md "Sleeping objects").
- */
-#define FP3_IN_PARAMS(X)                                                       \
-  X(T,    "T",    "thrust [N]")                                                \
-  X(C,    "C",    "drag coefficient [kg/s]")                                   \
-  X(M,    "m",    "mass [kg]")                                                 \
-  X(MINV, "minv", "1/m [1/kg], binary32 reciprocal of m")                      \
-  X(H,    "h",    "time step [s]")                                             \
-  X(V0,   "v0",   "initial velocity [m/s]")                                    \
-  X(S0,   "s0",   "initial displacement [m]")                                 \
-  X(HM,   "hm",   "h/m [s/kg]: h * minv")                                      \
-  X(HMT,  "hmT",  "h T/m [m/s]: hm * T, the velocity increment of thrust")     \
-  X(HMC,  "hmC",  "h C/m = h/tau [1]: hm * C")                                \
-  X(NV0,  "nv0",  "-v0: v0 with its sign bit flipped, never bit-identical "    \
-                  "to v0 (a sleeping program's previous velocity at start)")
-
-/* Results the golden model checks (`.out NAME, rN`). */
-#define FP3_OUT_PARAMS(X)                                                      \
-  X(V, "v", "velocity [m/s]")                                                  \
-  X(S, "s", "displacement [m]")
-
-/* The names, space-separated, for messages: "T C m minv h v0 s0 hm ...". */
-#define FP3_IN_NAME_TEXT_(id, name, desc) " " name
-#define FP3_IN_NAMES_TEXT (FP3_IN_PARAMS(FP3_IN_NAME_TEXT_) + 1)
-
-enum fp3_in_param {
-#define X(id, name, desc) FP3_IN_##id,
-  FP3_IN_PARAMS(X)
-#undef X
-  FP3_IN_COUNT
-};
-
-enum fp3_out_param {
-#define X(id, name, desc) FP3_OUT_##id,
-  FP3_OUT_PARAMS(X)
-#undef X
-  FP3_OUT_COUNT
-};
-
 /* Bindings by name (`.in NAME, rN` / `.out NAME, rN`), in program order.
  * A name is an identifier, an `.in` name may carry a leading '-' (the
  * value with its sign bit flipped).  The model binder
@@ -81,15 +36,11 @@ typedef struct fp3_binding {
   int line; /* source line, 0: unknown (read from an image file) */
 } fp3_binding;
 
-/* A program image.  in_reg / out_reg: register bound to each parameter of
- * the tables above, -1 when the program does not bind it (the same
- * bindings as bind_in / bind_out where the names are the tables'). */
+/* A program image: its words and its bindings by name. */
 typedef struct fp3_image {
   uint64_t words[FP3_DEFAULT_IMEM_DEPTH];
   int line[FP3_DEFAULT_IMEM_DEPTH]; /* source line of each word, 0: unknown */
   size_t n;                         /* words used                          */
-  int in_reg[FP3_IN_COUNT];
-  int out_reg[FP3_OUT_COUNT];
   fp3_binding bind_in[FP3_MAX_BINDINGS], bind_out[FP3_MAX_BINDINGS];
   unsigned nbind_in, nbind_out;
   char model[256];     /* `.model "FILE"`: the model the program integrates
@@ -102,8 +53,7 @@ typedef struct fp3_image {
  * an input's (is_in) also with a leading '-'; else 0. */
 int fp3_image_binding_name_ok(int is_in, const char *name);
 
-/* Record binding `name` -> reg (is_in: an input, else a result) in both
- * forms.  0, or -1 with the reason in why: a name that is none
+/* Record binding `name` -> reg (is_in: an input, else a result).  0, or -1 with the reason in why: a name that is none
  * (fp3_image_binding_name_ok), a name given twice, a register bound twice
  * on the same side, more than FP3_MAX_BINDINGS. */
 int fp3_image_bind(fp3_image *img, int is_in, const char *name, int reg, int line,
@@ -117,12 +67,6 @@ void fp3_image_init(fp3_image *img);
  * of the instruction memory, a fault: fp3_scheduler.v).  A program the
  * CLI assembles must pass (fp3 asm, fp3 run). */
 int fp3_image_ends(const fp3_image *img);
-
-/* Names of the parameters; lookup returns the index or -1. */
-const char *fp3_in_name(int id);
-const char *fp3_out_name(int id);
-int fp3_in_lookup(const char *name);
-int fp3_out_lookup(const char *name);
 
 /* Instruction word fields. */
 static inline unsigned fp3_insn_opc(uint64_t w) {

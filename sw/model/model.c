@@ -841,9 +841,9 @@ static void step_rk4(const fp3_model *m, int all, int se, int comp, const float 
     float d;
     if (all || m->role[i] == FP3_MR_VELOCITY) {
       const float k4 = h * f[3][i];
-      d = 0.16666667f * (((k[0][i] + 2.0f * k[1][i]) + 2.0f * k[2][i]) + k4);
+      d = FP3_RK4_SIXTH * (((k[0][i] + 2.0f * k[1][i]) + 2.0f * k[2][i]) + k4);
     } else if (!se) { /* the s-stages of RK4 on x' = f: h/6 (f1 + 2 (f2 + f3) + f4) */
-      const float h6 = h * 0.16666667f;
+      const float h6 = h * FP3_RK4_SIXTH;
       d = h6 * ((f[0][i] + 2.0f * (f[1][i] + f[2][i])) + f[3][i]);
     } else {
       continue;

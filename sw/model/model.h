@@ -33,6 +33,13 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The constants of RK4's stages and weights (half, two, sixth), binary32,
+ * as every integrator and program loads them (`li`): 1/6 is 0.16666667f,
+ * the binary32 nearest to it, 0x3E2AAAAB. */
+#define FP3_RK4_HALF 0.5f
+#define FP3_RK4_TWO 2.0f
+#define FP3_RK4_SIXTH 0.16666667f
+
 #define FP3_MODEL_NAME_LEN  32    /* longest name + 1                       */
 #define FP3_MODEL_MAX_VARS  32    /* params (h included), state variables   */
 #define FP3_MODEL_MAX_DEFS  128   /* consts, lets                           */

@@ -15,6 +15,48 @@
 #include "mscene.h"
 #include "progress.h"
 
+/* ---- a ship ------------------------------------------------------------------ */
+
+void fp3_ship_default(fp3_ship_params *p) {
+  p->T = 50000.0f;
+  p->C = 5000.0f;
+  p->m = 10000.0f;
+  p->h = 1.0f / 60.0f; /* 0.016666668f */
+  p->v0 = 0.0f;
+  p->s0 = 0.0f;
+}
+
+int fp3_ship_validate(const fp3_ship_params *p, char *msg, size_t n) {
+  const struct {
+    const char *name;
+    float v;
+  } all[] = {{"T", p->T}, {"C", p->C},   {"m", p->m},
+             {"h", p->h}, {"v0", p->v0}, {"s0", p->s0}};
+  for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
+    if (!isfinite(all[i].v)) {
+      snprintf(msg, n, "parameter %s = %g is not a finite number", all[i].name,
+               (double)all[i].v);
+      return -1;
+    }
+  if (!(p->m > 0.0f)) {
+    snprintf(msg, n, "parameter m = %g: the mass must be > 0", (double)p->m);
+    return -1;
+  }
+  if (!(p->h > 0.0f)) {
+    snprintf(msg, n, "parameter h = %g: the time step must be > 0",
+             (double)p->h);
+    return -1;
+  }
+  if (p->C < 0.0f) {
+    snprintf(msg, n, "parameter C = %g: the drag coefficient must be >= 0",
+             (double)p->C);
+    return -1;
+  }
+  return 0;
+}
+
+float fp3_ship_minv(float m) { return 1.0f / m; }
+
 /* ---- scene files --------------------------------------------------------- */
 
 /* Next whitespace-separated binary32 number of *p; -1 if none or bad. */
@@ -209,32 +251,4 @@ int fp3_scene_harbour(uint64_t seed, size_t n, float h, fp3_scene *sc) {
 void fp3_scene_free(fp3_scene *sc) {
   free(sc->objs);
   memset(sc, 0, sizeof *sc);
-}
-
-/* ---- the host's values of a ship ----------------------------------------- */
-
-void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]) {
-  fpenv_saved env;
-  int entered = fpenv_enter(FPREF_IEEE, &env) == 0; /* RNE, subnormals */
-  const float minv = fp3_ship_minv(p->m);
-  const float hm = p->h * minv;
-  val[FP3_IN_T] = p->T;
-  val[FP3_IN_C] = p->C;
-  val[FP3_IN_M] = p->m;
-  val[FP3_IN_MINV] = minv;
-  val[FP3_IN_H] = p->h;
-  val[FP3_IN_V0] = p->v0;
-  val[FP3_IN_S0] = p->s0;
-  val[FP3_IN_HM] = hm;
-  val[FP3_IN_HMT] = hm * p->T;
-  val[FP3_IN_HMC] = hm * p->C;
-  val[FP3_IN_NV0] = -p->v0; /* a sign flip, exact */
-  if (entered) fpenv_leave(&env);
-}
-
-void fp3_in_registers(const fp3_image *img, const fp3_ship_params *p, uint32_t *regs) {
-  float values[FP3_IN_COUNT];
-  fp3_in_values(p, values);
-  for (int i = 0; i < FP3_IN_COUNT; i++)
-    if (img->in_reg[i] >= 0) regs[img->in_reg[i]] = fpref_bits(values[i]);
 }

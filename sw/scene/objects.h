@@ -20,8 +20,30 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "golden.h"
 #include "image.h"
+
+/* One ship of a scene (binary32, SI units): Bourg's ship, the paper's
+ * Equations (1), as the five columns give it. */
+typedef struct fp3_ship_params {
+  float T;  /* thrust [N]              */
+  float C;  /* drag coefficient [kg/s] */
+  float m;  /* mass [kg]               */
+  float h;  /* time step [s]           */
+  float v0; /* initial velocity [m/s]  */
+  float s0; /* initial displacement [m]*/
+} fp3_ship_params;
+
+/* The default ship: a 10 t patrol boat, 50 kN thrust, C = 5000 kg/s:
+ * terminal velocity 10 m/s, time constant 2 s, h = 1/60 s (the defaults
+ * of models/ship.fp3m). */
+void fp3_ship_default(fp3_ship_params *p);
+
+/* 0 if the parameters are usable, else -1 and a message naming the
+ * parameter (m <= 0, h <= 0, C < 0, any non-finite value). */
+int fp3_ship_validate(const fp3_ship_params *p, char *msg, size_t n);
+
+/* minv as the host computes it: 1.0f / m, correctly rounded binary32. */
+float fp3_ship_minv(float m);
 
 /* A scene: n objects, all with the same h (objs[i].h). */
 typedef struct fp3_scene {
@@ -64,17 +86,5 @@ void fp3_scene_free(fp3_scene *sc);
 /* The scene generators' xorshift64 (Marsaglia 2003, shifts 13, 7, 17):
  * advances *s (never 0) and returns it. */
 uint64_t fp3_scene_xorshift(uint64_t *s);
-
-/* The value of every `.in` parameter (enum fp3_in_param) for object p:
- * the scene values, minv = 1.0f/m, and the folded inputs hm = h*minv,
- * hmT = hm*T, hmC = hm*C, and nv0 = -v0.  Each derived value is one binary32 operation in
- * round-to-nearest-even with subnormals, whatever the caller's FP
- * environment (fpenv.h): the values the host writes, and the values the
- * golden models must start from. */
-void fp3_in_values(const fp3_ship_params *p, float val[FP3_IN_COUNT]);
-
-/* Write the `.in` registers of img for object p into regs[] (registers the
- * image does not bind are left alone). */
-void fp3_in_registers(const fp3_image *img, const fp3_ship_params *p, uint32_t *regs);
 
 #endif /* FP3_OBJECTS_H */
