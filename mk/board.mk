@@ -55,3 +55,22 @@ lint-board: $(SETUP_STAMP)
 	  $(VERILATOR) --lint-only -Wall -Irtl --top-module $$top -GPLL_BYPASS=$$p \
 	    $$(ls boards/$$b/*.vlt 2>/dev/null) $(RTL_SRC) boards/$$b/*.v sim/ecp5_ehxplll.v; done; \
 	  echo "lint: $$top (PLL in place and bypassed) verilator -Wall clean"; done
+
+# ---- the simulated board (sim/board_sim.cpp) ---------------------------------------
+# The board top Verilated with BOARD_SIM_PARAMS (the PLL bypassed, a few
+# clocks a bit), behind a pseudo-terminal or a TCP socket.
+BOARD_SIM_DIR := $(BUILD)/board-sim/$(BOARD)
+BOARD_SIM     := $(BOARD_SIM_DIR)/fp3-board-sim
+$(BOARD_SIM): sim/board_sim.cpp $(RTL_SRC) $(RTL_INC) $(BOARD_SRC) sim/ecp5_ehxplll.v \
+              $(BOARD_MK) mk/board.mk $(VERILATED_OBJS) | $(SETUP_STAMP)
+	@mkdir -p $(BOARD_SIM_DIR)
+	$(VERILATOR) --cc --exe --build -j 2 $(VFLAGS) -MAKEFLAGS OPT_FAST=-O2 -CFLAGS -O2 \
+	  --top-module $(BOARD_TOP) $(BOARD_SIM_PARAMS) --prefix Vboard \
+	  -CFLAGS '-DVBOARD=Vboard -DVBOARD_HEADER=\"Vboard.h\"' \
+	  --Mdir $(BOARD_SIM_DIR)/obj -o ../fp3-board-sim \
+	  $(wildcard boards/$(BOARD)/*.vlt) $(RTL_SRC) $(BOARD_SRC) sim/ecp5_ehxplll.v $(abspath sim/board_sim.cpp) \
+	  >$(BOARD_SIM_DIR)/build.log 2>&1 || { tail -40 $(BOARD_SIM_DIR)/build.log; exit 1; }
+
+.PHONY: board-sim
+## board-sim: build the simulated board (BOARD=ulx3s): its top Verilated behind a pty or TCP socket (sim/board_sim.cpp)
+board-sim: $(BOARD_SIM)
