@@ -74,3 +74,10 @@ $(BOARD_SIM): sim/board_sim.cpp $(RTL_SRC) $(RTL_INC) $(BOARD_SRC) sim/ecp5_ehxp
 .PHONY: board-sim
 ## board-sim: build the simulated board (BOARD=ulx3s): its top Verilated behind a pty or TCP socket (sim/board_sim.cpp)
 board-sim: $(BOARD_SIM)
+
+# tests/test_board.sh: the simulated ULX3S driven by fp3 run --engine
+# uart:..., by litex_server and RemoteClient, by cut frames and by devices
+# that are not FP3 (about 30 s).
+TEST_SCRIPTS += tests/test_board.sh
+test-build: $(BOARD_SIM) $(BUILD)/fp3
+export BOARD_SIM_BIN := $(abspath $(BOARD_SIM))
