@@ -276,9 +276,10 @@ static int uart_read_reg(fp3_engine *e, unsigned slot, unsigned reg, uint32_t *v
   if (u->cache_slot != (int)slot) {
     select_ctx(u, slot % e->config.num_contexts);
     select_lane(u, slot / e->config.num_contexts);
-    if (bus_read(u, FP3_HR_REG_BASE, e->config.num_regs, u->cache) ||
-        check_bridge(u, "reading a register bank"))
-      return -1;
+    /* (CTX and LANE are in range, check_slot: their writes cannot fail
+     * while no run is in progress; the bridge's status is read with the
+     * next run or program) */
+    if (bus_read(u, FP3_HR_REG_BASE, e->config.num_regs, u->cache)) return -1;
     u->cache_slot = (int)slot;
   }
   *value = u->cache[reg];
@@ -301,16 +302,17 @@ static int uart_run(fp3_engine *e, uint32_t steps, unsigned contexts, const fp3_
   const unsigned hw = contexts <= nc || contexts > nc * nl ? contexts : nc;
   bus_write(u, FP3_HR_STEPS, steps);
   bus_write(u, FP3_HR_CONTEXTS, hw);
+  /* START's outcome (SLVERR: a run in progress) is in the bridge's
+   * status, read at the end; a refused START leaves RUNNING clear */
   bus_write(u, FP3_HR_CTRL, FP3_CTRL_START);
-  if (check_bridge(u, "starting the run")) return -1;
   /* wait for the run's end: RUNNING clear */
   const double limit_ms =
       30e3 + (double)fp3_config_cycle_limit(&e->config, steps, hw) / 1e6 * 1e3;
   const double t0 = now_ms();
-  uint32_t status;
+  uint32_t w[16]; /* STATUS .. STALLS_HI of context 0; [11 ..]: another's STATUS .. FLAGS */
   for (;;) {
-    if (bus_read(u, FP3_HR_STATUS, 1, &status)) return -1;
-    if (!(status & FP3_STATUS_RUNNING)) break;
+    if (bus_read(u, FP3_HR_STATUS, 1, w)) return -1;
+    if (!(w[0] & FP3_STATUS_RUNNING)) break;
     if (now_ms() - t0 > limit_ms) {
       snprintf(e->error, sizeof e->error,
                "%s: the board still runs after %.0f s, longer than %llu cycles at 1 MHz "
@@ -319,31 +321,36 @@ static int uart_run(fp3_engine *e, uint32_t steps, unsigned contexts, const fp3_
       return -1;
     }
   }
-  /* each context's status (STATUS .. FLAGS: 0x001 .. 0x005), each lane's flags */
-  for (unsigned c = 0; c < nc; c++) {
-    uint32_t w[5];
+  /* context 0: STATUS .. STALLS_HI in one burst (its status, the selected
+   * lane's FLAGS, the counters); every other context that ran: STATUS ..
+   * FLAGS (0x001 .. 0x005); the other lanes' FLAGS one by one.  Contexts
+   * that did not run keep a zero status. */
+  const unsigned ran = hw < nc ? hw : nc;
+  if (u->lane_sel == UINT_MAX) select_lane(u, 0);
+  for (unsigned c = 0; c < ran; c++) {
     select_ctx(u, c);
-    if (u->lane_sel == UINT_MAX) select_lane(u, 0);
-    if (bus_read(u, FP3_HR_STATUS, 5, w)) return -1;
+    if (bus_read(u, FP3_HR_STATUS, c == 0 ? FP3_HR_STALLS_HI - FP3_HR_STATUS + 1 : 5,
+                 c == 0 ? w : w + 11))
+      return -1;
+    const uint32_t *x = c == 0 ? w : w + 11;
     fp3_ctx_status cs;
-    cs.error = (w[0] >> FP3_STATUS_ERROR_LSB) & 0xF;
-    cs.steps_done = w[FP3_HR_STEPS_DONE - FP3_HR_STATUS];
-    cs.fault_pc = w[FP3_HR_FAULT_PC - FP3_HR_STATUS];
+    cs.error = (x[0] >> FP3_STATUS_ERROR_LSB) & 0xF;
+    cs.steps_done = x[FP3_HR_STEPS_DONE - FP3_HR_STATUS];
+    cs.fault_pc = x[FP3_HR_FAULT_PC - FP3_HR_STATUS];
+    uint32_t flags = x[FP3_HR_FLAGS - FP3_HR_STATUS];
+    const unsigned first = u->lane_sel; /* the lane whose FLAGS came with the burst */
     for (unsigned l = 0; l < nl; l++) {
-      unsigned lane = (u->lane_sel + l) % nl; /* the selected lane first */
-      if (lane != u->lane_sel) {
+      unsigned lane = (first + l) % nl;
+      if (l > 0) {
         select_lane(u, lane);
-        if (bus_read(u, FP3_HR_FLAGS, 1, &w[4])) return -1;
+        if (bus_read(u, FP3_HR_FLAGS, 1, &flags)) return -1;
       }
-      cs.flags = w[4];
+      cs.flags = flags;
       u->cs[lane * nc + c] = cs;
       if (lane * nc + c < contexts) st->flags |= cs.flags;
     }
   }
-  uint32_t w[FP3_HR_STALLS_HI - FP3_HR_STATUS + 1];
-  select_ctx(u, 0);
-  if (bus_read(u, FP3_HR_STATUS, FP3_HR_STALLS_HI - FP3_HR_STATUS + 1, w)) return -1;
-  status = w[0];
+  uint32_t status = w[0];
 #define W(r) ((uint64_t)w[FP3_HR_##r - FP3_HR_STATUS])
   st->done = (status & FP3_STATUS_DONE) != 0;
   st->any_error = (status & FP3_STATUS_ANY_ERROR) != 0;
@@ -355,7 +362,7 @@ static int uart_run(fp3_engine *e, uint32_t steps, unsigned contexts, const fp3_
   st->stalls = W(STALLS_LO) | W(STALLS_HI) << 32;
 #undef W
   bus_write(u, FP3_HR_CTRL, FP3_CTRL_CLEAR);
-  return check_bridge(u, "reading the run's status");
+  return check_bridge(u, "the run");
 }
 
 static void uart_destroy(fp3_engine *e) {
