@@ -81,3 +81,6 @@ board-sim: $(BOARD_SIM)
 TEST_SCRIPTS += tests/test_board.sh
 test-build: $(BOARD_SIM) $(BUILD)/fp3
 export BOARD_SIM_BIN := $(abspath $(BOARD_SIM))
+# tests/test_bitstream.sh: scripts/bitstream.sh's verdict with stand-ins for
+# nextpnr and ecppack (a second).
+TEST_SCRIPTS += tests/test_bitstream.sh

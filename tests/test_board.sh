@@ -7,7 +7,8 @@
 #   - fp3 run --engine uart:PTY: the ship program (programs/ship_rk4.s,
 #     fp3 run's default) and a model scene (spring, 4 objects), each
 #     bit-exact with the golden model and with the same results as
-#     --engine rtl; the ship once more over uart:socket://;
+#     --engine rtl; the ship once more over uart:socket://; fp3 frames of
+#     3 springs;
 #   - LiteX's own client: litex_server --uart on the same pty and
 #     tests/board_remote.py (RemoteClient): the ID register and one
 #     integration of a program it encodes itself;
@@ -94,6 +95,15 @@ if "$FP3" run --engine "$DEV" --model models/spring.fp3m --objects 4 --steps 300
   ok "4 springs on $DEV: bit-exact, the results of --engine rtl"
 else
   bad "4 springs on $DEV"; cat "$T/err"
+fi
+
+# fp3 frames: 3 springs, 20 frames (a START each), every frame compared
+if "$FP3" frames --engine "$DEV" --model models/spring.fp3m --objects 3 --frames 20 --json \
+     >"$T/frames.json" 2>"$T/err" &&
+   python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); sys.exit(0 if r["pass"] and r["golden_mismatches"] == 0 else 1)' "$T/frames.json"; then
+  ok "fp3 frames on $DEV: 3 springs, 20 frames, bit-identical every frame"
+else
+  bad "fp3 frames on $DEV"; cat "$T/err" "$T/frames.json"
 fi
 
 # ---- LiteX's own client: litex_server --uart on the same pty ------------------
