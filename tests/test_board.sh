@@ -11,7 +11,9 @@
 #     3 springs;
 #   - LiteX's own client: litex_server --uart on the same pty and
 #     tests/board_remote.py (RemoteClient): the ID register and one
-#     integration of a program it encodes itself;
+#     integration of a program it encodes itself; litex_cli --regs with the
+#     csr.csv of scripts/board-csr.py (ID, and INFO2: 8 contexts, 1 lane,
+#     no div/sqrt);
 #   - raw frames: a frame cut in the middle is dropped after the bridge's
 #     timeout (its DROPPED bit set, the half-written registers untouched)
 #     and the next frame works;
@@ -120,6 +122,15 @@ if timeout 60 python3 tests/board_remote.py "$port" >"$T/remote.txt" 2>&1; then
 else
   bad "litex_server + RemoteClient"; cat "$T/remote.txt" "$T/litex.log"
 fi
+# litex_cli --regs names FP3's registers from a csr.csv of the host-port map
+python3 scripts/board-csr.py sw/isa/fp3_isa.h "$T/csr.csv"
+if (cd "$T" && timeout 60 litex_cli --csr-csv csr.csv --port "$port" --regs) >"$T/regs.txt" 2>&1 &&
+   grep -q "^0x00000038 : 0x46503301 id$" "$T/regs.txt" &&
+   grep -q "^0x00000044 : 0x01270008 info2$" "$T/regs.txt"; then
+  ok "litex_cli --regs with scripts/board-csr.py's csr.csv: $(wc -l < "$T/regs.txt") registers by name"
+else
+  bad "litex_cli --regs"; cat "$T/regs.txt"
+fi
 kill "$lpid" 2>/dev/null; wait "$lpid" 2>/dev/null
 
 # ---- a frame cut in the middle --------------------------------------------------
@@ -146,7 +157,7 @@ os.write(fd, frame(1, 0x00F, [0]))                # CTX 0
 os.write(fd, frame(1, 0x105, [0x11111111, 0x22222222]))
 before = read(0x105, 2)
 os.write(fd, frame(1, 0x105, [0xAAAAAAAA, 0xBBBBBBBB])[:9])   # cut after 3 data bytes
-time.sleep(1.0)
+time.sleep(2.0)
 ident = read(0x00E, 1)[0]
 after = read(0x105, 2)
 status = read(0x1000, 1)[0]
