@@ -382,6 +382,7 @@ static void rtl_destroy(fp3_engine *e) {
 
 static const fp3_engine_ops rtl_ops = {
     "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_ctx_status, rtl_destroy,
+    0, /* traced: the trace port reports every write-back */
 };
 
 /* The Verilated builds, one per core configuration. */
