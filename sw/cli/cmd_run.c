@@ -405,8 +405,10 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
            res.issued, res.stalls);
     printf(", \"cycles_first_step\": null, \"cycles_later_step\": null");
     printf(", \"cycles_per_object_step\": %.9g", per);
-    printf(", \"issued_per_object_step\": %.9g", (double)res.issued / object_steps);
-    printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    if (!res.final_only) { /* a board counts no issues per unit: both left out */
+      printf(", \"issued_per_object_step\": %.9g", (double)res.issued / object_steps);
+      printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    }
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
     if (res.mismatches)
       printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
@@ -468,7 +470,10 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
              max_err, sc->n - ref_fail);
     printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
            res.cycles, per, (double)res.issued / object_steps);
-    printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
+    if (res.final_only)
+      printf("utilization: not measured (the engine reports no issues per unit)\n");
+    else
+      printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
     printf("flags: %s\n", flags);
     if (res.error)
       printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
