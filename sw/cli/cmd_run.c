@@ -52,7 +52,7 @@
 static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 run [--model FILE.fp3m] [--program FILE.s | --integrator NAME [--literal]]\n"
-          "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss]\n"
+          "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss|uart:DEVICE[@BAUD]]\n"
           "               [--objects N [--seed S] | --scene FILE]\n"
           "               [--round rne|rtz] [--ftz] [--json]\n"
           "               [--trace FILE.vcd [--trace-window FIRST:COUNT] [--trace-limit SIZE]]\n"
@@ -76,7 +76,10 @@ static void usage(FILE *f) {
           "                    NAME0), binary32; the model file's defaults otherwise\n"
           "  --steps N         integrations, 1..4294967295 (default %u)\n"
           "  --engine E        rtl (Verilated RTL, default) or iss (simulator; its\n"
-          "                    cycles are instructions, one issued a cycle)\n"
+          "                    cycles are instructions, one issued a cycle), or a board\n"
+          "                    on a serial line: uart:DEVICE[@BAUD] (default 3000000),\n"
+          "                    uart:socket://HOST:PORT (docs/board.md; no trace port:\n"
+          "                    the state after the run is compared)\n"
           "  --objects N       N objects on the contexts and lanes, in batches: object 0\n"
           "                    the --set values, the others each value (h excepted)\n"
           "                    times its own factor in [0.75, 1.25] from --seed S\n"
@@ -129,7 +132,9 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
   ob.nstate = ns;
   ob.steps = a->steps;
   for (unsigned i = 0; i < ns; i++) ob.reg[i] = fp3_compiled_state_reg(c, i);
-  if ((uint64_t)a->steps * ns <= MAX_CHECKED) {
+  /* every integration when the engine reports its write-backs; a board's
+   * (no trace port) is compared after the run, its final state */
+  if ((uint64_t)a->steps * ns <= MAX_CHECKED && !fp3_engine_untraced(e)) {
     ob.v = calloc((size_t)a->steps * ns, sizeof *ob.v);
     ob.seen = calloc((size_t)a->steps * ns, 1);
     if (!ob.v || !ob.seen) {
@@ -400,8 +405,10 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
            res.issued, res.stalls);
     printf(", \"cycles_first_step\": null, \"cycles_later_step\": null");
     printf(", \"cycles_per_object_step\": %.9g", per);
-    printf(", \"issued_per_object_step\": %.9g", (double)res.issued / object_steps);
-    printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    if (!res.final_only) { /* a board counts no issues per unit: both left out */
+      printf(", \"issued_per_object_step\": %.9g", (double)res.issued / object_steps);
+      printf(", \"utilization\": {\"add\": %.6f, \"mul\": %.6f}", add_util, mul_util);
+    }
     printf(", \"golden_mismatches\": %" PRIu64 ", \"first_mismatch\": ", res.mismatches);
     if (res.mismatches)
       printf("{\"object\": %zu, \"integration\": %" PRIu32 ", \"variable\": \"%s\", \"got\": "
@@ -447,8 +454,13 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
       printf("\n");
     }
     if (sc->n > SHOW_OBJECTS) printf("     ... (%zu more)\n", sc->n - SHOW_OBJECTS);
-    printf("\ngolden model: %" PRIu64 " mismatches in %.0f object-steps (every state variable, "
-           "bit for bit)\n", res.mismatches, object_steps);
+    if (res.final_only)
+      printf("\ngolden model: %" PRIu64 " mismatches in the final state of %zu objects after "
+             "%" PRIu32 " integrations (every state variable, bit for bit; the engine reports "
+             "no write-backs)\n", res.mismatches, res.objects, a->steps);
+    else
+      printf("\ngolden model: %" PRIu64 " mismatches in %.0f object-steps (every state variable, "
+             "bit for bit)\n", res.mismatches, object_steps);
     if (res.mismatches)
       printf("  first: object %zu, integration %" PRIu32 ", %s = 0x%08" PRIX32
              ", golden 0x%08" PRIX32 "\n", res.first_object, res.first_step,
@@ -458,7 +470,10 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
              max_err, sc->n - ref_fail);
     printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
            res.cycles, per, (double)res.issued / object_steps);
-    printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
+    if (res.final_only)
+      printf("utilization: not measured (the engine reports no issues per unit)\n");
+    else
+      printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
     printf("flags: %s\n", flags);
     if (res.error)
       printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,

@@ -166,7 +166,21 @@ int fp3_run_setup_engine(const fp3_model_args *a, fp3_run_setup *s, const char *
   char msg[512];
   const int iss = strcmp(a->engine, "iss") == 0;
   if (fp3_trace_writable(&a->trace, cmd)) return EXIT_USAGE;
-  s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace.path);
+  if (fp3_engine_is_uart(a->engine)) {
+    /* a board: its build is what it is; the options must agree with it */
+    s->e = fp3_engine_uart_new(a->engine + 5, msg, sizeof msg);
+    if (!s->e) {
+      fprintf(stderr, "fp3 %s: %s\n", cmd, msg);
+      return EXIT_FAIL;
+    }
+    if (s->e->config.mode.round != a->mode.round || s->e->config.mode.ftz != a->mode.ftz) {
+      fprintf(stderr, "fp3 %s: %s: the board is built with --round %s%s, not as asked\n", cmd,
+              a->engine, fpenv_round_name(s->e->config.mode), s->e->config.mode.ftz ? " --ftz" : "");
+      return EXIT_USAGE;
+    }
+  } else {
+    s->e = iss ? fp3_engine_iss_new_mode(a->mode) : fp3_engine_rtl_new_mode(a->mode, a->trace.path);
+  }
   if (!s->e || fp3_engine_error(s->e)[0]) {
     fprintf(stderr, "fp3 %s: cannot create the %s engine%s%s\n", cmd, a->engine, s->e ? ": " : "",
             s->e ? fp3_engine_error(s->e) : "");

@@ -13,7 +13,31 @@ fp3_engine *fp3_engine_new(const char *name) {
   if (!name) return NULL;
   if (strcmp(name, "iss") == 0) return fp3_engine_iss_new();
   if (strcmp(name, "rtl") == 0) return fp3_engine_rtl_new(NULL);
+  if (fp3_engine_is_uart(name)) {
+    char err[512];
+    fp3_engine *e = fp3_engine_uart_new(name + 5, err, sizeof err);
+    if (!e) fprintf(stderr, "fp3: %s\n", err);
+    return e;
+  }
   return NULL;
+}
+
+int fp3_engine_is_uart(const char *name) {
+  return name && strncmp(name, "uart:", 5) == 0 && name[5] != '\0';
+}
+
+int fp3_engine_untraced(const fp3_engine *e) {
+  return e && e->ops->untraced;
+}
+
+uint64_t fp3_config_cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
+  const uint64_t extra = (c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0) +
+                         (c->num_lanes > 1 ? FP3_LANES_BEQ_CYCLES : 0);
+  unsigned longest = c->add_latency > c->mul_latency ? c->add_latency : c->mul_latency;
+  if (c->div_latency > longest) longest = c->div_latency;
+  uint64_t per_insn = (uint64_t)longest + 2 + extra;
+  if (per_insn < FP3_BEQ_CYCLES + extra) per_insn = FP3_BEQ_CYCLES + extra;
+  return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
 }
 
 unsigned fp3_config_slots(const fp3_config *c) {

@@ -182,6 +182,11 @@ typedef struct fp3_engine_ops {
              const fp3_observer *obs, fp3_status *st);
   int (*ctx_status)(fp3_engine *e, unsigned context, fp3_ctx_status *cs);
   void (*destroy)(fp3_engine *e);
+  /* 1: a run reports no write-back or endi events to its observer (a
+   * board behind a serial line has no trace port); its callers compare
+   * the state the registers hold after the run.  0 (the RTL, the ISS):
+   * every event is reported. */
+  int untraced;
 } fp3_engine_ops;
 
 /* Common head of every engine object. */
@@ -230,7 +235,30 @@ fp3_engine *fp3_engine_rtl_new_model(const void *model_ops, const char *trace_pa
  * after START; count UINT64_MAX: to the end), nothing outside runs.
  * Returns -1 for an engine that is not the RTL. */
 int fp3_engine_rtl_trace_window(fp3_engine *e, uint64_t first, uint64_t count);
-/* By name, "rtl" or "iss"; NULL for an unknown name. */
+/* A board behind a serial line, speaking LiteX's UARTBone protocol to its
+ * UART bridge (rtl/fp3_uartbone.v, engine_uart.c; docs/board.md).  spec
+ * is what follows "uart:" in --engine: DEVICE[@BAUD] (a serial device or
+ * pseudo-terminal; BAUD default 3000000) or socket://HOST:PORT.  Reads
+ * the build's INFO registers and checks ID.  NULL with the reason in err
+ * (naming the device) when the device cannot be opened, does not answer
+ * within the timeout, answers short, or answers with a wrong ID.
+ * Environment: FP3_UART_TIMEOUT_MS, the longest wait for one answer
+ * (default 5000); FP3_UART_STATS=1, the frames and words of the session
+ * on stderr when the engine is freed. */
+fp3_engine *fp3_engine_uart_new(const char *spec, char *err, size_t n);
+/* 1 when name is "uart:" followed by something (a uart engine's name). */
+int fp3_engine_is_uart(const char *name);
+/* 0 when the engine's runs report every write-back and endi to their
+ * observer, 1 when they report none (fp3_engine_ops.untraced). */
+int fp3_engine_untraced(const fp3_engine *e);
+/* Upper bound on the cycles of a legal run of `steps` integrations of
+ * `contexts` contexts on build c: every integration passes at most the
+ * whole instruction memory once (beq branches only ahead), each
+ * instruction waiting at most the longest latency or a beq's resolution.
+ * Exceeding it means the machine hung. */
+uint64_t fp3_config_cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts);
+/* By name, "rtl", "iss" or "uart:SPEC"; NULL for an unknown name (or a
+ * uart engine that cannot be opened: the reason on stderr). */
 fp3_engine *fp3_engine_new(const char *name);
 
 /* Thin dispatchers over e->ops.  The forms without a context use context

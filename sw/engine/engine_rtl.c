@@ -247,20 +247,6 @@ static int rtl_ctx_status(fp3_engine *e, unsigned context, fp3_ctx_status *cs) {
   return 0;
 }
 
-/* Upper bound on the cycles of a legal run: every integration passes at
- * most the whole memory once (beq branches only ahead), each instruction
- * waiting at most the longest latency or a beq's resolution.  Exceeding it
- * means the machine hung. */
-static uint64_t cycle_limit(const fp3_config *c, uint32_t steps, unsigned contexts) {
-  const uint64_t extra = (c->fmax_pipe ? FP3_FMAX_PIPE_CYCLES : 0) +
-                         (c->num_lanes > 1 ? FP3_LANES_BEQ_CYCLES : 0);
-  unsigned longest = c->add_latency > c->mul_latency ? c->add_latency : c->mul_latency;
-  if (c->div_latency > longest) longest = c->div_latency;
-  uint64_t per_insn = (uint64_t)longest + 2 + extra;
-  if (per_insn < FP3_BEQ_CYCLES + extra) per_insn = FP3_BEQ_CYCLES + extra;
-  return ((uint64_t)steps + 1) * c->imem_depth * per_insn * (contexts ? contexts : 1) + 1000;
-}
-
 static int rtl_run_once(fp3_engine *e, uint32_t steps, unsigned contexts,
                         const fp3_observer *obs, fp3_status *st) {
   rtl_engine *r = (rtl_engine *)e;
@@ -283,7 +269,7 @@ static int rtl_run_once(fp3_engine *e, uint32_t steps, unsigned contexts,
   host_write(r, FP3_HR_CTRL, FP3_CTRL_START);
 
   uint32_t endis[FP3_MAX_CONTEXTS] = {0};
-  uint64_t limit = cycle_limit(&e->config, steps, hw);
+  uint64_t limit = fp3_config_cycle_limit(&e->config, steps, hw);
   fp3_model_out out;
   for (uint64_t cycle = 0;; cycle++) {
     r->mops->cycle(r->model, NULL, &out);
@@ -396,6 +382,7 @@ static void rtl_destroy(fp3_engine *e) {
 
 static const fp3_engine_ops rtl_ops = {
     "rtl", rtl_load_program, rtl_write_reg, rtl_read_reg, rtl_run, rtl_ctx_status, rtl_destroy,
+    0, /* traced: the trace port reports every write-back */
 };
 
 /* The Verilated builds, one per core configuration. */

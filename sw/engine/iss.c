@@ -229,6 +229,7 @@ static void iss_destroy(fp3_engine *e) {
 static const fp3_engine_ops iss_ops = {
     "iss",   iss_load_program, iss_write_reg,  iss_read_reg,
     iss_run, iss_ctx_status,   iss_destroy,
+    0, /* traced: every write-back is reported */
 };
 
 fp3_engine *fp3_engine_iss_new_mode(fpref_mode mode) {

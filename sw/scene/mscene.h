@@ -140,6 +140,9 @@ typedef struct fp3_state_result {
   uint32_t nonfinite_step;
   unsigned nonfinite_var;
   uint32_t *y;             /* final state, objects x nstate (malloc'd)     */
+  int final_only;          /* 1: the engine reports no write-backs (a
+                              board, fp3_engine_untraced): only the final
+                              state was compared, not every integration   */
 } fp3_state_result;
 
 /* Run `nobj` objects for `steps` integrations on engine e with the
@@ -148,7 +151,8 @@ typedef struct fp3_state_result {
  * lane s / NUM_CONTEXTS of context s % NUM_CONTEXTS, engine.h): each
  * slot's registers zeroed, then golden->start's writes; after the batch, every
  * state register of every object after every integration compared bit for
- * bit with golden->step (run in `mode`).  Returns 0 when the runs took
+ * bit with golden->step (run in `mode`); on an engine that reports no
+ * write-backs (fp3_engine_untraced: a board) the state after the run.  Returns 0 when the runs took
  * place (mismatches, errors and non-finite states are in *res), or -1 with
  * a message (engine failure, out of memory, a register beyond NUM_REGS,
  * too much to record).  The object-steps count on the engine's progress line

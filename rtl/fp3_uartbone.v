@@ -1,0 +1,298 @@
+// fp3_uartbone -- a UARTBone bridge: frames from a serial line become
+// AXI4-Lite transfers on fp3_axil's port, read data go back on the line.
+//
+// Protocol: LiteX's UART bridge (litex/soc/cores/uart.py Stream2Wishbone;
+// its host side litex/tools/remote/comm_uart.py), so that litex_server,
+// litex_cli and RemoteClient drive FP3 as they drive a LiteX SoC.  A
+// frame is
+//     cmd, len, addr[4], data[4 * len]      (data only in a write)
+//   cmd  0x01 write, address incrementing   0x02 read, incrementing
+//        0x03 write, address fixed          0x04 read, fixed
+//   len  words, 1 .. 255 (0: the frame ends after its address)
+//   addr a 32-bit word address, big-endian; each data word big-endian.
+// A read answers exactly 4 * len bytes, a write answers nothing.  Another
+// first byte is not a command and is skipped.  Word address N is host
+// register N of fp3_axil (byte address 4N on AXI: FP3's register map,
+// sw/isa/fp3_isa.h FP3_HOSTREGS); word addresses 0 .. 2^(ADDR_WIDTH-2)-1
+// go to the bus.
+//
+// Bridge status, word address BRIDGE_STATUS (0x1000, just above FP3's
+// 12-bit map): read-only, and reading it clears it (a read-to-clear
+// register: the host reads it after the writes whose outcome matters,
+// since a write answers nothing).  Sticky bits, set since the last read:
+//   bit 0  BUS_ERROR   a transfer answered SLVERR or DECERR (fp3_axil: a
+//                      write to a read-only register, or to the register or
+//                      program windows while a run is in progress, ...),
+//                      or a read or write of an address neither on the bus
+//                      nor BRIDGE_STATUS (then nothing is done)
+//   bit 1  DROPPED     a frame was dropped: no byte came for TIMEOUT
+//                      cycles in the middle of it
+//   bit 2  FRAMING     a character's stop bit was low (it was skipped)
+//   bit 3  OVERRUN     a character came while the bridge was still busy
+//                      with the bus or sending read data (it was lost)
+// A read that ends in a bus error returns ERROR_DATA (0xBADC0DE5) instead
+// of the slave's data, and sets BUS_ERROR.  The fault output is high
+// while any bit is set (the board's fault LED).
+//
+// Timing: the bridge takes a byte whenever it waits for one (command,
+// length, address, write data), so frames may follow each other without
+// a gap.  It performs each write as soon as its fourth byte is in; the
+// bus must answer within the next character time (10 * CLKS_PER_BIT of
+// the UART; fp3_axil: a few cycles), else the next byte is lost
+// (OVERRUN).  A read's words are fetched one at a time, each before it is
+// sent.  TIMEOUT bounds the wait for the next byte of an unfinished frame
+// (LiteX: 100 ms), so that a host that died mid-frame leaves the bridge
+// ready for the next frame.
+//
+// Parameters
+//   ADDR_WIDTH  AXI byte address bits (fp3_axil's, >= 3)
+//   TIMEOUT     cycles without a byte after which an unfinished frame is
+//               dropped, >= 2
+// Ports
+//   clk_i, rst_i        clock; synchronous reset, active high
+//   rx_data_i, rx_valid_i  received characters (fp3_uart_rx)
+//   rx_ferr_i           a character with a low stop bit (fp3_uart_rx)
+//   tx_data_o, tx_valid_o, tx_ready_i  characters to send (fp3_uart_tx)
+//   m_axil_*            AXI4-Lite master; WSTRB all ones, PROT 0
+//   fault_o             some bridge status bit is set
+//   busy_o              a frame is in progress (the activity LED)
+`default_nettype none
+module fp3_uartbone #(
+  parameter integer ADDR_WIDTH = 14,
+  parameter integer TIMEOUT    = 10_000_000
+) (
+  input  wire                  clk_i,
+  input  wire                  rst_i,
+  // the serial side
+  input  wire [7:0]            rx_data_i,
+  input  wire                  rx_valid_i,
+  input  wire                  rx_ferr_i,
+  output wire [7:0]            tx_data_o,
+  output wire                  tx_valid_o,
+  input  wire                  tx_ready_i,
+  // AXI4-Lite master
+  output wire [ADDR_WIDTH-1:0] m_axil_awaddr_o,
+  output wire [2:0]            m_axil_awprot_o,
+  output wire                  m_axil_awvalid_o,
+  input  wire                  m_axil_awready_i,
+  output wire [31:0]           m_axil_wdata_o,
+  output wire [3:0]            m_axil_wstrb_o,
+  output wire                  m_axil_wvalid_o,
+  input  wire                  m_axil_wready_i,
+  input  wire [1:0]            m_axil_bresp_i,
+  input  wire                  m_axil_bvalid_i,
+  output wire                  m_axil_bready_o,
+  output wire [ADDR_WIDTH-1:0] m_axil_araddr_o,
+  output wire [2:0]            m_axil_arprot_o,
+  output wire                  m_axil_arvalid_o,
+  input  wire                  m_axil_arready_i,
+  input  wire [31:0]           m_axil_rdata_i,
+  input  wire [1:0]            m_axil_rresp_i,
+  input  wire                  m_axil_rvalid_i,
+  output wire                  m_axil_rready_o,
+  // status
+  output wire                  fault_o,
+  output wire                  busy_o
+);
+  // commands (Stream2Wishbone)
+  localparam [7:0] CMD_WRITE_INCR = 8'h01;
+  localparam [7:0] CMD_READ_INCR  = 8'h02;
+  localparam [7:0] CMD_WRITE_FIX  = 8'h03;
+  localparam [7:0] CMD_READ_FIX   = 8'h04;
+  localparam [31:0] BRIDGE_STATUS = 32'h0000_1000;
+  localparam [31:0] ERROR_DATA    = 32'hBADC_0DE5;
+  localparam [1:0]  RESP_OKAY     = 2'b00;
+  localparam integer WA_BITS = ADDR_WIDTH - 2;        // word address bits on the bus
+  localparam integer TW      = $clog2(TIMEOUT + 1);
+  localparam [TW-1:0] TIMEOUT_LAST = TIMEOUT[TW-1:0] - 1'b1;
+
+  localparam [2:0] S_CMD   = 3'd0,  // waiting for a command byte
+                   S_LEN   = 3'd1,  // ... for the length
+                   S_ADDR  = 3'd2,  // ... for the 4 address bytes
+                   S_WDATA = 3'd3,  // ... for the 4 bytes of a write's word
+                   S_WBUS  = 3'd4,  // a write on the bus
+                   S_RBUS  = 3'd5,  // a read on the bus
+                   S_RSEND = 3'd6;  // sending a read's word
+
+  reg [2:0]    state_q,  state_d;
+  reg          write_q,  write_d;   // the frame writes
+  reg          incr_q,   incr_d;    // the frame's address increments
+  reg [7:0]    left_q,   left_d;    // words still to transfer (this one incl.)
+  reg [31:0]   addr_q,   addr_d;    // word address of this word
+  reg [31:0]   data_q,   data_d;    // the word being received or sent
+  reg [1:0]    nbyte_q,  nbyte_d;   // bytes of addr / data so far (mod 4)
+  reg [TW-1:0] idle_q,   idle_d;    // cycles since the last byte, mid-frame
+  reg          aw_q,     aw_d;      // AWVALID
+  reg          w_q,      w_d;       // WVALID
+  reg          ar_q,     ar_d;      // ARVALID
+  reg          issued_q, issued_d;  // this word's transfer was started
+  reg [3:0]    status_q, status_d;  // {OVERRUN, FRAMING, DROPPED, BUS_ERROR}
+
+  wire on_bus    = addr_q[31:WA_BITS] == {(32 - WA_BITS){1'b0}};
+  wire is_status = addr_q == BRIDGE_STATUS;
+  wire last_word = left_q == 8'd1;
+  wire [31:0] addr_next = incr_q ? addr_q + 32'd1 : addr_q;
+  wire waiting_byte = state_q == S_CMD || state_q == S_LEN || state_q == S_ADDR ||
+                      state_q == S_WDATA;
+
+  always @(*) begin
+    state_d  = state_q;
+    write_d  = write_q;
+    incr_d   = incr_q;
+    left_d   = left_q;
+    addr_d   = addr_q;
+    data_d   = data_q;
+    nbyte_d  = nbyte_q;
+    idle_d   = idle_q;
+    aw_d     = aw_q && !m_axil_awready_i;
+    w_d      = w_q && !m_axil_wready_i;
+    ar_d     = ar_q && !m_axil_arready_i;
+    issued_d = issued_q;
+    status_d = status_q;
+    if (rx_ferr_i) status_d[2] = 1'b1;
+    if (rx_valid_i && !waiting_byte) status_d[3] = 1'b1;
+
+    // an unfinished frame: count the cycles without a byte, drop it after TIMEOUT
+    if (state_q == S_LEN || state_q == S_ADDR || state_q == S_WDATA) begin
+      if (rx_valid_i) idle_d = {TW{1'b0}};
+      else if (idle_q == TIMEOUT_LAST) begin
+        state_d     = S_CMD;
+        status_d[1] = 1'b1;
+      end else idle_d = idle_q + 1'b1;
+    end else begin
+      idle_d = {TW{1'b0}};
+    end
+
+    case (state_q)
+      S_CMD:
+        if (rx_valid_i) begin
+          write_d = rx_data_i == CMD_WRITE_INCR || rx_data_i == CMD_WRITE_FIX;
+          incr_d  = rx_data_i == CMD_WRITE_INCR || rx_data_i == CMD_READ_INCR;
+          if (rx_data_i == CMD_WRITE_INCR || rx_data_i == CMD_READ_INCR ||
+              rx_data_i == CMD_WRITE_FIX || rx_data_i == CMD_READ_FIX)
+            state_d = S_LEN;
+        end
+      S_LEN:
+        if (rx_valid_i) begin
+          left_d  = rx_data_i;
+          nbyte_d = 2'd0;
+          state_d = S_ADDR;
+        end
+      S_ADDR:
+        if (rx_valid_i) begin
+          addr_d  = {addr_q[23:0], rx_data_i};
+          nbyte_d = nbyte_q + 2'd1;
+          if (nbyte_q == 2'd3) begin
+            issued_d = 1'b0;
+            if (left_q == 8'd0) state_d = S_CMD;
+            else state_d = write_q ? S_WDATA : S_RBUS;
+          end
+        end
+      S_WDATA:
+        if (rx_valid_i) begin
+          data_d  = {data_q[23:0], rx_data_i};
+          nbyte_d = nbyte_q + 2'd1;
+          if (nbyte_q == 2'd3) state_d = S_WBUS;
+        end
+      S_WBUS: begin
+        // start the write (on the bus), or refuse it (anywhere else)
+        if (!issued_q) begin
+          issued_d = 1'b1;
+          if (on_bus) begin
+            aw_d = 1'b1;
+            w_d  = 1'b1;
+          end
+        end
+        if (issued_q && (!on_bus || (m_axil_bvalid_i && !aw_q && !w_q))) begin
+          if (!on_bus || m_axil_bresp_i != RESP_OKAY) status_d[0] = 1'b1;
+          issued_d = 1'b0;
+          left_d   = left_q - 8'd1;
+          addr_d   = addr_next;
+          state_d  = last_word ? S_CMD : S_WDATA;
+        end
+      end
+      S_RBUS: begin
+        if (!issued_q) begin
+          issued_d = 1'b1;
+          if (on_bus) ar_d = 1'b1;
+        end
+        if (issued_q && !on_bus) begin
+          // the bridge's own status register, or no register at all
+          if (is_status) begin
+            data_d   = {28'd0, status_q};
+            status_d = 4'd0;
+            if (rx_ferr_i) status_d[2] = 1'b1;   // set in this cycle: kept
+          end else begin
+            data_d      = ERROR_DATA;
+            status_d[0] = 1'b1;
+          end
+          nbyte_d = 2'd0;
+          state_d = S_RSEND;
+        end else if (issued_q && m_axil_rvalid_i && !ar_q) begin
+          if (m_axil_rresp_i != RESP_OKAY) begin
+            data_d      = ERROR_DATA;
+            status_d[0] = 1'b1;
+          end else begin
+            data_d = m_axil_rdata_i;
+          end
+          nbyte_d = 2'd0;
+          state_d = S_RSEND;
+        end
+      end
+      default: // S_RSEND: the word, most significant byte first
+        if (tx_ready_i) begin
+          data_d  = {data_q[23:0], 8'h00};
+          nbyte_d = nbyte_q + 2'd1;
+          if (nbyte_q == 2'd3) begin
+            issued_d = 1'b0;
+            left_d   = left_q - 8'd1;
+            addr_d   = addr_next;
+            state_d  = last_word ? S_CMD : S_RBUS;
+          end
+        end
+    endcase
+  end
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      state_q  <= S_CMD;
+      aw_q     <= 1'b0;
+      w_q      <= 1'b0;
+      ar_q     <= 1'b0;
+      issued_q <= 1'b0;
+      status_q <= 4'd0;
+      idle_q   <= {TW{1'b0}};
+    end else begin
+      state_q  <= state_d;
+      aw_q     <= aw_d;
+      w_q      <= w_d;
+      ar_q     <= ar_d;
+      issued_q <= issued_d;
+      status_q <= status_d;
+      idle_q   <= idle_d;
+    end
+    write_q <= write_d;
+    incr_q  <= incr_d;
+    left_q  <= left_d;
+    addr_q  <= addr_d;
+    data_q  <= data_d;
+    nbyte_q <= nbyte_d;
+  end
+
+  assign m_axil_awaddr_o  = {addr_q[WA_BITS-1:0], 2'b00};
+  assign m_axil_awprot_o  = 3'b000;
+  assign m_axil_awvalid_o = aw_q;
+  assign m_axil_wdata_o   = data_q;
+  assign m_axil_wstrb_o   = 4'b1111;
+  assign m_axil_wvalid_o  = w_q;
+  assign m_axil_bready_o  = 1'b1;
+  assign m_axil_araddr_o  = {addr_q[WA_BITS-1:0], 2'b00};
+  assign m_axil_arprot_o  = 3'b000;
+  assign m_axil_arvalid_o = ar_q;
+  assign m_axil_rready_o  = 1'b1;
+  assign tx_data_o        = data_q[31:24];
+  assign tx_valid_o       = state_q == S_RSEND;
+  assign fault_o          = status_q != 4'd0;
+  assign busy_o           = state_q != S_CMD;
+endmodule
+`default_nettype wire
