@@ -16,10 +16,12 @@
 #   nextpnr-ice40, fpga-icestorm  iCE40 place and route (make pnr)
 #   clang, libclang-rt-14-dev  libFuzzer and the sanitizers' runtimes
 #                (make fuzz: -fsanitize=fuzzer,address,undefined)
+#   openmpi-bin, libopenmpi-dev  Open MPI: mpicc and mpirun for build/fp3-mpi
+#                (sharded runs, frames and co-simulation; docs/cluster.md)
 set -euo pipefail
 
 pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
-      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev)
+      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

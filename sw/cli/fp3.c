@@ -37,6 +37,9 @@
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
 #include "cmd_testfloat.h"
+#ifdef FP3_MPI
+#include "mpishard.h"
+#endif
 
 #define EXIT_USAGE 2
 
@@ -63,7 +66,22 @@ static void usage(FILE *f) {
           "                            objects (make bench-sleep)\n");
 }
 
+static int dispatch(int argc, char **argv);
+
+/* build/fp3-mpi (-DFP3_MPI, docs/cluster.md): every rank runs the command;
+ * run and frames shard their objects across the ranks (mpishard.h), and
+ * only rank 0 writes standard output.  The exit status is the largest of
+ * the ranks'. */
 int main(int argc, char **argv) {
+#ifdef FP3_MPI
+  if (fp3_mpi_init(&argc, &argv)) return fp3_mpi_finish(EXIT_USAGE);
+  return fp3_mpi_finish(dispatch(argc, argv));
+#else
+  return dispatch(argc, argv);
+#endif
+}
+
+static int dispatch(int argc, char **argv) {
   if (argc < 2) {
     usage(stderr);
     return EXIT_USAGE;
