@@ -56,3 +56,30 @@ MPI_RUN_FLAGS ?= --oversubscribe $(if $(MPI_HOSTFILE),--hostfile $(MPI_HOSTFILE)
 COSIM_MPI = FP3_RANDOM_FIRST=$(COSIM_FIRST) FP3_RANDOM_PROGRAMS=$(COSIM_PROGRAMS) \
   $(MPIRUN) -np $(MPI_NP) $(MPI_RUN_FLAGS) -x FP3_RANDOM_FIRST -x FP3_RANDOM_PROGRAMS \
   $(BUILD)/tests/test_engines-mpi
+
+# tests/test_mpi.sh: fp3-mpi on 1, 2 and 3 ranks = fp3 (run, --json, frames),
+# the co-simulation digest of a range, faults (docs/cluster.md).
+TEST_SCRIPTS += tests/test_mpi.sh
+export FP3_COSIM_MPI_BIN := $(abspath $(BUILD)/tests/test_engines-mpi)
+export FP3_COSIM_BIN := $(abspath $(BUILD)/tests/test_engines)
+
+# ---- scaling (make bench-mpi) ---------------------------------------------------
+# Object-steps per second of fp3-mpi on BENCH_MPI_NP ranks (default 1 and
+# 2, this machine's cores), speed-up and parallel efficiency
+# (scripts/bench-mpi.sh): the default build on BENCH_MPI_ARGS (about 25 s
+# of one core: 160 ships, 20 batches of 8 contexts, 1,200 integrations),
+# then, with BENCH_MPI_CHIP=1, the chip build (CHIP_PARAMS: 16 contexts x
+# 16 lanes, a build of its own in $(BUILD)-chip, long to Verilate) on
+# BENCH_MPI_CHIP_ARGS (2,048 ships, 8 batches of 256).
+BENCH_MPI_NP   ?= 1 2
+BENCH_MPI_ARGS ?= run --model models/ship.fp3m --objects 160 --steps 1200
+BENCH_MPI_CHIP ?=
+BENCH_MPI_CHIP_ARGS ?= run --model models/ship.fp3m --objects 2048 --steps 1200
+.PHONY: bench-mpi
+## bench-mpi: fp3-mpi object-steps per second on 1 and 2 ranks, speed-up and parallel efficiency (BENCH_MPI_NP=, BENCH_MPI_ARGS=, BENCH_MPI_CHIP=1, MPI_HOSTFILE=)
+bench-mpi: $(BUILD)/fp3-mpi
+	MPI_RUN_FLAGS="$(MPI_RUN_FLAGS)" bash scripts/bench-mpi.sh --np "$(BENCH_MPI_NP)" --label "default build" \
+	  $(BUILD)/fp3-mpi $(BENCH_MPI_ARGS)
+	$(if $(BENCH_MPI_CHIP),$(MAKE) --no-print-directory BUILD=$(BUILD)-chip $(CHIP_PARAMS) $(BUILD)-chip/fp3-mpi && \
+	  MPI_RUN_FLAGS="$(MPI_RUN_FLAGS)" bash scripts/bench-mpi.sh --np "$(BENCH_MPI_NP)" --label "chip build" \
+	  $(BUILD)-chip/fp3-mpi $(BENCH_MPI_CHIP_ARGS))

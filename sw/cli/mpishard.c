@@ -318,6 +318,9 @@ int fp3_mpi_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nword
     }
   }
   rank_lines("object-steps", rr, g_size, 1);
+  const double moved = (double)g_size * sizeof *rr + (double)nobj * ns * sizeof *y;
+  fprintf(stderr, "fp3-mpi: %d ranks, %.0f bytes gathered on rank 0 (%.1f per object)\n", g_size,
+          moved, nobj ? moved / (double)nobj : 0.0);
   free(rr);
   return 0;
 }
@@ -344,6 +347,7 @@ typedef struct frames_farm {
   unsigned char *stay;
   size_t cap;            /* objects the three buffers hold                 */
   rank_report *total;    /* rank 0: per rank, objects-frames and seconds   */
+  double moved;          /* rank 0: bytes scattered and gathered           */
 } frames_farm;
 
 static int farm_room(frames_farm *f, size_t k) {
@@ -464,6 +468,8 @@ static int farm_run(void *ctx, uint32_t *bank, const size_t *at, size_t k, unsig
       }
     }
   }
+  f->moved += (double)k * (sizeof *ids + 2.0 * f->nregs * sizeof *banks + 1.0) +
+              (double)g_size * (sizeof ctl + sizeof *fr);
   if (!rc)
     for (size_t i = 0; i < k; i++)
       memcpy(bank + at[i] * f->nregs, banks + i * f->nregs, f->nregs * sizeof *banks);
@@ -521,7 +527,12 @@ int fp3_mpi_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords
                                    &farm, res, msg, n);
     uint64_t stop = FRAMES_STOP;
     MPI_Bcast(&stop, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-    if (!rc) rank_lines("object-frames", f.total, g_size, 0);
+    if (!rc) {
+      rank_lines("object-frames", f.total, g_size, 0);
+      fprintf(stderr, "fp3-mpi: %d ranks, %.0f bytes scattered from and gathered on rank 0 "
+              "(%.1f per object-frame run)\n", g_size, f.moved,
+              res->object_frames ? f.moved / (double)res->object_frames : 0.0);
+    }
     free(f.total);
   } else {
     farm_worker(&f, words, nwords);
