@@ -33,7 +33,7 @@ same() {
     set +e; mpi_run "$np" "$mpi" "$@" > "$tmp/many" 2> "$tmp/many.err"; local got=$?; set -e
     [ "$got" = "$want" ] || { cat "$tmp/many.err"; fail "fp3-mpi $* on $np ranks: exit $got, fp3: $want"; }
     cmp -s "$tmp/one" "$tmp/many" ||
-      { diff "$tmp/one" "$tmp/many" | head -20; fail "fp3-mpi $* on $np ranks: stdout differs from fp3's"; }
+      { diff "$tmp/one" "$tmp/many" | head -20 || true; fail "fp3-mpi $* on $np ranks: stdout differs from fp3's"; }
   done
   echo "ok: $* on ranks $nps = one process"
 }
@@ -41,16 +41,16 @@ same() {
 # ---- byte-identical ---------------------------------------------------------
 # springs.scene: 24 objects, 3 batches of the default build's 8 contexts;
 # on 2 ranks 1 + 2 batches, on 3 one batch each.
-same "1 2 3" -- run --scene scenes/springs.scene --steps 200
-same "2 3" -- run --scene scenes/springs.scene --steps 200 --json
+same "1 2 3" -- run --scene scenes/springs.scene --steps 100
+same "2 3" -- run --scene scenes/springs.scene --steps 100 --json
 # 5 batches, the last one part-filled; the ISS engine
 same "2 3" -- run --model models/spring.fp3m --objects 37 --steps 60 --json
 same "3" -- run --model models/spring.fp3m --objects 37 --steps 60 --engine iss
 # a ship scene (the ship scene compiler's path: rank 0 runs it)
 same "2" -- run --scene scenes/fleet.scene --steps 50
 # frames: sleeping objects, each frame's awake ones in batches; waking
-same "1 2 3" -- frames --harbour 100 --frames 150
-same "2 3" -- frames --harbour 60 --frames 320 --wake 300:10:T=4*C --json
+same "1 2 3" -- frames --harbour 100 --frames 100
+same "2 3" -- frames --harbour 60 --frames 120 --wake 100:10:T=4*C --json
 same "2" -- frames --scene scenes/springs.scene --frames 60
 # the per-rank lines on stderr: each rank's objects
 mpi_run 2 "$mpi" run --scene scenes/springs.scene --steps 10 > /dev/null 2> "$tmp/err"
@@ -60,18 +60,18 @@ grep -q "^fp3-mpi: rank 0 of 2 (host .*): objects 0 .. 7, 80 object-steps in" "$
 echo "ok: per-rank lines, whole batches"
 
 # ---- the co-simulation campaign: digest and counts --------------------------
-FP3_RANDOM_FIRST=1000 FP3_RANDOM_PROGRAMS=30 "$cosim1" > "$tmp/c1" 2>&1 || { cat "$tmp/c1"; fail "test_engines on programs 1000 .. 1029"; }
+FP3_RANDOM_FIRST=1000 FP3_RANDOM_PROGRAMS=20 "$cosim1" > "$tmp/c1" 2>&1 || { cat "$tmp/c1"; fail "test_engines on programs 1000 .. 1019"; }
 want=$(sed -n 's/.*seed digest \(0x[0-9a-f]*\).*/\1/p' "$tmp/c1" | tail -1)
 [ -n "$want" ] || { cat "$tmp/c1"; fail "test_engines printed no seed digest"; }
 for np in 1 2 3; do
-  FP3_RANDOM_FIRST=1000 FP3_RANDOM_PROGRAMS=30 mpi_run "$np" -x FP3_RANDOM_FIRST -x FP3_RANDOM_PROGRAMS \
+  FP3_RANDOM_FIRST=1000 FP3_RANDOM_PROGRAMS=20 mpi_run "$np" -x FP3_RANDOM_FIRST -x FP3_RANDOM_PROGRAMS \
     "$cosim" > "$tmp/cn" 2>&1 || { cat "$tmp/cn"; fail "test_engines-mpi on $np ranks failed"; }
-  grep -q "^random programs 1000 .. 1029 on $np ranks: 0 failed; seed digest $want\$" "$tmp/cn" ||
-    { grep "random programs\|rank" "$tmp/cn"; fail "test_engines-mpi on $np ranks: not digest $want of one process"; }
+  grep -q "^random programs 1000 .. 1019 on $np ranks: 0 failed; seed digest $want\$" "$tmp/cn" ||
+    { grep "random programs\|rank" "$tmp/cn" || true; fail "test_engines-mpi on $np ranks: not digest $want of one process"; }
   [ "$(grep -c "^rank [0-9]* of $np (host .*): random programs .*: passed" "$tmp/cn")" = "$np" ] ||
     { cat "$tmp/cn"; fail "test_engines-mpi on $np ranks: not a passed line per rank"; }
 done
-echo "ok: co-simulation programs 1000 .. 1029 on 1, 2, 3 ranks: seed digest $want, as one process"
+echo "ok: co-simulation programs 1000 .. 1019 on 1, 2, 3 ranks: seed digest $want, as one process"
 
 # ---- faults -----------------------------------------------------------------
 # fault KIND:OBJECT NP -- ARGS: the job fails (exit 1 unless given), in time

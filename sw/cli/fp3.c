@@ -64,6 +64,15 @@ static void usage(FILE *f) {
           "                            (make variables; make synth-scene)\n"
           "  frames [options]          a scene frame by frame with sleeping\n"
           "                            objects (make bench-sleep)\n");
+#ifdef FP3_MPI
+  fprintf(f,
+          "\n"
+          "fp3-mpi (mpirun -np N build/fp3-mpi COMMAND ...): run of many objects and\n"
+          "frames shard the objects across the N ranks in whole batches of contexts x\n"
+          "lanes, rank 0 printing what one process prints and, on stderr, a line per\n"
+          "rank; the other commands run on rank 0.  FP3_MPI_FAULT=engine|golden|kill:OBJECT\n"
+          "makes the rank holding OBJECT fail on purpose (docs/cluster.md).\n");
+#endif
 }
 
 static int dispatch(int argc, char **argv);
