@@ -44,9 +44,11 @@
 #ifdef FP3_MPI
 #include "mpishard.h"
 #define RUN_STATE_OBJECTS fp3_mpi_run_state_objects
+#define SCENE_REFERENCES fp3_mpi_scene_references
 #define REPORTS (fp3_mpi_rank() == 0)
 #else
 #define RUN_STATE_OBJECTS fp3_run_state_objects
+#define SCENE_REFERENCES scene_references
 #define REPORTS 1
 #endif
 
@@ -351,10 +353,27 @@ out:
 
 /* ---- many objects: a model scene, or --objects N -------------------------- */
 
+#ifndef FP3_MPI
+/* The GSL reference (want_ref 0: none) and the exact solution of every
+ * object of sc after `steps` integrations, into ref[] and ex[] (objects x
+ * state variables); fp3-mpi shards them as it shards the objects (slots a
+ * batch: fp3_mpi_scene_references). */
+static void scene_references(const fp3_model *m, const fp3_mscene *sc, unsigned slots,
+                             uint32_t steps, int want_ref, double *ref, double *ex) {
+  const unsigned np = m->nparam, ns = m->nstate;
+  (void)slots;
+  for (size_t o = 0; o < sc->n; o++) {
+    char rmsg[256];
+    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, steps, want_ref, ref + o * ns,
+                       ex + o * ns, rmsg, sizeof rmsg);
+  }
+}
+#endif
+
 static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   const fp3_mscene *sc = &s->sc;
   const fp3_model *m = s->m;
-  const unsigned np = m->nparam, ns = m->nstate;
+  const unsigned ns = m->nstate;
   char msg[512];
   fp3_state_result res;
   memset(&res, 0, sizeof res);
@@ -368,10 +387,6 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
     if (REPORTS) fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
     goto out;
   }
-  if (!REPORTS) { /* another rank of fp3-mpi: rank 0 has the results */
-    rc = 0;
-    goto out;
-  }
   ref = malloc(sc->n * ns * sizeof *ref);
   ex = malloc(sc->n * ns * sizeof *ex);
   if (!ref || !ex) {
@@ -379,12 +394,14 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
     goto out;
   }
   const int nonfinite = res.nonfinite_object != SIZE_MAX;
+  SCENE_REFERENCES(m, sc, fp3_config_slots(&s->e->config), a->steps, !nonfinite, ref, ex);
+  if (!REPORTS) { /* another rank of fp3-mpi: rank 0 has the results */
+    rc = 0;
+    goto out;
+  }
   double max_err = 0.0;
   size_t ref_fail = 0;
   for (size_t o = 0; o < sc->n; o++) {
-    char rmsg[256];
-    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, a->steps, !nonfinite, ref + o * ns,
-               ex + o * ns, rmsg, sizeof rmsg);
     if (isnan(ref[o * ns])) {
       ref_fail++;
       continue;

@@ -21,6 +21,7 @@
 #include <time.h>
 
 #include "report.h"
+#include "runsetup.h"
 
 #define HOST_LEN 64
 #define MSG_LEN 512
@@ -323,6 +324,38 @@ int fp3_mpi_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nword
           moved, nobj ? moved / (double)nobj : 0.0);
   free(rr);
   return 0;
+}
+
+void fp3_mpi_scene_references(const fp3_model *m, const fp3_mscene *sc, unsigned slots,
+                              uint32_t steps, int want_ref, double *ref, double *ex) {
+  const unsigned np = m->nparam, ns = m->nstate;
+  int want = want_ref;
+  MPI_Bcast(&want, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  size_t lo, hi;
+  fp3_mpi_shard(sc->n, slots, g_rank, g_size, &lo, &hi);
+  for (size_t o = lo; o < hi; o++) {
+    char rmsg[256];
+    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, steps, want, ref + o * ns,
+                       ex + o * ns, rmsg, sizeof rmsg);
+  }
+  int *cnt = NULL, *dsp = NULL;
+  if (g_rank == 0) {
+    cnt = calloc((size_t)g_size, sizeof *cnt);
+    dsp = calloc((size_t)g_size, sizeof *dsp);
+    if (!cnt || !dsp || (double)sc->n * ns > INT_MAX) MPI_Abort(MPI_COMM_WORLD, 1);
+    for (int r = 0; r < g_size; r++) {
+      size_t a, b;
+      fp3_mpi_shard(sc->n, slots, r, g_size, &a, &b);
+      cnt[r] = (int)((b - a) * ns), dsp[r] = (int)(a * ns);
+    }
+  }
+  /* in place on rank 0: its own shard is where the gathered one goes */
+  const int mine = (int)((hi - lo) * ns);
+  MPI_Gatherv(g_rank == 0 ? MPI_IN_PLACE : ref + lo * ns, mine, MPI_DOUBLE, ref, cnt, dsp,
+              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(g_rank == 0 ? MPI_IN_PLACE : ex + lo * ns, mine, MPI_DOUBLE, ex, cnt, dsp,
+              MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  free(cnt), free(dsp);
 }
 
 /* ---- frames ------------------------------------------------------------------ */

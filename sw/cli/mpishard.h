@@ -42,6 +42,7 @@
 
 #include "engine.h"
 #include "fpref.h"
+#include "model.h"
 #include "mscene.h"
 
 /* MPI_Init; standard output of every rank but 0 to /dev/null.  Returns 0,
@@ -69,6 +70,15 @@ void fp3_mpi_shard(size_t nobj, unsigned slots, int rank, int size, size_t *lo, 
 int fp3_mpi_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                               uint32_t steps, fpref_mode mode, const fp3_state_golden *golden,
                               fp3_state_result *res, char *msg, size_t n);
+
+/* The GSL reference (want_ref 0: none; rank 0's value counts) and the
+ * exact solution of every object of sc after `steps` integrations
+ * (fp3_run_references, runsetup.h), each rank computing those of the
+ * objects fp3_mpi_shard gives it (batches of `slots`), rank 0 gathering
+ * them all into ref[] and ex[] (objects x state variables; the other
+ * ranks' hold their shard's). */
+void fp3_mpi_scene_references(const fp3_model *m, const fp3_mscene *sc, unsigned slots,
+                              uint32_t steps, int want_ref, double *ref, double *ex);
 
 /* fp3_run_state_frames (mscene.h), sharded frame by frame: every rank
  * calls it with the same arguments; every rank returns the whole scene's
