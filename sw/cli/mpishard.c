@@ -55,9 +55,9 @@ static int parse_fault(void) {
 }
 
 int fp3_mpi_init(int *argc, char ***argv) {
-  if (MPI_Init(argc, argv) != MPI_SUCCESS) {
+  if (MPI_Init(argc, argv) != MPI_SUCCESS) { /* no MPI to agree on an exit status with */
     fprintf(stderr, "fp3-mpi: MPI_Init failed\n");
-    return -1;
+    exit(1);
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &g_rank);
   MPI_Comm_size(MPI_COMM_WORLD, &g_size);

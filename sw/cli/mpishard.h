@@ -45,8 +45,10 @@
 #include "model.h"
 #include "mscene.h"
 
-/* MPI_Init; standard output of every rank but 0 to /dev/null.  Returns 0,
- * or -1 with the reason on stderr. */
+/* MPI_Init (the process exits 1 when it fails); standard output of every
+ * rank but 0 to /dev/null; FP3_MPI_FAULT read.  Returns 0, or -1 with the
+ * reason on stderr (a bad FP3_MPI_FAULT); fp3_mpi_finish is called
+ * either way. */
 int fp3_mpi_init(int *argc, char ***argv);
 
 /* The job's exit status from every rank's rc (the largest), then
