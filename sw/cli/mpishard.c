@@ -319,7 +319,10 @@ int fp3_mpi_run_state_objects(fp3_engine *e, const uint64_t *words, size_t nword
     }
   }
   rank_lines("object-steps", rr, g_size, 1);
-  const double moved = (double)g_size * sizeof *rr + (double)nobj * ns * sizeof *y;
+  /* the ranks' records, the states, and the references gathered next
+   * (fp3_mpi_scene_references: two doubles a state variable) */
+  const double moved =
+      (double)g_size * sizeof *rr + (double)nobj * ns * (sizeof *y + 2 * sizeof(double));
   fprintf(stderr, "fp3-mpi: %d ranks, %.0f bytes gathered on rank 0 (%.1f per object)\n", g_size,
           moved, nobj ? moved / (double)nobj : 0.0);
   free(rr);
