@@ -52,6 +52,7 @@ same "2" -- run --scene scenes/fleet.scene --steps 50
 same "1 2 3" -- frames --harbour 100 --frames 100
 same "2 3" -- frames --harbour 60 --frames 120 --wake 100:10:T=4*C --json
 same "2" -- frames --scene scenes/springs.scene --frames 60
+same "3" -- frames --scene scenes/fleet.scene --frames 60
 # the per-rank lines on stderr: each rank's objects
 mpi_run 2 "$mpi" run --scene scenes/springs.scene --steps 10 > /dev/null 2> "$tmp/err"
 grep -q "^fp3-mpi: rank 0 of 2 (host .*): objects 0 .. 7, 80 object-steps in" "$tmp/err" &&
