@@ -109,7 +109,7 @@ mpirun --oversubscribe -np 2 "$mpi" run --model models/spring.fp3m --objects 400
   > "$tmp/out" 2> "$tmp/err" &
 mpid=$!
 victim=
-for _ in $(seq 100); do
+for _ in $(seq 300); do
   for p in $(pgrep -P "$mpid" || true); do
     tr '\0' '\n' < "/proc/$p/environ" 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=1 && victim=$p
   done
