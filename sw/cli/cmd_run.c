@@ -46,10 +46,12 @@
 #define RUN_STATE_OBJECTS fp3_mpi_run_state_objects
 #define SCENE_REFERENCES fp3_mpi_scene_references
 #define REPORTS (fp3_mpi_rank() == 0)
+#define ABORT_RANKS() MPI_Abort(MPI_COMM_WORLD, 1) /* the others wait in a collective */
 #else
 #define RUN_STATE_OBJECTS fp3_run_state_objects
 #define SCENE_REFERENCES scene_references
 #define REPORTS 1
+#define ABORT_RANKS() ((void)0)
 #endif
 
 #define EXIT_FAIL 1
@@ -391,6 +393,7 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   ex = malloc(sc->n * ns * sizeof *ex);
   if (!ref || !ex) {
     fprintf(stderr, "fp3 run: out of memory\n");
+    ABORT_RANKS();
     goto out;
   }
   const int nonfinite = res.nonfinite_object != SIZE_MAX;

@@ -37,6 +37,7 @@
 #ifndef FP3_MPISHARD_H
 #define FP3_MPISHARD_H
 
+#include <mpi.h>
 #include <stddef.h>
 #include <stdint.h>
 
