@@ -70,11 +70,11 @@ export FP3_COSIM_BIN := $(abspath $(BUILD)/tests/test_engines)
 # of one core: 160 ships, 20 batches of 8 contexts, 1,200 integrations),
 # then, with BENCH_MPI_CHIP=1, the chip build (CHIP_PARAMS: 16 contexts x
 # 16 lanes, a build of its own in $(BUILD)-chip, long to Verilate) on
-# BENCH_MPI_CHIP_ARGS (2,048 ships, 8 batches of 256).
+# BENCH_MPI_CHIP_ARGS (1,024 ships, 4 batches of 256, 600 integrations).
 BENCH_MPI_NP   ?= 1 2
 BENCH_MPI_ARGS ?= run --model models/ship.fp3m --objects 160 --steps 1200
 BENCH_MPI_CHIP ?=
-BENCH_MPI_CHIP_ARGS ?= run --model models/ship.fp3m --objects 2048 --steps 1200
+BENCH_MPI_CHIP_ARGS ?= run --model models/ship.fp3m --objects 1024 --steps 600
 .PHONY: bench-mpi
 ## bench-mpi: fp3-mpi object-steps per second on 1 and 2 ranks, speed-up and parallel efficiency (BENCH_MPI_NP=, BENCH_MPI_ARGS=, BENCH_MPI_CHIP=1, MPI_HOSTFILE=)
 bench-mpi: $(BUILD)/fp3-mpi
