@@ -66,15 +66,16 @@ export FP3_COSIM_BIN := $(abspath $(BUILD)/tests/test_engines)
 # ---- scaling (make bench-mpi) ---------------------------------------------------
 # Object-steps per second of fp3-mpi on BENCH_MPI_NP ranks (default 1 and
 # 2, this machine's cores), speed-up and parallel efficiency
-# (scripts/bench-mpi.sh): the default build on BENCH_MPI_ARGS (about 25 s
-# of one core: 160 ships, 20 batches of 8 contexts, 1,200 integrations),
+# (scripts/bench-mpi.sh): the default build on BENCH_MPI_ARGS (about 21 s
+# of one core: 192 ships, 24 batches of 8 contexts, 1,200 integrations),
 # then, with BENCH_MPI_CHIP=1, the chip build (CHIP_PARAMS: 16 contexts x
 # 16 lanes, a build of its own in $(BUILD)-chip, long to Verilate) on
-# BENCH_MPI_CHIP_ARGS (1,024 ships, 4 batches of 256, 600 integrations).
+# BENCH_MPI_CHIP_ARGS (1,024 ships, 4 batches of 256, 800 integrations:
+# about 21 s of one core).
 BENCH_MPI_NP   ?= 1 2
-BENCH_MPI_ARGS ?= run --model models/ship.fp3m --objects 160 --steps 1200
+BENCH_MPI_ARGS ?= run --model models/ship.fp3m --objects 192 --steps 1200
 BENCH_MPI_CHIP ?=
-BENCH_MPI_CHIP_ARGS ?= run --model models/ship.fp3m --objects 1024 --steps 600
+BENCH_MPI_CHIP_ARGS ?= run --model models/ship.fp3m --objects 1024 --steps 800
 .PHONY: bench-mpi
 ## bench-mpi: fp3-mpi object-steps per second on 1 and 2 ranks, speed-up and parallel efficiency (BENCH_MPI_NP=, BENCH_MPI_ARGS=, BENCH_MPI_CHIP=1, MPI_HOSTFILE=)
 bench-mpi: $(BUILD)/fp3-mpi
