@@ -247,9 +247,12 @@ COSIM_FIRST    ?= 0
 COSIM_PROGRAMS ?= 1000000
 COSIM_JOBS     ?= $(shell nproc)
 .PHONY: bench-cosim
-## bench-cosim: 10^6 random hazard-dense programs on every build, RTL against the ISS bit for bit (COSIM_FIRST=, COSIM_PROGRAMS=, COSIM_JOBS=)
-bench-cosim: $(BUILD)/tests/test_engines
-	bash scripts/bench-cosim.sh $(BUILD)/tests/test_engines $(COSIM_FIRST) $(COSIM_PROGRAMS) $(COSIM_JOBS) $(BUILD)/bench/cosim
+# With MPI_NP=N the range is split across N MPI ranks instead, their
+# digests added by MPI_Reduce (mk/mpi.mk, docs/cluster.md; MPI_HOSTFILE=).
+MPI_NP ?=
+## bench-cosim: 10^6 random hazard-dense programs on every build, RTL against the ISS bit for bit (COSIM_FIRST=, COSIM_PROGRAMS=, COSIM_JOBS=; MPI_NP=N on MPI ranks)
+bench-cosim: $(if $(MPI_NP),$(BUILD)/tests/test_engines-mpi,$(BUILD)/tests/test_engines)
+	$(if $(MPI_NP),$(COSIM_MPI),bash scripts/bench-cosim.sh $(BUILD)/tests/test_engines $(COSIM_FIRST) $(COSIM_PROGRAMS) $(COSIM_JOBS) $(BUILD)/bench/cosim)
 # tests/test_bench_cosim.sh: the ranges' split, sums and failures on a
 # stand-in, and the same programs in any split on test_engines.
 TEST_SCRIPTS += tests/test_bench_cosim.sh

@@ -14,7 +14,9 @@
 
 SW_MAINS     := sw/cli/fp3.c sw/isa/gen_isa.c sw/bench/bench_parallel.c sw/bench/bench_chip.c \
                 sw/bench/cpu_ship.c
-SW_LIB_SRCS  := $(filter-out $(SW_MAINS),$(wildcard sw/*/*.c))
+# sw/cli/mpishard.c needs MPI: it goes into build/fp3-mpi alone (mk/mpi.mk)
+SW_MPI_SRCS  := sw/cli/mpishard.c
+SW_LIB_SRCS  := $(filter-out $(SW_MAINS) $(SW_MPI_SRCS),$(wildcard sw/*/*.c))
 SW_LIB_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw/%.o,$(SW_LIB_SRCS))
 SW_SAN_OBJS  := $(patsubst sw/%.c,$(BUILD)/sw-san/%.o,$(SW_LIB_SRCS))
 SW_LIB       := $(BUILD)/sw/libfp3.a

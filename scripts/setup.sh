@@ -17,10 +17,12 @@
 #   clang, libclang-rt-14-dev  libFuzzer and the sanitizers' runtimes
 #                (make fuzz: -fsanitize=fuzzer,address,undefined)
 #   openfpgaloader  loads a bitstream into a board (make prog, docs/board.md)
+#   openmpi-bin, libopenmpi-dev  Open MPI: mpicc and mpirun for build/fp3-mpi
+#                (sharded runs, frames and co-simulation; docs/cluster.md)
 set -euo pipefail
 
 pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
-      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev openfpgaloader)
+      nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev openfpgaloader openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -24,6 +24,9 @@
 #include <string.h>
 
 #include <cmocka.h>
+#ifdef FP3_MPI
+#include <mpi.h>
+#endif
 
 #include "asm.h"
 #include "engine.h"
@@ -885,6 +888,7 @@ static uint64_t replay_seed;
  * printed after a range (FP3_RANDOM_FIRST), so the ranges' sums add up to
  * the whole run's whatever the split (scripts/bench-cosim.sh adds them). */
 static uint64_t random_digest = 0;
+static long random_at = -1; /* the program being run (an MPI rank names it) */
 
 /* Starts program p of sequence `seq` (one a test and build): the
  * generator at its seed, the splitmix64 output function (Steele, Lea and
@@ -914,6 +918,7 @@ static void test_random_programs(void **state) {
   }
   for (long p = first; p < first + programs; p++) {
     uint64_t seed = program_start(0, p);
+    random_at = p;
     int mi = (int)(rnd() % 4);
     if (p > first && (p - first) % 10000 == 0)
       print_message("%ld of %ld random programs\n", p - first, programs);
@@ -1244,6 +1249,7 @@ static void test_random_programs_contexts(void **state) {
         print_message("%ld of %ld random programs on %u x %u slots\n", p - first, programs,
                       er->config.num_contexts, er->config.num_lanes);
       uint64_t seed = program_start(1u + (unsigned)which, p);
+      random_at = p;
       fp3_image img;
       random_program(&img, 2 + (unsigned)(rnd() % 5), &er->config);
       memset(init, 0, sizeof init);
@@ -1501,6 +1507,78 @@ static unsigned long long env_number(const char *name, unsigned long long least,
  * and first + count stays within a long). */
 #define RANDOM_INDEX_MAX 1000000000000ull
 
+#ifdef FP3_MPI
+/* build/tests/test_engines-mpi (mk/mpi.mk; make bench-cosim MPI_NP=N):
+ * the random programs FP3_RANDOM_FIRST .. FP3_RANDOM_FIRST +
+ * FP3_RANDOM_PROGRAMS - 1 split across the MPI ranks as
+ * scripts/bench-cosim.sh splits them across processes (an equal share
+ * each, the first COUNT mod N ranks one more).  Each rank runs its range
+ * on every build; MPI_Reduce adds the seed digests (mod 2^64: the
+ * one-process digest, whatever the split) and the failed ranks on rank 0,
+ * which prints a line per rank (host, range, seconds) and names each
+ * failing rank's host, range and program (its own output names the seed
+ * that replays it).  Exit status 1 if any rank failed. */
+typedef struct rank_line {
+  int32_t failed;
+  int64_t first, count, at;
+  double seconds;
+  char host[64];
+} rank_line;
+
+static int mpi_campaign(void) {
+  int rank, size;
+  MPI_Init(NULL, NULL);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const long count = random_programs, base = count / size, extra = count % size;
+  rank_line me;
+  memset(&me, 0, sizeof me);
+  me.count = base + (rank < extra);
+  me.first = random_first + rank * base + (rank < extra ? rank : extra);
+  int len = 0;
+  char name[MPI_MAX_PROCESSOR_NAME];
+  if (MPI_Get_processor_name(name, &len) == MPI_SUCCESS) snprintf(me.host, sizeof me.host, "%s", name);
+  random_first = (long)me.first;
+  random_programs = (long)me.count;
+  random_bench = 1;
+  double t0 = MPI_Wtime();
+  if (me.count > 0) {
+    const struct CMUnitTest random[] = {cmocka_unit_test(test_random_programs),
+                                        cmocka_unit_test(test_random_programs_contexts)};
+    me.failed = cmocka_run_group_tests(random, setup, teardown) != 0;
+    me.at = random_at;
+  }
+  me.seconds = MPI_Wtime() - t0;
+  unsigned long long digest = 0, mine = random_digest;
+  int failed = 0;
+  MPI_Reduce(&mine, &digest, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+  MPI_Reduce(&me.failed, &failed, 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
+  rank_line *all = rank == 0 ? calloc((size_t)size, sizeof *all) : NULL;
+  if (rank == 0 && !all) MPI_Abort(MPI_COMM_WORLD, 1);
+  MPI_Gather(&me, (int)sizeof me, MPI_BYTE, all, (int)sizeof me, MPI_BYTE, 0, MPI_COMM_WORLD);
+  if (rank == 0) {
+    fflush(stdout);
+    for (int r = 0; r < size; r++) {
+      printf("rank %d of %d (host %s): random programs %lld .. %lld: ", r, size, all[r].host,
+             (long long)all[r].first, (long long)(all[r].first + all[r].count - 1));
+      if (all[r].failed)
+        printf("FAILED at random program %lld (its output above names the seed that replays "
+               "it)", (long long)all[r].at);
+      else
+        printf("passed");
+      printf(" in %.1f s\n", all[r].seconds);
+    }
+    printf("random programs %lld .. %lld on %d ranks: %d failed; seed digest 0x%016llx\n",
+           (long long)all[0].first, (long long)(all[0].first + count - 1), size, failed, digest);
+    free(all);
+  }
+  int any = 0;
+  MPI_Allreduce(&me.failed, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Finalize();
+  return any ? 1 : 0;
+}
+#endif
+
 int main(void) {
   if (getenv("FP3_RANDOM_PROGRAMS")) {
     random_programs = (long)env_number("FP3_RANDOM_PROGRAMS", 1, RANDOM_INDEX_MAX);
@@ -1515,6 +1593,13 @@ int main(void) {
     random_replay = 1;
     random_programs = 1;
   }
+#ifdef FP3_MPI
+  if (random_replay) {
+    fprintf(stderr, "test_engines-mpi: FP3_RANDOM_SEED replays one program: use build/tests/test_engines\n");
+    return 2;
+  }
+  return mpi_campaign();
+#endif
   if (random_bench || random_replay) {
     /* A range of random programs, or a replay: those tests alone. */
     const struct CMUnitTest random[] = {cmocka_unit_test(test_random_programs),

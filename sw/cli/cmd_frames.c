@@ -27,6 +27,15 @@
 #include "report.h"
 #include "runsetup.h"
 
+/* fp3-mpi (-DFP3_MPI): each frame's batches sharded across the MPI ranks
+ * (mpishard.h); build/fp3 runs them in one process. */
+#ifdef FP3_MPI
+#include "mpishard.h"
+#define RUN_STATE_FRAMES fp3_mpi_run_state_frames
+#else
+#define RUN_STATE_FRAMES fp3_run_state_frames
+#endif
+
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 #define DEFAULT_PROGRAM "programs/ship_rk4_sleep.s"
@@ -100,9 +109,9 @@ static int run_frames(const fp3_model_args *a, fp3_run_setup *s) {
   fp3_scene_gold_init(&sg, s->c, &s->sc);
   const fp3_image *img = fp3_compiled_image(s->c);
   fp3_state_frames_result res;
-  if (fp3_run_state_frames(s->e, img->words, img->n, s->sc.n, a->steps, !a->no_rest_skip,
-                           a->wake_frame ? &w.wake : NULL, a->mode, &sg.stepper, &res, msg,
-                           sizeof msg)) {
+  if (RUN_STATE_FRAMES(s->e, img->words, img->n, s->sc.n, a->steps, !a->no_rest_skip,
+                       a->wake_frame ? &w.wake : NULL, a->mode, &sg.stepper, &res, msg,
+                       sizeof msg)) {
     fprintf(stderr, "fp3 frames: %s\n", msg);
     return EXIT_FAIL;
   }

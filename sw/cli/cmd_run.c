@@ -37,6 +37,21 @@
 #include "runsetup.h"
 #include "traceopt.h"
 
+/* fp3-mpi (-DFP3_MPI): a scene's objects sharded across the MPI ranks
+ * (mpishard.h), rank 0 reporting; build/fp3 runs them in one process. */
+#ifdef FP3_MPI
+#include "mpishard.h"
+#define RUN_STATE_OBJECTS fp3_mpi_run_state_objects
+#define SCENE_REFERENCES fp3_mpi_scene_references
+#define REPORTS (fp3_mpi_rank() == 0)
+#define ABORT_RANKS() MPI_Abort(MPI_COMM_WORLD, 1) /* the others wait in a collective */
+#else
+#define RUN_STATE_OBJECTS fp3_run_state_objects
+#define SCENE_REFERENCES scene_references
+#define REPORTS 1
+#define ABORT_RANKS() ((void)0)
+#endif
+
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
 
@@ -344,10 +359,27 @@ out:
 
 /* ---- many objects: a model scene, or --objects N -------------------------- */
 
+#ifndef FP3_MPI
+/* The GSL reference (want_ref 0: none) and the exact solution of every
+ * object of sc after `steps` integrations, into ref[] and ex[] (objects x
+ * state variables); fp3-mpi shards them as it shards the objects (slots a
+ * batch: fp3_mpi_scene_references). */
+static void scene_references(const fp3_model *m, const fp3_mscene *sc, unsigned slots,
+                             uint32_t steps, int want_ref, double *ref, double *ex) {
+  const unsigned np = m->nparam, ns = m->nstate;
+  (void)slots;
+  for (size_t o = 0; o < sc->n; o++) {
+    char rmsg[256];
+    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, steps, want_ref, ref + o * ns,
+                       ex + o * ns, rmsg, sizeof rmsg);
+  }
+}
+#endif
+
 static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   const fp3_mscene *sc = &s->sc;
   const fp3_model *m = s->m;
-  const unsigned np = m->nparam, ns = m->nstate;
+  const unsigned ns = m->nstate;
   char msg[512];
   fp3_state_result res;
   memset(&res, 0, sizeof res);
@@ -356,24 +388,27 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
   fp3_scene_gold sg;
   fp3_scene_gold_init(&sg, s->c, sc);
   const fp3_image *img = fp3_compiled_image(s->c);
-  if (fp3_run_state_objects(s->e, img->words, img->n, sc->n, a->steps, a->mode, &sg.golden, &res,
-                            msg, sizeof msg)) {
-    fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
+  if (RUN_STATE_OBJECTS(s->e, img->words, img->n, sc->n, a->steps, a->mode, &sg.golden, &res,
+                        msg, sizeof msg)) {
+    if (REPORTS) fprintf(stderr, "fp3 run: %s engine: %s\n", a->engine, msg);
     goto out;
   }
   ref = malloc(sc->n * ns * sizeof *ref);
   ex = malloc(sc->n * ns * sizeof *ex);
   if (!ref || !ex) {
     fprintf(stderr, "fp3 run: out of memory\n");
+    ABORT_RANKS();
     goto out;
   }
   const int nonfinite = res.nonfinite_object != SIZE_MAX;
+  SCENE_REFERENCES(m, sc, fp3_config_slots(&s->e->config), a->steps, !nonfinite, ref, ex);
+  if (!REPORTS) { /* another rank of fp3-mpi: rank 0 has the results */
+    rc = 0;
+    goto out;
+  }
   double max_err = 0.0;
   size_t ref_fail = 0;
   for (size_t o = 0; o < sc->n; o++) {
-    char rmsg[256];
-    fp3_run_references(m, sc->in + o * np, sc->y0 + o * ns, a->steps, !nonfinite, ref + o * ns,
-               ex + o * ns, rmsg, sizeof rmsg);
     if (isnan(ref[o * ns])) {
       ref_fail++;
       continue;
@@ -513,7 +548,7 @@ int fp3_cmd_run(int argc, char **argv) {
   int rc = fp3_run_setup_program(&a, &s, "run", a.scene ? NULL : DEFAULT_PROGRAM);
   if (!rc) rc = fp3_run_setup_model(&a, &s, "run");
   if (!rc) rc = fp3_run_setup_engine(&a, &s, "run");
-  if (!rc) rc = s.many ? run_many(&a, &s) : run_one(&a, &s);
+  if (!rc) rc = s.many ? run_many(&a, &s) : REPORTS ? run_one(&a, &s) : 0;
   fp3_run_setup_free(&s);
   return rc;
 }

@@ -38,6 +38,9 @@
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
 #include "cmd_testfloat.h"
+#ifdef FP3_MPI
+#include "mpishard.h"
+#endif
 
 #define EXIT_USAGE 2
 
@@ -63,9 +66,33 @@ static void usage(FILE *f) {
           "                            (make variables; make synth-scene)\n"
           "  frames [options]          a scene frame by frame with sleeping\n"
           "                            objects (make bench-sleep)\n");
+#ifdef FP3_MPI
+  fprintf(f,
+          "\n"
+          "fp3-mpi (mpirun -np N build/fp3-mpi COMMAND ...): run of many objects and\n"
+          "frames shard the objects across the N ranks in whole batches of contexts x\n"
+          "lanes, rank 0 printing what one process prints and, on stderr, a line per\n"
+          "rank; the other commands run on rank 0.  FP3_MPI_FAULT=engine|golden|kill:OBJECT\n"
+          "makes the rank holding OBJECT fail on purpose (docs/cluster.md).\n");
+#endif
 }
 
+static int dispatch(int argc, char **argv);
+
+/* build/fp3-mpi (-DFP3_MPI, docs/cluster.md): every rank runs the command;
+ * run and frames shard their objects across the ranks (mpishard.h), and
+ * only rank 0 writes standard output.  The exit status is the largest of
+ * the ranks'. */
 int main(int argc, char **argv) {
+#ifdef FP3_MPI
+  if (fp3_mpi_init(&argc, &argv)) return fp3_mpi_finish(EXIT_USAGE);
+  return fp3_mpi_finish(dispatch(argc, argv));
+#else
+  return dispatch(argc, argv);
+#endif
+}
+
+static int dispatch(int argc, char **argv) {
   if (argc < 2) {
     usage(stderr);
     return EXIT_USAGE;

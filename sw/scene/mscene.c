@@ -623,13 +623,58 @@ void fp3_state_result_free(fp3_state_result *res) {
 
 /* ---- frames ------------------------------------------------------------------ */
 
+int fp3_frame_batches(fp3_engine *e, uint32_t *bank, const size_t *at, size_t k,
+                      unsigned char *stay, fp3_state_frames_result *acc, char *msg, size_t n) {
+  const unsigned nctx = fp3_config_slots(&e->config); /* objects per batch */
+  const unsigned nregs = e->config.num_regs;
+  for (size_t first = 0; first < k; first += nctx) {
+    unsigned kb = (unsigned)(k - first < nctx ? k - first : nctx);
+    for (unsigned c = 0; c < kb; c++)
+      if (fp3_ctx_write_bank(e, c, bank + at[first + c] * nregs, nregs, msg, n)) return -1;
+    fp3_status st;
+    if (fp3_ctx_run_batch(e, 1, kb, NULL, NULL, &st, msg, n)) return -1;
+    acc->batches++;
+    acc->cycles += st.cycles;
+    acc->issued += st.issued;
+    acc->object_frames += kb;
+    acc->host_words += 2u * kb * nregs; /* each bank written, then read back */
+    for (unsigned c = 0; c < kb; c++) {
+      size_t o = at[first + c];
+      uint32_t *b = bank + o * nregs;
+      fp3_ctx_status cs;
+      if (fp3_ctx_check(e, c, o, &cs, &acc->error, &acc->error_object, &acc->error_pc, msg, n))
+        return -1;
+      int same = 1;
+      for (unsigned r = 0; r < nregs; r++) {
+        uint32_t v;
+        if (fp3_engine_read_ctx_reg(e, c, r, &v)) {
+          snprintf(msg, n, "%s", fp3_engine_error(e));
+          return -1;
+        }
+        same &= v == b[r];
+        b[r] = v;
+      }
+      stay[first + c] = (unsigned char)same;
+    }
+  }
+  return 0;
+}
+
 int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
                          uint32_t frames, int rest_skip, const fp3_state_wake *wake,
                          fpref_mode mode,
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,
                          char *msg, size_t n) {
+  return fp3_run_state_frames_farm(e, words, nwords, nobj, frames, rest_skip, wake, mode, golden,
+                                   NULL, res, msg, n);
+}
+
+int fp3_run_state_frames_farm(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
+                              uint32_t frames, int rest_skip, const fp3_state_wake *wake,
+                              fpref_mode mode, const fp3_state_stepper *golden,
+                              const fp3_frames_farm *farm, fp3_state_frames_result *res,
+                              char *msg, size_t n) {
   memset(res, 0, sizeof *res);
-  const unsigned nctx = fp3_config_slots(&e->config); /* objects per batch */
   const unsigned nregs = e->config.num_regs, ns = golden->nstate;
   if (frames == 0) {
     snprintf(msg, n, "no frames to run");
@@ -641,14 +686,14 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
   }
   if (golden_fits(mode, ns, golden->reg, nregs, msg, n)) return -1;
   uint32_t *bank = calloc(nobj * nregs, sizeof *bank);  /* every object's bank */
-  uint32_t *before = malloc((size_t)nctx * nregs * sizeof *before);
+  unsigned char *stay = malloc(nobj ? nobj : 1); /* awake object i's bank unchanged */
   float *gy = malloc(nobj * (ns ? ns : 1) * sizeof *gy); /* golden state */
   unsigned char *asleep = calloc(nobj ? nobj : 1, 1);
   size_t *awake = malloc((nobj ? nobj : 1) * sizeof *awake);
   int rc = -1;
   fpenv_saved env;
   fp3_progress prog = {0}; /* off until the frames start */
-  if (!bank || !before || !gy || !asleep || !awake) {
+  if (!bank || !stay || !gy || !asleep || !awake) {
     snprintf(msg, n, "out of memory");
     goto out;
   }
@@ -678,37 +723,12 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
     for (size_t o = 0; o < nobj; o++)
       if (!asleep[o]) awake[na++] = o;
     res->skipped += nobj - na;
-    for (size_t first = 0; first < na; first += nctx) {
-      unsigned k = (unsigned)(na - first < nctx ? na - first : nctx);
-      for (unsigned c = 0; c < k; c++) {
-        const uint32_t *b = bank + awake[first + c] * nregs;
-        memcpy(before + (size_t)c * nregs, b, nregs * sizeof *b);
-        if (fp3_ctx_write_bank(e, c, b, nregs, msg, n)) goto out;
-      }
-      fp3_status st;
-      if (fp3_ctx_run_batch(e, 1, k, NULL, NULL, &st, msg, n)) goto out;
-      fp3_progress_update(&prog, f - 1);
-      res->batches++;
-      res->cycles += st.cycles;
-      res->issued += st.issued;
-      res->object_frames += k;
-      res->host_words += 2u * k * nregs; /* each bank written, then read back */
-      for (unsigned c = 0; c < k; c++) {
-        size_t o = awake[first + c];
-        uint32_t *b = bank + o * nregs;
-        fp3_ctx_status cs;
-        if (fp3_ctx_check(e, c, o, &cs, &res->error, &res->error_object, &res->error_pc, msg,
-                          n))
-          goto out;
-        for (unsigned r = 0; r < nregs; r++)
-          if (fp3_engine_read_ctx_reg(e, c, r, &b[r])) {
-            snprintf(msg, n, "%s", fp3_engine_error(e));
-            goto out;
-          }
-        if (rest_skip && memcmp(b, before + (size_t)c * nregs, nregs * sizeof *b) == 0)
-          asleep[o] = 1;
-      }
-    }
+    if (farm ? farm->run(farm->ctx, bank, awake, na, stay, res, msg, n)
+             : fp3_frame_batches(e, bank, awake, na, stay, res, msg, n))
+      goto out;
+    if (rest_skip)
+      for (size_t i = 0; i < na; i++)
+        if (stay[i]) asleep[awake[i]] = 1;
     /* the golden model steps every object, asleep or not */
     for (size_t o = 0; o < nobj; o++) {
       float y[FP3_STEPPER_MAX_VARS];
@@ -733,7 +753,7 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
 out:
   fp3_progress_finish(&prog);
   free(bank);
-  free(before);
+  free(stay);
   free(gy);
   free(asleep);
   free(awake);

@@ -233,4 +233,35 @@ int fp3_run_state_frames(fp3_engine *e, const uint64_t *words, size_t nwords, si
                          const fp3_state_stepper *golden, fp3_state_frames_result *res,
                          char *msg, size_t n);
 
+/* One frame of objects on engine e: one integration (STEPS = 1) of each
+ * of k objects, in batches of contexts x lanes (the first batch the first
+ * fp3_config_slots objects, and so on); object i's register bank, at
+ * bank + at[i] * NUM_REGS, is written before its batch and read back
+ * after it, and stay[i] = 1 when it came back bit-identical (at rest).
+ * Adds the batches, cycles, issued, object_frames and host_words to *acc
+ * and keeps its first context error (error_object: at[i]).  The engine
+ * holds the program already.  Returns 0, or -1 with the engine's message. */
+int fp3_frame_batches(fp3_engine *e, uint32_t *bank, const size_t *at, size_t k,
+                      unsigned char *stay, fp3_state_frames_result *acc, char *msg, size_t n);
+
+/* Where a frame's batches run, when not on the caller's engine alone (the
+ * ranks of fp3-mpi, sw/cli/mpishard.h): run() has fp3_frame_batches'
+ * contract for the frame's awake objects, at[i] being their indices into
+ * the scene (bank holds every object's bank), and must give the same
+ * results: the same batches, in the same order of the awake objects. */
+typedef struct fp3_frames_farm {
+  void *ctx;
+  int (*run)(void *ctx, uint32_t *bank, const size_t *at, size_t k, unsigned char *stay,
+             fp3_state_frames_result *acc, char *msg, size_t n);
+} fp3_frames_farm;
+
+/* fp3_run_state_frames with each frame's batches run by farm (NULL: on e
+ * by fp3_frame_batches); e loads the program and gives the build's shape,
+ * the rest-skipping, the waking and the golden check stay with the caller. */
+int fp3_run_state_frames_farm(fp3_engine *e, const uint64_t *words, size_t nwords, size_t nobj,
+                              uint32_t frames, int rest_skip, const fp3_state_wake *wake,
+                              fpref_mode mode, const fp3_state_stepper *golden,
+                              const fp3_frames_farm *farm, fp3_state_frames_result *res,
+                              char *msg, size_t n);
+
 #endif /* FP3_MSCENE_H */
