@@ -71,14 +71,18 @@ pids+=($!)
 wait_ready "$T/ready" || exit 1
 DEV="uart:$T/tty"
 
-# fp3 run's default program, the ship (programs/ship_rk4.s)
-if "$FP3" run --engine "$DEV" --steps 500 --json >"$T/ship_uart.json" 2>"$T/err" &&
-   "$FP3" run --engine rtl --steps 500 --json >"$T/ship_rtl.json" &&
-   same_results "$T/ship_uart.json" "$T/ship_rtl.json"; then
-  ok "the ship program on $DEV: bit-exact, the results of --engine rtl"
-else
-  bad "the ship program on $DEV"; cat "$T/err"
-fi
+# fp3 run's default program, the ship (programs/ship_rk4.s), on engine $1
+# for $2 integrations: bit-exact, the results of --engine rtl
+ship_on() {
+  if "$FP3" run --engine "$1" --steps "$2" --json >"$T/ship_uart.json" 2>"$T/err" &&
+     "$FP3" run --engine rtl --steps "$2" --json >"$T/ship_rtl.json" &&
+     same_results "$T/ship_uart.json" "$T/ship_rtl.json"; then
+    ok "the ship program on $1: bit-exact, the results of --engine rtl"
+  else
+    bad "the ship program on $1"; cat "$T/err"
+  fi
+}
+ship_on "$DEV" 500
 # ... and its text report says what was compared
 if "$FP3" run --engine "$DEV" --steps 50 >"$T/ship.txt" 2>"$T/err" &&
    grep -q "golden model: 0 mismatches in 50 integrations (the final state only)" "$T/ship.txt" &&
@@ -175,13 +179,7 @@ fi
 pids+=($!)
 wait_ready "$T/ready_tcp" || exit 1
 tport=$(awk '{print $2}' "$T/ready_tcp")
-if "$FP3" run --engine "uart:socket://127.0.0.1:$tport" --steps 200 --json >"$T/ship_tcp.json" 2>"$T/err" &&
-   "$FP3" run --engine rtl --steps 200 --json >"$T/ship_rtl200.json" &&
-   same_results "$T/ship_tcp.json" "$T/ship_rtl200.json"; then
-  ok "the ship program on uart:socket://127.0.0.1:$tport"
-else
-  bad "the ship program on uart:socket://"; cat "$T/err"
-fi
+ship_on "uart:socket://127.0.0.1:$tport" 200
 
 # ---- not an FP3: the engine's errors name the device, exit status 1 ----------------
 # expect_error WHAT PATTERN ENGINE: fp3 run exits 1 with PATTERN on stderr.

@@ -320,6 +320,16 @@ static int write_out(const char *path, const char *text) {
   return -1;
 }
 
+/* Close the memory stream *f (NULL: none) and write the text it gathered
+ * (*text, which open_memstream sets when the stream closes) to path; 0 or
+ * -1 (message printed). */
+static int close_out(FILE **f, const char *path, char *const *text) {
+  if (!*f) return 0;
+  fclose(*f);
+  *f = NULL;
+  return write_out(path, *text);
+}
+
 /* dir and the directories above it (mkdir -p); 0 or -1 (message printed). */
 static int make_dirs(const char *dir) {
   char p[4096];
@@ -660,26 +670,9 @@ static int bench(fp3_bench_args *b) {
   }
   fclose(csv);
   csv = NULL;
-  if (scsv) {
-    fclose(scsv);
-    scsv = NULL;
-    if (write_out(a.stab, stext)) goto out;
-  }
-  if (smd) {
-    fclose(smd);
-    smd = NULL;
-    if (write_out(stabmd, smtext)) goto out;
-  }
-  if (lcsv) {
-    fclose(lcsv);
-    lcsv = NULL;
-    if (write_out(a.long_out, ltext)) goto out;
-  }
-  if (lmd) {
-    fclose(lmd);
-    lmd = NULL;
-    if (write_out(longmd, lmtext)) goto out;
-  }
+  if (close_out(&scsv, a.stab, &stext) || close_out(&smd, stabmd, &smtext) ||
+      close_out(&lcsv, a.long_out, &ltext) || close_out(&lmd, longmd, &lmtext))
+    goto out;
   if (want_sweep && a.out) {
     if (write_out(a.out, text)) goto out;
     fprintf(stderr, "fp3 bench: %s: %u rows (model %s, t_end %.6g)\n", a.out, nrows, m->name,
