@@ -37,6 +37,7 @@
 #include "cmd_run.h"
 #include "cmd_tbgen.h"
 #include "cmd_testfloat.h"
+#include "engine.h"
 #include "fuzz_common.h"
 #include "model.h"
 
@@ -98,7 +99,12 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   check_str(cmd, a.trace.path, 0);
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
-  if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0) fail(cmd, "an engine");
+  /* a board (uart:...) only where the state is compared after a run */
+  const int board = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
+                    fp3_engine_is_uart(a.engine);
+  if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0 && !board)
+    fail(cmd, "an engine");
+  check_str(cmd, a.engine, 1);
   check_str(cmd, a.file, 0);
   check_str(cmd, a.scene, 0);
   check_str(cmd, a.integ, 1);
