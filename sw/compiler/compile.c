@@ -1781,6 +1781,29 @@ static void golden_advance(fp3_compiled *c, float *y) {
     if (b->nd[i].kind == NK_STATE) c->val[i] = y[b->nd[i].id];
 }
 
+/* ---- the IR, read-only (compile.h) ----------------------------------------- */
+
+_Static_assert((int)FP3_IR_IN == NK_IN && (int)FP3_IR_STATE == NK_STATE &&
+               (int)FP3_IR_ADD == NK_ADD && (int)FP3_IR_MAX == NK_MAX &&
+               (int)FP3_IR_KINDS == NK_COUNT, "fp3_ir_kind follows enum node_kind");
+
+unsigned fp3_ir_nodes(const fp3_compiled *c) { return (unsigned)c->b.nn; }
+
+void fp3_ir_node_get(const fp3_compiled *c, unsigned i, fp3_ir_node *x) {
+  const node *y = &c->b.nd[i];
+  *x = (fp3_ir_node){y->kind, y->a, y->b, y->id, y->bits, y->inv, y->live, y->host, y->name};
+}
+
+unsigned fp3_ir_carried_next(const fp3_compiled *c, unsigned w) {
+  return (unsigned)c->b.out[w].n;
+}
+
+const char *fp3_ir_carried_name(const fp3_compiled *c, unsigned w) { return c->b.st_name[w]; }
+
+const char *fp3_ir_input_name(const fp3_compiled *c, unsigned k) { return c->b.in_name[k]; }
+
+float fp3_ir_value(const fp3_compiled *c, unsigned i) { return c->val[i]; }
+
 /* ---- output file ----------------------------------------------------------- */
 
 int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n) {
