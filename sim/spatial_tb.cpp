@@ -11,7 +11,9 @@
 // its next step as soon as its previous result has left the pipeline
 // (valid_o), its own new state as the input (the RTL's, not the golden
 // model's), so with more objects than the latency every cycle carries an
-// object, and with fewer the cycles between are bubbles (valid_i = 0).
+// object, and with fewer the cycles between are bubbles (valid_i = 0)
+// whose inputs are random words, so that a value read in the wrong cycle
+// is wrong even for a lone object.
 // Each result must leave exactly LATENCY cycles after its object entered.
 // Exit status: 0 every value matches, 1 a mismatch or a timing error, 2 a
 // bad vectors file.
@@ -34,6 +36,14 @@ template <std::size_t N> static void set_word(VlWide<N> &p, unsigned k, uint32_t
 static uint32_t get_word(IData p, unsigned k) { (void)k; return p; }
 static uint32_t get_word(QData p, unsigned k) { return (uint32_t)(p >> (32 * k)); }
 template <std::size_t N> static uint32_t get_word(const VlWide<N> &p, unsigned k) { return p[k]; }
+
+// The words of a bubble: xorshift32 (Marsaglia).
+static uint32_t junk(uint32_t *x) {
+  *x ^= *x << 13;
+  *x ^= *x >> 17;
+  *x ^= *x << 5;
+  return *x;
+}
 
 int main(int argc, char **argv) {
   if (argc != 2) {
@@ -90,6 +100,7 @@ int main(int argc, char **argv) {
   unsigned long next = 0, finished = 0, mismatches = 0, bubbles = 0, fed = 0;
   const unsigned long total = nobj * steps;
   uint64_t cycle = 0;
+  uint32_t rng = 0x2545F491u;
   const uint64_t limit = (uint64_t)(total + 2) * (lat + 2) + 100;
   while (finished < total && cycle < limit) {
     top.clk_i = 0;
@@ -139,6 +150,10 @@ int main(int argc, char **argv) {
       } else {
         bubbles++;
       }
+    }
+    if (!top.valid_i) { // a bubble carries junk: a read at the wrong cycle shows
+      for (unsigned long k = 0; k < nin; k++) set_word(top.in_i, (unsigned)k, junk(&rng));
+      for (unsigned long w = 0; w < nc; w++) set_word(top.y_i, (unsigned)w, junk(&rng));
     }
     top.eval();
     top.clk_i = 1;

@@ -25,6 +25,19 @@ tmp=$(mktemp -d /tmp/fp3_test_spatial.XXXXXX); trap 'rm -rf "$tmp"' EXIT
 fail=0
 STEPS=3
 
+# build_tb MODULE FILE.v OBJDIR EXE: the harness on a generated module.  The
+# model is one translation unit (VM_PARALLEL_BUILDS=0) and unoptimised:
+# the build, not the run, is what takes time here.  Its log: OBJDIR.log.
+build_tb() {
+  { nice $VERILATOR --cc --x-assign fast --x-initial fast --noassert -Irtl -y rtl \
+      --top-module "$1" --prefix Vspatial --Mdir "$3" "$2" &&
+    nice make -s -C "$3" -f Vspatial.mk VM_PARALLEL_BUILDS=0 OPT_FAST=-O0 OPT_SLOW=-O0 \
+      Vspatial__ALL.a &&
+    nice g++ -O1 -std=c++17 -faligned-new -I"$VINC" -I"$VINC/vltstd" -I"$3" \
+      sim/spatial_tb.cpp "$3/Vspatial__ALL.a" $RUNTIME -pthread -latomic -o "$4"; } \
+    >"$3.log" 2>&1 || { tail -20 "$3.log"; return 1; }
+}
+
 # case name, model, fp3 spatial options
 cases=(
   "ship-folded    models/ship.fp3m       --integrator rk4se"
@@ -32,6 +45,7 @@ cases=(
   "spring         models/spring.fp3m     --integrator rk4"
   "oscillator     models/oscillator.fp3m --integrator rk4"
   "projectile     models/projectile.fp3m --integrator rk4"
+  "spring-rtz-ftz models/spring.fp3m     --integrator rk4 --round rtz --ftz"
 )
 for c in "${cases[@]}"; do
   read -r name model opts <<<"$c"
@@ -51,16 +65,8 @@ for c in "${cases[@]}"; do
   if ! $VERILATOR --lint-only -Wall -Irtl -y rtl --top-module "$mod" "$v" >"$d.lint" 2>&1; then
     head -20 "$d.lint"; echo "FAIL: $name: verilator --lint-only -Wall"; fail=1; continue
   fi
-  # Verilate; the model in one translation unit (VM_PARALLEL_BUILDS=0)
-  # and unoptimised: the build, not the run, is what takes time here
-  if ! { nice $VERILATOR --cc --x-assign fast --x-initial fast --noassert -Irtl -y rtl \
-           --top-module "$mod" --prefix Vspatial --Mdir "$d/obj" "$v" &&
-         nice make -s -C "$d/obj" -f Vspatial.mk VM_PARALLEL_BUILDS=0 OPT_FAST=-O0 OPT_SLOW=-O0 \
-           Vspatial__ALL.a &&
-         nice g++ -O1 -std=c++17 -faligned-new -I"$VINC" -I"$VINC/vltstd" -I"$d/obj" \
-           sim/spatial_tb.cpp "$d/obj/Vspatial__ALL.a" $RUNTIME -pthread -latomic -o "$d/tb"; } \
-         >"$d.build" 2>&1; then
-    tail -20 "$d.build"; echo "FAIL: $name: Verilator build"; fail=1; continue
+  if ! build_tb "$mod" "$v" "$d/obj" "$d/tb"; then
+    echo "FAIL: $name: Verilator build"; fail=1; continue
   fi
   for set in one many; do
     if out=$("$d/tb" "$d/$set/vectors.txt" 2>&1); then
@@ -69,6 +75,32 @@ for c in "${cases[@]}"; do
       echo "$out"; echo "FAIL: $name: $set"; fail=1
     fi
   done
+  # the harness bites: the ship's module with one delay stage removed (the
+  # first data delay line deeper than 1 made one stage shorter) must fail
+  if [ "$name" = ship-folded ]; then
+    python3 - "$v" "$d/short.v" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+for m in re.finditer(r"fp_pipe #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\)\)", s):
+    if int(m.group(1)) > 1:
+        s = s[:m.start(1)] + str(int(m.group(1)) - 1) + s[m.end(1):]
+        break
+else:
+    sys.exit("no delay line to shorten")
+open(sys.argv[2], "w").write(s)
+PY
+    if build_tb "$mod" "$d/short.v" "$d/objs" "$d/tbs"; then
+      for set in one many; do
+        if out=$("$d/tbs" "$d/$set/vectors.txt" 2>&1); then
+          echo "FAIL: $name with a delay stage removed passes ($set)"; fail=1
+        else
+          echo "PASS: $name with a delay stage removed fails ($set): $(echo "$out" | tail -1)"
+        fi
+      done
+    else
+      echo "FAIL: $name: Verilator build of the shortened module"; fail=1
+    fi
+  fi
 done
 
 # bad input: exit 2, nothing written
