@@ -103,6 +103,13 @@ PY
   fi
 done
 
+# the usage
+if "$FP3" spatial --help | grep -q "^usage: fp3 spatial MODEL.fp3m -o DIR"; then
+  echo "PASS: fp3 spatial --help"
+else
+  echo "FAIL: fp3 spatial --help"; fail=1
+fi
+
 # bad input: exit 2, nothing written
 bad() {
   local what=$1; shift
