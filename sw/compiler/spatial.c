@@ -302,7 +302,9 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
       fp3_strbuf_printf(t, "  wire [31:0] %s;\n  wire        %s_valid;\n  wire [4:0]  %s_flags;\n",
                         x->sig, x->sig, x->sig);
     for (unsigned d = 1; d <= x->delay; d++)
-      if (x->tap[d]) fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n", x->sig, d);
+      if (x->tap[d])
+        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n  wire        unused_%s_d%u;\n", x->sig, d,
+                          x->sig, d);
   }
   /* cores */
   fp3_strbuf_printf(t, "\n  // ---- cores, in the IR's order ----\n");
@@ -381,15 +383,12 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
                        "  fp_pipe #(.WIDTH(1), .DEPTH(LATENCY)) u_valid (\n"
                        "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .data_i(1'b0),\n"
                        "    .valid_o(valid_o), .data_o(unused_valid_data)\n  );\n");
-  /* the cores' own valid bits and flags, and the delay lines' valid
-   * bits, are not used: exception flags are not reported by this module */
+  /* the cores' own valid bits and flags are not used: exception flags
+   * are not reported by this module (the delay lines' valid bits, wires
+   * named unused_*, neither) */
   fp3_strbuf_printf(t, "\n  // Not used: the cores' valid bits and exception flags (the module\n"
-                       "  // reports no flags), the delay lines' valid bits.\n");
-  for (unsigned i = 0; i < s->nn; i++) {
-    const snode *x = &s->nd[i];
-    for (unsigned d = 1; d <= x->delay; d++)
-      if (x->tap[d]) fp3_strbuf_printf(t, "  wire unused_%s_d%u;\n", x->sig, d);
-  }
+                       "  // reports no flags) and, in the unused_* wires above, the delay\n"
+                       "  // lines' valid bits.\n");
   fp3_strbuf_printf(t, "  wire unused_core_outputs = &{1'b0");
   for (unsigned i = 0; i < s->nn; i++)
     if (s->nd[i].src == SRC_CORE)
