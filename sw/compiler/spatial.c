@@ -112,6 +112,30 @@ static void describe(const struct fp3_spatial *s, int i, char *buf, size_t n) {
   }
 }
 
+/* The host's expression of node i, from the inputs and constants
+ * ("(h * minv) * C"), into the n bytes of buf. */
+static void expr(const struct fp3_spatial *s, int i, char *buf, size_t n) {
+  const snode *x = &s->nd[i];
+  const int k = x->ir.kind;
+  if (!is_op(k)) {
+    if (k == FP3_IR_CONST) snprintf(buf, n, "%.9g", (double)fpref_float(x->ir.bits));
+    else if (k == FP3_IR_IN) snprintf(buf, n, "%s", fp3_ir_input_name(s->c, (unsigned)x->ir.id));
+    else snprintf(buf, n, "%s", x->ir.name);
+    return;
+  }
+  char a[128], b[128];
+  int len; /* a long expression is cut at n - 1 characters: it is a comment */
+  expr(s, x->ir.a, a, sizeof a);
+  if (x->ir.b < 0) len = snprintf(buf, n, "%s(%s)", kind_symbol[k], a);
+  else {
+    expr(s, x->ir.b, b, sizeof b);
+    if (k == FP3_IR_MIN || k == FP3_IR_MAX)
+      len = snprintf(buf, n, "%s(%s, %s)", kind_symbol[k], a, b);
+    else len = snprintf(buf, n, "(%s %s %s)", a, kind_symbol[k], b);
+  }
+  if (len >= (int)n && n > 4) memcpy(buf + n - 4, "...", 4);
+}
+
 /* Mark node i read d cycles after it is ready. */
 static int need(struct fp3_spatial *s, int i, unsigned d) {
   snode *x = &s->nd[i];
@@ -259,8 +283,9 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     if (x->ir.kind == FP3_IR_IN)
       fp3_strbuf_printf(t, "//              %2u  %s\n", k, fp3_ir_input_name(c, (unsigned)x->ir.id));
     else {
-      describe(s, s->input_node[k], buf, sizeof buf);
-      fp3_strbuf_printf(t, "//              %2u  %s  (the host's)\n", k, buf);
+      label(s, s->input_node[k], a, sizeof a);
+      expr(s, s->input_node[k], buf, sizeof buf);
+      fp3_strbuf_printf(t, "//              %2u  %s = %s  (the host's, in binary32)\n", k, a, buf);
     }
   }
   fp3_strbuf_printf(t, "//   y_i      its carried values (word w):\n");
