@@ -180,13 +180,11 @@ static int run_spatial(const fp3_spatial_args *a) {
   }
   fp3_compile_opts co;
   fp3_compile_defaults(&co);
-  co.add_latency = a->opts.add_latency;
-  co.mul_latency = a->opts.mul_latency;
-  co.div_latency = a->opts.div_latency;
-  co.max_regs = FP3_MAX_REGS; /* registers do not matter to the pipeline */
   if (a->literal) co.fold = co.drop_zero = 0;
   else co.drop_zero = 0; /* no scene: no param is known to be zero */
-  if (fp3_compile_model(m, a->integ, &co, NULL, &c, msg, sizeof msg)) {
+  /* the IR alone: the processor's register and instruction limits do not
+   * apply to a pipeline */
+  if (fp3_compile_model_ir(m, a->integ, &co, NULL, &c, msg, sizeof msg)) {
     fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
     goto out;
   }

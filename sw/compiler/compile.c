@@ -1487,6 +1487,28 @@ out:
   return rc;
 }
 
+int fp3_compile_model_ir(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                         const unsigned char *param_zero, fp3_compiled **outp, char *msg,
+                         size_t n) {
+  *outp = NULL;
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  if (model_ir(&c->b, m, integrator, o, param_zero, msg, n)) {
+    fp3_compiled_free(c);
+    return -1;
+  }
+  /* no registers: the golden model's start binds none */
+  for (int k = 0; k < MAX_IN; k++) c->in_reg[k] = -1;
+  for (int k = 0; k < MAX_STATE; k++) c->state_reg[k] = -1;
+  for (int i = 0; i < MAX_NODES; i++) c->host_reg[i] = -1;
+  fp3_image_init(&c->img);
+  *outp = c;
+  return 0;
+}
+
 /* The IR node an `.in` name stands for: a param's or an initial state's
  * input leaf (NAME, or NAME0 for state variable NAME), or a
  * parameter-only let (an invariant node of that name); -1 if none. */

@@ -200,6 +200,20 @@ int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_comp
                       const unsigned char *param_zero, fp3_compiled **out, char *msg,
                       size_t n);
 
+/* The IR of model m for `integrator` and its golden model, without a
+ * program: for back ends other than the processor (spatial.h), so no
+ * register, instruction or ISA limit applies.  Options as
+ * fp3_compile_model (only fold and drop_zero matter).  The result has no
+ * text (fp3_compiled_text is NULL), an empty image, zero stats and no
+ * registers (fp3_compiled_model_start returns no writes;
+ * fp3_compiled_state_reg gives UINT_MAX); its golden model
+ * (fp3_compiled_model_step, fp3_ir_value) is the same as
+ * fp3_compile_model's.  0, or -1 with a message (unknown integrator, one
+ * that does not apply to m, an IR too large). */
+int fp3_compile_model_ir(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                         const unsigned char *param_zero, fp3_compiled **out, char *msg,
+                         size_t n);
+
 /* A hand-written program as the program of model m: img (assembled from
  * `program`, named in messages) names its integrator (`.integrator`) and
  * binds its registers by name (asm.h `.in` / `.out`).  The result is used

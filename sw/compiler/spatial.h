@@ -67,7 +67,8 @@ typedef struct fp3_spatial_stats {
 typedef struct fp3_spatial fp3_spatial;
 
 /* Schedule compiled model c (of model m, integrator `integ`, as
- * fp3_compile_model made it) for the cores of o, and write its module.
+ * fp3_compile_model or fp3_compile_model_ir made it) for the cores of o,
+ * and write its module.
  * c must outlive the result.  Returns 0 and *out, or -1 with a message
  * (latencies out of range, a model with no input, out of memory). */
 int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
