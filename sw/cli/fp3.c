@@ -13,6 +13,9 @@
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *   fp3 compile SCENE|--model FILE   a program compiled for a model or scene
  *                                    (sw/compiler/compile.h)
+ *   fp3 spatial MODEL -o DIR         a model's integration step as one
+ *                                    pipelined Verilog module
+ *                                    (sw/compiler/spatial.h)
  *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
  *                                    (sw/compiler/configure.h)
  *   fp3 frames [options]             a scene frame by frame with sleeping
