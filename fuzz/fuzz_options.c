@@ -2,7 +2,7 @@
  * fuzz_options.c -- libFuzzer harness for the command line: the parse step
  * of every fp3 subcommand (cliopt.h: argv -> the subcommand's options,
  * checked, no file opened), i.e. fp3_parse_asm, fp3_parse_disasm,
- * fp3_parse_compile, fp3_parse_configure, fp3_parse_bench (fp3_parse_model
+ * fp3_parse_compile, fp3_parse_spatial, fp3_parse_configure, fp3_parse_bench (fp3_parse_model
  * and bench's own options), fp3_parse_tbgen, fp3_parse_testfloat and, for
  * run, frames and the model form of compile, fp3_parse_model, with the
  * option-value parsers of sw/cli/cliopt.c they share.  The run steps
@@ -35,6 +35,7 @@
 #include "cmd_disasm.h"
 #include "cmd_model.h"
 #include "cmd_run.h"
+#include "cmd_spatial.h"
 #include "cmd_tbgen.h"
 #include "cmd_testfloat.h"
 #include "engine.h"
@@ -186,6 +187,19 @@ static void parse_compile(int argc, char **argv) {
   check_str("compile", a.integ, 1);
 }
 
+static void parse_spatial(int argc, char **argv) {
+  fp3_spatial_args a;
+  if (fp3_parse_spatial(argc, argv, &a) != FP3_ARGS_RUN) return;
+  if (!a.model || !a.dir) fail("spatial", "no model or no -o DIR");
+  if (a.opts.add_latency < 1 || a.opts.add_latency > 64 || a.opts.mul_latency < 1 ||
+      a.opts.mul_latency > 64 || a.opts.div_latency < 1 || a.opts.div_latency > 64 ||
+      a.vec_steps < 1)
+    fail("spatial", "a latency or --steps out of range");
+  check_str("spatial", a.model, 0);
+  check_str("spatial", a.dir, 0);
+  check_str("spatial", a.integ, 1);
+}
+
 static void parse_configure(int argc, char **argv) {
   fp3_configure_args a;
   if (fp3_parse_configure(argc, argv, &a) != FP3_ARGS_RUN) return;
@@ -199,7 +213,7 @@ static void parse_configure(int argc, char **argv) {
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   static const char *const cmds[] = {"asm",    "disasm", "run",   "compile",
                                      "configure", "frames", "bench", "tbgen",
-                                     "testfloat"};
+                                     "testfloat", "spatial"};
   const size_t ncmds = sizeof cmds / sizeof cmds[0];
   char *text = fuzz_strdup(data, size);
   char *argv[MAX_ARGS + 1];
@@ -234,6 +248,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   else if (strcmp(cmd, "disasm") == 0) parse_disasm(argc, argv);
   else if (strcmp(cmd, "compile") == 0) parse_compile(argc, argv);
   else if (strcmp(cmd, "configure") == 0) parse_configure(argc, argv);
+  else if (strcmp(cmd, "spatial") == 0) parse_spatial(argc, argv);
   else if (strcmp(cmd, "bench") == 0) parse_bench(argc, argv);
   else if (strcmp(cmd, "testfloat") == 0) parse_testfloat(argc, argv);
   else parse_tbgen(argc, argv);

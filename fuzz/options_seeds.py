@@ -18,7 +18,7 @@ to regenerate.
 import glob, os, re, shlex, sys
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 out = os.path.join(root, "fuzz/corpus/options")
-CMDS = {"asm", "disasm", "run", "compile", "configure", "frames", "bench", "tbgen", "testfloat"}
+CMDS = {"asm", "disasm", "run", "compile", "spatial", "configure", "frames", "bench", "tbgen", "testfloat"}
 inv = re.compile(r'(?:"\$\{?FP3(?:_BIN)?\}?"|\$\{?FP3(?:_BIN)?\}?|\bbuild/fp3|(?<![\w/.-])fp3)\s+(%s)\b(.*)' % "|".join(sorted(CMDS)))
 exp = re.compile(r'^\s*expect\w*\s.*?\s--\s+()(.*)')
 cut = re.compile(r'\s(?:\||>|2>|<|;|&&|\|\|)|\)\s*$|\)\s*[|;&]|`')

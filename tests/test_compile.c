@@ -215,6 +215,65 @@ static void test_literal_ir_is_integrator(void **state) {
   fp3_mscene_free(&nodrag);
 }
 
+/* fp3_compile_model_ir (the IR without a program, for the spatial back
+ * end) has the same IR and the same golden model as fp3_compile_model,
+ * and its accessors give a topological order whose operations read
+ * nodes before them. */
+static void test_ir_only(void **state) {
+  (void)state;
+  fp3_mscene sc;
+  scene(8, 6, 1, 1, &sc);
+  unsigned char zero[FP3_MODEL_MAX_VARS];
+  fp3_mscene_zero(&sc, zero);
+  for (size_t i = 0; i < N_INTEG; i++)
+    for (int fold = 0; fold < 2; fold++) {
+      fp3_compile_opts o;
+      fp3_compile_defaults(&o);
+      o.fold = o.drop_zero = fold;
+      fp3_compiled *c = compile_opts(&sc, integrators[i], &o), *r = NULL;
+      char msg[300];
+      if (fp3_compile_model_ir(sc.model, integrators[i], &o, zero, &r, msg, sizeof msg))
+        fail_msg("%s: %s", integrators[i], msg);
+      assert_null(fp3_compiled_text(r));
+      assert_int_equal(fp3_ir_nodes(r), fp3_ir_nodes(c));
+      for (unsigned k = 0; k < fp3_ir_nodes(r); k++) {
+        fp3_ir_node x, y;
+        fp3_ir_node_get(r, k, &x);
+        fp3_ir_node_get(c, k, &y);
+        assert_int_equal(x.kind, y.kind);
+        assert_int_equal(x.a, y.a);
+        assert_int_equal(x.b, y.b);
+        assert_int_equal(x.live, y.live);
+        if (x.kind >= FP3_IR_ADD) {
+          assert_true(x.a >= 0 && (unsigned)x.a < k);
+          assert_true(x.b < (int)k);
+        }
+      }
+      const unsigned nc = fp3_compiled_carried(c);
+      assert_int_equal(fp3_compiled_carried(r), nc);
+      for (unsigned w = 0; w < nc; w++)
+        assert_int_equal(fp3_ir_carried_next(r, w), fp3_ir_carried_next(c, w));
+      for (size_t obj = 0; obj < sc.n; obj++) {
+        float yc[2 * FP3_MODEL_MAX_VARS] = {0}, yr[2 * FP3_MODEL_MAX_VARS] = {0};
+        memcpy(yc, obj_y0(&sc, obj), sc.model->nstate * sizeof *yc);
+        memcpy(yr, yc, sizeof yr);
+        for (int step = 0; step < 50; step++) {
+          float nc_[2 * FP3_MODEL_MAX_VARS], nr[2 * FP3_MODEL_MAX_VARS];
+          fp3_compiled_model_step_from(c, obj_in(&sc, obj), yc, nc_);
+          fp3_compiled_model_step_from(r, obj_in(&sc, obj), yr, nr);
+          for (unsigned w = 0; w < nc; w++) {
+            assert_int_equal(fpref_bits(nc_[w]), fpref_bits(nr[w]));
+            yc[w] = nc_[w];
+            yr[w] = nr[w];
+          }
+        }
+      }
+      fp3_compiled_free(c);
+      fp3_compiled_free(r);
+    }
+  fp3_mscene_free(&sc);
+}
+
 /* A folded program is a different rounding sequence: it must differ from
  * the literal one somewhere (else the test above proves nothing about
  * folding), yet stay close. */
@@ -475,6 +534,7 @@ int main(void) {
       cmocka_unit_test(test_dce),
       cmocka_unit_test(test_literal_ir_is_integrator),
       cmocka_unit_test(test_folded_differs),
+      cmocka_unit_test(test_ir_only),
       cmocka_unit_test(test_folded_inputs),
       cmocka_unit_test(test_text_assembles),
       cmocka_unit_test(test_errors),

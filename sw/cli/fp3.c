@@ -13,6 +13,9 @@
  *   fp3 tbgen FILE.s -o DIR          files of the Icarus testbench
  *   fp3 compile SCENE|--model FILE   a program compiled for a model or scene
  *                                    (sw/compiler/compile.h)
+ *   fp3 spatial MODEL -o DIR         a model's integration step as one
+ *                                    pipelined Verilog module
+ *                                    (sw/compiler/spatial.h)
  *   fp3 configure SCENE [-o FILE]    RTL parameters sized to the scene
  *                                    (sw/compiler/configure.h)
  *   fp3 frames [options]             a scene frame by frame with sleeping
@@ -31,6 +34,7 @@
 #include "cmd_asm.h"
 #include "cmd_bench.h"
 #include "cmd_compile.h"
+#include "cmd_spatial.h"
 #include "cmd_configure.h"
 #include "cmd_disasm.h"
 #include "cmd_frames.h"
@@ -62,6 +66,8 @@ static void usage(FILE *f) {
           "  tbgen FILE.s -o DIR       files of the Icarus testbench (make wave)\n"
           "  compile SCENE|--model M   a model or a scene compiled into a program\n"
           "                            (fp3 run compiles it itself)\n"
+          "  spatial MODEL -o DIR      a model's integration step as a pipelined\n"
+          "                            Verilog module, one object per cycle\n"
           "  configure SCENE [-o FILE] RTL parameters sized to the scene\n"
           "                            (make variables; make synth-scene)\n"
           "  frames [options]          a scene frame by frame with sleeping\n"
@@ -109,6 +115,7 @@ static int dispatch(int argc, char **argv) {
     return fp3_cmd_testfloat(argc - 1, argv + 1);
   if (strcmp(cmd, "tbgen") == 0) return fp3_cmd_tbgen(argc - 1, argv + 1);
   if (strcmp(cmd, "compile") == 0) return fp3_cmd_compile(argc - 1, argv + 1);
+  if (strcmp(cmd, "spatial") == 0) return fp3_cmd_spatial(argc - 1, argv + 1);
   if (strcmp(cmd, "configure") == 0) return fp3_cmd_configure(argc - 1, argv + 1);
   if (strcmp(cmd, "bench") == 0) return fp3_cmd_bench(argc - 1, argv + 1);
   if (strcmp(cmd, "frames") == 0) return fp3_cmd_frames(argc - 1, argv + 1);

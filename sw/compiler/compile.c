@@ -1487,6 +1487,28 @@ out:
   return rc;
 }
 
+int fp3_compile_model_ir(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                         const unsigned char *param_zero, fp3_compiled **outp, char *msg,
+                         size_t n) {
+  *outp = NULL;
+  fp3_compiled *c = calloc(1, sizeof *c);
+  if (!c) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  if (model_ir(&c->b, m, integrator, o, param_zero, msg, n)) {
+    fp3_compiled_free(c);
+    return -1;
+  }
+  /* no registers: the golden model's start binds none */
+  for (int k = 0; k < MAX_IN; k++) c->in_reg[k] = -1;
+  for (int k = 0; k < MAX_STATE; k++) c->state_reg[k] = -1;
+  for (int i = 0; i < MAX_NODES; i++) c->host_reg[i] = -1;
+  fp3_image_init(&c->img);
+  *outp = c;
+  return 0;
+}
+
 /* The IR node an `.in` name stands for: a param's or an initial state's
  * input leaf (NAME, or NAME0 for state variable NAME), or a
  * parameter-only let (an invariant node of that name); -1 if none. */
@@ -1780,6 +1802,29 @@ static void golden_advance(fp3_compiled *c, float *y) {
   for (int i = 0; i < b->nn; i++)
     if (b->nd[i].kind == NK_STATE) c->val[i] = y[b->nd[i].id];
 }
+
+/* ---- the IR, read-only (compile.h) ----------------------------------------- */
+
+_Static_assert((int)FP3_IR_IN == NK_IN && (int)FP3_IR_STATE == NK_STATE &&
+               (int)FP3_IR_ADD == NK_ADD && (int)FP3_IR_MAX == NK_MAX &&
+               (int)FP3_IR_KINDS == NK_COUNT, "fp3_ir_kind follows enum node_kind");
+
+unsigned fp3_ir_nodes(const fp3_compiled *c) { return (unsigned)c->b.nn; }
+
+void fp3_ir_node_get(const fp3_compiled *c, unsigned i, fp3_ir_node *x) {
+  const node *y = &c->b.nd[i];
+  *x = (fp3_ir_node){y->kind, y->a, y->b, y->id, y->bits, y->inv, y->live, y->host, y->name};
+}
+
+unsigned fp3_ir_carried_next(const fp3_compiled *c, unsigned w) {
+  return (unsigned)c->b.out[w].n;
+}
+
+const char *fp3_ir_carried_name(const fp3_compiled *c, unsigned w) { return c->b.st_name[w]; }
+
+const char *fp3_ir_input_name(const fp3_compiled *c, unsigned k) { return c->b.in_name[k]; }
+
+float fp3_ir_value(const fp3_compiled *c, unsigned i) { return c->val[i]; }
 
 /* ---- output file ----------------------------------------------------------- */
 

@@ -200,6 +200,20 @@ int fp3_compile_model(const fp3_model *m, const char *integrator, const fp3_comp
                       const unsigned char *param_zero, fp3_compiled **out, char *msg,
                       size_t n);
 
+/* The IR of model m for `integrator` and its golden model, without a
+ * program: for back ends other than the processor (spatial.h), so no
+ * register, instruction or ISA limit applies.  Options as
+ * fp3_compile_model (only fold and drop_zero matter).  The result has no
+ * text (fp3_compiled_text is NULL), an empty image, zero stats and no
+ * registers (fp3_compiled_model_start returns no writes;
+ * fp3_compiled_state_reg gives UINT_MAX); its golden model
+ * (fp3_compiled_model_step, fp3_ir_value) is the same as
+ * fp3_compile_model's.  0, or -1 with a message (unknown integrator, one
+ * that does not apply to m, an IR too large). */
+int fp3_compile_model_ir(const fp3_model *m, const char *integrator, const fp3_compile_opts *o,
+                         const unsigned char *param_zero, fp3_compiled **out, char *msg,
+                         size_t n);
+
 /* A hand-written program as the program of model m: img (assembled from
  * `program`, named in messages) names its integrator (`.integrator`) and
  * binds its registers by name (asm.h `.in` / `.out`).  The result is used
@@ -296,5 +310,50 @@ typedef struct fp3_scene_waker {
 int fp3_scene_waker_init(fp3_scene_waker *w, fp3_compiled *c, fp3_mscene *sc, uint32_t frame,
                          size_t count, const char *param, float value, const char *times,
                          char *msg, size_t n);
+
+/* ---- the IR, read-only (back ends that are not the processor: spatial.h) -- */
+
+/* The kind of an IR node: leaves, then the operations.  The order is the
+ * compiler's own (compile.c enum node_kind). */
+enum fp3_ir_kind { FP3_IR_IN, FP3_IR_CONST, FP3_IR_STATE, FP3_IR_ADD, FP3_IR_SUB, FP3_IR_MUL,
+                   FP3_IR_DIV, FP3_IR_SQRT, FP3_IR_ABS, FP3_IR_NEG, FP3_IR_MIN, FP3_IR_MAX,
+                   FP3_IR_KINDS };
+
+/* One IR node of a compiled model as fp3_ir_node_get reads it. */
+typedef struct fp3_ir_node {
+  int kind;          /* enum fp3_ir_kind                                   */
+  int a, b;          /* operand nodes of an operation (b = -1: unary)      */
+  int id;            /* FP3_IR_IN: the input (fp3_ir_input_name);
+                        FP3_IR_STATE: the carried value it reads           */
+  uint32_t bits;     /* FP3_IR_CONST: the binary32 pattern                 */
+  int inv;           /* loop invariant: a function of inputs and constants */
+  int live;          /* the next carried values read it, directly or not   */
+  int host;          /* a loop invariant the host computes in binary32 and
+                        writes like an input (its operands are not live
+                        through it)                                        */
+  const char *name;  /* the model's name for it ("k1", "hmT"), or ""      */
+} fp3_ir_node;
+
+/* Number of IR nodes of c; node indices are 0 .. that - 1, and every
+ * operation's operands have lower indices (a topological order). */
+unsigned fp3_ir_nodes(const fp3_compiled *c);
+
+/* Node i of c (i < fp3_ir_nodes(c)). */
+void fp3_ir_node_get(const fp3_compiled *c, unsigned i, fp3_ir_node *x);
+
+/* The node whose value carried value w (< fp3_compiled_carried(c)) takes
+ * after one integration. */
+unsigned fp3_ir_carried_next(const fp3_compiled *c, unsigned w);
+
+/* The name of carried value w (a state variable, or c_NAME / a_NAME). */
+const char *fp3_ir_carried_name(const fp3_compiled *c, unsigned w);
+
+/* The name of input k (a param, h first, or NAME(0)). */
+const char *fp3_ir_input_name(const fp3_compiled *c, unsigned k);
+
+/* The golden model's value of node i: after fp3_compiled_model_start (or
+ * _start_from) the inputs, constants and every loop invariant (the host's
+ * values among them); after a step, also the step's operations. */
+float fp3_ir_value(const fp3_compiled *c, unsigned i);
 
 #endif /* FP3_COMPILE_H */

@@ -1,0 +1,229 @@
+/*
+ * cmd_spatial.c -- `fp3 spatial`: a model compiled (compile.h) and its
+ * integration step written as a pipelined Verilog module (spatial.h).
+ */
+#include "cmd_spatial.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cliopt.h"
+#include "model.h"
+#include "report.h"
+
+#define EXIT_FAIL 1
+#define EXIT_USAGE 2
+
+static void usage(FILE *f) {
+  fp3_spatial_opts d;
+  fp3_spatial_defaults(&d);
+  fprintf(f,
+          "usage: fp3 spatial MODEL.fp3m -o DIR [--integrator I] [--literal]\n"
+          "                   [--round rne|rtz] [--ftz]\n"
+          "                   [--add-latency N] [--mul-latency N] [--div-latency N]\n"
+          "                   [--vectors N [--steps K] [--seed S]]\n"
+          "\n"
+          "Write a model's integration step as one fully pipelined Verilog module,\n"
+          "DIR/fp3_spatial_MODEL_INTEGRATOR.v, that takes one object per cycle and\n"
+          "returns its new state LATENCY cycles later (docs/spatial.md).  Every\n"
+          "operation of the compiled program (fp3 compile) gets its own core\n"
+          "(rtl/fp_add.v, fp_mul, fp_div, fp_sqrt, fp_sign), scheduled as soon as\n"
+          "possible, and delay lines balance every path, so the results equal the\n"
+          "program's golden model bit for bit.  The report (latency, cores, delay\n"
+          "flip-flops) goes to standard error and DIR/report.txt.\n"
+          "The integrators: %s.\n"
+          "\n"
+          "  -o DIR           the folder to write (made if missing); on any error\n"
+          "                   no file is left\n"
+          "  --integrator I   default rk4\n"
+          "  --literal        the integrator's literal operations (docs/models.md);\n"
+          "                   default: the compiler's folded program\n"
+          "  --round rne|rtz  the cores' rounding (default rne)\n"
+          "  --ftz            flush-to-zero cores\n"
+          "  --add-latency N, --mul-latency N, --div-latency N   core latencies\n"
+          "                   (default %u, %u, %u; div also for sqrt)\n"
+          "  --vectors N      also DIR/vectors.txt: N objects (the model's defaults,\n"
+          "                   then each value scaled in [0.75, 1.25]), their inputs and\n"
+          "                   the golden model's state after each of K steps\n"
+          "  --steps K        default 4\n"
+          "  --seed S         the objects' scale factors (default 1)\n"
+          "\n"
+          "Exit status: 0 written; 2 bad arguments, model or integrator; 1 the\n"
+          "files could not be written.\n",
+          fp3_model_integrators(), d.add_latency, d.mul_latency, d.div_latency);
+}
+
+int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
+  memset(a, 0, sizeof *a);
+  a->integ = "rk4";
+  a->vec_steps = 4;
+  a->seed = 1;
+  fp3_spatial_defaults(&a->opts);
+  int steps_given = 0;
+  for (int i = 1; i < argc; i++) {
+    const char *v;
+    unsigned long long k;
+    fpref_mode mode = {a->opts.rtz ? FPREF_RTZ : FPREF_RNE, a->opts.ftz};
+    int r;
+    if (fp3_is_help(argv[i])) return FP3_ARGS_HELP;
+    if ((r = fp3_opt_output(argc, argv, &i, "spatial", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->dir = v;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "spatial", "--integrator", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->integ = v;
+    } else if ((r = fp3_opt_mode(argc, argv, &i, "spatial", &mode)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.rtz = mode.round == FPREF_RTZ;
+      a->opts.ftz = mode.ftz;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--add-latency", 1, 64, "cycles",
+                                  &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.add_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--mul-latency", 1, 64, "cycles",
+                                  &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.mul_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--div-latency", 1, 64, "cycles",
+                                  &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.div_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--vectors", 1, 1000000,
+                                  "objects", &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->vec_objects = (size_t)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--steps", 1, 100000, "steps",
+                                  &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->vec_steps = (unsigned)k;
+      steps_given = 1;
+    } else if ((r = fp3_opt_seed(argc, argv, &i, "spatial", &a->seed)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+    } else if (strcmp(argv[i], "--literal") == 0) {
+      a->literal = 1;
+    } else if (fp3_opt_positional("spatial", "model", argv[i], &a->model)) {
+      return FP3_ARGS_BAD;
+    }
+  }
+  if (!a->model) {
+    fprintf(stderr, "fp3 spatial: no model file (see fp3 spatial --help)\n");
+    return FP3_ARGS_BAD;
+  }
+  if (!a->dir) {
+    fprintf(stderr, "fp3 spatial: no output folder: -o DIR (see fp3 spatial --help)\n");
+    return FP3_ARGS_BAD;
+  }
+  if (steps_given && !a->vec_objects) {
+    fprintf(stderr, "fp3 spatial: --steps needs --vectors N\n");
+    return FP3_ARGS_BAD;
+  }
+  if (!fp3_model_integrator_known(a->integ)) {
+    fprintf(stderr, "fp3 spatial: unknown integrator '%s' (%s)\n", a->integ,
+            fp3_model_integrators());
+    return FP3_ARGS_BAD;
+  }
+  return FP3_ARGS_RUN;
+}
+
+/* DIR/NAME. */
+static void join(char *d, size_t n, const char *dir, const char *name) {
+  snprintf(d, n, "%s/%s", dir, name);
+}
+
+/* Write the files (name, text) into dir, made if missing; on error remove
+ * those written and the folder if it was made here.  0, or -1 with a
+ * message. */
+static int write_all(const char *dir, const char *const *name, const char *const *text,
+                     int nfiles, char *msg, size_t n) {
+  int made = 0;
+  struct stat sb;
+  if (stat(dir, &sb) != 0) {
+    if (mkdir(dir, 0777) != 0) {
+      snprintf(msg, n, "%s: %s", dir, strerror(errno));
+      return -1;
+    }
+    made = 1;
+  } else if (!S_ISDIR(sb.st_mode)) {
+    snprintf(msg, n, "%s: not a folder", dir);
+    return -1;
+  }
+  char path[4096];
+  for (int k = 0; k < nfiles; k++) {
+    join(path, sizeof path, dir, name[k]);
+    if (fp3_write_text_atomic(path, text[k], msg, n)) {
+      for (int j = 0; j < k; j++) {
+        join(path, sizeof path, dir, name[j]);
+        unlink(path);
+      }
+      if (made) rmdir(dir);
+      return -1;
+    }
+  }
+  return 0;
+}
+
+static int run_spatial(const fp3_spatial_args *a) {
+  char msg[512];
+  int rc = EXIT_USAGE;
+  fp3_compiled *c = NULL;
+  fp3_spatial *s = NULL;
+  char *vectors = NULL, *vname = NULL;
+  fp3_model *m = malloc(sizeof *m);
+  if (!m) return EXIT_FAIL;
+  if (fp3_model_load(a->model, m, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s\n", msg);
+    goto out;
+  }
+  fp3_compile_opts co;
+  fp3_compile_defaults(&co);
+  if (a->literal) co.fold = co.drop_zero = 0;
+  else co.drop_zero = 0; /* no scene: no param is known to be zero */
+  /* the IR alone: the processor's register and instruction limits do not
+   * apply to a pipeline */
+  if (fp3_compile_model_ir(m, a->integ, &co, NULL, &c, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
+    goto out;
+  }
+  if (fp3_spatial_build(c, m, a->integ, &a->opts, &s, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
+    goto out;
+  }
+  if (a->vec_objects &&
+      fp3_spatial_vectors(s, a->vec_objects, a->vec_steps, a->seed, &vectors, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s\n", msg);
+    goto out;
+  }
+  size_t vl = strlen(fp3_spatial_module(s)) + 3;
+  if (!(vname = malloc(vl))) {
+    rc = EXIT_FAIL;
+    goto out;
+  }
+  snprintf(vname, vl, "%s.v", fp3_spatial_module(s));
+  const char *names[3] = {vname, "report.txt", "vectors.txt"};
+  const char *texts[3] = {fp3_spatial_verilog(s), fp3_spatial_report(s), vectors};
+  if (write_all(a->dir, names, texts, vectors ? 3 : 2, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s\n", msg);
+    rc = EXIT_FAIL;
+    goto out;
+  }
+  fprintf(stderr, "fp3 spatial: %s, integrator %s%s -> %s/%s\n%s", m->name, a->integ,
+          a->literal ? " (literal)" : " (folded)", a->dir, vname, fp3_spatial_report(s));
+  rc = 0;
+out:
+  free(vname);
+  free(vectors);
+  fp3_spatial_free(s);
+  fp3_compiled_free(c);
+  free(m);
+  return rc;
+}
+
+int fp3_cmd_spatial(int argc, char **argv) {
+  fp3_spatial_args a;
+  int r = fp3_parse_spatial(argc, argv, &a);
+  return r == FP3_ARGS_RUN ? run_spatial(&a) : fp3_args_exit(r, usage);
+}

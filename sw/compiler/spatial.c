@@ -1,0 +1,602 @@
+/*
+ * spatial.c -- the spatial back end (spatial.h): an ASAP schedule of the
+ * compiled IR on one core per operation, delay lines that balance every
+ * path, the Verilog module, its report and its test vectors.
+ */
+#include "spatial.h"
+
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fpenv.h"
+#include "fpref.h"
+#include "report.h"
+
+/* Where a node's value comes from in the module. */
+enum src_kind { SRC_NONE, SRC_CONST, SRC_INPUT, SRC_STATE, SRC_CORE };
+
+/* One IR node as the pipeline sees it. */
+typedef struct snode {
+  fp3_ir_node ir;
+  int src;          /* enum src_kind                                     */
+  int slot;         /* SRC_INPUT: its word of in_i                       */
+  unsigned start;   /* SRC_CORE: the cycle its core samples the operands */
+  unsigned ready;   /* the cycle its value is on its wire                */
+  unsigned delay;   /* the longest delay any reader needs (0: none)      */
+  unsigned char *tap; /* tap[d] = 1: a reader takes it d cycles late     */
+  char sig[64];     /* its wire: nI_NAME                                 */
+} snode;
+
+struct fp3_spatial {
+  fp3_compiled *c;
+  const fp3_model *m;
+  char integ[16];
+  fp3_spatial_opts o;
+  unsigned nn;
+  snode *nd;
+  unsigned ninput;  /* slots of in_i                                     */
+  int *input_node;  /* the node of each slot                             */
+  unsigned ncarried;
+  char module[96];
+  char *verilog;
+  char *report;
+  fp3_spatial_stats st;
+};
+
+static const char *const kind_name[FP3_IR_KINDS] = {
+    "input", "const", "state", "add", "sub", "mul", "div", "sqrt", "abs", "neg", "min", "max"};
+static const char *const kind_symbol[FP3_IR_KINDS] = {
+    "", "", "", "+", "-", "*", "/", "sqrt", "abs", "neg", "min", "max"};
+
+void fp3_spatial_defaults(fp3_spatial_opts *o) {
+  fp3_compile_opts c;
+  fp3_compile_defaults(&c);
+  o->add_latency = c.add_latency;
+  o->mul_latency = c.mul_latency;
+  o->div_latency = c.div_latency;
+  o->sign_latency = 1;
+  o->rtz = 0;
+  o->ftz = 0;
+}
+
+static unsigned core_latency(const fp3_spatial_opts *o, int kind) {
+  switch (kind) {
+  case FP3_IR_ADD:
+  case FP3_IR_SUB: return o->add_latency;
+  case FP3_IR_MUL: return o->mul_latency;
+  case FP3_IR_DIV:
+  case FP3_IR_SQRT: return o->div_latency;
+  default: return o->sign_latency;
+  }
+}
+
+static int is_op(int kind) { return kind >= FP3_IR_ADD && kind < FP3_IR_KINDS; }
+
+/* A Verilog identifier from a model name: letters, digits, '_'. */
+static void ident(char *d, size_t n, const char *s) {
+  size_t k = 0;
+  for (; *s && k + 1 < n; s++) d[k++] = isalnum((unsigned char)*s) ? *s : '_';
+  d[k] = 0;
+}
+
+/* The module's text for node i's value read `d` cycles after it is ready. */
+static void operand(const struct fp3_spatial *s, int i, unsigned d, char *buf, size_t n) {
+  const snode *x = &s->nd[i];
+  if (x->src == SRC_CONST) snprintf(buf, n, "32'h%08X", (unsigned)x->ir.bits);
+  else if (d == 0) snprintf(buf, n, "%s", x->sig);
+  else snprintf(buf, n, "%s_d%u", x->sig, d);
+}
+
+/* A node's name for comments: the model's, else a constant's value or nI. */
+static void label(const struct fp3_spatial *s, int i, char *buf, size_t n) {
+  const snode *x = &s->nd[i];
+  if (x->src == SRC_CONST) snprintf(buf, n, "%.9g", (double)fpref_float(x->ir.bits));
+  else if (x->ir.name[0]) snprintf(buf, n, "%s", x->ir.name);
+  else snprintf(buf, n, "n%d", i);
+}
+
+/* "k1 = h * v" for an operation node. */
+static void describe(const struct fp3_spatial *s, int i, char *buf, size_t n) {
+  const snode *x = &s->nd[i];
+  char me[64], a[64], b[64];
+  label(s, i, me, sizeof me);
+  label(s, x->ir.a, a, sizeof a);
+  if (x->ir.b < 0) snprintf(buf, n, "%s = %s(%s)", me, kind_symbol[x->ir.kind], a);
+  else {
+    label(s, x->ir.b, b, sizeof b);
+    if (x->ir.kind == FP3_IR_MIN || x->ir.kind == FP3_IR_MAX)
+      snprintf(buf, n, "%s = %s(%s, %s)", me, kind_symbol[x->ir.kind], a, b);
+    else snprintf(buf, n, "%s = %s %s %s", me, a, kind_symbol[x->ir.kind], b);
+  }
+}
+
+/* The host's expression of node i, from the inputs and constants
+ * ("(h * minv) * C"), into the n bytes of buf. */
+static void expr(const struct fp3_spatial *s, int i, char *buf, size_t n) {
+  const snode *x = &s->nd[i];
+  const int k = x->ir.kind;
+  if (!is_op(k)) {
+    if (k == FP3_IR_CONST) snprintf(buf, n, "%.9g", (double)fpref_float(x->ir.bits));
+    else if (k == FP3_IR_IN) snprintf(buf, n, "%s", fp3_ir_input_name(s->c, (unsigned)x->ir.id));
+    else snprintf(buf, n, "%s", x->ir.name);
+    return;
+  }
+  char a[128], b[128];
+  int len; /* a long expression is cut at n - 1 characters: it is a comment */
+  expr(s, x->ir.a, a, sizeof a);
+  if (x->ir.b < 0) len = snprintf(buf, n, "%s(%s)", kind_symbol[k], a);
+  else {
+    expr(s, x->ir.b, b, sizeof b);
+    if (k == FP3_IR_MIN || k == FP3_IR_MAX)
+      len = snprintf(buf, n, "%s(%s, %s)", kind_symbol[k], a, b);
+    else len = snprintf(buf, n, "(%s %s %s)", a, kind_symbol[k], b);
+  }
+  if (len >= (int)n && n > 4) memcpy(buf + n - 4, "...", 4);
+}
+
+/* Mark node i read d cycles after it is ready. */
+static int need(struct fp3_spatial *s, int i, unsigned d) {
+  snode *x = &s->nd[i];
+  if (x->src == SRC_CONST || d == 0) return 0;
+  if (d > x->delay) {
+    unsigned char *t = realloc(x->tap, (size_t)d + 1);
+    if (!t) return -1;
+    memset(t + (x->delay ? x->delay + 1 : 0), 0, (size_t)d + 1 - (x->delay ? x->delay + 1 : 0));
+    x->tap = t;
+    x->delay = d;
+  }
+  x->tap[d] = 1;
+  return 0;
+}
+
+/* The schedule: sources, ASAP cycles, the pipeline's latency, the taps. */
+static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
+  fp3_compiled *c = s->c;
+  const unsigned carried = s->ncarried;
+  unsigned char *used = calloc(s->nn ? s->nn : 1, 1);
+  if (!used) goto oom;
+  for (unsigned i = 0; i < s->nn; i++) {
+    snode *x = &s->nd[i];
+    fp3_ir_node_get(c, i, &x->ir);
+    snprintf(x->sig, sizeof x->sig, "n%u", i);
+    if (x->ir.name[0]) {
+      char id[40];
+      ident(id, sizeof id, x->ir.name);
+      snprintf(x->sig, sizeof x->sig, "n%u_%s", i, id);
+    }
+  }
+  /* what the pipeline reads: the live operations' operands (a host
+   * value's operands are the host's) and the next carried values */
+  for (unsigned i = 0; i < s->nn; i++) {
+    const fp3_ir_node *x = &s->nd[i].ir;
+    if (!is_op(x->kind) || !x->live || x->host) continue;
+    used[i] = 1;
+    used[x->a] = 1;
+    if (x->b >= 0) used[x->b] = 1;
+  }
+  for (unsigned w = 0; w < carried; w++) used[fp3_ir_carried_next(c, w)] = 1;
+  for (unsigned i = 0; i < s->nn; i++) {
+    snode *x = &s->nd[i];
+    if (!used[i]) continue;
+    if (x->ir.kind == FP3_IR_CONST) x->src = SRC_CONST;
+    else if (x->ir.kind == FP3_IR_STATE) x->src = SRC_STATE;
+    else if (x->ir.kind == FP3_IR_IN || x->ir.host) {
+      x->src = SRC_INPUT;
+      x->slot = (int)s->ninput;
+      s->input_node[s->ninput++] = (int)i;
+    } else {
+      /* operands come first in the IR: their cycles are known */
+      unsigned t = 0;
+      const snode *a = &s->nd[x->ir.a], *b = x->ir.b >= 0 ? &s->nd[x->ir.b] : NULL;
+      if (a->src != SRC_CONST && a->ready > t) t = a->ready;
+      if (b && b->src != SRC_CONST && b->ready > t) t = b->ready;
+      x->src = SRC_CORE;
+      x->start = t;
+      x->ready = t + core_latency(&s->o, x->ir.kind);
+      s->st.cores[x->ir.kind]++;
+      s->st.ncores++;
+    }
+  }
+  if (s->ninput == 0) {
+    snprintf(msg, n, "model %s: the step reads no input (nothing to pipeline)", s->m->name);
+    free(used);
+    return -1;
+  }
+  unsigned L = 1;
+  for (unsigned w = 0; w < carried; w++) {
+    const snode *y = &s->nd[fp3_ir_carried_next(c, w)];
+    if (y->src != SRC_CONST && y->ready > L) L = y->ready;
+  }
+  s->st.latency = L;
+  /* every reader's tap: an operand read when its core starts, a carried
+   * value at L */
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (x->src != SRC_CORE) continue;
+    if (need(s, x->ir.a, x->start - s->nd[x->ir.a].ready)) goto oom;
+    if (x->ir.b >= 0 && need(s, x->ir.b, x->start - s->nd[x->ir.b].ready)) goto oom;
+  }
+  for (unsigned w = 0; w < carried; w++) {
+    int y = (int)fp3_ir_carried_next(c, w);
+    if (need(s, y, L - s->nd[y].ready)) goto oom;
+  }
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (!x->delay) continue;
+    s->st.delay_lines++;
+    s->st.delay_stages += x->delay;
+    if (x->delay > s->st.longest_delay) s->st.longest_delay = x->delay;
+  }
+  s->st.delay_ffs = 32 * s->st.delay_stages;
+  s->st.inputs = s->ninput;
+  s->st.carried = carried;
+  free(used);
+  return 0;
+oom:
+  free(used);
+  snprintf(msg, n, "out of memory");
+  return -1;
+}
+
+/* The module's text. */
+static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
+  fp3_compiled *c = s->c;
+  const fp3_spatial_stats *st = &s->st;
+  const unsigned carried = s->ncarried;
+  char buf[256], a[96], b[96];
+  fp3_strbuf_printf(t,
+      "// %s.v -- generated by `fp3 spatial` (sw/compiler/spatial.c) from\n"
+      "// model %s (%s), integrator %s.\n"
+      "//\n"
+      "// One integration step of one object per cycle (initiation interval 1):\n"
+      "// the operations of the compiled program's golden model\n"
+      "// (fp3_compiled_model_step), each on its own core, so the new carried\n"
+      "// values equal it bit for bit.  Loop invariants are computed for every\n"
+      "// object (its inputs travel with it): the step is a DAG with no state.\n"
+      "//\n"
+      "// Schedule: as soon as possible; inputs in cycle 0, an operation when its\n"
+      "// last operand is ready, its result `LATENCY` of its core later.\n"
+      "// Balancing: each value has one delay line (fp_pipe segments between\n"
+      "// taps) as long as its latest reader needs; a reader in cycle s of a value\n"
+      "// ready in cycle r taps it at s - r stages.  Delay lines are flip-flops.\n"
+      "//\n"
+      "// Latency: %u cycles.  Cores: %u (",
+      s->module, s->m->name, s->m->file, s->integ, st->latency, st->ncores);
+  int first = 1;
+  for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
+    if (st->cores[k]) {
+      fp3_strbuf_printf(t, "%s%u %s", first ? "" : ", ", st->cores[k], kind_name[k]);
+      first = 0;
+    }
+  fp3_strbuf_printf(t, ").\n// Delay lines: %u, %u stages, %u flip-flops (longest %u).\n"
+                       "// Cores: %s, %s.\n//\n",
+                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay,
+                    s->o.rtz ? "round toward zero" : "round to nearest even",
+                    s->o.ftz ? "subnormals flushed to zero" : "subnormals supported");
+  fp3_strbuf_printf(t, "// Ports:\n"
+                       "//   valid_i  an object is presented this cycle\n"
+                       "//   in_i     its inputs, 32 bits each (word k at [32k +: 32]):\n");
+  for (unsigned k = 0; k < s->ninput; k++) {
+    const snode *x = &s->nd[s->input_node[k]];
+    if (x->ir.kind == FP3_IR_IN)
+      fp3_strbuf_printf(t, "//              %2u  %s\n", k, fp3_ir_input_name(c, (unsigned)x->ir.id));
+    else {
+      label(s, s->input_node[k], a, sizeof a);
+      expr(s, s->input_node[k], buf, sizeof buf);
+      fp3_strbuf_printf(t, "//              %2u  %s = %s  (the host's, in binary32)\n", k, a, buf);
+    }
+  }
+  fp3_strbuf_printf(t, "//   y_i      its carried values (word w):\n");
+  for (unsigned w = 0; w < carried; w++)
+    fp3_strbuf_printf(t, "//              %2u  %s\n", w, fp3_ir_carried_name(c, w));
+  fp3_strbuf_printf(t, "//   valid_o  LATENCY cycles after valid_i: y_o holds that object's\n"
+                       "//   y_o      new carried values, in y_i's order\n"
+                       "`default_nettype none\n\n"
+                       "module %s (\n"
+                       "  input  wire          clk_i,\n"
+                       "  input  wire          rst_i,\n"
+                       "  input  wire          valid_i,\n"
+                       "  input  wire [%u:0] in_i,\n"
+                       "  input  wire [%u:0] y_i,\n"
+                       "  output wire          valid_o,\n"
+                       "  output wire [%u:0] y_o\n"
+                       ");\n\n"
+                       "  localparam integer LATENCY = %u;\n"
+                       "  localparam integer ROUND   = %d;\n"
+                       "  localparam integer FTZ     = %d;\n\n",
+                    s->module, 32 * s->ninput - 1, 32 * carried - 1, 32 * carried - 1,
+                    st->latency, s->o.rtz, s->o.ftz);
+  /* inputs */
+  fp3_strbuf_printf(t, "  // ---- inputs (cycle 0) ----\n");
+  for (unsigned k = 0; k < s->ninput; k++) {
+    const snode *x = &s->nd[s->input_node[k]];
+    fp3_strbuf_printf(t, "  wire [31:0] %s = in_i[%u +: 32];\n", x->sig, 32 * k);
+  }
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (x->src == SRC_STATE)
+      fp3_strbuf_printf(t, "  wire [31:0] %s = y_i[%u +: 32];\n", x->sig, 32 * (unsigned)x->ir.id);
+  }
+  /* wires of the cores' results and the delay taps, before their use */
+  fp3_strbuf_printf(t, "\n  // ---- core results and delay taps ----\n");
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (x->src == SRC_CORE)
+      fp3_strbuf_printf(t, "  wire [31:0] %s;\n  wire        %s_valid;\n  wire [4:0]  %s_flags;\n",
+                        x->sig, x->sig, x->sig);
+    for (unsigned d = 1; d <= x->delay; d++)
+      if (x->tap[d])
+        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n  wire        unused_%s_d%u;\n", x->sig, d,
+                          x->sig, d);
+  }
+  /* cores */
+  fp3_strbuf_printf(t, "\n  // ---- cores, in the IR's order ----\n");
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (x->src != SRC_CORE) continue;
+    const int k = x->ir.kind;
+    const snode *pa = &s->nd[x->ir.a];
+    operand(s, x->ir.a, x->start - pa->ready, a, sizeof a);
+    if (x->ir.b >= 0) operand(s, x->ir.b, x->start - s->nd[x->ir.b].ready, b, sizeof b);
+    else snprintf(b, sizeof b, "32'h00000000");
+    describe(s, (int)i, buf, sizeof buf);
+    fp3_strbuf_printf(t, "\n  // IR node %u: %s  (%s%s; cycles %u -> %u)\n", i, buf, kind_name[k],
+                      x->ir.inv ? ", loop invariant" : "", x->start, x->ready);
+    const unsigned lat = core_latency(&s->o, k);
+    switch (k) {
+    case FP3_IR_ADD:
+    case FP3_IR_SUB:
+      fp3_strbuf_printf(t, "  fp_add #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1), .sub_i(1'b%d),\n"
+                           "    .a_i(%s), .b_i(%s),\n",
+                        lat, x->sig, k == FP3_IR_SUB, a, b);
+      break;
+    case FP3_IR_MUL:
+    case FP3_IR_DIV:
+      fp3_strbuf_printf(t, "  %s #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1),\n"
+                           "    .a_i(%s), .b_i(%s),\n",
+                        k == FP3_IR_MUL ? "fp_mul" : "fp_div", lat, x->sig, a, b);
+      break;
+    case FP3_IR_SQRT:
+      fp3_strbuf_printf(t, "  fp_sqrt #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1),\n"
+                           "    .a_i(%s),\n",
+                        lat, x->sig, a);
+      break;
+    default: /* fp_sign: op 0 abs, 1 neg, 2 min, 3 max */
+      fp3_strbuf_printf(t, "  fp_sign #(.LATENCY(%u)) u_%s (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1), .op_i(2'd%d),\n"
+                           "    .a_i(%s), .b_i(%s),\n",
+                        lat, x->sig, k - FP3_IR_ABS, a, b);
+      break;
+    }
+    fp3_strbuf_printf(t, "    .valid_o(%s_valid), .y_o(%s), .flags_o(%s_flags)\n  );\n", x->sig,
+                      x->sig, x->sig);
+  }
+  /* delay lines */
+  fp3_strbuf_printf(t, "\n  // ---- delay lines: one per value, tapped where its readers need it ----\n");
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (!x->delay) continue;
+    label(s, (int)i, a, sizeof a);
+    fp3_strbuf_printf(t, "  // %s: ready in cycle %u, read until cycle %u\n", a, x->ready,
+                      x->ready + x->delay);
+    unsigned prev = 0;
+    for (unsigned d = 1; d <= x->delay; d++) {
+      if (!x->tap[d]) continue;
+      operand(s, (int)i, prev, b, sizeof b);
+      fp3_strbuf_printf(t, "  fp_pipe #(.WIDTH(32), .DEPTH(%u)) u_%s_d%u (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b0), .data_i(%s),\n"
+                           "    .valid_o(unused_%s_d%u), .data_o(%s_d%u)\n  );\n",
+                        d - prev, x->sig, d, b, x->sig, d, x->sig, d);
+      prev = d;
+    }
+  }
+  /* outputs */
+  fp3_strbuf_printf(t, "\n  // ---- outputs (cycle LATENCY) ----\n");
+  for (unsigned w = 0; w < carried; w++) {
+    int y = (int)fp3_ir_carried_next(c, w);
+    operand(s, y, st->latency - s->nd[y].ready, a, sizeof a);
+    fp3_strbuf_printf(t, "  assign y_o[%u +: 32] = %s;  // %s\n", 32 * w, a,
+                      fp3_ir_carried_name(c, w));
+  }
+  fp3_strbuf_printf(t, "\n  // The valid bit travels beside the objects.\n"
+                       "  wire unused_valid_data;\n"
+                       "  fp_pipe #(.WIDTH(1), .DEPTH(LATENCY)) u_valid (\n"
+                       "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .data_i(1'b0),\n"
+                       "    .valid_o(valid_o), .data_o(unused_valid_data)\n  );\n");
+  /* the cores' own valid bits and flags are not used: exception flags
+   * are not reported by this module (the delay lines' valid bits, wires
+   * named unused_*, neither) */
+  fp3_strbuf_printf(t, "\n  // Not used: the cores' valid bits and exception flags (the module\n"
+                       "  // reports no flags) and, in the unused_* wires above, the delay\n"
+                       "  // lines' valid bits.\n");
+  fp3_strbuf_printf(t, "  wire unused_core_outputs = &{1'b0");
+  for (unsigned i = 0; i < s->nn; i++)
+    if (s->nd[i].src == SRC_CORE)
+      fp3_strbuf_printf(t, ",\n    %s_valid, %s_flags", s->nd[i].sig, s->nd[i].sig);
+  fp3_strbuf_printf(t, ",\n    1'b0};\n\nendmodule\n\n`default_nettype wire\n");
+}
+
+static void make_report(struct fp3_spatial *s, fp3_strbuf *t) {
+  const fp3_spatial_stats *st = &s->st;
+  fp3_strbuf_printf(t, "module: %s\n", s->module);
+  fp3_strbuf_printf(t, "latency: %u cycles (initiation interval 1)\n", st->latency);
+  fp3_strbuf_printf(t, "inputs: %u words per object; carried: %u\n", st->inputs, st->carried);
+  fp3_strbuf_printf(t, "cores: %u", st->ncores);
+  for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
+    if (st->cores[k]) fp3_strbuf_printf(t, ", %s %u", kind_name[k], st->cores[k]);
+  fp3_strbuf_printf(t, "\ndelay lines: %u values, %u stages, %u flip-flops (longest %u stages)\n",
+                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay);
+  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u, div/sqrt %u, sign %u; %s%s\n",
+                    s->o.add_latency, s->o.mul_latency, s->o.div_latency, s->o.sign_latency,
+                    s->o.rtz ? "rtz" : "rne", s->o.ftz ? ", ftz" : "");
+}
+
+int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
+                      const fp3_spatial_opts *o, fp3_spatial **out, char *msg, size_t n) {
+  *out = NULL;
+  if (o->add_latency < 1 || o->mul_latency < 1 || o->div_latency < 1 || o->sign_latency < 1 ||
+      o->add_latency > 64 || o->mul_latency > 64 || o->div_latency > 64 || o->sign_latency > 3) {
+    snprintf(msg, n, "core latencies must be 1 to 64 (fp_sign: 1 to 3)");
+    return -1;
+  }
+  struct fp3_spatial *s = calloc(1, sizeof *s);
+  if (!s) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  s->c = c;
+  s->m = m;
+  s->o = *o;
+  snprintf(s->integ, sizeof s->integ, "%s", integ);
+  s->nn = fp3_ir_nodes(c);
+  s->ncarried = fp3_compiled_carried(c);
+  char mid[40], iid[20];
+  ident(mid, sizeof mid, m->name);
+  ident(iid, sizeof iid, integ);
+  snprintf(s->module, sizeof s->module, "fp3_spatial_%s_%s", mid, iid);
+  s->nd = calloc(s->nn ? s->nn : 1, sizeof *s->nd);
+  s->input_node = calloc(s->nn ? s->nn : 1, sizeof *s->input_node);
+  if (!s->nd || !s->input_node) {
+    snprintf(msg, n, "out of memory");
+    fp3_spatial_free(s);
+    return -1;
+  }
+  if (schedule(s, msg, n)) {
+    fp3_spatial_free(s);
+    return -1;
+  }
+  fp3_strbuf t = {0}, r = {0};
+  emit(s, &t);
+  make_report(s, &r);
+  if (t.oom || r.oom) {
+    free(t.s);
+    free(r.s);
+    snprintf(msg, n, "out of memory");
+    fp3_spatial_free(s);
+    return -1;
+  }
+  s->verilog = t.s;
+  s->report = r.s;
+  *out = s;
+  return 0;
+}
+
+void fp3_spatial_free(fp3_spatial *s) {
+  if (!s) return;
+  for (unsigned i = 0; s->nd && i < s->nn; i++) free(s->nd[i].tap);
+  free(s->nd);
+  free(s->input_node);
+  free(s->verilog);
+  free(s->report);
+  free(s);
+}
+
+const char *fp3_spatial_module(const fp3_spatial *s) { return s->module; }
+const char *fp3_spatial_verilog(const fp3_spatial *s) { return s->verilog; }
+const char *fp3_spatial_report(const fp3_spatial *s) { return s->report; }
+const fp3_spatial_stats *fp3_spatial_stats_of(const fp3_spatial *s) { return &s->st; }
+
+/* xorshift64 (Marsaglia), as a factor in [0.75, 1.25]. */
+static float factor(uint64_t *x) {
+  *x ^= *x << 13;
+  *x ^= *x >> 7;
+  *x ^= *x << 17;
+  return 0.75f + 0.5f * (float)((double)(*x >> 11) / 9007199254740992.0);
+}
+
+int fp3_spatial_vectors(fp3_spatial *s, size_t nobj, unsigned steps, uint64_t seed,
+                        char **text, char *msg, size_t n) {
+  *text = NULL;
+  const fp3_model *m = s->m;
+  fp3_compiled *c = s->c;
+  const unsigned nc = s->ncarried;
+  fpref_mode mode = {s->o.rtz ? FPREF_RTZ : FPREF_RNE, s->o.ftz};
+  fpenv_saved saved;
+  if (fpenv_enter(mode, &saved)) {
+    snprintf(msg, n, "this host cannot compute in the cores' rounding (%s%s)",
+             fpenv_round_name(mode), s->o.ftz ? " ftz" : "");
+    return -1;
+  }
+  fp3_strbuf t = {0};
+  float in[FP3_MODEL_MAX_VARS], y0[FP3_MODEL_MAX_VARS], yc[2 * FP3_MODEL_MAX_VARS];
+  unsigned reg[4 * FP3_MODEL_MAX_VARS + 1024];
+  uint32_t val[4 * FP3_MODEL_MAX_VARS + 1024];
+  uint64_t x = seed ? seed : 1;
+  char *objects = NULL, *trace = NULL;
+  fp3_strbuf ob = {0}, tr = {0};
+  float *state = calloc(nobj * nc + 1, sizeof *state);
+  float *params = calloc(nobj * m->nparam + 1, sizeof *params);
+  if (!state || !params) goto oom;
+  fp3_strbuf_printf(&t, "fp3-spatial-vectors %zu %u %u %u %u\n", nobj, steps, s->ninput, nc,
+                    s->st.latency);
+  for (size_t o = 0; o < nobj; o++) {
+    for (unsigned k = 0; k < m->nparam; k++) {
+      in[k] = m->param_has_def[k] ? m->param_def[k] : 0.0f;
+      if (o > 0 && k > 0) in[k] *= factor(&x);
+    }
+    for (unsigned k = 0; k < m->nstate; k++) {
+      y0[k] = m->state_has_def[k] ? m->state_def[k] : 0.0f;
+      if (o > 0) y0[k] *= factor(&x);
+    }
+    fp3_compiled_model_start(c, in, y0, reg, val, sizeof reg / sizeof reg[0]);
+    for (unsigned k = 0; k < s->ninput; k++)
+      fp3_strbuf_printf(&ob, "%08X ", (unsigned)fpref_bits(fp3_ir_value(c, (unsigned)s->input_node[k])));
+    /* the initial carried values, as the start computed them */
+    for (unsigned i = 0; i < s->nn; i++)
+      if (s->nd[i].ir.kind == FP3_IR_STATE) yc[s->nd[i].ir.id] = fp3_ir_value(c, i);
+    for (unsigned w = 0; w < nc; w++) {
+      /* a carried value no operation reads has no STATE node: its start */
+      int has = 0;
+      for (unsigned i = 0; i < s->nn; i++)
+        if (s->nd[i].ir.kind == FP3_IR_STATE && (unsigned)s->nd[i].ir.id == w) has = 1;
+      if (!has) yc[w] = w < m->nstate ? y0[w] : 0.0f;
+      fp3_strbuf_printf(&ob, "%s%08X", w ? " " : "", (unsigned)fpref_bits(yc[w]));
+      state[o * nc + w] = yc[w];
+    }
+    fp3_strbuf_printf(&ob, "\n");
+    memcpy(params + o * m->nparam, in, m->nparam * sizeof *in);
+  }
+  for (unsigned st = 0; st < steps; st++)
+    for (size_t o = 0; o < nobj; o++) {
+      float next[2 * FP3_MODEL_MAX_VARS];
+      fp3_compiled_model_step_from(c, params + o * m->nparam, state + o * nc, next);
+      for (unsigned w = 0; w < nc; w++) {
+        state[o * nc + w] = next[w];
+        fp3_strbuf_printf(&tr, "%s%08X", w ? " " : "", (unsigned)fpref_bits(next[w]));
+      }
+      fp3_strbuf_printf(&tr, "\n");
+    }
+  fpenv_leave(&saved);
+  objects = ob.s;
+  trace = tr.s;
+  if (t.oom || ob.oom || tr.oom) goto oom_left;
+  fp3_strbuf_printf(&t, "%s%s", objects ? objects : "", trace ? trace : "");
+  free(objects);
+  free(trace);
+  free(state);
+  free(params);
+  if (t.oom) {
+    free(t.s);
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  *text = t.s;
+  return 0;
+oom:
+  fpenv_leave(&saved);
+  objects = ob.s;
+  trace = tr.s;
+oom_left:
+  free(objects);
+  free(trace);
+  free(t.s);
+  free(state);
+  free(params);
+  snprintf(msg, n, "out of memory");
+  return -1;
+}

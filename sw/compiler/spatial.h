@@ -1,0 +1,104 @@
+/*
+ * spatial.h -- the spatial back end (`fp3 spatial`, docs/spatial.md): a
+ * compiled model's integration step (compile.h, its IR) as one fully
+ * pipelined Verilog module that takes one object per cycle.
+ *
+ * Every live operation of the IR gets its own core (rtl/fp_add.v for add
+ * and sub, fp_mul, fp_div, fp_sqrt, fp_sign for abs, neg, min and max),
+ * so the module computes exactly the operations of the golden model
+ * fp3_compiled_model_step, and its results equal it bit for bit.  The
+ * loop invariants the processor computes once in its prologue are
+ * computed again for every object and step here (they are a function of
+ * the object's inputs, which travel with it), so the step is a DAG with
+ * no state of its own.
+ *
+ * Schedule: as soon as possible.  A module input (an input of the
+ * program, a value the host computes, a carried value) is available in
+ * cycle 0, a constant in every cycle; an operation starts when its last
+ * operand is available and its result is available `latency` cycles
+ * later (the core's LATENCY).  The pipeline's latency L is the latest
+ * result's cycle (at least 1); every carried value leaves at L.
+ *
+ * Balancing: a value available in cycle t and read in cycle s > t passes
+ * s - t register stages.  Each value has one delay line, as long as its
+ * latest reader needs, and every reader taps it where it needs it (the
+ * line is built from rtl/fp_pipe.v segments between the taps), so the
+ * flip-flops of a value are 32 x (its longest delay).  This slice builds
+ * every delay line from flip-flops; lines longer than a few cycles
+ * belong in distributed or block RAM (docs/spatial.md, not done yet).
+ */
+#ifndef FP3_SPATIAL_H
+#define FP3_SPATIAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "compile.h"
+#include "model.h"
+
+/* The cores' configuration. */
+typedef struct fp3_spatial_opts {
+  unsigned add_latency;  /* fp_add LATENCY (add, sub)                    */
+  unsigned mul_latency;  /* fp_mul LATENCY                               */
+  unsigned div_latency;  /* fp_div and fp_sqrt LATENCY                   */
+  unsigned sign_latency; /* fp_sign LATENCY (abs, neg, min, max)         */
+  int rtz;               /* 1: every core rounds toward zero, 0: RNE     */
+  int ftz;               /* 1: flush-to-zero cores (FTZ = 1)             */
+} fp3_spatial_opts;
+
+/* The latencies of the processor's default build (fp3_compile_defaults),
+ * fp_sign 1, RNE, subnormals supported. */
+void fp3_spatial_defaults(fp3_spatial_opts *o);
+
+/* What a generated pipeline holds. */
+typedef struct fp3_spatial_stats {
+  unsigned latency;              /* L: cycles from an object's inputs to
+                                    its new carried values              */
+  unsigned cores[FP3_IR_KINDS];  /* core instances per operation kind    */
+  unsigned ncores;               /* all of them                          */
+  unsigned inputs;               /* 32-bit inputs per object (in_i)      */
+  unsigned carried;              /* carried values per object (y_i, y_o) */
+  unsigned delay_lines;          /* values with a delay line             */
+  unsigned delay_stages;         /* their register stages, summed        */
+  unsigned delay_ffs;            /* their flip-flops: 32 per stage       */
+  unsigned longest_delay;        /* the longest delay line, stages       */
+} fp3_spatial_stats;
+
+typedef struct fp3_spatial fp3_spatial;
+
+/* Schedule compiled model c (of model m, integrator `integ`, as
+ * fp3_compile_model or fp3_compile_model_ir made it) for the cores of o,
+ * and write its module.
+ * c must outlive the result.  Returns 0 and *out, or -1 with a message
+ * (latencies out of range, a model with no input, out of memory). */
+int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
+                      const fp3_spatial_opts *o, fp3_spatial **out, char *msg, size_t n);
+
+void fp3_spatial_free(fp3_spatial *s);
+
+/* The Verilog module's name (fp3_spatial_MODEL_INTEGRATOR) and text
+ * (one module; it instantiates rtl/fp_*.v and rtl/fp_pipe.v). */
+const char *fp3_spatial_module(const fp3_spatial *s);
+const char *fp3_spatial_verilog(const fp3_spatial *s);
+
+const fp3_spatial_stats *fp3_spatial_stats_of(const fp3_spatial *s);
+
+/* The report: latency, cores by kind, delay lines and flip-flops, one
+ * "name: value" line each (NUL-terminated, owned by s). */
+const char *fp3_spatial_report(const fp3_spatial *s);
+
+/* Test vectors for the module (text, malloc'd into *text): `nobj`
+ * objects, object 0 with the model's default params and initial state,
+ * each other non-h value scaled by its own factor in [0.75, 1.25] from
+ * xorshift64 seeded with `seed`; each object's module inputs (in_i's
+ * words, as fp3_compiled_model_start computes them) and initial carried
+ * values, then its carried values after each of `steps` integrations of
+ * the golden model (fp3_compiled_model_step), computed in the cores'
+ * rounding (fpenv).  Format: a line "fp3-spatial-vectors OBJECTS STEPS
+ * INPUTS CARRIED LATENCY", then per object a line of INPUTS + CARRIED hex
+ * words, then per step and object a line of CARRIED hex words.  0, or -1
+ * with a message (a rounding mode the host cannot run). */
+int fp3_spatial_vectors(fp3_spatial *s, size_t nobj, unsigned steps, uint64_t seed,
+                        char **text, char *msg, size_t n);
+
+#endif /* FP3_SPATIAL_H */

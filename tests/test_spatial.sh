@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# test_spatial.sh -- `fp3 spatial` (sw/compiler/spatial.h, docs/spatial.md):
+# the generated pipeline of each case below, Verilated with the harness
+# sim/spatial_tb.cpp, streams objects through it step after step, each
+# object's new state fed back as its next input, and every object's
+# carried values after every step must equal the golden model's
+# (fp3_compiled_model_step, the vectors `fp3 spatial --vectors` writes) bit
+# for bit: on 1 object (every step a lone object and LATENCY - 1 bubbles)
+# and on more objects than the latency (one object every cycle).  The
+# generated module must be `verilator --lint-only -Wall` clean, generate
+# the same text twice, and bad input must exit 2 leaving no file.
+#
+#   tests/test_spatial.sh [--all]   (--all: every shipped model with every
+#                                    integrator that applies to it)
+#
+# Runs from anywhere; the CLI is $FP3_BIN, else build/fp3 of this checkout.
+# The Verilated runtime comes from build/verilated (make builds it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+FP3=${FP3_BIN:-$PWD/build/fp3}
+VERILATOR=${VERILATOR:-verilator}
+VINC=$($VERILATOR --getenv VERILATOR_ROOT)/include
+RUNTIME="build/verilated/verilated.o build/verilated/verilated_threads.o"
+for f in "$FP3" $RUNTIME; do
+  [ -e "$f" ] || { echo "FAIL: $f not built (make $f)"; exit 1; }
+done
+tmp=$(mktemp -d /tmp/fp3_test_spatial.XXXXXX); trap 'rm -rf "$tmp"' EXIT
+fail=0
+STEPS=3
+
+# build_tb MODULE FILE.v OBJDIR EXE: the harness on a generated module.  The
+# model is one translation unit (VM_PARALLEL_BUILDS=0) and unoptimised:
+# the build, not the run, is what takes time here.  Its log: OBJDIR.log.
+build_tb() {
+  { nice $VERILATOR --cc --x-assign fast --x-initial fast --noassert -Irtl -y rtl \
+      --top-module "$1" --prefix Vspatial --Mdir "$3" "$2" &&
+    nice make -s -C "$3" -f Vspatial.mk VM_PARALLEL_BUILDS=0 OPT_FAST=-O0 OPT_SLOW=-O0 \
+      Vspatial__ALL.a &&
+    nice g++ -O1 -std=c++17 -faligned-new -I"$VINC" -I"$VINC/vltstd" -I"$3" \
+      sim/spatial_tb.cpp "$3/Vspatial__ALL.a" $RUNTIME -pthread -latomic -o "$4"; } \
+    >"$3.log" 2>&1 || { tail -20 "$3.log"; return 1; }
+}
+
+# case name, model, fp3 spatial options
+cases=(
+  "ship-folded    models/ship.fp3m       --integrator rk4se"
+  "ship-literal   models/ship.fp3m       --integrator rk4se --literal"
+  "spring         models/spring.fp3m     --integrator rk4"
+  "oscillator     models/oscillator.fp3m --integrator rk4"
+  "projectile     models/projectile.fp3m --integrator rk4"
+  "spring-rtz-ftz models/spring.fp3m     --integrator rk4 --round rtz --ftz"
+)
+# --all: every shipped model with every integrator that applies to it
+# (folded; about 10 minutes), instead of the cases above
+all=0
+if [ "${1:-}" = --all ]; then
+  all=1
+  cases=()
+  for m in models/*.fp3m; do
+    for i in euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp; do
+      cases+=("$(basename "$m" .fp3m)-$i $m --integrator $i")
+    done
+  done
+fi
+for c in "${cases[@]}"; do
+  read -r name model opts <<<"$c"
+  d="$tmp/$name"; mkdir -p "$d"
+  # shellcheck disable=SC2086
+  if ! "$FP3" spatial "$model" $opts -o "$d/gen" 2>"$d.log"; then
+    if [ "$all" = 1 ] && grep -q "integrator .* needs" "$d.log"; then
+      echo "SKIP: $name: $(head -1 "$d.log" | sed 's/^fp3 spatial: [^:]*: //')"; continue
+    fi
+    cat "$d.log"; echo "FAIL: $name: fp3 spatial"; fail=1; continue
+  fi
+  lat=$(sed -n 's/^latency: \([0-9]*\) cycles.*/\1/p' "$d/gen/report.txt")
+  v=$(ls "$d/gen"/*.v); mod=$(basename "$v" .v)
+  # vectors: 1 object, and more objects than the latency
+  many=$((lat + 17))
+  # shellcheck disable=SC2086
+  "$FP3" spatial "$model" $opts -o "$d/one" --vectors 1 --steps $STEPS 2>/dev/null
+  # shellcheck disable=SC2086
+  "$FP3" spatial "$model" $opts -o "$d/many" --vectors $many --steps $STEPS --seed 7 2>/dev/null
+  cmp -s "$v" "$d/one/$mod.v" && cmp -s "$v" "$d/many/$mod.v" || {
+    echo "FAIL: $name: two runs generate different Verilog"; fail=1; }
+  if ! $VERILATOR --lint-only -Wall -Irtl -y rtl --top-module "$mod" "$v" >"$d.lint" 2>&1; then
+    head -20 "$d.lint"; echo "FAIL: $name: verilator --lint-only -Wall"; fail=1; continue
+  fi
+  if ! build_tb "$mod" "$v" "$d/obj" "$d/tb"; then
+    echo "FAIL: $name: Verilator build"; fail=1; continue
+  fi
+  for set in one many; do
+    if out=$("$d/tb" "$d/$set/vectors.txt" 2>&1); then
+      echo "PASS: $name $set ($(sed -n 's/^cores: \([0-9]*\),.*/\1 cores/p' "$d/gen/report.txt" | head -1), latency $lat): ${out#PASS: }"
+    else
+      echo "$out"; echo "FAIL: $name: $set"; fail=1
+    fi
+  done
+  if [ "$all" = 1 ]; then rm -rf "$d/obj"; fi
+  # the harness bites: the ship's module with one delay stage removed (the
+  # first data delay line deeper than 1 made one stage shorter) must fail
+  if [ "$name" = ship-folded ]; then
+    python3 - "$v" "$d/short.v" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+for m in re.finditer(r"fp_pipe #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\)\)", s):
+    if int(m.group(1)) > 1:
+        s = s[:m.start(1)] + str(int(m.group(1)) - 1) + s[m.end(1):]
+        break
+else:
+    sys.exit("no delay line to shorten")
+open(sys.argv[2], "w").write(s)
+PY
+    if build_tb "$mod" "$d/short.v" "$d/objs" "$d/tbs"; then
+      for set in one many; do
+        if out=$("$d/tbs" "$d/$set/vectors.txt" 2>&1); then
+          echo "FAIL: $name with a delay stage removed passes ($set)"; fail=1
+        else
+          echo "PASS: $name with a delay stage removed fails ($set): $(echo "$out" | tail -1)"
+        fi
+      done
+    else
+      echo "FAIL: $name: Verilator build of the shortened module"; fail=1
+    fi
+  fi
+done
+
+# the usage
+if "$FP3" spatial --help | grep -q "^usage: fp3 spatial MODEL.fp3m -o DIR"; then
+  echo "PASS: fp3 spatial --help"
+else
+  echo "FAIL: fp3 spatial --help"; fail=1
+fi
+
+# bad input: exit 2, nothing written
+bad() {
+  local what=$1; shift
+  local rc=0
+  "$FP3" spatial "$@" -o "$tmp/bad" >/dev/null 2>"$tmp/bad.log" || rc=$?
+  if [ "$rc" != 2 ] || [ -e "$tmp/bad" ] || ! [ -s "$tmp/bad.log" ]; then
+    echo "FAIL: $what: exit $rc (want 2 with a message and no files)"; fail=1
+  else
+    echo "PASS: $what: exit 2, '$(head -1 "$tmp/bad.log")', no files"
+  fi
+}
+bad "unknown integrator" models/ship.fp3m --integrator rk5
+bad "bad rounding" models/ship.fp3m --round up
+bad "--steps without --vectors" models/ship.fp3m --steps 3
+bad "missing model" models/no-such-model.fp3m
+bad "rk4se on an unsplit model" models/projectile.fp3m --integrator rk4se
+
+[ "$fail" = 0 ] || exit 1
+echo "PASS: test_spatial"
