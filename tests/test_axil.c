@@ -362,7 +362,6 @@ static void engine_run(fp3_engine *e, const fp3_image *img, const uint32_t *init
 /* programs/ship_rk4.s, bound by name to models/ship.fp3m (its golden
  * model: the literal rk4se); sp->c is freed by ship_free. */
 typedef struct ship_prog {
-  fp3_image img;
   fp3_compiled *c;
   unsigned vreg, sreg; /* the registers of v and s */
 } ship_prog;
@@ -370,18 +369,12 @@ typedef struct ship_prog {
 static void load_ship(ship_prog *sp) {
   static fp3_model m;
   static int loaded;
-  char *errors = NULL, msg[300];
+  char msg[300];
   if (!loaded && fp3_model_load("models/ship.fp3m", &m, msg, sizeof msg)) fail_msg("%s", msg);
   loaded = 1;
-  fp3_image_init(&sp->img);
-  if (fp3_asm_file("programs/ship_rk4.s", &sp->img, &errors) != 0) {
-    fprintf(stderr, "%s", errors ? errors : "");
-    free(errors);
-    fail_msg("programs/ship_rk4.s does not assemble");
-  }
   fp3_compile_opts o;
   fp3_compile_defaults(&o);
-  if (fp3_compile_bind(&m, &sp->img, "programs/ship_rk4.s", &o, &sp->c, msg, sizeof msg))
+  if (fp3_compile_bind_file(&m, "programs/ship_rk4.s", &o, &sp->c, msg, sizeof msg))
     fail_msg("%s", msg);
   sp->vreg = fp3_compiled_state_reg(sp->c, 0);
   sp->sreg = fp3_compiled_state_reg(sp->c, 1);
@@ -415,7 +408,7 @@ static void check_ship(const build *bd, const fp3_ship_params *p, uint32_t steps
                        uint32_t seed) {
   ship_prog sp;
   load_ship(&sp);
-  const fp3_image img = sp.img;
+  const fp3_image img = *fp3_compiled_image(sp.c);
   uint32_t init[MAX_REGS];
   ship_init(&sp, p, init);
 
@@ -477,7 +470,7 @@ static void test_ship_cycles(void **state) {
   (void)state;
   ship_prog sp;
   load_ship(&sp);
-  const fp3_image img = sp.img;
+  const fp3_image img = *fp3_compiled_image(sp.c);
   uint32_t init[MAX_REGS];
   fp3_ship_params p;
   fp3_ship_default(&p);
@@ -876,7 +869,7 @@ static void test_ship_contexts(void **state) {
   const unsigned nscenes = sizeof scenes / sizeof scenes[0];
   ship_prog sp;
   load_ship(&sp);
-  const fp3_image img = sp.img;
+  const fp3_image img = *fp3_compiled_image(sp.c);
   bus b;
   bus_open(&b, *state, 21, RANDOM);
   unsigned nctx = rd_ok(&b, FP3_HR_INFO2) & 0xFFFF, nl = rd_ok(&b, FP3_HR_INFO2) >> 24;

@@ -64,16 +64,12 @@ static fp3_model ship;
 
 /* Program k bound to the ship model, compiled for engine e's build. */
 static fp3_compiled *bind(size_t k, const fp3_engine *e) {
-  fp3_image img;
-  char *errors = NULL, msg[300];
-  fp3_image_init(&img);
-  if (fp3_asm_file(progs[k].file, &img, &errors) != 0) fail_msg("%s", errors ? errors : "");
-  free(errors);
-  assert_string_equal(img.integrator, progs[k].integ);
+  char msg[300];
   fp3_compile_opts o;
   fp3_compile_opts_for(&o, &e->config);
   fp3_compiled *c = NULL;
-  if (fp3_compile_bind(&ship, &img, progs[k].file, &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  if (fp3_compile_bind_file(&ship, progs[k].file, &o, &c, msg, sizeof msg)) fail_msg("%s", msg);
+  assert_string_equal(fp3_compiled_image(c)->integrator, progs[k].integ);
   return c;
 }
 

@@ -1065,16 +1065,15 @@ static const fp3_model *ship_model(void) {
  * v and s after every integration against the model's literal rk4se. */
 static void run_ship(const fp3_ship_params *p, uint32_t steps, const char *what) {
   const fp3_model *m = ship_model();
-  fp3_image img;
-  char *err = NULL, msg[256];
-  assert_int_equal(fp3_asm_file(SHIP, &img, &err), 0);
+  char msg[256];
   fp3_engine *e = fp3_engine_iss_new();
   assert_non_null(e);
   fp3_compile_opts o;
   fp3_compile_opts_for(&o, &e->config);
   fp3_compiled *bound = NULL;
-  if (fp3_compile_bind(m, &img, SHIP, &o, &bound, msg, sizeof msg)) fail_msg("%s", msg);
-  assert_int_equal(fp3_engine_load(e, img.words, img.n), 0);
+  if (fp3_compile_bind_file(m, SHIP, &o, &bound, msg, sizeof msg)) fail_msg("%s", msg);
+  const fp3_image *img = fp3_compiled_image(bound);
+  assert_int_equal(fp3_engine_load(e, img->words, img->n), 0);
   const float in[4] = {p->h, p->T, p->C, p->m};
   float y[4] = {p->v0, p->s0, 0, 0};
   unsigned reg[16];

@@ -136,19 +136,11 @@ static int measure(fp3_engine *e, const char *build, const char *prog_name, fp3_
  * message on stderr. */
 static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled **lit,
                          fp3_compiled **comp) {
-  fp3_image img;
-  char *errs = NULL, msg[512];
-  fp3_image_init(&img);
-  if (fp3_asm_file(SHIP_PROGRAM, &img, &errs)) {
-    fprintf(stderr, "bench_chip: %s: %s\n", SHIP_PROGRAM, errs ? errs : "cannot assemble");
-    free(errs);
-    return -1;
-  }
-  free(errs);
+  char msg[512];
   fp3_compile_opts o;
   fp3_compile_opts_for(&o, &e->config);
   const unsigned char zero[FP3_MODEL_MAX_VARS] = {0}; /* the generated ships use every term */
-  if (fp3_compile_bind(m, &img, SHIP_PROGRAM, &o, lit, msg, sizeof msg) ||
+  if (fp3_compile_bind_file(m, SHIP_PROGRAM, &o, lit, msg, sizeof msg) ||
       fp3_compile_model(m, "rk4se", &o, zero, comp, msg, sizeof msg)) {
     fprintf(stderr, "bench_chip: %s\n", msg);
     return -1;

@@ -1632,6 +1632,29 @@ fail:
   return -1;
 }
 
+int fp3_compile_bind_file(const fp3_model *m, const char *path, const fp3_compile_opts *o,
+                          fp3_compiled **out, char *msg, size_t n) {
+  *out = NULL;
+  fp3_image *img = malloc(sizeof *img);
+  char *errs = NULL;
+  if (!img) {
+    snprintf(msg, n, "out of memory");
+    return -1;
+  }
+  fp3_image_init(img);
+  int rc = fp3_asm_file(path, img, &errs);
+  if (rc) {
+    size_t len = errs ? strcspn(errs, "\n") : 0;
+    snprintf(msg, n, "%.*s", (int)len, errs ? errs : "");
+    if (!len) snprintf(msg, n, "%s: cannot assemble", path);
+  } else {
+    rc = fp3_compile_bind(m, img, path, o, out, msg, n);
+  }
+  free(errs);
+  free(img);
+  return rc;
+}
+
 unsigned fp3_compiled_state_reg(const fp3_compiled *c, unsigned i) {
   return (unsigned)c->state_reg[i];
 }

@@ -232,6 +232,12 @@ int fp3_compile_model_ir(const fp3_model *m, const char *integrator, const fp3_c
 int fp3_compile_bind(const fp3_model *m, const fp3_image *img, const char *program,
                      const fp3_compile_opts *o, fp3_compiled **out, char *msg, size_t n);
 
+/* fp3_compile_bind of the program in file `path`, assembled here
+ * (fp3_asm_file): 0 and *out, or -1 with the assembler's errors ("FILE:LINE:
+ * reason", the first of them) or the binder's message in msg. */
+int fp3_compile_bind_file(const fp3_model *m, const char *path, const fp3_compile_opts *o,
+                          fp3_compiled **out, char *msg, size_t n);
+
 /* Start the golden model of a compiled model for one object: in[] = h and
  * the params (m->nparam values), y0 the initial state; the host values
  * are computed in the caller's FP environment (fpenv_enter for the cores'
