@@ -137,9 +137,7 @@ static int compile_model(const fp3_compile_args *a, unsigned char *zero, size_t 
   fp3_model *m = NULL;
   if (a->scene) {
     fp3_mscene sc;
-    char ship[4096]; /* the model of a ship scene */
-    fp3_find_shipped(FP3_DEFAULT_MODEL, ship, sizeof ship);
-    if (fp3_mscene_read_any(a->scene, ship, &sc, msg, sizeof msg)) {
+    if (fp3_read_scene(a->scene, &sc, msg, sizeof msg)) {
       fprintf(stderr, "fp3 compile: %s\n", msg);
       return EXIT_USAGE;
     }

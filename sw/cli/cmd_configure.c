@@ -329,9 +329,7 @@ static int run_configure(const fp3_configure_args *a) {
   char msg[512];
   fp3_configure_result res;
   fp3_mscene ms;
-  char ship[4096]; /* the model of a ship scene */
-  fp3_find_shipped(FP3_DEFAULT_MODEL, ship, sizeof ship);
-  if (fp3_mscene_read_any(scene, ship, &ms, msg, sizeof msg)) {
+  if (fp3_read_scene(scene, &ms, msg, sizeof msg)) {
     fprintf(stderr, "fp3 configure: %s\n", msg);
     return EXIT_USAGE;
   }

@@ -59,6 +59,12 @@ void fp3_find_shipped(const char *rel, char *path, size_t n) {
     memcpy(path, alt, strlen(alt) + 1);
 }
 
+int fp3_read_scene(const char *path, fp3_mscene *sc, char *msg, size_t n) {
+  char ship[4096];
+  fp3_find_shipped(FP3_DEFAULT_MODEL, ship, sizeof ship);
+  return fp3_mscene_read_any(path, ship, sc, msg, n);
+}
+
 /* 1 if paths a and b name the same file. */
 static int same_file(const char *a, const char *b) {
   struct stat sa, sb;

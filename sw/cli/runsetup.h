@@ -50,6 +50,11 @@ typedef struct fp3_run_setup {
  * folder (build/fp3 -> ../rel) when that is, else rel. */
 void fp3_find_shipped(const char *rel, char *path, size_t n);
 
+/* A scene of any kind (fp3_mscene_read_any): a model scene, or a ship
+ * scene read as a scene of the shipped ship model (FP3_DEFAULT_MODEL, as
+ * fp3_find_shipped finds it).  0 and *sc, or non-zero with msg. */
+int fp3_read_scene(const char *path, fp3_mscene *sc, char *msg, size_t n);
+
 /* The program: a->program, or default_program (NULL: none) when neither
  * --model, a model scene, --integrator nor --literal asks for a compiled
  * one; assembled into s->img, refused when it cannot end. */
