@@ -87,5 +87,5 @@ TEST_SCRIPTS += tests/test_bitstream.sh
 # LiteX's host tools come from the project's virtual environment .venv
 # (scripts/setup.sh); one that was removed is made again.
 test-build: .venv/bin/litex_server
-.venv/bin/litex_server:
-	bash scripts/setup.sh
+.venv/bin/litex_server: | $(SETUP_STAMP)
+	@test -x $@ || bash scripts/setup.sh
