@@ -30,6 +30,8 @@
 //   bit 2  FRAMING     a character's stop bit was low (it was skipped)
 //   bit 3  OVERRUN     a character came while the bridge was still busy
 //                      with the bus or sending read data (it was lost)
+// A bit whose cause comes in the very cycle the status is read is kept
+// for the next read.
 // A read that ends in a bus error returns ERROR_DATA (0xBADC0DE5) instead
 // of the slave's data, and sets BUS_ERROR.  The fault output is high
 // while any bit is set (the board's fault LED).
