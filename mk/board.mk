@@ -84,3 +84,8 @@ export BOARD_SIM_BIN := $(abspath $(BOARD_SIM))
 # tests/test_bitstream.sh: scripts/bitstream.sh's verdict with stand-ins for
 # nextpnr and ecppack (a second).
 TEST_SCRIPTS += tests/test_bitstream.sh
+# LiteX's host tools come from the project's virtual environment .venv
+# (scripts/setup.sh); one that was removed is made again.
+test-build: .venv/bin/litex_server
+.venv/bin/litex_server: | $(SETUP_STAMP)
+	@test -x $@ || bash scripts/setup.sh

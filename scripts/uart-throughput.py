@@ -9,14 +9,18 @@ fixed-address read, cmd 0x04), each read waited for before the next.
 PORT is a serial device or pseudo-terminal (BAUD default 3000000), or
 socket://HOST:PORT (the simulated board's --tcp).  Checks the ID first
 and the bridge's status at the end; exit status 1 on a wrong ID, a short
-answer within 5 s, or a bridge error.
+answer within 5 s, or a bridge error.  Run it with the project's Python,
+.venv/bin/python (pyserial: scripts/setup.sh installs it there).
 """
 import argparse
 import struct
 import sys
 import time
 
-import serial  # pyserial
+try:
+    import serial  # pyserial
+except ImportError:
+    sys.exit("uart-throughput.py: no pyserial: run it with .venv/bin/python (scripts/setup.sh installs pyserial there)")
 
 ID, IMEM_BASE, BRIDGE_STATUS = 0x00E, 0x800, 0x1000
 ID_VALUE = 0x46503301

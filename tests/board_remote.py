@@ -10,12 +10,16 @@ binary32 arithmetic done here.
 Reads the ID register, loads a three-instruction program (r3 = r1 * r2,
 r4 = r3 + r1, endi), writes r1 and r2, runs one integration and reads
 STATUS, STEPS_DONE, r3 and r4.  Exit status 0 when all agree, 1 otherwise.
+Run with the project's Python, .venv/bin/python (litex: scripts/setup.sh).
 """
 import struct
 import sys
 import time
 
-from litex import RemoteClient
+try:
+    from litex import RemoteClient
+except ImportError:
+    sys.exit("board_remote.py: no litex: run it with .venv/bin/python (scripts/setup.sh installs litex there)")
 
 # host registers (word addresses; RemoteClient takes byte addresses)
 CTRL, STATUS, STEPS, STEPS_DONE, ID, CTX, CONTEXTS = 0x000, 0x001, 0x002, 0x003, 0x00E, 0x00F, 0x010

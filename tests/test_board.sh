@@ -30,7 +30,12 @@ SIM=${BOARD_SIM_BIN:-$PWD/build/board-sim/ulx3s/fp3-board-sim}
 for b in "$FP3" "$SIM"; do
   [ -x "$b" ] || { echo "test_board: $b not built (make $b)"; exit 1; }
 done
-command -v litex_server >/dev/null || { echo "test_board: litex_server missing (scripts/setup.sh installs litex)"; exit 1; }
+# LiteX's tools from the project's virtual environment (scripts/setup.sh),
+# never a litex that the system's Python may have
+VENV=$PWD/.venv/bin
+for b in litex_server litex_cli python; do
+  [ -x "$VENV/$b" ] || { echo "test_board: $VENV/$b missing (scripts/setup.sh installs litex into .venv)"; exit 1; }
+done
 T=$(mktemp -d /tmp/fp3_test_board.XXXXXX)
 pids=()
 cleanup() {
@@ -114,21 +119,21 @@ fi
 
 # ---- LiteX's own client: litex_server --uart on the same pty ------------------
 port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')
-litex_server --uart --uart-port "$T/tty" --uart-baudrate 3000000 --bind-port "$port" \
+"$VENV/litex_server" --uart --uart-port "$T/tty" --uart-baudrate 3000000 --bind-port "$port" \
   >"$T/litex.log" 2>&1 &
 lpid=$!; pids+=($lpid)
 for _ in $(seq 100); do
   python3 -c "import socket,sys; socket.create_connection(('127.0.0.1',$port),0.2)" 2>/dev/null && break
   sleep 0.1
 done
-if timeout 60 python3 tests/board_remote.py "$port" >"$T/remote.txt" 2>&1; then
+if timeout 60 "$VENV/python" tests/board_remote.py "$port" >"$T/remote.txt" 2>&1; then
   ok "litex_server + RemoteClient: ID and one integration"; cat "$T/remote.txt"
 else
   bad "litex_server + RemoteClient"; cat "$T/remote.txt" "$T/litex.log"
 fi
 # litex_cli --regs names FP3's registers from a csr.csv of the host-port map
 python3 scripts/board-csr.py sw/isa/fp3_isa.h "$T/csr.csv"
-if (cd "$T" && timeout 60 litex_cli --csr-csv csr.csv --port "$port" --regs) >"$T/regs.txt" 2>&1 &&
+if (cd "$T" && timeout 60 "$VENV/litex_cli" --csr-csv csr.csv --port "$port" --regs) >"$T/regs.txt" 2>&1 &&
    grep -q "^0x00000038 : 0x46503301 id$" "$T/regs.txt" &&
    grep -q "^0x00000044 : 0x01270008 info2$" "$T/regs.txt"; then
   ok "litex_cli --regs with scripts/board-csr.py's csr.csv: $(wc -l < "$T/regs.txt") registers by name"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_formal_mutant.sh -- the proofs can fail.  Six broken copies, each of
+# test_formal_mutant.sh -- the proofs can fail.  Nine broken copies, each of
 # which must FAIL its property set, and scripts/formal.sh must name the
 # counterexample trace (an existing VCD) and the failing assertion's
 # file:line in the repository:
@@ -33,6 +33,15 @@
 #                          than the add/sub core: a move and an add issued
 #                          a cycle apart meet at the port): wb_one_port,
 #                          in2_one_port or clr_one_port in rtl/fp3_regfile.v
+#   uartbone.sby:mutant_len      rtl/fp3_uartbone.v with FP3_MUTANT_UARTBONE_LEN
+#                          (a read frame ends a word short): rd_len_exact
+#   uartbone.sby:mutant_timeout  ... FP3_MUTANT_UARTBONE_TIMEOUT (an
+#                          unfinished frame dropped a cycle early):
+#                          drop_not_early
+#   uartbone.sby:mutant_wvalid   ... FP3_MUTANT_UARTBONE_WVALID (WVALID
+#                          falls with AWREADY instead of WREADY: a data
+#                          transfer lost or sent twice): m_w_held or
+#                          wr_aw_w_once
 set -u
 cd "$(dirname "$0")/.."
 out=${FORMAL_OUT:-build/formal}/mutant
@@ -62,3 +71,6 @@ check formal/sched.sby:mutant 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_div 'at formal/fp3_sched_check\.v:[0-9]+$'
 check formal/sched.sby:mutant_flags 'flags_staged_exact at rtl/fp3_simd\.v:[0-9]+$'
 check formal/sched.sby:mutant_wb1 '(wb|in2|clr)_one_port at rtl/fp3_regfile\.v:[0-9]+$'
+check formal/uartbone.sby:mutant_len 'rd_len_exact at rtl/fp3_uartbone\.v:[0-9]+$'
+check formal/uartbone.sby:mutant_timeout 'drop_not_early at rtl/fp3_uartbone\.v:[0-9]+$'
+check formal/uartbone.sby:mutant_wvalid '(m_w_held|wr_aw_w_once) at rtl/fp3_uartbone\.v:[0-9]+$'
