@@ -199,8 +199,47 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
   return 0;
 }
 
+/* An entry's manifest: the cache version, the module, its text's hash,
+ * the shared object's size and FNV-1a 64, the module's shape. */
+#define MANIFEST                                                                            \
+  "fp3-spatial-cache %d\nmodule %s\nhash %016" PRIx64 "\nso_size %lld\nso_hash %016" PRIx64 \
+  "\ninputs %u\ncarried %u\n"
+
+/* Check an entry's files before loading anything: its manifest must be
+ * the one this module's build writes, the shared object the size and
+ * hash the manifest records (a cut or replaced object never reaches
+ * dlopen, which may crash on it).  0, or -1 with the reason. */
+static int entry_check(const char *entry, const build *b, char *err, size_t n) {
+  char path[4400], text[1024], want[1024];
+  snprintf(path, sizeof path, "%s/manifest", entry);
+  FILE *f = fopen(path, "r");
+  if (!f) {
+    snprintf(err, n, "no manifest: %s", strerror(errno));
+    return -1;
+  }
+  size_t k = fread(text, 1, sizeof text - 1, f);
+  fclose(f);
+  text[k] = '\0';
+  snprintf(path, sizeof path, "%s/spatial.so", entry);
+  uint64_t so_hash = FNV_BASIS;
+  struct stat sb;
+  if (stat(path, &sb) != 0 || hash_file(&so_hash, path)) {
+    snprintf(err, n, "spatial.so: %s", strerror(errno));
+    return -1;
+  }
+  snprintf(want, sizeof want, MANIFEST, FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash,
+           (long long)sb.st_size, so_hash, b->nin, b->nc);
+  if (strcmp(text, want) != 0) {
+    snprintf(err, n, "spatial.so (%lld bytes, FNV-1a %016" PRIx64 ") or the manifest is not "
+             "what this module's build wrote", (long long)sb.st_size, so_hash);
+    return -1;
+  }
+  return 0;
+}
+
 /* Load the shared object of an entry and check it: every symbol, the
- * module text's hash and the shape.  0, or -1 with the reason. */
+ * module text's hash (the HASH register's value) and the shape.  0, or
+ * -1 with the reason. */
 static int shim_load(shim *s, const char *so, const build *b, char *err, size_t n) {
   memset(s, 0, sizeof *s);
   s->dl = dlopen(so, RTLD_NOW | RTLD_LOCAL);
@@ -331,10 +370,15 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   /* the object files are not needed once linked */
   rm_tree(obj);
   char mtext[512];
-  snprintf(mtext, sizeof mtext,
-           "fp3-spatial-cache %d\nmodule %s\nhash %016" PRIx64 "\ninputs %u\ncarried %u\n"
-           "verilator %s\n",
-           FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash, b->nin, b->nc, b->vversion);
+  uint64_t so_hash = FNV_BASIS;
+  struct stat sb;
+  if (stat(so, &sb) != 0 || hash_file(&so_hash, so)) {
+    snprintf(err, n, "%s: %s", so, strerror(errno));
+    rm_tree(tmp);
+    return -1;
+  }
+  snprintf(mtext, sizeof mtext, MANIFEST, FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash,
+           (long long)sb.st_size, so_hash, b->nin, b->nc);
   if (fp3_write_text_atomic(man, mtext, msg, sizeof msg)) {
     snprintf(err, n, "%s", msg);
     rm_tree(tmp);
@@ -368,8 +412,12 @@ static int cache_open(const build *b, const char *model, const char *integ, shim
   char so[4300], why[512];
   snprintf(so, sizeof so, "%s/spatial.so", entry);
   struct stat sb;
+  int loaded = 0; /* an unusable object was loaded into this process */
   if (stat(entry, &sb) == 0) {
-    if (shim_load(s, so, b, why, sizeof why) == 0) return 0;
+    if (entry_check(entry, b, why, sizeof why) == 0) {
+      loaded = 1;
+      if (shim_load(s, so, b, why, sizeof why) == 0) return 0;
+    }
     /* unusable: moved aside (atomically, so a concurrent reader sees it
      * whole or not at all), removed, built again */
     fprintf(stderr, "%s: cache entry %s is unusable (%s): building it again\n", env->label,
@@ -380,6 +428,9 @@ static int cache_open(const build *b, const char *model, const char *integ, shim
   }
   fprintf(stderr, "%s: building %s %s (Verilator) into %s\n", env->label, model, integ, entry);
   if (build_entry(b, entry, err, n)) return -1;
+  /* the dynamic loader knows a loaded object by its path: the new one,
+   * after an unusable one was loaded, by another spelling of it */
+  if (loaded) snprintf(so, sizeof so, "%s/./spatial.so", entry);
   if (shim_load(s, so, b, why, sizeof why)) {
     snprintf(err, n, "%s: the new build does not load: %s", so, why);
     return -1;
