@@ -6,10 +6,11 @@
 // Built with -DSPATIAL_HASH=0x...ULL (FNV-1a 64 of the module's text, the
 // value the frame's HASH register holds), -DSPATIAL_NIN=N (32-bit words
 // of in_i) and -DSPATIAL_NC=N (words of y_i and y_o); the Verilated class
-// is Vspatial (--prefix Vspatial).  A clock cycle is two calls: sample
-// the outputs with the clock low (fp3_spatial_shim_out), then drive the
-// inputs and raise the clock (fp3_spatial_shim_clock), so the host can
-// feed an object in the cycle its previous result leaves.
+// is Vspatial (--prefix Vspatial).  A clock cycle is two calls: read the
+// outputs (fp3_spatial_shim_out), then drive the inputs and clock
+// (fp3_spatial_shim_clock), so the host can feed an object in the cycle
+// its previous result leaves.  A cycle evaluates the model twice: the
+// clock low with the new inputs, then the rising edge.
 #include <cstdint>
 #include <new>
 
@@ -99,12 +100,11 @@ void fp3_spatial_shim_free(void *h) {
   delete d;
 }
 
-// The clock low: valid_o, and when it is 1 the SPATIAL_NC words of y_o
-// into y[].
+// valid_o, and when it is 1 the SPATIAL_NC words of y_o into y[], as the
+// last rising edge left them: the generator's outputs are registers (a
+// core's result or a delay stage), so no evaluation is needed.
 int fp3_spatial_shim_out(void *h, uint32_t *y) {
   dut *d = static_cast<dut *>(h);
-  d->top->clk_i = 0;
-  d->top->eval();
   if (!d->top->valid_o) return 0;
   for (unsigned w = 0; w < SPATIAL_NC; w++) y[w] = get_word(d->top->y_o, w);
   return 1;
