@@ -1,16 +1,12 @@
-// spatial_shim.cpp -- extern "C" shim over one Verilated pipeline written
-// by `fp3 spatial` (sw/compiler/spatial.h), built into the shared object
-// that the spatial engine loads with dlopen (sw/compiler/engine_spatial.c
-// builds it; docs/spatial.md "The spatial engine").
-//
-// Built with -DSPATIAL_HASH=0x...ULL (FNV-1a 64 of the module's text, the
-// value the frame's HASH register holds), -DSPATIAL_NIN=N (32-bit words
-// of in_i) and -DSPATIAL_NC=N (words of y_i and y_o); the Verilated class
-// is Vspatial (--prefix Vspatial).  A clock cycle is two calls: read the
-// outputs (fp3_spatial_shim_out), then drive the inputs and clock
-// (fp3_spatial_shim_clock), so the host can feed an object in the cycle
-// its previous result leaves.  A cycle evaluates the model twice: the
-// clock low with the new inputs, then the rising edge.
+// spatial_shim.cpp -- extern "C" shim over one Verilated spatial chip top
+// (`fp3 spatial --pipelines N --objects M`: the frame around a model's
+// step module behind its AXI4-Lite slave, sw/compiler/spatial_top.h),
+// built into the shared object that the spatial engine loads with dlopen
+// (sw/compiler/engine_spatial.c builds it; docs/spatial.md "The spatial
+// engine").  The host reaches the chip only as a board's host would:
+// AXI4-Lite writes and reads of one word, each with its response, at the
+// addresses of sw/isa/fp3_spatial_regs.h.  The Verilated class is
+// Vspatial (--prefix Vspatial).
 #include <cstdint>
 #include <new>
 
@@ -19,28 +15,8 @@
 
 namespace {
 
-// 32-bit word k of a port, whatever type Verilator gives its width: one
-// word an IData, two a QData, more a VlWide.
-void set_word(IData &p, unsigned k, uint32_t v) {
-  (void)k;
-  p = v;
-}
-void set_word(QData &p, unsigned k, uint32_t v) {
-  p = (p & ~(0xFFFFFFFFull << (32 * k))) | (static_cast<QData>(v) << (32 * k));
-}
-template <std::size_t N>
-void set_word(VlWide<N> &p, unsigned k, uint32_t v) {
-  p[k] = v;
-}
-uint32_t get_word(IData p, unsigned k) {
-  (void)k;
-  return p;
-}
-uint32_t get_word(QData p, unsigned k) { return static_cast<uint32_t>(p >> (32 * k)); }
-template <std::size_t N>
-uint32_t get_word(const VlWide<N> &p, unsigned k) {
-  return p[k];
-}
+// Clock cycles one transfer may wait for its handshake or response.
+constexpr int kAxiTimeout = 1000;
 
 struct dut {
   VerilatedContext ctx;
@@ -48,37 +24,36 @@ struct dut {
   uint64_t cycles = 0;
 };
 
-void edge(dut *d, int clk) {
-  d->top->clk_i = clk;
+// One clock cycle: the inputs as set, the clock low, then the rising edge.
+void tick(dut *d) {
+  d->top->clk_i = 0;
   d->top->eval();
-  d->ctx.timeInc(1);
+  d->top->clk_i = 1;
+  d->top->eval();
+  d->cycles++;
 }
 
 }  // namespace
 
 extern "C" {
 
-// The hash of the module text this object was built from, and its shape.
-uint64_t fp3_spatial_shim_hash(void) { return SPATIAL_HASH; }
-unsigned fp3_spatial_shim_inputs(void) { return SPATIAL_NIN; }
-unsigned fp3_spatial_shim_carried(void) { return SPATIAL_NC; }
-
-// rst_i high for four clock cycles, then low with the clock low; the
-// cycle count starts again at 0.
+// rst_i high for four clock cycles, the AXI inputs idle; the cycle count
+// starts again at 0.
 void fp3_spatial_shim_reset(void *h) {
   dut *d = static_cast<dut *>(h);
-  d->top->valid_i = 0;
-  d->top->rst_i = 1;
-  for (int k = 0; k < 4; k++) {
-    edge(d, 0);
-    edge(d, 1);
-  }
-  d->top->rst_i = 0;
-  edge(d, 0);
+  Vspatial *t = d->top;
+  t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+  t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+  t->s_axil_awprot_i = t->s_axil_arprot_i = 0;
+  t->s_axil_wstrb_i = 0xF;
+  t->rst_i = 1;
+  for (int k = 0; k < 4; k++) tick(d);
+  t->rst_i = 0;
+  tick(d);
   d->cycles = 0;
 }
 
-// A new pipeline, reset; nullptr when out of memory.
+// A new chip, reset; nullptr when out of memory.
 void *fp3_spatial_shim_new(void) {
   dut *d = new (std::nothrow) dut;
   if (!d) return nullptr;
@@ -87,7 +62,6 @@ void *fp3_spatial_shim_new(void) {
     delete d;
     return nullptr;
   }
-  d->top->clk_i = 0;
   fp3_spatial_shim_reset(d);
   return d;
 }
@@ -100,28 +74,67 @@ void fp3_spatial_shim_free(void *h) {
   delete d;
 }
 
-// valid_o, and when it is 1 the SPATIAL_NC words of y_o into y[], as the
-// last rising edge left them: the generator's outputs are registers (a
-// core's result or a delay stage), so no evaluation is needed.
-int fp3_spatial_shim_out(void *h, uint32_t *y) {
+// Write `data` to byte address `addr` (WSTRB 4'b1111; AW and W presented
+// together): BRESP (0 OKAY, 2 SLVERR), or -1 when no response came within
+// kAxiTimeout cycles.
+int fp3_spatial_shim_write(void *h, uint32_t addr, uint32_t data) {
   dut *d = static_cast<dut *>(h);
-  if (!d->top->valid_o) return 0;
-  for (unsigned w = 0; w < SPATIAL_NC; w++) y[w] = get_word(d->top->y_o, w);
-  return 1;
+  Vspatial *t = d->top;
+  bool aw = true, w = true;
+  t->s_axil_awaddr_i = addr;
+  t->s_axil_wdata_i = data;
+  t->s_axil_wstrb_i = 0xF;
+  t->s_axil_bready_i = 1;
+  for (int n = 0; n < kAxiTimeout; n++) {
+    t->s_axil_awvalid_i = aw;
+    t->s_axil_wvalid_i = w;
+    t->clk_i = 0;
+    t->eval();
+    const bool aw_hs = aw && t->s_axil_awready_o, w_hs = w && t->s_axil_wready_o;
+    const bool b = t->s_axil_bvalid_o;
+    const int resp = t->s_axil_bresp_o;
+    tick(d);
+    if (aw_hs) aw = false;
+    if (w_hs) w = false;
+    if (b) {
+      t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+      return resp;
+    }
+  }
+  t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+  return -1;
 }
 
-// Drive valid_i, in_i (SPATIAL_NIN words of in[]) and y_i (SPATIAL_NC
-// words of y[]), then one rising edge: one clock cycle more.
-void fp3_spatial_shim_clock(void *h, int valid, const uint32_t *in, const uint32_t *y) {
+// Read byte address `addr` into *data: RRESP (0 OKAY, 2 SLVERR), or -1
+// when no response came within kAxiTimeout cycles.
+int fp3_spatial_shim_read(void *h, uint32_t addr, uint32_t *data) {
   dut *d = static_cast<dut *>(h);
-  d->top->valid_i = valid ? 1 : 0;
-  for (unsigned k = 0; k < SPATIAL_NIN; k++) set_word(d->top->in_i, k, in[k]);
-  for (unsigned w = 0; w < SPATIAL_NC; w++) set_word(d->top->y_i, w, y[w]);
-  edge(d, 0);
-  edge(d, 1);
-  d->cycles++;
+  Vspatial *t = d->top;
+  bool ar = true;
+  t->s_axil_araddr_i = addr;
+  t->s_axil_rready_i = 1;
+  for (int n = 0; n < kAxiTimeout; n++) {
+    t->s_axil_arvalid_i = ar;
+    t->clk_i = 0;
+    t->eval();
+    const bool ar_hs = ar && t->s_axil_arready_o;
+    const bool r = t->s_axil_rvalid_o;
+    const uint32_t v = t->s_axil_rdata_o;
+    const int resp = t->s_axil_rresp_o;
+    tick(d);
+    if (ar_hs) ar = false;
+    if (r) {
+      t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+      *data = v;
+      return resp;
+    }
+  }
+  t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+  return -1;
 }
 
+// Clock cycles simulated since the last reset (the host's transfers
+// included; the chip's CYCLES register counts a run's own).
 uint64_t fp3_spatial_shim_cycles(void *h) { return static_cast<dut *>(h)->cycles; }
 
 }  // extern "C"

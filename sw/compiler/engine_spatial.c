@@ -31,7 +31,9 @@
 #include <unistd.h>
 
 #include "report.h"
+#include "fp3_spatial_regs.h"
 #include "spatial.h"
+#include "spatial_top.h"
 
 extern char **environ;
 
@@ -48,29 +50,33 @@ uint64_t fp3_fnv1a64(uint64_t h, const void *p, size_t n) {
 /* The shim's entry points (sim/spatial_shim.cpp). */
 typedef struct shim {
   void *dl;
-  uint64_t (*hash)(void);
-  unsigned (*inputs)(void), (*carried)(void);
   void *(*create)(void);
   void (*destroy)(void *);
   void (*reset)(void *);
-  int (*out)(void *, uint32_t *);
-  void (*clock)(void *, int, const uint32_t *, const uint32_t *);
+  int (*write)(void *, uint32_t, uint32_t);
+  int (*read)(void *, uint32_t, uint32_t *);
   uint64_t (*cycles)(void *);
+  void *dut;           /* the chip, once created                          */
+  unsigned sstride, istride; /* the windows' object strides (STRIDES)     */
 } shim;
 
 typedef struct spatial_engine {
   fp3_engine base;
   fp3_compiled *c;
   fp3_spatial *sp;
+  char *top_text;     /* the chip top's Verilog (fp3_spatial_top)       */
   unsigned nin, nc, lat, nregs, ncores;
   int *in_reg;        /* register of each word of in_i                 */
   unsigned *y_reg;    /* register of each carried value                */
   uint32_t *bank;     /* FP3_SPATIAL_SLOTS x nregs                      */
+  unsigned char *dirty; /* per slot: the host wrote its bank since the
+                           chip's copy was last synchronised             */
   uint32_t *steps_done; /* per slot, of the last run                    */
+  unsigned awake_n;   /* awake-list entries 0 .. awake_n-1 hold i       */
+  uint32_t count_reg, steps_reg; /* COUNT and STEPS as last written     */
   uint64_t ops[FP3_NUM_UNITS]; /* operations per object-step, by unit   */
   char entry[4096];   /* the cache folder of this pipeline             */
   shim sh;
-  void *dut;
 } spatial_engine;
 
 static spatial_engine *of(fp3_engine *e) { return (spatial_engine *)e; }
@@ -156,9 +162,10 @@ static void log_tail(const char *log, char *out, size_t n) {
 /* What one entry is built from: the module, the shim, the commands. */
 typedef struct build {
   const fp3_spatial_env *env;
-  const char *module, *verilog;
-  uint64_t text_hash;
-  unsigned nin, nc;
+  const char *module, *verilog; /* the step module                      */
+  const char *top, *top_verilog; /* the chip top around it              */
+  uint64_t text_hash;            /* FNV-1a 64 of the step's text         */
+  unsigned nin, nc, lat, objects;
   char vroot[1024]; /* VERILATOR_ROOT */
   char vversion[128];
 } build;
@@ -172,6 +179,7 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
            b->vversion, b->nin, b->nc, b->module);
   h = fp3_fnv1a64(h, line, strlen(line));
   h = fp3_fnv1a64(h, b->verilog, strlen(b->verilog));
+  h = fp3_fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
   char path[4096];
   snprintf(path, sizeof path, "%s/sim/spatial_shim.cpp", b->env->root);
   if (hash_file(&h, path)) {
@@ -237,10 +245,9 @@ static int entry_check(const char *entry, const build *b, char *err, size_t n) {
   return 0;
 }
 
-/* Load the shared object of an entry and check it: every symbol, the
- * module text's hash (the HASH register's value) and the shape.  0, or
- * -1 with the reason. */
-static int shim_load(shim *s, const char *so, const build *b, char *err, size_t n) {
+/* Load the shared object of an entry: every symbol.  0, or -1 with the
+ * reason. */
+static int shim_load(shim *s, const char *so, char *err, size_t n) {
   memset(s, 0, sizeof *s);
   s->dl = dlopen(so, RTLD_NOW | RTLD_LOCAL);
   if (!s->dl) {
@@ -250,34 +257,77 @@ static int shim_load(shim *s, const char *so, const build *b, char *err, size_t 
   struct {
     const char *name;
     void **fn;
-  } sym[] = {{"fp3_spatial_shim_hash", (void **)&s->hash},
-             {"fp3_spatial_shim_inputs", (void **)&s->inputs},
-             {"fp3_spatial_shim_carried", (void **)&s->carried},
-             {"fp3_spatial_shim_new", (void **)&s->create},
+  } sym[] = {{"fp3_spatial_shim_new", (void **)&s->create},
              {"fp3_spatial_shim_free", (void **)&s->destroy},
              {"fp3_spatial_shim_reset", (void **)&s->reset},
-             {"fp3_spatial_shim_out", (void **)&s->out},
-             {"fp3_spatial_shim_clock", (void **)&s->clock},
+             {"fp3_spatial_shim_write", (void **)&s->write},
+             {"fp3_spatial_shim_read", (void **)&s->read},
              {"fp3_spatial_shim_cycles", (void **)&s->cycles}};
   for (size_t i = 0; i < sizeof sym / sizeof sym[0]; i++)
     if (!(*sym[i].fn = dlsym(s->dl, sym[i].name))) {
       snprintf(err, n, "no symbol %s", sym[i].name);
-      goto bad;
+      dlclose(s->dl);
+      s->dl = NULL;
+      return -1;
     }
-  if (s->hash() != b->text_hash) {
-    snprintf(err, n, "its HASH is %016" PRIx64 ", the module's %016" PRIx64, s->hash(),
-             b->text_hash);
+  return 0;
+}
+
+/* One AXI4-Lite transfer of word address wa: 0, or -1 with the chip's
+ * answer (SLVERR, none) in err. */
+static int ax_write(shim *s, uint32_t wa, uint32_t v, char *err, size_t n) {
+  int r = s->write(s->dut, FP3S_BYTE(wa), v);
+  if (r == 0) return 0;
+  snprintf(err, n, "the chip answered %s to a write of word 0x%06" PRIX32,
+           r < 0 ? "nothing" : r == 2 ? "SLVERR" : "an error", wa);
+  return -1;
+}
+
+static int ax_read(shim *s, uint32_t wa, uint32_t *v, char *err, size_t n) {
+  int r = s->read(s->dut, FP3S_BYTE(wa), v);
+  if (r == 0) return 0;
+  snprintf(err, n, "the chip answered %s to a read of word 0x%06" PRIX32,
+           r < 0 ? "nothing" : r == 2 ? "SLVERR" : "an error", wa);
+  return -1;
+}
+
+/* Create the loaded chip and check what it says it is through its
+ * registers: ID, HASH (the step's text hash, low word), INFO (one
+ * pipeline, the step's inputs and carried values), LATENCY, MAXOBJ; keep
+ * the STRIDES.  0, or -1 with the reason (the chip freed). */
+static int chip_check(shim *s, const build *b, char *err, size_t n) {
+  if (!(s->dut = s->create())) {
+    snprintf(err, n, "out of memory for the Verilated chip");
+    return -1;
+  }
+  uint32_t id, hash, info, lat, maxobj, strides;
+  if (ax_read(s, FP3S_ID, &id, err, n) || ax_read(s, FP3S_HASH, &hash, err, n) ||
+      ax_read(s, FP3S_INFO, &info, err, n) || ax_read(s, FP3S_LATENCY, &lat, err, n) ||
+      ax_read(s, FP3S_MAXOBJ, &maxobj, err, n) || ax_read(s, FP3S_STRIDES, &strides, err, n))
+    goto bad;
+  if (id != FP3S_ID_VALUE) {
+    snprintf(err, n, "its ID is 0x%08" PRIX32 ", not a spatial chip's 0x%08X", id,
+             FP3S_ID_VALUE);
     goto bad;
   }
-  if (s->inputs() != b->nin || s->carried() != b->nc) {
-    snprintf(err, n, "it has %u inputs and %u carried values, the module %u and %u",
-             s->inputs(), s->carried(), b->nin, b->nc);
+  if (hash != (uint32_t)b->text_hash) {
+    snprintf(err, n, "its HASH is %08" PRIx32 ", the module's %08" PRIx32, hash,
+             (uint32_t)b->text_hash);
     goto bad;
   }
+  if (FP3S_INFO_PIPELINES(info) != 1 || FP3S_INFO_INPUTS(info) != b->nin ||
+      FP3S_INFO_CARRIED(info) != b->nc || lat != b->lat || maxobj != b->objects) {
+    snprintf(err, n, "its INFO 0x%08" PRIX32 ", LATENCY %" PRIu32 " and MAXOBJ %" PRIu32
+             " are not the module's (1 pipeline, %u inputs, %u carried; %u; %u)", info, lat,
+             maxobj, b->nin, b->nc, b->lat, b->objects);
+    goto bad;
+  }
+  s->sstride = FP3S_STATE_STRIDE(strides);
+  s->istride = FP3S_INPUT_STRIDE(strides);
   return 0;
 bad:
-  dlclose(s->dl);
-  s->dl = NULL;
+  s->destroy(s->dut);
+  s->dut = NULL;
   return -1;
 }
 
@@ -307,7 +357,7 @@ static int stage(const build *b, int k, int of_n, const char *what, char *const 
  * log kept beside the cache as final.failed.log). */
 static int build_entry(const build *b, const char *final, char *err, size_t n) {
   const fp3_spatial_env *env = b->env;
-  char tmp[4200], obj[4300], vfile[4400], log[4300], so[4300], man[4300];
+  char tmp[4200], obj[4300], vfile[4400], tfile[4400], log[4300], so[4300], man[4300];
   snprintf(tmp, sizeof tmp, "%s.tmp.%ld", final, (long)getpid());
   rm_tree(tmp);
   if (mkdir(tmp, 0777) != 0) {
@@ -316,16 +366,14 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   }
   snprintf(obj, sizeof obj, "%s/obj", tmp);
   snprintf(vfile, sizeof vfile, "%s/%s.v", tmp, b->module);
+  snprintf(tfile, sizeof tfile, "%s/%s.v", tmp, b->top);
   snprintf(log, sizeof log, "%s/build.log", tmp);
   snprintf(so, sizeof so, "%s/spatial.so", tmp);
   snprintf(man, sizeof man, "%s/manifest", tmp);
-  char rtl[4200], top[200], hashdef[64], nindef[32], ncdef[32], inc1[1100], inc2[1100],
-      inc3[4400], shimsrc[4200], mkf[64], mkdir_obj[4400];
+  char rtl[4200], top[200], inc1[1100], inc2[1100], inc3[4400], shimsrc[4200], mkf[64],
+      mkdir_obj[4400];
   snprintf(rtl, sizeof rtl, "-I%s/rtl", env->root);
-  snprintf(top, sizeof top, "%s", b->module);
-  snprintf(hashdef, sizeof hashdef, "-DSPATIAL_HASH=0x%016" PRIx64 "ULL", b->text_hash);
-  snprintf(nindef, sizeof nindef, "-DSPATIAL_NIN=%u", b->nin);
-  snprintf(ncdef, sizeof ncdef, "-DSPATIAL_NC=%u", b->nc);
+  snprintf(top, sizeof top, "%s", b->top);
   snprintf(inc1, sizeof inc1, "-I%s/include", b->vroot);
   snprintf(inc2, sizeof inc2, "-I%s/include/vltstd", b->vroot);
   snprintf(inc3, sizeof inc3, "-I%s", obj);
@@ -333,7 +381,8 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   snprintf(mkf, sizeof mkf, "Vspatial.mk");
   snprintf(mkdir_obj, sizeof mkdir_obj, "%s", obj);
   char msg[256];
-  if (fp3_write_text_atomic(vfile, b->verilog, msg, sizeof msg)) {
+  if (fp3_write_text_atomic(vfile, b->verilog, msg, sizeof msg) ||
+      fp3_write_text_atomic(tfile, b->top_verilog, msg, sizeof msg)) {
     snprintf(err, n, "%s", msg);
     rm_tree(tmp);
     return -1;
@@ -342,7 +391,7 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   char *verilate[] = {(char *)verilator, "--cc", "-O3", "--x-assign", "fast", "--x-initial",
                       "fast", "--noassert", "-Wno-fatal", rtl, "-y", rtl + 2,
                       "--top-module", top, "--prefix", "Vspatial", "--Mdir", obj,
-                      "-CFLAGS", "-fPIC", vfile, NULL};
+                      "-CFLAGS", "-fPIC", tfile, vfile, NULL};
   char *make[] = {"make", "-s", "-C", mkdir_obj, "-f", mkf, "VM_PARALLEL_BUILDS=0",
                   "OPT_FAST=-O2", "OPT_SLOW=-O1", "OPT_GLOBAL=-O2", "Vspatial__ALL.a",
                   "verilated.o", "verilated_threads.o", NULL};
@@ -350,8 +399,8 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   snprintf(all, sizeof all, "%s/Vspatial__ALL.a", obj);
   snprintf(rt1, sizeof rt1, "%s/verilated.o", obj);
   snprintf(rt2, sizeof rt2, "%s/verilated_threads.o", obj);
-  char *link[] = {"g++", "-shared", "-fPIC", "-O2", "-std=c++17", "-faligned-new", hashdef,
-                  nindef, ncdef, inc1, inc2, inc3, shimsrc, all, rt1, rt2, "-o", so,
+  char *link[] = {"g++", "-shared", "-fPIC", "-O2", "-std=c++17", "-faligned-new", inc1,
+                  inc2, inc3, shimsrc, all, rt1, rt2, "-o", so,
                   "-Wl,-Bsymbolic", "-pthread", "-latomic", NULL};
   const double t0 = now();
   if (stage(b, 1, 3, "verilate", verilate, log, err, n) ||
@@ -414,9 +463,9 @@ static int cache_open(const build *b, const char *model, const char *integ, shim
   struct stat sb;
   int loaded = 0; /* an unusable object was loaded into this process */
   if (stat(entry, &sb) == 0) {
-    if (entry_check(entry, b, why, sizeof why) == 0) {
+    if (entry_check(entry, b, why, sizeof why) == 0 && shim_load(s, so, why, sizeof why) == 0) {
       loaded = 1;
-      if (shim_load(s, so, b, why, sizeof why) == 0) return 0;
+      if (chip_check(s, b, why, sizeof why) == 0) return 0;
     }
     /* unusable: moved aside (atomically, so a concurrent reader sees it
      * whole or not at all), removed, built again */
@@ -431,7 +480,7 @@ static int cache_open(const build *b, const char *model, const char *integ, shim
   /* the dynamic loader knows a loaded object by its path: the new one,
    * after an unusable one was loaded, by another spelling of it */
   if (loaded) snprintf(so, sizeof so, "%s/./spatial.so", entry);
-  if (shim_load(s, so, b, why, sizeof why)) {
+  if (shim_load(s, so, why, sizeof why) || chip_check(s, b, why, sizeof why)) {
     snprintf(err, n, "%s: the new build does not load: %s", so, why);
     return -1;
   }
@@ -460,6 +509,7 @@ static int sp_write(fp3_engine *e, unsigned ctx, unsigned reg, uint32_t v) {
     return -1;
   }
   s->bank[(size_t)ctx * s->nregs + reg] = v;
+  s->dirty[ctx] = 1;
   return 0;
 }
 
@@ -474,107 +524,106 @@ static int sp_read(fp3_engine *e, unsigned ctx, unsigned reg, uint32_t *v) {
   return 0;
 }
 
-/* A bubble's words: xorshift32 (Marsaglia). */
-static uint32_t junk(uint32_t *x) {
-  *x ^= *x << 13;
-  *x ^= *x >> 17;
-  *x ^= *x << 5;
-  return *x;
+/* The engine's error: what failed, and the chip's answer in m. */
+static int sp_fail(fp3_engine *e, const char *m) {
+  snprintf(e->error, sizeof e->error, "%s", m);
+  return -1;
 }
 
-/* Stream slots 0 .. n-1 through the pipeline for `steps` steps each (see
- * engine_spatial.h). */
+/* Bring the chip's copy of slots 0 .. n-1 up to their banks: the inputs
+ * and carried values of each slot the host wrote; the awake list 0 ..
+ * n-1 (the identity: one pipeline); COUNT = n.  0, or -1. */
+static int sync_slots(spatial_engine *s, unsigned n, char *m, size_t mn) {
+  shim *sh = &s->sh;
+  for (unsigned o = 0; o < n; o++) {
+    if (!s->dirty[o]) continue;
+    const uint32_t *bank = s->bank + (size_t)o * s->nregs;
+    for (unsigned k = 0; k < s->nin; k++)
+      if (ax_write(sh, FP3S_INPUT_BASE + o * sh->istride + k, bank[s->in_reg[k]], m, mn))
+        return -1;
+    for (unsigned w = 0; w < s->nc; w++)
+      if (ax_write(sh, FP3S_STATE_BASE + o * sh->sstride + w, bank[s->y_reg[w]], m, mn))
+        return -1;
+    s->dirty[o] = 0;
+  }
+  for (; s->awake_n < n; s->awake_n++)
+    if (ax_write(sh, FP3S_AWAKE_BASE + s->awake_n, s->awake_n, m, mn)) return -1;
+  if (s->count_reg != n) {
+    if (ax_write(sh, FP3S_COUNT, n, m, mn)) return -1;
+    s->count_reg = n;
+  }
+  return 0;
+}
+
+/* One run of the chip: START, STATUS polled until DONE (at most `limit`
+ * cycles), its CYCLES added to *cycles.  0, or -1. */
+static int chip_run(spatial_engine *s, uint64_t limit, uint64_t *cycles, char *m, size_t mn) {
+  shim *sh = &s->sh;
+  uint32_t status = 0, lo, hi;
+  if (ax_write(sh, FP3S_CTRL, FP3S_CTRL_START, m, mn)) return -1;
+  const uint64_t t0 = sh->cycles(sh->dut);
+  do {
+    if (ax_read(sh, FP3S_STATUS, &status, m, mn)) return -1;
+    if (sh->cycles(sh->dut) - t0 > limit) {
+      snprintf(m, mn, "the chip hung: no DONE %" PRIu64 " cycles after START", limit);
+      return -1;
+    }
+  } while (!(status & FP3S_STATUS_DONE));
+  if (ax_read(sh, FP3S_CYCLES_LO, &lo, m, mn) || ax_read(sh, FP3S_CYCLES_HI, &hi, m, mn))
+    return -1;
+  *cycles += (uint64_t)hi << 32 | lo;
+  return 0;
+}
+
+/* Run slots 0 .. n-1 for `steps` steps each on the chip (see
+ * engine_spatial.h): one step a run when the observer takes write-backs,
+ * each object's new carried values read back after each; else all the
+ * steps in one run. */
 static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer *obs,
                   fp3_status *st) {
   spatial_engine *s = of(e);
+  shim *sh = &s->sh;
+  char m[sizeof e->error];
   memset(st, 0, sizeof *st);
   if (n == 0 || n > FP3_SPATIAL_SLOTS) {
-    snprintf(e->error, sizeof e->error, "%u objects: the engine streams 1 .. %u a run", n,
+    snprintf(e->error, sizeof e->error, "%u objects: the engine runs 1 .. %u a run", n,
              FP3_SPATIAL_SLOTS);
     return -1;
   }
-  const unsigned nin = s->nin, nc = s->nc, lat = s->lat;
-  /* in flight: a ring of (slot, cycle fed), at most lat + 1 entries */
-  const size_t ring = (size_t)lat + 2;
-  unsigned *fslot = malloc(ring * sizeof *fslot);
-  uint64_t *fcyc = malloc(ring * sizeof *fcyc);
-  unsigned char *busy = calloc(n, 1);
-  uint32_t *in = malloc((nin + nc + nc) * sizeof *in);
-  if (!fslot || !fcyc || !busy || !in) {
-    free(fslot), free(fcyc), free(busy), free(in);
-    snprintf(e->error, sizeof e->error, "out of memory");
-    return -1;
-  }
-  uint32_t *y = in + nin, *yo = y + nc;
-  size_t head = 0, count = 0;
-  unsigned next = 0;
-  uint64_t fed = 0, finished = 0, cycle = 0;
-  const uint64_t total = (uint64_t)n * steps;
-  const uint64_t limit = (total + 2) * ((uint64_t)lat + 2) + 100;
-  uint32_t rng = 0x2545F491u;
-  int rc = 0;
+  const int observed = obs && (obs->on_write || obs->on_ctx_write);
+  const uint32_t per = observed ? 1 : steps, runs = observed ? steps : 1;
+  /* a run of K steps takes (K - 1) max(n, L + 2) + n + L + 2 cycles
+   * (docs/spatial.md): far more is a hang */
+  const uint64_t limit = 4 * ((uint64_t)per + 1) * ((uint64_t)n + s->lat + 2) + 10000;
   for (unsigned o = 0; o < n; o++) s->steps_done[o] = 0;
-  s->sh.reset(s->dut);
-  while (finished < total) {
-    if (cycle >= limit) {
-      snprintf(e->error, sizeof e->error, "the pipeline hung: %" PRIu64 " of %" PRIu64
-               " object-steps out after %" PRIu64 " cycles", finished, total, cycle);
-      rc = -1;
-      break;
-    }
-    if (s->sh.out(s->dut, yo)) {
-      if (count == 0 || cycle - fcyc[head] != lat) {
-        snprintf(e->error, sizeof e->error, "pipeline fault: a result in cycle %" PRIu64
-                 " that no object fed %u cycles before owns", cycle, lat);
-        rc = -1;
-        break;
-      }
-      const unsigned o = fslot[head];
-      head = (head + 1) % ring;
-      count--;
-      const uint32_t k = ++s->steps_done[o];
-      uint32_t *bank = s->bank + (size_t)o * s->nregs;
-      for (unsigned w = 0; w < nc; w++) {
-        bank[s->y_reg[w]] = yo[w];
-        fp3_observe_write(obs, o, s->y_reg[w], yo[w], k);
-      }
-      fp3_observe_endi(obs, o, k, cycle);
-      busy[o] = 0;
-      finished++;
-    } else if (count && cycle - fcyc[head] >= lat) {
-      snprintf(e->error, sizeof e->error, "pipeline fault: object %u's result did not leave "
-               "%u cycles after it entered", fslot[head], lat);
-      rc = -1;
-      break;
-    }
-    int valid = 0;
-    if (fed < total && !busy[next] && s->steps_done[next] < steps) {
-      const uint32_t *bank = s->bank + (size_t)next * s->nregs;
-      for (unsigned k = 0; k < nin; k++) in[k] = bank[s->in_reg[k]];
-      for (unsigned w = 0; w < nc; w++) y[w] = bank[s->y_reg[w]];
-      valid = 1;
-      busy[next] = 1;
-      size_t tail = (head + count) % ring;
-      fslot[tail] = next;
-      fcyc[tail] = cycle;
-      count++;
-      fed++;
-      next = (next + 1) % n;
-    } else {
-      for (unsigned k = 0; k < nin + nc; k++) in[k] = junk(&rng);
-    }
-    s->sh.clock(s->dut, valid, in, y);
-    cycle++;
+  if (sync_slots(s, n, m, sizeof m)) return sp_fail(e, m);
+  if (s->steps_reg != per) {
+    if (ax_write(sh, FP3S_STEPS, per, m, sizeof m)) return sp_fail(e, m);
+    s->steps_reg = per;
   }
-  free(fslot), free(fcyc), free(busy), free(in);
-  st->done = rc == 0;
+  for (uint32_t r = 1; r <= runs; r++) {
+    if (chip_run(s, limit, &st->cycles, m, sizeof m)) return sp_fail(e, m);
+    const uint32_t k = r * per;
+    for (unsigned o = 0; o < n; o++) {
+      uint32_t *bank = s->bank + (size_t)o * s->nregs;
+      for (unsigned w = 0; w < s->nc; w++) {
+        uint32_t v;
+        if (ax_read(sh, FP3S_STATE_BASE + o * sh->sstride + w, &v, m, sizeof m))
+          return sp_fail(e, m);
+        bank[s->y_reg[w]] = v;
+        fp3_observe_write(obs, o, s->y_reg[w], v, k);
+      }
+      s->steps_done[o] = k;
+      fp3_observe_endi(obs, o, k, st->cycles - 1); /* its last cycle */
+    }
+  }
+  st->done = 1;
   st->steps_done = s->steps_done[0];
-  st->cycles = s->sh.cycles(s->dut);
   for (int u = 0; u < FP3_NUM_UNITS; u++) {
-    st->unit_issued[u] = s->ops[u] * finished;
+    st->unit_issued[u] = s->ops[u] * n * (uint64_t)steps;
     st->issued += st->unit_issued[u];
   }
-  return rc;
+  return 0;
 }
 
 static int sp_ctx_status(fp3_engine *e, unsigned ctx, fp3_ctx_status *cs) {
@@ -590,13 +639,15 @@ static int sp_ctx_status(fp3_engine *e, unsigned ctx, fp3_ctx_status *cs) {
 
 static void sp_destroy(fp3_engine *e) {
   spatial_engine *s = of(e);
-  if (s->dut) s->sh.destroy(s->dut);
+  if (s->sh.dut) s->sh.destroy(s->sh.dut);
   /* the shared object stays loaded: a Verilated model's runtime keeps
    * thread-local state that dlclose would leave dangling */
   fp3_spatial_free(s->sp);
+  free(s->top_text);
   free(s->in_reg);
   free(s->y_reg);
   free(s->bank);
+  free(s->dirty);
   free(s->steps_done);
   free(s);
 }
@@ -668,7 +719,8 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   s->y_reg = malloc((s->nc ? s->nc : 1) * sizeof *s->y_reg);
   s->bank = calloc((size_t)FP3_SPATIAL_SLOTS * s->nregs, sizeof *s->bank);
   s->steps_done = calloc(FP3_SPATIAL_SLOTS, sizeof *s->steps_done);
-  if (!s->in_reg || !s->y_reg || !s->bank || !s->steps_done) {
+  s->dirty = malloc(FP3_SPATIAL_SLOTS);
+  if (!s->in_reg || !s->y_reg || !s->bank || !s->steps_done || !s->dirty) {
     snprintf(err, n, "out of memory");
     goto fail;
   }
@@ -700,9 +752,16 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   cf->mode = mode;
   cf->has_add = cf->has_sub = cf->has_mul = cf->has_div = cf->has_sqrt = cf->has_sign = 1;
 
+  char top[160];
+  if (fp3_spatial_top(s->sp, 1, FP3_SPATIAL_SLOTS, top, sizeof top, &s->top_text, msg,
+                      sizeof msg)) {
+    snprintf(err, n, "%s: %s", m->file, msg);
+    goto fail;
+  }
   build b = {.env = env, .module = fp3_spatial_module(s->sp),
-             .verilog = fp3_spatial_verilog(s->sp), .nin = s->nin, .nc = s->nc};
-  b.text_hash = fp3_fnv1a64(FNV_BASIS, b.verilog, strlen(b.verilog));
+             .verilog = fp3_spatial_verilog(s->sp), .top = top, .top_verilog = s->top_text,
+             .nin = s->nin, .nc = s->nc, .lat = s->lat, .objects = FP3_SPATIAL_SLOTS};
+  b.text_hash = fp3_spatial_hash(s->sp);
   const char *verilator = env->verilator ? env->verilator : "verilator";
   char cmd[1200];
   snprintf(cmd, sizeof cmd, "'%s' --getenv VERILATOR_ROOT 2>/dev/null", verilator);
@@ -716,10 +775,9 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
     goto fail;
   }
   if (cache_open(&b, m->name, integ, &s->sh, s->entry, sizeof s->entry, err, n)) goto fail;
-  if (!(s->dut = s->sh.create())) {
-    snprintf(err, n, "out of memory for the Verilated pipeline");
-    goto fail;
-  }
+  /* the chip's object memory is unknown: every slot is written before it
+   * runs; COUNT and STEPS are 0 after reset */
+  memset(s->dirty, 1, FP3_SPATIAL_SLOTS);
   return &s->base;
 fail:
   sp_destroy(&s->base);
