@@ -1,7 +1,7 @@
 /*
- * engine_spatial.c -- the spatial engine (engine_spatial.h): the pipeline
- * of a compiled model, Verilated on first use into a cached shared
- * object, loaded with dlopen and driven one clock cycle at a time.
+ * engine_spatial.c -- the spatial engine (engine_spatial.h): the chip of a
+ * compiled model's pipeline, Verilated on first use into a cached shared
+ * object, loaded with dlopen and driven over AXI4-Lite.
  *
  * Why dlopen: the pipeline is generated at run time, one per model,
  * integrator and core options, so it cannot be linked into build/fp3; a
@@ -41,7 +41,8 @@ extern char **environ;
 #define FNV_PRIME 0x100000001b3ull
 #define LOG_TAIL 12 /* lines of a failed build's log shown */
 
-uint64_t fp3_fnv1a64(uint64_t h, const void *p, size_t n) {
+/* FNV-1a 64 (Fowler, Noll, Vo) of the n bytes at p, continuing from h. */
+static uint64_t fnv1a64(uint64_t h, const void *p, size_t n) {
   const unsigned char *b = p;
   for (size_t i = 0; i < n; i++) h = (h ^ b[i]) * FNV_PRIME;
   return h;
@@ -89,7 +90,7 @@ static int hash_file(uint64_t *h, const char *path) {
   if (!f) return -1;
   char buf[65536];
   size_t k;
-  while ((k = fread(buf, 1, sizeof buf, f)) > 0) *h = fp3_fnv1a64(*h, buf, k);
+  while ((k = fread(buf, 1, sizeof buf, f)) > 0) *h = fnv1a64(*h, buf, k);
   int bad = ferror(f);
   fclose(f);
   return bad ? -1 : 0;
@@ -177,9 +178,9 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
   char line[512];
   snprintf(line, sizeof line, "fp3-spatial-cache %d|%s|%u|%u|%s", FP3_SPATIAL_CACHE_VERSION,
            b->vversion, b->nin, b->nc, b->module);
-  h = fp3_fnv1a64(h, line, strlen(line));
-  h = fp3_fnv1a64(h, b->verilog, strlen(b->verilog));
-  h = fp3_fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
+  h = fnv1a64(h, line, strlen(line));
+  h = fnv1a64(h, b->verilog, strlen(b->verilog));
+  h = fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
   char path[4096];
   snprintf(path, sizeof path, "%s/sim/spatial_shim.cpp", b->env->root);
   if (hash_file(&h, path)) {
@@ -194,7 +195,7 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
     snprintf(path, sizeof path, pat[p], b->env->root);
     if (glob(path, 0, NULL, &g) != 0) continue; /* no .vh is fine */
     for (size_t i = 0; i < g.gl_pathc; i++) {
-      h = fp3_fnv1a64(h, g.gl_pathv[i], strlen(g.gl_pathv[i]) + 1);
+      h = fnv1a64(h, g.gl_pathv[i], strlen(g.gl_pathv[i]) + 1);
       if (hash_file(&h, g.gl_pathv[i])) {
         snprintf(err, n, "%s: %s", g.gl_pathv[i], strerror(errno));
         globfree(&g);

@@ -11,37 +11,46 @@
  * image: load_program refuses any other, so a hand-written program or
  * another model's cannot run on it.  Its registers are c's registers: an
  * object slot holds the bank that fp3_compiled_model_start writes (the
- * params, the host's values, the carried values), and a run feeds each
- * slot's pipeline inputs from the registers that hold them
- * (fp3_ir_node_reg) and writes each new carried value back to its
- * register (fp3_compiled_state_reg), reporting it to the observer as a
+ * params, the host's values, the carried values).  The engine keeps the
+ * banks on the host and the chip's object memory in step with them: a
+ * run writes the inputs and carried values of each slot whose bank the
+ * host wrote since (from the registers that hold them, fp3_ir_node_reg,
+ * fp3_compiled_state_reg), runs, and reads every slot's new carried
+ * values back into its registers, reporting each to the observer as a
  * write-back of that integration, then an endi.  So every runner of the
  * model path (fp3_run_state_objects, fp3_run_state_frames, fp3 run's one
  * object) drives it unchanged and compares every object with the same
  * golden model after every integration.
  *
- * A run: slots 0 .. n-1 are fed in turn, one a cycle; a slot is fed its
- * next step as soon as its previous result has left the pipeline
- * (latency L), so K steps of n objects take about K max(n, L) + L cycles
- * (docs/spatial.md "Objects against latency").  A bubble's inputs are
- * pseudo-random words, so a value read in the wrong cycle shows.  Each
- * result must leave exactly L cycles after its object entered, else the
- * run fails.  status.cycles counts the pipeline's clock cycles from the
- * first object in to the last result out; issued counts operations (one
- * per core per object-step); exception flags are not reported (the
- * pipeline has no flag outputs: flags stays 0, and
- * fp3_engine_spatial_is says which engine it is so callers say so).
+ * The chip: the top `fp3 spatial --pipelines 1 --objects
+ * FP3_SPATIAL_SLOTS` writes (spatial_top.h: the frame, its object memory
+ * and AXI4-Lite slave around one pipeline), reached only through AXI4-Lite
+ * transfers at the addresses of fp3_spatial_regs.h, as a board's host
+ * would.  On load the engine reads ID, HASH (the low word of the step
+ * module's hash, fp3_spatial_hash), INFO, LATENCY and MAXOBJ and refuses
+ * a chip that is not this module's.  A run of n slots and K steps writes
+ * the awake list 0 .. n-1, COUNT = n, and STEPS = 1 and START K times when
+ * the observer takes write-backs (each step's states are read back), else
+ * STEPS = K and START once; it polls STATUS until DONE.  status.cycles is
+ * the sum of the runs' CYCLES registers (START to DONE; (K - 1)
+ * max(n, L + 2) + n + L + 2 for one run of K steps, docs/spatial.md);
+ * issued counts operations (one per core per object-step); exception
+ * flags are not reported (the step module has no flag outputs: flags
+ * stays 0, and fp3_engine_spatial_is says which engine it is so callers
+ * say so).  An AXI error (SLVERR, no response) or a run that never ends
+ * fails the run with the address.
  *
  * The cache (FP3_SPATIAL_CACHE_VERSION): DIR/MODULE-KEY/ holds
- * spatial.so, build.log and manifest.  KEY is FNV-1a 64 (hex) of the
- * generated module's text, every rtl/ file, sim/spatial_shim.cpp, the
- * Verilator version and the build commands, so any change rebuilds.  The
- * shared object reports the FNV-1a 64 hash of the module text it was
- * built from (fp3_spatial_shim_hash, the frame's HASH register's value);
- * a mismatch, a file that does not load or a missing symbol makes the
- * entry unusable: it is removed and built again, said on stderr.  A build
- * happens in DIR/tmp.MODULE-KEY.PID and is renamed into place when done;
- * a concurrent build of the same entry loses the rename and uses the
+ * spatial.so and a manifest.  KEY is FNV-1a 64 (hex) of the step
+ * module's and the chip top's text, every rtl/ file,
+ * sim/spatial_shim.cpp and the Verilator version, so any change builds a
+ * new entry.  The manifest records the step's hash and the shared
+ * object's size and FNV-1a 64; before loading, the files must match it
+ * (a cut or replaced object never reaches dlopen), and after loading the
+ * chip's registers must be the module's.  An entry that fails is said to
+ * be unusable, removed and built again.  A build happens in
+ * DIR/MODULE-KEY.tmp.PID and is renamed into place when done; a
+ * concurrent build of the same entry loses the rename and uses the
  * winner's, so readers never see a half-built entry.
  */
 #ifndef FP3_ENGINE_SPATIAL_H
@@ -60,7 +69,7 @@
 #define FP3_SPATIAL_SLOTS 1024
 
 /* The cache layout's version, part of every KEY. */
-#define FP3_SPATIAL_CACHE_VERSION 1
+#define FP3_SPATIAL_CACHE_VERSION 2
 
 /* Where the engine finds what it builds with. */
 typedef struct fp3_spatial_env {
@@ -74,11 +83,12 @@ typedef struct fp3_spatial_env {
  * integ, compiled with registers: fp3_compile_model or
  * fp3_model_compile_for), its cores rounding and flushing as `mode`
  * says, the cores' latencies those of fp3_spatial_defaults.  Builds the
- * pipeline, finds or builds its cache entry (progress on stderr: what it
- * builds, each stage and its time), loads it.  c must outlive the
+ * pipeline and its chip top, finds or builds its cache entry (progress on
+ * stderr: what it builds, each stage and its time), loads and checks it.  c must outlive the
  * engine.  NULL with the reason in err: a pipeline the generator
  * refuses, no Verilator ("verilator: not found"), a failed build (the
- * log's path and its last lines), a shared object that does not load. */
+ * log's path and its last lines), a chip that does not load or answer as
+ * the module's. */
 fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const char *integ,
                                    fpref_mode mode, const fp3_spatial_env *env, char *err,
                                    size_t n);
@@ -91,9 +101,5 @@ int fp3_engine_spatial_is(const fp3_engine *e);
 unsigned fp3_engine_spatial_latency(const fp3_engine *e);
 unsigned fp3_engine_spatial_cores(const fp3_engine *e);
 const char *fp3_engine_spatial_entry(const fp3_engine *e);
-
-/* FNV-1a 64 of the n bytes at p, continuing from h (start: the offset
- * basis 0xcbf29ce484222325). */
-uint64_t fp3_fnv1a64(uint64_t h, const void *p, size_t n);
 
 #endif /* FP3_ENGINE_SPATIAL_H */
