@@ -6,7 +6,8 @@
 #   - the ship (rk4se, latency 68): 1 object, 85 objects (more than the
 #     latency), the ship scene scenes/harbour.scene; each
 #     bit-exact, each with the same final states as --engine rtl, and the
-#     JSON valid against docs/fp3.schema.json;
+#     JSON valid against docs/fp3.schema.json; fp3 frames of the harbour
+#     bit-exact frame by frame;
 #   - the oscillator's Euler step (latency 7): 1 and 20 objects;
 #   - the cache: the first run says what it builds, with its stages; the
 #     second finds the entry and builds nothing; an entry whose shared
@@ -32,18 +33,7 @@ bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
 
 # same_results A.json B.json: A valid against docs/fp3.schema.json, pass true
 # in both, the same "results" (every object's final state and reference).
-same_results() {
-  python3 - "$1" "$2" <<'PY'
-import json, sys
-import jsonschema
-a, b = (json.load(open(p)) for p in sys.argv[1:3])
-jsonschema.validate(a, json.load(open("docs/fp3.schema.json")))   # docs/json.md
-ok = a["pass"] and b["pass"] and a["results"] == b["results"] and a["golden_mismatches"] == 0
-print(f"  {a['engine']}: pass {a['pass']}, {a['golden_mismatches']} mismatches, cycles {a['cycles']}; "
-      f"{b['engine']}: pass {b['pass']}, cycles {b['cycles']}; results {'equal' if a['results'] == b['results'] else 'DIFFER'}")
-sys.exit(0 if ok else 1)
-PY
-}
+same_results() { python3 tests/same_results.py "$1" "$2"; }
 
 # against_rtl NAME ARGS...: fp3 run ARGS on spatial and on rtl, --json
 against_rtl() {
@@ -94,6 +84,24 @@ print(f"  latency {L}, cycles {j['cycles']}, expected {want}")
 sys.exit(0 if L == 68 and j["cycles"] == want and j["flags_reported"] is False else 1)
 PY
 against_rtl harbour --scene scenes/harbour.scene --steps 30
+# fp3 frames: the harbour frame by frame (moored ships skipped at rest)
+if "$FP3" frames --scene scenes/harbour.scene --engine spatial --frames 20 --json \
+     >"$T/frames.json" 2>"$T/frames.err" &&
+   python3 - "$T/frames.json" <<'PY'
+import json, sys
+import jsonschema
+j = json.load(open(sys.argv[1]))
+schema = json.load(open("docs/fp3.schema.json"))
+jsonschema.validate(j, {"$defs": schema["$defs"], "$ref": "#/$defs/frames"})
+print(f"  frames: {j['object_frames_run']} object-frames run, {j['object_frames_skipped']} skipped, "
+      f"{j['golden_mismatches']} mismatches")
+sys.exit(0 if j["pass"] and j["golden_mismatches"] == 0 and j["object_frames_skipped"] > 0 else 1)
+PY
+then
+  ok "fp3 frames on spatial: every carried value after every frame bit-exact, objects at rest skipped"
+else
+  cat "$T/frames.err"; bad "fp3 frames on spatial"
+fi
 
 # ---- a second model ------------------------------------------------------------
 OSC="--model models/oscillator.fp3m --integrator euler"
