@@ -444,6 +444,9 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
     rm_tree(tmp);
     return -1;
   }
+  char stale[4400]; /* an earlier build's failure log is history now */
+  snprintf(stale, sizeof stale, "%s.failed.log", final);
+  unlink(stale);
   fprintf(stderr, "%s: built %s in %.1f s\n", env->label, final, now() - t0);
   return 0;
 }
