@@ -8,9 +8,10 @@
 TEST_SCRIPTS += tests/test_spatial.sh
 test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 
-# tests/test_spatial_engine.sh: fp3 run --engine spatial (the model's
-# pipeline Verilated on first use into a temporary cache, loaded with
-# dlopen): the ship and the oscillator bit-exact after every step and equal
-# to --engine rtl, the cache reused, damaged entries found and rebuilt,
-# bad options refused (about 75 s, three Verilator builds).
+# tests/test_spatial_engine.sh: fp3 run and fp3 frames --engine spatial
+# (the model's chip, Verilated on first use into a temporary cache, loaded
+# with dlopen, driven over AXI4-Lite): the ship and the oscillator
+# bit-exact after every step and equal to --engine rtl, the cache reused,
+# damaged entries found and rebuilt, bad options refused (about 85 s,
+# three Verilator builds).
 TEST_SCRIPTS += tests/test_spatial_engine.sh

@@ -677,10 +677,6 @@ unsigned fp3_engine_spatial_cores(const fp3_engine *e) {
   return fp3_engine_spatial_is(e) ? ((const spatial_engine *)e)->ncores : 0;
 }
 
-const char *fp3_engine_spatial_entry(const fp3_engine *e) {
-  return fp3_engine_spatial_is(e) ? ((const spatial_engine *)e)->entry : NULL;
-}
-
 /* The unit (FP3_UNIT_*) of an IR operation kind. */
 static int unit_of(int kind) {
   switch (kind) {

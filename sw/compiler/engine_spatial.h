@@ -96,10 +96,9 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
 /* 1 when e is a spatial engine. */
 int fp3_engine_spatial_is(const fp3_engine *e);
 
-/* The pipeline's latency L (cycles), cores and cache folder of spatial
- * engine e (0 / NULL for another engine). */
+/* The pipeline's latency L (cycles) and its cores, of spatial engine e
+ * (0 for another engine). */
 unsigned fp3_engine_spatial_latency(const fp3_engine *e);
 unsigned fp3_engine_spatial_cores(const fp3_engine *e);
-const char *fp3_engine_spatial_entry(const fp3_engine *e);
 
 #endif /* FP3_ENGINE_SPATIAL_H */
