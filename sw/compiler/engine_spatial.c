@@ -160,7 +160,8 @@ static void log_tail(const char *log, char *out, size_t n) {
 
 /* ---- the cache entry ------------------------------------------------------------ */
 
-/* What one entry is built from: the module, the shim, the commands. */
+/* What one entry is built from: the step module, the chip top, the
+ * Verilator that builds them. */
 typedef struct build {
   const fp3_spatial_env *env;
   const char *module, *verilog; /* the step module                      */
@@ -171,8 +172,9 @@ typedef struct build {
   char vversion[128];
 } build;
 
-/* The cache key: the module text, every rtl/ file, the shim, the
- * Verilator version and the build's defines.  -1 if a file cannot be read. */
+/* The cache key: the cache version, the Verilator version, the module's
+ * shape and name, the step module's and the chip top's text, the shim,
+ * every rtl/ file.  0, or -1 if a file cannot be read. */
 static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
   uint64_t h = FNV_BASIS;
   char line[512];
