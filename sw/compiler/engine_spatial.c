@@ -56,6 +56,7 @@ typedef struct shim {
   void (*reset)(void *);
   int (*write)(void *, uint32_t, uint32_t);
   int (*read)(void *, uint32_t, uint32_t *);
+  size_t (*read_many)(void *, const uint32_t *, size_t, uint32_t *, int *);
   uint64_t (*cycles)(void *);
   void *dut;           /* the chip, once created                          */
   unsigned sstride, istride; /* the windows' object strides (STRIDES)     */
@@ -73,6 +74,8 @@ typedef struct spatial_engine {
   unsigned char *dirty; /* per slot: the host wrote its bank since the
                            chip's copy was last synchronised             */
   uint32_t *steps_done; /* per slot, of the last run                    */
+  uint32_t *rd_addr, *rd_data; /* the state window's words of every slot */
+  int *rd_resp;
   unsigned awake_n;   /* awake-list entries 0 .. awake_n-1 hold i       */
   uint32_t count_reg, steps_reg; /* COUNT and STEPS as last written     */
   uint64_t ops[FP3_NUM_UNITS]; /* operations per object-step, by unit   */
@@ -265,6 +268,7 @@ static int shim_load(shim *s, const char *so, char *err, size_t n) {
              {"fp3_spatial_shim_reset", (void **)&s->reset},
              {"fp3_spatial_shim_write", (void **)&s->write},
              {"fp3_spatial_shim_read", (void **)&s->read},
+             {"fp3_spatial_shim_read_many", (void **)&s->read_many},
              {"fp3_spatial_shim_cycles", (void **)&s->cycles}};
   for (size_t i = 0; i < sizeof sym / sizeof sym[0]; i++)
     if (!(*sym[i].fn = dlsym(s->dl, sym[i].name))) {
@@ -581,6 +585,25 @@ static int chip_run(spatial_engine *s, uint64_t limit, uint64_t *cycles, char *m
   return 0;
 }
 
+/* Every carried value of slots 0 .. n-1 from the state window into
+ * rd_data[o * nc + w], the reads back to back.  0, or -1. */
+static int read_states(spatial_engine *s, unsigned n, char *m, size_t mn) {
+  shim *sh = &s->sh;
+  const size_t words = (size_t)n * s->nc;
+  for (unsigned o = 0; o < n; o++)
+    for (unsigned w = 0; w < s->nc; w++)
+      s->rd_addr[(size_t)o * s->nc + w] = FP3S_BYTE(FP3S_STATE_BASE + o * sh->sstride + w);
+  const size_t got = sh->read_many(sh->dut, s->rd_addr, words, s->rd_data, s->rd_resp);
+  for (size_t i = 0; i < words; i++)
+    if (i >= got || s->rd_resp[i] != 0) {
+      snprintf(m, mn, "the chip answered %s to a read of word 0x%06" PRIX32,
+               i >= got ? "nothing" : s->rd_resp[i] == 2 ? "SLVERR" : "an error",
+               s->rd_addr[i] / 4);
+      return -1;
+    }
+  return 0;
+}
+
 /* Run slots 0 .. n-1 for `steps` steps each on the chip (see
  * engine_spatial.h): one step a run when the observer takes write-backs,
  * each object's new carried values read back after each; else all the
@@ -610,12 +633,11 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
   for (uint32_t r = 1; r <= runs; r++) {
     if (chip_run(s, limit, &st->cycles, m, sizeof m)) return sp_fail(e, m);
     const uint32_t k = r * per;
+    if (read_states(s, n, m, sizeof m)) return sp_fail(e, m);
     for (unsigned o = 0; o < n; o++) {
       uint32_t *bank = s->bank + (size_t)o * s->nregs;
       for (unsigned w = 0; w < s->nc; w++) {
-        uint32_t v;
-        if (ax_read(sh, FP3S_STATE_BASE + o * sh->sstride + w, &v, m, sizeof m))
-          return sp_fail(e, m);
+        const uint32_t v = s->rd_data[(size_t)o * s->nc + w];
         bank[s->y_reg[w]] = v;
         fp3_observe_write(obs, o, s->y_reg[w], v, k);
       }
@@ -654,6 +676,9 @@ static void sp_destroy(fp3_engine *e) {
   free(s->y_reg);
   free(s->bank);
   free(s->dirty);
+  free(s->rd_addr);
+  free(s->rd_data);
+  free(s->rd_resp);
   free(s->steps_done);
   free(s);
 }
@@ -722,7 +747,12 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   s->bank = calloc((size_t)FP3_SPATIAL_SLOTS * s->nregs, sizeof *s->bank);
   s->steps_done = calloc(FP3_SPATIAL_SLOTS, sizeof *s->steps_done);
   s->dirty = malloc(FP3_SPATIAL_SLOTS);
-  if (!s->in_reg || !s->y_reg || !s->bank || !s->steps_done || !s->dirty) {
+  const size_t words = (size_t)FP3_SPATIAL_SLOTS * (s->nc ? s->nc : 1);
+  s->rd_addr = malloc(words * sizeof *s->rd_addr);
+  s->rd_data = malloc(words * sizeof *s->rd_data);
+  s->rd_resp = malloc(words * sizeof *s->rd_resp);
+  if (!s->in_reg || !s->y_reg || !s->bank || !s->steps_done || !s->dirty || !s->rd_addr ||
+      !s->rd_data || !s->rd_resp) {
     snprintf(err, n, "out of memory");
     goto fail;
   }

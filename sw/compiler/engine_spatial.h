@@ -31,7 +31,8 @@
  * a chip that is not this module's.  A run of n slots and K steps writes
  * the awake list 0 .. n-1, COUNT = n, and STEPS = 1 and START K times when
  * the observer takes write-backs (each step's states are read back), else
- * STEPS = K and START once; it polls STATUS until DONE.  status.cycles is
+ * STEPS = K and START once; it polls STATUS until DONE and reads the
+ * states back to back (fp3_spatial_shim_read_many).  status.cycles is
  * the sum of the runs' CYCLES registers (START to DONE; (K - 1)
  * max(n, L + 2) + n + L + 2 for one run of K steps, docs/spatial.md);
  * issued counts operations (one per core per object-step); exception
