@@ -204,6 +204,13 @@ static void spatial_cache(char *dir, size_t n) {
   snprintf(dir, n, "%s/spatial-cache", slash ? exe : "build");
 }
 
+/* The engine's progress line, "fp3 CMD", unless --json. */
+static void show_progress(const fp3_model_args *a, fp3_run_setup *s, const char *cmd) {
+  static char label[32]; /* the engine keeps it: one command a process */
+  snprintf(label, sizeof label, "fp3 %s", cmd);
+  fp3_engine_show_progress(s->e, a->json ? NULL : label);
+}
+
 /* The spatial engine: the model compiled (for the registers it needs:
  * the engine's banks are the program's), then its pipeline built or
  * found in the cache and loaded (engine_spatial.h). */
@@ -227,9 +234,7 @@ static int setup_spatial(const fp3_model_args *a, fp3_run_setup *s, const unsign
     fprintf(stderr, "fp3 %s: spatial engine: %s\n", cmd, msg);
     return EXIT_FAIL;
   }
-  static char plabel[32]; /* the engine keeps it: one command a process */
-  snprintf(plabel, sizeof plabel, "fp3 %s", cmd);
-  fp3_engine_show_progress(s->e, a->json ? NULL : plabel);
+  show_progress(a, s, cmd);
   return 0;
 }
 
@@ -264,9 +269,7 @@ int fp3_run_setup_engine(const fp3_model_args *a, fp3_run_setup *s, const char *
             s->e ? fp3_engine_error(s->e) : "");
     return EXIT_FAIL;
   }
-  static char label[32]; /* the engine keeps it: one command a process */
-  snprintf(label, sizeof label, "fp3 %s", cmd);
-  fp3_engine_show_progress(s->e, a->json ? NULL : label);
+  show_progress(a, s, cmd);
   if (s->program) {
     fp3_compile_opts o;
     fp3_compile_opts_for(&o, &s->e->config);
