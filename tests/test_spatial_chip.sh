@@ -121,7 +121,7 @@ if [ "${1:-}" = --mutants ]; then
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \
     "INPUTS[7:0], CARRIED[7:0]" id
   mutant busy-window-writable 1 96 fp3_spatial_axil.v \
-    "(!running_i && (wa_steps_q" "(1'b1 && (wa_steps_q" busy
+    "(!running_i && (wa_steps" "(1'b1 && (wa_steps" busy
 fi
 
 # bad --pipelines / --objects: exit 2, a message, nothing written
