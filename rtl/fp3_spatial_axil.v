@@ -150,10 +150,10 @@ module fp3_spatial_axil #(
     .sel_o (wa_sel_q), .off_o (wa_off_q), .ok_o (wa_ok_q), .bank_o (wa_bank_q),
     .row_o (wa_row_q), .word_o (wa_word_q)
   );
-  wire wa_scalar  = wa_sel_q == SEL_SCALAR;
-  wire wa_ctrl  = wa_scalar && wa_off_q == R_CTRL;
-  wire wa_steps = wa_scalar && wa_off_q == R_STEPS;
-  wire wa_count = wa_scalar && wa_off_q == R_COUNT;
+  wire wa_scalar = wa_sel_q == SEL_SCALAR;
+  wire wa_ctrl   = wa_scalar && wa_off_q == R_CTRL;
+  wire wa_steps  = wa_scalar && wa_off_q == R_STEPS;
+  wire wa_count  = wa_scalar && wa_off_q == R_COUNT;
 
   // ---- write data: captured with the awake entry's and COUNT's decode ----------
   wire        w_take = s_axil_wvalid_i && !w_valid_q;

@@ -16,7 +16,8 @@
 # its write-back has landed (PERIOD L + 1), and a frame that never feeds
 # bank 1.  `--mutants` also runs the other broken frames (write-back one
 # cycle early, DONE a cycle late, the awake entry's bank unchecked, INFO's
-# fields swapped), outside make test.
+# fields swapped, windows writable while running, an input write landing
+# in every word, a write response before the write), outside make test.
 # Bad --pipelines / --objects exit 2 and leave no file.
 #
 # Runs from anywhere; the CLI is $FP3_BIN, else build/fp3 of this checkout.
@@ -121,7 +122,11 @@ if [ "${1:-}" = --mutants ]; then
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \
     "INPUTS[7:0], CARRIED[7:0]" id
   mutant busy-window-writable 1 96 fp3_spatial_axil.v \
-    "(!running_i && (wa_steps" "(1'b1 && (wa_steps" busy
+    "(!running_i && (wa_steps " "(1'b1 && (wa_steps " busy
+  mutant input-word-ignored 1 96 fp3_spatial_frame.v \
+    "{NI{we && host_sel_i == SEL_INPUT}} & host_input_word" "{NI{we && host_sel_i == SEL_INPUT}}" load
+  mutant b-before-w 1 96 fp3_spatial_axil.v "assign s_axil_bvalid_o  = b_valid_q;" \
+    "assign s_axil_bvalid_o  = b_valid_q || aw_valid_q;" axi
 fi
 
 # bad --pipelines / --objects: exit 2, a message, nothing written
