@@ -20,7 +20,8 @@
 //
 // Addresses are decoded as they are captured (fp3_spatial_dec; the
 // awake entry's object number as the W word is), so that the checks at
-// the write are a few flip-flops and RUNNING.
+// the access are a few flip-flops, compares of the held offset and
+// RUNNING.
 //
 // Responses: OKAY, or SLVERR (2'b10) with no effect and RDATA 0 for
 //   - a write to a read-only or unmapped address; a read of CTRL or of an
@@ -136,36 +137,23 @@ module fp3_spatial_axil #(
   reg [BW:0]   tail_q;    // entries of the last round, COUNT - (R - 1) N
 
   // ---- write address: captured with its decode -------------------------------
-  wire        aw_take = s_axil_awvalid_i && !aw_valid_q;
-  wire [21:0] aw_in   = s_axil_awaddr_i[23:2];
-  wire [1:0]  aw_sel;
-  wire        aw_ok;
-  wire [BW-1:0] aw_bank;
-  wire [RW-1:0] aw_row;
-  wire [7:0]    aw_word;
+  wire          aw_take = s_axil_awvalid_i && !aw_valid_q;
+  wire [1:0]    wa_sel_q;
+  wire [19:0]   wa_off_q;
+  wire          wa_ok_q;
+  wire [BW-1:0] wa_bank_q;
+  wire [RW-1:0] wa_row_q;
+  wire [7:0]    wa_word_q;
   fp3_spatial_dec #(.PIPELINES(PIPELINES), .MAXOBJ(MAXOBJ), .CARRIED(CARRIED),
                     .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW)) u_aw_dec (
-    .addr_i (aw_in), .sel_o (aw_sel), .ok_o (aw_ok), .bank_o (aw_bank), .row_o (aw_row),
-    .word_o (aw_word)
+    .clk_i (clk_i), .take_i (aw_take), .addr_i (s_axil_awaddr_i[23:2]),
+    .sel_o (wa_sel_q), .off_o (wa_off_q), .ok_o (wa_ok_q), .bank_o (wa_bank_q),
+    .row_o (wa_row_q), .word_o (wa_word_q)
   );
-  reg [1:0]    wa_sel_q;
-  reg          wa_ok_q, wa_ctrl_q, wa_steps_q, wa_count_q;
-  reg [BW-1:0] wa_bank_q;
-  reg [RW-1:0] wa_row_q;
-  reg [7:0]    wa_word_q;
-  wire         aw_scalar = aw_sel == SEL_SCALAR;
-  always @(posedge clk_i) begin
-    if (aw_take) begin
-      wa_sel_q   <= aw_sel;
-      wa_ok_q    <= aw_ok;
-      wa_bank_q  <= aw_bank;
-      wa_row_q   <= aw_row;
-      wa_word_q  <= aw_word;
-      wa_ctrl_q  <= aw_scalar && aw_in[19:0] == R_CTRL;
-      wa_steps_q <= aw_scalar && aw_in[19:0] == R_STEPS;
-      wa_count_q <= aw_scalar && aw_in[19:0] == R_COUNT;
-    end
-  end
+  wire wa_scalar = wa_sel_q == SEL_SCALAR;
+  wire wa_ctrl   = wa_scalar && wa_off_q == R_CTRL;
+  wire wa_steps  = wa_scalar && wa_off_q == R_STEPS;
+  wire wa_count  = wa_scalar && wa_off_q == R_COUNT;
 
   // ---- write data: captured with the awake entry's and COUNT's decode ----------
   wire        w_take = s_axil_wvalid_i && !w_valid_q;
@@ -188,41 +176,26 @@ module fp3_spatial_axil #(
   end
 
   // ---- read address: captured with its decode ----------------------------------
-  wire        ar_take = s_axil_arvalid_i && !ar_valid_q;
-  wire [21:0] ar_in   = s_axil_araddr_i[23:2];
-  wire [1:0]  ar_sel;
-  wire        ar_ok;
-  wire [BW-1:0] ar_bank;
-  wire [RW-1:0] ar_row;
-  wire [7:0]    ar_word;
+  wire          ar_take = s_axil_arvalid_i && !ar_valid_q;
+  wire [1:0]    ra_sel_q;
+  wire [19:0]   ra_reg_q;   // a scalar register's address
+  wire          ra_ok_q;
+  wire [BW-1:0] ra_bank_q;
+  wire [RW-1:0] ra_row_q;
+  wire [7:0]    ra_word_q;
   fp3_spatial_dec #(.PIPELINES(PIPELINES), .MAXOBJ(MAXOBJ), .CARRIED(CARRIED),
                     .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW)) u_ar_dec (
-    .addr_i (ar_in), .sel_o (ar_sel), .ok_o (ar_ok), .bank_o (ar_bank), .row_o (ar_row),
-    .word_o (ar_word)
+    .clk_i (clk_i), .take_i (ar_take), .addr_i (s_axil_araddr_i[23:2]),
+    .sel_o (ra_sel_q), .off_o (ra_reg_q), .ok_o (ra_ok_q), .bank_o (ra_bank_q),
+    .row_o (ra_row_q), .word_o (ra_word_q)
   );
-  reg [1:0]    ra_sel_q;
-  reg          ra_ok_q;
-  reg [BW-1:0] ra_bank_q;
-  reg [RW-1:0] ra_row_q;
-  reg [7:0]    ra_word_q;
-  reg [19:0]   ra_reg_q;    // a scalar register's address
-  always @(posedge clk_i) begin
-    if (ar_take) begin
-      ra_sel_q  <= ar_sel;
-      ra_ok_q   <= ar_ok;
-      ra_bank_q <= ar_bank;
-      ra_row_q  <= ar_row;
-      ra_word_q <= ar_word;
-      ra_reg_q  <= ar_in[19:0];
-    end
-  end
 
   // ---- checks ------------------------------------------------------------------
   wire wa_win = wa_sel_q != SEL_SCALAR;
   wire awake_ok = wd_none_q || (wd_obj_ok_q && wd_bank_q == wa_bank_q);
   wire wr_ok = w_all_q &&
-               (wa_ctrl_q ||
-                (!running_i && (wa_steps_q || (wa_count_q && wd_count_ok_q) ||
+               (wa_ctrl ||
+                (!running_i && (wa_steps || (wa_count && wd_count_ok_q) ||
                                 (wa_win && wa_ok_q && (wa_sel_q != SEL_AWAKE || awake_ok)))));
   wire ra_win = ra_sel_q != SEL_SCALAR;
   reg  sc_readable;
@@ -300,8 +273,8 @@ module fp3_spatial_axil #(
         w_valid_q  <= 1'b0;
         b_valid_q  <= 1'b1;
       end
-      if (wr_now && wa_steps_q) steps_q <= w_data_q;
-      if (wr_now && wa_count_q) begin
+      if (wr_now && wa_steps) steps_q <= w_data_q;
+      if (wr_now && wa_count) begin
         count_q  <= w_data_q;
         rounds_q <= wd_rounds_q;
         tail_q   <= wd_bank_q == {BW{1'b0}} ? N_T : {1'b0, wd_bank_q};
@@ -333,7 +306,7 @@ module fp3_spatial_axil #(
   assign host_word_o  = do_write ? wa_word_q : ra_word_q;
   assign host_wdata_o = wa_sel_q == SEL_AWAKE
                       ? {wd_none_q, {(31 - RW){1'b0}}, wd_row_q} : w_data_q;
-  assign start_o      = wr_now && wa_ctrl_q && w_data_q[0];
+  assign start_o      = wr_now && wa_ctrl && w_data_q[0];
   assign steps_o      = steps_q;
   assign rounds_o     = rounds_q;
   assign tail_o       = tail_q;

@@ -35,6 +35,7 @@
 
 #include "Vchip.h"
 #include "fp3_spatial_regs.h"
+#include "spatial_vectors.h"
 #include "verilated.h"
 
 static Vchip *top;
@@ -153,34 +154,15 @@ int main(int argc, char **argv) {
   const unsigned N = (unsigned)std::strtoul(argv[2], nullptr, 10);
   const unsigned M = (unsigned)std::strtoul(argv[3], nullptr, 10);
   const uint32_t hash = (uint32_t)std::strtoull(argv[4], nullptr, 16);
-  FILE *f = std::fopen(argv[1], "r");
-  if (!f) {
-    std::perror(argv[1]);
+  spatial_vectors v;
+  if (spatial_vectors_read(argv[1], &v)) return 2;
+  if (v.nobj != M || v.steps < 5) {
+    std::fprintf(stderr, "%s: vectors of %lu objects and %lu steps, not %u and 5 or more\n",
+                 argv[1], v.nobj, v.steps, M);
     return 2;
   }
-  unsigned long nobj, steps, nin, nc, lat;
-  if (std::fscanf(f, "fp3-spatial-vectors %lu %lu %lu %lu %lu", &nobj, &steps, &nin, &nc,
-                  &lat) != 5 ||
-      nobj != M || steps < 5) {
-    std::fprintf(stderr, "%s: not a vectors file of %u objects and 5 steps or more\n", argv[1],
-                 M);
-    return 2;
-  }
-  std::vector<uint32_t> in(nobj * nin), y0(nobj * nc), gold(steps * nobj * nc);
-  auto rd = [&](uint32_t &w) {
-    unsigned v;
-    if (std::fscanf(f, "%x", &v) != 1) {
-      std::fprintf(stderr, "%s: short vectors file\n", argv[1]);
-      std::exit(2);
-    }
-    w = v;
-  };
-  for (unsigned long o = 0; o < nobj; o++) {
-    for (unsigned long k = 0; k < nin; k++) rd(in[o * nin + k]);
-    for (unsigned long w = 0; w < nc; w++) rd(y0[o * nc + w]);
-  }
-  for (auto &w : gold) rd(w);
-  std::fclose(f);
+  const unsigned long nobj = v.nobj, nin = v.nin, nc = v.nc, lat = v.lat;
+  const std::vector<uint32_t> &in = v.in, &y0 = v.y0, &gold = v.gold;
 
   Verilated::commandArgs(argc, argv);
   top = new Vchip;
