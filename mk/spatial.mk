@@ -18,6 +18,6 @@ test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 # (the model's chip, Verilated on first use into a temporary cache, loaded
 # with dlopen, driven over AXI4-Lite): the ship and the oscillator
 # bit-exact after every step and equal to --engine rtl, the cache reused,
-# damaged entries found and rebuilt, bad options refused (about 85 s,
+# damaged entries found and rebuilt, bad options refused (about a minute,
 # three Verilator builds).
 TEST_SCRIPTS += tests/test_spatial_engine.sh

@@ -13,11 +13,12 @@
 #     second finds the entry and builds nothing; an entry whose shared
 #     object is cut short, and one holding another module's chip (its HASH
 #     register is not the module's hash), are found unusable, said, and
-#     built again;
+#     built again (the second by a Verilator that fails: exit 1, the log
+#     named);
 #   - bad options: --program, --trace and `fp3 bench --engine spatial`
 #     are refused with exit 2.
-# The cache is a temporary folder ($FP3_SPATIAL_CACHE); about three
-# Verilator builds, 1-2 minutes on this machine.  CLI: $FP3_BIN (default
+# The cache is a temporary folder ($FP3_SPATIAL_CACHE); three Verilator
+# builds, about a minute on this machine.  CLI: $FP3_BIN (default
 # build/fp3).
 set -u
 cd "$(dirname "$0")/.."
@@ -137,7 +138,20 @@ m = re.sub(r"so_size \d+", f"so_size {os.path.getsize(f'{d}/spatial.so')}", m)
 m = re.sub(r"so_hash [0-9a-f]+", f"so_hash {h:016x}", m)
 open(f"{d}/manifest", "w").write(m)
 PY
-rebuilt "another module's shared object (HASH mismatch)" "its HASH is"
+# ... found, and built again by a Verilator that fails (it answers
+# --version and --getenv as the real one, so the entry is the same): the
+# run says so, names the kept log and its last line, and exits 1
+printf '#!/bin/sh\ncase "$1" in --getenv|--version) exec verilator "$@";; esac\necho "%%Error: a build that fails" >&2\nexit 1\n' >"$T/vfail"
+chmod +x "$T/vfail"
+VERILATOR="$T/vfail" "$FP3" run $OSC --steps 5 --engine spatial >"$T/re.out" 2>"$T/re.err"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q "cache entry $osc is unusable (its HASH is" "$T/re.err" &&
+   grep -q "verilate failed (exit 1); log $osc.failed.log:" "$T/re.err" &&
+   grep -q "a build that fails" "$T/re.err" && [ -f "$osc.failed.log" ] && [ ! -e "$osc" ]; then
+  ok "another module's chip (HASH mismatch): found unusable; the failed rebuild names its log, exit 1"
+else
+  cat "$T/re.err"; bad "HASH mismatch, then a failed build: exit $rc"
+fi
 
 # ---- options that make no sense with the spatial engine ------------------------
 refused() {
