@@ -100,10 +100,13 @@ static void parse_model(const char *cmd, int argc, char **argv) {
   check_str(cmd, a.trace.path, 0);
   if (a.nset < 0 || a.nset > (int)(sizeof a.set / sizeof a.set[0])) fail(cmd, "a --set count");
   if (a.steps < 1 || a.points < 1 || a.points > 24) fail(cmd, "a count out of range");
-  /* a board (uart:...) only where the state is compared after a run */
+  /* a board (uart:...) only where the state is compared after a run, the
+   * spatial engine only where a model's objects run */
   const int board = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
                     fp3_engine_is_uart(a.engine);
-  if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0 && !board)
+  const int spatial = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
+                      strcmp(a.engine, "spatial") == 0;
+  if (strcmp(a.engine, "rtl") != 0 && strcmp(a.engine, "iss") != 0 && !board && !spatial)
     fail(cmd, "an engine");
   check_str(cmd, a.engine, 1);
   check_str(cmd, a.file, 0);

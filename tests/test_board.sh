@@ -57,18 +57,7 @@ wait_ready() {
 
 # same_results A.json B.json: A valid against docs/fp3.schema.json, pass true
 # in both, the same "results" (every object's state, golden, reference).
-same_results() {
-  python3 - "$1" "$2" <<'PY'
-import json, sys
-import jsonschema
-a, b = (json.load(open(p)) for p in sys.argv[1:3])
-jsonschema.validate(a, json.load(open("docs/fp3.schema.json")))   # docs/json.md
-ok = a["pass"] and b["pass"] and a["results"] == b["results"] and a["golden_mismatches"] == 0
-print(f"  {a['engine']}: pass {a['pass']}, {a['golden_mismatches']} mismatches, cycles {a['cycles']}; "
-      f"{b['engine']}: pass {b['pass']}, cycles {b['cycles']}; results {'equal' if a['results'] == b['results'] else 'DIFFER'}")
-sys.exit(0 if ok else 1)
-PY
-}
+same_results() { python3 tests/same_results.py "$1" "$2"; }
 
 # ---- the simulated board on a pseudo-terminal --------------------------------
 "$SIM" --pty "$T/tty" --ready "$T/ready" --max-seconds 240 2>"$T/sim.err" &

@@ -104,10 +104,14 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
        * that compare the state after a run: run and frames */
       const int board = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
                         fp3_engine_is_uart(v);
-      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0 && !board) {
+      /* the spatial pipeline of the model (engine_spatial.h) for the
+       * commands that run a model's objects: run and frames */
+      const int spatial = (strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0) &&
+                          strcmp(v, "spatial") == 0;
+      if (strcmp(v, "rtl") != 0 && strcmp(v, "iss") != 0 && !board && !spatial) {
         fprintf(stderr, "fp3 %s: unknown engine '%s' (rtl or iss%s)\n", cmd, v,
                 strcmp(cmd, "run") == 0 || strcmp(cmd, "frames") == 0
-                    ? ", or uart:DEVICE[@BAUD], uart:socket://HOST:PORT"
+                    ? ", spatial, or uart:DEVICE[@BAUD], uart:socket://HOST:PORT"
                     : "");
         return FP3_ARGS_BAD;
       }

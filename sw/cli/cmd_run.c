@@ -28,6 +28,7 @@
 #include "cmd_model.h"
 #include "compile.h"
 #include "engine.h"
+#include "engine_spatial.h"
 #include "fpenv.h"
 #include "fpref.h"
 #include "model.h"
@@ -67,7 +68,8 @@
 static void usage(FILE *f) {
   fprintf(f,
           "usage: fp3 run [--model FILE.fp3m] [--program FILE.s | --integrator NAME [--literal]]\n"
-          "               [--set NAME=VALUE ...] [--steps N] [--engine rtl|iss|uart:DEVICE[@BAUD]]\n"
+          "               [--set NAME=VALUE ...] [--steps N]\n"
+          "               [--engine rtl|iss|spatial|uart:DEVICE[@BAUD]]\n"
           "               [--objects N [--seed S] | --scene FILE]\n"
           "               [--round rne|rtz] [--ftz] [--json]\n"
           "               [--trace FILE.vcd [--trace-window FIRST:COUNT] [--trace-limit SIZE]]\n"
@@ -91,7 +93,10 @@ static void usage(FILE *f) {
           "                    NAME0), binary32; the model file's defaults otherwise\n"
           "  --steps N         integrations, 1..4294967295 (default %u)\n"
           "  --engine E        rtl (Verilated RTL, default) or iss (simulator; its\n"
-          "                    cycles are instructions, one issued a cycle), or a board\n"
+          "                    cycles are instructions, one issued a cycle), spatial (the\n"
+          "                    model's step as one pipeline, fp3 spatial: Verilated on\n"
+          "                    first use into build/spatial-cache, or $FP3_SPATIAL_CACHE;\n"
+          "                    not with --program or --trace; docs/spatial.md), or a board\n"
           "                    on a serial line: uart:DEVICE[@BAUD] (default 3000000),\n"
           "                    uart:socket://HOST:PORT (docs/board.md; no trace port:\n"
           "                    the state after the run is compared)\n"
@@ -320,7 +325,7 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
     }
     printf("        total %" PRIu64 " %s, %" PRIu64 " issued, %" PRIu64 " stalls\n", st.cycles,
            strcmp(a->engine, "iss") == 0 ? "instructions" : "cycles", st.issued, st.stalls);
-    printf("flags: %s\n", flags);
+    fp3_run_print_flags(e, flags);
     if (diverged_k)
       printf("DIVERGED: state variable %s is beyond %g, %g (1 + max |initial state|), from "
              "integration %" PRIu32 " on (the largest stable h: fp3 bench --model %s "
@@ -505,11 +510,15 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
              max_err, sc->n - ref_fail);
     printf("cycles: %" PRIu64 " in all, %.2f per object-step (issued %.2f per object-step)\n",
            res.cycles, per, (double)res.issued / object_steps);
-    if (res.final_only)
+    if (fp3_engine_spatial_is(s->e))
+      printf("pipeline: latency %u cycles, %u cores; an object entered in %.1f %% of the "
+             "cycles\n", fp3_engine_spatial_latency(s->e), fp3_engine_spatial_cores(s->e),
+             100 * object_steps / (double)res.cycles);
+    else if (res.final_only)
       printf("utilization: not measured (the engine reports no issues per unit)\n");
     else
       printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
-    printf("flags: %s\n", flags);
+    fp3_run_print_flags(s->e, flags);
     if (res.error)
       printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
              fp3_error_text(res.error), res.error_pc);

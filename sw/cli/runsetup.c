@@ -3,6 +3,7 @@
  * (runsetup.h): the program, the model and its objects, the engine, and
  * the parts of their reports they share.
  */
+#define _DEFAULT_SOURCE /* realpath */
 #include "runsetup.h"
 
 #include <math.h>
@@ -15,6 +16,7 @@
 
 #include "asm.h"
 #include "cmd_asm.h"
+#include "engine_spatial.h"
 #include "fpenv.h"
 #include "fpref.h"
 #include "modelref.h"
@@ -86,8 +88,15 @@ void fp3_run_setup_free(fp3_run_setup *s) {
 int fp3_run_setup_program(const fp3_model_args *a, fp3_run_setup *s, const char *cmd,
                           const char *default_program) {
   const char *p = a->program;
+  const int spatial = strcmp(a->engine, "spatial") == 0;
+  if (p && spatial) {
+    fprintf(stderr, "fp3 %s: --program does not go with --engine spatial: the spatial engine "
+            "runs a model's compiled step as a pipeline (--model, --integrator), not a "
+            "program for the processor\n", cmd);
+    return EXIT_USAGE;
+  }
   if (!p) {
-    if (!default_program || a->file || (a->scene && fp3_scene_is_model(a->scene)) ||
+    if (!default_program || spatial || a->file || (a->scene && fp3_scene_is_model(a->scene)) ||
         a->integ_given || a->literal)
       return 0;
     fp3_find_shipped(default_program, s->program_path, sizeof s->program_path);
@@ -167,11 +176,85 @@ int fp3_run_setup_model(const fp3_model_args *a, fp3_run_setup *s, const char *c
   return 0;
 }
 
+/* The folder of a shipped file's folder: ROOT of ROOT/rel (rel found by
+ * fp3_find_shipped), absolute.  -1 if it is not there. */
+static int shipped_root(const char *rel, char *root, size_t n) {
+  char path[8192];
+  fp3_find_shipped(rel, path, sizeof path);
+  char *abs = realpath(path, NULL);
+  if (!abs) return -1;
+  size_t k = strlen(abs), r = strlen(rel);
+  int rc = -1;
+  if (k > r && abs[k - r - 1] == '/') {
+    abs[k - r - 1] = '\0';
+    snprintf(root, n, "%s", abs);
+    rc = 0;
+  }
+  free(abs);
+  return rc;
+}
+
+/* The folder of the spatial engine's cache: $FP3_SPATIAL_CACHE, else
+ * spatial-cache beside the executable (build/fp3: build/spatial-cache). */
+static void spatial_cache(char *dir, size_t n) {
+  if (n < 4096 + 16) return; /* callers pass a path's room */
+  const char *env = getenv("FP3_SPATIAL_CACHE");
+  if (env && env[0]) {
+    snprintf(dir, n, "%s", env);
+    return;
+  }
+  char exe[4000];
+  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  char *slash = k > 0 ? (exe[k] = '\0', strrchr(exe, '/')) : NULL;
+  if (slash) *slash = '\0';
+  snprintf(dir, n, "%s/spatial-cache", slash ? exe : "build");
+}
+
+/* The engine's progress line, "fp3 CMD", unless --json. */
+static void show_progress(const fp3_model_args *a, fp3_run_setup *s, const char *cmd) {
+  static char label[32]; /* the engine keeps it: one command a process */
+  snprintf(label, sizeof label, "fp3 %s", cmd);
+  fp3_engine_show_progress(s->e, a->json ? NULL : label);
+}
+
+/* The spatial engine: the model compiled (for the registers it needs:
+ * the engine's banks are the program's), then its pipeline built or
+ * found in the cache and loaded (engine_spatial.h). */
+static int setup_spatial(const fp3_model_args *a, fp3_run_setup *s, const unsigned char *zero,
+                         const char *cmd) {
+  char root[4096], cache[4112], msg[4096], label[64];
+  if (!(s->c = fp3_model_compile_for(s->m, a, zero, NULL, 1, cmd))) return EXIT_USAGE;
+  s->integ = a->integ;
+  s->literal = a->literal;
+  if (shipped_root("sim/spatial_shim.cpp", root, sizeof root)) {
+    fprintf(stderr, "fp3 %s: --engine spatial needs the FP3 tree (rtl/, sim/spatial_shim.cpp) "
+            "beside the working directory or the executable\n", cmd);
+    return EXIT_FAIL;
+  }
+  spatial_cache(cache, sizeof cache);
+  snprintf(label, sizeof label, "fp3 %s: spatial", cmd);
+  const char *vl = getenv("VERILATOR");
+  fp3_spatial_env env = {root, cache, vl && vl[0] ? vl : NULL, label};
+  s->e = fp3_engine_spatial_new(s->c, s->m, s->integ, a->mode, &env, msg, sizeof msg);
+  if (!s->e) {
+    fprintf(stderr, "fp3 %s: spatial engine: %s\n", cmd, msg);
+    return EXIT_FAIL;
+  }
+  show_progress(a, s, cmd);
+  return 0;
+}
+
 /* The engine (with the trace of one object) and the program for it. */
 int fp3_run_setup_engine(const fp3_model_args *a, fp3_run_setup *s, const char *cmd) {
   char msg[512];
   const int iss = strcmp(a->engine, "iss") == 0;
   if (fp3_trace_writable(&a->trace, cmd)) return EXIT_USAGE;
+  /* the params zero in every object: terms a compiled program drops */
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  if (s->many) fp3_mscene_zero(&s->sc, zero);
+  else
+    for (unsigned k = 0; k < s->m->nparam; k++) zero[k] = s->in[k] == 0.0f;
+  if (strcmp(a->engine, "spatial") == 0) return setup_spatial(a, s, zero, cmd);
   if (fp3_engine_is_uart(a->engine)) {
     /* a board: its build is what it is; the options must agree with it */
     s->e = fp3_engine_uart_new(a->engine + 5, msg, sizeof msg);
@@ -192,9 +275,7 @@ int fp3_run_setup_engine(const fp3_model_args *a, fp3_run_setup *s, const char *
             s->e ? fp3_engine_error(s->e) : "");
     return EXIT_FAIL;
   }
-  static char label[32]; /* the engine keeps it: one command a process */
-  snprintf(label, sizeof label, "fp3 %s", cmd);
-  fp3_engine_show_progress(s->e, a->json ? NULL : label);
+  show_progress(a, s, cmd);
   if (s->program) {
     fp3_compile_opts o;
     fp3_compile_opts_for(&o, &s->e->config);
@@ -210,10 +291,6 @@ int fp3_run_setup_engine(const fp3_model_args *a, fp3_run_setup *s, const char *
     s->integ = s->img.integrator;
     s->literal = 1;
   } else {
-    unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
-    if (s->many) fp3_mscene_zero(&s->sc, zero);
-    else
-      for (unsigned k = 0; k < s->m->nparam; k++) zero[k] = s->in[k] == 0.0f;
     if (!(s->c = fp3_model_compile_for(s->m, a, zero, &s->e->config, iss, cmd)))
       return EXIT_USAGE;
     if (iss && fp3_model_fit_engine(&s->e, s->c, cmd)) return EXIT_FAIL;
@@ -237,6 +314,9 @@ void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const ch
   const fp3_compile_stats *cs = fp3_compiled_stats(s->c);
   printf("{\"engine\": ");
   fp3_json_string(stdout, a->engine);
+  if (fp3_engine_spatial_is(s->e))
+    printf(", \"pipeline_latency\": %u, \"flags_reported\": false",
+           fp3_engine_spatial_latency(s->e));
   printf(", \"cycles_counted\": \"%s\"",
          strcmp(a->engine, "iss") == 0 ? "instructions issued (the ISS issues one a cycle)"
                                        : "clock cycles");
@@ -259,6 +339,13 @@ void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const ch
          cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
   printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
          a->mode.ftz ? "true" : "false");
+}
+
+void fp3_run_print_flags(const fp3_engine *e, const char *flags) {
+  if (fp3_engine_spatial_is(e))
+    printf("flags: not reported (the spatial pipeline has no flag outputs)\n");
+  else
+    printf("flags: %s\n", flags);
 }
 
 /* "run_error": null, or the first context error with its object and pc. */

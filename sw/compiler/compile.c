@@ -1849,6 +1849,13 @@ const char *fp3_ir_input_name(const fp3_compiled *c, unsigned k) { return c->b.i
 
 float fp3_ir_value(const fp3_compiled *c, unsigned i) { return c->val[i]; }
 
+int fp3_ir_node_reg(const fp3_compiled *c, unsigned i) {
+  const node *y = &c->b.nd[i];
+  if (y->kind == NK_IN) return c->in_reg[y->id];
+  if (y->kind == NK_STATE) return c->state_reg[y->id];
+  return c->host_reg[i];
+}
+
 /* ---- output file ----------------------------------------------------------- */
 
 int fp3_compiled_write(const fp3_compiled *c, const char *path, char *msg, size_t n) {

@@ -362,4 +362,12 @@ const char *fp3_ir_input_name(const fp3_compiled *c, unsigned k);
  * values among them); after a step, also the step's operations. */
 float fp3_ir_value(const fp3_compiled *c, unsigned i);
 
+/* The register of the compiled program that holds node i's value when
+ * the host has written fp3_compiled_model_start's writes: an input's
+ * (FP3_IR_IN), a carried value's (FP3_IR_STATE: fp3_compiled_state_reg),
+ * a host value's (host set); -1 for any other node, and for every node of
+ * fp3_compile_model_ir (no registers).  The spatial engine
+ * (engine_spatial.h) reads a pipeline's inputs from these registers. */
+int fp3_ir_node_reg(const fp3_compiled *c, unsigned i);
+
 #endif /* FP3_COMPILE_H */

@@ -497,6 +497,8 @@ void fp3_spatial_free(fp3_spatial *s) {
 }
 
 const char *fp3_spatial_module(const fp3_spatial *s) { return s->module; }
+
+int fp3_spatial_input_node(const fp3_spatial *s, unsigned k) { return s->input_node[k]; }
 const char *fp3_spatial_verilog(const fp3_spatial *s) { return s->verilog; }
 const char *fp3_spatial_report(const fp3_spatial *s) { return s->report; }
 const fp3_spatial_stats *fp3_spatial_stats_of(const fp3_spatial *s) { return &s->st; }

@@ -83,6 +83,10 @@ const char *fp3_spatial_verilog(const fp3_spatial *s);
 
 const fp3_spatial_stats *fp3_spatial_stats_of(const fp3_spatial *s);
 
+/* The IR node (fp3_ir_node_get) whose value is word k of in_i
+ * (k < stats.inputs); word w of y_i and y_o is carried value w. */
+int fp3_spatial_input_node(const fp3_spatial *s, unsigned k);
+
 /* The report: latency, cores by kind, delay lines and flip-flops, one
  * "name: value" line each (NUL-terminated, owned by s). */
 const char *fp3_spatial_report(const fp3_spatial *s);

@@ -1,0 +1,176 @@
+// spatial_shim.cpp -- extern "C" shim over one Verilated spatial chip top
+// (`fp3 spatial --pipelines N --objects M`: the frame around a model's
+// step module behind its AXI4-Lite slave, sw/compiler/spatial_top.h),
+// built into the shared object that the spatial engine loads with dlopen
+// (sw/compiler/engine_spatial.c builds it; docs/spatial.md "The spatial
+// engine").  The host reaches the chip only as a board's host would:
+// AXI4-Lite writes and reads of one word, each with its response, at the
+// addresses of sw/isa/fp3_spatial_regs.h.  The Verilated class is
+// Vspatial (--prefix Vspatial).
+#include <cstddef>
+#include <cstdint>
+#include <new>
+
+#include "Vspatial.h"
+#include "verilated.h"
+
+namespace {
+
+// Clock cycles one transfer may wait for its handshake or response.
+constexpr int kAxiTimeout = 1000;
+
+struct dut {
+  VerilatedContext ctx;
+  Vspatial *top = nullptr;
+  uint64_t cycles = 0;
+};
+
+// One clock cycle: the inputs as set, the clock low, then the rising edge.
+void tick(dut *d) {
+  d->top->clk_i = 0;
+  d->top->eval();
+  d->top->clk_i = 1;
+  d->top->eval();
+  d->cycles++;
+}
+
+}  // namespace
+
+extern "C" {
+
+// rst_i high for four clock cycles, the AXI inputs idle; the cycle count
+// starts again at 0.
+void fp3_spatial_shim_reset(void *h) {
+  dut *d = static_cast<dut *>(h);
+  Vspatial *t = d->top;
+  t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+  t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+  t->s_axil_awprot_i = t->s_axil_arprot_i = 0;
+  t->s_axil_wstrb_i = 0xF;
+  t->rst_i = 1;
+  for (int k = 0; k < 4; k++) tick(d);
+  t->rst_i = 0;
+  tick(d);
+  d->cycles = 0;
+}
+
+// A new chip, reset; nullptr when out of memory.
+void *fp3_spatial_shim_new(void) {
+  dut *d = new (std::nothrow) dut;
+  if (!d) return nullptr;
+  d->top = new (std::nothrow) Vspatial{&d->ctx};
+  if (!d->top) {
+    delete d;
+    return nullptr;
+  }
+  fp3_spatial_shim_reset(d);
+  return d;
+}
+
+void fp3_spatial_shim_free(void *h) {
+  dut *d = static_cast<dut *>(h);
+  if (!d) return;
+  d->top->final();
+  delete d->top;
+  delete d;
+}
+
+// Write `data` to byte address `addr` (WSTRB 4'b1111; AW and W presented
+// together): BRESP (0 OKAY, 2 SLVERR), or -1 when no response came within
+// kAxiTimeout cycles.
+int fp3_spatial_shim_write(void *h, uint32_t addr, uint32_t data) {
+  dut *d = static_cast<dut *>(h);
+  Vspatial *t = d->top;
+  bool aw = true, w = true;
+  t->s_axil_awaddr_i = addr;
+  t->s_axil_wdata_i = data;
+  t->s_axil_wstrb_i = 0xF;
+  t->s_axil_bready_i = 1;
+  for (int n = 0; n < kAxiTimeout; n++) {
+    t->s_axil_awvalid_i = aw;
+    t->s_axil_wvalid_i = w;
+    t->clk_i = 0;
+    t->eval();
+    const bool aw_hs = aw && t->s_axil_awready_o, w_hs = w && t->s_axil_wready_o;
+    const bool b = t->s_axil_bvalid_o;
+    const int resp = t->s_axil_bresp_o;
+    tick(d);
+    if (aw_hs) aw = false;
+    if (w_hs) w = false;
+    if (b) {
+      t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+      return resp;
+    }
+  }
+  t->s_axil_awvalid_i = t->s_axil_wvalid_i = t->s_axil_bready_i = 0;
+  return -1;
+}
+
+// Read byte address `addr` into *data: RRESP (0 OKAY, 2 SLVERR), or -1
+// when no response came within kAxiTimeout cycles.
+int fp3_spatial_shim_read(void *h, uint32_t addr, uint32_t *data) {
+  dut *d = static_cast<dut *>(h);
+  Vspatial *t = d->top;
+  bool ar = true;
+  t->s_axil_araddr_i = addr;
+  t->s_axil_rready_i = 1;
+  for (int n = 0; n < kAxiTimeout; n++) {
+    t->s_axil_arvalid_i = ar;
+    t->clk_i = 0;
+    t->eval();
+    const bool ar_hs = ar && t->s_axil_arready_o;
+    const bool r = t->s_axil_rvalid_o;
+    const uint32_t v = t->s_axil_rdata_o;
+    const int resp = t->s_axil_rresp_o;
+    tick(d);
+    if (ar_hs) ar = false;
+    if (r) {
+      t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+      *data = v;
+      return resp;
+    }
+  }
+  t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+  return -1;
+}
+
+// Read the n words at byte addresses addr[0 .. n-1] into data[], their
+// RRESP into resp[]: the next AR is presented as soon as the last one is
+// accepted, so the slave's read channel is kept busy (a read every third
+// cycle, against five for one read at a time).  Returns the reads
+// answered, n unless one timed out (kAxiTimeout cycles without a
+// handshake or a response).
+size_t fp3_spatial_shim_read_many(void *h, const uint32_t *addr, size_t n, uint32_t *data,
+                                  int *resp) {
+  dut *d = static_cast<dut *>(h);
+  Vspatial *t = d->top;
+  size_t issued = 0, got = 0;
+  int idle = 0;
+  t->s_axil_rready_i = 1;
+  while (got < n && idle < kAxiTimeout) {
+    t->s_axil_arvalid_i = issued < n;
+    if (issued < n) t->s_axil_araddr_i = addr[issued];
+    t->clk_i = 0;
+    t->eval();
+    const bool ar_hs = t->s_axil_arvalid_i && t->s_axil_arready_o;
+    const bool r = t->s_axil_rvalid_o;
+    const uint32_t v = t->s_axil_rdata_o;
+    const int rr = t->s_axil_rresp_o;
+    tick(d);
+    idle++;
+    if (ar_hs) issued++, idle = 0;
+    if (r) {
+      data[got] = v;
+      resp[got++] = rr;
+      idle = 0;
+    }
+  }
+  t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
+  return got;
+}
+
+// Clock cycles simulated since the last reset (the host's transfers
+// included; the chip's CYCLES register counts a run's own).
+uint64_t fp3_spatial_shim_cycles(void *h) { return static_cast<dut *>(h)->cycles; }
+
+}  // extern "C"

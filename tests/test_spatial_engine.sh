@@ -1,0 +1,175 @@
+#!/usr/bin/env bash
+# test_spatial_engine.sh -- fp3 run --engine spatial (sw/compiler/
+# engine_spatial.h, docs/spatial.md "The spatial engine"): a model's
+# pipeline Verilated on first use into a cache, loaded, and every object's
+# state compared bit for bit with the golden model after every step.
+#   - the ship (rk4se, latency 68): 1 object, 85 objects (more than the
+#     latency), the ship scene scenes/harbour.scene; each
+#     bit-exact, each with the same final states as --engine rtl, and the
+#     JSON valid against docs/fp3.schema.json; fp3 frames of the harbour
+#     bit-exact frame by frame;
+#   - the oscillator's Euler step (latency 7): 1 and 20 objects;
+#   - the cache: the first run says what it builds, with its stages; the
+#     second finds the entry and builds nothing; an entry whose shared
+#     object is cut short, and one holding another module's chip (its HASH
+#     register is not the module's hash), are found unusable, said, and
+#     built again (the second by a Verilator that fails: exit 1, the log
+#     named);
+#   - bad options: --program, --trace and `fp3 bench --engine spatial`
+#     are refused with exit 2.
+# The cache is a temporary folder ($FP3_SPATIAL_CACHE); three Verilator
+# builds, about a minute on this machine.  CLI: $FP3_BIN (default
+# build/fp3).
+set -u
+cd "$(dirname "$0")/.."
+FP3=${FP3_BIN:-$PWD/build/fp3}
+[ -x "$FP3" ] || { echo "test_spatial_engine: $FP3 not built (make build/fp3)"; exit 1; }
+T=$(mktemp -d /tmp/fp3_test_spatial_engine.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+export FP3_SPATIAL_CACHE="$T/cache"
+
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "ok: $*"; }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+
+# same_results A.json B.json: A valid against docs/fp3.schema.json, pass true
+# in both, the same "results" (every object's final state and reference).
+same_results() { python3 tests/same_results.py "$1" "$2"; }
+
+# against_rtl NAME ARGS...: fp3 run ARGS on spatial and on rtl, --json
+against_rtl() {
+  local name=$1; shift
+  if "$FP3" run "$@" --engine spatial --json >"$T/$name.sp.json" 2>"$T/$name.sp.err" &&
+     "$FP3" run "$@" --engine rtl --json >"$T/$name.rtl.json" 2>"$T/$name.rtl.err" &&
+     same_results "$T/$name.sp.json" "$T/$name.rtl.json"; then
+    ok "$name: bit-exact on spatial after every step, the final states of --engine rtl"
+  else
+    cat "$T/$name.sp.err"; bad "$name: spatial against the golden model and rtl"
+  fi
+}
+
+SHIP="--model models/ship.fp3m --integrator rk4se"
+
+# ---- first use: the build, with its progress ---------------------------------
+against_rtl ship-1 $SHIP --steps 40
+if grep -q "spatial: building ship rk4se (Verilator) into $T/cache/fp3_spatial_ship_rk4se-" \
+     "$T/ship-1.sp.err" && grep -q "\[3/3\] link the shared object \.\.\. [0-9.]* s" "$T/ship-1.sp.err"; then
+  ok "the first run says what it builds, and each stage with its time"
+else
+  cat "$T/ship-1.sp.err"; bad "the first run's build messages"
+fi
+entry=$(ls -d "$T"/cache/fp3_spatial_ship_rk4se-* 2>/dev/null | head -1)
+[ -f "$entry/spatial.so" ] && [ -f "$entry/manifest" ] &&
+  [ -z "$(ls -d "$T"/cache/*.tmp.* 2>/dev/null)" ] &&
+  ok "the entry holds spatial.so and its manifest, no temporary left" ||
+  bad "the cache entry: $(ls -la "$T/cache" "$entry" 2>&1)"
+
+# ---- the cache reused ----------------------------------------------------------
+start=$(date +%s.%N)
+against_rtl ship-85 $SHIP --objects 85 --steps 12
+if ! grep -q "building" "$T/ship-85.sp.err" &&
+   python3 -c "import sys; sys.exit(0 if float(sys.argv[2]) - float(sys.argv[1]) < 10 else 1)" \
+     "$start" "$(date +%s.%N)"; then
+  ok "a second run reuses the entry: nothing built"
+else
+  cat "$T/ship-85.sp.err"; bad "the second run built again"
+fi
+python3 - "$T/ship-85.sp.json" <<'PY' && ok "85 objects (> latency 68): CYCLES of 12 one-step runs = 12 x (85 + L + 2)" || bad "85 objects' cycles"
+import json, sys
+j = json.load(open(sys.argv[1]))
+L = j["pipeline_latency"]
+# one run a step (every step observed): the frame feeds 85 objects, one a
+# cycle, and is done L + 2 cycles after the last (docs/spatial.md)
+want = 12 * (85 + L + 2)
+print(f"  latency {L}, cycles {j['cycles']}, expected {want}")
+sys.exit(0 if L == 68 and j["cycles"] == want and j["flags_reported"] is False else 1)
+PY
+against_rtl harbour --scene scenes/harbour.scene --steps 30
+# fp3 frames: the harbour frame by frame (moored ships skipped at rest)
+if "$FP3" frames --scene scenes/harbour.scene --engine spatial --frames 20 --json \
+     >"$T/frames.json" 2>"$T/frames.err" &&
+   python3 - "$T/frames.json" <<'PY'
+import json, sys
+import jsonschema
+j = json.load(open(sys.argv[1]))
+schema = json.load(open("docs/fp3.schema.json"))
+jsonschema.validate(j, {"$defs": schema["$defs"], "$ref": "#/$defs/frames"})
+print(f"  frames: {j['object_frames_run']} object-frames run, {j['object_frames_skipped']} skipped, "
+      f"{j['golden_mismatches']} mismatches")
+sys.exit(0 if j["pass"] and j["golden_mismatches"] == 0 and j["object_frames_skipped"] > 0 else 1)
+PY
+then
+  ok "fp3 frames on spatial: every carried value after every frame bit-exact, objects at rest skipped"
+else
+  cat "$T/frames.err"; bad "fp3 frames on spatial"
+fi
+
+# ---- a second model ------------------------------------------------------------
+OSC="--model models/oscillator.fp3m --integrator euler"
+against_rtl osc-1 $OSC --steps 50
+against_rtl osc-20 $OSC --objects 20 --steps 9
+osc=$(ls -d "$T"/cache/fp3_spatial_oscillator_euler-* 2>/dev/null | head -1)
+
+# ---- an unusable entry is found and built again --------------------------------
+# rebuilt WHAT PATTERN: after the entry was damaged, the run says PATTERN,
+# builds again and passes
+rebuilt() {
+  if "$FP3" run $OSC --steps 5 --engine spatial >"$T/re.out" 2>"$T/re.err" &&
+     grep -q "cache entry $osc is unusable ($2" "$T/re.err" && grep -q "building" "$T/re.err" &&
+     grep -q "^PASS" "$T/re.out"; then
+    ok "$1: found unusable, said, built again, bit-exact"
+  else
+    cat "$T/re.err" "$T/re.out"; bad "$1"
+  fi
+}
+head -c 4096 "$osc/spatial.so" >"$T/cut.so" && cp "$T/cut.so" "$osc/spatial.so"
+rebuilt "a shared object cut short" "spatial.so (4096 bytes"
+# the ship's pipeline in the oscillator's entry, the manifest's size and
+# FNV-1a 64 made to match it: only the HASH the loaded object reports tells
+cp "$entry/spatial.so" "$osc/spatial.so"
+python3 - "$osc" <<'PY'
+import os, re, sys
+d = sys.argv[1]
+h = 0xcbf29ce484222325
+for byte in open(f"{d}/spatial.so", "rb").read():
+    h = ((h ^ byte) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+m = open(f"{d}/manifest").read()
+m = re.sub(r"so_size \d+", f"so_size {os.path.getsize(f'{d}/spatial.so')}", m)
+m = re.sub(r"so_hash [0-9a-f]+", f"so_hash {h:016x}", m)
+open(f"{d}/manifest", "w").write(m)
+PY
+# ... found, and built again by a Verilator that fails (it answers
+# --version and --getenv as the real one, so the entry is the same): the
+# run says so, names the kept log and its last line, and exits 1
+printf '#!/bin/sh\ncase "$1" in --getenv|--version) exec verilator "$@";; esac\necho "%%Error: a build that fails" >&2\nexit 1\n' >"$T/vfail"
+chmod +x "$T/vfail"
+VERILATOR="$T/vfail" "$FP3" run $OSC --steps 5 --engine spatial >"$T/re.out" 2>"$T/re.err"
+rc=$?
+if [ "$rc" -eq 1 ] && grep -q "cache entry $osc is unusable (its HASH is" "$T/re.err" &&
+   grep -q "verilate failed (exit 1); log $osc.failed.log:" "$T/re.err" &&
+   grep -q "a build that fails" "$T/re.err" && [ -f "$osc.failed.log" ] && [ ! -e "$osc" ]; then
+  ok "another module's chip (HASH mismatch): found unusable; the failed rebuild names its log, exit 1"
+else
+  cat "$T/re.err"; bad "HASH mismatch, then a failed build: exit $rc"
+fi
+
+# ---- options that make no sense with the spatial engine ------------------------
+refused() {
+  local what=$1 pattern=$2; shift 2
+  "$FP3" "$@" >"$T/ref.out" 2>"$T/ref.err"
+  local rc=$?
+  if [ "$rc" -eq 2 ] && grep -q -- "$pattern" "$T/ref.err"; then
+    ok "$what: exit 2, '$(head -1 "$T/ref.err" | cut -c1-90)...'"
+  else
+    cat "$T/ref.err"; bad "$what: exit $rc"
+  fi
+}
+refused "--program with --engine spatial" "--program does not go with --engine spatial" \
+  run --engine spatial --program programs/ship_rk4.s --steps 3
+refused "--trace with --engine spatial" "--trace needs --engine rtl" \
+  run --engine spatial $SHIP --trace "$T/x.vcd"
+refused "fp3 bench --engine spatial" "unknown engine 'spatial'" \
+  bench --model models/ship.fp3m --engine spatial
+
+echo "test_spatial_engine: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
