@@ -12,6 +12,8 @@
 # On the ship's folded RK4 step (latency 68) with 1 pipeline and 96
 # objects, and with 3 pipelines and 252.
 #
+# The slave's divider by N (fp3_spatial_divn) is checked alone, on every
+# 10-bit dividend, for N = 1, 2, 3, 5, 12 and 255 (iverilog).
 # A broken frame must fail: the feeder reading an object one cycle before
 # its write-back has landed (PERIOD L + 1), and a frame that never feeds
 # bank 1.  `--mutants` also runs the other broken frames (write-back one
@@ -90,6 +92,17 @@ PY
     echo "$out" | tail -5; echo "FAIL: $name fails, but not the '$check' check"; fail=1
   fi
 }
+
+# the slave's division by N (rtl/fp3_spatial_divn.v), every 10-bit number
+for n in 1 2 3 5 12 255; do
+  if iverilog -g2005 -Wall -Irtl -P tb_spatial_divn.N=$n -P tb_spatial_divn.W=10 \
+       -o "$tmp/divn.vvp" sim/tb_spatial_divn.v rtl/fp3_spatial_divn.v >"$tmp/divn.log" 2>&1 &&
+     out=$(vvp -n "$tmp/divn.vvp" | tail -1) && [[ $out == PASS* ]]; then
+    echo "$out"
+  else
+    cat "$tmp/divn.log"; echo "${out:-}"; echo "FAIL: fp3_spatial_divn N=$n"; fail=1
+  fi
+done
 
 for nm in "1 96" "3 252"; do
   read -r n m <<<"$nm"
