@@ -131,7 +131,7 @@ if [ "${1:-}" = --mutants ]; then
   mutant writeback-early 1 96 fp3_spatial_frame.v "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY))" \
     "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY - 1))" run
   mutant done-late 1 96 fp3_spatial_frame.v ".DRAIN(LATENCY + 2)" ".DRAIN(LATENCY + 3)" cycles
-  mutant awake-bank-unchecked 3 252 fp3_spatial_axil.v "wd_bank_q == wa_bank_q" "1'b1" slverr
+  mutant awake-bank-unchecked 3 252 fp3_spatial_axil.v "wd_bank == wa_bank_q" "1'b1" slverr
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \
     "INPUTS[7:0], CARRIED[7:0]" id
   mutant busy-window-writable 1 96 fp3_spatial_axil.v \
