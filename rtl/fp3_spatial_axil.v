@@ -13,9 +13,11 @@
 // cycles after it is performed (the frame's memory read and its
 // multiplexer register) and held on R until RREADY.  B and R stay valid,
 // with stable payload, until accepted.  Each channel takes a new transfer
-// every second cycle (reads every third), plus, when N is not a power of
-// two, the clog2(M + 1) cycles in which its address (and a write's word)
-// is divided by N (fp3_spatial_divn).  A write and a read that are
+// every second cycle (reads every third).  When N is not a power of two,
+// an access to a window waits clog2(M + 1) cycles for its object or entry
+// number's division by N (fp3_spatial_divn; none for the next word of the
+// same object), and a write to the awake list or COUNT as long for its
+// word's.  A write and a read that are
 // both ready in one cycle take turns (round robin).  All outputs are
 // registered; no READY depends combinationally on a VALID.  The side band
 // (running_o, done_o) follows STATUS a cycle later.
@@ -231,10 +233,14 @@ module fp3_spatial_axil #(
   wire rd_ok = ra_win ? (ra_ok_q && !running_i) : sc_readable;
 
   // ---- arbitration -------------------------------------------------------------
-  // (an address or a word is performed once its division is done)
-  wire wr_cand   = aw_valid_q && w_valid_q && wa_ready && wd_ready &&
+  // (a window's address waits for its division, and so does the word of
+  // an awake entry or COUNT; the scalar registers and the other words
+  // need none)
+  wire wa_divided = wa_ready || !wa_win;
+  wire wd_divided = wd_ready || !(wa_sel_q == SEL_AWAKE || wa_count);
+  wire wr_cand   = aw_valid_q && w_valid_q && wa_divided && wd_divided &&
                    (!b_valid_q || s_axil_bready_i);
-  wire rd_cand   = ar_valid_q && ra_ready && rd_pend_q == {RD_CYCLES{1'b0}} &&
+  wire rd_cand   = ar_valid_q && (ra_ready || !ra_win) && rd_pend_q == {RD_CYCLES{1'b0}} &&
                    (!r_valid_q || s_axil_rready_i);
   wire do_write  = wr_cand && (!rd_cand || !prio_q);
   wire do_read   = rd_cand && (!wr_cand || prio_q);

@@ -4,7 +4,9 @@
 //
 // N a power of two (1, 2, 4, ...): shifts and masks, the result at the
 // edge that samples start_i.  Otherwise restoring division, one quotient
-// bit a cycle from the top: W cycles after start_i, at the cost of a
+// bit a cycle from the top: W cycles after start_i (none when the
+// dividend is the last one again, as for the words of one object), at
+// the cost of a
 // (bits of N + 1)-bit subtractor and two W-bit registers, where a
 // combinational divider would cost thousands of LUTs (yosys synth_ecp5 of
 // the slave for N = 3: 16,616 LUT4 and 3,041 CCU2C with six of them).
@@ -19,7 +21,8 @@
 //   start_i     sample x_i and begin (at this edge)
 //   x_i         the dividend
 //   ready_o     q_o and r_o hold the last dividend's quotient and
-//               remainder (registered; 1 after reset)
+//               remainder (registered; 1 after reset, when they are not
+//               yet any dividend's)
 //   q_o, r_o    x / N and x mod N
 // Reset: rst_i, synchronous, active high: ready.
 `default_nettype none
@@ -61,17 +64,25 @@ module fp3_spatial_divn #(
       wire [NB:0]  r2 = {r_q, x_q[W-1]};       // 2r + the next bit
       wire         ge = r2 >= ND;
       wire [NB:0]  rn = ge ? r2 - ND : r2;
+      // The last dividend: a start with the same one keeps (or goes on
+      // finding) its result instead of dividing again.
+      reg [W-1:0]  last_q;
+      reg          have_q;
+      wire         again = start_i && !(have_q && x_i == last_q);
       always @(posedge clk_i) begin
         if (rst_i) begin
           left_q <= {CW{1'b0}};
-        end else if (start_i) begin
+          have_q <= 1'b0;
+        end else if (again) begin
           left_q <= W[CW-1:0];
+          have_q <= 1'b1;
         end else if (left_q != {CW{1'b0}}) begin
           left_q <= left_q - 1'b1;
         end
-        if (start_i) begin
-          x_q <= x_i;
-          r_q <= {NB{1'b0}};
+        if (again) begin
+          last_q <= x_i;
+          x_q    <= x_i;
+          r_q    <= {NB{1'b0}};
         end else if (left_q != {CW{1'b0}}) begin
           x_q <= x_q << 1;
           q_q <= {q_q[W-2:0], ge};

@@ -1,6 +1,6 @@
 // tb_spatial_divn.v -- exhaustive test of rtl/fp3_spatial_divn.v: for
 // every dividend x < 2^W, x / N and x mod N, started back to back and
-// after idle cycles.  Prints "PASS N=.. W=.." or the first mismatches
+// after idle cycles, and each again at once (the result kept).  Prints "PASS N=.. W=.." or the first mismatches
 // and "FAIL"; tests/test_spatial_chip.sh runs it (iverilog) for several N.
 `default_nettype none
 module tb_spatial_divn;
@@ -29,6 +29,13 @@ module tb_spatial_divn;
       if (q != v / N || r != v % N) begin
         errors = errors + 1;
         if (errors < 10) $display("x=%0d: q=%0d r=%0d, want %0d %0d", v, q, r, v / N, v % N);
+      end
+      // the same dividend again: its result at once
+      start = 1'b1;
+      @(negedge clk) start = 1'b0;
+      if (!ready || q != v / N || r != v % N) begin
+        errors = errors + 1;
+        if (errors < 10) $display("x=%0d again: ready=%0d q=%0d r=%0d", v, ready, q, r);
       end
       for (idle = 0; idle < v % 3; idle = idle + 1) @(negedge clk);
     end
