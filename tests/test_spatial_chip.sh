@@ -3,9 +3,9 @@
 # --objects M`, docs/spatial.md "The frame"): the generated top is the
 # same text twice, `verilator --lint-only -Wall` clean, and Verilated
 # with the harness sim/spatial_chip_tb.cpp, which drives it only through
-# AXI4-Lite and the
-# register map of sw/isa/fp3_spatial_regs.h: ID, HASH, INFO, LATENCY,
-# MAXOBJ, STRIDES; every object's inputs and state written and read back;
+# AXI4-Lite and the register map of sw/isa/fp3_spatial_regs.h: ID, HASH,
+# INFO, LATENCY, MAXOBJ, STRIDES; every object's inputs and state written
+# and read back;
 # the SLVERR cases; runs over awake lists that skip objects, with fewer
 # awake objects than the latency and with more than N x L, after which
 # every object must equal the golden model bit for bit (the sleeping ones
