@@ -13,7 +13,11 @@
 // cycles after it is performed (the frame's memory read and its
 // multiplexer register) and held on R until RREADY.  B and R stay valid,
 // with stable payload, until accepted.  Each channel takes a new transfer
-// every second cycle (reads every third).  A write and a read that are
+// every second cycle (reads every third).  When N is not a power of two,
+// an access to a window waits clog2(M + 1) cycles for its object or entry
+// number's division by N (fp3_spatial_divn; none for the next word of the
+// same object), and a write to the awake list or COUNT as long for its
+// word's.  A write and a read that are
 // both ready in one cycle take turns (round robin).  All outputs are
 // registered; no READY depends combinationally on a VALID.  The side band
 // (running_o, done_o) follows STATUS a cycle later.
@@ -120,7 +124,8 @@ module fp3_spatial_axil #(
   localparam [31:0] ID_VALUE = 32'h46503353;
   localparam [31:0] INFO_VALUE = {8'd0, CARRIED[7:0], INPUTS[7:0], PIPELINES[7:0]};
   localparam [31:0] STRIDES_VALUE = {16'd0, ILOG[7:0], SLOG[7:0]};
-  localparam [19:0] N20 = PIPELINES[19:0];
+  // bits of the numbers the slave divides by N: objects, entries, COUNT <= M
+  localparam integer DW = $clog2(MAXOBJ + 1) < 2 ? 2 : $clog2(MAXOBJ + 1);
   localparam [31:0] M32 = MAXOBJ;
   localparam [BW:0] N_T = PIPELINES[BW:0];
 
@@ -144,11 +149,13 @@ module fp3_spatial_axil #(
   wire [BW-1:0] wa_bank_q;
   wire [RW-1:0] wa_row_q;
   wire [7:0]    wa_word_q;
+  wire          wa_ready;
   fp3_spatial_dec #(.PIPELINES(PIPELINES), .MAXOBJ(MAXOBJ), .CARRIED(CARRIED),
-                    .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW)) u_aw_dec (
-    .clk_i (clk_i), .take_i (aw_take), .addr_i (s_axil_awaddr_i[23:2]),
+                    .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW),
+                    .DW(DW)) u_aw_dec (
+    .clk_i (clk_i), .rst_i (rst_i), .take_i (aw_take), .addr_i (s_axil_awaddr_i[23:2]),
     .sel_o (wa_sel_q), .off_o (wa_off_q), .ok_o (wa_ok_q), .bank_o (wa_bank_q),
-    .row_o (wa_row_q), .word_o (wa_word_q)
+    .row_o (wa_row_q), .word_o (wa_word_q), .ready_o (wa_ready)
   );
   wire wa_scalar = wa_sel_q == SEL_SCALAR;
   wire wa_ctrl   = wa_scalar && wa_off_q == R_CTRL;
@@ -156,24 +163,25 @@ module fp3_spatial_axil #(
   wire wa_count  = wa_scalar && wa_off_q == R_COUNT;
 
   // ---- write data: captured with the awake entry's and COUNT's decode ----------
-  wire        w_take = s_axil_wvalid_i && !w_valid_q;
-  wire [19:0] wv     = s_axil_wdata_i[19:0];
-  wire [19:0] wv_row  = wv / N20;
-  wire [19:0] wv_bank = wv % N20;
-  reg          wd_none_q, wd_obj_ok_q, wd_count_ok_q;
-  reg [BW-1:0] wd_bank_q;
-  reg [RW-1:0] wd_row_q;
-  reg [RB-1:0] wd_rounds_q;  // ceil(value / N), for COUNT
+  // (the value's row and bank, v / N and v mod N, as an awake entry's
+  // object; for COUNT, the rounds ceil(v / N) = v / N + (v mod N != 0))
+  wire          w_take = s_axil_wvalid_i && !w_valid_q;
+  reg           wd_none_q, wd_obj_ok_q, wd_count_ok_q;
+  wire [DW-1:0] wd_row;
+  wire [BW-1:0] wd_bank;
+  wire          wd_ready;
+  fp3_spatial_divn #(.N(PIPELINES), .W(DW), .NB(BW)) u_wd_div (
+    .clk_i (clk_i), .rst_i (rst_i), .start_i (w_take), .x_i (s_axil_wdata_i[DW-1:0]),
+    .ready_o (wd_ready), .q_o (wd_row), .r_o (wd_bank)
+  );
   always @(posedge clk_i) begin
     if (w_take) begin
       wd_none_q     <= s_axil_wdata_i == 32'hFFFFFFFF;
       wd_obj_ok_q   <= s_axil_wdata_i < M32;
       wd_count_ok_q <= s_axil_wdata_i <= M32;
-      wd_bank_q     <= wv_bank[BW-1:0];
-      wd_row_q      <= wv_row[RW-1:0];
-      wd_rounds_q   <= wv_row[RB-1:0] + {{(RB-1){1'b0}}, wv_bank != 20'd0};
     end
   end
+  wire [RB-1:0] wd_rounds = wd_row[RB-1:0] + {{(RB-1){1'b0}}, wd_bank != {BW{1'b0}}};
 
   // ---- read address: captured with its decode ----------------------------------
   wire          ar_take = s_axil_arvalid_i && !ar_valid_q;
@@ -183,16 +191,18 @@ module fp3_spatial_axil #(
   wire [BW-1:0] ra_bank_q;
   wire [RW-1:0] ra_row_q;
   wire [7:0]    ra_word_q;
+  wire          ra_ready;
   fp3_spatial_dec #(.PIPELINES(PIPELINES), .MAXOBJ(MAXOBJ), .CARRIED(CARRIED),
-                    .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW)) u_ar_dec (
-    .clk_i (clk_i), .take_i (ar_take), .addr_i (s_axil_araddr_i[23:2]),
+                    .INPUTS(INPUTS), .SLOG(SLOG), .ILOG(ILOG), .RW(RW), .BW(BW),
+                    .DW(DW)) u_ar_dec (
+    .clk_i (clk_i), .rst_i (rst_i), .take_i (ar_take), .addr_i (s_axil_araddr_i[23:2]),
     .sel_o (ra_sel_q), .off_o (ra_reg_q), .ok_o (ra_ok_q), .bank_o (ra_bank_q),
-    .row_o (ra_row_q), .word_o (ra_word_q)
+    .row_o (ra_row_q), .word_o (ra_word_q), .ready_o (ra_ready)
   );
 
   // ---- checks ------------------------------------------------------------------
   wire wa_win = wa_sel_q != SEL_SCALAR;
-  wire awake_ok = wd_none_q || (wd_obj_ok_q && wd_bank_q == wa_bank_q);
+  wire awake_ok = wd_none_q || (wd_obj_ok_q && wd_bank == wa_bank_q);
   wire wr_ok = w_all_q &&
                (wa_ctrl ||
                 (!running_i && (wa_steps || (wa_count && wd_count_ok_q) ||
@@ -223,8 +233,14 @@ module fp3_spatial_axil #(
   wire rd_ok = ra_win ? (ra_ok_q && !running_i) : sc_readable;
 
   // ---- arbitration -------------------------------------------------------------
-  wire wr_cand   = aw_valid_q && w_valid_q && (!b_valid_q || s_axil_bready_i);
-  wire rd_cand   = ar_valid_q && rd_pend_q == {RD_CYCLES{1'b0}} &&
+  // (a window's address waits for its division, and so does the word of
+  // an awake entry or COUNT; the scalar registers and the other words
+  // need none)
+  wire wa_divided = wa_ready || !wa_win;
+  wire wd_divided = wd_ready || !(wa_sel_q == SEL_AWAKE || wa_count);
+  wire wr_cand   = aw_valid_q && w_valid_q && wa_divided && wd_divided &&
+                   (!b_valid_q || s_axil_bready_i);
+  wire rd_cand   = ar_valid_q && (ra_ready || !ra_win) && rd_pend_q == {RD_CYCLES{1'b0}} &&
                    (!r_valid_q || s_axil_rready_i);
   wire do_write  = wr_cand && (!rd_cand || !prio_q);
   wire do_read   = rd_cand && (!wr_cand || prio_q);
@@ -244,8 +260,16 @@ module fp3_spatial_axil #(
     end
   end
   // an awake entry {empty, row} of bank rd_bank_q as its object's number
+  // (row x N as shifts and adds of the row: no multiplier block)
+  reg [31:0] row_n;
+  integer k;
+  always @(*) begin
+    row_n = 32'd0;
+    for (k = 0; k < 8; k = k + 1)
+      if (PIPELINES[k]) row_n = row_n + ({{(32-RW){1'b0}}, host_rdata_i[RW-1:0]} << k);
+  end
   wire [31:0] entry_obj = host_rdata_i[31] ? 32'hFFFFFFFF
-                        : host_rdata_i[RW-1:0] * PIPELINES + {{(32-BW){1'b0}}, rd_bank_q};
+                        : row_n + {{(32-BW){1'b0}}, rd_bank_q};
   wire [31:0] rd_word = !rd_win_q ? rd_sc_q : rd_awake_q ? entry_obj : host_rdata_i;
 
   always @(posedge clk_i) begin
@@ -276,8 +300,8 @@ module fp3_spatial_axil #(
       if (wr_now && wa_steps) steps_q <= w_data_q;
       if (wr_now && wa_count) begin
         count_q  <= w_data_q;
-        rounds_q <= wd_rounds_q;
-        tail_q   <= wd_bank_q == {BW{1'b0}} ? N_T : {1'b0, wd_bank_q};
+        rounds_q <= wd_rounds;
+        tail_q   <= wd_bank == {BW{1'b0}} ? N_T : {1'b0, wd_bank};
       end
       // read: hold AR, perform, capture the word
       if (ar_take) ar_valid_q <= 1'b1;
@@ -305,7 +329,7 @@ module fp3_spatial_axil #(
   assign host_row_o   = do_write ? wa_row_q  : ra_row_q;
   assign host_word_o  = do_write ? wa_word_q : ra_word_q;
   assign host_wdata_o = wa_sel_q == SEL_AWAKE
-                      ? {wd_none_q, {(31 - RW){1'b0}}, wd_row_q} : w_data_q;
+                      ? {wd_none_q, {(31 - RW){1'b0}}, wd_row[RW-1:0]} : w_data_q;
   assign start_o      = wr_now && wa_ctrl && w_data_q[0];
   assign steps_o      = steps_q;
   assign rounds_o     = rounds_q;
@@ -331,6 +355,6 @@ module fp3_spatial_axil #(
   // Not decoded: protection bits and the byte offset.  The entry's row
   // and bank fields above RW, BW bits are zero for a number below MAXOBJ.
   wire unused = &{1'b0, s_axil_awprot_i, s_axil_arprot_i, s_axil_awaddr_i[1:0],
-                  s_axil_araddr_i[1:0], wv_row, wv_bank, host_rdata_i[30:RW]};
+                  s_axil_araddr_i[1:0], wd_row, host_rdata_i[30:RW]};
 endmodule
 `default_nettype wire

@@ -227,12 +227,26 @@ module fp3_spatial_frame #(
       rword_q <= host_word_i;
     end
   end
-  // (word and bank are in range: the slave answers SLVERR otherwise)
-  wire [31:0]  rbank = {{(32-BW){1'b0}}, rbank_q};
-  wire [31:0]  rword = {24'd0, rword_q};
-  wire [RW:0]  awake_word = awake_rd[rbank * (RW + 1) +: RW + 1];
-  wire [31:0]  state_word = state_rd[32 * (rbank * NC + rword) +: 32];
-  wire [31:0]  input_word = input_rd[32 * (rbank * NI + rword) +: 32];
+  // (word and bank are in range: the slave answers SLVERR otherwise).
+  // Multiplexers by comparison with constants, so that no index is
+  // multiplied (synthesis would spend multiplier blocks on it).
+  reg [RW:0]  awake_word;
+  reg [31:0]  state_word, input_word;
+  integer     i, j;
+  always @(*) begin
+    awake_word = {(RW+1){1'b0}};
+    state_word = 32'd0;
+    input_word = 32'd0;
+    for (i = 0; i < PIPELINES; i = i + 1) begin
+      if (rbank_q == i[BW-1:0]) begin
+        awake_word = awake_rd[i*(RW+1) +: RW+1];
+        for (j = 0; j < NC; j = j + 1)
+          if (rword_q == j[7:0]) state_word = state_rd[(i*NC + j)*32 +: 32];
+        for (j = 0; j < NI; j = j + 1)
+          if (rword_q == j[7:0]) input_word = input_rd[(i*NI + j)*32 +: 32];
+      end
+    end
+  end
   always @(posedge clk_i) begin
     case (rsel_q)
       SEL_AWAKE: rdata_q <= {awake_word[RW], {(31 - RW){1'b0}}, awake_word[RW-1:0]};

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # test_spatial_chip.sh -- the spatial chip (`fp3 spatial --pipelines N
-# --objects M`, docs/spatial.md "The frame"): the generated top is
-# `verilator --lint-only -Wall` clean, and Verilated with the harness
-# sim/spatial_chip_tb.cpp, which drives it only through AXI4-Lite and the
-# register map of sw/isa/fp3_spatial_regs.h: ID, HASH, INFO, LATENCY,
-# MAXOBJ, STRIDES; every object's inputs and state written and read back;
+# --objects M`, docs/spatial.md "The frame"): the generated top is the
+# same text twice, `verilator --lint-only -Wall` clean, and Verilated
+# with the harness sim/spatial_chip_tb.cpp, which drives it only through
+# AXI4-Lite and the register map of sw/isa/fp3_spatial_regs.h: ID, HASH,
+# INFO, LATENCY, MAXOBJ, STRIDES; every object's inputs and state written
+# and read back;
 # the SLVERR cases; runs over awake lists that skip objects, with fewer
 # awake objects than the latency and with more than N x L, after which
 # every object must equal the golden model bit for bit (the sleeping ones
@@ -12,6 +13,8 @@
 # On the ship's folded RK4 step (latency 68) with 1 pipeline and 96
 # objects, and with 3 pipelines and 252.
 #
+# The slave's divider by N (fp3_spatial_divn) is checked alone, on every
+# 10-bit dividend, for N = 1, 2, 3, 5, 12 and 255 (iverilog).
 # A broken frame must fail: the feeder reading an object one cycle before
 # its write-back has landed (PERIOD L + 1), and a frame that never feeds
 # bank 1.  `--mutants` also runs the other broken frames (write-back one
@@ -91,10 +94,24 @@ PY
   fi
 }
 
+# the slave's division by N (rtl/fp3_spatial_divn.v), every 10-bit number
+for n in 1 2 3 5 12 255; do
+  if iverilog -g2005 -Wall -Irtl -P tb_spatial_divn.N=$n -P tb_spatial_divn.W=10 \
+       -o "$tmp/divn.vvp" sim/tb_spatial_divn.v rtl/fp3_spatial_divn.v >"$tmp/divn.log" 2>&1 &&
+     out=$(vvp -n "$tmp/divn.vvp" | tail -1) && [[ $out == PASS* ]]; then
+    echo "$out"
+  else
+    cat "$tmp/divn.log"; echo "${out:-}"; echo "FAIL: fp3_spatial_divn N=$n"; fail=1
+  fi
+done
+
 for nm in "1 96" "3 252"; do
   read -r n m <<<"$nm"
   gen "$n" "$m" || { fail=1; continue; }
   d="$tmp/n$n"
+  # shellcheck disable=SC2086
+  "$FP3" spatial $MODEL --pipelines "$n" --objects "$m" -o "$d-again" 2>/dev/null &&
+    cmp -s "$d/$TOP.v" "$d-again/$TOP.v" || { echo "FAIL: N=$n: two runs write different tops"; fail=1; }
   if ! $VERILATOR --lint-only -Wall -Irtl -y rtl --top-module $TOP "$d/$TOP.v" "$d/$STEP.v" \
       >"$d.lint" 2>&1; then
     head -20 "$d.lint"; echo "FAIL: N=$n: verilator --lint-only -Wall"; fail=1
@@ -118,7 +135,7 @@ if [ "${1:-}" = --mutants ]; then
   mutant writeback-early 1 96 fp3_spatial_frame.v "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY))" \
     "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY - 1))" run
   mutant done-late 1 96 fp3_spatial_frame.v ".DRAIN(LATENCY + 2)" ".DRAIN(LATENCY + 3)" cycles
-  mutant awake-bank-unchecked 3 252 fp3_spatial_axil.v "wd_bank_q == wa_bank_q" "1'b1" slverr
+  mutant awake-bank-unchecked 3 252 fp3_spatial_axil.v "wd_bank == wa_bank_q" "1'b1" slverr
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \
     "INPUTS[7:0], CARRIED[7:0]" id
   mutant busy-window-writable 1 96 fp3_spatial_axil.v \

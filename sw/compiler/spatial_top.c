@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../isa/fp3_spatial_regs.h"
+#include "fp3_spatial_regs.h"
 #include "report.h"
 
 uint64_t fp3_spatial_hash(const fp3_spatial *s) {

@@ -1,0 +1,100 @@
+// fp3_spatial_divn -- division of a W-bit number by the constant N:
+// quotient and remainder, for the spatial chip's AXI slave (an object or
+// entry number to its row, o / N, and bank, o mod N).
+//
+// N a power of two (1, 2, 4, ...): shifts and masks, the result at the
+// edge that samples start_i.  Otherwise restoring division, one quotient
+// bit a cycle from the top: W cycles after start_i (none when the
+// dividend is the last one again, as for the words of one object), at
+// the cost of a
+// (bits of N + 1)-bit subtractor and two W-bit registers, where a
+// combinational divider would cost thousands of LUTs (yosys synth_ecp5 of
+// the slave for N = 3: 16,616 LUT4 and 3,041 CCU2C with six of them).
+// Restoring division: r = 0; for i = W-1 .. 0: r = 2r + x[i]; if r >= N
+// then r = r - N and q[i] = 1, else q[i] = 0.
+//
+// Parameters
+//   N   the divisor, 1 .. 255
+//   W   dividend bits, >= 2
+//   NB  remainder bits, clog2(N) at least 1
+// Ports
+//   start_i     sample x_i and begin (at this edge)
+//   x_i         the dividend
+//   ready_o     q_o and r_o hold the last dividend's quotient and
+//               remainder (registered; 1 after reset, when they are not
+//               yet any dividend's)
+//   q_o, r_o    x / N and x mod N
+// Reset: rst_i, synchronous, active high: ready.
+`default_nettype none
+module fp3_spatial_divn #(
+  parameter integer N  = 3,
+  parameter integer W  = 8,
+  parameter integer NB = 2
+) (
+  input  wire          clk_i,
+  input  wire          rst_i,
+  input  wire          start_i,
+  input  wire [W-1:0]  x_i,
+  output wire          ready_o,
+  output wire [W-1:0]  q_o,
+  output wire [NB-1:0] r_o
+);
+  generate
+    if ((N & (N - 1)) == 0) begin : g_shift
+      localparam integer S = $clog2(N);
+      localparam integer NB_MASK = N - 1;
+      reg [W-1:0]  q_q;
+      reg [NB-1:0] r_q;
+      always @(posedge clk_i) begin
+        if (start_i) begin
+          q_q <= x_i >> S;
+          r_q <= x_i[NB-1:0] & NB_MASK[NB-1:0];
+        end
+      end
+      assign ready_o = 1'b1;
+      assign q_o = q_q;
+      assign r_o = r_q;
+      wire unused = &{1'b0, rst_i};
+    end else begin : g_restore
+      localparam integer CW = $clog2(W + 1);
+      localparam [NB:0]  ND = N[NB:0];
+      reg [W-1:0]  x_q, q_q;
+      reg [NB-1:0] r_q;
+      reg [CW-1:0] left_q;  // quotient bits left to find
+      wire [NB:0]  r2 = {r_q, x_q[W-1]};       // 2r + the next bit
+      wire         ge = r2 >= ND;
+      wire [NB:0]  rn = ge ? r2 - ND : r2;
+      // The last dividend: a start with the same one keeps (or goes on
+      // finding) its result instead of dividing again.
+      reg [W-1:0]  last_q;
+      reg          have_q;
+      wire         again = start_i && !(have_q && x_i == last_q);
+      always @(posedge clk_i) begin
+        if (rst_i) begin
+          left_q <= {CW{1'b0}};
+          have_q <= 1'b0;
+        end else if (again) begin
+          left_q <= W[CW-1:0];
+          have_q <= 1'b1;
+        end else if (left_q != {CW{1'b0}}) begin
+          left_q <= left_q - 1'b1;
+        end
+        if (again) begin
+          last_q <= x_i;
+          x_q    <= x_i;
+          r_q    <= {NB{1'b0}};
+        end else if (left_q != {CW{1'b0}}) begin
+          x_q <= x_q << 1;
+          q_q <= {q_q[W-2:0], ge};
+          r_q <= rn[NB-1:0];
+        end
+      end
+      assign ready_o = left_q == {CW{1'b0}};
+      assign q_o = q_q;
+      assign r_o = r_q;
+      // rn < N < 2^NB: its top bit is 0.
+      wire unused = &{1'b0, rn[NB]};
+    end
+  endgenerate
+endmodule
+`default_nettype wire
