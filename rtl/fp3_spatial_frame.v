@@ -237,6 +237,7 @@ module fp3_spatial_frame #(
     awake_word = {(RW+1){1'b0}};
     state_word = 32'd0;
     input_word = 32'd0;
+    j = 0;  // loop index assigned on every path: no latch for synthesis
     for (i = 0; i < PIPELINES; i = i + 1) begin
       if (rbank_q == i[BW-1:0]) begin
         awake_word = awake_rd[i*(RW+1) +: RW+1];
