@@ -96,31 +96,38 @@ for c in "${cases[@]}"; do
     fi
   done
   if [ "$all" = 1 ]; then rm -rf "$d/obj"; fi
-  # the harness bites: the ship's module with one delay stage removed (the
-  # first data delay line deeper than 1 made one stage shorter) must fail
+  # the harness bites: the ship's module with one delay stage removed must
+  # fail, whichever form the shortened segment has: the first flip-flop
+  # segment deeper than 1 (fp_pipe), the first LUT-RAM segment and the
+  # first block-RAM segment (fp_delay STYLE 1 and 2) made one stage shorter
   if [ "$name" = ship-folded ]; then
-    python3 - "$v" "$d/short.v" <<'PY'
+    for form in ff lutram ebr; do
+      python3 - "$v" "$d/short-$form.v" "$form" <<'PY'
 import re, sys
 s = open(sys.argv[1]).read()
-for m in re.finditer(r"fp_pipe #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\)\)", s):
+pat = {"ff": r"fp_pipe #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\)\)",
+       "lutram": r"fp_delay #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\), \.STYLE\(1\)\)",
+       "ebr": r"fp_delay #\(\.WIDTH\(32\), \.DEPTH\(([0-9]+)\), \.STYLE\(2\)\)"}[sys.argv[3]]
+for m in re.finditer(pat, s):
     if int(m.group(1)) > 1:
         s = s[:m.start(1)] + str(int(m.group(1)) - 1) + s[m.end(1):]
         break
 else:
-    sys.exit("no delay line to shorten")
+    sys.exit("no %s delay segment to shorten" % sys.argv[3])
 open(sys.argv[2], "w").write(s)
 PY
-    if build_tb "$mod" "$d/short.v" "$d/objs" "$d/tbs"; then
-      for set in one many; do
-        if out=$("$d/tbs" "$d/$set/vectors.txt" 2>&1); then
-          echo "FAIL: $name with a delay stage removed passes ($set)"; fail=1
-        else
-          echo "PASS: $name with a delay stage removed fails ($set): $(echo "$out" | tail -1)"
-        fi
-      done
-    else
-      echo "FAIL: $name: Verilator build of the shortened module"; fail=1
-    fi
+      if build_tb "$mod" "$d/short-$form.v" "$d/objs-$form" "$d/tbs-$form"; then
+        for set in one many; do
+          if out=$("$d/tbs-$form" "$d/$set/vectors.txt" 2>&1); then
+            echo "FAIL: $name with a $form delay stage removed passes ($set)"; fail=1
+          else
+            echo "PASS: $name with a $form delay stage removed fails ($set): $(echo "$out" | tail -1)"
+          fi
+        done
+      else
+        echo "FAIL: $name: Verilator build of the module shortened in $form"; fail=1
+      fi
+    done
   fi
 done
 

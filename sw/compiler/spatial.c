@@ -151,6 +151,38 @@ static int need(struct fp3_spatial *s, int i, unsigned d) {
   return 0;
 }
 
+/* The form of a delay segment of d stages (spatial.h's rule): 0
+ * flip-flops, 1 LUT RAM, 2 block RAM. */
+static int segment_style(unsigned d) {
+  return d <= FP3_SPATIAL_FF_MAX ? 0 : d <= FP3_SPATIAL_LUTRAM_MAX ? 1 : 2;
+}
+
+/* The words of rtl/fp_delay.v's RAM for a segment of d stages in `style`:
+ * the power of two >= d - (read stages) + 1. */
+static unsigned segment_words(unsigned d, int style) {
+  unsigned gap = d - (style == 2 ? 2u : 1u), w = 2;
+  while (w < gap + 1) w *= 2;
+  return w;
+}
+
+/* Add a segment of d stages to the statistics. */
+static void count_segment(fp3_spatial_stats *st, unsigned d) {
+  const int style = segment_style(d);
+  if (style == 0) {
+    st->ff_segments++;
+    st->ff_stages += d;
+    st->delay_ffs += 32 * d;
+  } else if (style == 1) {
+    st->lutram_segments++;
+    st->lutram_stages += d;
+    st->lutram_cells += 8 * ((segment_words(d, 1) + 15) / 16); /* 16 words x 4 bits */
+  } else {
+    st->ebr_segments++;
+    st->ebr_stages += d;
+    st->ebr_blocks += (segment_words(d, 2) + 511) / 512; /* 512 x 36, 1024 x 18, ... */
+  }
+}
+
 /* The schedule: sources, ASAP cycles, the pipeline's latency, the taps. */
 static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
   fp3_compiled *c = s->c;
@@ -228,8 +260,12 @@ static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
     s->st.delay_lines++;
     s->st.delay_stages += x->delay;
     if (x->delay > s->st.longest_delay) s->st.longest_delay = x->delay;
+    for (unsigned d = 1, prev = 0; d <= x->delay; d++)
+      if (x->tap[d]) {
+        count_segment(&s->st, d - prev);
+        prev = d;
+      }
   }
-  s->st.delay_ffs = 32 * s->st.delay_stages;
   s->st.inputs = s->ninput;
   s->st.carried = carried;
   free(used);
@@ -260,19 +296,24 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
       "// last operand is ready, its result `LATENCY` of its core later.\n"
       "// Balancing: each value has one delay line (fp_pipe segments between\n"
       "// taps) as long as its latest reader needs; a reader in cycle s of a value\n"
-      "// ready in cycle r taps it at s - r stages.  Delay lines are flip-flops.\n"
+      "// ready in cycle r taps it at s - r stages.  A segment of up to %u stages\n"
+      "// is flip-flops (fp_pipe), up to %u LUT RAM (fp_delay STYLE 1), longer\n"
+      "// block RAM (fp_delay STYLE 2).\n"
       "//\n"
       "// Latency: %u cycles.  Cores: %u (",
-      s->module, s->m->name, s->m->file, s->integ, st->latency, st->ncores);
+      s->module, s->m->name, s->m->file, s->integ, FP3_SPATIAL_FF_MAX, FP3_SPATIAL_LUTRAM_MAX,
+      st->latency, st->ncores);
   int first = 1;
   for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
     if (st->cores[k]) {
       fp3_strbuf_printf(t, "%s%u %s", first ? "" : ", ", st->cores[k], kind_name[k]);
       first = 0;
     }
-  fp3_strbuf_printf(t, ").\n// Delay lines: %u, %u stages, %u flip-flops (longest %u).\n"
+  fp3_strbuf_printf(t, ").\n// Delay lines: %u, %u stages (longest %u): %u flip-flops, %u LUT-RAM\n"
+                       "// cells, %u block RAMs.\n"
                        "// Cores: %s, %s.\n//\n",
-                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay,
+                    st->delay_lines, st->delay_stages, st->longest_delay, st->delay_ffs,
+                    st->lutram_cells, st->ebr_blocks,
                     s->o.rtz ? "round toward zero" : "round to nearest even",
                     s->o.ftz ? "subnormals flushed to zero" : "subnormals supported");
   fp3_strbuf_printf(t, "// Ports:\n"
@@ -326,10 +367,13 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     if (x->src == SRC_CORE)
       fp3_strbuf_printf(t, "  wire [31:0] %s;\n  wire        %s_valid;\n  wire [4:0]  %s_flags;\n",
                         x->sig, x->sig, x->sig);
-    for (unsigned d = 1; d <= x->delay; d++)
-      if (x->tap[d])
-        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n  wire        unused_%s_d%u;\n", x->sig, d,
-                          x->sig, d);
+    for (unsigned d = 1, prev = 0; d <= x->delay; d++)
+      if (x->tap[d]) {
+        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n", x->sig, d);
+        if (segment_style(d - prev) == 0)
+          fp3_strbuf_printf(t, "  wire        unused_%s_d%u;\n", x->sig, d);
+        prev = d;
+      }
   }
   /* cores */
   fp3_strbuf_printf(t, "\n  // ---- cores, in the IR's order ----\n");
@@ -388,10 +432,17 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     for (unsigned d = 1; d <= x->delay; d++) {
       if (!x->tap[d]) continue;
       operand(s, (int)i, prev, b, sizeof b);
-      fp3_strbuf_printf(t, "  fp_pipe #(.WIDTH(32), .DEPTH(%u)) u_%s_d%u (\n"
-                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b0), .data_i(%s),\n"
-                           "    .valid_o(unused_%s_d%u), .data_o(%s_d%u)\n  );\n",
-                        d - prev, x->sig, d, b, x->sig, d, x->sig, d);
+      const int style = segment_style(d - prev);
+      if (style == 0)
+        fp3_strbuf_printf(t, "  fp_pipe #(.WIDTH(32), .DEPTH(%u)) u_%s_d%u (\n"
+                             "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b0), .data_i(%s),\n"
+                             "    .valid_o(unused_%s_d%u), .data_o(%s_d%u)\n  );\n",
+                          d - prev, x->sig, d, b, x->sig, d, x->sig, d);
+      else
+        fp3_strbuf_printf(t, "  fp_delay #(.WIDTH(32), .DEPTH(%u), .STYLE(%d)) u_%s_d%u (  // %s\n"
+                             "    .clk_i(clk_i), .data_i(%s), .data_o(%s_d%u)\n  );\n",
+                          d - prev, style, x->sig, d, style == 1 ? "LUT RAM" : "block RAM", b,
+                          x->sig, d);
       prev = d;
     }
   }
@@ -429,8 +480,14 @@ static void make_report(struct fp3_spatial *s, fp3_strbuf *t) {
   fp3_strbuf_printf(t, "cores: %u", st->ncores);
   for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
     if (st->cores[k]) fp3_strbuf_printf(t, ", %s %u", kind_name[k], st->cores[k]);
-  fp3_strbuf_printf(t, "\ndelay lines: %u values, %u stages, %u flip-flops (longest %u stages)\n",
-                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay);
+  fp3_strbuf_printf(t, "\ndelay lines: %u values, %u stages (longest %u stages)\n",
+                    st->delay_lines, st->delay_stages, st->longest_delay);
+  fp3_strbuf_printf(t, "delay flip-flops: %u segments, %u stages, %u flip-flops\n",
+                    st->ff_segments, st->ff_stages, st->delay_ffs);
+  fp3_strbuf_printf(t, "delay LUT RAM: %u segments, %u stages, %u TRELLIS_DPR16X4\n",
+                    st->lutram_segments, st->lutram_stages, st->lutram_cells);
+  fp3_strbuf_printf(t, "delay block RAM: %u segments, %u stages, %u DP16KD\n",
+                    st->ebr_segments, st->ebr_stages, st->ebr_blocks);
   fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u, div/sqrt %u, sign %u; %s%s\n",
                     s->o.add_latency, s->o.mul_latency, s->o.div_latency, s->o.sign_latency,
                     s->o.rtz ? "rtz" : "rne", s->o.ftz ? ", ftz" : "");

@@ -22,11 +22,40 @@
  * Balancing: a value available in cycle t and read in cycle s > t passes
  * s - t register stages.  Each value has one delay line, as long as its
  * latest reader needs, and every reader taps it where it needs it (the
- * line is built from rtl/fp_pipe.v segments between the taps), so the
- * flip-flops of a value are 32 x (its longest delay).  This slice builds
- * every delay line from flip-flops; lines longer than a few cycles
- * belong in distributed or block RAM (docs/spatial.md, not done yet).
+ * line is a chain of segments between the taps), so a value's line holds
+ * 32 x (its longest delay) bits however many readers it has.  (One RAM per
+ * reader instead would hold the sum of the readers' delays, and cost as
+ * many block RAMs as a chain of segments.)
+ *
+ * Delay segments: each segment of D stages takes the form that costs
+ * least for its length (the width is always 32 bits), measured with Yosys
+ * 0.23 `synth_ecp5` of one 32-bit segment (rtl/fp_pipe.v WIDTH=32, and
+ * rtl/fp_delay.v WIDTH=32 STYLE 1 or 2, `hierarchy -chparam ...;
+ * synth_ecp5`), and nextpnr-ecp5's packing of a TRELLIS_DPR16X4 LUT-RAM
+ * cell into 6 LUT4 sites (4 of RAM, 2 of its write port: 8 cells and 7
+ * LUT4s of a 16-stage line placed as 57 TRELLIS_COMB):
+ *
+ *   D     flip-flops (fp_pipe)   LUT RAM (STYLE 1)            block RAM (STYLE 2)
+ *   4     128 FF                 8 DPR16X4 + 3 LUT4 + 36 FF   1 EBR + 3 LUT4 + 35 FF
+ *   16    512 FF                 8 DPR16X4 + 7 LUT4 + 40 FF   1 EBR + 7 LUT4 + 39 FF
+ *   32    1,024 FF               16 DPR16X4 + 43 LUT4 + 42 FF 1 EBR + 9 LUT4 + 41 FF
+ *   64    2,048 FF               32 DPR16X4 + 144 LUT4 + 44 FF 1 EBR + 12 LUT4 + 44 FF
+ *   512   16,384 FF              -                            1 EBR + 20 LUT4 + 50 FF
+ *
+ * The rule: D <= FP3_SPATIAL_FF_MAX (3) flip-flops (96 FFs, against about
+ * 91 cells of LUT RAM: the break-even, and a flip-flop is the fastest
+ * form); D <= FP3_SPATIAL_LUTRAM_MAX (16) LUT RAM (one bank of 16 words:
+ * about 55 LUT4 sites and 40 FFs, no read multiplexer); longer block RAM
+ * (one EBR holds up to 513 stages; LUT RAM would cost about 4.5 LUT4
+ * sites a stage more: 140 LUT4s at 32 stages, 0.17 % of the LFE5U-85F's
+ * LUT4s, against one of its 208 EBRs, 0.48 %, but the lanes' and spatial
+ * builds run out of LUT4s first).
  */
+
+/* The delay-segment rule (see above): stages up to which a segment is
+ * flip-flops, and up to which it is LUT RAM; longer: block RAM. */
+#define FP3_SPATIAL_FF_MAX 3u
+#define FP3_SPATIAL_LUTRAM_MAX 16u
 #ifndef FP3_SPATIAL_H
 #define FP3_SPATIAL_H
 
@@ -59,9 +88,17 @@ typedef struct fp3_spatial_stats {
   unsigned inputs;               /* 32-bit inputs per object (in_i)      */
   unsigned carried;              /* carried values per object (y_i, y_o) */
   unsigned delay_lines;          /* values with a delay line             */
-  unsigned delay_stages;         /* their register stages, summed        */
-  unsigned delay_ffs;            /* their flip-flops: 32 per stage       */
+  unsigned delay_stages;         /* their stages, summed                 */
   unsigned longest_delay;        /* the longest delay line, stages       */
+  unsigned ff_segments;          /* segments of flip-flops (fp_pipe)     */
+  unsigned ff_stages;            /* their stages                         */
+  unsigned delay_ffs;            /* their flip-flops: 32 per stage       */
+  unsigned lutram_segments;      /* segments in LUT RAM (fp_delay 1)     */
+  unsigned lutram_stages;        /* their stages                         */
+  unsigned lutram_cells;         /* their TRELLIS_DPR16X4 (16 x 4 bits)  */
+  unsigned ebr_segments;         /* segments in block RAM (fp_delay 2)   */
+  unsigned ebr_stages;           /* their stages                         */
+  unsigned ebr_blocks;           /* their DP16KD (512 x 36 each)         */
 } fp3_spatial_stats;
 
 typedef struct fp3_spatial fp3_spatial;
