@@ -5,5 +5,5 @@
 # each with sim/spatial_tb.cpp and checks every object after every step
 # bit for bit against the golden model (about 40 s, most of it the five
 # Verilator builds); it needs build/fp3 and the Verilated runtime.
-TEST_SCRIPTS += tests/test_spatial.sh
+TEST_SCRIPTS += tests/test_spatial.sh tests/test_scaleb.sh
 test-build: $(BUILD)/fp3 $(VERILATED_OBJS)

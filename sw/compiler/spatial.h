@@ -4,7 +4,9 @@
  * pipelined Verilog module that takes one object per cycle.
  *
  * Every live operation of the IR gets its own core (rtl/fp_add.v for add
- * and sub, fp_mul, fp_div, fp_sqrt, fp_sign for abs, neg, min and max),
+ * and sub, fp_mul, fp_div, fp_sqrt, fp_sign for abs, neg, min and max;
+ * rtl/fp_scaleb.v for a multiply by a constant +-2^k, an exponent
+ * adjustment with the same results and flags as fp_mul and no multiplier),
  * so the module computes exactly the operations of the golden model
  * fp3_compiled_model_step, and its results equal it bit for bit.  The
  * loop invariants the processor computes once in its prologue are
@@ -71,19 +73,26 @@ typedef struct fp3_spatial_opts {
   unsigned mul_latency;  /* fp_mul LATENCY                               */
   unsigned div_latency;  /* fp_div and fp_sqrt LATENCY                   */
   unsigned sign_latency; /* fp_sign LATENCY (abs, neg, min, max)         */
+  unsigned scaleb_latency; /* fp_scaleb LATENCY                          */
+  int scaleb;            /* 1: a multiply by a constant +-2^k (k = -126
+                            to 127) is an fp_scaleb core (an exponent
+                            adjustment, the same results and flags as
+                            fp_mul, no MULT18X18D); 0: fp_mul           */
   int rtz;               /* 1: every core rounds toward zero, 0: RNE     */
   int ftz;               /* 1: flush-to-zero cores (FTZ = 1)             */
 } fp3_spatial_opts;
 
 /* The latencies of the processor's default build (fp3_compile_defaults),
- * fp_sign 1, RNE, subnormals supported. */
+ * fp_sign 1, fp_scaleb 2 (on), RNE, subnormals supported. */
 void fp3_spatial_defaults(fp3_spatial_opts *o);
 
 /* What a generated pipeline holds. */
 typedef struct fp3_spatial_stats {
   unsigned latency;              /* L: cycles from an object's inputs to
                                     its new carried values              */
-  unsigned cores[FP3_IR_KINDS];  /* core instances per operation kind    */
+  unsigned cores[FP3_IR_KINDS];  /* core instances per operation kind
+                                    (FP3_IR_MUL: fp_mul only)           */
+  unsigned scaleb;               /* fp_scaleb cores (multiplies by +-2^k) */
   unsigned ncores;               /* all of them                          */
   unsigned inputs;               /* 32-bit inputs per object (in_i)      */
   unsigned carried;              /* carried values per object (y_i, y_o) */
@@ -99,7 +108,36 @@ typedef struct fp3_spatial_stats {
   unsigned ebr_segments;         /* segments in block RAM (fp_delay 2)   */
   unsigned ebr_stages;           /* their stages                         */
   unsigned ebr_blocks;           /* their DP16KD (512 x 36 each)         */
+  /* The area estimate of one pipeline on the LFE5U-85F (spatial.c's table
+   * of per-core costs measured with Yosys synth_ecp5, plus the delay
+   * segments and the valid bit's line; LUT4s as nextpnr's TRELLIS_COMB
+   * sites: a LUT4, two per CCU2C, six per TRELLIS_DPR16X4). */
+  unsigned est_lut4;             /* LUT4 sites                           */
+  unsigned est_ff;               /* flip-flops                           */
+  unsigned est_mult;             /* MULT18X18D                           */
+  unsigned est_ebr;              /* DP16KD (the delay segments')         */
+  unsigned est_inexact;          /* cores whose configuration is not in
+                                    the table (the nearest one counted)  */
+  unsigned fit;                  /* pipelines that fit the device within
+                                    FP3_SPATIAL_BUDGET_* (0: not one)    */
+  const char *limit;             /* the resource that limits `fit`       */
 } fp3_spatial_stats;
+
+/* The LFE5U-85F (Lattice FPGA-DS-02012 "ECP5 and ECP5-5G Family Data
+ * Sheet", table 1.1) and the share of it a pipeline may take: the rest is
+ * left for the frame (state and parameter memory, feeder, AXI4-Lite slave)
+ * and for routing.  75 % of the LUT4s and flip-flops: the prototype of
+ * issue 63 placed three folded ship pipelines at 78 % of the LUT4s;
+ * every MULT18X18D (the frame has no multiply); the EBRs less 16 for the
+ * frame's state and parameter memory. */
+#define FP3_SPATIAL_DEVICE_LUT4 83640u
+#define FP3_SPATIAL_DEVICE_FF 83640u
+#define FP3_SPATIAL_DEVICE_MULT 156u
+#define FP3_SPATIAL_DEVICE_EBR 208u
+#define FP3_SPATIAL_BUDGET_LUT4 (FP3_SPATIAL_DEVICE_LUT4 * 3u / 4u)
+#define FP3_SPATIAL_BUDGET_FF (FP3_SPATIAL_DEVICE_FF * 3u / 4u)
+#define FP3_SPATIAL_BUDGET_MULT FP3_SPATIAL_DEVICE_MULT
+#define FP3_SPATIAL_BUDGET_EBR (FP3_SPATIAL_DEVICE_EBR - 16u)
 
 typedef struct fp3_spatial fp3_spatial;
 
