@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "Vspatial.h"
+#include "spatial_vectors.h"
 #include "verilated.h"
 
 // 32-bit word k of a port, whatever type Verilator gives its width.
@@ -50,32 +51,11 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "usage: %s VECTORS.txt\n", argv[0]);
     return 2;
   }
-  FILE *f = std::fopen(argv[1], "r");
-  if (!f) {
-    std::perror(argv[1]);
-    return 2;
-  }
-  unsigned long nobj, steps, nin, nc, lat;
-  if (std::fscanf(f, "fp3-spatial-vectors %lu %lu %lu %lu %lu", &nobj, &steps, &nin, &nc,
-                  &lat) != 5) {
-    std::fprintf(stderr, "%s: not a vectors file\n", argv[1]);
-    return 2;
-  }
-  std::vector<uint32_t> in(nobj * nin), y(nobj * nc), want(steps * nobj * nc);
-  auto rd = [&](uint32_t &w) {
-    unsigned v;
-    if (std::fscanf(f, "%x", &v) != 1) {
-      std::fprintf(stderr, "%s: short vectors file\n", argv[1]);
-      std::exit(2);
-    }
-    w = v;
-  };
-  for (unsigned long o = 0; o < nobj; o++) {
-    for (unsigned long k = 0; k < nin; k++) rd(in[o * nin + k]);
-    for (unsigned long w = 0; w < nc; w++) rd(y[o * nc + w]);
-  }
-  for (auto &w : want) rd(w);
-  std::fclose(f);
+  spatial_vectors v;
+  if (spatial_vectors_read(argv[1], &v)) return 2;
+  const unsigned long nobj = v.nobj, steps = v.steps, nin = v.nin, nc = v.nc, lat = v.lat;
+  const std::vector<uint32_t> &in = v.in, &want = v.gold;
+  std::vector<uint32_t> y = v.y0;
 
   Verilated::commandArgs(argc, argv);
   Vspatial top;

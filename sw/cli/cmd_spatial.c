@@ -14,6 +14,7 @@
 #include "cliopt.h"
 #include "model.h"
 #include "report.h"
+#include "spatial_top.h"
 
 #define EXIT_FAIL 1
 #define EXIT_USAGE 2
@@ -27,6 +28,7 @@ static void usage(FILE *f) {
           "                   [--add-latency N] [--mul-latency N] [--div-latency N]\n"
           "                   [--scaleb-latency N] [--no-scaleb] [--no-fit-check]\n"
           "                   [--vectors N [--steps K] [--seed S]]\n"
+          "                   [--pipelines N [--objects M]]\n"
           "\n"
           "Write a model's integration step as one fully pipelined Verilog module,\n"
           "DIR/fp3_spatial_MODEL_INTEGRATOR.v, that takes one object per cycle and\n"
@@ -59,6 +61,11 @@ static void usage(FILE *f) {
           "                   the golden model's state after each of K steps\n"
           "  --steps K        default 4\n"
           "  --seed S         the objects' scale factors (default 1)\n"
+          "  --pipelines N    also DIR/MODULE_top.v, a chip of N copies of the module\n"
+          "                   in the frame (object memory, feeder, write-back) behind\n"
+          "                   an AXI4-Lite slave (sw/isa/fp3_spatial_regs.h), 1..255\n"
+          "  --objects M      the objects the chip holds: a multiple of N, at least 2N\n"
+          "                   (default 512 N)\n"
           "\n"
           "Exit status: 0 written; 2 bad arguments, model or integrator, or a\n"
           "pipeline that does not fit the LFE5U-85F; 1 the files could not be\n"
@@ -121,6 +128,14 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
       steps_given = 1;
     } else if ((r = fp3_opt_seed(argc, argv, &i, "spatial", &a->seed)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--pipelines", 1, 255,
+                                  "pipelines", &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->pipelines = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--objects", 2, 1u << 20,
+                                  "objects", &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->objects = (unsigned)k;
     } else if (strcmp(argv[i], "--literal") == 0) {
       a->literal = 1;
     } else if (fp3_opt_positional("spatial", "model", argv[i], &a->model)) {
@@ -139,6 +154,11 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
     fprintf(stderr, "fp3 spatial: --steps needs --vectors N\n");
     return FP3_ARGS_BAD;
   }
+  if (a->objects && !a->pipelines) {
+    fprintf(stderr, "fp3 spatial: --objects needs --pipelines N\n");
+    return FP3_ARGS_BAD;
+  }
+  if (a->pipelines && !a->objects) a->objects = fp3_spatial_default_objects(a->pipelines);
   if (!fp3_model_integrator_known(a->integ)) {
     fprintf(stderr, "fp3 spatial: unknown integrator '%s' (%s)\n", a->integ,
             fp3_model_integrators());
@@ -189,7 +209,8 @@ static int run_spatial(const fp3_spatial_args *a) {
   int rc = EXIT_USAGE;
   fp3_compiled *c = NULL;
   fp3_spatial *s = NULL;
-  char *vectors = NULL, *vname = NULL;
+  char *vectors = NULL, *vname = NULL, *top = NULL, *tname = NULL;
+  fp3_strbuf rep = {0};
   fp3_model *m = malloc(sizeof *m);
   if (!m) return EXIT_FAIL;
   if (fp3_model_load(a->model, m, msg, sizeof msg)) {
@@ -226,23 +247,52 @@ static int run_spatial(const fp3_spatial_args *a) {
     fprintf(stderr, "fp3 spatial: %s\n", msg);
     goto out;
   }
-  size_t vl = strlen(fp3_spatial_module(s)) + 3;
-  if (!(vname = malloc(vl))) {
+  size_t vl = strlen(fp3_spatial_module(s)) + 8;
+  char topmod[128];
+  if (!(vname = malloc(vl)) || !(tname = malloc(vl + 4))) {
     rc = EXIT_FAIL;
     goto out;
   }
   snprintf(vname, vl, "%s.v", fp3_spatial_module(s));
-  const char *names[3] = {vname, "report.txt", "vectors.txt"};
-  const char *texts[3] = {fp3_spatial_verilog(s), fp3_spatial_report(s), vectors};
-  if (write_all(a->dir, names, texts, vectors ? 3 : 2, msg, sizeof msg)) {
+  fp3_strbuf_printf(&rep, "%shash: %016llx (FNV-1a 64 of %s)\n", fp3_spatial_report(s),
+                    (unsigned long long)fp3_spatial_hash(s), vname);
+  if (a->pipelines) {
+    if (fp3_spatial_top(s, a->pipelines, a->objects, topmod, sizeof topmod, &top, msg,
+                        sizeof msg)) {
+      fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
+      goto out;
+    }
+    snprintf(tname, vl + 4, "%s.v", topmod);
+    fp3_strbuf_printf(&rep,
+                      "chip: %s, %u pipelines, %u objects, object strides %u (state) and "
+                      "%u (inputs) words\n",
+                      topmod, a->pipelines, a->objects, 1u << fp3_spatial_state_log(s),
+                      1u << fp3_spatial_input_log(s));
+  }
+  if (rep.oom) {
+    rc = EXIT_FAIL;
+    goto out;
+  }
+  const char *names[4] = {vname, "report.txt", tname, "vectors.txt"};
+  const char *texts[4] = {fp3_spatial_verilog(s), rep.s, top, vectors};
+  int nf = 2;
+  if (top) nf = 3;
+  if (vectors) {
+    names[nf] = "vectors.txt";
+    texts[nf++] = vectors;
+  }
+  if (write_all(a->dir, names, texts, nf, msg, sizeof msg)) {
     fprintf(stderr, "fp3 spatial: %s\n", msg);
     rc = EXIT_FAIL;
     goto out;
   }
   fprintf(stderr, "fp3 spatial: %s, integrator %s%s -> %s/%s\n%s", m->name, a->integ,
-          a->literal ? " (literal)" : " (folded)", a->dir, vname, fp3_spatial_report(s));
+          a->literal ? " (literal)" : " (folded)", a->dir, vname, rep.s);
   rc = 0;
 out:
+  free(rep.s);
+  free(top);
+  free(tname);
   free(vname);
   free(vectors);
   fp3_spatial_free(s);

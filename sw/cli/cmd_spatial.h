@@ -20,6 +20,8 @@ typedef struct fp3_spatial_args {
   size_t vec_objects;      /* --vectors N: test vectors for N objects (0: none) */
   unsigned vec_steps;      /* --steps K: of K integrations each             */
   uint64_t seed;           /* --seed: the vectors' objects                  */
+  unsigned pipelines;      /* --pipelines N: also the chip top (0: none)    */
+  unsigned objects;        /* --objects M: its objects (0: the default)     */
   fp3_spatial_opts opts;   /* the cores' latencies and rounding             */
   int no_fit_check;        /* --no-fit-check: write a pipeline that does not
                               fit the LFE5U-85F (for simulation)            */

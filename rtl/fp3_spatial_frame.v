@@ -1,0 +1,249 @@
+// fp3_spatial_frame -- the fixed frame around N step pipelines of a
+// spatial chip (docs/spatial.md "The frame"): the objects' memory, the
+// feeder that streams the awake list into the pipelines, the write-back
+// of their results, and a run of K steps; the host reaches the memory
+// through a simple port while no run is in progress
+// (rtl/fp3_spatial_axil.v drives it; sw/isa/fp3_spatial_regs.h the map).
+//
+// Memory: M = N * ROWS objects in N banks; object o is row o / N of bank
+// o mod N, and pipeline p reads and writes only bank p.  A bank holds
+//   - the awake list's entries p, N + p, 2N + p, ... (entry i at row
+//     i / N), each the row of an object of this bank or empty (bit RW);
+//   - the objects' carried values, CARRIED words a row (fp3_spatial_mem);
+//   - the objects' inputs, INPUTS words a row.
+// Every memory is block RAM with a registered read (fp3_ram), one read
+// and one write a cycle, so each pipeline reads one object and writes one
+// back every cycle, with no port shared between banks.
+//
+// The feed, for round r of a step (fp3_spatial_feeder), pipeline p:
+//   cycle t      every bank's awake list is read at row r;
+//   cycle t + 1  its entry (if not empty) addresses the object's row in
+//                the carried and the input memory;
+//   cycle t + 2  the object enters pipeline p (valid, in_i, y_i); its row
+//                enters a delay line of LATENCY stages;
+//   cycle t + 2 + LATENCY  the pipeline's valid_o and y_o, and the row from
+//                the line: the new carried values are written at the edge
+//                that ends this cycle.
+// The object's next step reads its row no earlier than cycle
+// t + LATENCY + 3 (the memory is read-first), so the feeder's PERIOD is
+// LATENCY + 2 and its DRAIN LATENCY + 2: a run of K steps over R rounds
+// takes (K - 1) * max(R, LATENCY + 2) + R + LATENCY + 2 cycles.
+//
+// Parameters
+//   PIPELINES  N, 1 .. 255
+//   INPUTS     input words per object (the step module's in_i), >= 1
+//   CARRIED    carried words per object (its y_i, y_o), >= 1
+//   ROWS       objects per bank, M / N, >= 2
+//   RW         row address bits, clog2(ROWS) (at least 1)
+//   RB         round bits, clog2(ROWS + 1)
+//   LATENCY    the step module's LATENCY, >= 1
+//   BW         bank number bits, clog2(N) (at least 1)
+// Host port (used only while running_o is 0; the slave checks it)
+//   host_we_i, host_re_i   a write, a read of word host_word_i of row
+//                          host_row_i of bank host_bank_i in memory
+//                          host_sel_i: 1 awake list, 2 carried, 3 inputs
+//   host_wdata_i           the word; for the awake list bit 31 empty,
+//                          [RW-1:0] the object's row
+//   host_rdata_o           a read's word two cycles later, the awake list's
+//                          in host_wdata_i's form (other bits 0)
+// Run
+//   start_i, steps_i, rounds_i   fp3_spatial_feeder's (R = ceil(COUNT / N))
+//   tail_i       the entries of the last round, COUNT - (R - 1) N, 1 .. N:
+//                the banks p >= tail_i are not fed in that round (their
+//                entries are beyond COUNT)
+//   running_o, done_o, cycles_o  fp3_spatial_feeder's
+// Pipelines (p's fields at [p * width +: width])
+//   pv_o, pin_o, py_o   an object enters pipeline p: valid, in_i, y_i
+//   pv_i, pyo_i         pipeline p's valid_o and y_o
+// Reset: rst_i, synchronous, active high (the feeder and the feed's valid
+// bits; the memories keep their contents).
+`default_nettype none
+module fp3_spatial_frame #(
+  parameter integer PIPELINES = 1,
+  parameter integer INPUTS    = 1,
+  parameter integer CARRIED   = 1,
+  parameter integer ROWS      = 2,
+  parameter integer RW        = 1,
+  parameter integer RB        = 2,
+  parameter integer LATENCY   = 1,
+  parameter integer BW        = 1
+) (
+  input  wire                              clk_i,
+  input  wire                              rst_i,
+  // host port
+  input  wire                              host_we_i,
+  input  wire                              host_re_i,
+  input  wire [1:0]                        host_sel_i,
+  input  wire [BW-1:0]                     host_bank_i,
+  input  wire [RW-1:0]                     host_row_i,
+  input  wire [7:0]                        host_word_i,
+  input  wire [31:0]                       host_wdata_i,
+  output wire [31:0]                       host_rdata_o,
+  // run
+  input  wire                              start_i,
+  input  wire [31:0]                       steps_i,
+  input  wire [RB-1:0]                     rounds_i,
+  input  wire [BW:0]                       tail_i,
+  output wire                              running_o,
+  output wire                              done_o,
+  output wire [63:0]                       cycles_o,
+  // pipelines
+  output wire [PIPELINES-1:0]              pv_o,
+  output wire [PIPELINES*32*INPUTS-1:0]    pin_o,
+  output wire [PIPELINES*32*CARRIED-1:0]   py_o,
+  input  wire [PIPELINES-1:0]              pv_i,
+  input  wire [PIPELINES*32*CARRIED-1:0]   pyo_i
+);
+  localparam [1:0] SEL_AWAKE = 2'd1;
+  localparam [1:0] SEL_STATE = 2'd2;
+  localparam [1:0] SEL_INPUT = 2'd3;
+  localparam integer NC = CARRIED;
+  localparam integer NI = INPUTS;
+
+  wire          running;
+  wire          feed, last;
+  wire [RB-1:0] round;
+  fp3_spatial_feeder #(.RB(RB), .PERIOD(LATENCY + 2), .DRAIN(LATENCY + 2)) u_feeder (
+    .clk_i     (clk_i),
+    .rst_i     (rst_i),
+    .start_i   (start_i),
+    .steps_i   (steps_i),
+    .rounds_i  (rounds_i),
+    .feed_o    (feed),
+    .round_o   (round),
+    .last_o    (last),
+    .running_o (running),
+    .done_o    (done_o),
+    .cycles_o  (cycles_o)
+  );
+  assign running_o = running;
+
+
+  // The host's word of a row, as a write enable of one word.
+  wire [NC-1:0] host_state_word;
+  wire [NI-1:0] host_input_word;
+  genvar k;
+  generate
+    for (k = 0; k < NC; k = k + 1) begin : g_sw
+      assign host_state_word[k] = host_word_i == k[7:0];
+    end
+    for (k = 0; k < NI; k = k + 1) begin : g_iw
+      assign host_input_word[k] = host_word_i == k[7:0];
+    end
+  endgenerate
+
+  // Every bank's rows as read, for the host's read multiplexer.
+  wire [PIPELINES*(RW+1)-1:0]     awake_rd;
+  wire [PIPELINES*32*NC-1:0]      state_rd;
+  wire [PIPELINES*32*NI-1:0]      input_rd;
+
+  genvar b;
+  generate
+    for (b = 0; b < PIPELINES; b = b + 1) begin : g_bank
+      wire host_here = host_bank_i == b[BW-1:0];
+      wire we        = host_we_i && host_here;
+
+      // the awake list: entry {empty, row}
+      wire [RW:0] entry;
+      fp3_ram #(.DEPTH(ROWS), .AW(RW), .WIDTH(RW + 1), .READ_STAGES(1)) u_awake (
+        .clk_i   (clk_i),
+        .we_i    (we && host_sel_i == SEL_AWAKE),
+        .waddr_i (host_row_i),
+        .wdata_i ({host_wdata_i[31], host_wdata_i[RW-1:0]}),
+        .raddr_i (running ? round[RW-1:0] : host_row_i),
+        .rdata_o (entry)
+      );
+      assign awake_rd[b*(RW+1) +: RW+1] = entry;
+
+      // The round's entry leaves the awake list a cycle after the round;
+      // in the last round, only the banks below tail_i hold one.
+      reg fv1_q;
+      always @(posedge clk_i)
+        fv1_q <= !rst_i && feed && (!last || b[BW:0] < tail_i);
+
+      // the object the entry names: read its row (cycle t + 1)
+      wire          fetch = fv1_q && !entry[RW];
+      wire [RW-1:0] orow  = running ? entry[RW-1:0] : host_row_i;
+
+      // ... it enters the pipeline (cycle t + 2), its row the delay line
+      reg          pv_q;
+      reg [RW-1:0] prow_q;
+      always @(posedge clk_i) begin
+        pv_q   <= !rst_i && fetch;
+        prow_q <= entry[RW-1:0];
+      end
+      wire [RW-1:0] wb_row;
+      wire          unused_wb_valid;
+      fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY)) u_row (
+        .clk_i   (clk_i),
+        .rst_i   (rst_i),
+        .valid_i (1'b0),
+        .data_i  (prow_q),
+        .valid_o (unused_wb_valid),
+        .data_o  (wb_row)
+      );
+
+      // carried values: read by the feed or the host, written back by the
+      // pipeline (all words) or by the host (one)
+      wire [32*NC-1:0] y_rd;
+      fp3_spatial_mem #(.WORDS(NC), .ROWS(ROWS), .RW(RW)) u_state (
+        .clk_i   (clk_i),
+        .we_i    (running ? {NC{pv_i[b]}}
+                          : {NC{we && host_sel_i == SEL_STATE}} & host_state_word),
+        .waddr_i (running ? wb_row : host_row_i),
+        .wdata_i (running ? pyo_i[b*32*NC +: 32*NC] : {NC{host_wdata_i}}),
+        .raddr_i (orow),
+        .rdata_o (y_rd)
+      );
+      assign state_rd[b*32*NC +: 32*NC] = y_rd;
+
+      // inputs: read by the feed or the host, written by the host
+      wire [32*NI-1:0] in_rd;
+      fp3_spatial_mem #(.WORDS(NI), .ROWS(ROWS), .RW(RW)) u_input (
+        .clk_i   (clk_i),
+        .we_i    ({NI{we && host_sel_i == SEL_INPUT}} & host_input_word),
+        .waddr_i (host_row_i),
+        .wdata_i ({NI{host_wdata_i}}),
+        .raddr_i (orow),
+        .rdata_o (in_rd)
+      );
+      assign input_rd[b*32*NI +: 32*NI] = in_rd;
+
+      assign pv_o[b] = pv_q;
+      assign pin_o[b*32*NI +: 32*NI] = in_rd;
+      assign py_o[b*32*NC +: 32*NC]  = y_rd;
+    end
+  endgenerate
+
+  // ---- the host's reads: the selected word, registered ----------------------
+  reg [1:0]    rsel_q;
+  reg [BW-1:0] rbank_q;
+  reg [7:0]    rword_q;
+  reg [31:0]   rdata_q;
+  always @(posedge clk_i) begin
+    if (host_re_i) begin
+      rsel_q  <= host_sel_i;
+      rbank_q <= host_bank_i;
+      rword_q <= host_word_i;
+    end
+  end
+  // (word and bank are in range: the slave answers SLVERR otherwise)
+  wire [31:0]  rbank = {{(32-BW){1'b0}}, rbank_q};
+  wire [31:0]  rword = {24'd0, rword_q};
+  wire [RW:0]  awake_word = awake_rd[rbank * (RW + 1) +: RW + 1];
+  wire [31:0]  state_word = state_rd[32 * (rbank * NC + rword) +: 32];
+  wire [31:0]  input_word = input_rd[32 * (rbank * NI + rword) +: 32];
+  always @(posedge clk_i) begin
+    case (rsel_q)
+      SEL_AWAKE: rdata_q <= {awake_word[RW], {(31 - RW){1'b0}}, awake_word[RW-1:0]};
+      SEL_STATE: rdata_q <= state_word;
+      default:   rdata_q <= input_word;
+    endcase
+  end
+  assign host_rdata_o = rdata_q;
+
+  // A round's number is below ROWS: its top bit (RB > RW) is not needed to
+  // address a row.
+  wire unused_round = &{1'b0, round};
+endmodule
+`default_nettype wire
