@@ -17,3 +17,21 @@
 # fail (about a minute, four Verilator builds).
 TEST_SCRIPTS += tests/test_spatial.sh tests/test_scaleb.sh tests/test_spatial_chip.sh
 test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
+
+# `make pnr-spatial MODEL=models/ship.fp3m [INTEGRATOR=rk4se] [PIPELINES=N]
+# [FTZ=1] [PNR_SEED=n | PNR_SEEDS="1 2 ..."] [SPATIAL_OPTS="..."]`: a
+# spatial chip (the step module in the frame behind its AXI4-Lite slave)
+# on the LFE5U-85F, N pipelines (default: as many as the area estimate
+# fits), through scripts/pnr-spatial.sh (synth_ecp5, nextpnr).  The cores
+# at SPATIAL_OPTS (default add 9, mul 9: fp_mul's fastest latency with its
+# product in MULT18X18D).  Results in $(BUILD)/pnr-spatial/.  About an
+# hour a seed for three ship pipelines on this machine.
+MODEL        ?=
+PIPELINES    ?=
+FTZ          ?=
+SPATIAL_OPTS ?= --add-latency 9 --mul-latency 9
+.PHONY: pnr-spatial
+## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m INTEGRATOR=rk4se [PIPELINES=N] [FTZ=1] [PNR_SEED=n])
+pnr-spatial: $(BUILD)/fp3 pnr-tools
+	@test -n "$(MODEL)" || { echo "make pnr-spatial: name the model: MODEL=models/ship.fp3m" >&2; exit 2; }
+	@bash scripts/pnr-spatial.sh $(BUILD)/pnr-spatial $(MODEL) $(INTEGRATOR) "$(PIPELINES)" "$(FTZ)" $(SPATIAL_OPTS)
