@@ -3,8 +3,10 @@
 # tests/test_spatial.sh generates the pipelines of the ship (folded and
 # literal RK4), the spring, the oscillator and the projectile, Verilates
 # each with sim/spatial_tb.cpp and checks every object after every step
-# bit for bit against the golden model (about 40 s, most of it the five
-# Verilator builds); it needs build/fp3 and the Verilated runtime.
+# bit for bit against the golden model, and the ship's module with a delay
+# stage removed in each form of delay segment must fail (1 to 2 minutes,
+# most of it nine Verilator builds); it needs build/fp3 and the Verilated
+# runtime.
 #
 # tests/test_scaleb.sh checks rtl/fp_scaleb.v (a multiply by a power of
 # two) against fpref_mul on directed and 3,000,000 random operand pairs
