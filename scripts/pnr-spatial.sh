@@ -42,6 +42,24 @@ top=${step}_top
 # 3. synthesis
 bash "$here/synth.sh" "$out/synth" "$top" ecp5 -keep "$step" "$out/gen/$step.v" "$out/gen/$top.v" \
   "$here"/../rtl/*.v
+# The area by part, exact section names (synth.sh's -keep line matches the
+# step module's name as a prefix, so it also counts the top's own cells):
+# LUT4 sites as the estimate counts them (LUT4, 2 per CCU2C, 6 per
+# TRELLIS_DPR16X4).
+part() { # SECTION -> "LUT4 FF MULT18X18D EBR"
+  awk -v want="=== $1 ===" '
+    /^=== / { on = ($0 == want); next }
+    on && $1 == "LUT4" { l += $2 } on && $1 == "CCU2C" { l += 2 * $2 }
+    on && $1 == "TRELLIS_DPR16X4" { l += 6 * $2 } on && $1 == "TRELLIS_FF" { f += $2 }
+    on && $1 == "MULT18X18D" { m += $2 } on && $1 ~ /^(DP16KD|PDPW16KD)$/ { e += $2 }
+    END { printf "%d %d %d %d\n", l, f, m, e }' "$out/synth/${top}_ecp5_stat.txt"
+}
+read -r sl sf sm se < <(part "$step")
+read -r fl ff fm fe < <(part "$top")
+echo "pnr-spatial: synthesized: each pipeline $sl LUT4, $sf FF, $sm MULT18X18D, $se EBR" \
+     "(estimate $est); the frame $fl LUT4, $ff FF, $fm MULT18X18D, $fe EBR;" \
+     "in all $((pipes * sl + fl)) LUT4 of 83640, $((pipes * sm + fm)) MULT18X18D of 156," \
+     "$((pipes * se + fe)) EBR of 208"
 # 4. placement and routing
 json="$out/synth/${top}_ecp5.json"
 name="${top}_n$pipes"
