@@ -3,15 +3,21 @@
 # tests/test_spatial.sh generates the pipelines of the ship (folded and
 # literal RK4), the spring, the oscillator and the projectile, Verilates
 # each with sim/spatial_tb.cpp and checks every object after every step
-# bit for bit against the golden model (about 40 s, most of it the five
-# Verilator builds); it needs build/fp3 and the Verilated runtime.
+# bit for bit against the golden model, and the ship's module with a delay
+# stage removed in each form of delay segment must fail (1 to 2 minutes,
+# most of it nine Verilator builds); it needs build/fp3 and the Verilated
+# runtime.
+#
+# tests/test_scaleb.sh checks rtl/fp_scaleb.v (a multiply by a power of
+# two) against fpref_mul on directed and 3,000,000 random operand pairs
+# (about 20 s, one Verilator build).
 #
 # tests/test_spatial_chip.sh generates the ship's chip top (--pipelines 1
 # and 3), Verilates it with sim/spatial_chip_tb.cpp and drives it over
 # AXI4-Lite: register map, SLVERR cases, runs over awake lists checked bit
 # for bit and against the cycle formula, and two broken frames that must
 # fail (about a minute, four Verilator builds).
-TEST_SCRIPTS += tests/test_spatial.sh tests/test_spatial_chip.sh
+TEST_SCRIPTS += tests/test_spatial.sh tests/test_scaleb.sh tests/test_spatial_chip.sh
 test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 
 # tests/test_spatial_engine.sh: fp3 run and fp3 frames --engine spatial
@@ -21,3 +27,21 @@ test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 # damaged entries found and rebuilt, bad options refused (about a minute,
 # three Verilator builds).
 TEST_SCRIPTS += tests/test_spatial_engine.sh
+
+# `make pnr-spatial MODEL=models/ship.fp3m [INTEGRATOR=rk4se] [PIPELINES=N]
+# [FTZ=1] [PNR_SEED=n | PNR_SEEDS="1 2 ..."] [SPATIAL_OPTS="..."]`: a
+# spatial chip (the step module in the frame behind its AXI4-Lite slave)
+# on the LFE5U-85F, N pipelines (default: as many as the area estimate
+# fits), through scripts/pnr-spatial.sh (synth_ecp5, nextpnr).  The cores
+# at SPATIAL_OPTS (default add 9, mul 9: fp_mul's fastest latency with its
+# product in MULT18X18D).  Results in $(BUILD)/pnr-spatial/.  About an
+# hour a seed for three ship pipelines on this machine.
+MODEL        ?=
+PIPELINES    ?=
+FTZ          ?=
+SPATIAL_OPTS ?= --add-latency 9 --mul-latency 9
+.PHONY: pnr-spatial
+## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m INTEGRATOR=rk4se [PIPELINES=N] [FTZ=1] [PNR_SEED=n])
+pnr-spatial: $(BUILD)/fp3 pnr-tools
+	@test -n "$(MODEL)" || { echo "make pnr-spatial: name the model: MODEL=models/ship.fp3m" >&2; exit 2; }
+	@bash scripts/pnr-spatial.sh $(BUILD)/pnr-spatial $(MODEL) $(INTEGRATOR) "$(PIPELINES)" "$(FTZ)" $(SPATIAL_OPTS)

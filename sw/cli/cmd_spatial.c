@@ -26,6 +26,7 @@ static void usage(FILE *f) {
           "usage: fp3 spatial MODEL.fp3m -o DIR [--integrator I] [--literal]\n"
           "                   [--round rne|rtz] [--ftz]\n"
           "                   [--add-latency N] [--mul-latency N] [--div-latency N]\n"
+          "                   [--scaleb-latency N] [--no-scaleb] [--no-fit-check]\n"
           "                   [--vectors N [--steps K] [--seed S]]\n"
           "                   [--pipelines N [--objects M]]\n"
           "\n"
@@ -33,10 +34,12 @@ static void usage(FILE *f) {
           "DIR/fp3_spatial_MODEL_INTEGRATOR.v, that takes one object per cycle and\n"
           "returns its new state LATENCY cycles later (docs/spatial.md).  Every\n"
           "operation of the compiled program (fp3 compile) gets its own core\n"
-          "(rtl/fp_add.v, fp_mul, fp_div, fp_sqrt, fp_sign), scheduled as soon as\n"
-          "possible, and delay lines balance every path, so the results equal the\n"
-          "program's golden model bit for bit.  The report (latency, cores, delay\n"
-          "flip-flops) goes to standard error and DIR/report.txt.\n"
+          "(rtl/fp_add.v, fp_mul or for a constant +-2^k fp_scaleb, fp_div, fp_sqrt,\n"
+          "fp_sign), scheduled as soon as possible, and delay lines (flip-flops,\n"
+          "LUT RAM or block RAM by length) balance every path, so the results equal\n"
+          "the program's golden model bit for bit.  The report (latency, cores,\n"
+          "delay lines, the area estimate and the pipelines that fit the LFE5U-85F)\n"
+          "goes to standard error and DIR/report.txt.\n"
           "The integrators: %s.\n"
           "\n"
           "  -o DIR           the folder to write (made if missing); on any error\n"
@@ -48,6 +51,12 @@ static void usage(FILE *f) {
           "  --ftz            flush-to-zero cores\n"
           "  --add-latency N, --mul-latency N, --div-latency N   core latencies\n"
           "                   (default %u, %u, %u; div also for sqrt)\n"
+          "  --scaleb-latency N   the latency of fp_scaleb, a multiply by a constant\n"
+          "                   +-2^k as an exponent adjustment (default %u)\n"
+          "  --no-scaleb      every multiply on fp_mul (for comparison)\n"
+          "  --no-fit-check   write the module even if its area estimate does not\n"
+          "                   fit the LFE5U-85F once (for simulation); without it\n"
+          "                   such a model is refused with the numbers, exit 2\n"
           "  --vectors N      also DIR/vectors.txt: N objects (the model's defaults,\n"
           "                   then each value scaled in [0.75, 1.25]), their inputs and\n"
           "                   the golden model's state after each of K steps\n"
@@ -59,9 +68,11 @@ static void usage(FILE *f) {
           "  --objects M      the objects the chip holds: a multiple of N, at least 2N\n"
           "                   (default 512 N)\n"
           "\n"
-          "Exit status: 0 written; 2 bad arguments, model or integrator; 1 the\n"
-          "files could not be written.\n",
-          fp3_model_integrators(), d.add_latency, d.mul_latency, d.div_latency);
+          "Exit status: 0 written; 2 bad arguments, model or integrator, or a\n"
+          "pipeline that does not fit the LFE5U-85F; 1 the files could not be\n"
+          "written.\n",
+          fp3_model_integrators(), d.add_latency, d.mul_latency, d.div_latency,
+          d.scaleb_latency);
 }
 
 int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
@@ -99,6 +110,14 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
                                   &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->opts.div_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--scaleb-latency", 1, 64,
+                                  "cycles", &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.scaleb_latency = (unsigned)k;
+    } else if (strcmp(argv[i], "--no-scaleb") == 0) {
+      a->opts.scaleb = 0;
+    } else if (strcmp(argv[i], "--no-fit-check") == 0) {
+      a->no_fit_check = 1;
     } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--vectors", 1, 1000000,
                                   "objects", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
@@ -211,6 +230,17 @@ static int run_spatial(const fp3_spatial_args *a) {
   }
   if (fp3_spatial_build(c, m, a->integ, &a->opts, &s, msg, sizeof msg)) {
     fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
+    goto out;
+  }
+  const fp3_spatial_stats *st = fp3_spatial_stats_of(s);
+  if (st->fit == 0 && !a->no_fit_check) {
+    fprintf(stderr,
+            "fp3 spatial: %s: the pipeline does not fit the LFE5U-85F once: it needs %u LUT4, "
+            "%u flip-flops, %u MULT18X18D, %u EBR against %u, %u, %u, %u available to "
+            "pipelines (%s is short; --no-fit-check writes it for simulation)\n",
+            m->file, st->est_lut4, st->est_ff, st->est_mult, st->est_ebr,
+            FP3_SPATIAL_BUDGET_LUT4, FP3_SPATIAL_BUDGET_FF, FP3_SPATIAL_BUDGET_MULT,
+            FP3_SPATIAL_BUDGET_EBR, st->limit);
     goto out;
   }
   if (a->vec_objects &&

@@ -23,6 +23,8 @@ typedef struct fp3_spatial_args {
   unsigned pipelines;      /* --pipelines N: also the chip top (0: none)    */
   unsigned objects;        /* --objects M: its objects (0: the default)     */
   fp3_spatial_opts opts;   /* the cores' latencies and rounding             */
+  int no_fit_check;        /* --no-fit-check: write a pipeline that does not
+                              fit the LFE5U-85F (for simulation)            */
 } fp3_spatial_args;
 
 /* The parse step (cliopt.h): FP3_ARGS_RUN with *a filled, FP3_ARGS_HELP,
@@ -30,8 +32,9 @@ typedef struct fp3_spatial_args {
 int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a);
 
 /* argv[0] is "spatial".  Returns the exit status: 0 written, 1 the files
- * could not be written, 2 bad arguments, model or integrator (a message on
- * stderr; no file is left). */
+ * could not be written, 2 bad arguments, model or integrator, or a pipeline
+ * that does not fit the LFE5U-85F even once (a message on stderr; no file
+ * is left). */
 int fp3_cmd_spatial(int argc, char **argv);
 
 #endif /* FP3_CMD_SPATIAL_H */

@@ -25,6 +25,8 @@ typedef struct snode {
   unsigned start;   /* SRC_CORE: the cycle its core samples the operands */
   unsigned ready;   /* the cycle its value is on its wire                */
   unsigned delay;   /* the longest delay any reader needs (0: none)      */
+  int scale;        /* SRC_CORE mul: -1 fp_mul, else the operand (0 a, 1
+                       b) that is a power of two: an fp_scaleb core      */
   unsigned char *tap; /* tap[d] = 1: a reader takes it d cycles late     */
   char sig[64];     /* its wire: nI_NAME                                 */
 } snode;
@@ -57,6 +59,8 @@ void fp3_spatial_defaults(fp3_spatial_opts *o) {
   o->mul_latency = c.mul_latency;
   o->div_latency = c.div_latency;
   o->sign_latency = 1;
+  o->scaleb_latency = 2;
+  o->scaleb = 1;
   o->rtz = 0;
   o->ftz = 0;
 }
@@ -70,6 +74,13 @@ static unsigned core_latency(const fp3_spatial_opts *o, int kind) {
   case FP3_IR_SQRT: return o->div_latency;
   default: return o->sign_latency;
   }
+}
+
+/* A binary32 pattern that is +-2^k, normal: fraction 0, exponent field 1
+ * to 254 (what rtl/fp_scaleb.v takes as b). */
+static int is_pow2(uint32_t bits) {
+  const uint32_t e = (bits >> 23) & 0xFF;
+  return (bits & 0x7FFFFF) == 0 && e >= 1 && e <= 254;
 }
 
 static int is_op(int kind) { return kind >= FP3_IR_ADD && kind < FP3_IR_KINDS; }
@@ -151,6 +162,180 @@ static int need(struct fp3_spatial *s, int i, unsigned d) {
   return 0;
 }
 
+/* The form of a delay segment of d stages (spatial.h's rule): 0
+ * flip-flops, 1 LUT RAM, 2 block RAM. */
+static int segment_style(unsigned d) {
+  return d <= FP3_SPATIAL_FF_MAX ? 0 : d <= FP3_SPATIAL_LUTRAM_MAX ? 1 : 2;
+}
+
+/* The words of rtl/fp_delay.v's RAM for a segment of d stages in `style`:
+ * the power of two >= d - (read stages) + 1. */
+static unsigned segment_words(unsigned d, int style) {
+  unsigned gap = d - (style == 2 ? 2u : 1u), w = 2;
+  while (w < gap + 1) w *= 2;
+  return w;
+}
+
+/* Add a segment of d stages to the statistics. */
+static void count_segment(fp3_spatial_stats *st, unsigned d) {
+  const int style = segment_style(d);
+  if (style == 0) {
+    st->ff_segments++;
+    st->ff_stages += d;
+    st->delay_ffs += 32 * d;
+  } else if (style == 1) {
+    st->lutram_segments++;
+    st->lutram_stages += d;
+    st->lutram_cells += 8 * ((segment_words(d, 1) + 15) / 16); /* 16 words x 4 bits */
+  } else {
+    st->ebr_segments++;
+    st->ebr_stages += d;
+    st->ebr_blocks += (segment_words(d, 2) + 511) / 512; /* 512 x 36, 1024 x 18, ... */
+  }
+}
+
+/* ---- the area estimate ---- */
+
+/* Pseudo-kinds of the area table beside the IR's: fp_scaleb; fp_sign
+ * (abs, neg, min, max) is FP3_IR_ABS. */
+#define AREA_SCALEB FP3_IR_KINDS
+
+/* One core configuration synthesized alone: Yosys 0.23 synth_ecp5 through
+ * scripts/synth.sh ecp5 (FP3_ECP5_DSP: fp_mul's product in MULT18X18D
+ * with their own registers at LATENCY 6 to 9), measured by
+ *   scripts/spatial-core-area.sh
+ * which prints these rows.  LUT4s count a CCU2C as two. */
+typedef struct core_area {
+  int kind;          /* FP3_IR_ADD (also sub), _MUL, _DIV, _SQRT, _ABS
+                        (fp_sign), AREA_SCALEB                          */
+  unsigned latency;
+  int round, ftz;
+  unsigned lut4, ff, mult;
+} core_area;
+
+#define SIGN FP3_IR_ABS
+#define SCALEB AREA_SCALEB
+static const core_area core_areas[] = {
+    {FP3_IR_ADD, 4, 0, 0, 1099, 291, 0}, /* fp_add */
+    {FP3_IR_ADD, 4, 0, 1, 1247, 291, 0}, /* fp_add */
+    {FP3_IR_ADD, 4, 1, 0, 1053, 291, 0}, /* fp_add */
+    {FP3_IR_ADD, 9, 0, 0, 1051, 729, 0}, /* fp_add */
+    {FP3_IR_ADD, 9, 0, 1, 1117, 729, 0}, /* fp_add */
+    {FP3_IR_ADD, 9, 1, 0, 1028, 729, 0}, /* fp_add */
+    {FP3_IR_ADD, 10, 0, 0, 1031, 766, 0}, /* fp_add */
+    {FP3_IR_ADD, 10, 0, 1, 1119, 766, 0}, /* fp_add */
+    {FP3_IR_ADD, 10, 1, 0, 988, 766, 0}, /* fp_add */
+    {FP3_IR_MUL, 3, 0, 0, 1655, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 0, 1, 681, 185, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 1, 0, 1191, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 0, 1034, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 1, 582, 614, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 1, 0, 973, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 10, 0, 0, 2215, 1210, 0}, /* fp_mul */
+    {FP3_IR_MUL, 10, 0, 1, 1726, 1196, 0}, /* fp_mul */
+    {FP3_IR_MUL, 10, 1, 0, 2147, 1210, 0}, /* fp_mul */
+    {FP3_IR_DIV, 8, 0, 0, 2596, 793, 0}, /* fp_div */
+    {FP3_IR_DIV, 8, 0, 1, 2245, 785, 0}, /* fp_div */
+    {FP3_IR_DIV, 8, 1, 0, 2588, 793, 0}, /* fp_div */
+    {FP3_IR_SQRT, 8, 0, 0, 1466, 561, 0}, /* fp_sqrt */
+    {FP3_IR_SQRT, 8, 0, 1, 1010, 561, 0}, /* fp_sqrt */
+    {FP3_IR_SQRT, 8, 1, 0, 1388, 561, 0}, /* fp_sqrt */
+    {SCALEB, 1, 0, 0, 235, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 1, 0, 1, 101, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 1, 1, 0, 303, 35, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 0, 0, 179, 108, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 0, 1, 178, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 1, 0, 203, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SIGN, 1, 0, 0, 236, 34, 0}, /* fp_sign */
+};
+#undef SIGN
+#undef SCALEB
+
+/* The table's row for a core: its kind, FTZ and rounding if measured (else
+ * the other rounding), at the nearest measured latency; *exact = 0 when
+ * the configuration itself is not in the table. */
+static const core_area *area_of(int kind, unsigned lat, int rtz, int ftz, int *exact) {
+  const core_area *best = NULL;
+  unsigned best_cost = ~0u;
+  for (size_t k = 0; k < sizeof core_areas / sizeof core_areas[0]; k++) {
+    const core_area *r = &core_areas[k];
+    if (r->kind != kind) continue;
+    /* a different FTZ costs most, a different latency by its distance, a
+     * different rounding least (fp_sign has neither) */
+    unsigned cost = (kind == FP3_IR_ABS ? 0 : 1000u * (r->ftz != ftz) + (r->round != rtz)) +
+                    10u * (r->latency > lat ? r->latency - lat : lat - r->latency);
+    if (cost < best_cost) {
+      best = r;
+      best_cost = cost;
+    }
+  }
+  *exact = best_cost == 0;
+  return best;
+}
+
+/* Add the estimate of the cores, the delay segments and the valid bit's
+ * line, and the pipelines that fit. */
+static void estimate(struct fp3_spatial *s) {
+  fp3_spatial_stats *st = &s->st;
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    if (x->src != SRC_CORE) continue;
+    int kind = x->ir.kind, exact;
+    unsigned lat = core_latency(&s->o, kind);
+    if (kind == FP3_IR_SUB) kind = FP3_IR_ADD;
+    if (kind >= FP3_IR_ABS) kind = FP3_IR_ABS;
+    if (x->scale >= 0) {
+      kind = AREA_SCALEB;
+      lat = s->o.scaleb_latency;
+    }
+    const core_area *r = area_of(kind, lat, s->o.rtz, s->o.ftz, &exact);
+    st->est_lut4 += r->lut4;
+    st->est_ff += r->ff;
+    st->est_mult += r->mult;
+    st->est_inexact += !exact;
+  }
+  /* delay segments, by rtl/fp_delay.v's measured form (spatial.h's table):
+   * a RAM segment's address counters are 2 x log2(words) flip-flops and
+   * about as many LUT4s, its read register 32 flip-flops (and block RAM's
+   * fabric register 32 more) */
+  for (unsigned i = 0; i < s->nn; i++) {
+    const snode *x = &s->nd[i];
+    for (unsigned d = 1, prev = 0; x->delay && d <= x->delay; d++) {
+      if (!x->tap[d]) continue;
+      const unsigned len = d - prev;
+      const int style = segment_style(len);
+      prev = d;
+      if (style == 0) {
+        st->est_ff += 32 * len;
+        continue;
+      }
+      unsigned aw = 0;
+      for (unsigned w = segment_words(len, style); w > 1; w /= 2) aw++;
+      st->est_ff += 2 * aw + (style == 1 ? 32 : 64);
+      if (style == 1) st->est_lut4 += 6 * 8 * ((segment_words(len, 1) + 15) / 16) + 2 * aw;
+      else st->est_lut4 += 2 * aw;
+    }
+  }
+  st->est_ff += st->latency; /* the valid bit */
+  st->est_ebr = st->ebr_blocks;
+  /* pipelines per device: the least over the resources */
+  const struct { const char *name; unsigned budget, need; } res[] = {
+      {"LUT4", FP3_SPATIAL_BUDGET_LUT4, st->est_lut4},
+      {"flip-flops", FP3_SPATIAL_BUDGET_FF, st->est_ff},
+      {"MULT18X18D", FP3_SPATIAL_BUDGET_MULT, st->est_mult},
+      {"EBR", FP3_SPATIAL_BUDGET_EBR, st->est_ebr}};
+  st->fit = ~0u;
+  st->limit = "none";
+  for (size_t k = 0; k < sizeof res / sizeof res[0]; k++) {
+    if (!res[k].need) continue;
+    const unsigned f = res[k].budget / res[k].need;
+    if (f < st->fit) {
+      st->fit = f;
+      st->limit = res[k].name;
+    }
+  }
+}
+
 /* The schedule: sources, ASAP cycles, the pipeline's latency, the taps. */
 static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
   fp3_compiled *c = s->c;
@@ -194,8 +379,18 @@ static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
       if (b && b->src != SRC_CONST && b->ready > t) t = b->ready;
       x->src = SRC_CORE;
       x->start = t;
-      x->ready = t + core_latency(&s->o, x->ir.kind);
-      s->st.cores[x->ir.kind]++;
+      x->scale = -1;
+      if (x->ir.kind == FP3_IR_MUL && s->o.scaleb) {
+        if (b && b->src == SRC_CONST && is_pow2(b->ir.bits)) x->scale = 1;
+        else if (a->src == SRC_CONST && is_pow2(a->ir.bits)) x->scale = 0;
+      }
+      if (x->scale >= 0) {
+        x->ready = t + s->o.scaleb_latency;
+        s->st.scaleb++;
+      } else {
+        x->ready = t + core_latency(&s->o, x->ir.kind);
+        s->st.cores[x->ir.kind]++;
+      }
       s->st.ncores++;
     }
   }
@@ -228,8 +423,12 @@ static int schedule(struct fp3_spatial *s, char *msg, size_t n) {
     s->st.delay_lines++;
     s->st.delay_stages += x->delay;
     if (x->delay > s->st.longest_delay) s->st.longest_delay = x->delay;
+    for (unsigned d = 1, prev = 0; d <= x->delay; d++)
+      if (x->tap[d]) {
+        count_segment(&s->st, d - prev);
+        prev = d;
+      }
   }
-  s->st.delay_ffs = 32 * s->st.delay_stages;
   s->st.inputs = s->ninput;
   s->st.carried = carried;
   free(used);
@@ -260,19 +459,25 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
       "// last operand is ready, its result `LATENCY` of its core later.\n"
       "// Balancing: each value has one delay line (fp_pipe segments between\n"
       "// taps) as long as its latest reader needs; a reader in cycle s of a value\n"
-      "// ready in cycle r taps it at s - r stages.  Delay lines are flip-flops.\n"
+      "// ready in cycle r taps it at s - r stages.  A segment of up to %u stages\n"
+      "// is flip-flops (fp_pipe), up to %u LUT RAM (fp_delay STYLE 1), longer\n"
+      "// block RAM (fp_delay STYLE 2).\n"
       "//\n"
       "// Latency: %u cycles.  Cores: %u (",
-      s->module, s->m->name, s->m->file, s->integ, st->latency, st->ncores);
+      s->module, s->m->name, s->m->file, s->integ, FP3_SPATIAL_FF_MAX, FP3_SPATIAL_LUTRAM_MAX,
+      st->latency, st->ncores);
   int first = 1;
   for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
     if (st->cores[k]) {
       fp3_strbuf_printf(t, "%s%u %s", first ? "" : ", ", st->cores[k], kind_name[k]);
       first = 0;
     }
-  fp3_strbuf_printf(t, ").\n// Delay lines: %u, %u stages, %u flip-flops (longest %u).\n"
+  if (st->scaleb) fp3_strbuf_printf(t, "%s%u scaleb", first ? "" : ", ", st->scaleb);
+  fp3_strbuf_printf(t, ").\n// Delay lines: %u, %u stages (longest %u): %u flip-flops, %u LUT-RAM\n"
+                       "// cells, %u block RAMs.\n"
                        "// Cores: %s, %s.\n//\n",
-                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay,
+                    st->delay_lines, st->delay_stages, st->longest_delay, st->delay_ffs,
+                    st->lutram_cells, st->ebr_blocks,
                     s->o.rtz ? "round toward zero" : "round to nearest even",
                     s->o.ftz ? "subnormals flushed to zero" : "subnormals supported");
   fp3_strbuf_printf(t, "// Ports:\n"
@@ -326,10 +531,13 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     if (x->src == SRC_CORE)
       fp3_strbuf_printf(t, "  wire [31:0] %s;\n  wire        %s_valid;\n  wire [4:0]  %s_flags;\n",
                         x->sig, x->sig, x->sig);
-    for (unsigned d = 1; d <= x->delay; d++)
-      if (x->tap[d])
-        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n  wire        unused_%s_d%u;\n", x->sig, d,
-                          x->sig, d);
+    for (unsigned d = 1, prev = 0; d <= x->delay; d++)
+      if (x->tap[d]) {
+        fp3_strbuf_printf(t, "  wire [31:0] %s_d%u;\n", x->sig, d);
+        if (segment_style(d - prev) == 0)
+          fp3_strbuf_printf(t, "  wire        unused_%s_d%u;\n", x->sig, d);
+        prev = d;
+      }
   }
   /* cores */
   fp3_strbuf_printf(t, "\n  // ---- cores, in the IR's order ----\n");
@@ -345,6 +553,17 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     fp3_strbuf_printf(t, "\n  // IR node %u: %s  (%s%s; cycles %u -> %u)\n", i, buf, kind_name[k],
                       x->ir.inv ? ", loop invariant" : "", x->start, x->ready);
     const unsigned lat = core_latency(&s->o, k);
+    if (x->scale >= 0) {
+      /* a times a constant +-2^k: the other operand is a_i */
+      const int other = x->scale == 1 ? x->ir.a : x->ir.b;
+      operand(s, other, x->start - s->nd[other].ready, a, sizeof a);
+      fp3_strbuf_printf(t, "  // a multiply by a power of two: an exponent adjustment, no multiplier\n"
+                           "  fp_scaleb #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1),\n"
+                           "    .a_i(%s), .b_i(32'h%08X),\n",
+                        s->o.scaleb_latency, x->sig, a,
+                        (unsigned)s->nd[x->scale == 1 ? x->ir.b : x->ir.a].ir.bits);
+    } else
     switch (k) {
     case FP3_IR_ADD:
     case FP3_IR_SUB:
@@ -388,10 +607,17 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     for (unsigned d = 1; d <= x->delay; d++) {
       if (!x->tap[d]) continue;
       operand(s, (int)i, prev, b, sizeof b);
-      fp3_strbuf_printf(t, "  fp_pipe #(.WIDTH(32), .DEPTH(%u)) u_%s_d%u (\n"
-                           "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b0), .data_i(%s),\n"
-                           "    .valid_o(unused_%s_d%u), .data_o(%s_d%u)\n  );\n",
-                        d - prev, x->sig, d, b, x->sig, d, x->sig, d);
+      const int style = segment_style(d - prev);
+      if (style == 0)
+        fp3_strbuf_printf(t, "  fp_pipe #(.WIDTH(32), .DEPTH(%u)) u_%s_d%u (\n"
+                             "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b0), .data_i(%s),\n"
+                             "    .valid_o(unused_%s_d%u), .data_o(%s_d%u)\n  );\n",
+                          d - prev, x->sig, d, b, x->sig, d, x->sig, d);
+      else
+        fp3_strbuf_printf(t, "  fp_delay #(.WIDTH(32), .DEPTH(%u), .STYLE(%d)) u_%s_d%u (  // %s\n"
+                             "    .clk_i(clk_i), .data_i(%s), .data_o(%s_d%u)\n  );\n",
+                          d - prev, style, x->sig, d, style == 1 ? "LUT RAM" : "block RAM", b,
+                          x->sig, d);
       prev = d;
     }
   }
@@ -429,10 +655,32 @@ static void make_report(struct fp3_spatial *s, fp3_strbuf *t) {
   fp3_strbuf_printf(t, "cores: %u", st->ncores);
   for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++)
     if (st->cores[k]) fp3_strbuf_printf(t, ", %s %u", kind_name[k], st->cores[k]);
-  fp3_strbuf_printf(t, "\ndelay lines: %u values, %u stages, %u flip-flops (longest %u stages)\n",
-                    st->delay_lines, st->delay_stages, st->delay_ffs, st->longest_delay);
-  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u, div/sqrt %u, sign %u; %s%s\n",
+  if (st->scaleb) fp3_strbuf_printf(t, ", scaleb %u", st->scaleb);
+  fp3_strbuf_printf(t, "\ndelay lines: %u values, %u stages (longest %u stages)\n",
+                    st->delay_lines, st->delay_stages, st->longest_delay);
+  fp3_strbuf_printf(t, "delay flip-flops: %u segments, %u stages, %u flip-flops\n",
+                    st->ff_segments, st->ff_stages, st->delay_ffs);
+  fp3_strbuf_printf(t, "delay LUT RAM: %u segments, %u stages, %u TRELLIS_DPR16X4\n",
+                    st->lutram_segments, st->lutram_stages, st->lutram_cells);
+  fp3_strbuf_printf(t, "delay block RAM: %u segments, %u stages, %u DP16KD\n",
+                    st->ebr_segments, st->ebr_stages, st->ebr_blocks);
+  fp3_strbuf_printf(t, "estimate per pipeline: %u LUT4, %u flip-flops, %u MULT18X18D, %u EBR%s\n",
+                    st->est_lut4, st->est_ff, st->est_mult, st->est_ebr,
+                    st->est_inexact ? " (some cores at the nearest measured configuration)" : "");
+  fp3_strbuf_printf(t, "LFE5U-85F: %u LUT4, %u flip-flops, %u MULT18X18D, %u EBR; a pipeline's share "
+                       "%.1f %%, %.1f %%, %.1f %%, %.1f %%\n",
+                    FP3_SPATIAL_DEVICE_LUT4, FP3_SPATIAL_DEVICE_FF, FP3_SPATIAL_DEVICE_MULT,
+                    FP3_SPATIAL_DEVICE_EBR, 100.0 * st->est_lut4 / FP3_SPATIAL_DEVICE_LUT4,
+                    100.0 * st->est_ff / FP3_SPATIAL_DEVICE_FF,
+                    100.0 * st->est_mult / FP3_SPATIAL_DEVICE_MULT,
+                    100.0 * st->est_ebr / FP3_SPATIAL_DEVICE_EBR);
+  fp3_strbuf_printf(t, "pipelines that fit: %u (limited by %s; within 75 %% of the LUT4s and "
+                       "flip-flops, every MULT18X18D, the EBRs less 16: the rest for the frame "
+                       "and routing)\n",
+                    st->fit, st->limit);
+  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u, div/sqrt %u, sign %u, scaleb %u%s; %s%s\n",
                     s->o.add_latency, s->o.mul_latency, s->o.div_latency, s->o.sign_latency,
+                    s->o.scaleb_latency, s->o.scaleb ? "" : " (off: fp_mul)",
                     s->o.rtz ? "rtz" : "rne", s->o.ftz ? ", ftz" : "");
 }
 
@@ -440,7 +688,8 @@ int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
                       const fp3_spatial_opts *o, fp3_spatial **out, char *msg, size_t n) {
   *out = NULL;
   if (o->add_latency < 1 || o->mul_latency < 1 || o->div_latency < 1 || o->sign_latency < 1 ||
-      o->add_latency > 64 || o->mul_latency > 64 || o->div_latency > 64 || o->sign_latency > 3) {
+      o->add_latency > 64 || o->mul_latency > 64 || o->div_latency > 64 || o->sign_latency > 3 ||
+      o->scaleb_latency < 1 || o->scaleb_latency > 64) {
     snprintf(msg, n, "core latencies must be 1 to 64 (fp_sign: 1 to 3)");
     return -1;
   }
@@ -470,6 +719,7 @@ int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
     fp3_spatial_free(s);
     return -1;
   }
+  estimate(s);
   fp3_strbuf t = {0}, r = {0};
   emit(s, &t);
   make_report(s, &r);

@@ -1,0 +1,214 @@
+// fp_scaleb.v -- pipelined binary32 multiply by a power of two, a * b with
+// b = +-2^k a normal number, as an exponent adjustment (IEEE 754-2019
+// §5.3.3 scaleB, with b's sign): no multiplier, so the spatial back end
+// (sw/compiler/spatial.h) uses it for a multiply by a constant such as
+// 0.5 or 2 and saves fp_mul's MULT18X18D blocks.
+//
+// Result and flags equal fp_mul's (and sw/ref/fpref.h fpref_mul's) for the
+// same a and b, bit for bit, in every ROUND and FTZ:
+//   - a NaN: a quieted (bit 22 set, sign and payload kept); invalid if a
+//     is signalling (IEEE 754-2019 §6.2, §7.2);
+//   - a infinite: infinity of sign a XOR b, no flag;
+//   - a zero (or, with FTZ, subnormal: read as zero, x86 DAZ, no flag):
+//     zero of sign a XOR b, no flag;
+//   - otherwise the exact product a * 2^k = M * 2^E (M the 24-bit
+//     significand of a, normalised if a is subnormal) is
+//       normal if its biased exponent is 1 to 254: exact, no flag;
+//       above (§7.4 overflow): RNE infinity, RTZ the largest finite
+//         number, with overflow and inexact;
+//       below 1 (tiny; the exact product has at most 24 significant bits,
+//         so tininess before and after rounding agree, §7.5): FTZ: zero
+//         of the sign with underflow and inexact (x86 FTZ); else
+//         denormalised and rounded (RNE: ties to even; RTZ: truncated),
+//         which may round up to the smallest normal number, with
+//         underflow and inexact if any bit was lost, no flag if none.
+// b must be a normal power of two (fraction 0, exponent field 1 to 254);
+// for any other b the result is not specified (the generator passes only
+// such constants).
+//
+// Parameters:
+//   LATENCY  rising edges from the operands being sampled to the result,
+//            >= 1.  1: one output register; 2: a register between the
+//            two halves below (the exponent sum, the special cases and the
+//            normalisation of a subnormal a | the denormalisation,
+//            rounding and packing), then the output register; >= 3: and
+//            LATENCY - 2 delay stages after it.
+//   ROUND    0: round to nearest, ties to even; 1: round toward zero
+//   FTZ      1: subnormal a read as zero, tiny results flushed to zero
+//
+// Ports (as fp_mul's):
+//   clk_i    clock, rising edge
+//   rst_i    synchronous reset, active high; clears the valid bits only
+//   valid_i  an operation is presented this cycle
+//   a_i      operand a (binary32 bit pattern)
+//   b_i      b = +-2^k, k = -126 to 127 (binary32 bit pattern)
+//   valid_o  a result is presented this cycle (LATENCY after valid_i)
+//   y_o      result
+//   flags_o  {invalid, infinite (always 0), overflow, underflow, inexact}
+`default_nettype none
+
+module fp_scaleb #(
+  parameter integer LATENCY = 1, // issue to result, rising edges, >= 1
+  parameter integer ROUND   = 0, // 0 RNE, 1 RTZ
+  parameter integer FTZ     = 0  // 1: flush subnormal inputs and results
+) (
+  input  wire        clk_i,
+  input  wire        rst_i,
+  input  wire        valid_i,
+  input  wire [31:0] a_i,
+  input  wire [31:0] b_i,
+  output wire        valid_o,
+  output wire [31:0] y_o,
+  output wire [4:0]  flags_o
+);
+
+  localparam [4:0] FLAG_NV = 5'b10000;
+  localparam [4:0] FLAG_OF = 5'b00100;
+  localparam [4:0] FLAG_UF = 5'b00010;
+  localparam [4:0] FLAG_NX = 5'b00001;
+
+  generate
+    if (LATENCY < 1) begin : g_bad_latency
+      // Elaboration error on purpose: LATENCY must be at least 1.
+      fp_scaleb_error_LATENCY_must_be_at_least_1 u_error ();
+    end
+  endgenerate
+
+  // ---- first half: special cases, the exponent sum, the shift amounts ----
+  // Written so that a constant b (the spatial back end's case) folds in
+  // synthesis: k's sign decides which paths exist, and each shift amount
+  // is masked to the bits its bound under that k needs, so a multiply by
+  // 0.5 or 2 keeps a one-place shifter, not a barrel shifter.
+  wire        sign   = a_i[31] ^ b_i[31];
+  wire [7:0]  ea     = a_i[30:23];
+  wire [22:0] fa     = a_i[22:0];
+  wire        a_max  = ea == 8'hFF;
+  wire        a_sub  = ea == 8'h00;
+  wire        a_nan  = a_max && fa != 23'd0;
+  wire        a_inf  = a_max && fa == 23'd0;
+  wire        a_zero = a_sub && (fa == 23'd0 || FTZ != 0);
+  // b's fraction is 0 by the contract: only its sign and exponent count.
+  wire unused_b_fraction = &{1'b0, b_i[22:0], 1'b0};
+
+  // k = eb - 127 (-126 to 127) and a's significand m, not normalised (its
+  // exponent E: ea, 1 for a subnormal a): a * 2^k = m * 2^(E + k - 150),
+  // so t = E + k is the result's biased exponent while m's top bit is set
+  wire signed [9:0] k     = $signed({2'b00, b_i[30:23]}) - 10'sd127;
+  wire              k_neg = k < 10'sd0;
+  wire [23:0]       m     = {~a_sub, fa};
+  wire signed [9:0] t     = $signed({2'b00, a_sub ? 8'd1 : ea}) + k;
+
+  // the paths of a finite nonzero a
+  //   normal: a normal, 1 <= t <= 254: {sign, t, fa}, exact
+  //   ovf:    a normal, t >= 255 (then k > 0)
+  //   left:   a subnormal, k >= 0: m shifted left by d = min(lz, k) (lz
+  //           its leading zeros, 1 to 23): normal with exponent
+  //           1 + k - lz if the shift reached the hidden bit, else still
+  //           subnormal; exact either way
+  //   tiny:   t <= 0 (then k < 0): m shifted right by 1 - t, 1 to -k,
+  //           rounded
+  wire ovf   = !a_sub && t > 10'sd254;
+  wire left  = a_sub && !k_neg;
+  wire tiny  = k_neg && t < 10'sd1;
+
+  wire [4:0] lz;
+  fp_lzc #(.WIDTH(24)) u_lzc (.v_i(m), .n_o(lz));
+  // masks: the bits a shift amount needs when it is at most k (left) or
+  // at most min(-k, 26) (tiny; from 26 places on only the sticky remains)
+  function [4:0] span(input [4:0] v);
+    begin
+      span = v >= 5'd16 ? 5'd31 : v >= 5'd8 ? 5'd15 : v >= 5'd4 ? 5'd7 : v >= 5'd2 ? 5'd3 :
+             v >= 5'd1 ? 5'd1 : 5'd0;
+    end
+  endfunction
+  wire [4:0] k_lo    = (k > 10'sd23) ? 5'd23 : k[4:0];       // k for the left shift, bounded
+  wire [4:0] d       = ((lz < k_lo) ? lz : k_lo) & span(k_lo);
+  wire [7:0] e_left  = k[7:0] + 8'd1 - {3'b000, lz};        // when the shift reached bit 23
+  wire signed [9:0] nk = -k;
+  wire [9:0] sh_w    = 10'sd1 - t;                           // 1 to -k on the tiny path
+  wire [4:0] sh_lim  = (nk > 10'sd26) ? 5'd26 : nk[4:0];
+  wire [4:0] sh      = (sh_w > {5'd0, sh_lim} ? sh_lim : sh_w[4:0]) & span(sh_lim);
+
+  // the decided results: NaN, infinity, zero, overflow
+  reg        spec;
+  reg [31:0] spec_y;
+  reg [4:0]  spec_f;
+  always @* begin
+    spec   = 1'b1;
+    spec_y = 32'h0;
+    spec_f = 5'd0;
+    if (a_nan) begin
+      spec_y = a_i | 32'h0040_0000;
+      spec_f = fa[22] ? 5'd0 : FLAG_NV;
+    end else if (a_inf) begin
+      spec_y = {sign, 8'hFF, 23'd0};
+    end else if (a_zero) begin
+      spec_y = {sign, 31'd0};
+    end else if (ovf) begin
+      spec_y = ROUND != 0 ? {sign, 31'h7F7F_FFFF} : {sign, 31'h7F80_0000};
+      spec_f = FLAG_OF | FLAG_NX;
+    end else begin
+      spec   = 1'b0;
+    end
+  end
+
+  // ---- the register between the halves (LATENCY >= 2) ----
+  localparam integer MID_W = 1 + 32 + 5 + 1 + 2 + 8 + 24 + 5 + 8 + 5;
+  wire [MID_W-1:0] mid_d = {spec, spec_y, spec_f, sign, left, tiny, t[7:0], m, d, e_left, sh};
+  wire [MID_W-1:0] mid_q;
+  wire             mid_valid;
+  fp_pipe #(.WIDTH(MID_W), .DEPTH(LATENCY >= 2 ? 1 : 0)) u_mid (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .data_i(mid_d),
+    .valid_o(mid_valid), .data_o(mid_q)
+  );
+  wire        q_spec, q_sign, q_left, q_tiny;
+  wire [31:0] q_spec_y;
+  wire [4:0]  q_spec_f, q_d, q_sh;
+  wire [7:0]  q_t, q_e_left;
+  wire [23:0] q_m;
+  assign {q_spec, q_spec_y, q_spec_f, q_sign, q_left, q_tiny, q_t, q_m, q_d, q_e_left, q_sh} = mid_q;
+
+  // ---- second half: shift, round, pack ----
+  // left: exact
+  wire [23:0] mm      = q_m << q_d;
+  // tiny: q_m * 2^(t - 1) units of 2^-149, i.e. q_m shifted right by sh
+  wire [49:0] ext     = {q_m, 26'd0} >> q_sh;
+  wire [22:0] sub_q   = ext[48:26];
+  wire unused_ext_top = ext[49];           // 0: sh >= 1 on the tiny path
+  wire        guard   = ext[25];
+  wire        stick   = |ext[24:0];
+  wire        inexact = guard | stick;
+  wire        up      = ROUND == 0 && guard && (stick || sub_q[0]);
+  // a carry out of the fraction makes the smallest normal number
+  wire [30:0] sub_mag = {8'd0, sub_q} + {30'd0, up};
+
+  reg [31:0] y_d;
+  reg [4:0]  f_d;
+  always @* begin
+    if (q_spec) begin
+      y_d = q_spec_y;
+      f_d = q_spec_f;
+    end else if (q_left) begin
+      y_d = {q_sign, mm[23] ? q_e_left : 8'd0, mm[22:0]};
+      f_d = 5'd0;
+    end else if (!q_tiny) begin
+      y_d = {q_sign, q_t, q_m[22:0]};
+      f_d = 5'd0;
+    end else if (FTZ != 0) begin
+      y_d = {q_sign, 31'd0};
+      f_d = FLAG_UF | FLAG_NX;
+    end else begin
+      y_d = {q_sign, sub_mag};
+      f_d = inexact ? (FLAG_UF | FLAG_NX) : 5'd0;
+    end
+  end
+
+  // ---- the output register and any delay stages after it ----
+  fp_pipe #(.WIDTH(37), .DEPTH(LATENCY >= 2 ? LATENCY - 1 : LATENCY)) u_out (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(mid_valid), .data_i({y_d, f_d}),
+    .valid_o(valid_o), .data_o({y_o, flags_o})
+  );
+
+endmodule
+
+`default_nettype wire
