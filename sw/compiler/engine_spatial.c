@@ -614,7 +614,7 @@ typedef struct trace_run {
   unsigned n;         /* slots of the run                                 */
   uint32_t steps;     /* K                                                */
   uint64_t t0;        /* the shim's cycle at START                        */
-  int bad;            /* a write-back of no slot of the run, or one too many */
+  int bad;            /* 1: a write-back of no slot of the run; 2: one too many */
   uint32_t bad_obj;
 } trace_run;
 
@@ -625,8 +625,10 @@ static void on_trace(void *ctx, uint32_t obj, const uint32_t *y, unsigned nc, ui
   trace_run *tr = ctx;
   spatial_engine *s = tr->s;
   if (obj >= tr->n || s->steps_done[obj] >= tr->steps || nc != s->nc) {
-    if (!tr->bad) tr->bad_obj = obj;
-    tr->bad = 1;
+    if (!tr->bad) {
+      tr->bad_obj = obj;
+      tr->bad = obj >= tr->n || nc != s->nc ? 1 : 2;
+    }
     return;
   }
   const uint32_t k = ++s->steps_done[obj];
@@ -669,10 +671,16 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
   const int rc = chip_run(s, limit, &st->cycles, m, sizeof m);
   sh->trace(sh->dut, 1, s->nc, NULL, NULL);
   if (rc) return sp_fail(e, m);
-  if (tr.bad) {
+  if (tr.bad == 1) {
     snprintf(m, sizeof m,
-             "the trace port showed a write-back of object %" PRIu32 " beyond the run's %u "
-             "objects x %" PRIu32 " steps", tr.bad_obj, n, steps);
+             "the trace port showed a write-back of object %" PRIu32 ", not one of the run's "
+             "%u objects", tr.bad_obj, n);
+    return sp_fail(e, m);
+  }
+  if (tr.bad == 2) {
+    snprintf(m, sizeof m,
+             "the trace port showed more than %" PRIu32 " write-backs of object %" PRIu32
+             " in a run of %" PRIu32 " steps", steps, tr.bad_obj, steps);
     return sp_fail(e, m);
   }
   for (unsigned o = 0; o < n; o++)
