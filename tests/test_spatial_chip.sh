@@ -54,7 +54,22 @@ STEP=fp3_spatial_ship_rk4se
 # build RTLDIR GENDIR OBJDIR EXE: the harness on the chip top of GENDIR
 # with the frame's RTL from RTLDIR (rtl/, or a broken copy).  One
 # translation unit, unoptimised: the build, not the run, takes the time.
+# The executable is kept in $TBCACHE as tb-KEY, KEY a hash of every input
+# of the build (the RTL, the generated top and step, the harness and the
+# map it includes, the runtime, the tools' versions), so a later run on
+# the same sources builds nothing and any change builds anew.
+TBCACHE=${FP3_SPATIAL_TB_CACHE:-$PWD/build/spatial-chip-tb}
 build() {
+  local key
+  key=$(cat "$1"/*.v rtl/*.v rtl/*.vh "$2/$TOP.v" "$2/$STEP.v" sim/spatial_chip_tb.cpp \
+          sw/isa/*.h $RUNTIME | cat - <($VERILATOR --version; g++ --version) |
+        sha256sum | cut -c1-16)
+  if [ -x "$TBCACHE/tb-$key" ]; then cp "$TBCACHE/tb-$key" "$4"; return; fi
+  build_tb "$@" || return 1
+  mkdir -p "$TBCACHE" && cp "$4" "$TBCACHE/tb-$key.tmp.$$" &&
+    mv "$TBCACHE/tb-$key.tmp.$$" "$TBCACHE/tb-$key"
+}
+build_tb() {
   { nice $VERILATOR --cc --x-assign fast --x-initial fast --noassert -I"$1" -y "$1" -Irtl -y rtl \
       --top-module $TOP --prefix Vchip --Mdir "$3" "$2/$TOP.v" "$2/$STEP.v" &&
     nice make -s -C "$3" -f Vchip.mk VM_PARALLEL_BUILDS=0 OPT_FAST=-O0 OPT_SLOW=-O0 \
