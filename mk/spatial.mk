@@ -12,20 +12,22 @@
 # two) against fpref_mul on directed and 3,000,000 random operand pairs
 # (about 20 s, one Verilator build).
 #
-# tests/test_spatial_chip.sh generates the ship's chip top (--pipelines 1
-# and 3), Verilates it with sim/spatial_chip_tb.cpp and drives it over
+# tests/test_spatial_chip.sh generates the ship's chip top (--pipelines 3),
+# Verilates it with sim/spatial_chip_tb.cpp and drives it over
 # AXI4-Lite: register map, SLVERR cases, runs over awake lists checked bit
 # for bit and against the cycle formula, and two broken frames that must
-# fail (about a minute, four Verilator builds).
+# fail (three Verilator builds, about 50 s; kept in build/spatial-chip-tb
+# by a hash of their inputs, so about 18 s on the same sources).
 TEST_SCRIPTS += tests/test_spatial.sh tests/test_scaleb.sh tests/test_spatial_chip.sh
 test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 
 # tests/test_spatial_engine.sh: fp3 run and fp3 frames --engine spatial
-# (the model's chip, Verilated on first use into a temporary cache, loaded
-# with dlopen, driven over AXI4-Lite): the ship and the oscillator
-# bit-exact after every step and equal to --engine rtl, the cache reused,
-# damaged entries found and rebuilt, bad options refused (about a minute,
-# three Verilator builds).
+# (the model's chip, Verilated on first use into build/spatial-cache,
+# loaded with dlopen, driven over AXI4-Lite, observed on its trace port):
+# the ship and the oscillator bit-exact after every step and equal to
+# --engine rtl, the cache reused, damaged entries found and rebuilt (in a
+# temporary copy), bad options refused (about 20 s once the tree's two
+# chips are built, 50 s before).
 TEST_SCRIPTS += tests/test_spatial_engine.sh
 
 # `make pnr-spatial MODEL=models/ship.fp3m [INTEGRATOR=rk4se] [PIPELINES=N]
@@ -45,3 +47,10 @@ SPATIAL_OPTS ?= --add-latency 9 --mul-latency 9
 pnr-spatial: $(BUILD)/fp3 pnr-tools
 	@test -n "$(MODEL)" || { echo "make pnr-spatial: name the model: MODEL=models/ship.fp3m" >&2; exit 2; }
 	@bash scripts/pnr-spatial.sh $(BUILD)/pnr-spatial $(MODEL) $(INTEGRATOR) "$(PIPELINES)" "$(FTZ)" $(SPATIAL_OPTS)
+
+# test-spatial-all: what make test leaves out of the spatial chip's test:
+# the 1-pipeline chip and seven more broken frames (about 3 minutes).
+.PHONY: test-spatial-all
+## test-spatial-all: the spatial chip's slower checks (tests/test_spatial_chip.sh --mutants)
+test-spatial-all: $(BUILD)/fp3 $(VERILATED_OBJS)
+	bash tests/test_spatial_chip.sh --mutants

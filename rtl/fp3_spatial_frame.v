@@ -55,6 +55,13 @@
 // Pipelines (p's fields at [p * width +: width])
 //   pv_o, pin_o, py_o   an object enters pipeline p: valid, in_i, y_i
 //   pv_i, pyo_i         pipeline p's valid_o and y_o
+// Write-back (observation; what the state memory writes this cycle)
+//   wb_v_o[p]           bank p writes an object's new carried values back
+//                       at the edge that ends this cycle (running and
+//                       pv_i[p]: the memory's write enable)
+//   wb_row_o            ... at row wb_row_o[p*RW +: RW] (object row * N + p);
+//                       the words are pyo_i's.  Left unconnected, they cost
+//                       nothing: the memory's own enable and address.
 // Reset: rst_i, synchronous, active high (the feeder and the feed's valid
 // bits; the memories keep their contents).
 `default_nettype none
@@ -92,7 +99,10 @@ module fp3_spatial_frame #(
   output wire [PIPELINES*32*INPUTS-1:0]    pin_o,
   output wire [PIPELINES*32*CARRIED-1:0]   py_o,
   input  wire [PIPELINES-1:0]              pv_i,
-  input  wire [PIPELINES*32*CARRIED-1:0]   pyo_i
+  input  wire [PIPELINES*32*CARRIED-1:0]   pyo_i,
+  // write-back
+  output wire [PIPELINES-1:0]              wb_v_o,
+  output wire [PIPELINES*RW-1:0]           wb_row_o
 );
   localparam [1:0] SEL_AWAKE = 2'd1;
   localparam [1:0] SEL_STATE = 2'd2;
@@ -209,6 +219,8 @@ module fp3_spatial_frame #(
       );
       assign input_rd[b*32*NI +: 32*NI] = in_rd;
 
+      assign wb_v_o[b] = running && pv_i[b];
+      assign wb_row_o[b*RW +: RW] = wb_row;
       assign pv_o[b] = pv_q;
       assign pin_o[b*32*NI +: 32*NI] = in_rd;
       assign py_o[b*32*NC +: 32*NC]  = y_rd;

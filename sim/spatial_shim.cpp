@@ -7,6 +7,12 @@
 // AXI4-Lite writes and reads of one word, each with its response, at the
 // addresses of sw/isa/fp3_spatial_regs.h.  The Verilated class is
 // Vspatial (--prefix Vspatial).
+//
+// The top has its trace port (fp3_spatial_top with trace): at every
+// clock cycle, before the rising edge, each write-back it shows is handed
+// to the callback that fp3_spatial_shim_trace sets, so the host observes
+// a run of K steps while the model runs freely, with no AXI transfer
+// (DESIGN.md "Observe, don't stop").
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -19,16 +25,53 @@ namespace {
 // Clock cycles one transfer may wait for its handshake or response.
 constexpr int kAxiTimeout = 1000;
 
+// The host's callback for one write-back: object obj's nc new carried
+// values y[0 .. nc-1], in the clock cycle `cycle` (the shim's count).
+typedef void (*trace_fn)(void *ctx, uint32_t obj, const uint32_t *y, unsigned nc,
+                         uint64_t cycle);
+
+// The widest carried state the shim copies for the callback (the
+// generator's limit, FP3S_MAX_WORDS, is below it).
+constexpr unsigned kMaxCarried = 256;
+
 struct dut {
   VerilatedContext ctx;
   Vspatial *top = nullptr;
   uint64_t cycles = 0;
+  trace_fn fn = nullptr;
+  void *fn_ctx = nullptr;
+  unsigned pipelines = 0, carried = 0;
 };
 
-// One clock cycle: the inputs as set, the clock low, then the rising edge.
+// Word i (32 bits) of an output port, as Verilator types it by width:
+// an integer up to 64 bits, a VlWide array beyond.
+template <typename T>
+uint32_t word_of(const T &v, unsigned i) {
+  return i < (sizeof v + 3) / 4 ? static_cast<uint32_t>(static_cast<uint64_t>(v) >> (32 * i)) : 0;
+}
+template <std::size_t N>
+uint32_t word_of(const VlWide<N> &v, unsigned i) {
+  return i < N ? v[i] : 0;
+}
+
+// The write-backs of this cycle (the inputs evaluated, before the edge)
+// to the callback.
+void observe(dut *d) {
+  Vspatial *t = d->top;
+  uint32_t y[kMaxCarried];
+  for (unsigned p = 0; p < d->pipelines; p++) {
+    if (!((word_of(t->trace_v_o, p / 32) >> (p % 32)) & 1u)) continue;
+    for (unsigned w = 0; w < d->carried; w++) y[w] = word_of(t->trace_y_o, p * d->carried + w);
+    d->fn(d->fn_ctx, word_of(t->trace_obj_o, p), y, d->carried, d->cycles);
+  }
+}
+
+// One clock cycle: the inputs as set, the clock low (the trace observed),
+// then the rising edge.
 void tick(dut *d) {
   d->top->clk_i = 0;
   d->top->eval();
+  if (d->fn) observe(d);
   d->top->clk_i = 1;
   d->top->eval();
   d->cycles++;
@@ -167,6 +210,20 @@ size_t fp3_spatial_shim_read_many(void *h, const uint32_t *addr, size_t n, uint3
   }
   t->s_axil_arvalid_i = t->s_axil_rready_i = 0;
   return got;
+}
+
+// Hand every write-back of the trace port to fn(ctx, ...) from now on
+// (fn NULL: no more), the top having `pipelines` pipelines of `carried`
+// carried words.  0, or -1 when carried exceeds what the shim copies.
+int fp3_spatial_shim_trace(void *h, unsigned pipelines, unsigned carried, trace_fn fn,
+                           void *ctx) {
+  dut *d = static_cast<dut *>(h);
+  if (carried > kMaxCarried) return -1;
+  d->fn = fn;
+  d->fn_ctx = ctx;
+  d->pipelines = pipelines;
+  d->carried = carried;
+  return 0;
 }
 
 // Clock cycles simulated since the last reset (the host's transfers

@@ -10,14 +10,17 @@
 # awake objects than the latency and with more than N x L, after which
 # every object must equal the golden model bit for bit (the sleeping ones
 # unchanged) and CYCLES must equal the formula; the checks while running.
-# On the ship's folded RK4 step (latency 68) with 1 pipeline and 96
-# objects, and with 3 pipelines and 252.
+# On the ship's folded RK4 step (latency 68) with 3 pipelines and 252
+# objects; `--all` also with 1 pipeline and 96 (outside make test: the
+# 1-pipeline chip, with its trace port, is the spatial engine's, which
+# tests/test_spatial_engine.sh runs bit-exact through the same slave).
 #
 # The slave's divider by N (fp3_spatial_divn) is checked alone, on every
 # 10-bit dividend, for N = 1, 2, 3, 5, 12 and 255 (iverilog).
-# A broken frame must fail: the feeder reading an object one cycle before
-# its write-back has landed (PERIOD L + 1), and a frame that never feeds
-# bank 1.  `--mutants` also runs the other broken frames (write-back one
+# A broken frame must fail (on 3 pipelines): the feeder reading an object
+# one cycle before its write-back has landed (PERIOD L + 1), and a frame
+# that never feeds bank 1.  `--mutants` (which implies --all) also runs
+# the other broken frames (write-back one
 # cycle early, DONE a cycle late, the awake entry's bank unchecked, INFO's
 # fields swapped, windows writable while running, an input write landing
 # in every word, a write response before the write), outside make test.
@@ -26,6 +29,14 @@
 # Runs from anywhere; the CLI is $FP3_BIN, else build/fp3 of this checkout.
 # The Verilated runtime comes from build/verilated (make builds it).
 set -euo pipefail
+all= mutants=
+for a in "$@"; do
+  case $a in
+    --all) all=1;;
+    --mutants) all=1 mutants=1;;
+    *) echo "usage: $0 [--all] [--mutants]" >&2; exit 2;;
+  esac
+done
 cd "$(dirname "$0")/.."
 FP3=${FP3_BIN:-$PWD/build/fp3}
 VERILATOR=${VERILATOR:-verilator}
@@ -43,7 +54,22 @@ STEP=fp3_spatial_ship_rk4se
 # build RTLDIR GENDIR OBJDIR EXE: the harness on the chip top of GENDIR
 # with the frame's RTL from RTLDIR (rtl/, or a broken copy).  One
 # translation unit, unoptimised: the build, not the run, takes the time.
+# The executable is kept in $TBCACHE as tb-KEY, KEY a hash of every input
+# of the build (the RTL, the generated top and step, the harness and the
+# map it includes, the runtime, the tools' versions), so a later run on
+# the same sources builds nothing and any change builds anew.
+TBCACHE=${FP3_SPATIAL_TB_CACHE:-$PWD/build/spatial-chip-tb}
 build() {
+  local key
+  key=$(cat "$1"/*.v rtl/*.v rtl/*.vh "$2/$TOP.v" "$2/$STEP.v" sim/spatial_chip_tb.cpp \
+          sw/isa/*.h $RUNTIME | cat - <($VERILATOR --version; g++ --version) |
+        sha256sum | cut -c1-16)
+  if [ -x "$TBCACHE/tb-$key" ]; then cp "$TBCACHE/tb-$key" "$4"; return; fi
+  build_tb "$@" || return 1
+  mkdir -p "$TBCACHE" && cp "$4" "$TBCACHE/tb-$key.tmp.$$" &&
+    mv "$TBCACHE/tb-$key.tmp.$$" "$TBCACHE/tb-$key"
+}
+build_tb() {
   { nice $VERILATOR --cc --x-assign fast --x-initial fast --noassert -I"$1" -y "$1" -Irtl -y rtl \
       --top-module $TOP --prefix Vchip --Mdir "$3" "$2/$TOP.v" "$2/$STEP.v" &&
     nice make -s -C "$3" -f Vchip.mk VM_PARALLEL_BUILDS=0 OPT_FAST=-O0 OPT_SLOW=-O0 \
@@ -105,7 +131,7 @@ for n in 1 2 3 5 12 255; do
   fi
 done
 
-for nm in "1 96" "3 252"; do
+for nm in "3 252" ${all:+"1 96"}; do
   read -r n m <<<"$nm"
   gen "$n" "$m" || { fail=1; continue; }
   d="$tmp/n$n"
@@ -128,10 +154,10 @@ for nm in "1 96" "3 252"; do
 done
 
 # broken frames
-mutant period-short 1 96 fp3_spatial_frame.v ".PERIOD(LATENCY + 2)" ".PERIOD(LATENCY + 1)" run
+mutant period-short 3 252 fp3_spatial_frame.v ".PERIOD(LATENCY + 2)" ".PERIOD(LATENCY + 1)" run
 mutant bank1-unfed 3 252 fp3_spatial_frame.v "fv1_q <= !rst_i && feed &&" \
   "fv1_q <= !rst_i && feed && b != 1 &&" run
-if [ "${1:-}" = --mutants ]; then
+if [ -n "$mutants" ]; then
   mutant writeback-early 1 96 fp3_spatial_frame.v "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY))" \
     "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY - 1))" run
   mutant done-late 1 96 fp3_spatial_frame.v ".DRAIN(LATENCY + 2)" ".DRAIN(LATENCY + 3)" cycles

@@ -258,7 +258,7 @@ static int run_spatial(const fp3_spatial_args *a) {
   fp3_strbuf_printf(&rep, "%shash: %016llx (FNV-1a 64 of %s)\n", fp3_spatial_report(s),
                     (unsigned long long)fp3_spatial_hash(s), vname);
   if (a->pipelines) {
-    if (fp3_spatial_top(s, a->pipelines, a->objects, topmod, sizeof topmod, &top, msg,
+    if (fp3_spatial_top(s, a->pipelines, a->objects, 0, topmod, sizeof topmod, &top, msg,
                         sizeof msg)) {
       fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
       goto out;

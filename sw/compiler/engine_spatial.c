@@ -58,6 +58,8 @@ typedef struct shim {
   int (*read)(void *, uint32_t, uint32_t *);
   size_t (*read_many)(void *, const uint32_t *, size_t, uint32_t *, int *);
   uint64_t (*cycles)(void *);
+  int (*trace)(void *, unsigned, unsigned,
+               void (*)(void *, uint32_t, const uint32_t *, unsigned, uint64_t), void *);
   void *dut;           /* the chip, once created                          */
   unsigned sstride, istride; /* the windows' object strides (STRIDES)     */
 } shim;
@@ -269,7 +271,8 @@ static int shim_load(shim *s, const char *so, char *err, size_t n) {
              {"fp3_spatial_shim_write", (void **)&s->write},
              {"fp3_spatial_shim_read", (void **)&s->read},
              {"fp3_spatial_shim_read_many", (void **)&s->read_many},
-             {"fp3_spatial_shim_cycles", (void **)&s->cycles}};
+             {"fp3_spatial_shim_cycles", (void **)&s->cycles},
+             {"fp3_spatial_shim_trace", (void **)&s->trace}};
   for (size_t i = 0; i < sizeof sym / sizeof sym[0]; i++)
     if (!(*sym[i].fn = dlsym(s->dl, sym[i].name))) {
       snprintf(err, n, "no symbol %s", sym[i].name);
@@ -604,10 +607,45 @@ static int read_states(spatial_engine *s, unsigned n, char *m, size_t mn) {
   return 0;
 }
 
+/* What the trace callback needs during a run. */
+typedef struct trace_run {
+  spatial_engine *s;
+  const fp3_observer *obs;
+  unsigned n;         /* slots of the run                                 */
+  uint32_t steps;     /* K                                                */
+  uint64_t t0;        /* the shim's cycle at START                        */
+  int bad;            /* 1: a write-back of no slot of the run; 2: one too many */
+  uint32_t bad_obj;
+} trace_run;
+
+/* One write-back from the trace port: the object's k-th of the run is its
+ * state after integration k (the frame writes each awake object back once
+ * a step, in step order); into its bank, and to the observer. */
+static void on_trace(void *ctx, uint32_t obj, const uint32_t *y, unsigned nc, uint64_t cycle) {
+  trace_run *tr = ctx;
+  spatial_engine *s = tr->s;
+  if (obj >= tr->n || s->steps_done[obj] >= tr->steps || nc != s->nc) {
+    if (!tr->bad) {
+      tr->bad_obj = obj;
+      tr->bad = obj >= tr->n || nc != s->nc ? 1 : 2;
+    }
+    return;
+  }
+  const uint32_t k = ++s->steps_done[obj];
+  uint32_t *bank = s->bank + (size_t)obj * s->nregs;
+  for (unsigned w = 0; w < nc; w++) {
+    bank[s->y_reg[w]] = y[w];
+    fp3_observe_write(tr->obs, obj, s->y_reg[w], y[w], k);
+  }
+  fp3_observe_endi(tr->obs, obj, k, cycle - tr->t0);
+}
+
 /* Run slots 0 .. n-1 for `steps` steps each on the chip (see
- * engine_spatial.h): one step a run when the observer takes write-backs,
- * each object's new carried values read back after each; else all the
- * steps in one run. */
+ * engine_spatial.h): one START of all the steps, every write-back taken
+ * from the trace port as the model runs (into the banks and to the
+ * observer); at the end, every object must have been written back
+ * `steps` times, and the state window, read back, must hold what the
+ * trace showed last. */
 static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer *obs,
                   fp3_status *st) {
   spatial_engine *s = of(e);
@@ -619,34 +657,55 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
              FP3_SPATIAL_SLOTS);
     return -1;
   }
-  const int observed = obs && (obs->on_write || obs->on_ctx_write);
-  const uint32_t per = observed ? 1 : steps, runs = observed ? steps : 1;
   /* a run of K steps takes (K - 1) max(n, L + 2) + n + L + 2 cycles
    * (docs/spatial.md): far more is a hang */
-  const uint64_t limit = 4 * ((uint64_t)per + 1) * ((uint64_t)n + s->lat + 2) + 10000;
+  const uint64_t limit = 4 * ((uint64_t)steps + 1) * ((uint64_t)n + s->lat + 2) + 10000;
   for (unsigned o = 0; o < n; o++) s->steps_done[o] = 0;
   if (sync_slots(s, n, m, sizeof m)) return sp_fail(e, m);
-  if (s->steps_reg != per) {
-    if (ax_write(sh, FP3S_STEPS, per, m, sizeof m)) return sp_fail(e, m);
-    s->steps_reg = per;
+  if (s->steps_reg != steps) {
+    if (ax_write(sh, FP3S_STEPS, steps, m, sizeof m)) return sp_fail(e, m);
+    s->steps_reg = steps;
   }
-  for (uint32_t r = 1; r <= runs; r++) {
-    if (chip_run(s, limit, &st->cycles, m, sizeof m)) return sp_fail(e, m);
-    const uint32_t k = r * per;
-    if (read_states(s, n, m, sizeof m)) return sp_fail(e, m);
-    for (unsigned o = 0; o < n; o++) {
-      uint32_t *bank = s->bank + (size_t)o * s->nregs;
-      for (unsigned w = 0; w < s->nc; w++) {
-        const uint32_t v = s->rd_data[(size_t)o * s->nc + w];
-        bank[s->y_reg[w]] = v;
-        fp3_observe_write(obs, o, s->y_reg[w], v, k);
-      }
-      s->steps_done[o] = k;
-      fp3_observe_endi(obs, o, k, st->cycles - 1); /* its last cycle */
+  trace_run tr = {.s = s, .obs = obs, .n = n, .steps = steps, .t0 = sh->cycles(sh->dut)};
+  if (sh->trace(sh->dut, 1, s->nc, on_trace, &tr)) return sp_fail(e, "the shim cannot trace");
+  const int rc = chip_run(s, limit, &st->cycles, m, sizeof m);
+  sh->trace(sh->dut, 1, s->nc, NULL, NULL);
+  if (rc) return sp_fail(e, m);
+  if (tr.bad == 1) {
+    snprintf(m, sizeof m,
+             "the trace port showed a write-back of object %" PRIu32 ", not one of the run's "
+             "%u objects", tr.bad_obj, n);
+    return sp_fail(e, m);
+  }
+  if (tr.bad == 2) {
+    snprintf(m, sizeof m,
+             "the trace port showed more than %" PRIu32 " write-backs of object %" PRIu32
+             " in a run of %" PRIu32 " steps", steps, tr.bad_obj, steps);
+    return sp_fail(e, m);
+  }
+  for (unsigned o = 0; o < n; o++)
+    if (s->steps_done[o] != steps) {
+      snprintf(m, sizeof m,
+               "the trace port showed %" PRIu32 " write-backs of object %u in a run of %" PRIu32
+               " steps", s->steps_done[o], o, steps);
+      return sp_fail(e, m);
     }
-  }
+  /* the memory path: the state window holds the last write-backs */
+  if (read_states(s, n, m, sizeof m)) return sp_fail(e, m);
+  for (unsigned o = 0; o < n; o++)
+    for (unsigned w = 0; w < s->nc; w++) {
+      const uint32_t got = s->rd_data[(size_t)o * s->nc + w],
+                     want = s->bank[(size_t)o * s->nregs + s->y_reg[w]];
+      if (got != want) {
+        snprintf(m, sizeof m,
+                 "object %u carried word %u: the state window holds 0x%08" PRIX32
+                 " after the run, the trace port's last write-back 0x%08" PRIX32,
+                 o, w, got, want);
+        return sp_fail(e, m);
+      }
+    }
   st->done = 1;
-  st->steps_done = s->steps_done[0];
+  st->steps_done = steps;
   for (int u = 0; u < FP3_NUM_UNITS; u++) {
     st->unit_issued[u] = s->ops[u] * n * (uint64_t)steps;
     st->issued += st->unit_issued[u];
@@ -785,7 +844,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   cf->has_add = cf->has_sub = cf->has_mul = cf->has_div = cf->has_sqrt = cf->has_sign = 1;
 
   char top[160];
-  if (fp3_spatial_top(s->sp, 1, FP3_SPATIAL_SLOTS, top, sizeof top, &s->top_text, msg,
+  if (fp3_spatial_top(s->sp, 1, FP3_SPATIAL_SLOTS, 1, top, sizeof top, &s->top_text, msg,
                       sizeof msg)) {
     snprintf(err, n, "%s: %s", m->file, msg);
     goto fail;

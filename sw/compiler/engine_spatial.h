@@ -15,26 +15,32 @@
  * banks on the host and the chip's object memory in step with them: a
  * run writes the inputs and carried values of each slot whose bank the
  * host wrote since (from the registers that hold them, fp3_ir_node_reg,
- * fp3_compiled_state_reg), runs, and reads every slot's new carried
- * values back into its registers, reporting each to the observer as a
- * write-back of that integration, then an endi.  So every runner of the
+ * fp3_compiled_state_reg), runs all the steps with one START, and takes
+ * every slot's new carried values after every step from the chip's trace
+ * port while the model runs freely (DESIGN.md "Observe, don't stop"):
+ * each into its registers and to the observer as a write-back of that
+ * integration, then an endi.  So every runner of the
  * model path (fp3_run_state_objects, fp3_run_state_frames, fp3 run's one
  * object) drives it unchanged and compares every object with the same
  * golden model after every integration.
  *
  * The chip: the top `fp3 spatial --pipelines 1 --objects
- * FP3_SPATIAL_SLOTS` writes (spatial_top.h: the frame, its object memory
- * and AXI4-Lite slave around one pipeline), reached only through AXI4-Lite
- * transfers at the addresses of fp3_spatial_regs.h, as a board's host
- * would.  On load the engine reads ID, HASH (the low word of the step
+ * FP3_SPATIAL_SLOTS` writes, with its trace port (spatial_top.h: the
+ * frame, its object memory and AXI4-Lite slave around one pipeline),
+ * driven only through AXI4-Lite transfers at the addresses of
+ * fp3_spatial_regs.h, as a board's host would, and observed through the
+ * trace port.  On load the engine reads ID, HASH (the low word of the step
  * module's hash, fp3_spatial_hash), INFO, LATENCY and MAXOBJ and refuses
  * a chip that is not this module's.  A run of n slots and K steps writes
- * the awake list 0 .. n-1, COUNT = n, and STEPS = 1 and START K times when
- * the observer takes write-backs (each step's states are read back), else
- * STEPS = K and START once; it polls STATUS until DONE and reads the
- * states back to back (fp3_spatial_shim_read_many).  status.cycles is
- * the sum of the runs' CYCLES registers (START to DONE; (K - 1)
- * max(n, L + 2) + n + L + 2 for one run of K steps, docs/spatial.md);
+ * the awake list 0 .. n-1, COUNT = n, STEPS = K and START once, and
+ * polls STATUS until DONE; the trace port meanwhile shows each object's
+ * write-backs, the k-th its state after integration k.  After the run
+ * every object must have been written back K times (no more, no other
+ * object), and the state window, read back to back
+ * (fp3_spatial_shim_read_many), must hold each object's last write-back:
+ * otherwise the run fails naming the object.  status.cycles is the
+ * run's CYCLES register (START to DONE; (K - 1) max(n, L + 2) + n + L +
+ * 2, docs/spatial.md);
  * issued counts operations (one per core per object-step); exception
  * flags are not reported (the step module has no flag outputs: flags
  * stays 0, and fp3_engine_spatial_is says which engine it is so callers

@@ -36,8 +36,8 @@ unsigned fp3_spatial_input_log(const fp3_spatial *s) {
   return clog2(fp3_spatial_stats_of(s)->inputs);
 }
 
-int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, char *name,
-                    size_t namelen, char **text, char *msg, size_t n) {
+int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, int trace,
+                    char *name, size_t namelen, char **text, char *msg, size_t n) {
   *text = NULL;
   const fp3_spatial_stats *st = fp3_spatial_stats_of(s);
   const unsigned slog = fp3_spatial_state_log(s), ilog = fp3_spatial_input_log(s);
@@ -86,6 +86,7 @@ int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, 
       "// Parameters: PIPELINES (N) and MAXOBJ (M, a multiple of N, at least 2N,\n"
       "// M x %u words at most 2^20); the rest describe the step module.\n"
       "// Reset: rst_i, synchronous, active high (invert ARESETn outside).\n"
+      "%s"
       "`default_nettype none\n\n"
       "module %s #(\n"
       "  parameter integer PIPELINES = %u,\n"
@@ -113,11 +114,24 @@ int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, 
       "  output wire        s_axil_rvalid_o,\n"
       "  input  wire        s_axil_rready_i,\n"
       "  output wire        running_o,\n"
-      "  output wire        done_o\n"
-      ");\n\n",
+      "  output wire        done_o%s\n",
       name, pipelines, objects, pipelines, step, step, st->latency, st->inputs, st->carried,
-      objects, step, (unsigned long long)hash, 1u << slog, 1u << ilog, 1u << wlog, name,
-      pipelines, objects);
+      objects, step, (unsigned long long)hash, 1u << slog, 1u << ilog, 1u << wlog,
+      trace ? "//\n"
+              "// Trace port (a simulation's observation of the write-backs, which\n"
+              "// the state memory takes at the edge that ends the cycle):\n"
+              "// trace_v_o[p] pipeline p writes back object trace_obj_o[p*32 +: 32]'s\n"
+              "// new carried values trace_y_o[p*32*CARRIED +: 32*CARRIED] (word w at\n"
+              "// 32w).  Each awake object is written back once a step, in step order.\n"
+            : "",
+      name, pipelines, objects, trace ? "," : "");
+  if (trace)
+    fp3_strbuf_printf(&t,
+        "  output wire [PIPELINES-1:0]      trace_v_o,\n"
+        "  output wire [PIPELINES*32-1:0]   trace_obj_o,\n"
+        "  output wire [PIPELINES*32*%u-1:0] trace_y_o\n",
+        st->carried);
+  fp3_strbuf_printf(&t, ");\n\n");
   fp3_strbuf_printf(&t,
       "  localparam [63:0] HASH    = 64'h%016llx;\n"
       "  localparam integer LATENCY = %u;\n"
@@ -152,7 +166,10 @@ int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, 
       "  // the pipelines' ports, pipeline p's at [p * width +: width]\n"
       "  wire [PIPELINES-1:0]           pv, pvo;\n"
       "  wire [PIPELINES*32*INPUTS-1:0] pin;\n"
-      "  wire [PIPELINES*32*CARRIED-1:0] py, pyo;\n\n"
+      "  wire [PIPELINES*32*CARRIED-1:0] py, pyo;\n"
+      "  // the frame's write-backs: valid, row (pipeline p's at p and p * RW)\n"
+      "  wire [PIPELINES-1:0]           wb_v;\n"
+      "  wire [PIPELINES*RW-1:0]        wb_row;\n\n"
       "  fp3_spatial_axil #(\n"
       "    .PIPELINES (PIPELINES), .INPUTS (INPUTS), .CARRIED (CARRIED), .LATENCY (LATENCY),\n"
       "    .MAXOBJ (MAXOBJ), .RW (RW), .RB (RB), .BW (BW), .SLOG (SLOG), .ILOG (ILOG),\n"
@@ -186,7 +203,8 @@ int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, 
       "    .host_wdata_i (host_wdata), .host_rdata_o (host_rdata),\n"
       "    .start_i (start), .steps_i (steps), .rounds_i (rounds), .tail_i (tail),\n"
       "    .running_o (running), .done_o (done), .cycles_o (cycles),\n"
-      "    .pv_o (pv), .pin_o (pin), .py_o (py), .pv_i (pvo), .pyo_i (pyo)\n"
+      "    .pv_o (pv), .pin_o (pin), .py_o (py), .pv_i (pvo), .pyo_i (pyo),\n"
+      "    .wb_v_o (wb_v), .wb_row_o (wb_row)\n"
       "  );\n\n"
       "  genvar p;\n"
       "  generate\n"
@@ -200,14 +218,24 @@ int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, 
       "        .valid_o (pvo[p]),\n"
       "        .y_o     (pyo[p*32*CARRIED +: 32*CARRIED])\n"
       "      );\n"
+      "%s"
       "    end\n"
       "  endgenerate\n\n"
+      "%s"
       "  // HASH's high word is the generator's record (this header); the\n"
       "  // register holds the low word.\n"
       "  wire unused_hash_hi = &{1'b0, HASH[63:32]};\n"
       "endmodule\n\n"
       "`default_nettype wire\n",
-      step);
+      step,
+      trace ? "      // object row * N + p: its row in bank p\n"
+              "      assign trace_obj_o[p*32 +: 32] =\n"
+              "        {{(32 - RW){1'b0}}, wb_row[p*RW +: RW]} * PIPELINES + p;\n"
+            : "",
+      trace ? "  assign trace_v_o = wb_v;\n"
+              "  assign trace_y_o = pyo;\n\n"
+            : "  // no trace port: the write-backs are the frame's own\n"
+              "  wire unused_wb = &{1'b0, wb_v, wb_row};\n\n");
   if (t.oom) {
     free(t.s);
     snprintf(msg, n, "out of memory");

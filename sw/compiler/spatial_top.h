@@ -32,9 +32,14 @@ unsigned fp3_spatial_input_log(const fp3_spatial *s);
  * bytes of name) and Verilog text (malloc'd into *text) for `pipelines`
  * pipelines (1 .. FP3S_MAX_PIPELINES) and `objects` objects (a multiple of
  * pipelines, at least 2 per pipeline, and objects x stride <= 2^20 words
- * in either window).  0, or -1 with a message naming the bad value (and
- * *text NULL). */
-int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, char *name,
-                    size_t namelen, char **text, char *msg, size_t n);
+ * in either window).  With trace nonzero the top has a trace port:
+ * trace_v_o, trace_obj_o and trace_y_o show each write-back of an
+ * object's new carried values as the state memory takes it (one per
+ * awake object a step), for a simulation to observe a run of K steps
+ * without reading states back; without it (the board's and placement's
+ * top) the ports do not exist, so they cost no pins and no logic.  0, or
+ * -1 with a message naming the bad value (and *text NULL). */
+int fp3_spatial_top(const fp3_spatial *s, unsigned pipelines, unsigned objects, int trace,
+                    char *name, size_t namelen, char **text, char *msg, size_t n);
 
 #endif /* FP3_SPATIAL_TOP_H */
