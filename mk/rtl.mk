@@ -150,10 +150,11 @@ isa: $(BUILD)/gen_isa
 # ---- lint ------------------------------------------------------------------
 # The processor in the default build (every unit, the div/sqrt unit
 # included), with lanes, without the div/sqrt unit and in the build for
-# clock rate, and the chip build (CHIP_PARAMS: lanes in the build for clock
+# clock rate (its div/sqrt unit at DIV_LATENCY 34, every register place of
+# fp_div), and the chip build (CHIP_PARAMS: lanes in the build for clock
 # rate); the wrapper's variants: lint-axil (mk/axil.mk).
 LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
-               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10" \
+               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10 -GDIV_LATENCY=34" \
                "-GWB_PORTS=1 -GADD_LATENCY=4 -GMUL_LATENCY=4 -GHAS_DIV=0 -GHAS_SQRT=0" \
                "$(foreach p,$(CHIP_PARAMS),-G$(p))"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings
