@@ -74,9 +74,10 @@ RTL_AXIL_CONFIGS := fmax
 # table) makes a lane about two thirds as large: 16 lanes are 58,968 LUT4s
 # (70.5 %) and route (docs/lanes.md "Chip build").
 # The chip build and f16 leave out the
-# div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
-# about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
-# the ship's programs do not use them.
+# div/sqrt unit (HAS_DIV = HAS_SQRT = 0): at DIV_LATENCY 8 fp_div and
+# fp_sqrt place at about 50-60 MHz, at 34 (every register place) above
+# 165 MHz alone (docs/fp-cores.md), for about 4,500 LUT4s a lane and, at
+# 34, 6,400 flip-flops; the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
 CHIP_LANES      := 16
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=10 MUL_LATENCY=10 \
