@@ -1,7 +1,7 @@
 // fp_miter -- miter of two builds of one binary32 core (formal only): the
 // shortest latency (LAT_S, every register place empty) and a deeper one
 // (LAT_D; the deepest build, every place registered, is fp_add 9, fp_mul
-// 11, fp_div 30 and fp_sqrt 29), fed the same operands every cycle.  The short build's
+// 11, fp_div 34 and fp_sqrt 32), fed the same operands every cycle.  The short build's
 // outputs are delayed by LAT_D - LAT_S cycles and compared with the deep
 // build's:
 //   M1  valid_o agree in every cycle after reset;

@@ -15,7 +15,7 @@ FPU_RTL := rtl/fp_add.v rtl/fp_mul.v rtl/fp_div.v rtl/fp_sqrt.v rtl/fp_sign.v \
            rtl/fp_pipe.v rtl/fp_round.v \
            rtl/fp_round_pack.v rtl/fp_lzc.v rtl/fp_shr_sticky.v \
            rtl/fp_mul_unpack_norm.v rtl/fp_mul_prod.v rtl/fp_dsp_mul.v rtl/fp_recur_unpack.v \
-           rtl/fp_recur_out.v
+           rtl/fp_recur_out.v rtl/fp_norm_exp.v rtl/fp_norm_shift.v
 FPU_RTL_INC := rtl/fp_recur.vh
 FPU_DIR := $(BUILD)/fpu
 FPU_INC := -Isim
@@ -28,8 +28,9 @@ FPU_DIV_LAT_DEF := 8
 
 # name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY [MUL_FEED]
 # (the names give the add and mul latencies; the variants also take the
-# div/sqrt latencies 1 to 33: every register count up to the full 30 and
-# 29 places of fp_div and fp_sqrt, and output delay stages beyond)
+# div/sqrt latencies 1 to 35: register counts over the 30 and 29 base
+# places of fp_div and fp_sqrt, each of their extra places (31 to 34 and
+# 30 to 32: every place), and output delay stages beyond)
 FPU_CFG_rne      := 0 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
 FPU_CFG_rtz      := 1 0 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
 FPU_CFG_ftz      := 0 1 $(FPU_ADD_LAT_DEF) $(FPU_MUL_LAT_DEF) $(FPU_DIV_LAT_DEF)
@@ -43,11 +44,12 @@ FPU_CFG_lat_5_6  := 0 0 5 6 5
 # multiplier's LUT product, also in RTZ with FTZ), every register place of
 # both cores, and output delay stages beyond them.
 FPU_CFG_lat_9_7  := 0 0 9 7 29
-FPU_CFG_lat_7_10 := 0 0 7 10 12
+FPU_CFG_lat_7_10 := 0 0 7 10 31
 FPU_CFG_lat_6_9  := 0 0 6 9 30
 FPU_CFG_lat_10_11 := 0 0 10 11 33
-FPU_CFG_lat_8_12 := 0 0 8 12 20
-FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10 10
+FPU_CFG_lat_8_12 := 0 0 8 12 32
+FPU_CFG_lat_9_10 := 0 0 9 10 35
+FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10 34
 # The chip build's multiplier (mk/rtl.mk CHIP_PARAMS): the DSP product of
 # latency 9 behind the feed register (fp_mul FEED), and in RTZ with FTZ at
 # latency 8 (the DSP product of 7).
@@ -56,7 +58,7 @@ FPU_CFG_lat_4_8f_rtz_ftz := 1 1 4 8 4 1
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
 FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6 lat_9_7 lat_7_10 \
-                   lat_6_9 lat_10_11 lat_8_12 lat_9_10_rtz_ftz lat_10_10f \
+                   lat_6_9 lat_10_11 lat_8_12 lat_9_10 lat_9_10_rtz_ftz lat_10_10f \
                    lat_4_8f_rtz_ftz
 FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
 

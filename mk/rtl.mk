@@ -74,9 +74,10 @@ RTL_AXIL_CONFIGS := fmax
 # table) makes a lane about two thirds as large: 16 lanes are 58,968 LUT4s
 # (70.5 %) and route (docs/lanes.md "Chip build").
 # The chip build and f16 leave out the
-# div/sqrt unit (HAS_DIV = HAS_SQRT = 0): fp_div and fp_sqrt place at
-# about 50-60 MHz (docs/fp-cores.md) and cost about 4,500 LUT4s a lane;
-# the ship's programs do not use them.
+# div/sqrt unit (HAS_DIV = HAS_SQRT = 0): at DIV_LATENCY 8 fp_div and
+# fp_sqrt place at about 50-60 MHz, at 34 (every register place) above
+# 165 MHz alone (docs/fp-cores.md), for about 4,500 LUT4s a lane and, at
+# 34, 6,400 flip-flops; the ship's programs do not use them.
 CHIP_CONTEXTS   := 16
 CHIP_LANES      := 16
 CHIP_PARAMS     := NUM_CONTEXTS=$(CHIP_CONTEXTS) NUM_LANES=$(CHIP_LANES) ADD_LATENCY=10 MUL_LATENCY=10 \
@@ -150,10 +151,11 @@ isa: $(BUILD)/gen_isa
 # ---- lint ------------------------------------------------------------------
 # The processor in the default build (every unit, the div/sqrt unit
 # included), with lanes, without the div/sqrt unit and in the build for
-# clock rate, and the chip build (CHIP_PARAMS: lanes in the build for clock
+# clock rate (its div/sqrt unit at DIV_LATENCY 34, every register place of
+# fp_div), and the chip build (CHIP_PARAMS: lanes in the build for clock
 # rate); the wrapper's variants: lint-axil (mk/axil.mk).
 LINT_PARAMS := "" "-GNUM_LANES=4" "-GHAS_DIV=0 -GHAS_SQRT=0" "-GHAS_DIV=1 -GHAS_SQRT=0" \
-               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10" \
+               "-GFMAX_PIPE=1 -GADD_LATENCY=9 -GMUL_LATENCY=10 -GDIV_LATENCY=34" \
                "-GWB_PORTS=1 -GADD_LATENCY=4 -GMUL_LATENCY=4 -GHAS_DIV=0 -GHAS_SQRT=0" \
                "$(foreach p,$(CHIP_PARAMS),-G$(p))"
 ## lint: verilator --lint-only -Wall on the whole RTL, every top: zero warnings

@@ -20,32 +20,41 @@
 // normalisation, so no 24-bit comparator precedes the recurrence.
 //
 // Datapath steps (the places for a register are between them):
-//   s = 0        unpack: special cases, normalisation of subnormal
-//                significands (lz count and shift), exponent difference
-//                Ea - Eb + 127 (10-bit two's complement, Ea, Eb the
-//                biased exponents of the normalised significands)
-//   s = 1 .. 27  one quotient bit each (the recurrence above)
-//   s = 28       normalisation by q_0, denormalisation of a tiny quotient
-//                (right shift by 1 - e places with sticky, fp_shr_sticky),
-//                rounding increment (fp_round, in fp_recur_out)
-//   s = 29       overflow, flush to zero, flags, special result
+//   in           the operand registers (HOLD: each core keeps its own)
+//   u1           unpack: the operands' classes, the leading-zero counts
+//                of subnormal significands (fp_recur_unpack), Ea - Eb +
+//                127 from the fields
+//   u2           the normalising shifts, the exponent less them (10-bit
+//                two's complement), the special case and result
+//   r1 .. r27    one quotient bit each (the recurrence above); beside r1,
+//                from the exponent alone, the result exponent for either
+//                q_0 and the denormalising shift of a tiny quotient
+//                (fp_norm_exp)
+//   n1           normalisation by q_0 and the denormalisation, its even
+//                part: right shift of 0 to 30 places with sticky
+//   n2           its last place (n1, n2: fp_norm_shift)
+//   n3           rounding increment (fp_round, in fp_recur_out)
+//   n4           overflow, flush to zero, flags, special result
 //                (fp_round_pack, in fp_recur_out); then the output
 //                register
-// The LATENCY - 1 registers besides the output register: with L =
-// min(LATENCY, 30) >= 2, one right after the unpack step (place 0: the
-// leading-zero count, the normalising shift and the special cases take
-// about as long as four recurrence steps, so they get a stage of their
-// own), and the other L - 2 spread evenly over the 28 places after steps
-// 1 .. 28: place s holds one iff floor(s (L - 1) / 29) differs from
+// The places, as rtl/fp_recur.vh numbers them: 30 base places, u2 | r1
+// (base place 0), r_s | r_s+1 (s = 1 .. 26), r27 | n1, n3 | n4 and the
+// output register, filled first; then 4 extra places, in this order:
+// n2 | n3, u1 | u2, n1 | n2, in | u1.  With L = min(LATENCY, 30) >= 2,
+// one register at u2 | r1 (the unpack takes about as long as four
+// recurrence steps, so it gets a stage of its own), and the other L - 2
+// spread evenly over the 28 base places after r1 .. r27 and n3: base
+// place s holds one iff floor(s (L - 1) / 29) differs from
 // floor((s - 1) (L - 1) / 29), so every later stage has about 29 / (L - 1)
-// steps (L = 8: the unpack step, then stages of 5, 4, 4, 4, 4, 4 steps and
-// a last one of 2 steps, the rounding and the pack).  L = 1: no register
-// but the output one (rtl/fp_recur.vh).  LATENCY > 30 adds output delay
-// stages.
+// steps (L = 8: the unpack, then stages of 5, 4, 4, 4, 4, 4 recurrence
+// steps, and a last one of 2 steps with the normalisation and rounding,
+// and the pack).  L = 1: no register but the output one.  LATENCY 31 to
+// 34 fill the extra places; at 34 (every place) no stage is longer than
+// one recurrence step.  LATENCY > 34 adds output delay stages.
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operands being sampled to the
-//            result on the outputs; >= 1 (default 8)
+//            result on the outputs; >= 1 (default 8; 34: every place)
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
 //            kept, no flag: x86 DAZ; a subnormal divisor is then a zero
@@ -68,9 +77,9 @@
 // pipelined: initiation interval 1, results in order.
 //
 // Cost: 27 subtract-and-select steps of 25 bits; each pipeline register
-// holds the remainder (25 bits), the divisor (24), the quotient bits so
-// far and the special result and exponent (46 bits): about 120 flip-flops
-// per stage.
+// in the recurrence holds the remainder (25 bits), the divisor (24), the
+// quotient bits so far and the special result and exponents (62 bits):
+// about 140 flip-flops per stage.
 //
 // Standards followed (IEEE 754-2019): §4.3 rounding (roundTiesToEven,
 // roundTowardZero); §5.4.1 division; §6.2 NaN propagation (a NaN operand
@@ -98,57 +107,101 @@ module fp_div #(
 );
 
   localparam [9:0]   EXP_BIAS    = 10'd127;
+  localparam [7:0]   EXP_MAX     = 8'hFF;
   localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0]  MAG_INF     = 31'h7F80_0000;
-  localparam [9:0]   SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
   localparam integer NITER       = 27;     // quotient bits
-  localparam integer NPLACE      = 30;     // places for a register, incl. out
+  localparam integer NBASE       = 30;     // base places, incl. out
+  localparam integer NEXTRA      = 4;      // extra places
+  // The extra places, in the order they fill.
+  localparam integer X_N3 = 0;             // n2 | n3
+  localparam integer X_U2 = 1;             // u1 | u2
+  localparam integer X_N2 = 2;             // n1 | n2
+  localparam integer X_IN = 3;             // in | u1
 
-  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
-  // (0 .. NPLACE - 2): the header's rule.
+  // NPLACE, LC, DEPTH_O, the check of LATENCY, the registers after base
+  // step s (regs_after) and at extra place k (extra_reg): the header's
+  // rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
-  // s = 0: unpack, special cases, normalisation, exponent
+  // in: operand registers
   // ---------------------------------------------------------------------
-  wire       a_sign = a_i[31];
-  wire       b_sign = b_i[31];
-  wire [7:0] a_exp  = a_i[30:23];
-  wire [7:0] b_exp  = b_i[30:23];
+  wire        s0_valid;
+  wire [31:0] a_in, b_in;
+  fp_pipe #(.WIDTH(64), .DEPTH(extra_reg(X_IN)), .HOLD(1)) u_pipe_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  ({a_i, b_i}),
+    .valid_o (s0_valid),
+    .data_o  ({a_in, b_in})
+  );
 
-  // Classes (FTZ: a subnormal is a zero) and normalised significands.
+  // ---------------------------------------------------------------------
+  // u1: classes (FTZ: a subnormal is a zero), significands and their
+  // normalising shifts, exponent difference of the fields
+  // ---------------------------------------------------------------------
   wire        a_nan, a_snan, a_inf, a_zero, b_nan, b_snan, b_inf, b_zero;
-  wire [23:0] a_norm, b_norm;
+  wire [23:0] a_man, b_man;
   wire [4:0]  a_lz, b_lz;
   fp_recur_unpack #(.FTZ(FTZ)) u_unpack_a (
-    .x_i(a_i[30:0]),
+    .x_i(a_in[30:0]),
     .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
-    .norm_o(a_norm), .lz_o(a_lz)
+    .man_o(a_man), .lz_o(a_lz)
   );
   fp_recur_unpack #(.FTZ(FTZ)) u_unpack_b (
-    .x_i(b_i[30:0]),
+    .x_i(b_in[30:0]),
     .nan_o(b_nan), .snan_o(b_snan), .inf_o(b_inf), .zero_o(b_zero),
-    .norm_o(b_norm), .lz_o(b_lz)
+    .man_o(b_man), .lz_o(b_lz)
   );
-  wire sign   = a_sign ^ b_sign;
+  // Ea - Eb + 127 of the fields; a subnormal's field counts as 0 with
+  // fp_mul_unpack_norm's significand {frac, 0}.
+  wire [9:0] exp_f = {2'd0, a_in[30:23]} - {2'd0, b_in[30:23]} + EXP_BIAS;
 
-  // The special result: the first NaN operand quieted, else the default
-  // NaN (0 / 0, inf / inf), else infinity (inf / x, x / 0), else zero
-  // (0 / x, x / inf).  Invalid for a signalling NaN operand and the
-  // default NaN; divide by zero for a finite nonzero over a zero.
-  wire        dnan    = (a_zero & b_zero) | (a_inf & b_inf);
-  wire        spec    = a_nan | b_nan | a_inf | b_inf | a_zero | b_zero;
-  wire        spec_nv = a_snan | b_snan | (~a_nan & ~b_nan & dnan);
-  wire        spec_dz = ~a_nan & ~b_nan & ~a_inf & ~a_zero & b_zero;
+  localparam integer W1 = 8 + 2 + 10 + 24 + 24 + 5 + 5;
+  wire       s1_valid;
+  wire       u_anan, u_asnan, u_ainf, u_azero, u_bnan, u_bsnan, u_binf, u_bzero;
+  wire       u_asign, u_bsign;
+  wire [9:0] u_exp;
+  wire [23:0] u_aman, u_bman;
+  wire [4:0]  u_alz, u_blz;
+  fp_pipe #(.WIDTH(W1), .DEPTH(extra_reg(X_U2))) u_pipe_u2 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s0_valid),
+    .data_i  ({a_nan, a_snan, a_inf, a_zero, b_nan, b_snan, b_inf, b_zero,
+               a_in[31], b_in[31], exp_f, a_man, b_man, a_lz, b_lz}),
+    .valid_o (s1_valid),
+    .data_o  ({u_anan, u_asnan, u_ainf, u_azero, u_bnan, u_bsnan, u_binf, u_bzero,
+               u_asign, u_bsign, u_exp, u_aman, u_bman, u_alz, u_blz})
+  );
+
+  // ---------------------------------------------------------------------
+  // u2: normalisation, exponent, special case
+  // ---------------------------------------------------------------------
+  wire [23:0] a_norm = u_aman << u_alz;
+  wire [23:0] b_norm = u_bman << u_blz;
+  wire        sign   = u_asign ^ u_bsign;
+
+  // The special result: the first NaN operand quieted (its payload is the
+  // significand's low 22 bits), else the default NaN (0 / 0, inf / inf),
+  // else infinity (inf / x, x / 0), else zero (0 / x, x / inf).  Invalid
+  // for a signalling NaN operand and the default NaN; divide by zero for
+  // a finite nonzero over a zero.
+  wire        dnan    = (u_azero & u_bzero) | (u_ainf & u_binf);
+  wire        spec    = u_anan | u_bnan | u_ainf | u_binf | u_azero | u_bzero;
+  wire        spec_nv = u_asnan | u_bsnan | (~u_anan & ~u_bnan & dnan);
+  wire        spec_dz = ~u_anan & ~u_bnan & ~u_ainf & ~u_azero & u_bzero;
   reg  [31:0] spec_y;
   always @* begin
-    if (a_nan) begin
-      spec_y = a_i | 32'h0040_0000;
-    end else if (b_nan) begin
-      spec_y = b_i | 32'h0040_0000;
+    if (u_anan) begin
+      spec_y = {u_asign, EXP_MAX, 1'b1, u_aman[21:0]};
+    end else if (u_bnan) begin
+      spec_y = {u_bsign, EXP_MAX, 1'b1, u_bman[21:0]};
     end else if (dnan) begin
       spec_y = DEFAULT_NAN;
-    end else if (a_inf | b_zero) begin
+    end else if (u_ainf | u_bzero) begin
       spec_y = {sign, MAG_INF};
     end else begin
       spec_y = {sign, 31'd0};
@@ -156,16 +209,18 @@ module fp_div #(
   end
 
   // Biased exponent of the quotient for q_0 = 1: (fields less the
-  // normalising shifts) Ea - Eb + 127.  A subnormal's field counts as 0
-  // with fp_mul_unpack_norm's significand {frac, 0}.
-  wire [9:0] exp_q = {2'd0, a_exp} - {5'd0, a_lz} - {2'd0, b_exp} +
-                     {5'd0, b_lz} + EXP_BIAS;
+  // normalising shifts) Ea - Eb + 127.
+  wire [9:0] exp_q = u_exp - {5'd0, u_alz} + {5'd0, u_blz};
 
   // ---------------------------------------------------------------------
   // The state between steps: side information, remainder, divisor,
   // quotient bits (q_i at bit 26 - i; the bits not yet decided are 0).
+  // The side's exponent field X holds exp_q before r1 and fp_norm_exp's
+  // {exp_a, exp_b, ge2, shift} after it.
   // ---------------------------------------------------------------------
-  localparam integer WSIDE = 1 + 32 + 1 + 1 + 1 + 10;
+  localparam integer WX    = 10 + 10 + 1 + 5;
+  localparam integer WSPEC = 1 + 32 + 1 + 1 + 1;
+  localparam integer WSIDE = WSPEC + WX;
   localparam integer WST   = WSIDE + 25 + 24 + NITER;
 
   wire [NITER:0]           st_valid;
@@ -174,24 +229,25 @@ module fp_div #(
   fp_pipe #(.WIDTH(WST), .DEPTH(regs_after(0))) u_pipe_unpack (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (valid_i),
-    .data_i  ({spec, spec_y, spec_nv, spec_dz, sign, exp_q,
+    .valid_i (s1_valid),
+    .data_i  ({spec, spec_y, spec_nv, spec_dz, sign, {(WX - 10){1'b0}}, exp_q,
                {1'b0, a_norm}, b_norm, {NITER{1'b0}}}),
     .valid_o (st_valid[0]),
     .data_o  (st_data[0 +: WST])
   );
 
   // ---------------------------------------------------------------------
-  // s = 1 .. 27: the recurrence, one quotient bit per step
+  // r1 .. r27: the recurrence, one quotient bit per step
   // ---------------------------------------------------------------------
   genvar i;
   generate
     for (i = 0; i < NITER; i = i + 1) begin : g_step
-      wire [WSIDE-1:0] side;
+      wire [WSPEC-1:0] spc;
+      wire [WX-1:0]    x;
       wire [24:0]      r;
       wire [23:0]      d;
       wire [NITER-1:0] q;
-      assign {side, r, d, q} = st_data[i*WST +: WST];
+      assign {spc, x, r, d, q} = st_data[i*WST +: WST];
 
       wire [25:0] diff  = {1'b0, r} - {2'b0, d};
       wire        q_bit = ~diff[25];
@@ -201,11 +257,26 @@ module fp_div #(
       wire [NITER-1:0] q_next = q | ({{(NITER-1){1'b0}}, q_bit} << (NITER - 1 - i));
       wire unused_r = &{1'b0, r_sel[24], 1'b0};
 
+      // Beside r1: the exponent's part of the normalisation.
+      wire [WX-1:0] x_next;
+      if (i == 0) begin : g_exp
+        fp_norm_exp u_norm_exp (
+          .exp_i   (x[9:0]),
+          .exp_a_o (x_next[25:16]),
+          .exp_b_o (x_next[15:6]),
+          .ge2_o   (x_next[5]),
+          .shift_o (x_next[4:0])
+        );
+        wire unused_x = &{1'b0, x[WX-1:10], 1'b0};
+      end else begin : g_keep
+        assign x_next = x;
+      end
+
       fp_pipe #(.WIDTH(WST), .DEPTH(regs_after(i + 1))) u_pipe_step (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (st_valid[i]),
-        .data_i  ({side, r_next, d, q_next}),
+        .data_i  ({spc, x_next, r_next, d, q_next}),
         .valid_o (st_valid[i+1]),
         .data_o  (st_data[(i+1)*WST +: WST])
       );
@@ -213,50 +284,71 @@ module fp_div #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // s = 28: normalisation by q_0, denormalisation
+  // n1, n2: normalisation by q_0 and denormalisation (fp_norm_shift): the
+  // quotient bits Q = q_0 .. q_26 are its top 27 bits (q_0 = 1: the
+  // leading one at bit 26, exponent exp_q; else at bit 25, exp_q - 1),
+  // the remainder's OR the sticky bit below them
   // ---------------------------------------------------------------------
-  wire [WSIDE-1:0] f_side;
+  wire [WSPEC-1:0] f_spc;
+  wire [9:0]       f_exp_a, f_exp_b;
+  wire             f_ge2;
+  wire [4:0]       f_shift;
   wire [24:0]      f_r;
   wire [23:0]      f_d;
   wire [NITER-1:0] f_q;
-  assign {f_side, f_r, f_d, f_q} = st_data[NITER*WST +: WST];
+  assign {f_spc, f_exp_a, f_exp_b, f_ge2, f_shift, f_r, f_d, f_q} = st_data[NITER*WST +: WST];
   wire unused_d = &{1'b0, f_d, 1'b0};
 
-  wire [9:0] f_exp_q = f_side[9:0];
-  wire       q0      = f_q[NITER-1];
-  // Significand, guard and round in bits 26:1, sticky bit 0 with the
-  // remainder.
-  wire [26:0] f_top  = q0 ? f_q : {f_q[25:0], 1'b0};
-  wire        f_rem  = |f_r;
-  wire [9:0]  f_exp  = q0 ? f_exp_q : f_exp_q - 10'd1;
-  // Tiny before rounding (biased exponent <= 0): shift right 1 - e
-  // places (at most SHIFT_MAX: all bits to sticky), exponent 1.
-  wire        f_ge1  = ~f_exp[9] & (f_exp != 10'd0);
-  wire [9:0]  f_rs   = 10'd1 - f_exp;
-  wire [4:0]  f_shift = f_ge1 ? 5'd0
-                      : ((|f_rs[9:5]) ? SHIFT_MAX[4:0] : f_rs[4:0]);
-  wire [26:0] f_sh;
-  wire        f_st;
-  fp_shr_sticky #(.WIDTH(27)) u_denorm (
-    .v_i      (f_top),
-    .amt_i    (f_shift),
-    .sticky_i (f_rem),
-    .v_o      (f_sh),
-    .sticky_o (f_st)
+  wire             n_valid;
+  wire [WSPEC-1:0] n_spc;
+  wire [9:0]       n_exp;
+  wire [25:0]      n_man;
+  wire             n_st;
+  fp_norm_shift #(.SIDE_W(WSPEC), .MID_DEPTH(extra_reg(X_N2))) u_norm_shift (
+    .clk_i    (clk_i),
+    .rst_i    (rst_i),
+    .valid_i  (st_valid[NITER]),
+    .side_i   (f_spc),
+    .top_i    (f_q),
+    .sticky_i (|f_r),
+    .exp_a_i  (f_exp_a),
+    .exp_b_i  (f_exp_b),
+    .ge2_i    (f_ge2),
+    .shift_i  (f_shift),
+    .valid_o  (n_valid),
+    .side_o   (n_spc),
+    .exp_o    (n_exp),
+    .man_o    (n_man),
+    .sticky_o (n_st)
   );
 
-  // The rounding increment (s = 28), its register place, overflow, flush,
-  // flags and special result (s = 29) and the output register:
+  localparam integer W3 = WSPEC + 10 + 26 + 1;
+  wire             g_valid;
+  wire [WSPEC-1:0] g_spc;
+  wire [9:0]       g_exp;
+  wire [25:0]      g_man;
+  wire             g_st;
+  fp_pipe #(.WIDTH(W3), .DEPTH(extra_reg(X_N3))) u_pipe_n3 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (n_valid),
+    .data_i  ({n_spc, n_exp, n_man, n_st}),
+    .valid_o (g_valid),
+    .data_o  ({g_spc, g_exp, g_man, g_st})
+  );
+
+  // n3: the rounding increment, its register place (base place 28), n4:
+  // overflow, flush, flags and special result, and the output register:
   // fp_recur_out.
-  wire        f_spec, f_nv, f_dz, f_sign;
-  wire [31:0] f_spec_y;
-  assign {f_spec, f_spec_y, f_nv, f_dz, f_sign} = f_side[WSIDE-1:10];
+  wire        g_spec, g_nv, g_dz, g_sign;
+  wire [31:0] g_spec_y;
+  assign {g_spec, g_spec_y, g_nv, g_dz, g_sign} = g_spc;
   fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
                  .OUT_DEPTH(DEPTH_O)) u_out (
-    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
-    .exp_i(f_ge1 ? f_exp : 10'd1), .mant_i(f_sh[26:3]),
-    .guard_i(f_sh[2]), .round_i(f_sh[1]), .sticky_i(f_sh[0] | f_st),
-    .sign_i(f_sign), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(f_dz),
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(g_valid),
+    .exp_i(g_exp), .mant_i(g_man[25:2]),
+    .guard_i(g_man[1]), .round_i(g_man[0]), .sticky_i(g_st),
+    .sign_i(g_sign), .spec_i(g_spec), .spec_y_i(g_spec_y), .spec_nv_i(g_nv), .spec_dz_i(g_dz),
     .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 

@@ -45,7 +45,7 @@
 //                    DSP block);
 //              m3a = one-place normalisation and the denormalisation of
 //                    tiny results, shifts of 2 to 30 places with sticky
-//                    (fp_shr_sticky);
+//                    (fp_norm_shift);
 //              m3b = the remaining one-place shift with sticky;
 //              m4a = rounding increment and overflow (fp_round);
 //              m4b = flush to zero, flags, special result
@@ -115,7 +115,6 @@ module fp_mul #(
   localparam [9:0]  EXP_BIAS_M1 = 10'd126; // bias - 1: product in [1, 4)
   localparam [31:0] DEFAULT_NAN = 32'hFFC0_0000;
   localparam [30:0] MAG_INF     = 31'h7F80_0000;
-  localparam [9:0]  SHIFT_MAX   = 10'd31; // right shifts >= 27 leave sticky
 
   // Register places, in datapath order (bit k of BND: place k holds one).
   localparam integer B_IN  = 0; // in  | m1a : operand registers
@@ -340,18 +339,20 @@ module fp_mul #(
   //   result exponent  p47: max(e, 1)   else: max(e - 1, 1)
   //   right shift of the product's top 27 bits (normalisation and
   //   denormalisation in one): e >= 2: p47 (0 or 1 place), e <= 1:
-  //   2 - e places either way, at most SHIFT_MAX (all bits go to sticky)
-  // so that m3 only picks by p47: shift = c2_shift | (p47 & c2_ge2).
+  //   2 - e places either way, at most 31 (all bits go to sticky)
+  // so that m3 only picks by p47: shift = c2_shift | (p47 & c2_ge2)
+  // (fp_norm_exp).
   // ---------------------------------------------------------------------
-  wire        c2_ge1    = ~s2_exp[9] & (s2_exp != 10'd0);
-  wire        c2_ge2    = c2_ge1 & (s2_exp != 10'd1);
-  wire [9:0]  c2_exp_m1 = s2_exp - 10'd1;
-  wire [9:0]  c2_exp_a  = c2_ge1 ? s2_exp : 10'd1;
-  wire [9:0]  c2_exp_b  = c2_ge2 ? c2_exp_m1 : 10'd1;
-  wire [9:0]  c2_rs     = 10'd2 - s2_exp;
-  // (rs > SHIFT_MAX written as bits: no comparator chain)
-  wire [4:0]  c2_shift  = c2_ge2 ? 5'd0
-                        : ((|c2_rs[9:5]) ? SHIFT_MAX[4:0] : c2_rs[4:0]);
+  wire [9:0]  c2_exp_a, c2_exp_b;
+  wire        c2_ge2;
+  wire [4:0]  c2_shift;
+  fp_norm_exp u_norm_exp (
+    .exp_i   (s2_exp),
+    .exp_a_o (c2_exp_a),
+    .exp_b_o (c2_exp_b),
+    .ge2_o   (c2_ge2),
+    .shift_o (c2_shift)
+  );
 
   // ---------------------------------------------------------------------
   // m2a-m2d: the product prod = aman * bman, in [2^46, 2^48): its top 27
@@ -402,52 +403,32 @@ module fp_mul #(
   assign {s5_spec, s5_exp_a, s5_exp_b, s5_ge2, s5_shift, s5_top, s5_st} = s5_data;
 
   // ---------------------------------------------------------------------
-  // m3a: pick the exponent by p47; the shift's even part (2 to 30 places)
-  // m3b: the shift's last place.  The top 27 bits shifted right leave the
-  // significand, guard and round bits in bits 25:0 (bit 26 is then 0).
+  // m3a: pick the exponent by p47 (the product's bit 47, s5_top[26]); the
+  // shift's even part (2 to 30 places); m3b: the shift's last place
+  // (fp_norm_shift)
   // ---------------------------------------------------------------------
-  wire        p47      = s5_top[26];
-  wire [9:0]  c3_exp   = p47 ? s5_exp_a : s5_exp_b;
-  wire        c3_one   = s5_shift[0] | (p47 & s5_ge2);
-  wire [26:0] c3_top;
-  wire        c3_st;
-  fp_shr_sticky #(.WIDTH(27)) u_shift_even (
-    .v_i      (s5_top),
-    .amt_i    ({s5_shift[4:1], 1'b0}),
-    .sticky_i (s5_st),
-    .v_o      (c3_top),
-    .sticky_o (c3_st)
-  );
-
-  localparam integer W6 = WS + 10 + 1 + 27 + 1;
   wire          s6_valid;
-  wire [W6-1:0] s6_data;
-  fp_pipe #(.WIDTH(W6), .DEPTH(BND[B_M3B] ? 1 : 0)) u_pipe6 (
-    .clk_i   (clk_i),
-    .rst_i   (rst_i),
-    .valid_i (s5_valid),
-    .data_i  ({s5_spec, c3_exp, c3_one, c3_top, c3_st}),
-    .valid_o (s6_valid),
-    .data_o  (s6_data)
-  );
-
   wire [WS-1:0] s6_spec;
   wire [9:0]    s6_exp;
-  wire          s6_one;
-  wire [26:0]   s6_top;
-  wire          s6_st;
-  assign {s6_spec, s6_exp, s6_one, s6_top, s6_st} = s6_data;
-
-  wire [26:0] c3b_top;
-  wire        c3b_st;
-  fp_shr_sticky #(.WIDTH(27)) u_shift_one (
-    .v_i      (s6_top),
-    .amt_i    ({4'd0, s6_one}),
-    .sticky_i (s6_st),
-    .v_o      (c3b_top),
+  wire [25:0]   c3b_man;  // significand, guard and round bits
+  wire          c3b_st;
+  fp_norm_shift #(.SIDE_W(WS), .MID_DEPTH(BND[B_M3B] ? 1 : 0)) u_norm_shift (
+    .clk_i    (clk_i),
+    .rst_i    (rst_i),
+    .valid_i  (s5_valid),
+    .side_i   (s5_spec),
+    .top_i    (s5_top),
+    .sticky_i (s5_st),
+    .exp_a_i  (s5_exp_a),
+    .exp_b_i  (s5_exp_b),
+    .ge2_i    (s5_ge2),
+    .shift_i  (s5_shift),
+    .valid_o  (s6_valid),
+    .side_o   (s6_spec),
+    .exp_o    (s6_exp),
+    .man_o    (c3b_man),
     .sticky_o (c3b_st)
   );
-  wire unused_top = &{1'b0, c3b_top[26], 1'b0};
 
   localparam integer W7 = WS + 10 + 26 + 1;
   wire          s7_valid;
@@ -456,7 +437,7 @@ module fp_mul #(
     .clk_i   (clk_i),
     .rst_i   (rst_i),
     .valid_i (s6_valid),
-    .data_i  ({s6_spec, s6_exp, c3b_top[25:0], c3b_st}),
+    .data_i  ({s6_spec, s6_exp, c3b_man, c3b_st}),
     .valid_o (s7_valid),
     .data_o  (s7_data)
   );

@@ -22,24 +22,31 @@
 // widths grow with j and the bits above them are constant zeros.
 //
 // Datapath steps (the places for a register are between them):
-//   s = 0        unpack: special cases, normalisation of a subnormal
-//                significand, result exponent, radicand alignment
-//   s = 1 .. 26  one root bit each (the recurrence above)
-//   s = 27       rounding increment (fp_round, in fp_recur_out)
-//   s = 28       flags, special result (fp_round_pack, in fp_recur_out);
+//   in           the operand register (HOLD: the core keeps its own)
+//   u1           unpack: the operand's class, the leading-zero count of
+//                a subnormal significand (fp_recur_unpack)
+//   u2           the normalising shift, result exponent, radicand
+//                alignment, the special case and result
+//   r1 .. r26    one root bit each (the recurrence above)
+//   n2           the remainder's OR: the sticky bit
+//   n3           rounding increment (fp_round, in fp_recur_out)
+//   n4           flags, special result (fp_round_pack, in fp_recur_out);
 //                then the output register
-// The LATENCY - 1 registers besides the output register, as fp_div's:
-// with L = min(LATENCY, 29) >= 2, one right after the unpack step (place
-// 0: normalisation and special cases get a stage of their own), and the
-// other L - 2 spread evenly over the 27 places after steps 1 .. 27: place
-// s holds one iff floor(s (L - 1) / 28) differs from
-// floor((s - 1) (L - 1) / 28).  L = 1: no register but the output one
-// (rtl/fp_recur.vh).
-// LATENCY > 29 adds output delay stages.
+// The places, as fp_div's (rtl/fp_recur.vh): 29 base places, u2 | r1
+// (base place 0), r_j | r_j+1 (j = 1 .. 25), r26 | n2, n3 | n4 and the
+// output register, filled first; then 3 extra places, in this order:
+// n2 | n3, u1 | u2, in | u1.  With L = min(LATENCY, 29) >= 2, one register at u2 | r1 (the
+// unpack gets a stage of its own), and the other L - 2 spread evenly over
+// the 27 base places after r1 .. r26 and n3: base place s holds one iff
+// floor(s (L - 1) / 28) differs from floor((s - 1) (L - 1) / 28).  L = 1:
+// no register but the output one.  LATENCY 30 to 32 fill the extra
+// places; at 32 (every place) no stage is longer than one recurrence
+// step.  LATENCY > 32 adds output delay stages (fp_div's 34, the
+// processor's common DIV_LATENCY for both, gives two).
 //
 // Parameters:
 //   LATENCY  rising clock edges from the operand being sampled to the
-//            result on the outputs; >= 1 (default 8)
+//            result on the outputs; >= 1 (default 8; 32: every place)
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: a subnormal operand reads as zero of
 //            its sign, no flag (x86 DAZ; sqrt of a negative subnormal is
@@ -81,52 +88,91 @@ module fp_sqrt #(
 );
 
   localparam [9:0]   EXP_BIAS    = 10'd127;
+  localparam [7:0]   EXP_MAX     = 8'hFF;
   localparam [31:0]  DEFAULT_NAN = 32'hFFC0_0000;
   localparam integer NITER       = 26;     // root bits
-  localparam integer NPLACE      = 29;     // places for a register, incl. out
+  localparam integer NBASE       = 29;     // base places, incl. out
+  localparam integer NEXTRA      = 3;      // extra places
+  // The extra places, in the order they fill.
+  localparam integer X_N3 = 0;             // n2 | n3
+  localparam integer X_U2 = 1;             // u1 | u2
+  localparam integer X_IN = 2;             // in | u1
 
-  // LC, DEPTH_O, the check of LATENCY, and the registers after step s
-  // (0 .. NPLACE - 2): the header's rule.
+  // NPLACE, LC, DEPTH_O, the check of LATENCY, the registers after base
+  // step s (regs_after) and at extra place k (extra_reg): the header's
+  // rule.
 `include "fp_recur.vh"
 
   // ---------------------------------------------------------------------
-  // s = 0: unpack, special cases, exponent, radicand
+  // in: operand register
   // ---------------------------------------------------------------------
-  wire       a_sign = a_i[31];
-  wire [7:0] a_exp  = a_i[30:23];
-
-  // Class (FTZ: a subnormal is a zero) and normalised significand.
-  wire        a_nan, a_snan, a_inf, a_zero;
-  wire [23:0] a_norm;
-  wire [4:0]  a_lz;
-  fp_recur_unpack #(.FTZ(FTZ)) u_unpack (
-    .x_i(a_i[30:0]),
-    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
-    .norm_o(a_norm), .lz_o(a_lz)
+  wire        s0_valid;
+  wire [31:0] a_in;
+  fp_pipe #(.WIDTH(32), .DEPTH(extra_reg(X_IN)), .HOLD(1)) u_pipe_in (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (valid_i),
+    .data_i  (a_i),
+    .valid_o (s0_valid),
+    .data_o  (a_in)
   );
 
-  // The special result: a NaN quieted; +-0 itself; below zero (also -inf)
-  // the default NaN with invalid; +inf itself.
-  wire        spec    = a_nan | a_inf | a_zero | a_sign;
-  wire        neg     = a_sign & ~a_nan & ~a_zero;
-  wire        spec_nv = a_snan | neg;
+  // ---------------------------------------------------------------------
+  // u1: class (FTZ: a subnormal is a zero), significand and its
+  // normalising shift
+  // ---------------------------------------------------------------------
+  wire        a_nan, a_snan, a_inf, a_zero;
+  wire [23:0] a_man;
+  wire [4:0]  a_lz;
+  fp_recur_unpack #(.FTZ(FTZ)) u_unpack (
+    .x_i(a_in[30:0]),
+    .nan_o(a_nan), .snan_o(a_snan), .inf_o(a_inf), .zero_o(a_zero),
+    .man_o(a_man), .lz_o(a_lz)
+  );
+
+  localparam integer W1 = 4 + 1 + 8 + 24 + 5;
+  wire        s1_valid;
+  wire        u_nan, u_snan, u_inf, u_zero, u_sign;
+  wire [7:0]  u_exp;
+  wire [23:0] u_man;
+  wire [4:0]  u_lz;
+  fp_pipe #(.WIDTH(W1), .DEPTH(extra_reg(X_U2))) u_pipe_u2 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (s0_valid),
+    .data_i  ({a_nan, a_snan, a_inf, a_zero, a_in[31], a_in[30:23], a_man, a_lz}),
+    .valid_o (s1_valid),
+    .data_o  ({u_nan, u_snan, u_inf, u_zero, u_sign, u_exp, u_man, u_lz})
+  );
+
+  // ---------------------------------------------------------------------
+  // u2: normalisation, special case, exponent, radicand
+  // ---------------------------------------------------------------------
+  wire [23:0] a_norm = u_man << u_lz;
+
+  // The special result: a NaN quieted (its payload is the significand's
+  // low 22 bits); +-0 itself; below zero (also -inf) the default NaN with
+  // invalid; +inf itself.
+  wire        spec    = u_nan | u_inf | u_zero | u_sign;
+  wire        neg     = u_sign & ~u_nan & ~u_zero;
+  wire        spec_nv = u_snan | neg;
   reg  [31:0] spec_y;
   always @* begin
-    if (a_nan) begin
-      spec_y = a_i | 32'h0040_0000;
+    if (u_nan) begin
+      spec_y = {u_sign, EXP_MAX, 1'b1, u_man[21:0]};
     end else if (neg) begin
       spec_y = DEFAULT_NAN;
-    end else if (a_zero) begin
-      spec_y = {a_sign, 31'd0};
+    end else if (u_zero) begin
+      spec_y = {u_sign, 31'd0};
     end else begin
-      spec_y = a_i; // +inf
+      spec_y = {1'b0, EXP_MAX, 23'd0}; // +inf
     end
   end
 
   // E = field - lz (10-bit two's complement, >= -22); result (E + 127) >> 1;
   // the radicand's top 26 bits {Ma, 0} (E odd) or {0, Ma} shifted one
   // more place: N = top << 26.
-  wire [9:0]  e_norm = {2'd0, a_exp} - {5'd0, a_lz};
+  wire [9:0]  e_norm = {2'd0, u_exp} - {5'd0, u_lz};
   wire [9:0]  e_sum  = e_norm + EXP_BIAS;
   wire [7:0]  exp_r  = e_sum[8:1];
   // e_sum is 105 to 381: bit 9 is 0, bit 0 is the halving's remainder.
@@ -146,14 +192,14 @@ module fp_sqrt #(
   fp_pipe #(.WIDTH(WST), .DEPTH(regs_after(0))) u_pipe_unpack (
     .clk_i   (clk_i),
     .rst_i   (rst_i),
-    .valid_i (valid_i),
+    .valid_i (s1_valid),
     .data_i  ({spec, spec_y, spec_nv, exp_r, n_top, 27'd0, {NITER{1'b0}}}),
     .valid_o (st_valid[0]),
     .data_o  (st_data[0 +: WST])
   );
 
   // ---------------------------------------------------------------------
-  // s = 1 .. 26: the recurrence, one root bit per step.  The radicand's
+  // r1 .. r26: the recurrence, one root bit per step.  The radicand's
   // bits below n_top are zero, so step j >= 13 brings in two zero bits.
   // ---------------------------------------------------------------------
   genvar j;
@@ -192,7 +238,7 @@ module fp_sqrt #(
   endgenerate
 
   // ---------------------------------------------------------------------
-  // s = 27: the root and its remainder, rounded in fp_recur_out
+  // n2: the root and the sticky bit, the remainder's OR
   // ---------------------------------------------------------------------
   wire [WSIDE-1:0] f_side;
   wire [25:0]      f_n;
@@ -201,18 +247,31 @@ module fp_sqrt #(
   assign {f_side, f_n, f_r, f_p} = st_data[NITER*WST +: WST];
   wire unused_n = &{1'b0, f_n, 1'b0};
 
-  // The rounding increment (s = 27), its register place, flags and
-  // special result (s = 28) and the output register: fp_recur_out (a root
+  wire             g_valid;
+  wire [WSIDE-1:0] g_side;
+  wire [NITER-1:0] g_p;
+  wire             g_st;
+  fp_pipe #(.WIDTH(WSIDE + NITER + 1), .DEPTH(extra_reg(X_N3))) u_pipe_n3 (
+    .clk_i   (clk_i),
+    .rst_i   (rst_i),
+    .valid_i (st_valid[NITER]),
+    .data_i  ({f_side, f_p, |f_r}),
+    .valid_o (g_valid),
+    .data_o  ({g_side, g_p, g_st})
+  );
+
+  // n3: the rounding increment, its register place (base place 27), n4:
+  // flags and special result, and the output register: fp_recur_out (a root
   // is positive, never tiny, never overflows, never divides by zero).
-  wire        f_spec, f_nv;
-  wire [31:0] f_spec_y;
-  assign {f_spec, f_spec_y, f_nv} = f_side[WSIDE-1:8];
+  wire        g_spec, g_nv;
+  wire [31:0] g_spec_y;
+  assign {g_spec, g_spec_y, g_nv} = g_side[WSIDE-1:8];
   fp_recur_out #(.ROUND(ROUND), .FTZ(FTZ), .MID_DEPTH(regs_after(NITER + 1)),
                  .OUT_DEPTH(DEPTH_O)) u_out (
-    .clk_i(clk_i), .rst_i(rst_i), .valid_i(st_valid[NITER]),
-    .exp_i({2'd0, f_side[7:0]}), .mant_i(f_p[25:2]),
-    .guard_i(f_p[1]), .round_i(f_p[0]), .sticky_i(|f_r),
-    .sign_i(1'b0), .spec_i(f_spec), .spec_y_i(f_spec_y), .spec_nv_i(f_nv), .spec_dz_i(1'b0),
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(g_valid),
+    .exp_i({2'd0, g_side[7:0]}), .mant_i(g_p[25:2]),
+    .guard_i(g_p[1]), .round_i(g_p[0]), .sticky_i(g_st),
+    .sign_i(1'b0), .spec_i(g_spec), .spec_y_i(g_spec_y), .spec_nv_i(g_nv), .spec_dz_i(1'b0),
     .valid_o(valid_o), .y_o(y_o), .flags_o(flags_o)
   );
 
