@@ -13,12 +13,7 @@
 # (make builds it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-VERILATOR=${VERILATOR:-verilator}
-VINC=$($VERILATOR --getenv VERILATOR_ROOT)/include
-RUNTIME="build/verilated/verilated.o build/verilated/verilated_threads.o"
-for f in $RUNTIME; do
-  [ -e "$f" ] || { echo "FAIL: $f not built (make $f)"; exit 1; }
-done
+. tests/verilated_env.sh
 tmp=$(mktemp -d /tmp/fp3_test_scaleb.XXXXXX); trap 'rm -rf "$tmp"' EXIT
 fail=0
 

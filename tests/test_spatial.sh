@@ -19,13 +19,7 @@
 # The Verilated runtime comes from build/verilated (make builds it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-FP3=${FP3_BIN:-$PWD/build/fp3}
-VERILATOR=${VERILATOR:-verilator}
-VINC=$($VERILATOR --getenv VERILATOR_ROOT)/include
-RUNTIME="build/verilated/verilated.o build/verilated/verilated_threads.o"
-for f in "$FP3" $RUNTIME; do
-  [ -e "$f" ] || { echo "FAIL: $f not built (make $f)"; exit 1; }
-done
+. tests/verilated_env.sh
 tmp=$(mktemp -d /tmp/fp3_test_spatial.XXXXXX); trap 'rm -rf "$tmp"' EXIT
 fail=0
 STEPS=3

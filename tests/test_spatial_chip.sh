@@ -38,13 +38,7 @@ for a in "$@"; do
   esac
 done
 cd "$(dirname "$0")/.."
-FP3=${FP3_BIN:-$PWD/build/fp3}
-VERILATOR=${VERILATOR:-verilator}
-VINC=$($VERILATOR --getenv VERILATOR_ROOT)/include
-RUNTIME="build/verilated/verilated.o build/verilated/verilated_threads.o"
-for f in "$FP3" $RUNTIME; do
-  [ -e "$f" ] || { echo "FAIL: $f not built (make $f)"; exit 1; }
-done
+. tests/verilated_env.sh
 tmp=$(mktemp -d /tmp/fp3_test_spatial_chip.XXXXXX); trap 'rm -rf "$tmp"' EXIT
 fail=0
 MODEL="models/ship.fp3m --integrator rk4se"
