@@ -136,6 +136,15 @@ for nm in "3 252" ${all:+"1 96"}; do
       >"$d.lint" 2>&1; then
     head -20 "$d.lint"; echo "FAIL: N=$n: verilator --lint-only -Wall"; fail=1
   fi
+  # No latch for synthesis (make pnr-spatial's synth.sh fails on one; this
+  # is its check after Yosys's proc alone, seconds instead of minutes).
+  if ! ${YOSYS:-yosys} -q -p "read_verilog -Irtl $(ls rtl/*.v | tr '\n' ' ') $d/$STEP.v $d/$TOP.v;
+      hierarchy -top $TOP; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr" \
+      >"$d.latch" 2>&1; then
+    grep -E "ERROR|Latch inferred" "$d.latch" | head -5; echo "FAIL: N=$n: a latch after yosys proc"; fail=1
+  else
+    echo "PASS: N=$n: no latch after yosys proc"
+  fi
   if ! build rtl "$d" "$tmp/obj$n" "$tmp/tb$n"; then
     echo "FAIL: N=$n: Verilator build"; fail=1; continue
   fi
