@@ -37,16 +37,7 @@
 
 extern char **environ;
 
-#define FNV_BASIS 0xcbf29ce484222325ull
-#define FNV_PRIME 0x100000001b3ull
 #define LOG_TAIL 12 /* lines of a failed build's log shown */
-
-/* FNV-1a 64 (Fowler, Noll, Vo) of the n bytes at p, continuing from h. */
-static uint64_t fnv1a64(uint64_t h, const void *p, size_t n) {
-  const unsigned char *b = p;
-  for (size_t i = 0; i < n; i++) h = (h ^ b[i]) * FNV_PRIME;
-  return h;
-}
 
 /* The shim's entry points (sim/spatial_shim.cpp). */
 typedef struct shim {
@@ -95,7 +86,7 @@ static int hash_file(uint64_t *h, const char *path) {
   if (!f) return -1;
   char buf[65536];
   size_t k;
-  while ((k = fread(buf, 1, sizeof buf, f)) > 0) *h = fnv1a64(*h, buf, k);
+  while ((k = fread(buf, 1, sizeof buf, f)) > 0) *h = fp3_fnv1a64(*h, buf, k);
   int bad = ferror(f);
   fclose(f);
   return bad ? -1 : 0;
@@ -181,13 +172,13 @@ typedef struct build {
  * shape and name, the step module's and the chip top's text, the shim,
  * every rtl/ file.  0, or -1 if a file cannot be read. */
 static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
-  uint64_t h = FNV_BASIS;
+  uint64_t h = FP3_FNV1A64_BASIS;
   char line[512];
   snprintf(line, sizeof line, "fp3-spatial-cache %d|%s|%u|%u|%s", FP3_SPATIAL_CACHE_VERSION,
            b->vversion, b->nin, b->nc, b->module);
-  h = fnv1a64(h, line, strlen(line));
-  h = fnv1a64(h, b->verilog, strlen(b->verilog));
-  h = fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
+  h = fp3_fnv1a64(h, line, strlen(line));
+  h = fp3_fnv1a64(h, b->verilog, strlen(b->verilog));
+  h = fp3_fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
   char path[4096];
   snprintf(path, sizeof path, "%s/sim/spatial_shim.cpp", b->env->root);
   if (hash_file(&h, path)) {
@@ -202,7 +193,7 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
     snprintf(path, sizeof path, pat[p], b->env->root);
     if (glob(path, 0, NULL, &g) != 0) continue; /* no .vh is fine */
     for (size_t i = 0; i < g.gl_pathc; i++) {
-      h = fnv1a64(h, g.gl_pathv[i], strlen(g.gl_pathv[i]) + 1);
+      h = fp3_fnv1a64(h, g.gl_pathv[i], strlen(g.gl_pathv[i]) + 1);
       if (hash_file(&h, g.gl_pathv[i])) {
         snprintf(err, n, "%s: %s", g.gl_pathv[i], strerror(errno));
         globfree(&g);
@@ -237,7 +228,7 @@ static int entry_check(const char *entry, const build *b, char *err, size_t n) {
   fclose(f);
   text[k] = '\0';
   snprintf(path, sizeof path, "%s/spatial.so", entry);
-  uint64_t so_hash = FNV_BASIS;
+  uint64_t so_hash = FP3_FNV1A64_BASIS;
   struct stat sb;
   if (stat(path, &sb) != 0 || hash_file(&so_hash, path)) {
     snprintf(err, n, "spatial.so: %s", strerror(errno));
@@ -429,7 +420,7 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   /* the object files are not needed once linked */
   rm_tree(obj);
   char mtext[512];
-  uint64_t so_hash = FNV_BASIS;
+  uint64_t so_hash = FP3_FNV1A64_BASIS;
   struct stat sb;
   if (stat(so, &sb) != 0 || hash_file(&so_hash, so)) {
     snprintf(err, n, "%s: %s", so, strerror(errno));

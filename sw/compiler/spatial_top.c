@@ -6,17 +6,20 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fp3_spatial_regs.h"
 #include "report.h"
 
-uint64_t fp3_spatial_hash(const fp3_spatial *s) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (const unsigned char *p = (const unsigned char *)fp3_spatial_verilog(s); *p; p++) {
-    h ^= *p;
-    h *= 0x100000001b3ull;
-  }
+uint64_t fp3_fnv1a64(uint64_t h, const void *p, size_t n) {
+  const unsigned char *b = p;
+  for (size_t i = 0; i < n; i++) h = (h ^ b[i]) * 0x100000001b3ull; /* the FNV prime */
   return h;
+}
+
+uint64_t fp3_spatial_hash(const fp3_spatial *s) {
+  const char *v = fp3_spatial_verilog(s);
+  return fp3_fnv1a64(FP3_FNV1A64_BASIS, v, strlen(v));
 }
 
 unsigned fp3_spatial_default_objects(unsigned pipelines) { return 512u * pipelines; }

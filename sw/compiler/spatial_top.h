@@ -13,6 +13,12 @@
 
 #include "spatial.h"
 
+/* FNV-1a 64 (Fowler, Noll, Vo): h continued over the n bytes at p; start
+ * from FP3_FNV1A64_BASIS.  The hash of the step module (below) and of the
+ * spatial engine's cache entries. */
+#define FP3_FNV1A64_BASIS 0xcbf29ce484222325ull
+uint64_t fp3_fnv1a64(uint64_t h, const void *p, size_t n);
+
 /* The step module's hash: FNV-1a 64 (offset basis 0xcbf29ce484222325,
  * prime 0x100000001b3; Fowler, Noll, Vo) of its text, the bytes of the
  * file `fp3 spatial` writes.  The chip's HASH register holds its low 32
