@@ -44,18 +44,25 @@ static int harbour_scene(const fp3_model_args *a, const char *model_path, fp3_ms
   return rc;
 }
 
+/* The folder of the running executable (build/fp3: build) into dir[4096];
+ * -1 if /proc/self/exe cannot say. */
+static int exe_dir(char dir[4096]) {
+  ssize_t k = readlink("/proc/self/exe", dir, 4096 - 1);
+  if (k <= 0) return -1;
+  dir[k] = '\0';
+  char *slash = strrchr(dir, '/');
+  if (!slash) return -1;
+  *slash = '\0';
+  return 0;
+}
+
 /* A shipped file (models/, programs/): relative to the working directory,
  * else to the executable (build/fp3 -> ../). */
 void fp3_find_shipped(const char *rel, char *path, size_t n) {
   snprintf(path, n, "%s", rel);
   if (access(rel, R_OK) == 0) return;
   char exe[4096];
-  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (k <= 0) return;
-  exe[k] = '\0';
-  char *slash = strrchr(exe, '/');
-  if (!slash) return;
-  *slash = '\0';
+  if (exe_dir(exe)) return;
   char alt[8192];
   if ((size_t)snprintf(alt, sizeof alt, "%s/../%s", exe, rel) < n && access(alt, R_OK) == 0)
     memcpy(path, alt, strlen(alt) + 1);
@@ -203,11 +210,8 @@ static void spatial_cache(char *dir, size_t n) {
     snprintf(dir, n, "%s", env);
     return;
   }
-  char exe[4000];
-  ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
-  char *slash = k > 0 ? (exe[k] = '\0', strrchr(exe, '/')) : NULL;
-  if (slash) *slash = '\0';
-  snprintf(dir, n, "%s/spatial-cache", slash ? exe : "build");
+  char exe[4096];
+  snprintf(dir, n, "%s/spatial-cache", exe_dir(exe) ? "build" : exe);
 }
 
 /* The engine's progress line, "fp3 CMD", unless --json. */
