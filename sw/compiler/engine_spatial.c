@@ -212,6 +212,21 @@ static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
   "fp3-spatial-cache %d\nmodule %s\nhash %016" PRIx64 "\nso_size %lld\nso_hash %016" PRIx64 \
   "\ninputs %u\ncarried %u\n"
 
+/* The manifest of the shared object `so` built for b: its size and
+ * FNV-1a 64 with the module's shape (MANIFEST) into text; *size and
+ * *so_hash for a message.  0, or -1 with errno when the object cannot be
+ * read. */
+static int manifest_of(const char *so, const build *b, char *text, size_t n, long long *size,
+                       uint64_t *so_hash) {
+  struct stat sb;
+  *so_hash = FP3_FNV1A64_BASIS;
+  if (stat(so, &sb) != 0 || hash_file(so_hash, so)) return -1;
+  *size = (long long)sb.st_size;
+  snprintf(text, n, MANIFEST, FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash, *size,
+           *so_hash, b->nin, b->nc);
+  return 0;
+}
+
 /* Check an entry's files before loading anything: its manifest must be
  * the one this module's build writes, the shared object the size and
  * hash the manifest records (a cut or replaced object never reaches
@@ -228,17 +243,15 @@ static int entry_check(const char *entry, const build *b, char *err, size_t n) {
   fclose(f);
   text[k] = '\0';
   snprintf(path, sizeof path, "%s/spatial.so", entry);
-  uint64_t so_hash = FP3_FNV1A64_BASIS;
-  struct stat sb;
-  if (stat(path, &sb) != 0 || hash_file(&so_hash, path)) {
+  uint64_t so_hash;
+  long long size;
+  if (manifest_of(path, b, want, sizeof want, &size, &so_hash)) {
     snprintf(err, n, "spatial.so: %s", strerror(errno));
     return -1;
   }
-  snprintf(want, sizeof want, MANIFEST, FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash,
-           (long long)sb.st_size, so_hash, b->nin, b->nc);
   if (strcmp(text, want) != 0) {
     snprintf(err, n, "spatial.so (%lld bytes, FNV-1a %016" PRIx64 ") or the manifest is not "
-             "what this module's build wrote", (long long)sb.st_size, so_hash);
+             "what this module's build wrote", size, so_hash);
     return -1;
   }
   return 0;
@@ -419,16 +432,14 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   }
   /* the object files are not needed once linked */
   rm_tree(obj);
-  char mtext[512];
-  uint64_t so_hash = FP3_FNV1A64_BASIS;
-  struct stat sb;
-  if (stat(so, &sb) != 0 || hash_file(&so_hash, so)) {
+  char mtext[1024];
+  uint64_t so_hash;
+  long long size;
+  if (manifest_of(so, b, mtext, sizeof mtext, &size, &so_hash)) {
     snprintf(err, n, "%s: %s", so, strerror(errno));
     rm_tree(tmp);
     return -1;
   }
-  snprintf(mtext, sizeof mtext, MANIFEST, FP3_SPATIAL_CACHE_VERSION, b->module, b->text_hash,
-           (long long)sb.st_size, so_hash, b->nin, b->nc);
   if (fp3_write_text_atomic(man, mtext, msg, sizeof msg)) {
     snprintf(err, n, "%s", msg);
     rm_tree(tmp);
