@@ -11,23 +11,29 @@
 //     i / N), each the row of an object of this bank or empty (bit RW);
 //   - the objects' carried values, CARRIED words a row (fp3_spatial_mem);
 //   - the objects' inputs, INPUTS words a row.
-// Every memory is block RAM with a registered read (fp3_ram), one read
-// and one write a cycle, so each pipeline reads one object and writes one
-// back every cycle, with no port shared between banks.
+// Every memory is block RAM (fp3_spatial_mem) with one read and one write
+// a cycle, so each pipeline reads one object and writes one back every
+// cycle, with no port shared between banks.  Every read takes two cycles
+// and its word leaves a register (the block's output register): a block
+// RAM's read without it (5.83 ns clock-to-output on the ECP5) followed by
+// the row multiplexer and the next memory's address would be the chip's
+// critical path, slower than any pipeline's core.
 //
 // The feed, for round r of a step (fp3_spatial_feeder), pipeline p:
 //   cycle t      every bank's awake list is read at row r;
-//   cycle t + 1  its entry (if not empty) addresses the object's row in
+//   cycle t + 2  its entry (if not empty) addresses the object's row in
 //                the carried and the input memory;
-//   cycle t + 2  the object enters pipeline p (valid, in_i, y_i); its row
-//                enters a delay line of LATENCY stages;
-//   cycle t + 2 + LATENCY  the pipeline's valid_o and y_o, and the row from
+//   cycle t + 4  the object enters pipeline p (valid, in_i, y_i); its row
+//                has entered a delay line of LATENCY + 2 stages at t + 2;
+//   cycle t + 4 + LATENCY  the pipeline's valid_o and y_o, and the row from
 //                the line: the new carried values are written at the edge
 //                that ends this cycle.
-// The object's next step reads its row no earlier than cycle
-// t + LATENCY + 3 (the memory is read-first), so the feeder's PERIOD is
-// LATENCY + 2 and its DRAIN LATENCY + 2: a run of K steps over R rounds
-// takes (K - 1) * max(R, LATENCY + 2) + R + LATENCY + 2 cycles.
+// The object's next step addresses its row no earlier than cycle
+// t + LATENCY + 5 (a read has the writes of the cycles before its own),
+// i.e. its round comes LATENCY + 3 cycles after this one: the feeder's
+// PERIOD is LATENCY + 3 and its DRAIN LATENCY + 4, and a run of K steps
+// over R rounds takes (K - 1) * max(R, LATENCY + 3) + R + LATENCY + 4
+// cycles.
 //
 // Parameters
 //   PIPELINES  N, 1 .. 255
@@ -44,7 +50,7 @@
 //                          host_sel_i: 1 awake list, 2 carried, 3 inputs
 //   host_wdata_i           the word; for the awake list bit 31 empty,
 //                          [RW-1:0] the object's row
-//   host_rdata_o           a read's word two cycles later, the awake list's
+//   host_rdata_o           a read's word three cycles later, the awake list's
 //                          in host_wdata_i's form (other bits 0)
 // Run
 //   start_i, steps_i, rounds_i   fp3_spatial_feeder's (R = ceil(COUNT / N))
@@ -113,7 +119,7 @@ module fp3_spatial_frame #(
   wire          running;
   wire          feed, last;
   wire [RB-1:0] round;
-  fp3_spatial_feeder #(.RB(RB), .PERIOD(LATENCY + 2), .DRAIN(LATENCY + 2)) u_feeder (
+  fp3_spatial_feeder #(.RB(RB), .PERIOD(LATENCY + 3), .DRAIN(LATENCY + 4)) u_feeder (
     .clk_i     (clk_i),
     .rst_i     (rst_i),
     .start_i   (start_i),
@@ -155,7 +161,7 @@ module fp3_spatial_frame #(
 
       // the awake list: entry {empty, row}
       wire [RW:0] entry;
-      fp3_ram #(.DEPTH(ROWS), .AW(RW), .WIDTH(RW + 1), .READ_STAGES(1)) u_awake (
+      fp3_spatial_mem #(.WORDS(1), .WIDTH(RW + 1), .ROWS(ROWS), .RW(RW)) u_awake (
         .clk_i   (clk_i),
         .we_i    (we && host_sel_i == SEL_AWAKE),
         .waddr_i (host_row_i),
@@ -165,30 +171,32 @@ module fp3_spatial_frame #(
       );
       assign awake_rd[b*(RW+1) +: RW+1] = entry;
 
-      // The round's entry leaves the awake list a cycle after the round;
-      // in the last round, only the banks below tail_i hold one.
-      reg fv1_q;
-      always @(posedge clk_i)
+      // The round's entry leaves the awake list two cycles after the
+      // round; in the last round, only the banks below tail_i hold one.
+      reg fv1_q, fv2_q;
+      always @(posedge clk_i) begin
         fv1_q <= !rst_i && feed && (!last || b[BW:0] < tail_i);
+        fv2_q <= !rst_i && fv1_q;
+      end
 
-      // the object the entry names: read its row (cycle t + 1)
-      wire          fetch = fv1_q && !entry[RW];
+      // the object the entry names: read its row (cycle t + 2), and its
+      // row enters the delay line to the write-back
+      wire          fetch = fv2_q && !entry[RW];
       wire [RW-1:0] orow  = running ? entry[RW-1:0] : host_row_i;
 
-      // ... it enters the pipeline (cycle t + 2), its row the delay line
-      reg          pv_q;
-      reg [RW-1:0] prow_q;
+      // ... it enters the pipeline (cycle t + 4)
+      reg          pv1_q, pv_q;
       always @(posedge clk_i) begin
-        pv_q   <= !rst_i && fetch;
-        prow_q <= entry[RW-1:0];
+        pv1_q <= !rst_i && fetch;
+        pv_q  <= !rst_i && pv1_q;
       end
       wire [RW-1:0] wb_row;
       wire          unused_wb_valid;
-      fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY)) u_row (
+      fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY + 2)) u_row (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (1'b0),
-        .data_i  (prow_q),
+        .data_i  (entry[RW-1:0]),
         .valid_o (unused_wb_valid),
         .data_o  (wb_row)
       );

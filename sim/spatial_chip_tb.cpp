@@ -21,7 +21,7 @@
 //            carried values equal the golden model's after the steps it
 //            was awake for, bit for bit (a sleeping one is unchanged), and
 //            its inputs are unchanged
-//   cycles   CYCLES = (K - 1) * max(R, L + 2) + R + L + 2, R = ceil(COUNT / N)
+//   cycles   CYCLES = (K - 1) * max(R, L + 3) + R + L + 4, R = ceil(COUNT / N)
 //   busy     while running: STATUS.RUNNING, SLVERR for STEPS, COUNT and the
 //            windows, START ignored
 // The runs: a few objects awake (n < L: a step is bubbles but for n / N
@@ -290,8 +290,8 @@ int main(int argc, char **argv) {
     const uint64_t cyc = axi_read(FP3S_CYCLES_LO, &r) |
                          (uint64_t)axi_read(FP3S_CYCLES_HI, &r) << 32;
     const uint64_t R = (count + N - 1) / N;
-    const uint64_t P = R > lat + 2 ? R : lat + 2;
-    const uint64_t want = K && R ? (K - 1) * P + R + lat + 2 : 0;
+    const uint64_t P = R > lat + 3 ? R : lat + 3;
+    const uint64_t want = K && R ? (K - 1) * P + R + lat + 4 : 0;
     unsigned n = 0;
     for (unsigned o = 0; o < M; o++) n += awake[o] != 0;
     if (cyc != want)

@@ -81,7 +81,7 @@ int main(int argc, char **argv) {
   const unsigned long total = nobj * steps;
   uint64_t cycle = 0;
   uint32_t rng = 0x2545F491u;
-  const uint64_t limit = (uint64_t)(total + 2) * (lat + 2) + 100;
+  const uint64_t limit = (uint64_t)(total + 2) * (lat + 4) + 100;
   while (finished < total && cycle < limit) {
     top.clk_i = 0;
     top.eval();

@@ -659,9 +659,9 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
              FP3_SPATIAL_SLOTS);
     return -1;
   }
-  /* a run of K steps takes (K - 1) max(n, L + 2) + n + L + 2 cycles
+  /* a run of K steps takes (K - 1) max(n, L + 3) + n + L + 4 cycles
    * (docs/spatial.md): far more is a hang */
-  const uint64_t limit = 4 * ((uint64_t)steps + 1) * ((uint64_t)n + s->lat + 2) + 10000;
+  const uint64_t limit = 4 * ((uint64_t)steps + 1) * ((uint64_t)n + s->lat + 4) + 10000;
   for (unsigned o = 0; o < n; o++) s->steps_done[o] = 0;
   if (sync_slots(s, n, m, sizeof m)) return sp_fail(e, m);
   if (s->steps_reg != steps) {

@@ -39,8 +39,8 @@
  * object), and the state window, read back to back
  * (fp3_spatial_shim_read_many), must hold each object's last write-back:
  * otherwise the run fails naming the object.  status.cycles is the
- * run's CYCLES register (START to DONE; (K - 1) max(n, L + 2) + n + L +
- * 2, docs/spatial.md);
+ * run's CYCLES register (START to DONE; (K - 1) max(n, L + 3) + n + L +
+ * 4, docs/spatial.md);
  * issued counts operations (one per core per object-step); exception
  * flags are not reported (the step module has no flag outputs: flags
  * stays 0, and fp3_engine_spatial_is says which engine it is so callers
