@@ -3,8 +3,9 @@
 # engine_spatial.h, docs/spatial.md "The spatial engine"): a model's
 # pipeline Verilated on first use into a cache, loaded, and every object's
 # state compared bit for bit with the golden model after every step.
-#   - the ship (rk4se, latency 68): 1 object, 85 objects (more than the
-#     latency), the ship scene scenes/harbour.scene; each
+#   - the ship (rk4se) on a chip of 3 pipelines (--pipelines 3): 1
+#     object, 240 objects (80 a pipeline: more than the latency), the ship
+#     scene scenes/harbour.scene; each
 #     bit-exact, each with the same final states as --engine rtl, and the
 #     JSON valid against docs/fp3.schema.json; fp3 frames of the harbour
 #     bit-exact frame by frame;
@@ -15,8 +16,9 @@
 #     said, and built again (the first saying what it builds, with its
 #     stages) (the second by a Verilator that fails: exit 1, the log
 #     named);
-#   - bad options: --program, --trace and `fp3 bench --engine spatial`
-#     are refused with exit 2.
+#   - bad options: --program, --trace, `fp3 bench --engine spatial`, and
+#     --pipelines without the spatial engine or out of 1..255 are refused
+#     with exit 2.
 # The runs use the tree's cache (build/spatial-cache: the ship's and the
 # oscillator's chips, built there once per revision of their sources);
 # the cache checks a copy in a temporary folder, where one oscillator
@@ -38,10 +40,11 @@ bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
 # in both, the same "results" (every object's final state and reference).
 same_results() { python3 tests/same_results.py "$1" "$2"; }
 
-# against_rtl NAME ARGS...: fp3 run ARGS on spatial and on rtl, --json
+# against_rtl NAME ARGS...: fp3 run ARGS on spatial (with $PIPES) and on
+# rtl, --json
 against_rtl() {
   local name=$1; shift
-  if "$FP3" run "$@" --engine spatial --json >"$T/$name.sp.json" 2>"$T/$name.sp.err" &&
+  if "$FP3" run "$@" --engine spatial $PIPES --json >"$T/$name.sp.json" 2>"$T/$name.sp.err" &&
      "$FP3" run "$@" --engine rtl --json >"$T/$name.rtl.json" 2>"$T/$name.rtl.err" &&
      same_results "$T/$name.sp.json" "$T/$name.rtl.json"; then
     ok "$name: bit-exact on spatial after every step, the final states of --engine rtl"
@@ -60,6 +63,7 @@ OSC="--model models/oscillator.fp3m --integrator euler"
 export FP3_SPATIAL_CACHE="$PWD/build/spatial-cache"
 
 # ---- the oscillator (latency 7), and the cache reused --------------------------
+PIPES=
 against_rtl osc-1 $OSC --steps 50
 start=$(date +%s.%N)
 against_rtl osc-20 $OSC --objects 20 --steps 9
@@ -71,31 +75,34 @@ else
   cat "$T/osc-20.sp.err"; bad "the second run built again"
 fi
 
-# ---- the ship ------------------------------------------------------------------
+# ---- the ship, 3 pipelines -----------------------------------------------------
+PIPES="--pipelines 3"
 against_rtl ship-1 $SHIP --steps 40
-against_rtl ship-85 $SHIP --objects 85 --steps 12
+against_rtl ship-240 $SHIP --objects 240 --steps 12
 entry=$(ls -d "$FP3_SPATIAL_CACHE"/fp3_spatial_ship_rk4se-* 2>/dev/null |
         grep -v -e '\.tmp\.' -e '\.failed\.log$' | head -1)
 # The pipeline's latency as `fp3 spatial` reports it for the same model
 # and core options (the engine's JSON must agree).
 "$FP3" spatial models/ship.fp3m --integrator rk4se -o "$T/ship-report" 2>/dev/null
 Lref=$(sed -n 's/^latency: \([0-9]*\) cycles.*/\1/p' "$T/ship-report/report.txt")
-python3 - "$T/ship-85.sp.json" "$Lref" <<'PY' && ok "85 objects (> latency + 3): CYCLES of one run of 12 steps = 11 x 85 + 85 + L + 4" || bad "85 objects' cycles"
+python3 - "$T/ship-240.sp.json" "$Lref" <<'PY' && ok "240 objects on 3 pipelines (80 rounds > latency + 3): CYCLES of one run of 12 steps = 11 x 80 + 80 + L + 4" || bad "240 objects' cycles"
 import json, sys
 j = json.load(open(sys.argv[1]))
 L = j["pipeline_latency"]
 Lref = int(sys.argv[2] or -1)
 # one run of all 12 steps (each observed on the trace port): the frame
-# feeds 85 objects a step, one a cycle (85 > L + 3, so no bubbles), and is
-# done L + 4 cycles after the last step's last (docs/spatial.md)
-want = 11 * max(85, L + 3) + 85 + L + 4
+# feeds 3 objects a cycle, 80 rounds a step (80 > L + 3, so no bubbles),
+# and is done L + 4 cycles after the last step's last round
+# (docs/spatial.md)
+want = 11 * max(80, L + 3) + 80 + L + 4
 print(f"  latency {L}, cycles {j['cycles']}, expected {want}")
 print(f"  fp3 spatial reports latency {Lref}")
-sys.exit(0 if L == Lref and L + 3 <= 85 and j["cycles"] == want and j["flags_reported"] is False else 1)
+sys.exit(0 if L == Lref and L + 3 <= 80 and j["cycles"] == want and j["flags_reported"] is False
+         and j["contexts"] == 1026 else 1)
 PY
 against_rtl harbour --scene scenes/harbour.scene --steps 30
 # fp3 frames: the harbour frame by frame (moored ships skipped at rest)
-if "$FP3" frames --scene scenes/harbour.scene --engine spatial --frames 20 --json \
+if "$FP3" frames --scene scenes/harbour.scene --engine spatial $PIPES --frames 20 --json \
      >"$T/frames.json" 2>"$T/frames.err" &&
    python3 - "$T/frames.json" <<'PY'
 import json, sys
@@ -182,6 +189,10 @@ refused "--trace with --engine spatial" "--trace needs --engine rtl" \
   run --engine spatial $SHIP --trace "$T/x.vcd"
 refused "fp3 bench --engine spatial" "unknown engine 'spatial'" \
   bench --model models/ship.fp3m --engine spatial
+refused "--pipelines without --engine spatial" "--pipelines goes with --engine spatial" \
+  run $SHIP --pipelines 2 --steps 3
+refused "--pipelines 0" "--pipelines" run --engine spatial $SHIP --pipelines 0 --steps 3
+refused "--pipelines 256" "--pipelines" run --engine spatial $SHIP --pipelines 256 --steps 3
 
 echo "test_spatial_engine: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -139,6 +139,11 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   "objects", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->objects = (size_t)k;
+    } else if (runlike &&
+               (r = fp3_opt_count(argc, argv, &i, cmd, "--pipelines", 1, 255, "pipelines",
+                                  &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->pipelines = (unsigned)k;
     } else if (runlike && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->seeded = 1;
@@ -264,6 +269,10 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   if ((a->scene || a->harbour) && a->nset) {
     fprintf(stderr, "fp3 %s: --set does not go with a scene: its objects give the values\n",
             cmd);
+    return FP3_ARGS_BAD;
+  }
+  if (a->pipelines && strcmp(a->engine, "spatial") != 0) {
+    fprintf(stderr, "fp3 %s: --pipelines goes with --engine spatial\n", cmd);
     return FP3_ARGS_BAD;
   }
   if (fp3_trace_check(&a->trace, cmd, a->engine, a->scene || a->objects)) return FP3_ARGS_BAD;

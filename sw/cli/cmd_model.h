@@ -31,6 +31,8 @@ typedef struct fp3_model_args {
   size_t objects;      /* run: --objects (0: none)                      */
   uint64_t seed;       /* run: --seed                                   */
   int literal, json, seeded;
+  unsigned pipelines;  /* run, frames: --pipelines N of --engine spatial
+                          (0: one)                                      */
   int no_rest_skip;    /* frames: --no-rest-skip                        */
   int integ_given;     /* --integrator given                            */
   double t_end;        /* bench: --t-end (0: 600 h)                     */

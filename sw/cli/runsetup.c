@@ -238,7 +238,8 @@ static int setup_spatial(const fp3_model_args *a, fp3_run_setup *s, const unsign
   spatial_cache(cache, sizeof cache);
   snprintf(label, sizeof label, "fp3 %s: spatial", cmd);
   const char *vl = getenv("VERILATOR");
-  fp3_spatial_env env = {root, cache, vl && vl[0] ? vl : NULL, label};
+  fp3_spatial_env env = {.root = root, .cache = cache, .verilator = vl && vl[0] ? vl : NULL,
+                         .label = label, .pipelines = a->pipelines};
   s->e = fp3_engine_spatial_new(s->c, s->m, s->integ, a->mode, &env, msg, sizeof msg);
   if (!s->e) {
     fprintf(stderr, "fp3 %s: spatial engine: %s\n", cmd, msg);

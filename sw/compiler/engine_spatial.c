@@ -61,9 +61,12 @@ typedef struct spatial_engine {
   fp3_spatial *sp;
   char *top_text;     /* the chip top's Verilog (fp3_spatial_top)       */
   unsigned nin, nc, lat, nregs, ncores;
+  unsigned pipelines; /* the chip's pipelines N                        */
+  unsigned slots;     /* object slots: FP3_SPATIAL_SLOTS rounded up to a
+                         multiple of N (the frame's M)                   */
   int *in_reg;        /* register of each word of in_i                 */
   unsigned *y_reg;    /* register of each carried value                */
-  uint32_t *bank;     /* FP3_SPATIAL_SLOTS x nregs                      */
+  uint32_t *bank;     /* slots x nregs                                 */
   unsigned char *dirty; /* per slot: the host wrote its bank since the
                            chip's copy was last synchronised             */
   uint32_t *steps_done; /* per slot, of the last run                    */
@@ -163,7 +166,7 @@ typedef struct build {
   const char *module, *verilog; /* the step module                      */
   const char *top, *top_verilog; /* the chip top around it              */
   uint64_t text_hash;            /* FNV-1a 64 of the step's text         */
-  unsigned nin, nc, lat, objects;
+  unsigned pipelines, nin, nc, lat, objects;
   char vroot[1024]; /* VERILATOR_ROOT */
   char vversion[128];
 } build;
@@ -329,11 +332,11 @@ static int chip_check(shim *s, const build *b, char *err, size_t n) {
              (uint32_t)b->text_hash);
     goto bad;
   }
-  if (FP3S_INFO_PIPELINES(info) != 1 || FP3S_INFO_INPUTS(info) != b->nin ||
+  if (FP3S_INFO_PIPELINES(info) != b->pipelines || FP3S_INFO_INPUTS(info) != b->nin ||
       FP3S_INFO_CARRIED(info) != b->nc || lat != b->lat || maxobj != b->objects) {
     snprintf(err, n, "its INFO 0x%08" PRIX32 ", LATENCY %" PRIu32 " and MAXOBJ %" PRIu32
-             " are not the module's (1 pipeline, %u inputs, %u carried; %u; %u)", info, lat,
-             maxobj, b->nin, b->nc, b->lat, b->objects);
+             " are not the module's (%u pipelines, %u inputs, %u carried; %u; %u)", info, lat,
+             maxobj, b->pipelines, b->nin, b->nc, b->lat, b->objects);
     goto bad;
   }
   s->sstride = FP3S_STATE_STRIDE(strides);
@@ -518,9 +521,9 @@ static int sp_load(fp3_engine *e, const uint64_t *words, size_t n) {
 
 static int sp_write(fp3_engine *e, unsigned ctx, unsigned reg, uint32_t v) {
   spatial_engine *s = of(e);
-  if (ctx >= FP3_SPATIAL_SLOTS || reg >= s->nregs) {
+  if (ctx >= s->slots || reg >= s->nregs) {
     snprintf(e->error, sizeof e->error, "slot %u register %u is beyond the engine's %u x %u",
-             ctx, reg, FP3_SPATIAL_SLOTS, s->nregs);
+             ctx, reg, s->slots, s->nregs);
     return -1;
   }
   s->bank[(size_t)ctx * s->nregs + reg] = v;
@@ -530,9 +533,9 @@ static int sp_write(fp3_engine *e, unsigned ctx, unsigned reg, uint32_t v) {
 
 static int sp_read(fp3_engine *e, unsigned ctx, unsigned reg, uint32_t *v) {
   spatial_engine *s = of(e);
-  if (ctx >= FP3_SPATIAL_SLOTS || reg >= s->nregs) {
+  if (ctx >= s->slots || reg >= s->nregs) {
     snprintf(e->error, sizeof e->error, "slot %u register %u is beyond the engine's %u x %u",
-             ctx, reg, FP3_SPATIAL_SLOTS, s->nregs);
+             ctx, reg, s->slots, s->nregs);
     return -1;
   }
   *v = s->bank[(size_t)ctx * s->nregs + reg];
@@ -654,13 +657,13 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
   shim *sh = &s->sh;
   char m[sizeof e->error];
   memset(st, 0, sizeof *st);
-  if (n == 0 || n > FP3_SPATIAL_SLOTS) {
+  if (n == 0 || n > s->slots) {
     snprintf(e->error, sizeof e->error, "%u objects: the engine runs 1 .. %u a run", n,
-             FP3_SPATIAL_SLOTS);
+             s->slots);
     return -1;
   }
-  /* a run of K steps takes (K - 1) max(n, L + 3) + n + L + 4 cycles
-   * (docs/spatial.md): far more is a hang */
+  /* a run of K steps takes (K - 1) max(R, L + 3) + R + L + 4 cycles
+   * with R = ceil(n / N) <= n (docs/spatial.md): far more is a hang */
   const uint64_t limit = 4 * ((uint64_t)steps + 1) * ((uint64_t)n + s->lat + 4) + 10000;
   for (unsigned o = 0; o < n; o++) s->steps_done[o] = 0;
   if (sync_slots(s, n, m, sizeof m)) return sp_fail(e, m);
@@ -669,9 +672,9 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
     s->steps_reg = steps;
   }
   trace_run tr = {.s = s, .obs = obs, .n = n, .steps = steps, .t0 = sh->cycles(sh->dut)};
-  if (sh->trace(sh->dut, 1, s->nc, on_trace, &tr)) return sp_fail(e, "the shim cannot trace");
+  if (sh->trace(sh->dut, s->pipelines, s->nc, on_trace, &tr)) return sp_fail(e, "the shim cannot trace");
   const int rc = chip_run(s, limit, &st->cycles, m, sizeof m);
-  sh->trace(sh->dut, 1, s->nc, NULL, NULL);
+  sh->trace(sh->dut, s->pipelines, s->nc, NULL, NULL);
   if (rc) return sp_fail(e, m);
   if (tr.bad == 1) {
     snprintf(m, sizeof m,
@@ -718,7 +721,7 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
 static int sp_ctx_status(fp3_engine *e, unsigned ctx, fp3_ctx_status *cs) {
   spatial_engine *s = of(e);
   memset(cs, 0, sizeof *cs);
-  if (ctx >= FP3_SPATIAL_SLOTS) {
+  if (ctx >= s->slots) {
     snprintf(e->error, sizeof e->error, "no slot %u", ctx);
     return -1;
   }
@@ -784,6 +787,13 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   fp3_spatial_defaults(&o);
   o.rtz = mode.round == FPREF_RTZ;
   o.ftz = mode.ftz;
+  if (env->add_latency) o.add_latency = env->add_latency;
+  if (env->mul_latency) o.mul_latency = env->mul_latency;
+  const unsigned np = env->pipelines ? env->pipelines : 1;
+  if (np > 255) {
+    snprintf(err, n, "%u pipelines: the frame takes 1 .. 255", np);
+    return NULL;
+  }
   spatial_engine *s = calloc(1, sizeof *s);
   if (!s) {
     snprintf(err, n, "out of memory");
@@ -791,6 +801,9 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   }
   s->base.ops = &spatial_ops;
   s->c = c;
+  s->pipelines = np;
+  s->slots = (FP3_SPATIAL_SLOTS + np - 1) / np * np;
+  if (s->slots < 2 * np) s->slots = 2 * np;
   char msg[512];
   if (fp3_spatial_build(c, m, integ, &o, &s->sp, msg, sizeof msg)) {
     snprintf(err, n, "%s: %s", m->file, msg);
@@ -805,10 +818,10 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   for (int k = FP3_IR_ADD; k < FP3_IR_KINDS; k++) s->ops[unit_of(k)] += ps->cores[k];
   s->in_reg = malloc((s->nin ? s->nin : 1) * sizeof *s->in_reg);
   s->y_reg = malloc((s->nc ? s->nc : 1) * sizeof *s->y_reg);
-  s->bank = calloc((size_t)FP3_SPATIAL_SLOTS * s->nregs, sizeof *s->bank);
-  s->steps_done = calloc(FP3_SPATIAL_SLOTS, sizeof *s->steps_done);
-  s->dirty = malloc(FP3_SPATIAL_SLOTS);
-  const size_t words = (size_t)FP3_SPATIAL_SLOTS * (s->nc ? s->nc : 1);
+  s->bank = calloc((size_t)s->slots * s->nregs, sizeof *s->bank);
+  s->steps_done = calloc(s->slots, sizeof *s->steps_done);
+  s->dirty = malloc(s->slots);
+  const size_t words = (size_t)s->slots * (s->nc ? s->nc : 1);
   s->rd_addr = malloc(words * sizeof *s->rd_addr);
   s->rd_data = malloc(words * sizeof *s->rd_data);
   s->rd_resp = malloc(words * sizeof *s->rd_resp);
@@ -835,7 +848,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
     }
   }
   fp3_config *cf = &s->base.config;
-  cf->num_contexts = FP3_SPATIAL_SLOTS;
+  cf->num_contexts = s->slots;
   cf->num_lanes = 1;
   cf->num_regs = s->nregs;
   cf->imem_depth = (unsigned)fp3_compiled_image(c)->n;
@@ -846,14 +859,14 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   cf->has_add = cf->has_sub = cf->has_mul = cf->has_div = cf->has_sqrt = cf->has_sign = 1;
 
   char top[160];
-  if (fp3_spatial_top(s->sp, 1, FP3_SPATIAL_SLOTS, 1, top, sizeof top, &s->top_text, msg,
+  if (fp3_spatial_top(s->sp, s->pipelines, s->slots, 1, top, sizeof top, &s->top_text, msg,
                       sizeof msg)) {
     snprintf(err, n, "%s: %s", m->file, msg);
     goto fail;
   }
   build b = {.env = env, .module = fp3_spatial_module(s->sp),
              .verilog = fp3_spatial_verilog(s->sp), .top = top, .top_verilog = s->top_text,
-             .nin = s->nin, .nc = s->nc, .lat = s->lat, .objects = FP3_SPATIAL_SLOTS};
+             .pipelines = s->pipelines, .nin = s->nin, .nc = s->nc, .lat = s->lat, .objects = s->slots};
   b.text_hash = fp3_spatial_hash(s->sp);
   const char *verilator = env->verilator ? env->verilator : "verilator";
   char cmd[1200];
@@ -870,7 +883,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   if (cache_open(&b, m->name, integ, &s->sh, s->entry, sizeof s->entry, err, n)) goto fail;
   /* the chip's object memory is unknown: every slot is written before it
    * runs; COUNT and STEPS are 0 after reset */
-  memset(s->dirty, 1, FP3_SPATIAL_SLOTS);
+  memset(s->dirty, 1, s->slots);
   return &s->base;
 fail:
   sp_destroy(&s->base);

@@ -70,9 +70,10 @@
 #include "engine.h"
 #include "model.h"
 
-/* Object slots of a spatial engine (fp3_config.num_contexts): the
- * objects one run streams through the pipeline, as the frame's state
- * memory holds M objects; more objects run in batches. */
+/* Object slots of a spatial engine of one pipeline
+ * (fp3_config.num_contexts): the objects one run streams through the
+ * pipelines, as the frame's state memory holds M objects; more objects run
+ * in batches.  With N pipelines, rounded up to a multiple of N. */
 #define FP3_SPATIAL_SLOTS 1024
 
 /* The cache layout's version, part of every KEY. */
@@ -84,6 +85,12 @@ typedef struct fp3_spatial_env {
   const char *cache;     /* the cache folder (made if missing)                    */
   const char *verilator; /* the Verilator command (NULL: "verilator")             */
   const char *label;     /* prefix of the messages on stderr ("spatial")          */
+  /* The chip's shape (0: the default): its pipelines N (1; at most 255)
+   * and its adders' and multipliers' latencies (fp3_spatial_defaults';
+   * `make pnr-spatial` places add 9 / mul 9).  Slot o is in bank o mod N,
+   * and the engine has FP3_SPATIAL_SLOTS slots rounded up to a multiple of
+   * N (fp3_config.num_contexts). */
+  unsigned pipelines, add_latency, mul_latency;
 } fp3_spatial_env;
 
 /* A spatial engine for compiled model c (of model m and integrator
