@@ -302,11 +302,16 @@ $(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw
 # The chip build's median Fmax over the placement seeds, when make pnr
 # CHIP=ecp5-85 PNR_SEEDS=... has measured it (else cycles only).
 CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/pnr/chip_fmax_median.txt)
+# The spatial chip's median Fmax, when make pnr-spatial MODEL=models/ship.fp3m
+# INTEGRATOR=rk4se PNR_SEEDS=... (its default shape: the pipelines that fit,
+# add 9 / mul 9) has measured it (else its rows give cycles only).
+SPATIAL_FMAX ?= $(shell test -f $(BUILD)/pnr-spatial/fmax_median.txt && cat $(BUILD)/pnr-spatial/fmax_median.txt)
 .PHONY: bench-chip
-## bench-chip: lanes 1-16 and the chip build: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
+## bench-chip: lanes 1-16, the chip build and the spatial chip: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
 bench-chip: $(BUILD)/bench_chip
 	@mkdir -p $(BUILD)/bench
-	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX))
+	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX)) \
+	  $(if $(SPATIAL_FMAX),--spatial-fmax-mhz $(SPATIAL_FMAX))
 
 # ---- simulation speed (make bench-simspeed) ----------------------------------
 # The Verilated chip build on 256 ships against the default build on 64,

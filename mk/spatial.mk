@@ -54,3 +54,11 @@ pnr-spatial: $(BUILD)/fp3 pnr-tools
 ## test-spatial-all: the spatial chip's slower checks (tests/test_spatial_chip.sh --mutants)
 test-spatial-all: $(BUILD)/fp3 $(VERILATED_OBJS)
 	bash tests/test_spatial_chip.sh --mutants
+
+# spatial-table: docs/models.md's table of spatial chips, every shipped
+# model x integrator (scripts/spatial-table.sh; SPATIAL_FMAX, the placed
+# ship chip's median, adds ns per object-step).
+.PHONY: spatial-table
+## spatial-table: every shipped model x integrator as a spatial pipeline: cores, latency, area, pipelines per chip (SPATIAL_FMAX= adds ns per object-step)
+spatial-table: $(BUILD)/fp3
+	@bash scripts/spatial-table.sh $(if $(SPATIAL_FMAX),--fmax $(SPATIAL_FMAX)) $(BUILD)/fp3

@@ -23,13 +23,27 @@
  * written for the compiler to vectorize, the paper's comparison; a model's
  * own would need a C back end of the compiler.
  *
+ * Then the spatial rows (docs/spatial.md): the ship's rk4se step, folded
+ * and literal, as the spatial chip `make pnr-spatial` places it (cores at
+ * add 9 / mul 9, as many pipelines N as the area estimate fits), on the
+ * spatial engine (engine_spatial.h: the chip's Verilated RTL, built into
+ * build/spatial-cache on first use): all of the engine's slots, at least
+ * N (L + 3) objects, so the pipelines are full and the figure is their
+ * rate, not their latency's.  Cycles are the chip's CYCLES register;
+ * the bound is 1/N cycles per object-step.  Every object is checked
+ * after every integration, as for the lanes.
+ *
  * Last, the chip build's ns per object-step at the Fmax given with
  * --fmax-mhz (the median of the placement seeds, mk/pnr.mk; without it,
- * the table gives cycles only), against the paper's FPGA and Pentium 4
- * and this CPU.
+ * the table gives cycles only), and the spatial chip's at
+ * --spatial-fmax-mhz (the median of make pnr-spatial's seeds), against
+ * the paper's FPGA and Pentium 4 and this CPU.
  *
- * Usage: bench_chip [--steps N] [--fmax-mhz F] [--csv FILE]
+ * Usage: bench_chip [--steps N] [--fmax-mhz F] [--spatial-fmax-mhz F] [--csv FILE]
+ *                   [--no-spatial]
  */
+#define _DEFAULT_SOURCE /* realpath */
+#include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,9 +55,11 @@
 #include "compile.h"
 #include "cpu_ship.h"
 #include "engine.h"
+#include "engine_spatial.h"
 #include "model.h"
 #include "mscene.h"
 #include "objects.h"
+#include "spatial.h"
 #include "../sim/fp3_model.h"
 
 #define SHIP_MODEL "models/ship.fp3m"
@@ -148,6 +164,73 @@ static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled *
   return 0;
 }
 
+/* The spatial chip's cores: those make pnr-spatial places
+ * (mk/spatial.mk's SPATIAL_OPTS default). */
+#define SPATIAL_ADD_LATENCY 9
+#define SPATIAL_MUL_LATENCY 9
+
+/* A spatial row: the ship's rk4se, literal or folded, on the spatial
+ * engine of the chip make pnr-spatial builds (as many pipelines as fit),
+ * all of its slots.  *r as measure's, with contexts = the slots, lanes =
+ * the pipelines, bound = 1 / pipelines; *lat the pipeline's latency.  0,
+ * or -1 with the message on stderr. */
+static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, unsigned *lat) {
+  char msg[4096], root[4096];
+  fp3_compile_opts co;
+  fp3_compile_defaults(&co);
+  co.fold = !literal;
+  co.max_regs = FP3_MAX_REGS;
+  const unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  fp3_compiled *c = NULL;
+  fp3_spatial *sp = NULL;
+  fp3_engine *e = NULL;
+  int rc = -1;
+  const char *prog = literal ? "literal" : "folded";
+  if (fp3_compile_model(m, "rk4se", &co, zero, &c, msg, sizeof msg)) goto out;
+  /* the pipelines that fit, from the generator's area estimate */
+  fp3_spatial_opts so;
+  fp3_spatial_defaults(&so);
+  so.add_latency = SPATIAL_ADD_LATENCY;
+  so.mul_latency = SPATIAL_MUL_LATENCY;
+  if (fp3_spatial_build(c, m, "rk4se", &so, &sp, msg, sizeof msg)) goto out;
+  const unsigned fit = fp3_spatial_stats_of(sp)->fit;
+  *lat = fp3_spatial_stats_of(sp)->latency;
+  if (fit == 0) {
+    snprintf(msg, sizeof msg, "the %s pipeline does not fit the LFE5U-85F once", prog);
+    goto out;
+  }
+  if (!realpath(".", root)) {
+    snprintf(msg, sizeof msg, "the working directory: %s", strerror(errno));
+    goto out;
+  }
+  const char *vl = getenv("VERILATOR");
+  fp3_spatial_env env = {.root = root, .cache = "build/spatial-cache",
+                         .verilator = vl && vl[0] ? vl : NULL, .label = "bench_chip: spatial",
+                         .pipelines = fit, .add_latency = SPATIAL_ADD_LATENCY,
+                         .mul_latency = SPATIAL_MUL_LATENCY};
+  e = fp3_engine_spatial_new(c, m, "rk4se", FPREF_IEEE, &env, msg, sizeof msg);
+  if (!e) goto out;
+  const size_t n = e->config.num_contexts;
+  if (n < (size_t)fit * (*lat + 3)) {
+    snprintf(msg, sizeof msg, "%zu slots are fewer than %u pipelines x (L + 3) = %u", n, fit,
+             fit * (*lat + 3));
+    goto out;
+  }
+  if (measure(e, "spatial", prog, c, n, steps, r)) {
+    msg[0] = 0;
+    goto out;
+  }
+  r->lanes = fit;
+  r->bound = 1.0 / fit;
+  rc = 0;
+out:
+  if (rc && msg[0]) fprintf(stderr, "bench_chip: spatial, %s: %s\n", prog, msg);
+  fp3_engine_free(e);
+  fp3_spatial_free(sp);
+  fp3_compiled_free(c);
+  return rc;
+}
+
 /* The CPU reference over n ships of a generated scene: ns per object-step
  * (median of 5) of the array form (all n) and of one ship alone; -1 if a
  * result differs from the golden model's. */
@@ -209,22 +292,28 @@ static int cpu_reference(size_t n, uint32_t steps, double *array_ns, double *sca
 
 int main(int argc, char **argv) {
   uint32_t steps = 200;
-  double fmax_mhz = 0.0;
+  double fmax_mhz = 0.0, spatial_fmax_mhz = 0.0;
+  int spatial = 1;
   const char *csv_path = "build/bench/chip.csv";
   for (int i = 1; i < argc; i++) {
     if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
       steps = (uint32_t)strtoul(argv[++i], NULL, 10);
     } else if (strcmp(argv[i], "--fmax-mhz") == 0 && i + 1 < argc) {
       fmax_mhz = strtod(argv[++i], NULL);
+    } else if (strcmp(argv[i], "--spatial-fmax-mhz") == 0 && i + 1 < argc) {
+      spatial_fmax_mhz = strtod(argv[++i], NULL);
+    } else if (strcmp(argv[i], "--no-spatial") == 0) {
+      spatial = 0;
     } else if (strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
       csv_path = argv[++i];
     } else {
-      fprintf(stderr, "usage: bench_chip [--steps N] [--fmax-mhz F] [--csv FILE]\n");
+      fprintf(stderr, "usage: bench_chip [--steps N] [--fmax-mhz F] [--spatial-fmax-mhz F] "
+                      "[--csv FILE] [--no-spatial]\n");
       return strcmp(argv[i], "--help") == 0 ? 0 : 2;
     }
   }
-  if (steps == 0 || fmax_mhz < 0.0) {
-    fprintf(stderr, "bench_chip: --steps must be >= 1 and --fmax-mhz >= 0\n");
+  if (steps == 0 || !(fmax_mhz >= 0.0) || !(spatial_fmax_mhz >= 0.0)) {
+    fprintf(stderr, "bench_chip: --steps must be >= 1, --fmax-mhz and --spatial-fmax-mhz >= 0\n");
     return 2;
   }
   const struct {
@@ -309,11 +398,40 @@ int main(int argc, char **argv) {
     fp3_compiled_free(comp);
     fp3_engine_free(e);
   }
+  /* the spatial chip: the same table's columns (ctx = slots, lanes =
+   * pipelines, bound = 1 / pipelines) */
+  row sp_fold = {0}, sp_lit = {0};
+  unsigned sp_lat[2] = {0, 0};
+  for (int p = 0; spatial && p < 2; p++) {
+    row r;
+    if (spatial_row(&ship, !p, steps, &r, &sp_lat[p])) {
+      rc = 1;
+      continue;
+    }
+    const double ratio = r.cpos / r.bound;
+    printf("%-5s %4u %5u %4u %-9s %7zu %15.3f %12.3f %6.3f %14.0f%s\n", "spat", r.contexts,
+           r.lanes, 0u, r.program, r.objects, r.cpos, r.bound, ratio, r.host_osps,
+           r.mismatches || r.error ? "  GOLDEN MISMATCH OR ERROR" : "");
+    fprintf(csv, "spatial,%u,%u,0,%s,%zu,%" PRIu32 ",%" PRIu64 ",%.4f,%.4f,%.4f,%.0f,%" PRIu64 "\n",
+            r.contexts, r.lanes, r.program, r.objects, steps, r.cycles, r.cpos, r.bound, ratio,
+            r.host_osps, r.mismatches);
+    if (r.mismatches || r.error) rc = 1;
+    *(p ? &sp_fold : &sp_lit) = r;
+  }
+  if (spatial)
+    printf("(spat: the spatial chip, ctx = object slots, lanes = pipelines, latency L = %u "
+           "literal, %u folded; bound 1/pipelines)\n", sp_lat[0], sp_lat[1]);
   if (fp3_bench_csv_close(csv, tmp, csv_path)) return 1;
   if (host_l1_64 > 0.0 && host_big)
     printf("\nVerilated model speed on this host (object-steps per CPU second): the "
            "8-context build, 64 ships: %.0f; %s (%u lanes), 256 ships: %.0f; ratio %.2f\n",
            host_l1_64, host_big, host_big_lanes, host_big_256, host_big_256 / host_l1_64);
+  /* the spatial engine's model, the same run: the folded chip on all its
+   * slots against the lanes' largest build linked */
+  if (sp_fold.host_osps > 0.0 && host_big)
+    printf("Verilated spatial chip (%u pipelines, folded), %zu ships: %.0f object-steps per CPU "
+           "second; ratio to %s %.2f\n", sp_fold.lanes, sp_fold.objects, sp_fold.host_osps,
+           host_big, sp_fold.host_osps / host_big_256);
 
   double cpu_arr = 0.0, cpu_one = 0.0;
   if (cpu_reference(1024, 2000, &cpu_arr, &cpu_one)) rc = 1;
@@ -338,6 +456,15 @@ int main(int argc, char **argv) {
            "--fmax-mhz for ns | |\n", chip_lit.contexts, chip_lit.lanes, chip_lit.cpos,
            chip_comp.cpos);
   }
+  if (sp_fold.cpos > 0.0 && spatial_fmax_mhz > 0.0)
+    printf("| FP3 spatial chip (%u pipelines), folded RK4: %.3f cycles at %.1f MHz | %.2f |\n",
+           sp_fold.lanes, sp_fold.cpos, spatial_fmax_mhz, sp_fold.cpos * 1e3 / spatial_fmax_mhz);
+  else if (sp_fold.cpos > 0.0)
+    printf("| FP3 spatial chip (%u pipelines), folded RK4: %.3f cycles; give "
+           "--spatial-fmax-mhz for ns | |\n", sp_fold.lanes, sp_fold.cpos);
+  if (sp_lit.cpos > 0.0)
+    printf("| FP3 spatial chip (%u pipelines), literal RK4: %.3f cycles (not placed) | |\n",
+           sp_lit.lanes, sp_lit.cpos);
   printf("CSV: %s\n", csv_path);
   return rc;
 }
