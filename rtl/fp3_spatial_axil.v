@@ -108,7 +108,8 @@ module fp3_spatial_axil #(
   output wire [BW:0]   tail_o,
   input  wire          running_i,
   input  wire          done_i,
-  input  wire [63:0]   cycles_i
+  input  wire [63:0]   cycles_i,
+  input  wire [4:0]    flags_i
 );
   localparam [1:0]  RESP_OKAY   = 2'b00;
   localparam [1:0]  RESP_SLVERR = 2'b10;
@@ -120,7 +121,7 @@ module fp3_spatial_axil #(
   localparam [19:0] R_ID = 20'h000, R_HASH = 20'h001, R_INFO = 20'h002, R_LATENCY = 20'h003,
                     R_MAXOBJ = 20'h004, R_STRIDES = 20'h005, R_CTRL = 20'h008,
                     R_STATUS = 20'h009, R_STEPS = 20'h00A, R_COUNT = 20'h00B,
-                    R_CYCLES_LO = 20'h00C, R_CYCLES_HI = 20'h00D;
+                    R_CYCLES_LO = 20'h00C, R_CYCLES_HI = 20'h00D, R_FLAGS = 20'h00E;
   localparam [31:0] ID_VALUE = 32'h46503353;
   localparam [31:0] INFO_VALUE = {8'd0, CARRIED[7:0], INPUTS[7:0], PIPELINES[7:0]};
   localparam [31:0] STRIDES_VALUE = {16'd0, ILOG[7:0], SLOG[7:0]};
@@ -224,6 +225,7 @@ module fp3_spatial_axil #(
       R_COUNT:     sc_value = count_q;
       R_CYCLES_LO: sc_value = cycles_i[31:0];
       R_CYCLES_HI: sc_value = cycles_i[63:32];
+      R_FLAGS:     sc_value = {27'd0, flags_i};
       default: begin
         sc_value    = 32'd0;
         sc_readable = 1'b0;

@@ -61,6 +61,15 @@
 // Pipelines (p's fields at [p * width +: width])
 //   pv_o, pin_o, py_o   an object enters pipeline p: valid, in_i, y_i
 //   pv_i, pyo_i         pipeline p's valid_o and y_o
+//   pflags_i            pipeline p's flags_o (5 bits: IEEE 754 flags its
+//                       cores raised on objects)
+// Flags
+//   flags_o  the run's sticky exception flags: the OR of every pflags_i
+//            since the last START was taken (cleared by it and by
+//            reset).  A pipeline's flags come at most 2 cycles after its
+//            last write-back, so they are in flags_o by the cycle after
+//            done_o rises, before a host can read DONE (fp3_spatial_axil
+//            answers 3 cycles after a read).
 // Write-back (observation; what the state memory writes this cycle)
 //   wb_v_o[p]           bank p writes an object's new carried values back
 //                       at the edge that ends this cycle (running and
@@ -106,6 +115,8 @@ module fp3_spatial_frame #(
   output wire [PIPELINES*32*CARRIED-1:0]   py_o,
   input  wire [PIPELINES-1:0]              pv_i,
   input  wire [PIPELINES*32*CARRIED-1:0]   pyo_i,
+  input  wire [PIPELINES*5-1:0]            pflags_i,
+  output wire [4:0]                        flags_o,
   // write-back
   output wire [PIPELINES-1:0]              wb_v_o,
   output wire [PIPELINES*RW-1:0]           wb_row_o
@@ -276,6 +287,18 @@ module fp3_spatial_frame #(
     endcase
   end
   assign host_rdata_o = rdata_q;
+
+  // ---- the run's sticky exception flags ---------------------------------------
+  reg  [4:0] flags_q;
+  reg  [4:0] pflags_or;
+  integer    f;
+  always @(*) begin
+    pflags_or = 5'd0;
+    for (f = 0; f < PIPELINES; f = f + 1) pflags_or = pflags_or | pflags_i[f*5 +: 5];
+  end
+  always @(posedge clk_i)
+    flags_q <= rst_i || (start_i && !running) ? 5'd0 : flags_q | pflags_or;
+  assign flags_o = flags_q;
 
   // A round's number is below ROWS: its top bit (RB > RW) is not needed to
   // address a row.

@@ -22,6 +22,8 @@
 //            was awake for, bit for bit (a sleeping one is unchanged), and
 //            its inputs are unchanged
 //   cycles   CYCLES = (K - 1) * max(R, L + 3) + R + L + 4, R = ceil(COUNT / N)
+//   flags    FLAGS after a run: inexact (the ship's steps round, nothing
+//            else), none after a run of no step (START clears it)
 //   busy     while running: STATUS.RUNNING, SLVERR for STEPS, COUNT and the
 //            windows, START ignored
 // The runs: a few objects awake (n < L: a step is bubbles but for n / N
@@ -34,6 +36,7 @@
 #include <vector>
 
 #include "Vchip.h"
+#include "fp3_isa.h"
 #include "fp3_spatial_regs.h"
 #include "spatial_vectors.h"
 #include "verilated.h"
@@ -297,6 +300,13 @@ int main(int argc, char **argv) {
     if (cyc != want)
       fail("cycles", std::to_string(K) + " steps, " + std::to_string(R) + " rounds: " +
                          std::to_string(cyc) + " cycles, formula " + std::to_string(want));
+    // FLAGS: the cores' flags on this run's objects, cleared by START: the
+    // ship's steps round (inexact) and stay normal; a run of no step none
+    const uint32_t flags = axi_read(FP3S_FLAGS, &r);
+    const uint32_t want_flags = K && R ? FP3_FLAG_INEXACT : 0;
+    if (r != OKAY || flags != want_flags)
+      fail("flags", std::to_string(K) + " steps: FLAGS " + hex(flags) + ", want " +
+                        hex(want_flags));
     std::printf("run: %u of %u objects awake, %zu entries, %u pipelines, latency %lu, "
                 "%u steps: %" PRIu64 " cycles (formula %" PRIu64 ")\n",
                 n, M, count, N, lat, K, cyc, want);

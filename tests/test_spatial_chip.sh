@@ -161,8 +161,10 @@ mutant period-short 3 252 fp3_spatial_frame.v ".PERIOD(LATENCY + 3)" ".PERIOD(LA
 mutant bank1-unfed 3 252 fp3_spatial_frame.v "fv1_q <= !rst_i && feed &&" \
   "fv1_q <= !rst_i && feed && b != 1 &&" run
 if [ -n "$mutants" ]; then
-  mutant writeback-early 1 96 fp3_spatial_frame.v "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY))" \
-    "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY - 1))" run
+  mutant writeback-early 1 96 fp3_spatial_frame.v "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY + 2))" \
+    "fp_pipe #(.WIDTH(RW), .DEPTH(LATENCY + 1))" run
+  mutant flags-kept 1 96 fp3_spatial_frame.v "flags_q <= rst_i || (start_i && !running)" \
+    "flags_q <= rst_i" flags
   mutant done-late 1 96 fp3_spatial_frame.v ".DRAIN(LATENCY + 4)" ".DRAIN(LATENCY + 5)" cycles
   mutant awake-bank-unchecked 3 252 fp3_spatial_axil.v "wd_bank == wa_bank_q" "1'b1" slverr
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \

@@ -327,7 +327,7 @@ static int run_one(const fp3_model_args *a, fp3_run_setup *s) {
     }
     printf("        total %" PRIu64 " %s, %" PRIu64 " issued, %" PRIu64 " stalls\n", st.cycles,
            strcmp(a->engine, "iss") == 0 ? "instructions" : "cycles", st.issued, st.stalls);
-    fp3_run_print_flags(e, flags);
+    printf("flags: %s\n", flags);
     if (diverged_k)
       printf("DIVERGED: state variable %s is beyond %g, %g (1 + max |initial state|), from "
              "integration %" PRIu32 " on (the largest stable h: fp3 bench --model %s "
@@ -520,7 +520,7 @@ static int run_many(const fp3_model_args *a, fp3_run_setup *s) {
       printf("utilization: not measured (the engine reports no issues per unit)\n");
     else
       printf("utilization: adder %.1f %%, multiplier %.1f %%\n", 100 * add_util, 100 * mul_util);
-    fp3_run_print_flags(s->e, flags);
+    printf("flags: %s\n", flags);
     if (res.error)
       printf("error: object %zu: %s at pc %" PRIu32 "\n", res.error_object,
              fp3_error_text(res.error), res.error_pc);

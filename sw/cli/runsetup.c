@@ -320,8 +320,7 @@ void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const ch
   printf("{\"engine\": ");
   fp3_json_string(stdout, a->engine);
   if (fp3_engine_spatial_is(s->e))
-    printf(", \"pipeline_latency\": %u, \"flags_reported\": false",
-           fp3_engine_spatial_latency(s->e));
+    printf(", \"pipeline_latency\": %u", fp3_engine_spatial_latency(s->e));
   printf(", \"cycles_counted\": \"%s\"",
          strcmp(a->engine, "iss") == 0 ? "instructions issued (the ISS issues one a cycle)"
                                        : "clock cycles");
@@ -344,13 +343,6 @@ void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const ch
          cs->regs_needed, s->e->config.num_regs, cs->est_cycles_later);
   printf(", \"round\": \"%s\", \"ftz\": %s", fpenv_round_name(a->mode),
          a->mode.ftz ? "true" : "false");
-}
-
-void fp3_run_print_flags(const fp3_engine *e, const char *flags) {
-  if (fp3_engine_spatial_is(e))
-    printf("flags: not reported (the spatial pipeline has no flag outputs)\n");
-  else
-    printf("flags: %s\n", flags);
 }
 
 /* "run_error": null, or the first context error with its object and pc. */

@@ -80,10 +80,6 @@ void fp3_run_setup_free(fp3_run_setup *s);
  * est_cycles_per_step, round, ftz. */
 void fp3_run_json_head(const fp3_model_args *a, const fp3_run_setup *s, const char *scene);
 
-/* The report's "flags:" line: the flags' names (flags, fp3_flags_text),
- * or, on the spatial engine, that its pipeline reports none. */
-void fp3_run_print_flags(const fp3_engine *e, const char *flags);
-
 /* ", \"run_error\": " null, or the first context error, its object and pc. */
 void fp3_run_json_error(unsigned error, size_t object, uint32_t pc);
 

@@ -574,10 +574,12 @@ static int sync_slots(spatial_engine *s, unsigned n, char *m, size_t mn) {
 }
 
 /* One run of the chip: START, STATUS polled until DONE (at most `limit`
- * cycles), its CYCLES added to *cycles.  0, or -1. */
-static int chip_run(spatial_engine *s, uint64_t limit, uint64_t *cycles, char *m, size_t mn) {
+ * cycles), its CYCLES added to *cycles and its FLAGS ORed into *flags.
+ * 0, or -1. */
+static int chip_run(spatial_engine *s, uint64_t limit, uint64_t *cycles, uint32_t *flags,
+                    char *m, size_t mn) {
   shim *sh = &s->sh;
-  uint32_t status = 0, lo, hi;
+  uint32_t status = 0, lo, hi, fl;
   if (ax_write(sh, FP3S_CTRL, FP3S_CTRL_START, m, mn)) return -1;
   const uint64_t t0 = sh->cycles(sh->dut);
   do {
@@ -587,9 +589,11 @@ static int chip_run(spatial_engine *s, uint64_t limit, uint64_t *cycles, char *m
       return -1;
     }
   } while (!(status & FP3S_STATUS_DONE));
-  if (ax_read(sh, FP3S_CYCLES_LO, &lo, m, mn) || ax_read(sh, FP3S_CYCLES_HI, &hi, m, mn))
+  if (ax_read(sh, FP3S_CYCLES_LO, &lo, m, mn) || ax_read(sh, FP3S_CYCLES_HI, &hi, m, mn) ||
+      ax_read(sh, FP3S_FLAGS, &fl, m, mn))
     return -1;
   *cycles += (uint64_t)hi << 32 | lo;
+  *flags |= fl;
   return 0;
 }
 
@@ -673,7 +677,7 @@ static int sp_run(fp3_engine *e, uint32_t steps, unsigned n, const fp3_observer 
   }
   trace_run tr = {.s = s, .obs = obs, .n = n, .steps = steps, .t0 = sh->cycles(sh->dut)};
   if (sh->trace(sh->dut, s->pipelines, s->nc, on_trace, &tr)) return sp_fail(e, "the shim cannot trace");
-  const int rc = chip_run(s, limit, &st->cycles, m, sizeof m);
+  const int rc = chip_run(s, limit, &st->cycles, &st->flags, m, sizeof m);
   sh->trace(sh->dut, s->pipelines, s->nc, NULL, NULL);
   if (rc) return sp_fail(e, m);
   if (tr.bad == 1) {

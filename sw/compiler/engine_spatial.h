@@ -41,10 +41,10 @@
  * otherwise the run fails naming the object.  status.cycles is the
  * run's CYCLES register (START to DONE; (K - 1) max(n, L + 3) + n + L +
  * 4, docs/spatial.md);
- * issued counts operations (one per core per object-step); exception
- * flags are not reported (the step module has no flag outputs: flags
- * stays 0, and fp3_engine_spatial_is says which engine it is so callers
- * say so).  An AXI error (SLVERR, no response) or a run that never ends
+ * issued counts operations (one per core per object-step); status.flags
+ * is the run's FLAGS register, the IEEE 754 flags the cores raised on its
+ * objects (a slot's own flags, fp3_ctx_status.flags, are not kept: 0).
+ * An AXI error (SLVERR, no response) or a run that never ends
  * fails the run with the address.
  *
  * The cache (FP3_SPATIAL_CACHE_VERSION): DIR/MODULE-KEY/ holds

@@ -498,6 +498,9 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     fp3_strbuf_printf(t, "//              %2u  %s\n", w, fp3_ir_carried_name(c, w));
   fp3_strbuf_printf(t, "//   valid_o  LATENCY cycles after valid_i: y_o holds that object's\n"
                        "//   y_o      new carried values, in y_i's order\n"
+                       "//   flags_o  the IEEE 754 exception flags the cores raised two cycles\n"
+                       "//            before on objects (OR; bubbles raise none), each core's\n"
+                       "//            {invalid, infinite, overflow, underflow, inexact}\n"
                        "`default_nettype none\n\n"
                        "module %s (\n"
                        "  input  wire          clk_i,\n"
@@ -506,7 +509,8 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
                        "  input  wire [%u:0] in_i,\n"
                        "  input  wire [%u:0] y_i,\n"
                        "  output wire          valid_o,\n"
-                       "  output wire [%u:0] y_o\n"
+                       "  output wire [%u:0] y_o,\n"
+                       "  output wire [4:0]    flags_o\n"
                        ");\n\n"
                        "  localparam integer LATENCY = %u;\n"
                        "  localparam integer ROUND   = %d;\n"
@@ -629,21 +633,40 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
     fp3_strbuf_printf(t, "  assign y_o[%u +: 32] = %s;  // %s\n", 32 * w, a,
                       fp3_ir_carried_name(c, w));
   }
-  fp3_strbuf_printf(t, "\n  // The valid bit travels beside the objects.\n"
-                       "  wire unused_valid_data;\n"
-                       "  fp_pipe #(.WIDTH(1), .DEPTH(LATENCY)) u_valid (\n"
-                       "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .data_i(1'b0),\n"
-                       "    .valid_o(valid_o), .data_o(unused_valid_data)\n  );\n");
-  /* the cores' own valid bits and flags are not used: exception flags
-   * are not reported by this module (the delay lines' valid bits, wires
-   * named unused_*, neither) */
-  fp3_strbuf_printf(t, "\n  // Not used: the cores' valid bits and exception flags (the module\n"
-                       "  // reports no flags) and, in the unused_* wires above, the delay\n"
-                       "  // lines' valid bits.\n");
-  fp3_strbuf_printf(t, "  wire unused_core_outputs = &{1'b0");
+  /* the valid bit, tapped: a core's result in cycle T is the object's
+   * that entered in cycle T - ready */
+  fp3_strbuf_printf(t, "\n  // The valid bit travels beside the objects: obj_v[c] is valid_i of c\n"
+                       "  // cycles before.\n"
+                       "  reg  [LATENCY:1] obj_v_q;\n"
+                       "  wire [LATENCY:0] obj_v = {obj_v_q, valid_i};\n"
+                       "  always @(posedge clk_i)\n"
+                       "    obj_v_q <= rst_i ? {LATENCY{1'b0}} : obj_v[LATENCY-1:0];\n"
+                       "  assign valid_o = obj_v_q[LATENCY];\n");
+  /* exception flags: each core's where its result is an object's
+   * (registered beside the core), then their OR (registered) */
+  fp3_strbuf_printf(t, "\n  // ---- exception flags: a core's count when its result is an object's\n"
+                       "  // (registered beside the core), then their OR (registered) ----\n");
   for (unsigned i = 0; i < s->nn; i++)
     if (s->nd[i].src == SRC_CORE)
-      fp3_strbuf_printf(t, ",\n    %s_valid, %s_flags", s->nd[i].sig, s->nd[i].sig);
+      fp3_strbuf_printf(t, "  reg  [4:0] %s_fq;\n", s->nd[i].sig);
+  fp3_strbuf_printf(t, "  reg  [4:0] flags_q;\n"
+                       "  always @(posedge clk_i) begin\n");
+  for (unsigned i = 0; i < s->nn; i++)
+    if (s->nd[i].src == SRC_CORE)
+      fp3_strbuf_printf(t, "    %s_fq <= %s_flags & {5{obj_v[%u]}};\n", s->nd[i].sig, s->nd[i].sig,
+                        s->nd[i].ready);
+  fp3_strbuf_printf(t, "    flags_q <= 5'd0");
+  for (unsigned i = 0; i < s->nn; i++)
+    if (s->nd[i].src == SRC_CORE) fp3_strbuf_printf(t, "\n             | %s_fq", s->nd[i].sig);
+  fp3_strbuf_printf(t, ";\n  end\n  assign flags_o = flags_q;\n");
+  /* the cores' own valid bits are not used (valid_i is 1: the module's
+   * valid bit, above, marks the objects), nor the delay lines' (wires
+   * named unused_*) */
+  fp3_strbuf_printf(t, "\n  // Not used: the cores' valid bits (the module's own, above, marks\n"
+                       "  // the objects) and, in the unused_* wires above, the delay lines'.\n");
+  fp3_strbuf_printf(t, "  wire unused_core_outputs = &{1'b0");
+  for (unsigned i = 0; i < s->nn; i++)
+    if (s->nd[i].src == SRC_CORE) fp3_strbuf_printf(t, ",\n    %s_valid", s->nd[i].sig);
   fp3_strbuf_printf(t, ",\n    1'b0};\n\nendmodule\n\n`default_nettype wire\n");
 }
 

@@ -89,7 +89,10 @@
   X(COUNT,     0x00B, "RW", "entries of the awake list a run feeds, "         \
                             "0 .. MAXOBJ (reset 0)")                          \
   X(CYCLES_LO, 0x00C, "R",  "cycles of the last run, low word")               \
-  X(CYCLES_HI, 0x00D, "R",  "cycles of the last run, high word")
+  X(CYCLES_HI, 0x00D, "R",  "cycles of the last run, high word")              \
+  X(FLAGS,     0x00E, "R",  "IEEE 754 exception flags the cores raised on "   \
+                            "the last run's objects, sticky (cleared by "     \
+                            "START): fp3_isa.h FP3_FLAG_* bits")
 
 /*
  * Windows.  X(NAME, base word address, access, description)
