@@ -28,11 +28,19 @@
 //
 // Parameters:
 //   LATENCY  rising edges from the operands being sampled to the result,
-//            >= 1.  1: one output register; 2: a register between the
-//            two halves below (the exponent sum, the special cases and the
-//            normalisation of a subnormal a | the denormalisation,
-//            rounding and packing), then the output register; >= 3: and
-//            LATENCY - 2 delay stages after it.
+//            >= 1.  The register places, added in this order:
+//              1: the output register;
+//              2: the register between the two halves below (the
+//                 exponent sum, the special cases and the shift amounts |
+//                 the shifts, rounding and packing);
+//              3: a register inside the first half, after the exponent
+//                 sum t and the leading-zero count (operands, t, lz);
+//              4: a register inside the second half, after the shifts
+//                 (before the rounding increment and the packing);
+//              >= 5: LATENCY - 4 delay stages after the output register.
+//            1 and 2 suit a core beside others of a few stages; 4 is for
+//            a chip's clock rate (each stage a short chain: an 8-bit add
+//            and compares | the masked shifts | a 23-bit increment).
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      1: subnormal a read as zero, tiny results flushed to zero
 //
@@ -79,9 +87,33 @@ module fp_scaleb #(
   // synthesis: k's sign decides which paths exist, and each shift amount
   // is masked to the bits its bound under that k needs, so a multiply by
   // 0.5 or 2 keeps a one-place shifter, not a barrel shifter.
-  wire        sign   = a_i[31] ^ b_i[31];
-  wire [7:0]  ea     = a_i[30:23];
-  wire [22:0] fa     = a_i[22:0];
+  // Place 3 (LATENCY >= 3) splits this half: the exponent sum t and the
+  // leading-zero count lz of a's significand are computed from the
+  // operands (x_*), registered with them, and the rest reads the
+  // registered copies (r_*).
+  wire [7:0]        x_ea  = a_i[30:23];
+  wire              x_sub = x_ea == 8'h00;
+  wire signed [9:0] x_k   = $signed({2'b00, b_i[30:23]}) - 10'sd127;
+  wire signed [9:0] x_t   = $signed({2'b00, x_sub ? 8'd1 : x_ea}) + x_k;
+  wire [4:0]        x_lz;
+  fp_lzc #(.WIDTH(24)) u_lzc (.v_i({~x_sub, a_i[22:0]}), .n_o(x_lz));
+  localparam integer P3_W = 32 + 9 + 10 + 5;
+  wire [P3_W-1:0] p3_q;
+  wire            p3_valid;
+  fp_pipe #(.WIDTH(P3_W), .DEPTH(LATENCY >= 3 ? 1 : 0)) u_p3 (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i),
+    .data_i({a_i, b_i[31:23], x_t, x_lz}),
+    .valid_o(p3_valid), .data_o(p3_q)
+  );
+  wire [31:0]       r_a;
+  wire [8:0]        r_b;
+  wire signed [9:0] t;
+  wire [4:0]        lz;
+  assign {r_a, r_b, t, lz} = p3_q;
+
+  wire        sign   = r_a[31] ^ r_b[8];
+  wire [7:0]  ea     = r_a[30:23];
+  wire [22:0] fa     = r_a[22:0];
   wire        a_max  = ea == 8'hFF;
   wire        a_sub  = ea == 8'h00;
   wire        a_nan  = a_max && fa != 23'd0;
@@ -92,11 +124,11 @@ module fp_scaleb #(
 
   // k = eb - 127 (-126 to 127) and a's significand m, not normalised (its
   // exponent E: ea, 1 for a subnormal a): a * 2^k = m * 2^(E + k - 150),
-  // so t = E + k is the result's biased exponent while m's top bit is set
-  wire signed [9:0] k     = $signed({2'b00, b_i[30:23]}) - 10'sd127;
+  // so t = E + k (x_t above) is the result's biased exponent while m's
+  // top bit is set
+  wire signed [9:0] k     = $signed({2'b00, r_b[7:0]}) - 10'sd127;
   wire              k_neg = k < 10'sd0;
   wire [23:0]       m     = {~a_sub, fa};
-  wire signed [9:0] t     = $signed({2'b00, a_sub ? 8'd1 : ea}) + k;
 
   // the paths of a finite nonzero a
   //   normal: a normal, 1 <= t <= 254: {sign, t, fa}, exact
@@ -111,8 +143,6 @@ module fp_scaleb #(
   wire left  = a_sub && !k_neg;
   wire tiny  = k_neg && t < 10'sd1;
 
-  wire [4:0] lz;
-  fp_lzc #(.WIDTH(24)) u_lzc (.v_i(m), .n_o(lz));
   // masks: the bits a shift amount needs when it is at most k (left) or
   // at most min(-k, 26) (tiny; from 26 places on only the sticky remains)
   function [4:0] span(input [4:0] v);
@@ -138,7 +168,7 @@ module fp_scaleb #(
     spec_y = 32'h0;
     spec_f = 5'd0;
     if (a_nan) begin
-      spec_y = a_i | 32'h0040_0000;
+      spec_y = r_a | 32'h0040_0000;
       spec_f = fa[22] ? 5'd0 : FLAG_NV;
     end else if (a_inf) begin
       spec_y = {sign, 8'hFF, 23'd0};
@@ -158,7 +188,7 @@ module fp_scaleb #(
   wire [MID_W-1:0] mid_q;
   wire             mid_valid;
   fp_pipe #(.WIDTH(MID_W), .DEPTH(LATENCY >= 2 ? 1 : 0)) u_mid (
-    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .data_i(mid_d),
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(p3_valid), .data_i(mid_d),
     .valid_o(mid_valid), .data_o(mid_q)
   );
   wire        q_spec, q_sign, q_left, q_tiny;
@@ -168,15 +198,34 @@ module fp_scaleb #(
   wire [23:0] q_m;
   assign {q_spec, q_spec_y, q_spec_f, q_sign, q_left, q_tiny, q_t, q_m, q_d, q_e_left, q_sh} = mid_q;
 
-  // ---- second half: shift, round, pack ----
+  // ---- second half: shift | round, pack ----
   // left: exact
-  wire [23:0] mm      = q_m << q_d;
+  wire [23:0] x_mm    = q_m << q_d;
   // tiny: q_m * 2^(t - 1) units of 2^-149, i.e. q_m shifted right by sh
   wire [49:0] ext     = {q_m, 26'd0} >> q_sh;
-  wire [22:0] sub_q   = ext[48:26];
   wire unused_ext_top = ext[49];           // 0: sh >= 1 on the tiny path
-  wire        guard   = ext[25];
-  wire        stick   = |ext[24:0];
+  wire        x_guard = ext[25];
+  wire        x_stick = |ext[24:0];
+
+  // ---- place 4 (LATENCY >= 4): after the shifts ----
+  localparam integer P4_W = 1 + 32 + 5 + 1 + 2 + 8 + 23 + 8 + 24 + 23 + 2;
+  wire [P4_W-1:0] p4_q;
+  wire            p4_valid;
+  fp_pipe #(.WIDTH(P4_W), .DEPTH(LATENCY >= 4 ? 1 : 0)) u_p4 (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(mid_valid),
+    .data_i({q_spec, q_spec_y, q_spec_f, q_sign, q_left, q_tiny, q_t, q_m[22:0], q_e_left,
+             x_mm, ext[48:26], x_guard, x_stick}),
+    .valid_o(p4_valid), .data_o(p4_q)
+  );
+  wire        s_spec, s_sign, s_left, s_tiny, guard, stick;
+  wire [31:0] s_spec_y;
+  wire [4:0]  s_spec_f;
+  wire [7:0]  s_t, s_e_left;
+  wire [22:0] s_f, sub_q;
+  wire [23:0] mm;
+  assign {s_spec, s_spec_y, s_spec_f, s_sign, s_left, s_tiny, s_t, s_f, s_e_left, mm, sub_q,
+          guard, stick} = p4_q;
+
   wire        inexact = guard | stick;
   wire        up      = ROUND == 0 && guard && (stick || sub_q[0]);
   // a carry out of the fraction makes the smallest normal number
@@ -185,27 +234,28 @@ module fp_scaleb #(
   reg [31:0] y_d;
   reg [4:0]  f_d;
   always @* begin
-    if (q_spec) begin
-      y_d = q_spec_y;
-      f_d = q_spec_f;
-    end else if (q_left) begin
-      y_d = {q_sign, mm[23] ? q_e_left : 8'd0, mm[22:0]};
+    if (s_spec) begin
+      y_d = s_spec_y;
+      f_d = s_spec_f;
+    end else if (s_left) begin
+      y_d = {s_sign, mm[23] ? s_e_left : 8'd0, mm[22:0]};
       f_d = 5'd0;
-    end else if (!q_tiny) begin
-      y_d = {q_sign, q_t, q_m[22:0]};
+    end else if (!s_tiny) begin
+      y_d = {s_sign, s_t, s_f};
       f_d = 5'd0;
     end else if (FTZ != 0) begin
-      y_d = {q_sign, 31'd0};
+      y_d = {s_sign, 31'd0};
       f_d = FLAG_UF | FLAG_NX;
     end else begin
-      y_d = {q_sign, sub_mag};
+      y_d = {s_sign, sub_mag};
       f_d = inexact ? (FLAG_UF | FLAG_NX) : 5'd0;
     end
   end
 
   // ---- the output register and any delay stages after it ----
-  fp_pipe #(.WIDTH(37), .DEPTH(LATENCY >= 2 ? LATENCY - 1 : LATENCY)) u_out (
-    .clk_i(clk_i), .rst_i(rst_i), .valid_i(mid_valid), .data_i({y_d, f_d}),
+  localparam integer PLACES = LATENCY >= 4 ? 3 : LATENCY - 1;  // places 2 .. 4 in use
+  fp_pipe #(.WIDTH(37), .DEPTH(LATENCY - PLACES)) u_out (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(p4_valid), .data_i({y_d, f_d}),
     .valid_o(valid_o), .data_o({y_o, flags_o})
   );
 

@@ -1,7 +1,8 @@
-// scaleb_top.v -- Verilator test top of rtl/fp_scaleb.v: eight instances
-// side by side on one operand pair, every rounding and FTZ configuration
-// (index k = 2 * FTZ + ROUND) at LATENCY 1 (instances 0-3) and at
-// LATENCY 2 (instances 4-7), driven by sim/scaleb_tb.cpp.
+// scaleb_top.v -- Verilator test top of rtl/fp_scaleb.v: sixteen
+// instances side by side on one operand pair, every rounding and FTZ
+// configuration (index k = 2 * FTZ + ROUND) at LATENCY 1, 2, 3 and 4
+// (instance j at LATENCY j / 4 + 1: every register place), driven by
+// sim/scaleb_tb.cpp.
 //
 // Ports: clk_i, rst_i, valid_i, a_i, b_i as fp_scaleb's; instance j's
 // valid_o, y_o and flags_o at bit j, [32j +: 32] and [5j +: 5].
@@ -13,13 +14,13 @@ module scaleb_top (
   input  wire         valid_i,
   input  wire [31:0]  a_i,
   input  wire [31:0]  b_i,
-  output wire [7:0]   valid_o,
-  output wire [255:0] y_o,
-  output wire [39:0]  flags_o
+  output wire [15:0]  valid_o,
+  output wire [511:0] y_o,
+  output wire [79:0]  flags_o
 );
   genvar j;
   generate
-    for (j = 0; j < 8; j = j + 1) begin : g_core
+    for (j = 0; j < 16; j = j + 1) begin : g_core
       fp_scaleb #(.LATENCY(j / 4 + 1), .ROUND(j % 2), .FTZ((j / 2) % 2)) u_scaleb (
         .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i), .a_i(a_i), .b_i(b_i),
         .valid_o(valid_o[j]), .y_o(y_o[32 * j +: 32]), .flags_o(flags_o[5 * j +: 5])

@@ -25,7 +25,7 @@
  *
  * Then the spatial rows (docs/spatial.md): the ship's rk4se step, folded
  * and literal, as the spatial chip `make pnr-spatial` places it (cores at
- * add 9 / mul 9, as many pipelines N as the area estimate fits), on the
+ * add 9, mul 9, scaleB 4, as many pipelines N as the area estimate fits), on the
  * spatial engine (engine_spatial.h: the chip's Verilated RTL, built into
  * build/spatial-cache on first use): all of the engine's slots, at least
  * N (L + 3) objects, so the pipelines are full and the figure is their
@@ -165,9 +165,10 @@ static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled *
 }
 
 /* The spatial chip's cores: those make pnr-spatial places
- * (mk/spatial.mk's SPATIAL_OPTS default). */
+ * (mk/spatial.mk's SPATIAL_OPTS default; the ship has no div or sqrt). */
 #define SPATIAL_ADD_LATENCY 9
 #define SPATIAL_MUL_LATENCY 9
+#define SPATIAL_SCALEB_LATENCY 4
 
 /* A spatial row: the ship's rk4se, literal or folded, on the spatial
  * engine of the chip make pnr-spatial builds (as many pipelines as fit),
@@ -192,6 +193,7 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
   fp3_spatial_defaults(&so);
   so.add_latency = SPATIAL_ADD_LATENCY;
   so.mul_latency = SPATIAL_MUL_LATENCY;
+  so.scaleb_latency = SPATIAL_SCALEB_LATENCY;
   if (fp3_spatial_build(c, m, "rk4se", &so, &sp, msg, sizeof msg)) goto out;
   const unsigned fit = fp3_spatial_stats_of(sp)->fit;
   *lat = fp3_spatial_stats_of(sp)->latency;
@@ -207,7 +209,8 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
   fp3_spatial_env env = {.root = root, .cache = "build/spatial-cache",
                          .verilator = vl && vl[0] ? vl : NULL, .label = "bench_chip: spatial",
                          .pipelines = fit, .add_latency = SPATIAL_ADD_LATENCY,
-                         .mul_latency = SPATIAL_MUL_LATENCY};
+                         .mul_latency = SPATIAL_MUL_LATENCY,
+                         .scaleb_latency = SPATIAL_SCALEB_LATENCY};
   e = fp3_engine_spatial_new(c, m, "rk4se", FPREF_IEEE, &env, msg, sizeof msg);
   if (!e) goto out;
   const size_t n = e->config.num_contexts;

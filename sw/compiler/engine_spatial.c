@@ -793,6 +793,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   o.ftz = mode.ftz;
   if (env->add_latency) o.add_latency = env->add_latency;
   if (env->mul_latency) o.mul_latency = env->mul_latency;
+  if (env->scaleb_latency) o.scaleb_latency = env->scaleb_latency;
   const unsigned np = env->pipelines ? env->pipelines : 1;
   if (np > 255) {
     snprintf(err, n, "%u pipelines: the frame takes 1 .. 255", np);

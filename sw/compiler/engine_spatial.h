@@ -86,11 +86,12 @@ typedef struct fp3_spatial_env {
   const char *verilator; /* the Verilator command (NULL: "verilator")             */
   const char *label;     /* prefix of the messages on stderr ("spatial")          */
   /* The chip's shape (0: the default): its pipelines N (1; at most 255)
-   * and its adders' and multipliers' latencies (fp3_spatial_defaults';
-   * `make pnr-spatial` places add 9 / mul 9).  Slot o is in bank o mod N,
+   * and its adders', multipliers' and scaleB cores' latencies
+   * (fp3_spatial_defaults'; `make pnr-spatial` places add 9, mul 9,
+   * scaleB 4).  Slot o is in bank o mod N,
    * and the engine has FP3_SPATIAL_SLOTS slots rounded up to a multiple of
    * N (fp3_config.num_contexts). */
-  unsigned pipelines, add_latency, mul_latency;
+  unsigned pipelines, add_latency, mul_latency, scaleb_latency;
 } fp3_spatial_env;
 
 /* A spatial engine for compiled model c (of model m and integrator
