@@ -40,29 +40,25 @@ module fp3_spatial_mem #(
   input  wire [RW-1:0]          raddr_i,
   output wire [WIDTH*WORDS-1:0] rdata_o
 );
+  // fp3_ram's read stages: its two-stage form up to 512 rows (one block
+  // with its output register), else its registered read and a flip-flop
+  localparam integer RS = ROWS <= 512 ? 2 : 1;
   genvar k;
   generate
     for (k = 0; k < WORDS; k = k + 1) begin : g_word
-      if (ROWS <= 512) begin : g_outreg
-        fp3_ram #(.DEPTH(ROWS), .AW(RW), .WIDTH(WIDTH), .READ_STAGES(2)) u_ram (
-          .clk_i   (clk_i),
-          .we_i    (we_i[k]),
-          .waddr_i (waddr_i),
-          .wdata_i (wdata_i[WIDTH*k +: WIDTH]),
-          .raddr_i (raddr_i),
-          .rdata_o (rdata_o[WIDTH*k +: WIDTH])
-        );
+      wire [WIDTH-1:0] rd;
+      fp3_ram #(.DEPTH(ROWS), .AW(RW), .WIDTH(WIDTH), .READ_STAGES(RS)) u_ram (
+        .clk_i   (clk_i),
+        .we_i    (we_i[k]),
+        .waddr_i (waddr_i),
+        .wdata_i (wdata_i[WIDTH*k +: WIDTH]),
+        .raddr_i (raddr_i),
+        .rdata_o (rd)
+      );
+      if (RS == 2) begin : g_outreg
+        assign rdata_o[WIDTH*k +: WIDTH] = rd;
       end else begin : g_fabric
-        wire [WIDTH-1:0] rd;
-        reg  [WIDTH-1:0] rd_q;
-        fp3_ram #(.DEPTH(ROWS), .AW(RW), .WIDTH(WIDTH), .READ_STAGES(1)) u_ram (
-          .clk_i   (clk_i),
-          .we_i    (we_i[k]),
-          .waddr_i (waddr_i),
-          .wdata_i (wdata_i[WIDTH*k +: WIDTH]),
-          .raddr_i (raddr_i),
-          .rdata_o (rd)
-        );
+        reg [WIDTH-1:0] rd_q;
         always @(posedge clk_i) rd_q <= rd;
         assign rdata_o[WIDTH*k +: WIDTH] = rd_q;
       end
