@@ -9,11 +9,11 @@
 // Channels, as fp3_axil's: AW and W are accepted independently, in either
 // order, into a one-entry holding register each; the write is performed
 // once both are held and the B channel is free (or being emptied this
-// cycle).  AR is held likewise; the read's word is captured RD_CYCLES = 3
-// cycles after it is performed (the frame's two-cycle memory read and its
-// multiplexer register) and held on R until RREADY.  B and R stay valid,
+// cycle).  AR is held likewise; the read's word is captured RD_CYCLES = 4
+// cycles after it is performed (the host port's register, the frame's
+// two-cycle memory read and its multiplexer register) and held on R until RREADY.  B and R stay valid,
 // with stable payload, until accepted.  Each channel takes a new transfer
-// every second cycle (reads every fourth).  When N is not a power of two,
+// every second cycle (reads every fifth).  When N is not a power of two,
 // an access to a window waits clog2(M + 1) cycles for its object or entry
 // number's division by N (fp3_spatial_divn; none for the next word of the
 // same object), and a write to the awake list or COUNT as long for its
@@ -116,7 +116,7 @@ module fp3_spatial_axil #(
   localparam [3:0]  STRB_ALL    = 4'b1111;
   localparam [1:0]  SEL_SCALAR  = 2'd0;
   localparam [1:0]  SEL_AWAKE   = 2'd1;
-  localparam integer RD_CYCLES  = 3;
+  localparam integer RD_CYCLES  = 4;
   // the scalar registers (fp3_spatial_regs.h FP3S_REGS)
   localparam [19:0] R_ID = 20'h000, R_HASH = 20'h001, R_INFO = 20'h002, R_LATENCY = 20'h003,
                     R_MAXOBJ = 20'h004, R_STRIDES = 20'h005, R_CTRL = 20'h008,
@@ -324,14 +324,37 @@ module fp3_spatial_axil #(
   end
 
   // ---- the frame -----------------------------------------------------------------
-  assign host_we_o    = wr_now && wa_win;
-  assign host_re_o    = do_read && rd_ok && ra_win;
-  assign host_sel_o   = do_write ? wa_sel_q  : ra_sel_q;
-  assign host_bank_o  = do_write ? wa_bank_q : ra_bank_q;
-  assign host_row_o   = do_write ? wa_row_q  : ra_row_q;
-  assign host_word_o  = do_write ? wa_word_q : ra_word_q;
-  assign host_wdata_o = wa_sel_q == SEL_AWAKE
-                      ? {wd_none_q, {(31 - RW){1'b0}}, wd_row[RW-1:0]} : w_data_q;
+  // The host port leaves registers: the arbitration's decision and the
+  // frame's memories are far apart on a full chip, and a path from one
+  // through the other was the chip's critical path.  A window access
+  // reaches the frame a cycle after it is performed, reads and writes
+  // alike, so they stay in order; START does not wait (a run starts at
+  // least a cycle after the last window write lands: one write every
+  // second cycle).
+  wire [31:0] host_wdata = wa_sel_q == SEL_AWAKE
+                         ? {wd_none_q, {(31 - RW){1'b0}}, wd_row[RW-1:0]} : w_data_q;
+  reg          host_we_q, host_re_q;
+  reg [1:0]    host_sel_q;
+  reg [BW-1:0] host_bank_q;
+  reg [RW-1:0] host_row_q;
+  reg [7:0]    host_word_q;
+  reg [31:0]   host_wdata_q;
+  always @(posedge clk_i) begin
+    host_we_q    <= !rst_i && wr_now && wa_win;
+    host_re_q    <= !rst_i && do_read && rd_ok && ra_win;
+    host_sel_q   <= do_write ? wa_sel_q  : ra_sel_q;
+    host_bank_q  <= do_write ? wa_bank_q : ra_bank_q;
+    host_row_q   <= do_write ? wa_row_q  : ra_row_q;
+    host_word_q  <= do_write ? wa_word_q : ra_word_q;
+    host_wdata_q <= host_wdata;
+  end
+  assign host_we_o    = host_we_q;
+  assign host_re_o    = host_re_q;
+  assign host_sel_o   = host_sel_q;
+  assign host_bank_o  = host_bank_q;
+  assign host_row_o   = host_row_q;
+  assign host_word_o  = host_word_q;
+  assign host_wdata_o = host_wdata_q;
   assign start_o      = wr_now && wa_ctrl && w_data_q[0];
   assign steps_o      = steps_q;
   assign rounds_o     = rounds_q;

@@ -21,8 +21,9 @@
 //   start_i     sample x_i and begin (at this edge)
 //   x_i         the dividend
 //   ready_o     q_o and r_o hold the last dividend's quotient and
-//               remainder (registered; 1 after reset, when they are not
-//               yet any dividend's)
+//               remainder (a register of its own, so that it starts a
+//               path of the slave's arbitration with no logic before it;
+//               1 after reset, when they are not yet any dividend's)
 //   q_o, r_o    x / N and x mod N
 // Reset: rst_i, synchronous, active high: ready.
 `default_nettype none
@@ -61,6 +62,7 @@ module fp3_spatial_divn #(
       reg [W-1:0]  x_q, q_q;
       reg [NB-1:0] r_q;
       reg [CW-1:0] left_q;  // quotient bits left to find
+      reg          ready_q; // left_q == 0, as a register
       wire [NB:0]  r2 = {r_q, x_q[W-1]};       // 2r + the next bit
       wire         ge = r2 >= ND;
       wire [NB:0]  rn = ge ? r2 - ND : r2;
@@ -70,6 +72,9 @@ module fp3_spatial_divn #(
       reg          have_q;
       wire         again = start_i && !(have_q && x_i == last_q);
       always @(posedge clk_i) begin
+        // left_q's next value is 0 when no division begins and at most
+        // one bit is left
+        ready_q <= rst_i || (!again && left_q <= {{(CW-1){1'b0}}, 1'b1});
         if (rst_i) begin
           left_q <= {CW{1'b0}};
           have_q <= 1'b0;
@@ -89,7 +94,7 @@ module fp3_spatial_divn #(
           r_q <= rn[NB-1:0];
         end
       end
-      assign ready_o = left_q == {CW{1'b0}};
+      assign ready_o = ready_q;
       assign q_o = q_q;
       assign r_o = r_q;
       // rn < N < 2^NB: its top bit is 0.
