@@ -208,9 +208,7 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
   const char *vl = getenv("VERILATOR");
   fp3_spatial_env env = {.root = root, .cache = "build/spatial-cache",
                          .verilator = vl && vl[0] ? vl : NULL, .label = "bench_chip: spatial",
-                         .pipelines = fit, .add_latency = SPATIAL_ADD_LATENCY,
-                         .mul_latency = SPATIAL_MUL_LATENCY,
-                         .scaleb_latency = SPATIAL_SCALEB_LATENCY};
+                         .pipelines = fit, .cores = &so};
   e = fp3_engine_spatial_new(c, m, "rk4se", FPREF_IEEE, &env, msg, sizeof msg);
   if (!e) goto out;
   const size_t n = e->config.num_contexts;

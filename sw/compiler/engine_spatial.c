@@ -788,17 +788,12 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
                                    fpref_mode mode, const fp3_spatial_env *env, char *err,
                                    size_t n) {
   fp3_spatial_opts o;
-  fp3_spatial_defaults(&o);
+  if (env->cores) o = *env->cores;
+  else fp3_spatial_defaults(&o);
   o.rtz = mode.round == FPREF_RTZ;
   o.ftz = mode.ftz;
-  if (env->add_latency) o.add_latency = env->add_latency;
-  if (env->mul_latency) o.mul_latency = env->mul_latency;
-  if (env->scaleb_latency) o.scaleb_latency = env->scaleb_latency;
+  /* (fp3_spatial_top refuses N beyond FP3S_MAX_PIPELINES) */
   const unsigned np = env->pipelines ? env->pipelines : 1;
-  if (np > 255) {
-    snprintf(err, n, "%u pipelines: the frame takes 1 .. 255", np);
-    return NULL;
-  }
   spatial_engine *s = calloc(1, sizeof *s);
   if (!s) {
     snprintf(err, n, "out of memory");
@@ -807,8 +802,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
   s->base.ops = &spatial_ops;
   s->c = c;
   s->pipelines = np;
-  s->slots = (FP3_SPATIAL_SLOTS + np - 1) / np * np;
-  if (s->slots < 2 * np) s->slots = 2 * np;
+  s->slots = (FP3_SPATIAL_SLOTS + np - 1) / np * np; /* >= 2 N for any N <= 512 */
   char msg[512];
   if (fp3_spatial_build(c, m, integ, &o, &s->sp, msg, sizeof msg)) {
     snprintf(err, n, "%s: %s", m->file, msg);

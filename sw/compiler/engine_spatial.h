@@ -39,8 +39,8 @@
  * object), and the state window, read back to back
  * (fp3_spatial_shim_read_many), must hold each object's last write-back:
  * otherwise the run fails naming the object.  status.cycles is the
- * run's CYCLES register (START to DONE; (K - 1) max(n, L + 3) + n + L +
- * 4, docs/spatial.md);
+ * run's CYCLES register (START to DONE; (K - 1) max(R, L + 3) + R + L +
+ * 4 for n objects on N pipelines, R = ceil(n / N), docs/spatial.md);
  * issued counts operations (one per core per object-step); status.flags
  * is the run's FLAGS register, the IEEE 754 flags the cores raised on its
  * objects (a slot's own flags, fp3_ctx_status.flags, are not kept: 0).
@@ -69,6 +69,7 @@
 #include "compile.h"
 #include "engine.h"
 #include "model.h"
+#include "spatial.h"
 
 /* Object slots of a spatial engine of one pipeline
  * (fp3_config.num_contexts): the objects one run streams through the
@@ -85,19 +86,20 @@ typedef struct fp3_spatial_env {
   const char *cache;     /* the cache folder (made if missing)                    */
   const char *verilator; /* the Verilator command (NULL: "verilator")             */
   const char *label;     /* prefix of the messages on stderr ("spatial")          */
-  /* The chip's shape (0: the default): its pipelines N (1; at most 255)
-   * and its adders', multipliers' and scaleB cores' latencies
-   * (fp3_spatial_defaults'; `make pnr-spatial` places add 9, mul 9,
-   * scaleB 4).  Slot o is in bank o mod N,
-   * and the engine has FP3_SPATIAL_SLOTS slots rounded up to a multiple of
-   * N (fp3_config.num_contexts). */
-  unsigned pipelines, add_latency, mul_latency, scaleb_latency;
+  /* The chip's shape: its pipelines N (0: one; at most
+   * FP3S_MAX_PIPELINES) and its cores (NULL: fp3_spatial_defaults; `make
+   * pnr-spatial` places add 9, mul 9, scaleB 4), whose rounding and FTZ
+   * the engine's `mode` sets either way.  Slot o is in bank o mod N, and
+   * the engine has FP3_SPATIAL_SLOTS slots rounded up to a multiple of N
+   * (fp3_config.num_contexts). */
+  unsigned pipelines;
+  const fp3_spatial_opts *cores;
 } fp3_spatial_env;
 
 /* A spatial engine for compiled model c (of model m and integrator
  * integ, compiled with registers: fp3_compile_model or
  * fp3_model_compile_for), its cores rounding and flushing as `mode`
- * says, the cores' latencies those of fp3_spatial_defaults.  Builds the
+ * says, their latencies env->cores' (fp3_spatial_defaults' without).  Builds the
  * pipeline and its chip top, finds or builds its cache entry (progress on
  * stderr: what it builds, each stage and its time), loads and checks it.  c must outlive the
  * engine.  NULL with the reason in err: a pipeline the generator
