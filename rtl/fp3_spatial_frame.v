@@ -69,7 +69,7 @@
 //            reset).  A pipeline's flags come at most 2 cycles after its
 //            last write-back, so they are in flags_o by the cycle after
 //            done_o rises, before a host can read DONE (fp3_spatial_axil
-//            answers 3 cycles after a read).
+//            answers 4 cycles after a read).
 // Write-back (observation; what the state memory writes this cycle)
 //   wb_v_o[p]           bank p writes an object's new carried values back
 //                       at the edge that ends this cycle (running and
