@@ -35,14 +35,13 @@ TEST_SCRIPTS += tests/test_spatial_engine.sh
 # spatial chip (the step module in the frame behind its AXI4-Lite slave)
 # on the LFE5U-85F, N pipelines (default: as many as the area estimate
 # fits), through scripts/pnr-spatial.sh (synth_ecp5, nextpnr).  The cores
-# at SPATIAL_OPTS (default add 9, mul 9: fp_mul's fastest latency with its
-# product in MULT18X18D; scaleB 4, every register place of fp_scaleb; and
-# div/sqrt 34, every register place of fp_div and fp_sqrt).  Results in $(BUILD)/pnr-spatial/.  About an
-# hour a seed for three ship pipelines on this machine.
+# at SPATIAL_OPTS (default --clock-cores: the cores for clock rate, `fp3
+# spatial --help`).  Results in $(BUILD)/pnr-spatial/.  About an hour a
+# seed for three ship pipelines on this machine.
 MODEL        ?=
 PIPELINES    ?=
 FTZ          ?=
-SPATIAL_OPTS ?= --add-latency 9 --mul-latency 9 --scaleb-latency 4 --div-latency 34
+SPATIAL_OPTS ?= --clock-cores
 .PHONY: pnr-spatial
 ## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m INTEGRATOR=rk4se [PIPELINES=N] [FTZ=1] [PNR_SEED=n])
 pnr-spatial: $(BUILD)/fp3 pnr-tools

@@ -34,8 +34,18 @@ for r in "${rows[@]}"; do
     done
   done
 done
+# fp_mul with its feed register in front of the MULT18X18D (FEED = 1)
+for cfg in "0 0" "0 1" "1 0"; do
+  read -r round ftz <<<"$cfg"
+  bash scripts/synth.sh "$out" fp_mul ecp5 LATENCY=10 FEED=1 ROUND=$round FTZ=$ftz rtl/*.v \
+    >/dev/null
+  read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
+    "$out/fp_mul_LATENCY-10_FEED-1_ROUND-${round}_FTZ-${ftz}_ecp5_stat.txt")
+  printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' MUL_FEED 10 "$round" "$ftz" \
+    "$luts" "$ffs" "$mult" "fp_mul, FEED 1"
+done
 # fp_scaleb with a constant b: a wrapper per constant
-for lat in 1 2; do
+for lat in 1 2 4; do
   for cfg in "0 0" "0 1" "1 0"; do
     read -r round ftz <<<"$cfg"
     best="0 0 0"

@@ -10,7 +10,9 @@
 # generated module must be `verilator --lint-only -Wall` clean, generate
 # the same text twice, and bad input (also a pipeline that does not fit
 # the LFE5U-85F) must exit 2 leaving no file.  The cases use fp_scaleb for
-# multiplies by powers of two, except the oscillator's (--no-scaleb).
+# multiplies by powers of two, except the oscillator's (--no-scaleb); the
+# literal ship uses the chip builds' cores (--clock-cores: fp_mul with its
+# feed register).
 #
 #   tests/test_spatial.sh [--all]   (--all: every shipped model with every
 #                                    integrator that applies to it)
@@ -40,7 +42,7 @@ build_tb() {
 # case name, model, fp3 spatial options
 cases=(
   "ship-folded    models/ship.fp3m       --integrator rk4se"
-  "ship-literal   models/ship.fp3m       --integrator rk4se --literal"
+  "ship-literal   models/ship.fp3m       --integrator rk4se --literal --clock-cores"
   "spring         models/spring.fp3m     --integrator rk4"
   "oscillator     models/oscillator.fp3m --integrator rk4 --no-scaleb"
   "projectile     models/projectile.fp3m --integrator rk4 --no-fit-check"
@@ -147,6 +149,7 @@ bad() {
 }
 bad "unknown integrator" models/ship.fp3m --integrator rk5
 bad "bad rounding" models/ship.fp3m --round up
+bad "fp_mul's feed register at latency 3" models/ship.fp3m --mul-feed --mul-latency 3
 bad "--steps without --vectors" models/ship.fp3m --steps 3
 bad "missing model" models/no-such-model.fp3m
 bad "rk4se on an unsplit model" models/projectile.fp3m --integrator rk4se

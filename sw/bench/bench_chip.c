@@ -164,12 +164,6 @@ static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled *
   return 0;
 }
 
-/* The spatial chip's cores: those make pnr-spatial places
- * (mk/spatial.mk's SPATIAL_OPTS default; the ship has no div or sqrt). */
-#define SPATIAL_ADD_LATENCY 9
-#define SPATIAL_MUL_LATENCY 9
-#define SPATIAL_SCALEB_LATENCY 4
-
 /* A spatial row: the ship's rk4se, literal or folded, on the spatial
  * engine of the chip make pnr-spatial builds (as many pipelines as fit),
  * all of its slots.  *r as measure's, with contexts = the slots, lanes =
@@ -191,9 +185,7 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
   /* the pipelines that fit, from the generator's area estimate */
   fp3_spatial_opts so;
   fp3_spatial_defaults(&so);
-  so.add_latency = SPATIAL_ADD_LATENCY;
-  so.mul_latency = SPATIAL_MUL_LATENCY;
-  so.scaleb_latency = SPATIAL_SCALEB_LATENCY;
+  fp3_spatial_clock_cores(&so); /* what make pnr-spatial places */
   if (fp3_spatial_build(c, m, "rk4se", &so, &sp, msg, sizeof msg)) goto out;
   const unsigned fit = fp3_spatial_stats_of(sp)->fit;
   *lat = fp3_spatial_stats_of(sp)->latency;

@@ -51,8 +51,14 @@ static void usage(FILE *f) {
           "  --ftz            flush-to-zero cores\n"
           "  --add-latency N, --mul-latency N, --div-latency N   core latencies\n"
           "                   (default %u, %u, %u; div also for sqrt)\n"
+          "  --mul-feed       fp_mul's feed register in front of its MULT18X18D\n"
+          "                   (needs --mul-latency 7 to 10)\n"
           "  --scaleb-latency N   the latency of fp_scaleb, a multiply by a constant\n"
           "                   +-2^k as an exponent adjustment (default %u)\n"
+          "  --clock-cores    the chip builds' cores, for clock rate: add 9, mul 10\n"
+          "                   with its feed register, div/sqrt 34, scaleb 4 (what\n"
+          "                   make pnr-spatial places); a latency option after it\n"
+          "                   overrides its value\n"
           "  --no-scaleb      every multiply on fp_mul (for comparison)\n"
           "  --no-fit-check   write the module even if its area estimate does not\n"
           "                   fit the LFE5U-85F once (for simulation); without it\n"
@@ -114,6 +120,10 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
                                   "cycles", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->opts.scaleb_latency = (unsigned)k;
+    } else if (strcmp(argv[i], "--clock-cores") == 0) {
+      fp3_spatial_clock_cores(&a->opts);
+    } else if (strcmp(argv[i], "--mul-feed") == 0) {
+      a->opts.mul_feed = 1;
     } else if (strcmp(argv[i], "--no-scaleb") == 0) {
       a->opts.scaleb = 0;
     } else if (strcmp(argv[i], "--no-fit-check") == 0) {

@@ -57,12 +57,22 @@ void fp3_spatial_defaults(fp3_spatial_opts *o) {
   fp3_compile_defaults(&c);
   o->add_latency = c.add_latency;
   o->mul_latency = c.mul_latency;
+  o->mul_feed = 0;
   o->div_latency = c.div_latency;
   o->sign_latency = 1;
   o->scaleb_latency = 2;
   o->scaleb = 1;
   o->rtz = 0;
   o->ftz = 0;
+}
+
+void fp3_spatial_clock_cores(fp3_spatial_opts *o) {
+  o->add_latency = 9;
+  o->mul_latency = 10;
+  o->mul_feed = 1;
+  o->div_latency = 34;
+  o->sign_latency = 1;
+  o->scaleb_latency = 4;
 }
 
 static unsigned core_latency(const fp3_spatial_opts *o, int kind) {
@@ -196,18 +206,21 @@ static void count_segment(fp3_spatial_stats *st, unsigned d) {
 
 /* ---- the area estimate ---- */
 
-/* Pseudo-kinds of the area table beside the IR's: fp_scaleb; fp_sign
- * (abs, neg, min, max) is FP3_IR_ABS. */
+/* Pseudo-kinds of the area table beside the IR's: fp_scaleb, fp_mul with
+ * its feed register (FEED = 1); fp_sign (abs, neg, min, max) is
+ * FP3_IR_ABS. */
 #define AREA_SCALEB FP3_IR_KINDS
+#define AREA_MUL_FEED (FP3_IR_KINDS + 1)
 
 /* One core configuration synthesized alone: Yosys 0.23 synth_ecp5 through
  * scripts/synth.sh ecp5 (FP3_ECP5_DSP: fp_mul's product in MULT18X18D
- * with their own registers at LATENCY 6 to 9), measured by
+ * with their own registers at LATENCY 6 to 9, and at 10 with FEED = 1),
+ * measured by
  *   scripts/spatial-core-area.sh
  * which prints these rows.  LUT4s count a CCU2C as two. */
 typedef struct core_area {
   int kind;          /* FP3_IR_ADD (also sub), _MUL, _DIV, _SQRT, _ABS
-                        (fp_sign), AREA_SCALEB                          */
+                        (fp_sign), AREA_SCALEB, AREA_MUL_FEED           */
   unsigned latency;
   int round, ftz;
   unsigned lut4, ff, mult;
@@ -215,6 +228,7 @@ typedef struct core_area {
 
 #define SIGN FP3_IR_ABS
 #define SCALEB AREA_SCALEB
+#define MUL_FEED AREA_MUL_FEED
 static const core_area core_areas[] = {
     {FP3_IR_ADD, 4, 0, 0, 1099, 291, 0}, /* fp_add */
     {FP3_IR_ADD, 4, 0, 1, 1247, 291, 0}, /* fp_add */
@@ -234,6 +248,9 @@ static const core_area core_areas[] = {
     {FP3_IR_MUL, 10, 0, 0, 2215, 1210, 0}, /* fp_mul */
     {FP3_IR_MUL, 10, 0, 1, 1726, 1196, 0}, /* fp_mul */
     {FP3_IR_MUL, 10, 1, 0, 2147, 1210, 0}, /* fp_mul */
+    {MUL_FEED, 10, 0, 0, 1037, 693, 4}, /* fp_mul, FEED 1 */
+    {MUL_FEED, 10, 0, 1, 577, 679, 4}, /* fp_mul, FEED 1 */
+    {MUL_FEED, 10, 1, 0, 972, 693, 4}, /* fp_mul, FEED 1 */
     {FP3_IR_DIV, 8, 0, 0, 2596, 793, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 0, 1, 2245, 785, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 1, 0, 2588, 793, 0}, /* fp_div */
@@ -246,10 +263,14 @@ static const core_area core_areas[] = {
     {SCALEB, 2, 0, 0, 179, 108, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SCALEB, 2, 0, 1, 178, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SCALEB, 2, 1, 0, 203, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 0, 204, 258, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 1, 216, 258, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 1, 0, 240, 258, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SIGN, 1, 0, 0, 236, 34, 0}, /* fp_sign */
 };
 #undef SIGN
 #undef SCALEB
+#undef MUL_FEED
 
 /* The table's row for a core: its kind, FTZ and rounding if measured (else
  * the other rounding), at the nearest measured latency; *exact = 0 when
@@ -287,6 +308,8 @@ static void estimate(struct fp3_spatial *s) {
     if (x->scale >= 0) {
       kind = AREA_SCALEB;
       lat = s->o.scaleb_latency;
+    } else if (kind == FP3_IR_MUL && s->o.mul_feed) {
+      kind = AREA_MUL_FEED;
     }
     const core_area *r = area_of(kind, lat, s->o.rtz, s->o.ftz, &exact);
     st->est_lut4 += r->lut4;
@@ -578,10 +601,11 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
       break;
     case FP3_IR_MUL:
     case FP3_IR_DIV:
-      fp3_strbuf_printf(t, "  %s #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+      fp3_strbuf_printf(t, "  %s #(.LATENCY(%u),%s .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
                            "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1),\n"
                            "    .a_i(%s), .b_i(%s),\n",
-                        k == FP3_IR_MUL ? "fp_mul" : "fp_div", lat, x->sig, a, b);
+                        k == FP3_IR_MUL ? "fp_mul" : "fp_div", lat,
+                        k == FP3_IR_MUL && s->o.mul_feed ? " .FEED(1)," : "", x->sig, a, b);
       break;
     case FP3_IR_SQRT:
       fp3_strbuf_printf(t, "  fp_sqrt #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
@@ -701,8 +725,9 @@ static void make_report(struct fp3_spatial *s, fp3_strbuf *t) {
                        "flip-flops, every MULT18X18D, the EBRs less 16: the rest for the frame "
                        "and routing)\n",
                     st->fit, st->limit);
-  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u, div/sqrt %u, sign %u, scaleb %u%s; %s%s\n",
-                    s->o.add_latency, s->o.mul_latency, s->o.div_latency, s->o.sign_latency,
+  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u%s, div/sqrt %u, sign %u, scaleb %u%s; %s%s\n",
+                    s->o.add_latency, s->o.mul_latency, s->o.mul_feed ? " (feed)" : "",
+                    s->o.div_latency, s->o.sign_latency,
                     s->o.scaleb_latency, s->o.scaleb ? "" : " (off: fp_mul)",
                     s->o.rtz ? "rtz" : "rne", s->o.ftz ? ", ftz" : "");
 }
@@ -714,6 +739,11 @@ int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
       o->add_latency > 64 || o->mul_latency > 64 || o->div_latency > 64 || o->sign_latency > 3 ||
       o->scaleb_latency < 1 || o->scaleb_latency > 64) {
     snprintf(msg, n, "core latencies must be 1 to 64 (fp_sign: 1 to 3)");
+    return -1;
+  }
+  if (o->mul_feed && (o->mul_latency < 7 || o->mul_latency > 10)) {
+    snprintf(msg, n, "fp_mul's feed register needs a multiply latency of 7 to 10 (the DSP "
+             "product with the blocks' own registers), not %u", o->mul_latency);
     return -1;
   }
   struct fp3_spatial *s = calloc(1, sizeof *s);

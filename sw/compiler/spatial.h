@@ -71,6 +71,10 @@
 typedef struct fp3_spatial_opts {
   unsigned add_latency;  /* fp_add LATENCY (add, sub)                    */
   unsigned mul_latency;  /* fp_mul LATENCY                               */
+  int mul_feed;          /* 1: fp_mul FEED = 1, a fabric register in
+                            front of its MULT18X18D (mul_latency 7 to
+                            10: the DSP product with the blocks' own
+                            registers, then this one); 0: none          */
   unsigned div_latency;  /* fp_div and fp_sqrt LATENCY                   */
   unsigned sign_latency; /* fp_sign LATENCY (abs, neg, min, max)         */
   unsigned scaleb_latency; /* fp_scaleb LATENCY                          */
@@ -83,8 +87,18 @@ typedef struct fp3_spatial_opts {
 } fp3_spatial_opts;
 
 /* The latencies of the processor's default build (fp3_compile_defaults),
- * fp_sign 1, fp_scaleb 2 (on), RNE, subnormals supported. */
+ * fp_sign 1, fp_scaleb 2 (on), no feed register, RNE, subnormals
+ * supported. */
 void fp3_spatial_defaults(fp3_spatial_opts *o);
+
+/* The cores of the chip builds, for clock rate (`fp3 spatial --clock-cores`,
+ * `make pnr-spatial`, `make bench-chip`, `make spatial-table`): fp_add 9
+ * and fp_div / fp_sqrt 34 (every register place), fp_mul 10 with its feed
+ * register (the product in MULT18X18D with the blocks' registers, and a
+ * fabric register in front: on a full chip the route into a MULT18X18D is
+ * the longest otherwise, docs/spatial.md), fp_scaleb 4 (every place),
+ * fp_sign 1; o's rounding, FTZ and scaleB choice are kept. */
+void fp3_spatial_clock_cores(fp3_spatial_opts *o);
 
 /* What a generated pipeline holds. */
 typedef struct fp3_spatial_stats {
