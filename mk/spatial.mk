@@ -1,12 +1,12 @@
 # spatial.mk -- the spatial back end's test (fp3 spatial, docs/spatial.md).
 #
-# tests/test_spatial.sh generates the pipelines of the ship (folded and
-# literal RK4), the spring, the oscillator and the projectile, Verilates
-# each with sim/spatial_tb.cpp and checks every object after every step
-# bit for bit against the golden model, and the ship's module with a delay
-# stage removed in each form of delay segment must fail (1 to 2 minutes,
-# most of it nine Verilator builds); it needs build/fp3 and the Verilated
-# runtime.
+# tests/test_spatial.sh generates the pipeline of every shipped model
+# with every integrator that applies to it, and three variants of the
+# cores, Verilates each with sim/spatial_tb.cpp and checks every object
+# after every step bit for bit against the golden model, and the ship's
+# module with a delay stage removed in each form of delay segment must
+# fail (72 Verilator builds, two at a time: about 7 CPU minutes, 4 on two
+# idle cores); it needs build/fp3 and the Verilated runtime.
 #
 # tests/test_scaleb.sh checks rtl/fp_scaleb.v (a multiply by a power of
 # two) against fpref_mul on directed and 3,000,000 random operand pairs

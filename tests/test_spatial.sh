@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # test_spatial.sh -- `fp3 spatial` (sw/compiler/spatial.h, docs/spatial.md):
-# the generated pipeline of each case below, Verilated with the harness
+# the generated pipeline of every shipped model with every integrator that
+# applies to it, and of variants of the cores (below), Verilated with the harness
 # sim/spatial_tb.cpp, streams objects through it step after step, each
 # object's new state fed back as its next input, and every object's
 # carried values after every step must equal the golden model's
@@ -9,13 +10,14 @@
 # and on more objects than the latency (one object every cycle).  The
 # generated module must be `verilator --lint-only -Wall` clean, generate
 # the same text twice, and bad input (also a pipeline that does not fit
-# the LFE5U-85F) must exit 2 leaving no file.  The cases use fp_scaleb for
-# multiplies by powers of two, except the oscillator's (--no-scaleb); the
-# literal ship uses the chip builds' cores (--clock-cores: fp_mul with its
-# feed register).
+# the LFE5U-85F) must exit 2 leaving no file.  The ship's module with one
+# delay stage removed must fail.
 #
-#   tests/test_spatial.sh [--all]   (--all: every shipped model with every
-#                                    integrator that applies to it)
+#   tests/test_spatial.sh [--quick]   (--quick: four models and the variants)
+#
+# The cases run FP3_TEST_JOBS at a time (default 2); each Verilator build is
+# compiled by clang at -O0, so the 69 pipelines take about 7 CPU-minutes
+# (about 4 minutes on two idle cores).
 #
 # Runs from anywhere; the CLI is $FP3_BIN, else build/fp3 of this checkout.
 # The Verilated runtime comes from build/verilated (make builds it).
@@ -41,37 +43,46 @@ build_tb() {
     >"$3.log" 2>&1 || { tail -20 "$3.log"; return 1; }
 }
 
-# case name, model, fp3 spatial options
-cases=(
-  "ship-folded    models/ship.fp3m       --integrator rk4se"
-  "ship-literal   models/ship.fp3m       --integrator rk4se --literal --clock-cores"
-  "spring         models/spring.fp3m     --integrator rk4"
-  "oscillator     models/oscillator.fp3m --integrator rk4 --no-scaleb"
-  "projectile     models/projectile.fp3m --integrator rk4 --no-fit-check"
-  "spring-rtz-ftz models/spring.fp3m     --integrator rk4 --round rtz --ftz"
-)
-# --all: every shipped model with every integrator that applies to it
-# (folded; about 10 minutes), instead of the cases above
-all=0
-if [ "${1:-}" = --all ]; then
-  all=1
-  cases=()
+# The cases: every shipped model with every integrator that applies to it
+# (folded, --no-fit-check: most do not fit the chip at the default
+# latencies), then variants of the cores: the literal ship on the chip
+# builds' cores (--clock-cores: fp_mul with its feed register), the
+# oscillator with every multiply on fp_mul (--no-scaleb), the spring with
+# RTZ and FTZ cores.  --quick: the ship, the spring, the oscillator and the
+# projectile and the variants only (a quick check while developing).
+# name, model, fp3 spatial options
+cases=()
+integrators="euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp"
+if [ "${1:-}" = --quick ]; then
+  cases=("ship-rk4se     models/ship.fp3m       --integrator rk4se"
+         "spring-rk4     models/spring.fp3m     --integrator rk4"
+         "projectile-rk4 models/projectile.fp3m --integrator rk4 --no-fit-check")
+else
   for m in models/*.fp3m; do
-    for i in euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp; do
+    for i in $integrators; do
       cases+=("$(basename "$m" .fp3m)-$i $m --integrator $i --no-fit-check")
     done
   done
 fi
-for c in "${cases[@]}"; do
-  read -r name model opts <<<"$c"
-  d="$tmp/$name"; mkdir -p "$d"
+cases+=("ship-literal   models/ship.fp3m       --integrator rk4se --literal --clock-cores"
+        "oscillator-rk4-no-scaleb models/oscillator.fp3m --integrator rk4 --no-scaleb"
+        "spring-rk4-rtz-ftz models/spring.fp3m --integrator rk4 --round rtz --ftz")
+
+# one_case NAME MODEL OPTS: generate, lint, build and run one case (and for
+# ship-rk4se the shortened modules); its lines on stdout; 1 if it failed,
+# 3 if fp3 spatial refused it because the integrator does not apply to the
+# model.
+one_case() {
+  local name=$1 model=$2 opts=$3 fail=0
+  local d="$tmp/$name"; mkdir -p "$d"
   # shellcheck disable=SC2086
   if ! "$FP3" spatial "$model" $opts -o "$d/gen" 2>"$d.log"; then
-    if [ "$all" = 1 ] && grep -q "integrator .* needs" "$d.log"; then
-      echo "SKIP: $name: $(head -1 "$d.log" | sed 's/^fp3 spatial: [^:]*: //')"; continue
+    if grep -q "integrator .* needs" "$d.log"; then
+      echo "PASS: $name refused: $(head -1 "$d.log" | sed 's/^fp3 spatial: [^:]*: //')"; return 3
     fi
-    cat "$d.log"; echo "FAIL: $name: fp3 spatial"; fail=1; continue
+    cat "$d.log"; echo "FAIL: $name: fp3 spatial"; return 1
   fi
+  local lat v mod many
   lat=$(sed -n 's/^latency: \([0-9]*\) cycles.*/\1/p' "$d/gen/report.txt")
   v=$(ls "$d/gen"/*.v); mod=$(basename "$v" .v)
   # vectors: 1 object, and more objects than the latency
@@ -83,11 +94,12 @@ for c in "${cases[@]}"; do
   cmp -s "$v" "$d/one/$mod.v" && cmp -s "$v" "$d/many/$mod.v" || {
     echo "FAIL: $name: two runs generate different Verilog"; fail=1; }
   if ! $VERILATOR --lint-only -Wall -Irtl -y rtl --top-module "$mod" "$v" >"$d.lint" 2>&1; then
-    head -20 "$d.lint"; echo "FAIL: $name: verilator --lint-only -Wall"; fail=1; continue
+    head -20 "$d.lint"; echo "FAIL: $name: verilator --lint-only -Wall"; return 1
   fi
   if ! build_tb "$mod" "$v" "$d/obj" "$d/tb"; then
-    echo "FAIL: $name: Verilator build"; fail=1; continue
+    echo "FAIL: $name: Verilator build"; return 1
   fi
+  local set out
   for set in one many; do
     if out=$("$d/tb" "$d/$set/vectors.txt" 2>&1); then
       echo "PASS: $name $set ($(sed -n 's/^cores: \([0-9]*\),.*/\1 cores/p' "$d/gen/report.txt" | head -1), latency $lat): ${out#PASS: }"
@@ -95,12 +107,12 @@ for c in "${cases[@]}"; do
       echo "$out"; echo "FAIL: $name: $set"; fail=1
     fi
   done
-  if [ "$all" = 1 ]; then rm -rf "$d/obj"; fi
+  rm -rf "$d/obj"
   # the harness bites: the ship's module with one delay stage removed must
   # fail, whichever form the shortened segment has: the first flip-flop
   # segment deeper than 1 (fp_pipe), the first LUT-RAM segment and the
   # first block-RAM segment (fp_delay STYLE 1 and 2) made one stage shorter
-  if [ "$name" = ship-folded ]; then
+  if [ "$name" = ship-rk4se ]; then
     for form in ff lutram ebr; do
       python3 - "$v" "$d/short-$form.v" "$form" <<'PY'
 import re, sys
@@ -129,7 +141,31 @@ PY
       fi
     done
   fi
+  return $fail
+}
+
+# Run the cases JOBS at a time (default 2, this machine's cores), each into
+# its own output file, then print them in order.
+JOBS=${FP3_TEST_JOBS:-2}
+k=0
+for c in "${cases[@]}"; do
+  read -r name model opts <<<"$c"
+  while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
+  { rc=0; one_case "$name" "$model" "$opts" || rc=$?; echo $rc >"$tmp/rc.$k"; } \
+    >"$tmp/out.$k" 2>&1 &
+  k=$((k + 1))
 done
+wait
+passed=0 skipped=0
+for ((j = 0; j < k; j++)); do
+  cat "$tmp/out.$j"
+  case $(cat "$tmp/rc.$j" 2>/dev/null || echo 1) in
+    0) passed=$((passed + 1));;
+    3) skipped=$((skipped + 1));;
+    *) fail=1;;
+  esac
+done
+echo "cases: $passed passed, $skipped refused (the integrator does not apply), $((k - passed - skipped)) failed"
 
 # the usage
 if "$FP3" spatial --help | grep -q "^usage: fp3 spatial MODEL.fp3m -o DIR"; then
