@@ -36,8 +36,8 @@ TEST_SCRIPTS += tests/test_spatial_engine.sh
 # on the LFE5U-85F, N pipelines (default: as many as the area estimate
 # fits), through scripts/pnr-spatial.sh (synth_ecp5, nextpnr).  The cores
 # at SPATIAL_OPTS (default --clock-cores: the cores for clock rate, `fp3
-# spatial --help`).  Results in $(BUILD)/pnr-spatial/.  About an hour a
-# seed for three ship pipelines on this machine.
+# spatial --help`).  Results in $(BUILD)/pnr-spatial/.  About 25 minutes
+# a seed for three ship pipelines on this machine, two at a time.
 MODEL        ?=
 PIPELINES    ?=
 FTZ          ?=
