@@ -13,36 +13,30 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-build/spatial-core-area}
 mkdir -p "$out"
-# core  kind-name  latencies
+# core  kind-name  parameter beside LATENCY, ROUND, FTZ (- none)  latencies
+# (MUL_FEED: fp_mul with its feed register in front of the MULT18X18D)
 rows=(
-  "fp_add FP3_IR_ADD 4 9 10"
-  "fp_mul FP3_IR_MUL 3 9 10"
-  "fp_div FP3_IR_DIV 8"
-  "fp_sqrt FP3_IR_SQRT 8"
+  "fp_add FP3_IR_ADD - 4 9 10"
+  "fp_mul FP3_IR_MUL - 3 9 10"
+  "fp_mul MUL_FEED FEED=1 10"
+  "fp_div FP3_IR_DIV - 8"
+  "fp_sqrt FP3_IR_SQRT - 8"
 )
 for r in "${rows[@]}"; do
-  read -r core kind lats <<<"$r"
+  read -r core kind extra lats <<<"$r"
+  [ "$extra" = - ] && extra=
   for lat in $lats; do
     for cfg in "0 0" "0 1" "1 0"; do
       read -r round ftz <<<"$cfg"
-      bash scripts/synth.sh "$out" "$core" ecp5 LATENCY=$lat ROUND=$round FTZ=$ftz rtl/*.v \
-        >/dev/null
+      params=(LATENCY=$lat $extra ROUND=$round FTZ=$ftz)
+      tag=""; for p in "${params[@]}"; do tag+="_${p%%=*}-${p#*=}"; done
+      bash scripts/synth.sh "$out" "$core" ecp5 "${params[@]}" rtl/*.v >/dev/null
       read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
-        "$out/${core}_LATENCY-${lat}_ROUND-${round}_FTZ-${ftz}_ecp5_stat.txt")
+        "$out/${core}${tag}_ecp5_stat.txt")
       printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' "$kind" "$lat" "$round" "$ftz" \
-        "$luts" "$ffs" "$mult" "$core"
+        "$luts" "$ffs" "$mult" "$core${extra:+, ${extra/=/ }}"
     done
   done
-done
-# fp_mul with its feed register in front of the MULT18X18D (FEED = 1)
-for cfg in "0 0" "0 1" "1 0"; do
-  read -r round ftz <<<"$cfg"
-  bash scripts/synth.sh "$out" fp_mul ecp5 LATENCY=10 FEED=1 ROUND=$round FTZ=$ftz rtl/*.v \
-    >/dev/null
-  read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
-    "$out/fp_mul_LATENCY-10_FEED-1_ROUND-${round}_FTZ-${ftz}_ecp5_stat.txt")
-  printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' MUL_FEED 10 "$round" "$ftz" \
-    "$luts" "$ffs" "$mult" "fp_mul, FEED 1"
 done
 # fp_scaleb with a constant b: a wrapper per constant
 for lat in 1 2 4; do

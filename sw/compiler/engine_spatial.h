@@ -88,7 +88,7 @@ typedef struct fp3_spatial_env {
   const char *label;     /* prefix of the messages on stderr ("spatial")          */
   /* The chip's shape: its pipelines N (0: one; at most
    * FP3S_MAX_PIPELINES) and its cores (NULL: fp3_spatial_defaults; `make
-   * pnr-spatial` places add 9, mul 9, scaleB 4), whose rounding and FTZ
+   * pnr-spatial` places fp3_spatial_clock_cores'), whose rounding and FTZ
    * the engine's `mode` sets either way.  Slot o is in bank o mod N, and
    * the engine has FP3_SPATIAL_SLOTS slots rounded up to a multiple of N
    * (fp3_config.num_contexts). */
