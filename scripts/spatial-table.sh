@@ -26,7 +26,9 @@ cd "$(dirname "$0")/.."
 fp3=${1:-build/fp3}
 [ -x "$fp3" ] || { echo "spatial-table.sh: $fp3 not built (make build/fp3)" >&2; exit 2; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-integrators="euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp"
+# the integrators, as fp3 lists them (fp3_model_integrators)
+integrators=$("$fp3" spatial --help | sed -n 's/^The integrators: \(.*\)\.$/\1/p')
+[ -n "$integrators" ] || { echo "spatial-table.sh: fp3 spatial --help names no integrators" >&2; exit 1; }
 printf '| model | integrator | cores | latency L | LUT4 / pipeline | MULT18X18D / pipeline | pipelines per chip | limited by |'
 [ -n "$fmax" ] && printf ' ns per object-step at %s MHz |' "$fmax"
 printf '\n| --- | --- | ---: | ---: | ---: | ---: | ---: | --- |'

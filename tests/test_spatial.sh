@@ -52,7 +52,9 @@ build_tb() {
 # projectile and the variants only (a quick check while developing).
 # name, model, fp3 spatial options
 cases=()
-integrators="euler rk2 rk4 rk4comp symeuler verlet rk4se rk4secomp rk4vs rk4vscomp verletp"
+# the integrators, as fp3 lists them (fp3_model_integrators)
+integrators=$("$FP3" spatial --help | sed -n 's/^The integrators: \(.*\)\.$/\1/p')
+[ -n "$integrators" ] || { echo "test_spatial.sh: fp3 spatial --help names no integrators" >&2; exit 1; }
 if [ "${1:-}" = --quick ]; then
   cases=("ship-rk4se     models/ship.fp3m       --integrator rk4se"
          "spring-rk4     models/spring.fp3m     --integrator rk4"
