@@ -12,30 +12,37 @@
 #   4. nextpnr: scripts/pnr.sh with PNR_SEED (default 1), or with
 #      PNR_SEEDS="1 2 ..." scripts/pnr-seeds.sh (a sweep, in parts if need
 #      be), into OUTDIR.
-# FTZ = 1 adds --ftz.  Environment: FP3_BIN (default build/fp3), as
-# scripts/pnr.sh and pnr-seeds.sh (PNR_SEED, PNR_SEEDS, PNR_JOBS, ...).
+# INTEGRATOR empty: fp3 spatial's default.  MODEL may be empty when the
+# options name a scene (--scene FILE: the scene's model, its zero params'
+# terms removed).  FTZ = 1 adds --ftz.  Environment: FP3_BIN (default
+# build/fp3), as scripts/pnr.sh and pnr-seeds.sh (PNR_SEED, PNR_SEEDS,
+# PNR_JOBS, ...).
 set -euo pipefail
 [ $# -ge 5 ] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 out=$1; model=$2; integ=$3; pipes=$4; ftz=$5; shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 fp3=${FP3_BIN:-$here/../build/fp3}
-opts=(--integrator "$integ" "$@")
+opts=(${integ:+--integrator "$integ"} "$@")
 [ "$ftz" = 1 ] && opts+=(--ftz)
-[ -f "$model" ] || { echo "pnr-spatial: no model file '$model' (MODEL=models/ship.fp3m)" >&2; exit 2; }
+src=()
+if [ -n "$model" ]; then
+  [ -f "$model" ] || { echo "pnr-spatial: no model file '$model' (MODEL=models/ship.fp3m)" >&2; exit 2; }
+  src=("$model")
+fi
 mkdir -p "$out"
 # 1. the estimate
 rm -rf "$out/est"
-"$fp3" spatial "$model" "${opts[@]}" -o "$out/est" 2>/dev/null || {
-  "$fp3" spatial "$model" "${opts[@]}" -o "$out/est" >/dev/null || true; exit 2; }
+"$fp3" spatial "${src[@]}" "${opts[@]}" -o "$out/est" 2>/dev/null || {
+  "$fp3" spatial "${src[@]}" "${opts[@]}" -o "$out/est" >/dev/null || true; exit 2; }
 fit=$(sed -n 's/^pipelines that fit: \([0-9]*\) .*/\1/p' "$out/est/report.txt")
 est=$(sed -n 's/^estimate per pipeline: //p' "$out/est/report.txt")
 if [ -z "$pipes" ]; then pipes=$fit; fi
 [[ "$pipes" =~ ^[1-9][0-9]*$ ]] || { echo "pnr-spatial: bad PIPELINES '$pipes' (1 or more)" >&2; exit 2; }
-echo "pnr-spatial: $(basename "$model") $integ ${*:-}$([ "$ftz" = 1 ] && echo ' --ftz'):" \
+echo "pnr-spatial: ${model:+$(basename "$model") }$integ ${*:-}$([ "$ftz" = 1 ] && echo ' --ftz'):" \
      "estimate per pipeline $est; $fit fit; placing $pipes"
 # 2. the chip top
 rm -rf "$out/gen"
-"$fp3" spatial "$model" "${opts[@]}" --pipelines "$pipes" -o "$out/gen" 2>"$out/gen.log" || {
+"$fp3" spatial "${src[@]}" "${opts[@]}" --pipelines "$pipes" -o "$out/gen" 2>"$out/gen.log" || {
   cat "$out/gen.log" >&2; exit 2; }
 step=$(sed -n 's/^module: //p' "$out/gen/report.txt")
 top=${step}_top

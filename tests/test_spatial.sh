@@ -10,8 +10,11 @@
 # and on more objects than the latency (one object every cycle).  The
 # generated module must be `verilator --lint-only -Wall` clean, generate
 # the same text twice, and bad input (also a pipeline that does not fit
-# the LFE5U-85F) must exit 2 leaving no file.  The ship's module with one
-# delay stage removed must fail.
+# the LFE5U-85F, and with --scene a model scene beside a model, vectors,
+# rk4 on a ship scene, a bad row) must exit 2 leaving no file.  --scene
+# removes the terms of params zero in every object (coast.scene: T), none
+# with --literal.  The ship's module with one delay stage removed must
+# fail.
 #
 #   tests/test_spatial.sh [--quick]   (--quick: four models and the variants)
 #
@@ -170,10 +173,26 @@ done
 echo "cases: $passed passed, $skipped refused (the integrator does not apply), $((k - passed - skipped)) failed"
 
 # the usage
-if "$FP3" spatial --help | grep -q "^usage: fp3 spatial MODEL.fp3m -o DIR"; then
+if "$FP3" spatial --help | grep -q "^usage: fp3 spatial MODEL.fp3m | --scene FILE -o DIR"; then
   echo "PASS: fp3 spatial --help"
 else
   echo "FAIL: fp3 spatial --help"; fail=1
+fi
+
+# a scene: the params zero in every object drop their terms (coast.scene:
+# T; the folded ship has 21 cores), none with --literal (30 cores)
+scene_cores() { # ARGS... -> "CORES|REMOVED"
+  "$FP3" spatial "$@" --integrator rk4se -o "$tmp/scene" 2>/dev/null || { echo fail; return; }
+  echo "$(sed -n 's/^cores: \([0-9]*\),.*/\1/p' "$tmp/scene/report.txt")|$(sed -n \
+    's/^scene: .*zero in every object: //p' "$tmp/scene/report.txt")"
+  rm -rf "$tmp/scene"
+}
+got="$(scene_cores models/ship.fp3m) $(scene_cores --scene scenes/coast.scene)"
+got="$got $(scene_cores --scene scenes/coast.scene --literal)"
+if [ "$got" = "21| 17|T 30|none (--literal)" ]; then
+  echo "PASS: fp3 spatial --scene: coast.scene's T terms removed (21 -> 17 cores), none with --literal"
+else
+  echo "FAIL: fp3 spatial --scene: cores|removed '$got'"; fail=1
 fi
 
 # bad input: exit 2, nothing written
@@ -193,6 +212,13 @@ bad "fp_mul's feed register at latency 3" models/ship.fp3m --mul-feed --mul-late
 bad "--steps without --vectors" models/ship.fp3m --steps 3
 bad "missing model" models/no-such-model.fp3m
 bad "rk4se on an unsplit model" models/projectile.fp3m --integrator rk4se
+bad "a model scene and a model" models/ship.fp3m --scene scenes/springs.scene
+bad "--vectors for a scene" --scene scenes/drift.scene --vectors 4
+bad "rk4 on a ship scene (its RK4 is rk4se)" --scene scenes/drift.scene --integrator rk4
+{ cat scenes/drift.scene; echo "1000 0 10000 x 2"; } >"$tmp/bad-row.scene"
+bad "a scene with a bad row" --scene "$tmp/bad-row.scene"
+grep -q "bad-row.scene:13:" "$tmp/bad.log" ||
+  { echo "FAIL: the bad row's error names the file and line 13: $(cat "$tmp/bad.log")"; fail=1; }
 # projectile's RK4 (119 cores) needs about 155,000 LUT4s at the default
 # latencies: more than the LFE5U-85F has
 bad "a pipeline that does not fit the LFE5U-85F" models/projectile.fp3m --integrator rk4

@@ -5,7 +5,9 @@
 # state compared bit for bit with the golden model after every step.
 #   - the ship (rk4se) on a chip of 3 pipelines (--pipelines 3): 1
 #     object, 240 objects (80 a pipeline: more than the latency), the ship
-#     scene scenes/harbour.scene; each
+#     scene scenes/harbour.scene, and scenes/drift.scene (C zero in every
+#     object: the pipeline without its terms, the module `fp3 spatial
+#     --scene` writes for it); each
 #     bit-exact, each with the same final states as --engine rtl, and the
 #     JSON valid against docs/fp3.schema.json; fp3 frames of the harbour
 #     bit-exact frame by frame;
@@ -106,6 +108,20 @@ sys.exit(0 if L == Lref and L + 3 <= 80 and j["cycles"] == want and j["contexts"
          else 1)
 PY
 against_rtl harbour --scene scenes/harbour.scene --steps 30
+# a scene whose objects all have C = 0: the pipeline without the drag
+# terms (7 cores), the one `fp3 spatial --scene` writes for it
+against_rtl drift --scene scenes/drift.scene --steps 30
+"$FP3" spatial --scene scenes/drift.scene --integrator rk4se -o "$T/drift" 2>/dev/null
+same=
+for e in "$FP3_SPATIAL_CACHE"/fp3_spatial_ship_rk4se-*/; do
+  cmp -s "$e/fp3_spatial_ship_rk4se.v" "$T/drift/fp3_spatial_ship_rk4se.v" && same=$e
+done
+if [ -n "$same" ] && grep -q '^cores: 7,' "$T/drift/report.txt" &&
+   grep -q 'terms removed, zero in every object: C$' "$T/drift/report.txt"; then
+  ok "drift.scene: the engine ran the pipeline fp3 spatial --scene writes (7 cores, C's terms removed)"
+else
+  cat "$T/drift/report.txt"; bad "drift.scene: fp3 spatial --scene and the engine's pipeline"
+fi
 # fp3 frames: the harbour frame by frame (moored ships skipped at rest)
 if "$FP3" frames --scene scenes/harbour.scene --engine spatial $PIPES --frames 20 --json \
      >"$T/frames.json" 2>"$T/frames.err" &&

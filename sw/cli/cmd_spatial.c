@@ -12,8 +12,11 @@
 #include <unistd.h>
 
 #include "cliopt.h"
+#include "cmd_model.h"
 #include "model.h"
+#include "mscene.h"
 #include "report.h"
+#include "runsetup.h"
 #include "spatial_top.h"
 
 #define EXIT_FAIL 1
@@ -23,7 +26,7 @@ static void usage(FILE *f) {
   fp3_spatial_opts d;
   fp3_spatial_defaults(&d);
   fprintf(f,
-          "usage: fp3 spatial MODEL.fp3m -o DIR [--integrator I] [--literal]\n"
+          "usage: fp3 spatial MODEL.fp3m | --scene FILE -o DIR [--integrator I] [--literal]\n"
           "                   [--round rne|rtz] [--ftz]\n"
           "                   [--add-latency N] [--mul-latency N] [--div-latency N]\n"
           "                   [--scaleb-latency N] [--no-scaleb] [--no-fit-check]\n"
@@ -44,7 +47,12 @@ static void usage(FILE *f) {
           "\n"
           "  -o DIR           the folder to write (made if missing, in a folder that\n"
           "                   exists); on any error no file is left\n"
-          "  --integrator I   default rk4\n"
+          "  --scene FILE     a pipeline for this scene's objects: a param zero in\n"
+          "                   every object drops its terms (as fp3 compile SCENE does;\n"
+          "                   not with --literal).  The model is the scene's: a model\n"
+          "                   scene names it; a ship scene is read as a scene of\n"
+          "                   MODEL.fp3m if given, else of models/ship.fp3m\n"
+          "  --integrator I   default rk4 (rk4se, the paper's RK4, for a ship scene)\n"
           "  --literal        the integrator's literal operations (docs/models.md);\n"
           "                   default: the compiler's folded program\n"
           "  --round rne|rtz  the cores' rounding (default rne)\n"
@@ -87,7 +95,7 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
   a->vec_steps = 4;
   a->seed = 1;
   fp3_spatial_defaults(&a->opts);
-  int steps_given = 0;
+  int steps_given = 0, integ_given = 0;
   for (int i = 1; i < argc; i++) {
     const char *v;
     unsigned long long k;
@@ -100,6 +108,7 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
     } else if ((r = fp3_opt_value(argc, argv, &i, "spatial", "--integrator", &v)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->integ = v;
+      integ_given = 1;
     } else if ((r = fp3_opt_mode(argc, argv, &i, "spatial", &mode)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->opts.rtz = mode.round == FPREF_RTZ;
@@ -147,14 +156,23 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
                                   "objects", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->objects = (unsigned)k;
+    } else if ((r = fp3_opt_value(argc, argv, &i, "spatial", "--scene", &v)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->scene = v;
     } else if (strcmp(argv[i], "--literal") == 0) {
       a->literal = 1;
     } else if (fp3_opt_positional("spatial", "model", argv[i], &a->model)) {
       return FP3_ARGS_BAD;
     }
   }
-  if (!a->model) {
-    fprintf(stderr, "fp3 spatial: no model file (see fp3 spatial --help)\n");
+  if (!a->model && !a->scene) {
+    fprintf(stderr, "fp3 spatial: no model file or --scene FILE (see fp3 spatial --help)\n");
+    return FP3_ARGS_BAD;
+  }
+  if (a->scene && a->vec_objects) {
+    fprintf(stderr, "fp3 spatial: --vectors makes its objects from the model's defaults, not "
+                    "the scene's; run the scene on the chip with fp3 run --scene %s --engine "
+                    "spatial\n", a->scene);
     return FP3_ARGS_BAD;
   }
   if (!a->dir) {
@@ -170,6 +188,10 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
     return FP3_ARGS_BAD;
   }
   if (a->pipelines && !a->objects) a->objects = fp3_spatial_default_objects(a->pipelines);
+  /* a ship scene's RK4 is the model integrator rk4se (as fp3 compile's) */
+  if (a->scene && !a->model && fp3_ship_scene_integrator(a->scene, integ_given, &a->integ,
+                                                         "spatial"))
+    return FP3_ARGS_BAD;
   if (!fp3_model_integrator_known(a->integ)) {
     fprintf(stderr, "fp3 spatial: unknown integrator '%s' (%s)\n", a->integ,
             fp3_model_integrators());
@@ -215,6 +237,46 @@ static int write_all(const char *dir, const char *const *name, const char *const
   return 0;
 }
 
+/* The model: MODEL.fp3m, or the scene's (fp3_mscene_read_any; a ship scene
+ * as a scene of MODEL.fp3m or of the shipped ship), with zero[k] = 1 for
+ * each param zero in every object of the scene and *objects its objects
+ * (0 without a scene).  The model, or NULL with
+ * the message on stderr. */
+static fp3_model *load_model(const fp3_spatial_args *a, unsigned char *zero, size_t *objects) {
+  char msg[512];
+  fp3_model *m = NULL;
+  if (a->scene) {
+    if (a->model && fp3_scene_is_model(a->scene)) {
+      fprintf(stderr, "fp3 spatial: %s names its model: MODEL.fp3m or a model scene, not "
+                      "both\n", a->scene);
+      return NULL;
+    }
+    fp3_mscene sc;
+    const int bad = a->model ? fp3_mscene_read_any(a->scene, a->model, &sc, msg, sizeof msg)
+                             : fp3_read_scene(a->scene, &sc, msg, sizeof msg);
+    if (bad) {
+      fprintf(stderr, "fp3 spatial: %s\n", msg);
+      return NULL;
+    }
+    fp3_mscene_zero(&sc, zero);
+    *objects = sc.n;
+    m = sc.model;
+    sc.model = NULL;
+    fp3_mscene_free(&sc);
+    return m;
+  }
+  if (!(m = malloc(sizeof *m))) {
+    fprintf(stderr, "fp3 spatial: out of memory\n");
+    return NULL;
+  }
+  if (fp3_model_load(a->model, m, msg, sizeof msg)) {
+    fprintf(stderr, "fp3 spatial: %s\n", msg);
+    free(m);
+    return NULL;
+  }
+  return m;
+}
+
 static int run_spatial(const fp3_spatial_args *a) {
   char msg[512];
   int rc = EXIT_USAGE;
@@ -222,19 +284,17 @@ static int run_spatial(const fp3_spatial_args *a) {
   fp3_spatial *s = NULL;
   char *vectors = NULL, *vname = NULL, *top = NULL, *tname = NULL;
   fp3_strbuf rep = {0};
-  fp3_model *m = malloc(sizeof *m);
-  if (!m) return EXIT_FAIL;
-  if (fp3_model_load(a->model, m, msg, sizeof msg)) {
-    fprintf(stderr, "fp3 spatial: %s\n", msg);
-    goto out;
-  }
+  unsigned char zero[FP3_MODEL_MAX_VARS] = {0};
+  size_t scene_objects = 0;
+  fp3_model *m = load_model(a, zero, &scene_objects);
+  if (!m) return EXIT_USAGE;
   fp3_compile_opts co;
   fp3_compile_defaults(&co);
   if (a->literal) co.fold = co.drop_zero = 0;
-  else co.drop_zero = 0; /* no scene: no param is known to be zero */
+  else co.drop_zero = a->scene != NULL; /* without a scene no param is known to be zero */
   /* the IR alone: the processor's register and instruction limits do not
    * apply to a pipeline */
-  if (fp3_compile_model_ir(m, a->integ, &co, NULL, &c, msg, sizeof msg)) {
+  if (fp3_compile_model_ir(m, a->integ, &co, zero, &c, msg, sizeof msg)) {
     fprintf(stderr, "fp3 spatial: %s: %s\n", m->file, msg);
     goto out;
   }
@@ -265,7 +325,16 @@ static int run_spatial(const fp3_spatial_args *a) {
     goto out;
   }
   snprintf(vname, vl, "%s.v", fp3_spatial_module(s));
-  fp3_strbuf_printf(&rep, "%shash: %016llx (FNV-1a 64 of %s)\n", fp3_spatial_report(s),
+  fp3_strbuf_printf(&rep, "%s", fp3_spatial_report(s));
+  if (a->scene) {
+    fp3_strbuf_printf(&rep, "scene: %s, %zu objects; terms removed, zero in every object: ",
+                      a->scene, scene_objects);
+    int any = 0;
+    for (unsigned k = 1; k < m->nparam && co.drop_zero; k++)
+      if (zero[k]) fp3_strbuf_printf(&rep, "%s%s", any++ ? ", " : "", m->param[k]);
+    fp3_strbuf_printf(&rep, "%s\n", any ? "" : co.drop_zero ? "none" : "none (--literal)");
+  }
+  fp3_strbuf_printf(&rep, "hash: %016llx (FNV-1a 64 of %s)\n",
                     (unsigned long long)fp3_spatial_hash(s), vname);
   if (a->pipelines) {
     if (fp3_spatial_top(s, a->pipelines, a->objects, 0, topmod, sizeof topmod, &top, msg,

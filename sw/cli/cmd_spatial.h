@@ -11,9 +11,11 @@
 #include "compile.h"
 #include "spatial.h"
 
-/* `fp3 spatial MODEL.fp3m`'s options (fp3 spatial --help). */
+/* `fp3 spatial MODEL.fp3m | --scene FILE`'s options (fp3 spatial --help). */
 typedef struct fp3_spatial_args {
-  const char *model;       /* the model file                                */
+  const char *model;       /* the model file (NULL: the scene's)            */
+  const char *scene;       /* --scene FILE: drop the terms of params zero in
+                              every object (NULL: none)                     */
   const char *dir;         /* -o DIR: the folder written                    */
   const char *integ;       /* --integrator (default rk4)                    */
   int literal;             /* --literal: the integrator's literal operations */
