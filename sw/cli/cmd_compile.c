@@ -136,16 +136,10 @@ static int compile_model(const fp3_compile_args *a, unsigned char *zero, size_t 
   char msg[512];
   fp3_model *m = NULL;
   if (a->scene) {
-    fp3_mscene sc;
-    if (fp3_read_scene(a->scene, &sc, msg, sizeof msg)) {
+    if (!(m = fp3_scene_model(a->scene, NULL, zero, objects, msg, sizeof msg))) {
       fprintf(stderr, "fp3 compile: %s\n", msg);
       return EXIT_USAGE;
     }
-    fp3_mscene_zero(&sc, zero);
-    *objects = sc.n;
-    m = sc.model;
-    sc.model = NULL;
-    fp3_mscene_free(&sc);
   } else {
     if (!(m = malloc(sizeof *m))) return EXIT_FAIL;
     if (fp3_model_load(a->model, m, msg, sizeof msg)) {

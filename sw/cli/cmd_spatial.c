@@ -251,18 +251,8 @@ static fp3_model *load_model(const fp3_spatial_args *a, unsigned char *zero, siz
                       "both\n", a->scene);
       return NULL;
     }
-    fp3_mscene sc;
-    const int bad = a->model ? fp3_mscene_read_any(a->scene, a->model, &sc, msg, sizeof msg)
-                             : fp3_read_scene(a->scene, &sc, msg, sizeof msg);
-    if (bad) {
+    if (!(m = fp3_scene_model(a->scene, a->model, zero, objects, msg, sizeof msg)))
       fprintf(stderr, "fp3 spatial: %s\n", msg);
-      return NULL;
-    }
-    fp3_mscene_zero(&sc, zero);
-    *objects = sc.n;
-    m = sc.model;
-    sc.model = NULL;
-    fp3_mscene_free(&sc);
     return m;
   }
   if (!(m = malloc(sizeof *m))) {

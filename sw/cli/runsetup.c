@@ -74,6 +74,20 @@ int fp3_read_scene(const char *path, fp3_mscene *sc, char *msg, size_t n) {
   return fp3_mscene_read_any(path, ship, sc, msg, n);
 }
 
+fp3_model *fp3_scene_model(const char *path, const char *ship_model, unsigned char *zero,
+                           size_t *objects, char *msg, size_t n) {
+  fp3_mscene sc;
+  if (ship_model ? fp3_mscene_read_any(path, ship_model, &sc, msg, n)
+                 : fp3_read_scene(path, &sc, msg, n))
+    return NULL;
+  fp3_mscene_zero(&sc, zero);
+  *objects = sc.n;
+  fp3_model *m = sc.model;
+  sc.model = NULL;
+  fp3_mscene_free(&sc);
+  return m;
+}
+
 /* 1 if paths a and b name the same file. */
 static int same_file(const char *a, const char *b) {
   struct stat sa, sb;

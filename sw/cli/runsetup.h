@@ -55,6 +55,14 @@ void fp3_find_shipped(const char *rel, char *path, size_t n);
  * fp3_find_shipped finds it).  0 and *sc, or non-zero with msg. */
 int fp3_read_scene(const char *path, fp3_mscene *sc, char *msg, size_t n);
 
+/* The model of scene `path` (fp3_read_scene; a ship scene as a scene of
+ * ship_model, or of the shipped ship when it is NULL), for compiling the
+ * scene's program: zero[k] = 1 for each param k zero in every object
+ * (fp3_mscene_zero), *objects the scene's objects.  The model (the
+ * caller frees it with free()), or NULL with "FILE:LINE: reason" in msg. */
+fp3_model *fp3_scene_model(const char *path, const char *ship_model, unsigned char *zero,
+                           size_t *objects, char *msg, size_t n);
+
 /* The program: a->program, or default_program (NULL: none) when neither
  * --model, a model scene, --integrator nor --literal asks for a compiled
  * one; assembled into s->img, refused when it cannot end. */
