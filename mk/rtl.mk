@@ -302,16 +302,19 @@ $(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw
 # The chip build's median Fmax over the placement seeds, when make pnr
 # CHIP=ecp5-85 PNR_SEEDS=... has measured it (else cycles only).
 CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/pnr/chip_fmax_median.txt)
-# The spatial chip's median Fmax, when make pnr-spatial MODEL=models/ship.fp3m
-# INTEGRATOR=rk4se PNR_SEEDS=... (its default shape: the pipelines that fit,
-# add 9 / mul 9) has measured it (else its rows give cycles only).
-SPATIAL_FMAX ?= $(shell test -f $(BUILD)/pnr-spatial/fmax_median.txt && cat $(BUILD)/pnr-spatial/fmax_median.txt)
+# The spatial chips' median Fmax, folded and literal, when make pnr-spatial
+# MODEL=models/ship.fp3m INTEGRATOR=rk4se [LITERAL=1] PNR_SEEDS=... (the
+# shape bench_chip runs: the pipelines that fit, --clock-cores) has
+# measured it (else their rows give cycles only).
+SPATIAL_FMAX ?= $(shell cat $(BUILD)/pnr-spatial/ship-rk4se/fmax_median.txt 2>/dev/null)
+SPATIAL_LITERAL_FMAX ?= $(shell cat $(BUILD)/pnr-spatial/ship-rk4se-literal/fmax_median.txt 2>/dev/null)
 .PHONY: bench-chip
 ## bench-chip: lanes 1-16, the chip build and the spatial chip: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
 bench-chip: $(BUILD)/bench_chip
 	@mkdir -p $(BUILD)/bench
 	$(BUILD)/bench_chip --steps 200 --csv $(BUILD)/bench/chip.csv $(if $(CHIP_FMAX),--fmax-mhz $(CHIP_FMAX)) \
-	  $(if $(SPATIAL_FMAX),--spatial-fmax-mhz $(SPATIAL_FMAX))
+	  $(if $(SPATIAL_FMAX),--spatial-fmax-mhz $(SPATIAL_FMAX)) \
+	  $(if $(SPATIAL_LITERAL_FMAX),--spatial-literal-fmax-mhz $(SPATIAL_LITERAL_FMAX))
 
 # ---- simulation speed (make bench-simspeed) ----------------------------------
 # The Verilated chip build on 256 ships against the default build on 64,

@@ -24,8 +24,9 @@
  * own would need a C back end of the compiler.
  *
  * Then the spatial rows (docs/spatial.md): the ship's rk4se step, folded
- * and literal, as the spatial chip `make pnr-spatial` places it (cores at
- * add 9, mul 9, scaleB 4, as many pipelines N as the area estimate fits), on the
+ * and literal, as the spatial chip `make pnr-spatial` places it (the cores
+ * of fp3_spatial_clock_cores, as many pipelines N as the area estimate
+ * fits), on the
  * spatial engine (engine_spatial.h: the chip's Verilated RTL, built into
  * build/spatial-cache on first use): all of the engine's slots, at least
  * N (L + 3) objects, so the pipelines are full and the figure is their
@@ -35,12 +36,13 @@
  *
  * Last, the chip build's ns per object-step at the Fmax given with
  * --fmax-mhz (the median of the placement seeds, mk/pnr.mk; without it,
- * the table gives cycles only), and the spatial chip's at
- * --spatial-fmax-mhz (the median of make pnr-spatial's seeds), against
- * the paper's FPGA and Pentium 4 and this CPU.
+ * the table gives cycles only), and the spatial chips' at
+ * --spatial-fmax-mhz (folded) and --spatial-literal-fmax-mhz (literal),
+ * the medians of make pnr-spatial's seeds, against the paper's FPGA and
+ * Pentium 4 and this CPU.
  *
- * Usage: bench_chip [--steps N] [--fmax-mhz F] [--spatial-fmax-mhz F] [--csv FILE]
- *                   [--no-spatial]
+ * Usage: bench_chip [--steps N] [--fmax-mhz F] [--spatial-fmax-mhz F]
+ *                   [--spatial-literal-fmax-mhz F] [--csv FILE] [--no-spatial]
  */
 #define _DEFAULT_SOURCE /* realpath */
 #include <errno.h>
@@ -283,9 +285,22 @@ static int cpu_reference(size_t n, uint32_t steps, double *array_ns, double *sca
   return rc;
 }
 
+/* The ns table's row of spatial chip r (program prog): its cycles per
+ * object-step at fmax_mhz, or the cycles alone (fmax_mhz 0: not given
+ * with option opt); nothing if r did not run. */
+static void spatial_ns_row(const row *r, const char *prog, double fmax_mhz, const char *opt) {
+  if (!(r->cpos > 0.0)) return;
+  if (fmax_mhz > 0.0)
+    printf("| FP3 spatial chip (%u pipelines), %s RK4: %.3f cycles at %.1f MHz | %.2f |\n",
+           r->lanes, prog, r->cpos, fmax_mhz, r->cpos * 1e3 / fmax_mhz);
+  else
+    printf("| FP3 spatial chip (%u pipelines), %s RK4: %.3f cycles; give %s for ns | |\n",
+           r->lanes, prog, r->cpos, opt);
+}
+
 int main(int argc, char **argv) {
   uint32_t steps = 200;
-  double fmax_mhz = 0.0, spatial_fmax_mhz = 0.0;
+  double fmax_mhz = 0.0, spatial_fmax_mhz = 0.0, spatial_lit_fmax_mhz = 0.0;
   int spatial = 1;
   const char *csv_path = "build/bench/chip.csv";
   for (int i = 1; i < argc; i++) {
@@ -295,18 +310,21 @@ int main(int argc, char **argv) {
       fmax_mhz = strtod(argv[++i], NULL);
     } else if (strcmp(argv[i], "--spatial-fmax-mhz") == 0 && i + 1 < argc) {
       spatial_fmax_mhz = strtod(argv[++i], NULL);
+    } else if (strcmp(argv[i], "--spatial-literal-fmax-mhz") == 0 && i + 1 < argc) {
+      spatial_lit_fmax_mhz = strtod(argv[++i], NULL);
     } else if (strcmp(argv[i], "--no-spatial") == 0) {
       spatial = 0;
     } else if (strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
       csv_path = argv[++i];
     } else {
       fprintf(stderr, "usage: bench_chip [--steps N] [--fmax-mhz F] [--spatial-fmax-mhz F] "
-                      "[--csv FILE] [--no-spatial]\n");
+                      "[--spatial-literal-fmax-mhz F] [--csv FILE] [--no-spatial]\n");
       return strcmp(argv[i], "--help") == 0 ? 0 : 2;
     }
   }
-  if (steps == 0 || !(fmax_mhz >= 0.0) || !(spatial_fmax_mhz >= 0.0)) {
-    fprintf(stderr, "bench_chip: --steps must be >= 1, --fmax-mhz and --spatial-fmax-mhz >= 0\n");
+  if (steps == 0 || !(fmax_mhz >= 0.0) || !(spatial_fmax_mhz >= 0.0) ||
+      !(spatial_lit_fmax_mhz >= 0.0)) {
+    fprintf(stderr, "bench_chip: --steps must be >= 1, the --*fmax-mhz values >= 0\n");
     return 2;
   }
   const struct {
@@ -452,15 +470,8 @@ int main(int argc, char **argv) {
            "--fmax-mhz for ns | |\n", chip_lit.contexts, chip_lit.lanes, chip_lit.cpos,
            chip_comp.cpos);
   }
-  if (sp_fold.cpos > 0.0 && spatial_fmax_mhz > 0.0)
-    printf("| FP3 spatial chip (%u pipelines), folded RK4: %.3f cycles at %.1f MHz | %.2f |\n",
-           sp_fold.lanes, sp_fold.cpos, spatial_fmax_mhz, sp_fold.cpos * 1e3 / spatial_fmax_mhz);
-  else if (sp_fold.cpos > 0.0)
-    printf("| FP3 spatial chip (%u pipelines), folded RK4: %.3f cycles; give "
-           "--spatial-fmax-mhz for ns | |\n", sp_fold.lanes, sp_fold.cpos);
-  if (sp_lit.cpos > 0.0)
-    printf("| FP3 spatial chip (%u pipelines), literal RK4: %.3f cycles (not placed) | |\n",
-           sp_lit.lanes, sp_lit.cpos);
+  spatial_ns_row(&sp_fold, "folded", spatial_fmax_mhz, "--spatial-fmax-mhz");
+  spatial_ns_row(&sp_lit, "literal", spatial_lit_fmax_mhz, "--spatial-literal-fmax-mhz");
   printf("CSV: %s\n", csv_path);
   return rc;
 }
