@@ -318,9 +318,10 @@ bench-chip: $(BUILD)/bench_chip
 
 # ---- simulation speed (make bench-simspeed) ----------------------------------
 # The Verilated chip build on 256 ships against the default build on 64,
+# and the spatial engine's folded ship chip against the chip build,
 # object-steps per CPU second, median of SIMSPEED_ROUNDS runs of bench_chip
 # linked with the chip build only (scripts/bench-simspeed.sh;
-# docs/lanes.md "Simulation speed").  SIMSPEED_BEFORE=path/to/bench_chip,
+# docs/lanes.md "Simulation speed", docs/spatial.md "The spatial engine").  SIMSPEED_BEFORE=path/to/bench_chip,
 # the same program built from another revision: both, alternating.
 # SIMSPEED_BASELINE=path/to/fp3, build/fp3 of another revision: its
 # default build's `fp3 run --objects 64` timed in the same rounds.
@@ -330,7 +331,7 @@ SIMSPEED_BASELINE ?=
 # tests/test_simspeed.sh: the script's arithmetic and bad input, on stand-ins.
 TEST_SCRIPTS += tests/test_simspeed.sh
 .PHONY: bench-simspeed
-## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships): object-steps per CPU second and ratio (SIMSPEED_BEFORE=, SIMSPEED_BASELINE=)
+## bench-simspeed: Verilated model speed, chip build (256 ships) against the default build (64 ships), the spatial chip against the chip build: object-steps per CPU second and ratios (SIMSPEED_BEFORE=, SIMSPEED_BASELINE=)
 bench-simspeed:
 	$(MAKE) --no-print-directory $(BUILD)/bench_chip BENCH_CHIP_MODELS=chip
 	bash scripts/bench-simspeed.sh --rounds $(SIMSPEED_ROUNDS) \

@@ -242,8 +242,8 @@ static const core_area core_areas[] = {
     {FP3_IR_MUL, 3, 0, 0, 1655, 187, 4}, /* fp_mul */
     {FP3_IR_MUL, 3, 0, 1, 681, 185, 4}, /* fp_mul */
     {FP3_IR_MUL, 3, 1, 0, 1191, 187, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 0, 1034, 626, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 1, 582, 614, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 0, 1015, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 1, 576, 614, 4}, /* fp_mul */
     {FP3_IR_MUL, 9, 1, 0, 973, 626, 4}, /* fp_mul */
     {FP3_IR_MUL, 10, 0, 0, 2215, 1210, 0}, /* fp_mul */
     {FP3_IR_MUL, 10, 0, 1, 1726, 1196, 0}, /* fp_mul */
