@@ -17,9 +17,18 @@
 //             register, the RAM's asynchronous read is registered (1
 //             read stage);
 //          2: block RAM (ram_style "block"): the read address and word
-//             registered in the block, then one fabric register, so the
-//             block's slow clock-to-output (no output register) ends in a
-//             flip-flop beside it (2 read stages)
+//             registered in the block, then one fabric register (2 read
+//             stages).  In ECP5 synthesis (FP3_ECP5_EBR, set by
+//             scripts/synth.sh) and up to 512 words: the block's own
+//             output register instead of the fabric one (fp3_ram
+//             READ_STAGES 2, a PDPW16KD with REGMODE "OUTREG"), the same
+//             2 read stages.  Why: without it the word leaves the block
+//             5.61 ns after the clock in nextpnr's model, and the placer
+//             does not keep the fabric register beside the block: on the
+//             literal ship's chip that route (3.39 ns) made the 9.0 ns
+//             critical path; with it the word leaves a register 0.97 ns
+//             after the clock.  tests/test_delay_ebr.sh checks that the
+//             synthesized form delays as the RTL does.
 //
 // Ports:
 //   clk_i   clock, rising edge
@@ -89,6 +98,21 @@ module fp_delay #(
           rd_q      <= mem[ra_q];
         end
         assign data_o = rd_q;
+`ifdef FP3_ECP5_EBR
+      end else if (N <= 512) begin : g_block
+        // ECP5 synthesis only (no simulator sees this form): the read
+        // address goes to the block unregistered (fp3_ram registers it
+        // inside), wa_q - GAP modulo N, the address ra_q holds a cycle
+        // later in the form below; the block's output register is the
+        // second read stage.  A word is read GAP >= 1 cycles after its
+        // write and rewritten N >= GAP + 1 cycles after it, never at the
+        // read's own edge (the case the block gives no promise for).
+        localparam integer BACK_I = N - GAP;
+        localparam [AW-1:0] BACK = BACK_I[AW-1:0];
+        fp3_ram #(.DEPTH(N), .AW(AW), .WIDTH(WIDTH), .READ_STAGES(2)) u_ebr (
+          .clk_i(clk_i), .we_i(1'b1), .waddr_i(wa_q), .wdata_i(data_i),
+          .raddr_i(wa_q + BACK), .rdata_o(data_o));
+`endif
       end else begin : g_block
         (* ram_style = "block", no_rw_check *) reg [WIDTH-1:0] mem [0:N-1];
         reg [WIDTH-1:0] out_q;
