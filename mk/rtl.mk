@@ -230,7 +230,7 @@ $(BUILD)/tests/test_engines: tests/test_engines.c $(BUILD)/sw-san/libfp3.a $(RTL
 TEST_BINS += $(BUILD)/tests/test_engines
 
 # ---- one source of truth, tool acceptance -----------------------------------
-TEST_SCRIPTS += tests/test_isa_sync.sh tests/test_rtl_tools.sh tests/test_ram_ebr.sh tests/test_dsp_mul.sh tests/test_rr_arbiter.sh
+TEST_SCRIPTS += tests/test_isa_sync.sh tests/test_rtl_tools.sh tests/test_ram_ebr.sh tests/test_delay_ebr.sh tests/test_dsp_mul.sh tests/test_rr_arbiter.sh
 test-build: $(BUILD)/gen_isa
 
 # ---- make sim: the default ship scene on the RTL ----------------------------
