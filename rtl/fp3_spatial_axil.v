@@ -14,7 +14,7 @@
 // two-cycle memory read and its multiplexer register) and held on R until RREADY.  B and R stay valid,
 // with stable payload, until accepted.  Each channel takes a new transfer
 // every second cycle (reads every fifth).  When N is not a power of two,
-// an access to a window waits clog2(M + 1) cycles for its object or entry
+// an access to a window waits clog2(M + 1) + 1 cycles for its object or entry
 // number's division by N (fp3_spatial_divn; none for the next word of the
 // same object), and a write to the awake list or COUNT as long for its
 // word's.  A write and a read that are
@@ -328,8 +328,11 @@ module fp3_spatial_axil #(
   // frame's memories are far apart on a full chip, and a path from one
   // through the other was the chip's critical path.  A window access
   // reaches the frame a cycle after it is performed, reads and writes
-  // alike, so they stay in order; START does not wait (a run starts at
-  // least a cycle after the last window write lands: one write every
+  // alike, so they stay in order; START leaves a register too (the
+  // frame's feeder and its flags' clear are far from the slave: the path
+  // from the arbitration through START to them was a placed chip's
+  // critical path) and reaches the frame a cycle after CTRL is written,
+  // at least a cycle after the last window write lands (one write every
   // second cycle).
   wire [31:0] host_wdata = wa_sel_q == SEL_AWAKE
                          ? {wd_none_q, {(31 - RW){1'b0}}, wd_row[RW-1:0]} : w_data_q;
@@ -339,7 +342,9 @@ module fp3_spatial_axil #(
   reg [RW-1:0] host_row_q;
   reg [7:0]    host_word_q;
   reg [31:0]   host_wdata_q;
+  reg          start_q;
   always @(posedge clk_i) begin
+    start_q      <= !rst_i && wr_now && wa_ctrl && w_data_q[0];
     host_we_q    <= !rst_i && wr_now && wa_win;
     host_re_q    <= !rst_i && do_read && rd_ok && ra_win;
     host_sel_q   <= do_write ? wa_sel_q  : ra_sel_q;
@@ -355,7 +360,7 @@ module fp3_spatial_axil #(
   assign host_row_o   = host_row_q;
   assign host_word_o  = host_word_q;
   assign host_wdata_o = host_wdata_q;
-  assign start_o      = wr_now && wa_ctrl && w_data_q[0];
+  assign start_o      = start_q;
   assign steps_o      = steps_q;
   assign rounds_o     = rounds_q;
   assign tail_o       = tail_q;

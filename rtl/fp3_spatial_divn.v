@@ -4,12 +4,17 @@
 //
 // N a power of two (1, 2, 4, ...): shifts and masks, the result at the
 // edge that samples start_i.  Otherwise restoring division, one quotient
-// bit a cycle from the top: W cycles after start_i (none when the
+// bit a cycle from the top: W + 1 cycles after start_i (none when the
 // dividend is the last one again, as for the words of one object), at
 // the cost of a
 // (bits of N + 1)-bit subtractor and two W-bit registers, where a
 // combinational divider would cost thousands of LUTs (yosys synth_ecp5 of
 // the slave for N = 3: 16,616 LUT4 and 3,041 CCU2C with six of them).
+// The start edge only registers the dividend and whether it is the last
+// one again; the division begins at the next edge, from those registers,
+// so that the compare of the dividend (a bus input) is not on the path to
+// the enables of the division's registers (on a placed chip that path,
+// through the compare and its fanout, was the critical one).
 // Restoring division: r = 0; for i = W-1 .. 0: r = 2r + x[i]; if r >= N
 // then r = r - N and q[i] = 1, else q[i] = 0.
 //
@@ -18,7 +23,8 @@
 //   W   dividend bits, >= 2
 //   NB  remainder bits, clog2(N) at least 1
 // Ports
-//   start_i     sample x_i and begin (at this edge)
+//   start_i     sample x_i and begin (at this edge); at most every
+//               second cycle (as the AXI slave's channels take words)
 //   x_i         the dividend
 //   ready_o     q_o and r_o hold the last dividend's quotient and
 //               remainder (a register of its own, so that it starts a
@@ -67,14 +73,24 @@ module fp3_spatial_divn #(
       wire         ge = r2 >= ND;
       wire [NB:0]  rn = ge ? r2 - ND : r2;
       // The last dividend: a start with the same one keeps (or goes on
-      // finding) its result instead of dividing again.
-      reg [W-1:0]  last_q;
-      reg          have_q;
-      wire         again = start_i && !(have_q && x_i == last_q);
+      // finding) its result instead of dividing again.  The start edge
+      // registers the dividend (xin_q) and that compare (same_q); the
+      // division, when there is one, begins at the next (again).
+      reg [W-1:0]  last_q, xin_q;
+      reg          have_q, st_q, same_q;
+      wire         same = have_q && x_i == last_q;
+      wire         again = st_q && !same_q;
       always @(posedge clk_i) begin
-        // left_q's next value is 0 when no division begins and at most
-        // one bit is left
-        ready_q <= rst_i || (!again && left_q <= {{(CW-1){1'b0}}, 1'b1});
+        st_q <= !rst_i && start_i;
+        if (start_i) begin
+          xin_q  <= x_i;
+          same_q <= same;
+        end
+        // ready: at a start, only for the last dividend with its result
+        // found; else when no division begins and at most one bit is left
+        // (left_q's next value is 0)
+        ready_q <= rst_i || (start_i ? same && left_q == {CW{1'b0}}
+                                     : !again && left_q <= {{(CW-1){1'b0}}, 1'b1});
         if (rst_i) begin
           left_q <= {CW{1'b0}};
           have_q <= 1'b0;
@@ -85,8 +101,8 @@ module fp3_spatial_divn #(
           left_q <= left_q - 1'b1;
         end
         if (again) begin
-          last_q <= x_i;
-          x_q    <= x_i;
+          last_q <= xin_q;
+          x_q    <= xin_q;
           r_q    <= {NB{1'b0}};
         end else if (left_q != {CW{1'b0}}) begin
           x_q <= x_q << 1;

@@ -52,8 +52,9 @@
  * A run: write the input and state windows, the awake list, COUNT and
  * STEPS, then CTRL.START; STATUS.RUNNING is 1 until the last step's last
  * object is written back, then STATUS.DONE is 1 (until the next START)
- * and CYCLES_LO/HI hold the run's cycles, from the cycle after START's
- * write to the cycle DONE rises.  A START with STEPS = 0 or COUNT = 0
+ * and CYCLES_LO/HI hold the run's cycles, from the second cycle after
+ * START's write (START reaches the frame through a register) to the cycle
+ * DONE rises.  A START with STEPS = 0 or COUNT = 0
  * runs no step.  The state window then holds the new states.
  */
 #ifndef FP3_SPATIAL_REGS_H
