@@ -320,7 +320,9 @@ static void estimate(struct fp3_spatial *s) {
   /* delay segments, by rtl/fp_delay.v's measured form (spatial.h's table):
    * a RAM segment's address counters are 2 x log2(words) flip-flops and
    * about as many LUT4s, its read register 32 flip-flops (and block RAM's
-   * fabric register 32 more) */
+   * fabric register 32 more); a block-RAM segment of up to 512 words
+   * reads through the block's own registers (fp_delay's ECP5 form): its
+   * write counter alone is in the fabric */
   for (unsigned i = 0; i < s->nn; i++) {
     const snode *x = &s->nd[i];
     for (unsigned d = 1, prev = 0; x->delay && d <= x->delay; d++) {
@@ -334,7 +336,8 @@ static void estimate(struct fp3_spatial *s) {
       }
       unsigned aw = 0;
       for (unsigned w = segment_words(len, style); w > 1; w /= 2) aw++;
-      st->est_ff += 2 * aw + (style == 1 ? 32 : 64);
+      if (style == 2 && segment_words(len, 2) <= 512) st->est_ff += aw;
+      else st->est_ff += 2 * aw + (style == 1 ? 32 : 64);
       if (style == 1) st->est_lut4 += 6 * 8 * ((segment_words(len, 1) + 15) / 16) + 2 * aw;
       else st->est_lut4 += 2 * aw;
     }

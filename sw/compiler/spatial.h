@@ -35,14 +35,16 @@
  * rtl/fp_delay.v WIDTH=32 STYLE 1 or 2, `hierarchy -chparam ...;
  * synth_ecp5`), and nextpnr-ecp5's packing of a TRELLIS_DPR16X4 LUT-RAM
  * cell into 6 LUT4 sites (4 of RAM, 2 of its write port: 8 cells and 7
- * LUT4s of a 16-stage line placed as 57 TRELLIS_COMB):
+ * LUT4s of a 16-stage line placed as 57 TRELLIS_COMB); block RAM through
+ * scripts/synth.sh ecp5 (FP3_ECP5_EBR: the block's output register), a
+ * CCU2C counted as two LUT4s:
  *
  *   D     flip-flops (fp_pipe)   LUT RAM (STYLE 1)            block RAM (STYLE 2)
- *   4     128 FF                 8 DPR16X4 + 3 LUT4 + 36 FF   1 EBR + 3 LUT4 + 35 FF
- *   16    512 FF                 8 DPR16X4 + 7 LUT4 + 40 FF   1 EBR + 7 LUT4 + 39 FF
- *   32    1,024 FF               16 DPR16X4 + 43 LUT4 + 42 FF 1 EBR + 9 LUT4 + 41 FF
- *   64    2,048 FF               32 DPR16X4 + 144 LUT4 + 44 FF 1 EBR + 12 LUT4 + 44 FF
- *   512   16,384 FF              -                            1 EBR + 20 LUT4 + 50 FF
+ *   4     128 FF                 8 DPR16X4 + 3 LUT4 + 36 FF   1 EBR + 3 LUT4 + 2 FF
+ *   16    512 FF                 8 DPR16X4 + 7 LUT4 + 40 FF   1 EBR + 7 LUT4 + 4 FF
+ *   32    1,024 FF               16 DPR16X4 + 43 LUT4 + 42 FF 1 EBR + 10 LUT4 + 5 FF
+ *   64    2,048 FF               32 DPR16X4 + 144 LUT4 + 44 FF 1 EBR + 12 LUT4 + 6 FF
+ *   512   16,384 FF              -                            1 EBR + 18 LUT4 + 9 FF
  *
  * The rule: D <= FP3_SPATIAL_FF_MAX (3) flip-flops (96 FFs, against about
  * 91 cells of LUT RAM: the break-even, and a flip-flop is the fastest
