@@ -193,12 +193,14 @@ static void parse_compile(int argc, char **argv) {
 static void parse_spatial(int argc, char **argv) {
   fp3_spatial_args a;
   if (fp3_parse_spatial(argc, argv, &a) != FP3_ARGS_RUN) return;
-  if (!a.model || !a.dir) fail("spatial", "no model or no -o DIR");
+  if ((!a.model && !a.scene) || !a.dir) fail("spatial", "no model or scene, or no -o DIR");
+  if (a.scene && a.vec_objects) fail("spatial", "--vectors with --scene");
   if (a.opts.add_latency < 1 || a.opts.add_latency > 64 || a.opts.mul_latency < 1 ||
       a.opts.mul_latency > 64 || a.opts.div_latency < 1 || a.opts.div_latency > 64 ||
       a.vec_steps < 1)
     fail("spatial", "a latency or --steps out of range");
   check_str("spatial", a.model, 0);
+  check_str("spatial", a.scene, 0);
   check_str("spatial", a.dir, 0);
   check_str("spatial", a.integ, 1);
 }
