@@ -178,6 +178,11 @@ static int segment_style(unsigned d) {
   return d <= FP3_SPATIAL_FF_MAX ? 0 : d <= FP3_SPATIAL_LUTRAM_MAX ? 1 : 2;
 }
 
+/* The words of one ECP5 block RAM (DP16KD, PDPW16KD) 36 bits wide; a
+ * delay line of up to this many reads through the block's own output
+ * register (rtl/fp_delay.v's ECP5 form). */
+#define EBR_WORDS 512u
+
 /* The words of rtl/fp_delay.v's RAM for a segment of d stages in `style`:
  * the power of two >= d - (read stages) + 1. */
 static unsigned segment_words(unsigned d, int style) {
@@ -200,7 +205,7 @@ static void count_segment(fp3_spatial_stats *st, unsigned d) {
   } else {
     st->ebr_segments++;
     st->ebr_stages += d;
-    st->ebr_blocks += (segment_words(d, 2) + 511) / 512; /* 512 x 36, 1024 x 18, ... */
+    st->ebr_blocks += (segment_words(d, 2) + EBR_WORDS - 1) / EBR_WORDS; /* 512 x 36, 1024 x 18, ... */
   }
 }
 
@@ -334,11 +339,12 @@ static void estimate(struct fp3_spatial *s) {
         st->est_ff += 32 * len;
         continue;
       }
+      const unsigned words = segment_words(len, style);
       unsigned aw = 0;
-      for (unsigned w = segment_words(len, style); w > 1; w /= 2) aw++;
-      if (style == 2 && segment_words(len, 2) <= 512) st->est_ff += aw;
+      for (unsigned w = words; w > 1; w /= 2) aw++;
+      if (style == 2 && words <= EBR_WORDS) st->est_ff += aw;
       else st->est_ff += 2 * aw + (style == 1 ? 32 : 64);
-      if (style == 1) st->est_lut4 += 6 * 8 * ((segment_words(len, 1) + 15) / 16) + 2 * aw;
+      if (style == 1) st->est_lut4 += 6 * 8 * ((words + 15) / 16) + 2 * aw;
       else st->est_lut4 += 2 * aw;
     }
   }
