@@ -26,7 +26,7 @@ FPU_MUL_LAT_DEF := $(shell sed -n 's/.*X(MUL_LATENCY, *\([0-9]*\)).*/\1/p' sw/is
 # fp_div and fp_sqrt: the latency of the div/sqrt unit (docs/fp-cores.md).
 FPU_DIV_LAT_DEF := 8
 
-# name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY [MUL_FEED]
+# name := ROUND FTZ ADD_LATENCY MUL_LATENCY DIV_LATENCY [MUL_FEED [MUL_BLOCKS]]
 # (the names give the add and mul latencies; the variants also take the
 # div/sqrt latencies 1 to 35: register counts over the 30 and 29 base
 # places of fp_div and fp_sqrt, each of their extra places (31 to 34 and
@@ -55,11 +55,18 @@ FPU_CFG_lat_9_10_rtz_ftz := 1 1 9 10 34
 # latency 8 (the DSP product of 7).
 FPU_CFG_lat_10_10f := 0 0 10 10 9 1
 FPU_CFG_lat_4_8f_rtz_ftz := 1 1 4 8 4 1
+# The multiplier of three DSP blocks (fp_mul MULT_BLOCKS 3; the spatial
+# chips, docs/spatial.md): behind the feed register as --clock-cores has
+# it, in RTZ with FTZ, and at latency 3 (the product without the blocks'
+# registers).
+FPU_CFG_lat_10_10f3 := 0 0 10 10 9 1 3
+FPU_CFG_lat_4_8f3_rtz_ftz := 1 1 4 8 4 1 3
+FPU_CFG_lat_4_3b3_rtz := 1 0 4 3 8 0 3
 
 FPU_MODELS_MAIN := rne rtz ftz rtz_ftz
 FPU_MODELS_LAT  := lat_1_2 lat_2_1 lat_3_8 lat_8_4 lat_5_6 lat_9_7 lat_7_10 \
                    lat_6_9 lat_10_11 lat_8_12 lat_9_10 lat_9_10_rtz_ftz lat_10_10f \
-                   lat_4_8f_rtz_ftz
+                   lat_4_8f_rtz_ftz lat_10_10f3 lat_4_8f3_rtz_ftz lat_4_3b3_rtz
 FPU_MODELS_ALL  := $(FPU_MODELS_MAIN) $(FPU_MODELS_LAT)
 
 fpu_model_lib  = $(FPU_DIR)/obj_$(1)/Vfpu_$(1)__ALL.a
@@ -76,6 +83,7 @@ $(call fpu_model_lib,$(1)): $(FPU_RTL) $(FPU_RTL_INC) sim/fpu_top.v mk/fpu.mk | 
 	  -GMUL_LATENCY=$(word 4,$(FPU_CFG_$(1))) \
 	  -GDIV_LATENCY=$(word 5,$(FPU_CFG_$(1))) \
 	  $(if $(word 6,$(FPU_CFG_$(1))),-GMUL_FEED=$(word 6,$(FPU_CFG_$(1)))) \
+	  $(if $(word 7,$(FPU_CFG_$(1))),-GMUL_BLOCKS=$(word 7,$(FPU_CFG_$(1)))) \
 	  -MAKEFLAGS OPT_FAST=-O2 \
 	  --Mdir $(FPU_DIR)/obj_$(1) --prefix Vfpu_$(1) \
 	  sim/fpu_top.v $(FPU_RTL) > $(FPU_DIR)/obj_$(1).log 2>&1 \

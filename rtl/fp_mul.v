@@ -63,6 +63,15 @@
 //            routing on the 16-lane LFE5U-85F build, docs/lanes.md); the
 //            feed register splits it in two cycles.  It costs 67 flip-flops
 //            (the significands and what rides beside them) and a cycle.
+//   MULT_BLOCKS  the DSP product's blocks (LATENCY - FEED <= 9):
+//            4: four 12 x 12-bit partial products, one MULT18X18D each
+//            3: the operands cut at bit 6: three MULT18X18D (18 x 18 and
+//            two 18 x 6) and the 6 x 6-bit low product in the fabric
+//            (fp_mul_prod BLOCKS), 67 to 94 LUT4s and 35 flip-flops more
+//            (alone, scripts/spatial-core-area.sh);
+//            same latency, same results.  For chips whose multiplier
+//            blocks run out first (the literal ship pipeline: 56 of the
+//            LFE5U-85F's 156 with 4, 42 with 3)
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      0: IEEE subnormals; 1: subnormal inputs read as zero (sign
 //            kept, no flag: x86 DAZ) and tiny results flushed to +-0 with
@@ -98,6 +107,7 @@
 module fp_mul #(
   parameter integer LATENCY = 3, // issue to result, rising edges, >= 1
   parameter integer FEED    = 0, // 1: a fabric register in front of the DSP blocks
+  parameter integer MULT_BLOCKS = 4, // MULT18X18D per product, 4 or 3
   parameter integer ROUND   = 0, // 0 RNE, 1 RTZ
   parameter integer FTZ     = 0  // 1: flush subnormal inputs and results
 ) (
@@ -367,6 +377,7 @@ module fp_mul #(
     .LUT    (LUT_PROD),
     .BND    ({BND[B_M2D], BND[B_M2C], BND[B_M2B]}),
     .PRE    (DSP_REG),
+    .BLOCKS (MULT_BLOCKS),
     .SIDE_W (WP)
   ) u_prod (
     .clk_i    (clk_i),

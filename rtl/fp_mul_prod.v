@@ -3,9 +3,10 @@
 // two structures, with a side-band word carried along the same registers.
 //
 // Parameters:
-//   LUT     0: four 12 x 12-bit partial products (`*`, DSP blocks where the
-//              flow maps them) summed in two steps: m2a products, m2b the
-//              two middle ones summed, m2c the 48-bit sum
+//   LUT     0: partial products in DSP blocks (`*` where the flow maps
+//              them; BLOCKS says which) summed in two steps: m2a
+//              products, m2b the two middle ones summed, m2c the 48-bit
+//              sum
 //           1: no multiplier: an AND array and a tree of carry-chain
 //              adders (m2a rows a * b[2j] + 2 a * b[2j+1], 12 of 26 bits;
 //              m2b pairs of those, 6 of 28 bits; m2c pairs again, 3 of 32
@@ -24,6 +25,18 @@
 //              registers for BND bit 0.  On the ECP5 both are the
 //              MULT18X18D's own, so that no routing hop shares a cycle
 //              with the block's 3.93 ns.
+//   BLOCKS  (LUT = 0) the DSP blocks per product, with the operands cut
+//           at bit H (a = aH * 2^H + aL, b likewise):
+//           4: H = 12, four 12 x 12-bit products aH bH, aH bL, aL bH,
+//              aL bL, one MULT18X18D each
+//           3: H = 6, three in MULT18X18D (aH bH 18 x 18, aH bL and
+//              aL bH 18 x 6) and aL bL (6 x 6) in the fabric: m2a sums
+//              its rows in pairs (3 of 8 bits, an AND level and one carry
+//              chain), m2b sums the pairs (two carry chains of 12 bits,
+//              beside the middle sum).  It frees a quarter of the
+//              multiplier blocks for 67 to 94 LUT4s and 35 flip-flops
+//              (docs/spatial.md: the literal ship chip is bounded by its
+//              MULT18X18D, 4 per multiplier)
 //   SIDE_W  bits of the side-band word (>= 1)
 //
 // Ports:
@@ -64,6 +77,7 @@ module fp_mul_prod #(
   parameter integer   LUT    = 0,      // 0: DSP partial products, 1: LUT tree
   parameter [2:0]     BND    = 3'b000, // register after m2a, m2b, m2c
   parameter integer   PRE    = 0,      // 1: operands a cycle early, DSP registers
+  parameter integer   BLOCKS = 4,      // DSP blocks per product, 4 or 3 (LUT = 0)
   parameter integer   SIDE_W = 1       // side-band bits
 ) (
   input  wire              clk_i,
@@ -78,6 +92,19 @@ module fp_mul_prod #(
   output wire [SIDE_W-1:0] side_o
 );
 
+  // BLOCKS = 3: the 6 x 6-bit product a b as its row pairs,
+  // {r2, r1, r0} with rk = a b[2k] + 2 a b[2k+1] (8 bits), so that
+  // a b = r0 + 4 r1 + 16 r2 (written with AND and +: no `*` for the flow
+  // to map to a DSP block).
+  function [23:0] ll_rows(input [5:0] a, input [5:0] b);
+    integer k;
+    begin
+      ll_rows = 24'd0;
+      for (k = 0; k < 3; k = k + 1)
+        ll_rows[8 * k +: 8] = {2'd0, a & {6{b[2 * k]}}} + {1'b0, a & {6{b[2 * k + 1]}}, 1'b0};
+    end
+  endfunction
+
   generate
     if ((LUT == 0) && BND[2]) begin : g_bad_bnd
       // Elaboration error on purpose: the DSP structure has no m2d.
@@ -88,21 +115,55 @@ module fp_mul_prod #(
       // structure's m2a with the register after it.
       fp_mul_prod_error_PRE_needs_LUT0_and_BND0 u_error ();
     end
+    if ((BLOCKS != 3) && (BLOCKS != 4)) begin : g_bad_blocks
+      // Elaboration error on purpose: the product is cut for 4 or 3 blocks.
+      fp_mul_prod_error_BLOCKS_must_be_3_or_4 u_error ();
+    end
 
     if (LUT == 0) begin : g_dsp
       // -----------------------------------------------------------------
-      // m2a: partial products of the 12-bit halves
+      // m2a: partial products of the operands cut at bit H: hh = aH bH
+      // (2 (24 - H) bits), lh = aL bH and hl = aH bL (24 bits), and the
+      // low product aL bL as llp: BLOCKS = 4 the product itself (24 bits),
+      // BLOCKS = 3 its three row pairs (8 bits each), summed in m2b
       // -----------------------------------------------------------------
+      localparam integer H  = (BLOCKS == 3) ? 6 : 12;
+      localparam integer WH = 2 * (24 - H);
       wire [SIDE_W-1:0] sa;
-      wire [23:0]       ll, lh, hl, hh;
+      wire [WH-1:0]     hh;
+      wire [23:0]       lh, hl, llp;
       wire              va;
       if (PRE != 0) begin : g_pre
         // The products in registered blocks (latency 2 from a_i, b_i;
         // 1 from valid_i, side_i), the side band in one fabric register.
-        fp_dsp_mul #(.W(12)) u_ll (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[11:0]),  .p_o(ll));
-        fp_dsp_mul #(.W(12)) u_lh (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[23:12]), .p_o(lh));
-        fp_dsp_mul #(.W(12)) u_hl (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[11:0]),  .p_o(hl));
-        fp_dsp_mul #(.W(12)) u_hh (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[23:12]), .p_o(hh));
+        if (BLOCKS == 4) begin : g_b4
+          fp_dsp_mul #(.W(12)) u_ll (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[11:0]),  .p_o(llp));
+          fp_dsp_mul #(.W(12)) u_lh (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[23:12]), .p_o(lh));
+          fp_dsp_mul #(.W(12)) u_hl (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[11:0]),  .p_o(hl));
+          fp_dsp_mul #(.W(12)) u_hh (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[23:12]), .p_o(hh));
+        end else begin : g_b3
+          // 18 x 6 in an 18 x 18 block: the 6-bit operand zero-extended,
+          // the product's top 12 bits zero.
+          wire [35:0] lh36, hl36;
+          fp_dsp_mul #(.W(18)) u_lh (.clk_i(clk_i), .a_i({12'd0, a_i[5:0]}), .b_i(b_i[23:6]),
+                                     .p_o(lh36));
+          fp_dsp_mul #(.W(18)) u_hl (.clk_i(clk_i), .a_i(a_i[23:6]), .b_i({12'd0, b_i[5:0]}),
+                                     .p_o(hl36));
+          fp_dsp_mul #(.W(18)) u_hh (.clk_i(clk_i), .a_i(a_i[23:6]), .b_i(b_i[23:6]), .p_o(hh));
+          assign lh = lh36[23:0];
+          assign hl = hl36[23:0];
+          wire unused_hi = &{1'b0, lh36[35:24], hl36[35:24]};
+          // aL bL in the fabric with the blocks' two registers: the
+          // operands, then the row pairs (no reset: data only).
+          reg [5:0]  ll_a, ll_b;
+          reg [23:0] ll_r;
+          always @(posedge clk_i) begin
+            ll_a <= a_i[5:0];
+            ll_b <= b_i[5:0];
+            ll_r <= ll_rows(ll_a, ll_b);
+          end
+          assign llp = ll_r;
+        end
         fp_pipe #(.WIDTH(SIDE_W), .DEPTH(1)) u_pipe_a (
           .clk_i   (clk_i),
           .rst_i   (rst_i),
@@ -112,54 +173,74 @@ module fp_mul_prod #(
           .data_o  (sa)
         );
       end else begin : g_comb
-        wire [23:0] c_ll = a_i[11:0]  * b_i[11:0];
-        wire [23:0] c_lh = a_i[11:0]  * b_i[23:12];
-        wire [23:0] c_hl = a_i[23:12] * b_i[11:0];
-        wire [23:0] c_hh = a_i[23:12] * b_i[23:12];
+        wire [WH-1:0] c_hh = a_i[23:H] * b_i[23:H];
+        wire [23:0]   c_lh = a_i[H-1:0] * b_i[23:H];
+        wire [23:0]   c_hl = a_i[23:H] * b_i[H-1:0];
+        wire [23:0]   c_llp;
+        if (BLOCKS == 4) begin : g_b4
+          assign c_llp = a_i[11:0] * b_i[11:0];
+        end else begin : g_b3
+          assign c_llp = ll_rows(a_i[5:0], b_i[5:0]);
+        end
 
-        localparam integer WA = SIDE_W + 4 * 24;
+        localparam integer WA = SIDE_W + WH + 3 * 24;
         fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
           .clk_i   (clk_i),
           .rst_i   (rst_i),
           .valid_i (valid_i),
-          .data_i  ({side_i, c_ll, c_lh, c_hl, c_hh}),
+          .data_i  ({side_i, c_llp, c_lh, c_hl, c_hh}),
           .valid_o (va),
-          .data_o  ({sa, ll, lh, hl, hh})
+          .data_o  ({sa, llp, lh, hl, hh})
         );
       end
 
       // -----------------------------------------------------------------
-      // m2b: the two middle partial products summed
+      // m2b: the two middle partial products summed; aL bL (2H bits)
+      // whole (BLOCKS = 3: from its row pairs); lo, what the sticky bit
+      // needs of its low H bits: BLOCKS = 4 their OR, BLOCKS = 3 the bits
+      // themselves (ORed in m2c, after the pairs' sum)
       // -----------------------------------------------------------------
-      wire [24:0] c_mid   = {1'b0, lh} + {1'b0, hl};
-      wire        c_lo_st = |ll[11:0];
+      localparam integer WL = (BLOCKS == 3) ? H : 1;
+      wire [24:0]    c_mid = {1'b0, lh} + {1'b0, hl};
+      wire [2*H-1:0] c_ll;
+      wire [WL-1:0]  c_lo;
+      if (BLOCKS == 4) begin : g_ll4
+        assign c_ll = llp;
+        assign c_lo = |c_ll[11:0];
+      end else begin : g_ll3
+        // aL bL = r0 + 4 r1 + 16 r2 (< 2^12)
+        wire [11:0] r01 = {4'd0, llp[7:0]} + {2'd0, llp[15:8], 2'd0};
+        assign c_ll = r01 + {llp[23:16], 4'd0};
+        assign c_lo = c_ll[WL-1:0];
+      end
 
-      localparam integer WB = SIDE_W + 24 + 12 + 25 + 1;
+      localparam integer WB = SIDE_W + WH + H + 25 + WL;
       wire          vb;
       wire [WB-1:0] db;
       fp_pipe #(.WIDTH(WB), .DEPTH(BND[1] ? 1 : 0)) u_pipe_b (
         .clk_i   (clk_i),
         .rst_i   (rst_i),
         .valid_i (va),
-        .data_i  ({sa, hh, ll[23:12], c_mid, c_lo_st}),
+        .data_i  ({sa, hh, c_ll[2*H-1:H], c_mid, c_lo}),
         .valid_o (vb),
         .data_o  (db)
       );
 
       wire [SIDE_W-1:0] sb;
-      wire [23:0]       hh_b;
-      wire [11:0]       ll_hi;
+      wire [WH-1:0]     hh_b;
+      wire [H-1:0]      ll_hi;
       wire [24:0]       mid;
-      wire              lo_st;
-      assign {sb, hh_b, ll_hi, mid, lo_st} = db;
+      wire [WL-1:0]     lo;
+      assign {sb, hh_b, ll_hi, mid, lo} = db;
+      wire lo_st = |lo;
 
       // -----------------------------------------------------------------
-      // m2c: prod = hh * 2^24 + mid * 2^12 + ll; bits 47:12 by one adder
+      // m2c: prod = hh * 2^(2H) + mid * 2^H + ll; bits 47:H by one adder
       // -----------------------------------------------------------------
-      wire [35:0] c_hi = {hh_b, ll_hi} + {11'd0, mid};
+      wire [47-H:0] c_hi = {hh_b, ll_hi} + {{(23-H){1'b0}}, mid};
       assign valid_o  = vb;
-      assign top_o    = c_hi[35:9];
-      assign sticky_o = lo_st | (|c_hi[8:0]);
+      assign top_o    = c_hi[47-H:21-H];
+      assign sticky_o = lo_st | (|c_hi[20-H:0]);
       assign side_o   = sb;
     end else begin : g_lut
       // -----------------------------------------------------------------

@@ -13,12 +13,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-build/spatial-core-area}
 mkdir -p "$out"
-# core  kind-name  parameter beside LATENCY, ROUND, FTZ (- none)  latencies
-# (MUL_FEED: fp_mul with its feed register in front of the MULT18X18D)
+# core  kind-name  parameters beside LATENCY, ROUND, FTZ (comma-separated;
+# - none)  latencies (MUL_FEED: fp_mul with its feed register in front of
+# the MULT18X18D; MUL_B3, MUL_FEED_B3: its product in three blocks)
 rows=(
   "fp_add FP3_IR_ADD - 4 9 10"
   "fp_mul FP3_IR_MUL - 3 9 10"
   "fp_mul MUL_FEED FEED=1 10"
+  "fp_mul MUL_B3 MULT_BLOCKS=3 3 9"
+  "fp_mul MUL_FEED_B3 FEED=1,MULT_BLOCKS=3 10"
   "fp_div FP3_IR_DIV - 8"
   "fp_sqrt FP3_IR_SQRT - 8"
 )
@@ -28,13 +31,13 @@ for r in "${rows[@]}"; do
   for lat in $lats; do
     for cfg in "0 0" "0 1" "1 0"; do
       read -r round ftz <<<"$cfg"
-      params=(LATENCY=$lat $extra ROUND=$round FTZ=$ftz)
+      params=(LATENCY=$lat ${extra//,/ } ROUND=$round FTZ=$ftz)
       tag=""; for p in "${params[@]}"; do tag+="_${p%%=*}-${p#*=}"; done
       bash scripts/synth.sh "$out" "$core" ecp5 "${params[@]}" rtl/*.v >/dev/null
       read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
         "$out/${core}${tag}_ecp5_stat.txt")
       printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' "$kind" "$lat" "$round" "$ftz" \
-        "$luts" "$ffs" "$mult" "$core${extra:+, ${extra/=/ }}"
+        "$luts" "$ffs" "$mult" "$core${extra:+, ${extra//=/ }}"
     done
   done
 done

@@ -5,6 +5,7 @@
 //   ADD_LATENCY  fp_add LATENCY (issue to result, rising edges)
 //   MUL_LATENCY  fp_mul LATENCY
 //   MUL_FEED     fp_mul FEED (1: the fabric register in front of its DSP blocks)
+//   MUL_BLOCKS   fp_mul MULT_BLOCKS (4 or 3: its product's DSP blocks)
 //   DIV_LATENCY  fp_div and fp_sqrt LATENCY (the processor's div/sqrt
 //                unit: both on one write-back port, one latency)
 //   ROUND        0 RNE, 1 RTZ (every core)
@@ -19,6 +20,7 @@ module fpu_top #(
   parameter integer ADD_LATENCY = 4, // fp_add LATENCY
   parameter integer MUL_LATENCY = 3, // fp_mul LATENCY
   parameter integer MUL_FEED    = 0, // fp_mul FEED
+  parameter integer MUL_BLOCKS  = 4, // fp_mul MULT_BLOCKS
   parameter integer DIV_LATENCY = 8, // fp_div, fp_sqrt LATENCY
   parameter integer ROUND       = 0, // 0 RNE, 1 RTZ
   parameter integer FTZ         = 0  // 1: FTZ/DAZ
@@ -77,6 +79,7 @@ module fpu_top #(
   fp_mul #(
     .LATENCY (MUL_LATENCY),
     .FEED    (MUL_FEED),
+    .MULT_BLOCKS (MUL_BLOCKS),
     .ROUND   (ROUND),
     .FTZ     (FTZ)
   ) u_mul (

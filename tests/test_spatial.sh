@@ -49,7 +49,8 @@ build_tb() {
 # The cases: every shipped model with every integrator that applies to it
 # (folded, --no-fit-check: most do not fit the chip at the default
 # latencies), then variants of the cores: the literal ship on the chip
-# builds' cores (--clock-cores: fp_mul with its feed register), the
+# builds' cores (--clock-cores: fp_mul with its feed register), also with
+# three MULT18X18D per multiply (--mult-blocks 3), the
 # oscillator with every multiply on fp_mul (--no-scaleb), the spring with
 # RTZ and FTZ cores.  --quick: the ship, the spring, the oscillator and the
 # projectile and the variants only (a quick check while developing).
@@ -70,6 +71,7 @@ else
   done
 fi
 cases+=("ship-literal   models/ship.fp3m       --integrator rk4se --literal --clock-cores"
+        "ship-literal-b3 models/ship.fp3m      --integrator rk4se --literal --clock-cores --mult-blocks 3"
         "oscillator-rk4-no-scaleb models/oscillator.fp3m --integrator rk4 --no-scaleb"
         "spring-rk4-rtz-ftz models/spring.fp3m --integrator rk4 --round rtz --ftz")
 
@@ -209,6 +211,8 @@ bad() {
 bad "unknown integrator" models/ship.fp3m --integrator rk5
 bad "bad rounding" models/ship.fp3m --round up
 bad "fp_mul's feed register at latency 3" models/ship.fp3m --mul-feed --mul-latency 3
+bad "three MULT18X18D per multiply without the DSP product" models/ship.fp3m --mult-blocks 3 --mul-latency 10
+bad "two MULT18X18D per multiply" models/ship.fp3m --mult-blocks 2
 bad "--steps without --vectors" models/ship.fp3m --steps 3
 bad "missing model" models/no-such-model.fp3m
 bad "rk4se on an unsplit model" models/projectile.fp3m --integrator rk4se

@@ -29,6 +29,7 @@ static void usage(FILE *f) {
           "usage: fp3 spatial MODEL.fp3m | --scene FILE -o DIR [--integrator I] [--literal]\n"
           "                   [--round rne|rtz] [--ftz]\n"
           "                   [--add-latency N] [--mul-latency N] [--div-latency N]\n"
+          "                   [--mul-feed] [--mult-blocks 4|3] [--clock-cores]\n"
           "                   [--scaleb-latency N] [--no-scaleb] [--no-fit-check]\n"
           "                   [--vectors N [--steps K] [--seed S]]\n"
           "                   [--pipelines N [--objects M]]\n"
@@ -61,6 +62,11 @@ static void usage(FILE *f) {
           "                   (default %u, %u, %u; div also for sqrt)\n"
           "  --mul-feed       fp_mul's feed register in front of its MULT18X18D\n"
           "                   (needs --mul-latency 7 to 10)\n"
+          "  --mult-blocks 4|3   MULT18X18D per multiply (default 4); 3 cuts the\n"
+          "                   product as 18 x 18, two 18 x 6 and a 6 x 6 piece in\n"
+          "                   LUTs (70 to 95 LUT4s more), for chips that run out of\n"
+          "                   multiplier blocks first (needs --mul-latency at most\n"
+          "                   9, 10 with --mul-feed)\n"
           "  --scaleb-latency N   the latency of fp_scaleb, a multiply by a constant\n"
           "                   +-2^k as an exponent adjustment (default %u)\n"
           "  --clock-cores    the chip builds' cores, for clock rate: add 9, mul 10\n"
@@ -129,6 +135,10 @@ int fp3_parse_spatial(int argc, char **argv, fp3_spatial_args *a) {
                                   "cycles", &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->opts.scaleb_latency = (unsigned)k;
+    } else if ((r = fp3_opt_count(argc, argv, &i, "spatial", "--mult-blocks", 3, 4,
+                                  "MULT18X18D", &k)) != 0) {
+      if (r < 0) return FP3_ARGS_BAD;
+      a->opts.mul_blocks = (unsigned)k;
     } else if (strcmp(argv[i], "--clock-cores") == 0) {
       fp3_spatial_clock_cores(&a->opts);
     } else if (strcmp(argv[i], "--mul-feed") == 0) {

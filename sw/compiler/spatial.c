@@ -58,6 +58,7 @@ void fp3_spatial_defaults(fp3_spatial_opts *o) {
   o->add_latency = c.add_latency;
   o->mul_latency = c.mul_latency;
   o->mul_feed = 0;
+  o->mul_blocks = 4;
   o->div_latency = c.div_latency;
   o->sign_latency = 1;
   o->scaleb_latency = 2;
@@ -212,10 +213,12 @@ static void count_segment(fp3_spatial_stats *st, unsigned d) {
 /* ---- the area estimate ---- */
 
 /* Pseudo-kinds of the area table beside the IR's: fp_scaleb, fp_mul with
- * its feed register (FEED = 1); fp_sign (abs, neg, min, max) is
- * FP3_IR_ABS. */
+ * its feed register (FEED = 1), fp_mul of three blocks (MULT_BLOCKS = 3)
+ * without and with it; fp_sign (abs, neg, min, max) is FP3_IR_ABS. */
 #define AREA_SCALEB FP3_IR_KINDS
 #define AREA_MUL_FEED (FP3_IR_KINDS + 1)
+#define AREA_MUL_B3 (FP3_IR_KINDS + 2)
+#define AREA_MUL_FEED_B3 (FP3_IR_KINDS + 3)
 
 /* One core configuration synthesized alone: Yosys 0.23 synth_ecp5 through
  * scripts/synth.sh ecp5 (FP3_ECP5_DSP: fp_mul's product in MULT18X18D
@@ -234,6 +237,8 @@ typedef struct core_area {
 #define SIGN FP3_IR_ABS
 #define SCALEB AREA_SCALEB
 #define MUL_FEED AREA_MUL_FEED
+#define MUL_B3 AREA_MUL_B3
+#define MUL_FEED_B3 AREA_MUL_FEED_B3
 static const core_area core_areas[] = {
     {FP3_IR_ADD, 4, 0, 0, 1099, 291, 0}, /* fp_add */
     {FP3_IR_ADD, 4, 0, 1, 1247, 291, 0}, /* fp_add */
@@ -256,6 +261,15 @@ static const core_area core_areas[] = {
     {MUL_FEED, 10, 0, 0, 1037, 693, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 0, 1, 577, 679, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 1, 0, 972, 693, 4}, /* fp_mul, FEED 1 */
+{MUL_B3, 3, 0, 0, 1717, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 0, 1, 787, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 1, 0, 1263, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 0, 1109, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 1, 666, 649, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 1, 0, 1064, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 0, 1104, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 1, 679, 714, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 1, 0, 1062, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
     {FP3_IR_DIV, 8, 0, 0, 2596, 793, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 0, 1, 2245, 785, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 1, 0, 2588, 793, 0}, /* fp_div */
@@ -276,6 +290,8 @@ static const core_area core_areas[] = {
 #undef SIGN
 #undef SCALEB
 #undef MUL_FEED
+#undef MUL_B3
+#undef MUL_FEED_B3
 
 /* The table's row for a core: its kind, FTZ and rounding if measured (else
  * the other rounding), at the nearest measured latency; *exact = 0 when
@@ -313,6 +329,8 @@ static void estimate(struct fp3_spatial *s) {
     if (x->scale >= 0) {
       kind = AREA_SCALEB;
       lat = s->o.scaleb_latency;
+    } else if (kind == FP3_IR_MUL && s->o.mul_blocks == 3) {
+      kind = s->o.mul_feed ? AREA_MUL_FEED_B3 : AREA_MUL_B3;
     } else if (kind == FP3_IR_MUL && s->o.mul_feed) {
       kind = AREA_MUL_FEED;
     }
@@ -610,11 +628,13 @@ static void emit(struct fp3_spatial *s, fp3_strbuf *t) {
       break;
     case FP3_IR_MUL:
     case FP3_IR_DIV:
-      fp3_strbuf_printf(t, "  %s #(.LATENCY(%u),%s .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
+      fp3_strbuf_printf(t, "  %s #(.LATENCY(%u),%s%s .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
                            "    .clk_i(clk_i), .rst_i(rst_i), .valid_i(1'b1),\n"
                            "    .a_i(%s), .b_i(%s),\n",
                         k == FP3_IR_MUL ? "fp_mul" : "fp_div", lat,
-                        k == FP3_IR_MUL && s->o.mul_feed ? " .FEED(1)," : "", x->sig, a, b);
+                        k == FP3_IR_MUL && s->o.mul_feed ? " .FEED(1)," : "",
+                        k == FP3_IR_MUL && s->o.mul_blocks == 3 ? " .MULT_BLOCKS(3)," : "",
+                        x->sig, a, b);
       break;
     case FP3_IR_SQRT:
       fp3_strbuf_printf(t, "  fp_sqrt #(.LATENCY(%u), .ROUND(ROUND), .FTZ(FTZ)) u_%s (\n"
@@ -734,8 +754,9 @@ static void make_report(struct fp3_spatial *s, fp3_strbuf *t) {
                        "flip-flops, every MULT18X18D, the EBRs less 16: the rest for the frame "
                        "and routing)\n",
                     st->fit, st->limit);
-  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u%s, div/sqrt %u, sign %u, scaleb %u%s; %s%s\n",
+  fp3_strbuf_printf(t, "cores: latencies add/sub %u, mul %u%s%s, div/sqrt %u, sign %u, scaleb %u%s; %s%s\n",
                     s->o.add_latency, s->o.mul_latency, s->o.mul_feed ? " (feed)" : "",
+                    s->o.mul_blocks == 3 ? " (3 MULT18X18D)" : "",
                     s->o.div_latency, s->o.sign_latency,
                     s->o.scaleb_latency, s->o.scaleb ? "" : " (off: fp_mul)",
                     s->o.rtz ? "rtz" : "rne", s->o.ftz ? ", ftz" : "");
@@ -753,6 +774,15 @@ int fp3_spatial_build(fp3_compiled *c, const fp3_model *m, const char *integ,
   if (o->mul_feed && (o->mul_latency < 7 || o->mul_latency > 10)) {
     snprintf(msg, n, "fp_mul's feed register needs a multiply latency of 7 to 10 (the DSP "
              "product with the blocks' own registers), not %u", o->mul_latency);
+    return -1;
+  }
+  if (o->mul_blocks != 3 && o->mul_blocks != 4) {
+    snprintf(msg, n, "fp_mul's product takes 4 or 3 MULT18X18D, not %u", o->mul_blocks);
+    return -1;
+  }
+  if (o->mul_blocks == 3 && o->mul_latency - (o->mul_feed ? 1u : 0u) > 9) {
+    snprintf(msg, n, "3 MULT18X18D per multiply needs fp_mul's DSP product: a multiply latency "
+             "of at most 9 (10 with the feed register), not %u", o->mul_latency);
     return -1;
   }
   struct fp3_spatial *s = calloc(1, sizeof *s);

@@ -77,6 +77,12 @@ typedef struct fp3_spatial_opts {
                             front of its MULT18X18D (mul_latency 7 to
                             10: the DSP product with the blocks' own
                             registers, then this one); 0: none          */
+  unsigned mul_blocks;   /* fp_mul MULT_BLOCKS: the MULT18X18D per
+                            product, 4 (12 x 12-bit pieces) or 3 (18 x 18,
+                            two 18 x 6, the 6 x 6 piece in LUTs: for
+                            chips the multiplier blocks bound); 3 needs
+                            the DSP product (mul_latency less the feed
+                            register at most 9)                         */
   unsigned div_latency;  /* fp_div and fp_sqrt LATENCY                   */
   unsigned sign_latency; /* fp_sign LATENCY (abs, neg, min, max)         */
   unsigned scaleb_latency; /* fp_scaleb LATENCY                          */
