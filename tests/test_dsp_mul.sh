@@ -12,7 +12,8 @@
 #     MULT18X18D, all three registers on) and not at 5 (four, none on)
 #     nor at 10 (the LUT product: none); at 10 with FEED = 1 it takes
 #     them with the feed register in front, at least the 48 significand
-#     flip-flops more than at 9.
+#     flip-flops more than at 9; with MULT_BLOCKS = 3 it takes three
+#     MULT18X18D, registered at 10 with FEED = 1, not at 3.
 set -euo pipefail
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 synth() { # OUTNAME TOP PARAM... -- FILES
@@ -48,9 +49,10 @@ done
 # fp_mul's product by latency: registered blocks from 6 to 9 only.
 # (every RTL file read, as make synth reads them: no second list of
 # fp_mul's submodules to keep beside mk/fpu.mk's)
-for spec in 5:4:0 6:4:4 9:4:4 10:0:0 10,FEED=1:4:4; do
+for spec in 5:4:0 6:4:4 9:4:4 10:0:0 10,FEED=1:4:4 10,FEED=1,MULT_BLOCKS=3:3:3 \
+            3,MULT_BLOCKS=3:3:0; do
   IFS=: read -r lat blocks on <<<"$spec"
-  params="LATENCY=${lat/,/ }"                                  # LATENCY=10 FEED=1
+  params="LATENCY=${lat//,/ }"                                 # LATENCY=10 FEED=1
   synth fp_mul ecp5 $params rtl/*.v
   base="$tmp/fp_mul_$(echo "$params" | sed 's/=/-/g; s/ /_/g')_ecp5"
   got_blocks=$(count MULT18X18D "${base}_stat.txt")
