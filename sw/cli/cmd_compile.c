@@ -187,11 +187,8 @@ static int run_compile(const fp3_compile_args *a) {
     fputs(fp3_compiled_text(c), stdout);
   }
   const fp3_compile_stats *st = fp3_compiled_stats(c);
-  char zeros[256] = ""; /* the params whose terms went */
-  size_t zl = 0;
-  for (unsigned k = 1; k < m->nparam && o.drop_zero; k++)
-    if (zero[k] && zl < sizeof zeros)
-      zl += (size_t)snprintf(zeros + zl, sizeof zeros - zl, "%s%s", zl ? ", " : "", m->param[k]);
+  fp3_strbuf zeros = {0}; /* the params whose terms went */
+  const unsigned zl = o.drop_zero ? fp3_zero_params_list(m, zero, &zeros) : 0;
   if (rc == 0 && json) {
     printf("{\"scene\": ");
     if (scene) fp3_json_string(stdout, scene);
@@ -227,8 +224,9 @@ static int run_compile(const fp3_compile_args *a) {
             o.fold ? "folded" : "literal", st->body_insns, st->literal_body_insns,
             st->prologue_insns, st->regs_needed, st->num_regs, st->est_cycles_later,
             st->est_cycles_first, o.fmax_pipe ? " for FMAX_PIPE=1" : "",
-            zl ? "; removed, zero in every object: " : "", zeros);
+            zl ? "; removed, zero in every object: " : "", zl && zeros.s ? zeros.s : "");
   }
+  free(zeros.s);
   fp3_compiled_free(c);
   free(m);
   return rc;

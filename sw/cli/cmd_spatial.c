@@ -329,9 +329,7 @@ static int run_spatial(const fp3_spatial_args *a) {
   if (a->scene) {
     fp3_strbuf_printf(&rep, "scene: %s, %zu objects; terms removed, zero in every object: ",
                       a->scene, scene_objects);
-    int any = 0;
-    for (unsigned k = 1; k < m->nparam && co.drop_zero; k++)
-      if (zero[k]) fp3_strbuf_printf(&rep, "%s%s", any++ ? ", " : "", m->param[k]);
+    const unsigned any = co.drop_zero ? fp3_zero_params_list(m, zero, &rep) : 0;
     fp3_strbuf_printf(&rep, "%s\n", any ? "" : co.drop_zero ? "none" : "none (--literal)");
   }
   fp3_strbuf_printf(&rep, "hash: %016llx (FNV-1a 64 of %s)\n",

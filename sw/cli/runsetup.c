@@ -88,6 +88,13 @@ fp3_model *fp3_scene_model(const char *path, const char *ship_model, unsigned ch
   return m;
 }
 
+unsigned fp3_zero_params_list(const fp3_model *m, const unsigned char *zero, fp3_strbuf *b) {
+  unsigned any = 0;
+  for (unsigned k = 1; k < m->nparam; k++)
+    if (zero[k]) fp3_strbuf_printf(b, "%s%s", any++ ? ", " : "", m->param[k]);
+  return any;
+}
+
 /* 1 if paths a and b name the same file. */
 static int same_file(const char *a, const char *b) {
   struct stat sa, sb;

@@ -26,6 +26,7 @@
 #include "engine.h"
 #include "image.h"
 #include "model.h"
+#include "report.h"
 #include "mscene.h"
 
 #define FP3_DEFAULT_MODEL "models/ship.fp3m" /* the paper's Equations (1) */
@@ -62,6 +63,11 @@ int fp3_read_scene(const char *path, fp3_mscene *sc, char *msg, size_t n);
  * caller frees it with free()), or NULL with "FILE:LINE: reason" in msg. */
 fp3_model *fp3_scene_model(const char *path, const char *ship_model, unsigned char *zero,
                            size_t *objects, char *msg, size_t n);
+
+/* Append to b the params whose terms a scene's program drops, those k
+ * >= 1 (not h) with zero[k] set (fp3_scene_model), as "a, b, c"; returns
+ * how many. */
+unsigned fp3_zero_params_list(const fp3_model *m, const unsigned char *zero, fp3_strbuf *b);
 
 /* The program: a->program, or default_program (NULL: none) when neither
  * --model, a model scene, --integrator nor --literal asks for a compiled
