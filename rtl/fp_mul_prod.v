@@ -35,8 +35,8 @@
 //              chain), m2b sums the pairs (two carry chains of 12 bits,
 //              beside the middle sum).  It frees a quarter of the
 //              multiplier blocks for 67 to 94 LUT4s and 35 flip-flops
-//              (docs/spatial.md: the literal ship chip is bounded by its
-//              MULT18X18D, 4 per multiplier)
+//              (alone, scripts/spatial-core-area.sh), for chips whose
+//              multiplier blocks run out first (docs/spatial.md)
 //   SIDE_W  bits of the side-band word (>= 1)
 //
 // Ports:

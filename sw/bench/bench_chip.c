@@ -25,7 +25,8 @@
  *
  * Then the spatial rows (docs/spatial.md): the ship's rk4se step, folded
  * and literal, as the spatial chip `make pnr-spatial` places it (the cores
- * of fp3_spatial_clock_cores; N pipelines: ship_chip below), on the
+ * of fp3_spatial_clock_cores, as many pipelines N as the area estimate
+ * fits), on the
  * spatial engine (engine_spatial.h: the chip's Verilated RTL, built into
  * build/spatial-cache on first use): all of the engine's slots, at least
  * N (L + 3) objects, so the pipelines are full and the figure is their
@@ -170,17 +171,6 @@ static int ship_programs(const fp3_model *m, const fp3_engine *e, fp3_compiled *
  * all of its slots.  *r as measure's, with contexts = the slots, lanes =
  * the pipelines, bound = 1 / pipelines; *lat the pipeline's latency.  0,
  * or -1 with the message on stderr. */
-/* The ship chips make pnr-spatial places and bench-chip's spatial rows
- * run (mk/rtl.mk reads their Fmax medians from their folders): the
- * folded step as the area estimate fits it (3 pipelines, 4 MULT18X18D a
- * multiply); the literal one with 3 MULT18X18D a multiply and 3
- * pipelines (MULT_BLOCKS=3 PIPELINES=3: 126 of the 156 blocks; the
- * estimate fits 2, by LUT4s, but runs 22 % above synthesis, which maps
- * the 3 to 88.6 % of the LUT4s, docs/spatial.md). */
-static const struct {
-  unsigned mul_blocks, pipelines; /* pipelines 0: as the estimate fits */
-} ship_chip[2] = {{4, 0}, {3, 3}}; /* [literal] */
-
 static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, unsigned *lat) {
   char msg[4096], root[4096];
   fp3_compile_opts co;
@@ -198,10 +188,8 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
   fp3_spatial_opts so;
   fp3_spatial_defaults(&so);
   fp3_spatial_clock_cores(&so); /* what make pnr-spatial places */
-  so.mul_blocks = ship_chip[literal].mul_blocks;
   if (fp3_spatial_build(c, m, "rk4se", &so, &sp, msg, sizeof msg)) goto out;
-  const unsigned fit =
-      ship_chip[literal].pipelines ? ship_chip[literal].pipelines : fp3_spatial_stats_of(sp)->fit;
+  const unsigned fit = fp3_spatial_stats_of(sp)->fit;
   *lat = fp3_spatial_stats_of(sp)->latency;
   if (fit == 0) {
     snprintf(msg, sizeof msg, "the %s pipeline does not fit the LFE5U-85F once", prog);
