@@ -34,7 +34,7 @@
 //              its rows in pairs (3 of 8 bits, an AND level and one carry
 //              chain), m2b sums the pairs (two carry chains of 12 bits,
 //              beside the middle sum).  It frees a quarter of the
-//              multiplier blocks for 67 to 94 LUT4s and 35 flip-flops
+//              multiplier blocks for 72 to 102 LUT4s and 35 flip-flops
 //              (alone, scripts/spatial-core-area.sh), for chips whose
 //              multiplier blocks run out first (docs/spatial.md)
 //   SIDE_W  bits of the side-band word (>= 1)

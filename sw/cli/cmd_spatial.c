@@ -64,7 +64,7 @@ static void usage(FILE *f) {
           "                   (needs --mul-latency 7 to 10)\n"
           "  --mult-blocks 4|3   MULT18X18D per multiply (default 4); 3 cuts the\n"
           "                   product as 18 x 18, two 18 x 6 and a 6 x 6 piece in\n"
-          "                   LUTs (70 to 95 LUT4s more), for chips that run out of\n"
+          "                   LUTs (70 to 100 LUT4s more), for chips that run out of\n"
           "                   multiplier blocks first (needs --mul-latency at most\n"
           "                   9, 10 with --mul-feed)\n"
           "  --scaleb-latency N   the latency of fp_scaleb, a multiply by a constant\n"

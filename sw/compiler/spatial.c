@@ -249,19 +249,19 @@ static const core_area core_areas[] = {
     {FP3_IR_ADD, 10, 0, 0, 1031, 766, 0}, /* fp_add */
     {FP3_IR_ADD, 10, 0, 1, 1119, 766, 0}, /* fp_add */
     {FP3_IR_ADD, 10, 1, 0, 988, 766, 0}, /* fp_add */
-    {FP3_IR_MUL, 3, 0, 0, 1655, 187, 4}, /* fp_mul */
-    {FP3_IR_MUL, 3, 0, 1, 681, 185, 4}, /* fp_mul */
-    {FP3_IR_MUL, 3, 1, 0, 1191, 187, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 0, 1015, 626, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 1, 576, 614, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 1, 0, 973, 626, 4}, /* fp_mul */
-    {FP3_IR_MUL, 10, 0, 0, 2215, 1210, 0}, /* fp_mul */
-    {FP3_IR_MUL, 10, 0, 1, 1726, 1196, 0}, /* fp_mul */
-    {FP3_IR_MUL, 10, 1, 0, 2147, 1210, 0}, /* fp_mul */
-    {MUL_FEED, 10, 0, 0, 1037, 693, 4}, /* fp_mul, FEED 1 */
+    {FP3_IR_MUL, 3, 0, 0, 1294, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 0, 1, 687, 185, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 1, 0, 1172, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 0, 1035, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 1, 577, 614, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 1, 0, 977, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 10, 0, 0, 2206, 1210, 0}, /* fp_mul */
+    {FP3_IR_MUL, 10, 0, 1, 1705, 1196, 0}, /* fp_mul */
+    {FP3_IR_MUL, 10, 1, 0, 2142, 1210, 0}, /* fp_mul */
+    {MUL_FEED, 10, 0, 0, 1032, 693, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 0, 1, 577, 679, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 1, 0, 972, 693, 4}, /* fp_mul, FEED 1 */
-{MUL_B3, 3, 0, 0, 1717, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 0, 0, 1717, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
     {MUL_B3, 3, 0, 1, 787, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
     {MUL_B3, 3, 1, 0, 1263, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
     {MUL_B3, 9, 0, 0, 1109, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
