@@ -199,6 +199,7 @@ static void parse_spatial(int argc, char **argv) {
       a.opts.mul_latency > 64 || a.opts.div_latency < 1 || a.opts.div_latency > 64 ||
       a.vec_steps < 1)
     fail("spatial", "a latency or --steps out of range");
+  if (a.opts.mul_blocks != 3 && a.opts.mul_blocks != 4) fail("spatial", "--mult-blocks not 3 or 4");
   check_str("spatial", a.model, 0);
   check_str("spatial", a.scene, 0);
   check_str("spatial", a.dir, 0);
