@@ -249,27 +249,27 @@ static const core_area core_areas[] = {
     {FP3_IR_ADD, 10, 0, 0, 1031, 766, 0}, /* fp_add */
     {FP3_IR_ADD, 10, 0, 1, 1119, 766, 0}, /* fp_add */
     {FP3_IR_ADD, 10, 1, 0, 988, 766, 0}, /* fp_add */
-    {FP3_IR_MUL, 3, 0, 0, 1044, 187, 4}, /* fp_mul */
-    {FP3_IR_MUL, 3, 0, 1, 700, 185, 4}, /* fp_mul */
-    {FP3_IR_MUL, 3, 1, 0, 897, 187, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 0, 811, 621, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 0, 1, 576, 614, 4}, /* fp_mul */
-    {FP3_IR_MUL, 9, 1, 0, 766, 621, 4}, /* fp_mul */
-    {FP3_IR_MUL, 10, 0, 0, 2018, 1205, 0}, /* fp_mul */
+    {FP3_IR_MUL, 3, 0, 0, 1294, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 0, 1, 687, 185, 4}, /* fp_mul */
+    {FP3_IR_MUL, 3, 1, 0, 1172, 187, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 0, 1035, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 0, 1, 577, 614, 4}, /* fp_mul */
+    {FP3_IR_MUL, 9, 1, 0, 977, 626, 4}, /* fp_mul */
+    {FP3_IR_MUL, 10, 0, 0, 2206, 1210, 0}, /* fp_mul */
     {FP3_IR_MUL, 10, 0, 1, 1705, 1196, 0}, /* fp_mul */
-    {FP3_IR_MUL, 10, 1, 0, 1975, 1205, 0}, /* fp_mul */
-    {MUL_FEED, 10, 0, 0, 804, 688, 4}, /* fp_mul, FEED 1 */
-    {MUL_FEED, 10, 0, 1, 589, 679, 4}, /* fp_mul, FEED 1 */
-    {MUL_FEED, 10, 1, 0, 757, 688, 4}, /* fp_mul, FEED 1 */
-    {MUL_B3, 3, 0, 0, 1137, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 3, 0, 1, 771, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 3, 1, 0, 977, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 0, 0, 903, 656, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 0, 1, 679, 649, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 1, 0, 859, 656, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 0, 0, 895, 723, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 0, 1, 666, 714, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 1, 0, 851, 723, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {FP3_IR_MUL, 10, 1, 0, 2142, 1210, 0}, /* fp_mul */
+    {MUL_FEED, 10, 0, 0, 1032, 693, 4}, /* fp_mul, FEED 1 */
+    {MUL_FEED, 10, 0, 1, 577, 679, 4}, /* fp_mul, FEED 1 */
+    {MUL_FEED, 10, 1, 0, 972, 693, 4}, /* fp_mul, FEED 1 */
+    {MUL_B3, 3, 0, 0, 1717, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 0, 1, 787, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 1, 0, 1263, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 0, 1109, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 1, 666, 649, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 1, 0, 1064, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 0, 1104, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 1, 679, 714, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 1, 0, 1062, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
     {FP3_IR_DIV, 8, 0, 0, 2596, 793, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 0, 1, 2245, 785, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 1, 0, 2588, 793, 0}, /* fp_div */
