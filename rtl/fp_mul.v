@@ -26,10 +26,10 @@
 //                      | m3b | m4a | m4b | out, plus L-11 delay stages
 //            where in = operand registers;
 //              m1a = unpack, the fields' tests for the special cases,
-//                    the operand to normalise (a subnormal one) and its
-//                    leading zeros (fp_mul_unpack_norm), exponent sum;
-//              m1b = normalising shift of that significand, the exponent
-//                    less the shift, the special case decided;
+//                    leading zeros of subnormal significands
+//                    (fp_mul_unpack_norm), exponent sum;
+//              m1b = normalising shift of the significands, the exponent
+//                    less the shifts, the special case decided;
 //              m2a = from the exponent (it alone decides them): the result
 //                    exponent for either position of the product's
 //                    leading one and the denormalisation shift; the
@@ -209,39 +209,22 @@ module fp_mul #(
   wire [5:0] c1_cls = {a_exp == EXP_MAX, a_exp == 8'd0, |a_in[22:0],
                        b_exp == EXP_MAX, b_exp == 8'd0, |b_in[22:0]};
 
-  // Significands (with the weight of the exponent fields), and one
-  // normaliser: slot x gets the operand whose leading zeros are counted
-  // (here) and shifted out (m1b), slot y the other, as it is.  A product
-  // needs at most one normalised significand: with one subnormal operand
-  // it goes to x (b when b's exponent field is 0, else a), and with two
-  // the product is below 2^-252, so that whatever y's leading zeros every
-  // bit goes to the sticky bit and the result rounds to zero with
-  // underflow and inexact, as with both normalised.  An a that is NaN or
-  // infinite is never swapped, so that the special case reads a NaN's
-  // payload and quiet bit from its own slot (a NaN b has a nonzero field
-  // and is never swapped either).  Cost: two 31-bit multiplexers in front
-  // of the unpacking, against a second leading-zero count, normalising
-  // shift and exponent subtraction (about 160 LUT4s less).  FTZ has no
-  // subnormal operands: no swap.
-  wire        c1_swap = (FTZ == 0) && (b_exp == 8'd0) && (a_exp != EXP_MAX);
-  wire [30:0] c1_x    = c1_swap ? b_in[30:0] : a_in[30:0];
-  wire [30:0] c1_y    = c1_swap ? a_in[30:0] : b_in[30:0];
-  wire [23:0] c1_aman, c1_bman; // slots x and y
-  wire [4:0]  c1_alz;
-  wire [4:0]  c1_ylz_unused;
-  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_x (
-    .exp_i  (c1_x[30:23]),
-    .frac_i (c1_x[22:0]),
+  // Significands (with the weight of the exponent fields) and their
+  // leading-zero counts.
+  wire [23:0] c1_aman, c1_bman;
+  wire [4:0]  c1_alz, c1_blz;
+  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_a (
+    .exp_i  (a_exp),
+    .frac_i (a_in[22:0]),
     .man_o  (c1_aman),
     .lz_o   (c1_alz)
   );
-  fp_mul_unpack_norm #(.FTZ(FTZ), .COUNT(0)) u_unpack_y (
-    .exp_i  (c1_y[30:23]),
-    .frac_i (c1_y[22:0]),
+  fp_mul_unpack_norm #(.FTZ(FTZ)) u_unpack_b (
+    .exp_i  (b_exp),
+    .frac_i (b_in[22:0]),
     .man_o  (c1_bman),
-    .lz_o   (c1_ylz_unused)
+    .lz_o   (c1_blz)
   );
-  wire unused_ylz = &{1'b0, c1_ylz_unused, 1'b0};
 
   // Biased exponent of the product taken as a value in [1, 2) times 2
   // (the product of two significands in [1, 2) lies in [1, 4)), before
@@ -257,7 +240,7 @@ module fp_mul #(
   localparam integer WR = 1 + 1 + 1 + 1 + 1 + 1 + 2;
   localparam integer WS = 1 + 32 + 1 + 1;
 
-  localparam integer W1 = WQ + 10 + 24 + 24 + 5;
+  localparam integer W1 = WQ + 10 + 24 + 24 + 5 + 5;
   wire          s1_valid;
   wire [W1-1:0] s1_data;
   fp_pipe #(.WIDTH(W1), .DEPTH(BND[B_M1B] ? 1 : 0)) u_pipe1 (
@@ -265,7 +248,7 @@ module fp_mul #(
     .rst_i   (rst_i),
     .valid_i (s0_valid),
     .data_i  ({c1_cls, a_sign, b_sign, c1_exp,
-               c1_aman, c1_bman, c1_alz}),
+               c1_aman, c1_bman, c1_alz, c1_blz}),
     .valid_o (s1_valid),
     .data_o  (s1_data)
   );
@@ -274,19 +257,17 @@ module fp_mul #(
   wire          s1_asign, s1_bsign;
   wire [9:0]    s1_exp;
   wire [23:0]   s1_aman, s1_bman;
-  wire [4:0]    s1_alz;
+  wire [4:0]    s1_alz, s1_blz;
   assign {s1_amax, s1_azero, s1_anz, s1_bmax, s1_bzero, s1_bnz, s1_asign,
-          s1_bsign, s1_exp, s1_aman, s1_bman, s1_alz} = s1_data;
+          s1_bsign, s1_exp, s1_aman, s1_bman, s1_alz, s1_blz} = s1_data;
 
   // ---------------------------------------------------------------------
-  // m1b: normalise slot x's significand (leading one at bit 23); the
-  // exponent of the product of the slots' significands.  From here on
-  // "a" and "b" of a significand are slots x and y; they are the
-  // operands a and b whenever the special case reads them (a NaN).
+  // m1b: normalise the significands (leading one at bit 23); the exponent
+  // of the normalised significands
   // ---------------------------------------------------------------------
   wire [23:0] c1b_aman = s1_aman << s1_alz;
-  wire [23:0] c1b_bman = s1_bman;
-  wire [9:0]  c1b_exp  = s1_exp - {5'd0, s1_alz};
+  wire [23:0] c1b_bman = s1_bman << s1_blz;
+  wire [9:0]  c1b_exp  = s1_exp - {5'd0, s1_alz} - {5'd0, s1_blz};
 
   // The special case: NaN (a quiet one has fraction bit 22 set, the
   // significand's bit 22), infinity, zero (or subnormal read as zero

@@ -2,11 +2,8 @@
 // binary32 operand for fp_mul (combinational).
 //
 // Parameters:
-//   FTZ    1: subnormals are read as zero by the caller; no leading-zero
-//          count is needed (lz_o = 0)
-//   COUNT  1: count the leading zeros (default); 0: lz_o = 0, for an
-//          operand the caller does not normalise (fp_mul's second slot:
-//          no fp_lzc, about 60 LUT4s less)
+//   FTZ  1: subnormals are read as zero by the caller; no leading-zero
+//        count is needed (lz_o = 0)
 //
 // Ports:
 //   exp_i   biased exponent field (0 for zero/subnormal)
@@ -19,7 +16,7 @@
 //           special case)
 //   lz_o    leading zeros of man_o (0 for normals, 0 to 22 for
 //           subnormals, 24 for zero): man_o << lz_o has its leading one
-//           at bit 23, with the exponent exp_i - lz_o; 0 with COUNT = 0
+//           at bit 23, with the exponent exp_i - lz_o
 //
 // fp_mul adds the exponent fields as they are, shifts the significand by
 // lz_o in the next stage (m1b) and subtracts lz_o from the exponent there,
@@ -29,8 +26,7 @@
 `default_nettype none
 
 module fp_mul_unpack_norm #(
-  parameter integer FTZ   = 0, // 1: no subnormal support needed
-  parameter integer COUNT = 1  // 0: no leading-zero count (lz_o = 0)
+  parameter integer FTZ = 0 // 1: no subnormal support needed
 ) (
   input  wire [7:0]  exp_i,
   input  wire [22:0] frac_i,
@@ -47,18 +43,14 @@ module fp_mul_unpack_norm #(
     end else begin : g_ieee
       wire normal = (exp_i != 8'd0);
       assign man_o = normal ? {1'b1, frac_i} : {frac_i, 1'b0};
-      if (COUNT != 0) begin : g_count
-        // Leading zeros of {frac_i, 0}, the subnormal significand,
-        // counted beside the exponent-is-zero test.
-        wire [4:0] lz_sub;
-        fp_lzc #(.WIDTH(24)) u_lzc (
-          .v_i ({frac_i, 1'b0}),
-          .n_o (lz_sub)
-        );
-        assign lz_o = normal ? 5'd0 : lz_sub;
-      end else begin : g_no_count
-        assign lz_o = 5'd0;
-      end
+      // Leading zeros of {frac_i, 0}, the subnormal significand, counted
+      // beside the exponent-is-zero test.
+      wire [4:0] lz_sub;
+      fp_lzc #(.WIDTH(24)) u_lzc (
+        .v_i ({frac_i, 1'b0}),
+        .n_o (lz_sub)
+      );
+      assign lz_o = normal ? 5'd0 : lz_sub;
     end
   endgenerate
 
