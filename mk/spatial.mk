@@ -36,13 +36,15 @@ TEST_SCRIPTS += tests/test_spatial_engine.sh
 # behind its AXI4-Lite slave; with SCENE, for that scene: the terms of
 # params zero in every object removed, `fp3 spatial --scene`; LITERAL=1
 # the integrator's literal operations, `--literal`; MULT_BLOCKS=3 three
-# MULT18X18D per multiply, `--mult-blocks 3`) on the LFE5U-85F, N
+# MULT18X18D per multiply, `--mult-blocks 3`; SDFF=1 Yosys's flip-flops
+# with a synchronous set or reset, which do not place above about 78 % of
+# the TRELLIS_COMB: by default every set and reset is LUT logic) on the LFE5U-85F, N
 # pipelines (default: as many as the area estimate fits), through
 # scripts/pnr-spatial.sh (synth_ecp5, nextpnr).  The cores at
 # SPATIAL_OPTS (default --clock-cores: the cores for clock rate, `fp3
 # spatial --help`).  Each chip has its own folder,
 # $(BUILD)/pnr-spatial/NAME (PNR_SPATIAL_NAME: the model's or scene's
-# name, the integrator, -literal, -ftz, -b3, -nN when PIPELINES is given; name
+# name, the integrator, -literal, -ftz, -b3, -sdff, -nN when PIPELINES is given; name
 # SPATIAL_OPTS' other choices yourself, PNR_SPATIAL_NAME=...), so that the
 # folded and the literal ship's seeds (make bench-chip reads both) do not
 # mix.  About 25 minutes a seed for three ship pipelines on this machine,
@@ -53,18 +55,23 @@ PIPELINES    ?=
 FTZ          ?=
 LITERAL      ?=
 MULT_BLOCKS  ?=
+SDFF         ?=
 SPATIAL_OPTS ?= --clock-cores
 # The integrator: INTEGRATOR; with SCENE and no INTEGRATOR of the user's,
 # fp3 spatial's choice for the scene (rk4se for a ship scene).
 PNR_SPATIAL_INTEGRATOR = $(if $(and $(SCENE),$(filter file default undefined,$(origin INTEGRATOR))),,$(INTEGRATOR))
-PNR_SPATIAL_NAME ?= $(basename $(notdir $(or $(SCENE),$(MODEL))))$(if $(PNR_SPATIAL_INTEGRATOR),-$(PNR_SPATIAL_INTEGRATOR))$(if $(filter 1,$(LITERAL)),-literal)$(if $(filter 1,$(FTZ)),-ftz)$(if $(filter 3,$(MULT_BLOCKS)),-b3)$(if $(PIPELINES),-n$(PIPELINES))
+PNR_SPATIAL_NAME ?= $(basename $(notdir $(or $(SCENE),$(MODEL))))$(if $(PNR_SPATIAL_INTEGRATOR),-$(PNR_SPATIAL_INTEGRATOR))$(if $(filter 1,$(LITERAL)),-literal)$(if $(filter 1,$(FTZ)),-ftz)$(if $(filter 3,$(MULT_BLOCKS)),-b3)$(if $(filter 1,$(SDFF)),-sdff)$(if $(PIPELINES),-n$(PIPELINES))
+# tests/test_synth_sdff.sh: synth.sh's flow without synchronous set/reset
+# flip-flops, the one pnr-spatial synthesizes with (SDFF above).
+TEST_SCRIPTS += tests/test_synth_sdff.sh
 .PHONY: pnr-spatial
-## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m | SCENE=FILE, INTEGRATOR=rk4se [LITERAL=1] [PIPELINES=N] [FTZ=1] [MULT_BLOCKS=3] [PNR_SEED=n]), in build/pnr-spatial/NAME
+## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m | SCENE=FILE, INTEGRATOR=rk4se [LITERAL=1] [PIPELINES=N] [FTZ=1] [MULT_BLOCKS=3] [SDFF=1] [PNR_SEED=n]), in build/pnr-spatial/NAME
 pnr-spatial: $(BUILD)/fp3 pnr-tools
 	@test -n "$(MODEL)$(SCENE)" || { echo "make pnr-spatial: name the model or a scene: MODEL=models/ship.fp3m or SCENE=scenes/drift.scene" >&2; exit 2; }
 	@test -z "$(LITERAL)" -o "$(LITERAL)" = 1 || { echo "make pnr-spatial: LITERAL=1 or nothing, not '$(LITERAL)'" >&2; exit 2; }
 	@test -z "$(MULT_BLOCKS)" -o "$(MULT_BLOCKS)" = 3 -o "$(MULT_BLOCKS)" = 4 || { echo "make pnr-spatial: MULT_BLOCKS=3, 4 or nothing, not '$(MULT_BLOCKS)'" >&2; exit 2; }
-	@bash scripts/pnr-spatial.sh $(BUILD)/pnr-spatial/$(PNR_SPATIAL_NAME) "$(MODEL)" "$(PNR_SPATIAL_INTEGRATOR)" "$(PIPELINES)" "$(FTZ)" $(SPATIAL_OPTS) $(if $(SCENE),--scene $(SCENE)) $(if $(LITERAL),--literal) $(if $(MULT_BLOCKS),--mult-blocks $(MULT_BLOCKS))
+	@test -z "$(SDFF)" -o "$(SDFF)" = 0 -o "$(SDFF)" = 1 || { echo "make pnr-spatial: SDFF=1, 0 or nothing, not '$(SDFF)'" >&2; exit 2; }
+	@SYNTH_ECP5_SDFF=$(if $(filter 1,$(SDFF)),1,0) bash scripts/pnr-spatial.sh $(BUILD)/pnr-spatial/$(PNR_SPATIAL_NAME) "$(MODEL)" "$(PNR_SPATIAL_INTEGRATOR)" "$(PIPELINES)" "$(FTZ)" $(SPATIAL_OPTS) $(if $(SCENE),--scene $(SCENE)) $(if $(LITERAL),--literal) $(if $(MULT_BLOCKS),--mult-blocks $(MULT_BLOCKS))
 
 # test-spatial-all: what make test leaves out of the spatial chip's test:
 # the 1-pipeline chip and seven more broken frames (about 3 minutes).

@@ -7,18 +7,22 @@
 #   2. the chip top with PIPELINES pipelines (--pipelines N) in OUTDIR/gen;
 #   3. Yosys synth_ecp5 (scripts/synth.sh ecp5), the step module kept as a
 #      level of hierarchy (mapped once for the N copies, as the lane chip
-#      build keeps fp3_lane), into OUTDIR/synth; its area beside the
-#      estimate's N x per-pipeline figures;
+#      build keeps fp3_lane), with no flip-flop's synchronous set or reset
+#      (SYNTH_ECP5_SDFF, default 0 here: every set and reset as LUT logic
+#      in front of D, so that the flip-flops share one LSR net and place
+#      above 78 % of the TRELLIS_COMB), into OUTDIR/synth; its area beside
+#      the estimate's N x per-pipeline figures;
 #   4. nextpnr: scripts/pnr.sh with PNR_SEED (default 1), or with
 #      PNR_SEEDS="1 2 ..." scripts/pnr-seeds.sh (a sweep, in parts if need
 #      be), into OUTDIR.
 # INTEGRATOR empty: fp3 spatial's default.  MODEL may be empty when the
 # options name a scene (--scene FILE: the scene's model, its zero params'
 # terms removed).  FTZ = 1 adds --ftz.  Environment: FP3_BIN (default
-# build/fp3), as scripts/pnr.sh and pnr-seeds.sh (PNR_SEED, PNR_SEEDS,
-# PNR_JOBS, ...).
+# build/fp3), SYNTH_ECP5_SDFF (default 0; 1: Yosys's synchronous
+# set/reset flip-flops), as scripts/pnr.sh and pnr-seeds.sh (PNR_SEED,
+# PNR_SEEDS, PNR_JOBS, ...).
 set -euo pipefail
-[ $# -ge 5 ] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+[ $# -ge 5 ] || { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 out=$1; model=$2; integ=$3; pipes=$4; ftz=$5; shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 fp3=${FP3_BIN:-$here/../build/fp3}
@@ -47,7 +51,8 @@ rm -rf "$out/gen"
 step=$(sed -n 's/^module: //p' "$out/gen/report.txt")
 top=${step}_top
 # 3. synthesis
-bash "$here/synth.sh" "$out/synth" "$top" ecp5 -keep "$step" "$out/gen/$step.v" "$out/gen/$top.v" \
+SYNTH_ECP5_SDFF=${SYNTH_ECP5_SDFF:-0} \
+  bash "$here/synth.sh" "$out/synth" "$top" ecp5 -keep "$step" "$out/gen/$step.v" "$out/gen/$top.v" \
   "$here"/../rtl/*.v
 # The area by part, exact section names (synth.sh's -keep line matches the
 # step module's name as a prefix, so it also counts the top's own cells):

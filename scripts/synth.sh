@@ -18,7 +18,8 @@
 #   BASE.json        netlist for nextpnr (ecp5, ice40)
 #   BASE_stat.txt    Yosys `stat` of the mapped netlist
 #   BASE.log         the Yosys log
-# Environment: YOSYS (default yosys).
+# Environment: YOSYS (default yosys); SYNTH_ECP5_SDFF (ecp5: default 1;
+# 0 maps no flip-flop with a synchronous set or reset, see below).
 set -euo pipefail
 out=$1; top=$2; flow=$3; shift 3
 chparam=(); tag=""; keep=()
@@ -43,7 +44,23 @@ case "$flow" in
             # `autoname`, which takes many minutes on the multi-context
             # register file (Yosys 0.23) and only renames cells (the same
             # for ice40).
-            map="synth_ecp5 -top $top -run begin:check; hierarchy -check; check -noinit; blackbox =A:whitebox"
+            # SYNTH_ECP5_SDFF=0: no flip-flop with a synchronous set or
+            # reset.  Yosys folds `q <= c ? 0 : d` into a flip-flop's LSR
+            # (set/reset) input, so that a flip-flop of such a register
+            # has an LSR net of its own; nextpnr places a flip-flop only
+            # beside flip-flops of the same clock and LSR net, and above
+            # about 78 % of the TRELLIS_COMB its strict legalisation of
+            # those flip-flops does not end.  Here dfflegalize, before
+            # synth_ecp5's own flip-flop mapping, leaves every set and
+            # reset in front of D, as LUT logic (docs/spatial.md).
+            if [ "${SYNTH_ECP5_SDFF:-1}" = 0 ]; then
+              map="synth_ecp5 -top $top -run begin:map_ffs
+                   dfflegalize -cell \$_DFF_?_ 01 -cell \$_DFF_?P?_ r -cell \$_DFFE_??_ 01 -cell \$_DFFE_?P??_ r -cell \$_DLATCH_?_ x
+                   synth_ecp5 -top $top -run map_ffs:check"
+            else
+              map="synth_ecp5 -top $top -run begin:check"
+            fi
+            map="$map; hierarchy -check; check -noinit; blackbox =A:whitebox"
             write="write_json $base.json" ;;
   ice40)    map="synth_ice40 -top $top -run begin:check; hierarchy -check; check -noinit; blackbox =A:whitebox"
             write="write_json $base.json" ;;
