@@ -21,8 +21,8 @@
 #     stages) (the second by a Verilator that fails: exit 1, the log
 #     named);
 #   - bad options: --program, --trace, `fp3 bench --engine spatial`, and
-#     --pipelines without the spatial engine or out of 1..255 are refused
-#     with exit 2.
+#     --pipelines without the spatial engine or out of 1..255, and
+#     --clock-cores without it, are refused with exit 2.
 # The runs use the tree's cache (build/spatial-cache: the ship's and the
 # oscillator's chips, built there once per revision of their sources);
 # the cache checks a copy in a temporary folder, where one oscillator
@@ -212,6 +212,8 @@ refused "fp3 bench --engine spatial" "unknown engine 'spatial'" \
   bench --model models/ship.fp3m --engine spatial
 refused "--pipelines without --engine spatial" "--pipelines goes with --engine spatial" \
   run $SHIP --pipelines 2 --steps 3
+refused "--clock-cores without --engine spatial" "--clock-cores goes with --engine spatial" \
+  run $SHIP --clock-cores --steps 3
 refused "--pipelines 0" "--pipelines" run --engine spatial $SHIP --pipelines 0 --steps 3
 refused "--pipelines 256" "--pipelines" run --engine spatial $SHIP --pipelines 256 --steps 3
 

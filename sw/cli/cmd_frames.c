@@ -45,7 +45,7 @@ static void usage(FILE *f) {
           "usage: fp3 frames [--scene FILE | --harbour N [--seed S] | --model FILE --objects N\n"
           "                  [--seed S]] [--frames F] [--program FILE.s | --integrator NAME\n"
           "                  [--literal]] [--no-rest-skip] [--wake F:K:NAME=VALUE[*PARAM]]\n"
-          "                  [--engine rtl|iss|spatial [--pipelines N]|uart:DEV] [--round rne|rtz] [--ftz] [--fmax MHZ] [--json]\n"
+          "                  [--engine rtl|iss|spatial [--pipelines N] [--clock-cores]|uart:DEV] [--round rne|rtz] [--ftz] [--fmax MHZ] [--json]\n"
           "\n"
           "Run a scene frame by frame, as a game engine does: each frame is one\n"
           "integration of every object that is awake, in batches of contexts x\n"

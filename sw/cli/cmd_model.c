@@ -144,6 +144,8 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
                                   &k)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->pipelines = (unsigned)k;
+    } else if (runlike && strcmp(argv[i], "--clock-cores") == 0) {
+      a->clock_cores = 1;
     } else if (runlike && (r = fp3_opt_seed(argc, argv, &i, cmd, &a->seed)) != 0) {
       if (r < 0) return FP3_ARGS_BAD;
       a->seeded = 1;
@@ -273,6 +275,10 @@ int fp3_parse_model(int argc, char **argv, const char *cmd, fp3_model_args *a) {
   }
   if (a->pipelines && strcmp(a->engine, "spatial") != 0) {
     fprintf(stderr, "fp3 %s: --pipelines goes with --engine spatial\n", cmd);
+    return FP3_ARGS_BAD;
+  }
+  if (a->clock_cores && strcmp(a->engine, "spatial") != 0) {
+    fprintf(stderr, "fp3 %s: --clock-cores goes with --engine spatial\n", cmd);
     return FP3_ARGS_BAD;
   }
   if (fp3_trace_check(&a->trace, cmd, a->engine, a->scene || a->objects)) return FP3_ARGS_BAD;

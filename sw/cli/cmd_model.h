@@ -33,6 +33,8 @@ typedef struct fp3_model_args {
   int literal, json, seeded;
   unsigned pipelines;  /* run, frames: --pipelines N of --engine spatial
                           (0: one)                                      */
+  int clock_cores;     /* run, frames: --clock-cores of --engine spatial
+                          (the cores make pnr-spatial places)           */
   int no_rest_skip;    /* frames: --no-rest-skip                        */
   int integ_given;     /* --integrator given                            */
   double t_end;        /* bench: --t-end (0: 600 h)                     */
