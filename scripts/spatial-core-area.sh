@@ -8,9 +8,13 @@
 # LUT4s counted as scripts/synth-report.sh does (a CCU2C as two).
 # fp_scaleb is measured as the generator uses it, with a constant b (the
 # larger of b = 0.5 and b = 2; a constant folds most of it away).
+# Synthesized in the flow of make pnr-spatial: no flip-flop with a
+# synchronous set or reset (SYNTH_ECP5_SDFF=0, docs/spatial.md), which
+# maps fp_add in about 14 % fewer LUT4s than Yosys's own flip-flops do.
 # Takes about 15 minutes on this machine (fp_div and fp_sqrt the longest).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+export SYNTH_ECP5_SDFF=0
 out=${1:-build/spatial-core-area}
 mkdir -p "$out"
 # core  kind-name  parameters beside LATENCY, ROUND, FTZ (comma-separated;
@@ -37,7 +41,7 @@ for r in "${rows[@]}"; do
       read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
         "$out/${core}${tag}_ecp5_stat.txt")
       printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' "$kind" "$lat" "$round" "$ftz" \
-        "$luts" "$ffs" "$mult" "$core${extra:+, ${extra//=/ }}"
+        "$luts" "$ffs" "$mult" "$core${extra:+, $(echo "$extra" | tr "=," "  ")}"
     done
   done
 done

@@ -155,8 +155,9 @@ rc=$?
 osc=$(sed -n 's/.*cache entry \(.*\) is unusable (spatial\.so (4096 bytes.*/\1/p' "$T/re.err" | head -1)
 if [ "$rc" -eq 0 ] && [ -n "$osc" ] && grep -q "^PASS" "$T/re.out" &&
    grep -q "spatial: building oscillator euler (Verilator) into $osc\$" "$T/re.err" &&
+   grep -q "\[2/3\] compile the model (clang++) \.\.\. [0-9.]* s" "$T/re.err" &&
    grep -q "\[3/3\] link the shared object \.\.\. [0-9.]* s" "$T/re.err"; then
-  ok "a shared object cut short: found unusable, said; the build says what it builds, and each stage with its time; bit-exact"
+  ok "a shared object cut short: found unusable, said; the build says what it builds, and each stage with its time (the model compiled by clang++); bit-exact"
 else
   cat "$T/re.err" "$T/re.out"; bad "a shared object cut short, rebuilt: exit $rc"
 fi
@@ -191,6 +192,21 @@ if [ "$rc" -eq 1 ] && grep -q "cache entry $osc is unusable (its HASH is" "$T/re
   ok "another module's chip (HASH mismatch): found unusable; the failed rebuild names its log, exit 1"
 else
   cat "$T/re.err"; bad "HASH mismatch, then a failed build: exit $rc"
+fi
+# $FP3_SPATIAL_CXX names the model's C++ compiler, part of the key: one
+# that fails makes a new entry's build fail at its stage 2, named, with
+# its log kept and no entry left
+printf '#!/bin/sh\necho "error: a compiler that fails" >&2\nexit 1\n' >"$T/cxxfail"
+chmod +x "$T/cxxfail"
+FP3_SPATIAL_CXX="$T/cxxfail" "$FP3" run $OSC --steps 5 --engine spatial >"$T/re.out" 2>"$T/re.err"
+rc=$?
+cxx_entry=$(sed -n 's/.*spatial: building oscillator euler (Verilator) into \(.*\)$/\1/p' "$T/re.err")
+if [ "$rc" -eq 1 ] && [ -n "$cxx_entry" ] && [ "$cxx_entry" != "$osc" ] &&
+   grep -q "\[2/3\] compile the model ($T/cxxfail) \.\.\. failed" "$T/re.err" &&
+   grep -q "a compiler that fails" "$cxx_entry.failed.log" && [ ! -e "$cxx_entry" ]; then
+  ok "FP3_SPATIAL_CXX: another compiler, another entry; one that fails: stage 2 named, its log kept, exit 1"
+else
+  cat "$T/re.err"; bad "FP3_SPATIAL_CXX that fails: exit $rc"
 fi
 
 # ---- options that make no sense with the spatial engine ------------------------

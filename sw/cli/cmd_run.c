@@ -96,6 +96,7 @@ static void usage(FILE *f) {
           "                    cycles are instructions, one issued a cycle), spatial (the\n"
           "                    model's step as one pipeline, fp3 spatial: Verilated on\n"
           "                    first use into build/spatial-cache, or $FP3_SPATIAL_CACHE;\n"
+          "                    its C++ compiler $FP3_SPATIAL_CXX, else clang++ or g++;\n"
           "                    not with --program or --trace; docs/spatial.md;\n"
           "                    --pipelines N, 1..255 (default 1): N pipelines, object o\n"
           "                    in pipeline o mod N, as the chip's; --clock-cores: the\n"

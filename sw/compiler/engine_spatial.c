@@ -169,16 +169,18 @@ typedef struct build {
   unsigned pipelines, nin, nc, lat, objects;
   char vroot[1024]; /* VERILATOR_ROOT */
   char vversion[128];
+  char cxx[256]; /* the model's C++ compiler (fp3_spatial_env.cxx)      */
 } build;
 
-/* The cache key: the cache version, the Verilator version, the module's
- * shape and name, the step module's and the chip top's text, the shim,
- * every rtl/ file.  0, or -1 if a file cannot be read. */
+/* The cache key: the cache version, the Verilator version, the C++
+ * compiler, the module's shape and name, the step module's and the chip
+ * top's text, the shim, every rtl/ file.  0, or -1 if a file cannot be
+ * read. */
 static int cache_key(const build *b, uint64_t *key, char *err, size_t n) {
   uint64_t h = FP3_FNV1A64_BASIS;
   char line[512];
-  snprintf(line, sizeof line, "fp3-spatial-cache %d|%s|%u|%u|%s", FP3_SPATIAL_CACHE_VERSION,
-           b->vversion, b->nin, b->nc, b->module);
+  snprintf(line, sizeof line, "fp3-spatial-cache %d|%s|%s|%u|%u|%s", FP3_SPATIAL_CACHE_VERSION,
+           b->vversion, b->cxx, b->nin, b->nc, b->module);
   h = fp3_fnv1a64(h, line, strlen(line));
   h = fp3_fnv1a64(h, b->verilog, strlen(b->verilog));
   h = fp3_fnv1a64(h, b->top_verilog, strlen(b->top_verilog));
@@ -409,7 +411,10 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
                       "fast", "--noassert", "-Wno-fatal", rtl, "-y", rtl + 2,
                       "--top-module", top, "--prefix", "Vspatial", "--Mdir", obj,
                       "-CFLAGS", "-fPIC", tfile, vfile, NULL};
-  char *make[] = {"make", "-s", "-C", mkdir_obj, "-f", mkf, "VM_PARALLEL_BUILDS=0",
+  char cxx[300], what_cc[320];
+  snprintf(cxx, sizeof cxx, "CXX=%s", b->cxx);
+  snprintf(what_cc, sizeof what_cc, "compile the model (%s)", b->cxx);
+  char *make[] = {"make", "-s", "-C", mkdir_obj, "-f", mkf, "VM_PARALLEL_BUILDS=0", cxx,
                   "OPT_FAST=-O2", "OPT_SLOW=-O1", "OPT_GLOBAL=-O2", "Vspatial__ALL.a",
                   "verilated.o", "verilated_threads.o", NULL};
   char all[4400], rt1[4400], rt2[4400];
@@ -421,7 +426,7 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
                   "-Wl,-Bsymbolic", "-pthread", "-latomic", NULL};
   const double t0 = now();
   if (stage(b, 1, 3, "verilate", verilate, log, err, n) ||
-      stage(b, 2, 3, "compile the model (C++)", make, log, err, n) ||
+      stage(b, 2, 3, what_cc, make, log, err, n) ||
       stage(b, 3, 3, "link the shared object", link, log, err, n)) {
     /* the log outlives the temporary: its path and last lines */
     char kept[4400], tail[LOG_TAIL * 170];
@@ -878,6 +883,14 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
              "Verilates the model's pipeline on first use; scripts/setup.sh installs it)",
              verilator);
     goto fail;
+  }
+  /* the model's C++ compiler: the one asked for, else clang++ if there */
+  if (env->cxx && env->cxx[0]) {
+    snprintf(b.cxx, sizeof b.cxx, "%s", env->cxx);
+  } else {
+    char probe[32];
+    cmd_line("clang++ --version 2>/dev/null", probe, sizeof probe);
+    snprintf(b.cxx, sizeof b.cxx, "%s", probe[0] ? "clang++" : "g++");
   }
   if (cache_open(&b, m->name, integ, &s->sh, s->entry, sizeof s->entry, err, n)) goto fail;
   /* the chip's object memory is unknown: every slot is written before it
