@@ -78,7 +78,7 @@
 #define FP3_SPATIAL_SLOTS 1024
 
 /* The cache layout's version, part of every KEY. */
-#define FP3_SPATIAL_CACHE_VERSION 2
+#define FP3_SPATIAL_CACHE_VERSION 3
 
 /* Where the engine finds what it builds with. */
 typedef struct fp3_spatial_env {
