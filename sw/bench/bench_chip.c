@@ -28,7 +28,8 @@
  * of fp3_spatial_clock_cores, as many pipelines N as the area estimate
  * fits), on the
  * spatial engine (engine_spatial.h: the chip's Verilated RTL, built into
- * build/spatial-cache on first use): all of the engine's slots, at least
+ * build/spatial-cache on first use, by $VERILATOR and $FP3_SPATIAL_CXX
+ * if set, as fp3 run's): all of the engine's slots, at least
  * N (L + 3) objects, so the pipelines are full and the figure is their
  * rate, not their latency's.  Cycles are the chip's CYCLES register;
  * the bound is 1/N cycles per object-step.  Every object is checked
@@ -199,9 +200,10 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
     snprintf(msg, sizeof msg, "the working directory: %s", strerror(errno));
     goto out;
   }
-  const char *vl = getenv("VERILATOR");
+  const char *vl = getenv("VERILATOR"), *cxx = getenv("FP3_SPATIAL_CXX");
   fp3_spatial_env env = {.root = root, .cache = "build/spatial-cache",
-                         .verilator = vl && vl[0] ? vl : NULL, .label = "bench_chip: spatial",
+                         .verilator = vl && vl[0] ? vl : NULL, .cxx = cxx,
+                         .label = "bench_chip: spatial",
                          .pipelines = fit, .cores = &so};
   e = fp3_engine_spatial_new(c, m, "rk4se", FPREF_IEEE, &env, msg, sizeof msg);
   if (!e) goto out;

@@ -408,10 +408,10 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
   }
   const char *verilator = env->verilator ? env->verilator : "verilator";
   /* --inline-mult 1: Verilator keeps the cores and the step module as
-   * modules of their own instead of inlining them, so that instances of
-   * one module share code: the 4-pipeline folded ship chip then runs in
-   * about 14 % less CPU time, and compiles in half the time (the model is
-   * long straight-line code, bound by fetching its instructions). */
+   * modules of their own instead of inlining them into one function of
+   * straight-line code, bound by fetching its instructions: the 4-pipeline
+   * folded ship chip then runs in about 14 % less CPU time (perf, clang++)
+   * and compiles 2 to 5 times faster (g++: 16 s against 91 s). */
   char *verilate[] = {(char *)verilator, "--cc", "-O3", "--inline-mult", "1", "--x-assign",
                       "fast", "--x-initial",
                       "fast", "--noassert", "-Wno-fatal", rtl, "-y", rtl + 2,

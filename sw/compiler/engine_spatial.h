@@ -86,11 +86,10 @@ typedef struct fp3_spatial_env {
   const char *cache;     /* the cache folder (made if missing)                    */
   const char *verilator; /* the Verilator command (NULL: "verilator")             */
   /* The C++ compiler of the Verilated model (NULL: clang++ if it answers
-   * --version, else g++).  clang++ -O2 runs the folded ship chip's
-   * Verilated model in about 18 % less CPU time than g++ -O2 (Clang 14,
-   * GCC 12, perf on `fp3 run --engine spatial --clock-cores --pipelines 4`):
-   * the model is long straight-line code, and clang's is shorter.  Part
-   * of the cache key. */
+   * --version, else g++).  clang++ -O2 runs the 4-pipeline folded ship
+   * chip about 10 % faster than g++ -O2 (Clang 14, GCC 12; make
+   * bench-simspeed: 505,923 against 469,933 object-steps per CPU second).
+   * Part of the cache key. */
   const char *cxx;
   const char *label;     /* prefix of the messages on stderr ("spatial")          */
   /* The chip's shape: its pipelines N (0: one; at most
