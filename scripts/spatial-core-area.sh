@@ -43,7 +43,7 @@ for r in "${rows[@]}"; do
       read -r luts ffs mult _ < <(bash scripts/synth-report.sh --fields \
         "$out/${core}${tag}_ecp5_stat.txt")
       printf '    {%s, %u, %u, %u, %u, %u, %u}, /* %s */\n' "$kind" "$lat" "$round" "$ftz" \
-        "$luts" "$ffs" "$mult" "$core${extra:+, $(echo "$extra" | tr "=," "  ")}"
+        "$luts" "$ffs" "$mult" "$core${extra:+, ${extra//[=,]/ }}"
     done
   done
 done

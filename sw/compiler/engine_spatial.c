@@ -412,9 +412,9 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
    * straight-line code, bound by fetching its instructions: the 4-pipeline
    * folded ship chip then runs in about 14 % less CPU time (perf, clang++)
    * and compiles 2 to 5 times faster (g++: 16 s against 91 s). */
-  char *verilate[] = {(char *)verilator, "--cc", "-O3", "--inline-mult", "1", "--x-assign",
-                      "fast", "--x-initial",
-                      "fast", "--noassert", "-Wno-fatal", rtl, "-y", rtl + 2,
+  char *verilate[] = {(char *)verilator, "--cc", "-O3", "--inline-mult", "1",
+                      "--x-assign", "fast", "--x-initial", "fast", "--noassert",
+                      "-Wno-fatal", rtl, "-y", rtl + 2,
                       "--top-module", top, "--prefix", "Vspatial", "--Mdir", obj,
                       "-CFLAGS", "-fPIC", tfile, vfile, NULL};
   char cxx[300], what_cc[320];
