@@ -81,6 +81,14 @@ if ! grep -q "building" "$T/osc-20.sp.err" &&
 else
   cat "$T/osc-20.sp.err"; bad "the second run built again"
 fi
+# an empty $VERILATOR or $FP3_SPATIAL_CXX is as unset: the same entry
+VERILATOR= FP3_SPATIAL_CXX= "$FP3" run $OSC --steps 5 --engine spatial >"$T/empty.out" 2>"$T/empty.err"
+rc=$?
+if [ "$rc" -eq 0 ] && ! grep -q "building" "$T/empty.err"; then
+  ok "VERILATOR and FP3_SPATIAL_CXX empty: the defaults, the entry reused"
+else
+  cat "$T/empty.err"; bad "empty VERILATOR / FP3_SPATIAL_CXX: exit $rc"
+fi
 
 # ---- the ship, 3 pipelines -----------------------------------------------------
 PIPES="--pipelines 3"

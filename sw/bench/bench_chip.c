@@ -200,9 +200,8 @@ static int spatial_row(const fp3_model *m, int literal, uint32_t steps, row *r, 
     snprintf(msg, sizeof msg, "the working directory: %s", strerror(errno));
     goto out;
   }
-  const char *vl = getenv("VERILATOR"), *cxx = getenv("FP3_SPATIAL_CXX");
   fp3_spatial_env env = {.root = root, .cache = "build/spatial-cache",
-                         .verilator = vl && vl[0] ? vl : NULL, .cxx = cxx,
+                         .verilator = getenv("VERILATOR"), .cxx = getenv("FP3_SPATIAL_CXX"),
                          .label = "bench_chip: spatial",
                          .pipelines = fit, .cores = &so};
   e = fp3_engine_spatial_new(c, m, "rk4se", FPREF_IEEE, &env, msg, sizeof msg);

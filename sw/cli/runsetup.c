@@ -258,15 +258,14 @@ static int setup_spatial(const fp3_model_args *a, fp3_run_setup *s, const unsign
   }
   spatial_cache(cache, sizeof cache);
   snprintf(label, sizeof label, "fp3 %s: spatial", cmd);
-  const char *vl = getenv("VERILATOR"), *cxx = getenv("FP3_SPATIAL_CXX");
   /* --clock-cores: the latencies of the chip make pnr-spatial places
    * (the engine takes the rounding and FTZ from the run's mode) */
   static fp3_spatial_opts clock; /* the engine keeps it: one command a process */
   fp3_spatial_defaults(&clock);
   fp3_spatial_clock_cores(&clock);
-  fp3_spatial_env env = {.root = root, .cache = cache, .verilator = vl && vl[0] ? vl : NULL,
-                         .cxx = cxx, .label = label, .pipelines = a->pipelines,
-                         .cores = a->clock_cores ? &clock : NULL};
+  fp3_spatial_env env = {.root = root, .cache = cache, .verilator = getenv("VERILATOR"),
+                         .cxx = getenv("FP3_SPATIAL_CXX"), .label = label,
+                         .pipelines = a->pipelines, .cores = a->clock_cores ? &clock : NULL};
   s->e = fp3_engine_spatial_new(s->c, s->m, s->integ, a->mode, &env, msg, sizeof msg);
   if (!s->e) {
     fprintf(stderr, "fp3 %s: spatial engine: %s\n", cmd, msg);

@@ -371,6 +371,12 @@ static int stage(const build *b, int k, int of_n, const char *what, char *const 
   return -1;
 }
 
+/* The Verilator command: env's, else (NULL or empty, as an unset or empty
+ * $VERILATOR gives) "verilator" on the PATH. */
+static const char *verilator_cmd(const fp3_spatial_env *env) {
+  return env->verilator && env->verilator[0] ? env->verilator : "verilator";
+}
+
 /* Build the entry into a temporary folder of the cache and rename it to
  * final.  0, or -1 with the reason (the temporary is then removed, the
  * log kept beside the cache as final.failed.log). */
@@ -406,7 +412,7 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
     rm_tree(tmp);
     return -1;
   }
-  const char *verilator = env->verilator ? env->verilator : "verilator";
+  const char *verilator = verilator_cmd(env);
   /* --inline-mult 1: Verilator keeps the cores and the step module as
    * modules of their own instead of inlining them into one function of
    * straight-line code, bound by fetching its instructions: the 4-pipeline
@@ -878,7 +884,7 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
              .verilog = fp3_spatial_verilog(s->sp), .top = top, .top_verilog = s->top_text,
              .pipelines = s->pipelines, .nin = s->nin, .nc = s->nc, .lat = s->lat, .objects = s->slots};
   b.text_hash = fp3_spatial_hash(s->sp);
-  const char *verilator = env->verilator ? env->verilator : "verilator";
+  const char *verilator = verilator_cmd(env);
   char cmd[1200];
   snprintf(cmd, sizeof cmd, "'%s' --getenv VERILATOR_ROOT 2>/dev/null", verilator);
   cmd_line(cmd, b.vroot, sizeof b.vroot);

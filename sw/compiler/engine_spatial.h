@@ -84,8 +84,8 @@
 typedef struct fp3_spatial_env {
   const char *root;      /* the FP3 tree: ROOT/rtl/ and ROOT/sim/spatial_shim.cpp */
   const char *cache;     /* the cache folder (made if missing)                    */
-  const char *verilator; /* the Verilator command (NULL: "verilator")             */
-  /* The C++ compiler of the Verilated model (NULL: clang++ if it answers
+  const char *verilator; /* the Verilator command (NULL or "": "verilator")       */
+  /* The C++ compiler of the Verilated model (NULL or "": clang++ if it answers
    * --version, else g++).  clang++ -O2 runs the 4-pipeline folded ship
    * chip about 10 % faster than g++ -O2 (Clang 14, GCC 12; make
    * bench-simspeed: 505,923 against 469,933 object-steps per CPU second).
