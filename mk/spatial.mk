@@ -26,8 +26,8 @@ test-build: $(BUILD)/fp3 $(VERILATED_OBJS)
 # loaded with dlopen, driven over AXI4-Lite, observed on its trace port):
 # the ship and the oscillator bit-exact after every step and equal to
 # --engine rtl, the cache reused, damaged entries found and rebuilt (in a
-# temporary copy), bad options refused (about 20 s once the tree's two
-# chips are built, 50 s before).
+# temporary copy), bad options refused (about 18 s once the tree's two
+# chips are built, 55 s before).
 TEST_SCRIPTS += tests/test_spatial_engine.sh
 
 # `make pnr-spatial MODEL=models/ship.fp3m | SCENE=FILE [INTEGRATOR=rk4se]
