@@ -167,6 +167,7 @@ typedef struct build {
   const char *top, *top_verilog; /* the chip top around it              */
   uint64_t text_hash;            /* FNV-1a 64 of the step's text         */
   unsigned pipelines, nin, nc, lat, objects;
+  const char *verilator; /* the Verilator command (fp3_spatial_env.verilator) */
   char vroot[1024]; /* VERILATOR_ROOT */
   char vversion[128];
   char cxx[256]; /* the model's C++ compiler (fp3_spatial_env.cxx)      */
@@ -371,12 +372,6 @@ static int stage(const build *b, int k, int of_n, const char *what, char *const 
   return -1;
 }
 
-/* The Verilator command: env's, else (NULL or empty, as an unset or empty
- * $VERILATOR gives) "verilator" on the PATH. */
-static const char *verilator_cmd(const fp3_spatial_env *env) {
-  return env->verilator && env->verilator[0] ? env->verilator : "verilator";
-}
-
 /* Build the entry into a temporary folder of the cache and rename it to
  * final.  0, or -1 with the reason (the temporary is then removed, the
  * log kept beside the cache as final.failed.log). */
@@ -412,7 +407,7 @@ static int build_entry(const build *b, const char *final, char *err, size_t n) {
     rm_tree(tmp);
     return -1;
   }
-  const char *verilator = verilator_cmd(env);
+  const char *verilator = b->verilator;
   /* --inline-mult 1: Verilator keeps the cores and the step module as
    * modules of their own instead of inlining them into one function of
    * straight-line code, bound by fetching its instructions: the 4-pipeline
@@ -884,7 +879,10 @@ fp3_engine *fp3_engine_spatial_new(fp3_compiled *c, const fp3_model *m, const ch
              .verilog = fp3_spatial_verilog(s->sp), .top = top, .top_verilog = s->top_text,
              .pipelines = s->pipelines, .nin = s->nin, .nc = s->nc, .lat = s->lat, .objects = s->slots};
   b.text_hash = fp3_spatial_hash(s->sp);
-  const char *verilator = verilator_cmd(env);
+  /* the Verilator: the one asked for (an unset or empty $VERILATOR:
+   * NULL or ""), else "verilator" on the PATH */
+  const char *verilator = env->verilator && env->verilator[0] ? env->verilator : "verilator";
+  b.verilator = verilator;
   char cmd[1200];
   snprintf(cmd, sizeof cmd, "'%s' --getenv VERILATOR_ROOT 2>/dev/null", verilator);
   cmd_line(cmd, b.vroot, sizeof b.vroot);
