@@ -64,6 +64,9 @@ PNR_SPATIAL_NAME ?= $(basename $(notdir $(or $(SCENE),$(MODEL))))$(if $(PNR_SPAT
 # tests/test_synth_sdff.sh: synth.sh's flow without synchronous set/reset
 # flip-flops, the one pnr-spatial synthesizes with (SDFF above).
 TEST_SCRIPTS += tests/test_synth_sdff.sh
+# tests/test_pnr_spatial.sh: pnr-spatial.sh synthesizes a chip once for a
+# sweep in parts (stand-ins for Yosys and nextpnr).
+TEST_SCRIPTS += tests/test_pnr_spatial.sh
 .PHONY: pnr-spatial
 ## pnr-spatial: a spatial chip on the LFE5U-85F (MODEL=models/ship.fp3m | SCENE=FILE, INTEGRATOR=rk4se [LITERAL=1] [PIPELINES=N] [FTZ=1] [MULT_BLOCKS=3] [SDFF=1] [PNR_SEED=n]), in build/pnr-spatial/NAME
 pnr-spatial: $(BUILD)/fp3 pnr-tools

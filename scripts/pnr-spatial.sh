@@ -10,8 +10,9 @@
 #      build keeps fp3_lane), with no flip-flop's synchronous set or reset
 #      (SYNTH_ECP5_SDFF, default 0 here: every set and reset as LUT logic
 #      in front of D, so that the flip-flops share one LSR net and place
-#      above 78 % of the TRELLIS_COMB), into OUTDIR/synth; its area beside
-#      the estimate's N x per-pipeline figures;
+#      above 78 % of the TRELLIS_COMB), into OUTDIR/synth, unless the
+#      netlist there was synthesized from the same inputs (below); its area
+#      beside the estimate's N x per-pipeline figures;
 #   4. nextpnr: scripts/pnr.sh with PNR_SEED (default 1), or with
 #      PNR_SEEDS="1 2 ..." scripts/pnr-seeds.sh (a sweep, in parts if need
 #      be), into OUTDIR.
@@ -19,10 +20,10 @@
 # options name a scene (--scene FILE: the scene's model, its zero params'
 # terms removed).  FTZ = 1 adds --ftz.  Environment: FP3_BIN (default
 # build/fp3), SYNTH_ECP5_SDFF (default 0; 1: Yosys's synchronous
-# set/reset flip-flops), as scripts/pnr.sh and pnr-seeds.sh (PNR_SEED,
-# PNR_SEEDS, PNR_JOBS, ...).
+# set/reset flip-flops), as scripts/synth.sh (YOSYS), pnr.sh and
+# pnr-seeds.sh (PNR_SEED, PNR_SEEDS, PNR_JOBS, ...).
 set -euo pipefail
-[ $# -ge 5 ] || { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+[ $# -ge 5 ] || { sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 out=$1; model=$2; integ=$3; pipes=$4; ftz=$5; shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 fp3=${FP3_BIN:-$here/../build/fp3}
@@ -50,10 +51,30 @@ rm -rf "$out/gen"
   cat "$out/gen.log" >&2; exit 2; }
 step=$(sed -n 's/^module: //p' "$out/gen/report.txt")
 top=${step}_top
-# 3. synthesis
-SYNTH_ECP5_SDFF=${SYNTH_ECP5_SDFF:-0} \
-  bash "$here/synth.sh" "$out/synth" "$top" ecp5 -keep "$step" "$out/gen/$step.v" "$out/gen/$top.v" \
-  "$here"/../rtl/*.v
+# 3. synthesis, or the netlist already in OUTDIR/synth when its inputs are
+# the same: a sweep run in parts (PNR_SEEDS="4", later "5" ...) places one
+# netlist and synthesizes it once (about 8 minutes for a full chip).  The
+# inputs are digested into OUTDIR/synth/inputs.sha256, written only after
+# a synthesis that succeeded: the generated modules (fp3 spatial writes
+# the same text for the same model and options), rtl/'s .v and .vh files,
+# this script, synth.sh, SYNTH_ECP5_SDFF and Yosys's version.
+sdff=${SYNTH_ECP5_SDFF:-0}
+stamp="$out/synth/inputs.sha256"
+digest=$({ ${YOSYS:-yosys} -V; echo "SYNTH_ECP5_SDFF=$sdff top=$top step=$step"
+           (cd "$out/gen" && sha256sum "$step.v" "$top.v")
+           (cd "$here/.." && sha256sum rtl/*.v rtl/*.vh scripts/synth.sh scripts/pnr-spatial.sh)
+         } | sha256sum | cut -d' ' -f1)
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$digest" ] &&
+   [ -f "$out/synth/${top}_ecp5.json" ] && [ -f "$out/synth/${top}_ecp5_stat.txt" ]; then
+  echo "pnr-spatial: the synthesis inputs are unchanged: placing the netlist in $out/synth" \
+       "(remove that folder to synthesize again)"
+else
+  rm -f "$stamp"
+  SYNTH_ECP5_SDFF=$sdff \
+    bash "$here/synth.sh" "$out/synth" "$top" ecp5 -keep "$step" "$out/gen/$step.v" "$out/gen/$top.v" \
+    "$here"/../rtl/*.v
+  echo "$digest" > "$stamp"
+fi
 # The area by part, exact section names (synth.sh's -keep line matches the
 # step module's name as a prefix, so it also counts the top's own cells):
 # LUT4 sites as the estimate counts them (LUT4, 2 per CCU2C, 6 per
