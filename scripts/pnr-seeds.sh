@@ -17,11 +17,13 @@
 # configuration); pnr_seeds.csv (seed,fmax_mhz,levels,logic_ns,routing_ns,
 # from,to); pnr_summary.csv gets the best seed's row; NAME_ecp5.config is
 # a copy of the best placement's configuration (for ecppack).
+# Progress: a line every PNR_PROGRESS seconds (default 60, 0 for none)
+# with the phase of each seed that is placing (scripts/pnr-phase.py).
 # Exit status: 2 on a bad argument, 1 if a seed does not place (the
 # netlist does not fit), 0 otherwise, also when timing misses.
 set -euo pipefail
 if [ $# -lt 4 ] || [ "${1:-}" = -h ] || [ "${1:-}" = --help ]; then
-  sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'
   [ $# -ge 1 ] && { [ "$1" = -h ] || [ "$1" = --help ]; } && exit 0
   exit 2
 fi
@@ -46,13 +48,24 @@ sum=$(sha256sum < "$json" | cut -d' ' -f1)
 one() {
   local s=$1 dir="$out/seed-$1"
   rm -rf "$dir"; mkdir -p "$dir"
-  if PNR_SEED=$s bash "$here/pnr.sh" ecp5 "$name" "$json" "$dir" > "$dir/pnr.out" 2>&1; then
+  echo "$dir/${name}_ecp5.log" > "$live/$s"
+  if PNR_SEED=$s PNR_PROGRESS=0 bash "$here/pnr.sh" ecp5 "$name" "$json" "$dir" > "$dir/pnr.out" 2>&1; then
+    rm -f "$live/$s"
     echo "$sum" > "$dir/netlist.sha256"
     echo "  seed $s: $(grep -o 'Fmax [0-9.]* MHz' "$dir/pnr.out")"
   else
+    rm -f "$live/$s"
     echo "  seed $s: does not place (see $dir/pnr.out)"; return 1
   fi
 }
+
+# Progress: every PNR_PROGRESS seconds a line with each running seed's
+# phase (scripts/pnr-progress.sh; a seed registers its log in $live while
+# it runs).
+live=$(mktemp -d "${TMPDIR:-/tmp}/fp3_pnr_seeds.XXXXXX")
+. "$here/pnr-progress.sh"
+trap 'pnr_progress_stop; rm -rf "$live"' EXIT
+pnr_progress_start "pnr-seeds: $name" "$live"
 
 failed=0; running=0
 for s in "${seeds[@]}"; do
@@ -62,6 +75,7 @@ for s in "${seeds[@]}"; do
   one "$s" & running=$((running + 1))
 done
 while [ "$running" -gt 0 ]; do wait -n || failed=1; running=$((running - 1)); done
+pnr_progress_stop
 [ "$failed" -eq 0 ] || { echo "pnr-seeds: $name does not place on every seed" >&2; exit 1; }
 
 # Every seed placed from this netlist, in this call or an earlier one.

@@ -16,8 +16,11 @@
 # --placer-heap-critexp 4"; empty for nextpnr's defaults).  Measured on
 # one netlist of the build for clock rate: 121.4 -> 125.9 MHz (seed 1),
 # 122.1 -> 133.2 MHz (seed 2) (docs/fpga.md "What the timing work learned").
+# PNR_PROGRESS: seconds between progress lines (nextpnr's phase; default
+# 60, 0 for none).
 # Exit status 1 if the netlist does not fit the device (after printing the
-# utilisation nextpnr reports), 0 otherwise, also when timing misses.
+# utilisation nextpnr reports), 2 on a bad argument, 0 otherwise, also
+# when timing misses.
 set -euo pipefail
 arch=$1; name=$2; json=$3; out=$4
 here=$(cd "$(dirname "$0")" && pwd); cons="$here/../constraints"
@@ -47,6 +50,10 @@ for i in "${!cmd[@]}"; do
   if [ -e "${cmd[$i]}" ] && [[ "${cmd[$i]}" == */* ]]; then cmd[$i]=$(rel "${cmd[$i]}"); fi
 done
 json_rel=$(rel "$json")
+# Progress lines while nextpnr runs (PNR_PROGRESS, scripts/pnr-progress.sh).
+. "$here/pnr-progress.sh"
+trap pnr_progress_stop EXIT
+pnr_progress_start "pnr: $name, seed $seed" "$base.log"
 if ! (cd "$out" && "${cmd[@]}" --json "$json_rel" --seed "$seed" --threads 1 \
         --timing-allow-fail --report "${name}_${arch}_report.json" -l "${name}_$arch.log") \
         >/dev/null 2>&1; then
@@ -57,5 +64,6 @@ if ! (cd "$out" && "${cmd[@]}" --json "$json_rel" --seed "$seed" --threads 1 \
   echo "$name,$device,,,,,,$target,,,,does not fit," >> "$out/pnr_summary.csv"
   exit 1
 fi
+pnr_progress_stop
 python3 "$here/pnr-report.py" "${base}_report.json" "$name" "$device" "$target" \
   "$out/pnr_summary.csv"

@@ -6,8 +6,9 @@
 # place and route: every seed run once, the best one chosen (ties: the
 # lower seed), least / median / mean / greatest right, the best placement's
 # configuration kept, a sweep in parts taken whole (the seeds of one
-# netlist only), bad arguments refused, and a seed that does not place
-# failing the sweep without leaving a "best" configuration.
+# netlist only), bad arguments refused, a seed that does not place failing
+# the sweep without leaving a "best" configuration, and progress lines
+# with each running seed's phase (PNR_PROGRESS, scripts/pnr-phase.py).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -26,6 +27,20 @@ while [ $# -gt 0 ]; do
   esac; shift
 done
 echo "fake nextpnr, seed $seed" > "$log"
+# FAKE_SLOW: seconds spent in each of nextpnr's phases, written to the log
+# as nextpnr writes them (for the progress lines).
+if [ -n "${FAKE_SLOW:-}" ]; then
+  echo "Info: Running main analytical placer, max placement attempts per cell = 1000." >> "$log"
+  echo "Info:     at iteration #7, type ALL: wirelen solved = 1, spread = 2, legal = 3; time = 0.1s" >> "$log"
+  sleep "$FAKE_SLOW"
+  echo "Info: Running simulated annealing placer for refinement." >> "$log"
+  echo "Info:   at iteration #12: temp = 0.000000, timing cost = 10, wirelen = 20" >> "$log"
+  sleep "$FAKE_SLOW"
+  printf 'Info: Routing globals...\nInfo: Routing..\nInfo: Routing 1000 arcs.\n' >> "$log"
+  echo "Info:       3000 |      700       2000 |  300   700 |       250|       1.00       9.00|" >> "$log"
+  sleep "$FAKE_SLOW"
+  echo "Info: Router1 time 27.00s" >> "$log"
+fi
 fmax=$(tr ' ' '\n' <<< "$FAKE_FMAX" | awk -F: -v s="$seed" '$1 == s {print $2}')
 [ -n "$fmax" ] || { echo "ERROR: Unable to place cell" >> "$log"; exit 1; }
 echo "configuration of seed $seed" > "$cfg"
@@ -54,6 +69,41 @@ grep -q "least 120.0, median 140.5, mean 136.7, greatest 151.3 MHz (seed 7)" "$t
 [ "$(tail -1 "$tmp/out/pnr_summary.csv" | cut -d, -f7)" = 151.3 ] ||
   fail "pnr-seeds.sh: pnr_summary.csv does not end with the best seed's row"
 for s in 2 3 5 7 9; do grep -q "seed $s: Fmax" "$tmp/log" || fail "pnr-seeds.sh: no line for seed $s"; done
+
+# Progress (PNR_PROGRESS): a line a second, each running seed's phase
+# from its log (scripts/pnr-phase.py); the watcher ends with the sweep.
+TMPDIR=$tmp FAKE_SLOW=2.5 FAKE_FMAX="4:140.0 6:130.0" PNR_PROGRESS=1 PNR_JOBS=2 \
+  bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/slow" 4 6 > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh failed on a slow sweep"; }
+for want in "seed 4 HeAP placement (iteration 7); seed 6 HeAP placement" \
+            "seed 6 annealing (iteration 12)" \
+            "seed 4 routing (250 of 1,000 arcs left after 3,000 iterations)"; do
+  grep -qF "$want" "$tmp/log" || { cat "$tmp/log"; fail "pnr-seeds.sh: no progress line with '$want'"; }
+done
+grep -q "^pnr-seeds: core: 0:00:0[1-9] elapsed; seed 4 " "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr-seeds.sh: progress lines without the time elapsed"; }
+sleep 0.3
+! pgrep -f "pnr-phase.py --watch 1 pnr-seeds: core $tmp/" > /dev/null ||
+  fail "pnr-seeds.sh: the progress watcher outlived the sweep"
+[ -z "$(ls -d "$tmp"/fp3_pnr_seeds.* 2>/dev/null)" ] || fail "pnr-seeds.sh: its progress folder left behind"
+FAKE_SLOW=1.5 FAKE_FMAX="1:140.0" PNR_PROGRESS=1 PNR_SEED=1 \
+  bash scripts/pnr.sh ecp5 core "$tmp/net.json" "$tmp/one" > "$tmp/log" 2>&1 ||
+  { cat "$tmp/log"; fail "pnr.sh failed on a slow placement"; }
+grep -q "^pnr: core, seed 1: 0:00:0[1-9] elapsed; annealing (iteration 12)" "$tmp/log" ||
+  { cat "$tmp/log"; fail "pnr.sh: no progress line"; }
+# The phases of logs as nextpnr writes them, router2's too.
+printf 'Info: Running main analytical placer\nInfo: Running simulated annealing placer\nInfo: Routing globals...\nInfo: Running router2...\nInfo:     iter=3 wires=12 overused=4242 overuse=5000 archfail=NA\n' > "$tmp/r2.log"
+[ "$(python3 scripts/pnr-phase.py "$tmp/r2.log")" = "routing (router2 iteration 3, 4,242 wires overused)" ] ||
+  fail "pnr-phase.py: router2's phase: $(python3 scripts/pnr-phase.py "$tmp/r2.log")"
+printf 'Info: Router1 time 9.0s\nInfo: Program finished normally.\n' >> "$tmp/r2.log"
+[ "$(python3 scripts/pnr-phase.py "$tmp/r2.log")" = finished ] || fail "pnr-phase.py: a finished log"
+[ "$(python3 scripts/pnr-phase.py "$tmp/none.log")" = starting ] || fail "pnr-phase.py: no log yet"
+echo "Info: Packing" > "$tmp/p.log"
+[ "$(python3 scripts/pnr-phase.py "$tmp/p.log")" = packing ] || fail "pnr-phase.py: packing"
+for call in "pnr-seeds.sh core $tmp/net.json $tmp/b 1" "pnr.sh ecp5 core $tmp/net.json $tmp/b"; do
+  set +e; PNR_PROGRESS=soon bash scripts/$call > "$tmp/log" 2>&1; rc=$?; set -e
+  [ "$rc" -eq 2 ] && grep -q "bad PNR_PROGRESS" "$tmp/log" || { cat "$tmp/log"; fail "${call%% *}: PNR_PROGRESS=soon not refused"; }
+done
 
 # An even count of seeds: the median is the mean of the two middle ones.
 FAKE_FMAX="1:130.0 2:150.0 3:142.0 4:120.0" bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/even" 1 2 3 4 > "$tmp/log" 2>&1 ||
@@ -104,4 +154,4 @@ done
 set +e; PNR_JOBS=0 bash scripts/pnr-seeds.sh core "$tmp/net.json" "$tmp/b" 1 > "$tmp/log" 2>&1; rc=$?; set -e
 [ "$rc" -eq 2 ] && grep -q "bad PNR_JOBS" "$tmp/log" || fail "pnr-seeds.sh: PNR_JOBS=0 not refused"
 bash scripts/pnr-seeds.sh --help | grep -q "seed sweep" || fail "pnr-seeds.sh --help"
-echo "PASS: test_pnr_seeds (pnr-seeds.sh: sweep, best seed, ties, a sweep in parts, a seed that does not place, bad arguments)"
+echo "PASS: test_pnr_seeds (pnr-seeds.sh: sweep, best seed, ties, a sweep in parts, a seed that does not place, bad arguments, progress lines)"
