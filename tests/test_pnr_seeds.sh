@@ -86,7 +86,7 @@ sleep 0.3
 ! pgrep -f "pnr-phase.py --watch 1 pnr-seeds: core $tmp/" > /dev/null ||
   fail "pnr-seeds.sh: the progress watcher outlived the sweep"
 [ -z "$(ls -d "$tmp"/fp3_pnr_seeds.* 2>/dev/null)" ] || fail "pnr-seeds.sh: its progress folder left behind"
-FAKE_SLOW=1.5 FAKE_FMAX="1:140.0" PNR_PROGRESS=1 PNR_SEED=1 \
+FAKE_SLOW=2.5 FAKE_FMAX="1:140.0" PNR_PROGRESS=1 PNR_SEED=1 \
   bash scripts/pnr.sh ecp5 core "$tmp/net.json" "$tmp/one" > "$tmp/log" 2>&1 ||
   { cat "$tmp/log"; fail "pnr.sh failed on a slow placement"; }
 grep -q "^pnr: core, seed 1: 0:00:0[1-9] elapsed; annealing (iteration 12)" "$tmp/log" ||
