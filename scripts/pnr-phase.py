@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""pnr-phase.py LOG | --watch SECONDS PREFIX PATH -- where a running
+"""pnr-phase.py LOG | --watch SECONDS PREFIX PATH [PID] -- where a running
 nextpnr is, read from its log: the progress lines of scripts/pnr.sh,
 pnr-seeds.sh and bitstream.sh (scripts/pnr-progress.sh; a placement of a
 full LFE5U-85F takes one to three hours here, silent otherwise).
@@ -10,8 +10,10 @@ with the phase of the log at PATH; or, when PATH is a folder, "...
 elapsed; seed K PHASE; ..." for each of its files (named by a seed,
 holding the path of that seed's log; the caller adds a file when a
 placement starts and removes it when it ends), nothing while the folder
-is empty.  It stops when the folder is removed or its parent process ends.  Phases, in nextpnr's order (ECP5
-and iCE40 alike):
+is empty.  It stops when the folder is removed or when its parent
+process, PID (default: the parent it starts with), is no longer its
+parent: a caller killed before the watcher starts leaves no watcher.
+Phases, in nextpnr's order (ECP5 and iCE40 alike):
 
   starting                     no log yet
   packing                      before the placer
@@ -81,12 +83,14 @@ def log_phase(path):
         return "starting"
 
 
-def watch(seconds, prefix, path):
-    """The --watch loop (see above); returns when its parent process ends,
-    or the folder at path is removed."""
-    parent, start = os.getppid(), time.monotonic()
+def watch(seconds, prefix, path, parent):
+    """The --watch loop (see above); returns when parent is no longer the
+    parent process, or the folder at path is removed."""
+    start = time.monotonic()
     folder = os.path.isdir(path)
     while True:
+        if os.getppid() != parent:
+            return
         time.sleep(seconds)
         if os.getppid() != parent or (folder and not os.path.isdir(path)):
             return
@@ -117,9 +121,11 @@ def main(argv):
     if len(argv) == 2:
         print(log_phase(argv[1]))
         return 0
-    if len(argv) == 5 and argv[1] == "--watch" and re.fullmatch(r"[1-9]\d*", argv[2]):
+    if (len(argv) in (5, 6) and argv[1] == "--watch" and re.fullmatch(r"[1-9]\d*", argv[2])
+            and (len(argv) == 5 or re.fullmatch(r"[1-9]\d*", argv[5]))):
+        parent = int(argv[5]) if len(argv) == 6 else os.getppid()
         try:
-            watch(int(argv[2]), argv[3], argv[4])
+            watch(int(argv[2]), argv[3], argv[4], parent)
         except KeyboardInterrupt:
             pass
         return 0

@@ -9,14 +9,14 @@
 #   watcher runs out of the caller's job table, so that the caller's
 #   `wait -n` waits for its own jobs only.  Exits 2 on a bad PNR_PROGRESS.
 # pnr_progress_stop: ends the watcher; call it from the caller's EXIT trap
-#   too (the watcher also ends by itself once its caller has gone).
+#   too (the watcher also ends by itself once its caller, $$, has gone).
 pnr_watcher=
 pnr_progress_start() {
   local every=${PNR_PROGRESS:-60}
   [[ "$every" =~ ^[0-9]+$ ]] ||
     { echo "$(basename "$0"): bad PNR_PROGRESS '$every' (seconds, 0 for none)" >&2; exit 2; }
   [ "$every" -gt 0 ] || return 0
-  python3 "$(dirname "${BASH_SOURCE[0]}")/pnr-phase.py" --watch "$every" "$1" "$2" &
+  python3 "$(dirname "${BASH_SOURCE[0]}")/pnr-phase.py" --watch "$every" "$1" "$2" $$ &
   pnr_watcher=$!
   disown "$pnr_watcher"
 }

@@ -91,6 +91,13 @@ FAKE_SLOW=2.5 FAKE_FMAX="1:140.0" PNR_PROGRESS=1 PNR_SEED=1 \
   { cat "$tmp/log"; fail "pnr.sh failed on a slow placement"; }
 grep -q "^pnr: core, seed 1: 0:00:0[1-9] elapsed; annealing (iteration 12)" "$tmp/log" ||
   { cat "$tmp/log"; fail "pnr.sh: no progress line"; }
+# A caller killed (SIGKILL: no EXIT trap) as its watcher starts leaves no
+# watcher behind (pnr-progress.sh passes the caller's pid).
+(PNR_PROGRESS=1 bash -c '. scripts/pnr-progress.sh; pnr_progress_start "orphan: $1" "$1/none.log"; kill -9 $$' _ "$tmp"; true) \
+  > "$tmp/orphan.log" 2>&1 || true
+sleep 1.5
+! pgrep -f "pnr-phase.py --watch 1 orphan: $tmp" > /dev/null ||
+  { pkill -f "pnr-phase.py --watch 1 orphan: $tmp"; fail "pnr-progress.sh: a watcher outlived its killed caller"; }
 # The phases of logs as nextpnr writes them, router2's too.
 printf 'Info: Running main analytical placer\nInfo: Running simulated annealing placer\nInfo: Routing globals...\nInfo: Running router2...\nInfo:     iter=3 wires=12 overused=4242 overuse=5000 archfail=NA\n' > "$tmp/r2.log"
 [ "$(python3 scripts/pnr-phase.py "$tmp/r2.log")" = "routing (router2 iteration 3, 4,242 wires overused)" ] ||
