@@ -21,6 +21,7 @@
 #             PNR_JOBS at a time (scripts/pnr-seeds.sh): each seed's Fmax,
 #             their least, mean and greatest, the best placement kept]
 #            [PNR_ECP5_PLACER="nextpnr placer options" (scripts/pnr.sh)]
+#            [PNR_PROGRESS=s: seconds between progress lines, default 60, 0: none]
 
 PNR_DIR         := $(BUILD)/pnr
 PNR_SYNTH_DIR   := $(BUILD)/synth

@@ -45,7 +45,7 @@ ROUTER2 = re.compile(r"iter=(\d+) .*overused=(\d+)")
 
 
 def phase(lines):
-    """The phase of a nextpnr log given as a list of lines (see above)."""
+    """The phase of a nextpnr log, given as its lines (a file or a list; see above)."""
     state, detail, arcs = "packing", "", None
     for line in lines:
         if "Program finished normally" in line:
