@@ -2,7 +2,7 @@
 """pnr-phase.py LOG | --watch SECONDS PREFIX PATH [PID] -- where a running
 nextpnr is, read from its log: the progress lines of scripts/pnr.sh,
 pnr-seeds.sh and bitstream.sh (scripts/pnr-progress.sh; a placement of a
-full LFE5U-85F takes one to three hours here, silent otherwise).
+full LFE5U-85F takes half an hour to three hours here, silent otherwise).
 
 LOG: prints one line, the phase nextpnr last entered and how far it is in
 it.  --watch: every SECONDS, one line "PREFIX: H:MM:SS elapsed; PHASE"

@@ -1,6 +1,6 @@
 # pnr-progress.sh -- sourced by scripts/pnr.sh, pnr-seeds.sh and
 # bitstream.sh: progress lines while nextpnr runs (a full LFE5U-85F
-# places and routes for one to three hours, and says nothing until then).
+# places and routes for half an hour to three hours, silent until then).
 #
 # pnr_progress_start PREFIX PATH: every PNR_PROGRESS seconds (default 60;
 #   0 for none) a line "PREFIX: H:MM:SS elapsed; PHASE" with the phase of
