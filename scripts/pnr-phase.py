@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""pnr-phase.py LOG | --watch SECONDS PREFIX PATH [PID] -- where a running
+"""pnr-phase.py LOG | --watch SECONDS PREFIX PATH PID -- where a running
 nextpnr is, read from its log: the progress lines of scripts/pnr.sh,
 pnr-seeds.sh and bitstream.sh (scripts/pnr-progress.sh; a placement of a
 full LFE5U-85F takes half an hour to three hours here, silent otherwise).
@@ -10,9 +10,10 @@ with the phase of the log at PATH; or, when PATH is a folder, "...
 elapsed; seed K PHASE; ..." for each of its files (named by a seed,
 holding the path of that seed's log; the caller adds a file when a
 placement starts and removes it when it ends), nothing while the folder
-is empty.  It stops when the folder is removed or when its parent
-process, PID (default: the parent it starts with), is no longer its
-parent: a caller killed before the watcher starts leaves no watcher.
+is empty.  It stops when the folder is removed or when PID, the caller
+that starts it, is no longer its parent process: so a caller killed
+before the watcher starts leaves no watcher (a parent read at start-up
+would already be init's).
 Phases, in nextpnr's order (ECP5 and iCE40 alike):
 
   starting                     no log yet
@@ -121,11 +122,10 @@ def main(argv):
     if len(argv) == 2:
         print(log_phase(argv[1]))
         return 0
-    if (len(argv) in (5, 6) and argv[1] == "--watch" and re.fullmatch(r"[1-9]\d*", argv[2])
-            and (len(argv) == 5 or re.fullmatch(r"[1-9]\d*", argv[5]))):
-        parent = int(argv[5]) if len(argv) == 6 else os.getppid()
+    if (len(argv) == 6 and argv[1] == "--watch" and re.fullmatch(r"[1-9]\d*", argv[2])
+            and re.fullmatch(r"[1-9]\d*", argv[5])):
         try:
-            watch(int(argv[2]), argv[3], argv[4], parent)
+            watch(int(argv[2]), argv[3], argv[4], int(argv[5]))
         except KeyboardInterrupt:
             pass
         return 0
