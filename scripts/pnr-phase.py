@@ -89,9 +89,9 @@ def watch(seconds, prefix, path, parent):
     parent process, or the folder at path is removed."""
     start = time.monotonic()
     folder = os.path.isdir(path)
+    if os.getppid() != parent:
+        return
     while True:
-        if os.getppid() != parent:
-            return
         time.sleep(seconds)
         if os.getppid() != parent or (folder and not os.path.isdir(path)):
             return
