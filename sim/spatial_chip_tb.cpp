@@ -14,7 +14,8 @@
 // Checks, each reported as "FAIL: <check>: ..." (exit 1 if any fails):
 //   id       ID, HASH, INFO, LATENCY, MAXOBJ and STRIDES read as expected
 //   load     every object's inputs and carried values written through the
-//            windows (AW before W, W before AW, both together) read back
+//            windows (AW before W, W before AW, both together) read back;
+//            a write and a read of another row presented together
 //   slverr   the SLVERR cases of the map answer SLVERR and change nothing,
 //            and the OKAY ones OKAY
 //   run      runs of K steps over an awake list: afterwards every object's
@@ -25,7 +26,10 @@
 //   flags    FLAGS after a run: inexact (the ship's steps round, nothing
 //            else), none after a run of no step (START clears it)
 //   busy     while running: STATUS.RUNNING, SLVERR for STEPS, COUNT and the
-//            windows, START ignored
+//            windows, START ignored; a window read right behind START
+//            answers SLVERR or its word, never another's
+//   rate     back-to-back reads (a scalar register, a window word) answer
+//            every 7th cycle and writes every 2nd (docs/spatial.md)
 // The runs: a few objects awake (n < L: a step is bubbles but for n / N
 // cycles), most awake (n > N * L when M allows), 0 steps.
 #include <cinttypes>
@@ -123,6 +127,106 @@ static uint32_t axi_read(uint32_t wa, unsigned *resp) {
 
 static const unsigned OKAY = 0, SLVERR = 2;
 
+// A write of data to wa and a read of ra presented together (AW, W and
+// AR in the same cycle, or AR ar_wait cycles later), so that the slave
+// performs one right after the other.  Returns the read's word; *bresp,
+// *rresp the responses.
+static uint32_t axi_write_with_read(uint32_t wa, uint32_t data, uint32_t ra, unsigned *bresp,
+                                    unsigned *rresp, int ar_wait = 0) {
+  bool aw = true, w = true, ar = true, b = false, r = false;
+  uint32_t rdata = 0;
+  *bresp = *rresp = 3;
+  top->s_axil_bready_i = 1;
+  top->s_axil_rready_i = 1;
+  for (int n = 0; n < 1000 && !(b && r); n++) {
+    top->clk_i = 0;
+    top->s_axil_awvalid_i = aw;
+    top->s_axil_awaddr_i = FP3S_BYTE(wa);
+    top->s_axil_awprot_i = 0;
+    top->s_axil_wvalid_i = w;
+    top->s_axil_wdata_i = data;
+    top->s_axil_wstrb_i = 0xF;
+    top->s_axil_arvalid_i = ar && ar_wait == 0;
+    top->s_axil_araddr_i = FP3S_BYTE(ra);
+    top->s_axil_arprot_i = 0;
+    top->eval();
+    const bool aw_hs = aw && top->s_axil_awready_o, w_hs = w && top->s_axil_wready_o;
+    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
+    if (ar_wait) ar_wait--;
+    if (!b && top->s_axil_bvalid_o) b = true, *bresp = top->s_axil_bresp_o;
+    if (!r && top->s_axil_rvalid_o) r = true, *rresp = top->s_axil_rresp_o,
+                                    rdata = top->s_axil_rdata_o;
+    tick();
+    if (aw_hs) aw = false;
+    if (w_hs) w = false;
+    if (ar_hs) ar = false;
+  }
+  top->s_axil_awvalid_i = top->s_axil_wvalid_i = top->s_axil_arvalid_i = 0;
+  top->s_axil_bready_i = top->s_axil_rready_i = 0;
+  if (!(b && r)) fail("axi", "no response to a write and a read presented together");
+  return rdata;
+}
+
+// The slave's transfer rate, cycle-exact: n reads of wa with ARVALID and
+// RREADY held high (the next AR presented as soon as one is accepted), or
+// n writes of data to wa with AWVALID, WVALID and BREADY held high.
+// Returns the cycles from the first response to the last over n - 1 (the
+// period), or 0 when a response is missing or not OKAY.
+static unsigned axi_read_period(uint32_t wa, unsigned n) {
+  unsigned issued = 0, got = 0;
+  uint64_t first = 0, last = 0;
+  top->s_axil_rready_i = 1;
+  for (int k = 0; k < 100 * (int)n && got < n; k++) {
+    top->clk_i = 0;
+    top->s_axil_arvalid_i = issued < n;
+    top->s_axil_araddr_i = FP3S_BYTE(wa);
+    top->s_axil_arprot_i = 0;
+    top->eval();
+    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
+    const bool r_hs = top->s_axil_rvalid_o;
+    const unsigned resp = top->s_axil_rresp_o;
+    tick();
+    if (ar_hs) issued++;
+    if (r_hs) {
+      if (resp != OKAY) break;
+      (got++ ? last : first) = cycle;
+    }
+  }
+  top->s_axil_arvalid_i = 0;
+  top->s_axil_rready_i = 0;
+  return got == n && n > 1 ? (unsigned)((last - first) / (n - 1)) : 0;
+}
+static unsigned axi_write_period(uint32_t wa, uint32_t data, unsigned n) {
+  unsigned aw = 0, w = 0, got = 0;
+  uint64_t first = 0, last = 0;
+  top->s_axil_bready_i = 1;
+  for (int k = 0; k < 100 * (int)n && got < n; k++) {
+    top->clk_i = 0;
+    top->s_axil_awvalid_i = aw < n;
+    top->s_axil_awaddr_i = FP3S_BYTE(wa);
+    top->s_axil_awprot_i = 0;
+    top->s_axil_wvalid_i = w < n;
+    top->s_axil_wdata_i = data;
+    top->s_axil_wstrb_i = 0xF;
+    top->eval();
+    const bool aw_hs = top->s_axil_awvalid_i && top->s_axil_awready_o;
+    const bool w_hs = top->s_axil_wvalid_i && top->s_axil_wready_o;
+    const bool b_hs = top->s_axil_bvalid_o;
+    const unsigned resp = top->s_axil_bresp_o;
+    tick();
+    aw += aw_hs;
+    w += w_hs;
+    if (b_hs) {
+      if (resp != OKAY) break;
+      (got++ ? last : first) = cycle;
+    }
+  }
+  top->s_axil_awvalid_i = 0;
+  top->s_axil_wvalid_i = 0;
+  top->s_axil_bready_i = 0;
+  return got == n && n > 1 ? (unsigned)((last - first) / (n - 1)) : 0;
+}
+
 static std::string hex(uint32_t v) {
   char b[16];
   std::snprintf(b, sizeof b, "%08X", v);
@@ -190,6 +294,15 @@ int main(int argc, char **argv) {
   const uint32_t SS = FP3S_STATE_STRIDE(strides), SI = FP3S_INPUT_STRIDE(strides);
   expect_read("id", FP3S_STATUS, OKAY, 0);
 
+  // ---- rate: back-to-back transfers, as docs/spatial.md gives them ----
+  // (a scalar register and one object's words: no division by N)
+  const unsigned rp = axi_read_period(FP3S_ID, 8), rpw = axi_read_period(FP3S_STATE_BASE, 8);
+  const unsigned wp = axi_write_period(FP3S_STEPS, 0, 8);
+  if (rp != 7 || rpw != 7 || wp != 2)
+    fail("rate", "a read every " + std::to_string(rp) + " cycles (a window's: " +
+                     std::to_string(rpw) + "), a write every " + std::to_string(wp) +
+                     "; want 7, 7 and 2");
+
   // ---- load: every object, the three channel orders in turn ----
   int order = 0;
   for (unsigned o = 0; o < M; o++) {
@@ -223,6 +336,23 @@ int main(int argc, char **argv) {
       }
     }
   };
+  check_all("load");
+  // a write and a read presented together, to rows of one bank (objects
+  // o and o + N): each performed right after the other, in either order
+  // (the arbitration takes turns), the read's word that of its own row.
+  // Inputs, whose words differ between objects (the initial carried
+  // values may all be zero).
+  for (unsigned o = 0; o + N < M && o < 4 * N; o++)
+    for (unsigned k = 0; k < nin; k++) {
+      unsigned br, rr;
+      const uint32_t want = in[(o + N) * nin + k];
+      const uint32_t got = axi_write_with_read(FP3S_INPUT_BASE + o * SI + k, in[o * nin + k],
+                                               FP3S_INPUT_BASE + (o + N) * SI + k, &br, &rr);
+      if (br != OKAY || rr != OKAY || got != want)
+        fail("load", "a write to object " + std::to_string(o) + " with a read of object " +
+                         std::to_string(o + N) + ", input " + std::to_string(k) + ": " +
+                         hex(got) + ", want " + hex(want));
+    }
   check_all("load");
 
   // ---- slverr: each case answers SLVERR and changes nothing ----
@@ -269,8 +399,21 @@ int main(int argc, char **argv) {
     for (size_t i = 0; i < count; i++) expect_read("run", FP3S_AWAKE_BASE + (uint32_t)i, OKAY, list[i]);
     expect_write("run", FP3S_COUNT, (uint32_t)count, OKAY);
     expect_write("run", FP3S_STEPS, K, OKAY);
-    expect_write("run", FP3S_CTRL, FP3S_CTRL_START, OKAY);
+    if (!busy_checks) expect_write("run", FP3S_CTRL, FP3S_CTRL_START, OKAY);
     if (busy_checks) {
+      // START with a window read right behind it: the read is performed
+      // as the run begins, so it answers SLVERR (or, before START, its
+      // word); never another object's word.  (The read before it is of
+      // the same object, so that this one needs no division by N.)
+      unsigned br, rr;
+      const unsigned o = M - 1;
+      expect_read("busy", FP3S_INPUT_BASE + o * SI, OKAY, in[o * nin]);
+      const uint32_t got = axi_write_with_read(FP3S_CTRL, FP3S_CTRL_START,
+                                               FP3S_INPUT_BASE + o * SI + nin - 1, &br, &rr, 1);
+      if (br != OKAY || !(rr == SLVERR ? got == 0 : rr == OKAY && got == in[o * nin + nin - 1]))
+        fail("busy", "START with a read of object " + std::to_string(o) + "'s input: resp " +
+                         std::to_string(br) + ", read resp " + std::to_string(rr) + " " +
+                         hex(got));
       expect_read("busy", FP3S_STATUS, OKAY, FP3S_STATUS_RUNNING);
       expect_write("busy", FP3S_STEPS, 1, SLVERR);
       expect_write("busy", FP3S_COUNT, 1, SLVERR);
