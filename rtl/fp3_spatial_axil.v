@@ -10,12 +10,12 @@
 // order, into a one-entry holding register each; the write is decided
 // once both are held and the B channel is free (or being emptied this
 // cycle), and performed in the next cycle.  AR is held likewise, decided
-// and performed a cycle later; the read's word is captured RD_CYCLES = 5
+// and performed a cycle later; the read's word is captured RD_CYCLES = 6
 // cycles after it is performed (the host port's register, the frame's
-// two-cycle memory read, its bank register and its multiplexer register)
-// and held on R until RREADY.  B and R stay valid, with stable payload,
-// until accepted.  Each channel takes a new transfer every second cycle
-// (reads every seventh: one read in flight).  When N is not a power of
+// two-cycle memory read and its three read stages) and held on R until
+// RREADY.  B and R stay valid, with stable payload, until accepted.  Each
+// channel takes a new transfer every second cycle (reads every eighth:
+// one read in flight).  When N is not a power of
 // two, an access to a window waits clog2(M + 1) + 1 cycles for its object
 // or entry number's division by N (fp3_spatial_divn; none for the next
 // word of the same object), and a write to the awake list or COUNT as
@@ -118,7 +118,7 @@ module fp3_spatial_axil #(
   localparam [3:0]  STRB_ALL    = 4'b1111;
   localparam [1:0]  SEL_SCALAR  = 2'd0;
   localparam [1:0]  SEL_AWAKE   = 2'd1;
-  localparam integer RD_CYCLES  = 5;
+  localparam integer RD_CYCLES  = 6;
   // the scalar registers (fp3_spatial_regs.h FP3S_REGS)
   localparam [19:0] R_ID = 20'h000, R_HASH = 20'h001, R_INFO = 20'h002, R_LATENCY = 20'h003,
                     R_MAXOBJ = 20'h004, R_STRIDES = 20'h005, R_CTRL = 20'h008,

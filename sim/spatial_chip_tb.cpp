@@ -26,10 +26,10 @@
 //   flags    FLAGS after a run: inexact (the ship's steps round, nothing
 //            else), none after a run of no step (START clears it)
 //   busy     while running: STATUS.RUNNING, SLVERR for STEPS, COUNT and the
-//            windows, START ignored; a window read right behind START
-//            answers SLVERR or its word, never another's
+//            windows, START ignored; a window read performed right after
+//            START answers SLVERR
 //   rate     back-to-back reads (a scalar register, a window word) answer
-//            every 7th cycle and writes every 2nd (docs/spatial.md)
+//            every 8th cycle and writes every 2nd (docs/spatial.md)
 // The runs: a few objects awake (n < L: a step is bubbles but for n / N
 // cycles), most awake (n > N * L when M allows), 0 steps.
 #include <cinttypes>
@@ -298,10 +298,10 @@ int main(int argc, char **argv) {
   // (a scalar register and one object's words: no division by N)
   const unsigned rp = axi_read_period(FP3S_ID, 8), rpw = axi_read_period(FP3S_STATE_BASE, 8);
   const unsigned wp = axi_write_period(FP3S_STEPS, 0, 8);
-  if (rp != 7 || rpw != 7 || wp != 2)
+  if (rp != 8 || rpw != 8 || wp != 2)
     fail("rate", "a read every " + std::to_string(rp) + " cycles (a window's: " +
                      std::to_string(rpw) + "), a write every " + std::to_string(wp) +
-                     "; want 7, 7 and 2");
+                     "; want 8, 8 and 2");
 
   // ---- load: every object, the three channel orders in turn ----
   int order = 0;
@@ -401,19 +401,20 @@ int main(int argc, char **argv) {
     expect_write("run", FP3S_STEPS, K, OKAY);
     if (!busy_checks) expect_write("run", FP3S_CTRL, FP3S_CTRL_START, OKAY);
     if (busy_checks) {
-      // START with a window read right behind it: the read is performed
-      // as the run begins, so it answers SLVERR (or, before START, its
-      // word); never another object's word.  (The read before it is of
-      // the same object, so that this one needs no division by N.)
+      // START with a window read right behind it (AR a cycle after AW
+      // and W, so the write is performed first): the read is performed
+      // after START, so it answers as during the run, SLVERR.  (The read
+      // before it is of the same object, so that this one needs no
+      // division by N and follows START by a cycle or two.)
       unsigned br, rr;
       const unsigned o = M - 1;
       expect_read("busy", FP3S_INPUT_BASE + o * SI, OKAY, in[o * nin]);
       const uint32_t got = axi_write_with_read(FP3S_CTRL, FP3S_CTRL_START,
                                                FP3S_INPUT_BASE + o * SI + nin - 1, &br, &rr, 1);
-      if (br != OKAY || !(rr == SLVERR ? got == 0 : rr == OKAY && got == in[o * nin + nin - 1]))
-        fail("busy", "START with a read of object " + std::to_string(o) + "'s input: resp " +
+      if (br != OKAY || rr != SLVERR || got != 0)
+        fail("busy", "START with a read of object " + std::to_string(o) + "'s input behind it: resp " +
                          std::to_string(br) + ", read resp " + std::to_string(rr) + " " +
-                         hex(got));
+                         hex(got) + ", want SLVERR");
       expect_read("busy", FP3S_STATUS, OKAY, FP3S_STATUS_RUNNING);
       expect_write("busy", FP3S_STEPS, 1, SLVERR);
       expect_write("busy", FP3S_COUNT, 1, SLVERR);

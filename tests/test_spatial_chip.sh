@@ -175,8 +175,8 @@ if [ -n "$mutants" ]; then
     "(!busy && wk_ok_idle_q)" "(1'b1 && wk_ok_idle_q)" busy
   mutant busy-without-start 3 252 fp3_spatial_axil.v "wire busy = running_i || start_q;" \
     "wire busy = running_i;" busy
-  mutant read-early 3 252 fp3_spatial_axil.v "RD_CYCLES  = 5;" "RD_CYCLES  = 4;" load
-  mutant read-late 3 252 fp3_spatial_axil.v "RD_CYCLES  = 5;" "RD_CYCLES  = 6;" load
+  mutant read-early 3 252 fp3_spatial_axil.v "RD_CYCLES  = 6;" "RD_CYCLES  = 5;" load
+  mutant read-late 3 252 fp3_spatial_axil.v "RD_CYCLES  = 6;" "RD_CYCLES  = 7;" load
   mutant input-word-ignored 1 96 fp3_spatial_frame.v \
     "{NI{we && host_sel_i == SEL_INPUT}} & host_input_word" "{NI{we && host_sel_i == SEL_INPUT}}" load
   mutant b-before-w 1 96 fp3_spatial_axil.v "assign s_axil_bvalid_o  = b_valid_q;" \
