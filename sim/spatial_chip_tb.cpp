@@ -62,6 +62,34 @@ static void tick() {
   cycle++;
 }
 
+// The AW and W channels' inputs (valid bits, address of word wa, data and
+// strobes), and the AR channel's (valid bit, address of word ra).
+static void set_write(bool aw, bool w, uint32_t wa, uint32_t data, unsigned strb) {
+  top->s_axil_awvalid_i = aw;
+  top->s_axil_awaddr_i = FP3S_BYTE(wa);
+  top->s_axil_awprot_i = 0;
+  top->s_axil_wvalid_i = w;
+  top->s_axil_wdata_i = data;
+  top->s_axil_wstrb_i = strb;
+}
+static void set_read(bool ar, uint32_t ra) {
+  top->s_axil_arvalid_i = ar;
+  top->s_axil_araddr_i = FP3S_BYTE(ra);
+  top->s_axil_arprot_i = 0;
+}
+
+// The write channels' handshakes in this cycle (inputs set, clock low).
+struct write_hs {
+  bool aw, w, b;
+  unsigned bresp;
+};
+static write_hs eval_write() {
+  top->eval();
+  return {top->s_axil_awvalid_i && top->s_axil_awready_o,
+          top->s_axil_wvalid_i && top->s_axil_wready_o, (bool)top->s_axil_bvalid_o,
+          (unsigned)top->s_axil_bresp_o};
+}
+
 // A write of word address wa; order 0: AW and W together, 1: W three
 // cycles before AW, 2: AW three cycles before W.  Returns BRESP.
 static unsigned axi_write(uint32_t wa, uint32_t data, unsigned strb = 0xF, int order = 0) {
@@ -70,28 +98,19 @@ static unsigned axi_write(uint32_t wa, uint32_t data, unsigned strb = 0xF, int o
   top->s_axil_bready_i = 1;
   for (int n = 0; n < 1000; n++) {
     top->clk_i = 0;
-    top->s_axil_awvalid_i = aw && aw_wait == 0;
-    top->s_axil_awaddr_i = FP3S_BYTE(wa);
-    top->s_axil_awprot_i = 0;
-    top->s_axil_wvalid_i = w && w_wait == 0;
-    top->s_axil_wdata_i = data;
-    top->s_axil_wstrb_i = strb;
-    top->eval();
-    const bool aw_hs = top->s_axil_awvalid_i && top->s_axil_awready_o;
-    const bool w_hs = top->s_axil_wvalid_i && top->s_axil_wready_o;
-    const bool b_hs = top->s_axil_bvalid_o;
-    const unsigned resp = top->s_axil_bresp_o;
+    set_write(aw && aw_wait == 0, w && w_wait == 0, wa, data, strb);
+    const write_hs hs = eval_write();
     tick();
-    if (aw_hs) aw = false;
-    if (w_hs) w = false;
+    if (hs.aw) aw = false;
+    if (hs.w) w = false;
     if (aw_wait) aw_wait--;
     if (w_wait) w_wait--;
-    if (b_hs) {
+    if (hs.b) {
       top->s_axil_awvalid_i = 0;
       top->s_axil_wvalid_i = 0;
       top->s_axil_bready_i = 0;
       if (aw || w) fail("axi", "B before AW and W were accepted");
-      return resp;
+      return hs.bresp;
     }
   }
   fail("axi", "no write response");
@@ -104,9 +123,7 @@ static uint32_t axi_read(uint32_t wa, unsigned *resp) {
   top->s_axil_rready_i = 1;
   for (int n = 0; n < 1000; n++) {
     top->clk_i = 0;
-    top->s_axil_arvalid_i = ar;
-    top->s_axil_araddr_i = FP3S_BYTE(wa);
-    top->s_axil_arprot_i = 0;
+    set_read(ar, wa);
     top->eval();
     const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
     const bool r_hs = top->s_axil_rvalid_o;
@@ -140,15 +157,8 @@ static uint32_t axi_write_with_read(uint32_t wa, uint32_t data, uint32_t ra, uns
   top->s_axil_rready_i = 1;
   for (int n = 0; n < 1000 && !(b && r); n++) {
     top->clk_i = 0;
-    top->s_axil_awvalid_i = aw;
-    top->s_axil_awaddr_i = FP3S_BYTE(wa);
-    top->s_axil_awprot_i = 0;
-    top->s_axil_wvalid_i = w;
-    top->s_axil_wdata_i = data;
-    top->s_axil_wstrb_i = 0xF;
-    top->s_axil_arvalid_i = ar && ar_wait == 0;
-    top->s_axil_araddr_i = FP3S_BYTE(ra);
-    top->s_axil_arprot_i = 0;
+    set_write(aw, w, wa, data, 0xF);
+    set_read(ar && ar_wait == 0, ra);
     top->eval();
     const bool aw_hs = aw && top->s_axil_awready_o, w_hs = w && top->s_axil_wready_o;
     const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
@@ -178,9 +188,7 @@ static unsigned axi_read_period(uint32_t wa, unsigned n) {
   top->s_axil_rready_i = 1;
   for (int k = 0; k < 100 * (int)n && got < n; k++) {
     top->clk_i = 0;
-    top->s_axil_arvalid_i = issued < n;
-    top->s_axil_araddr_i = FP3S_BYTE(wa);
-    top->s_axil_arprot_i = 0;
+    set_read(issued < n, wa);
     top->eval();
     const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
     const bool r_hs = top->s_axil_rvalid_o;
@@ -202,22 +210,13 @@ static unsigned axi_write_period(uint32_t wa, uint32_t data, unsigned n) {
   top->s_axil_bready_i = 1;
   for (int k = 0; k < 100 * (int)n && got < n; k++) {
     top->clk_i = 0;
-    top->s_axil_awvalid_i = aw < n;
-    top->s_axil_awaddr_i = FP3S_BYTE(wa);
-    top->s_axil_awprot_i = 0;
-    top->s_axil_wvalid_i = w < n;
-    top->s_axil_wdata_i = data;
-    top->s_axil_wstrb_i = 0xF;
-    top->eval();
-    const bool aw_hs = top->s_axil_awvalid_i && top->s_axil_awready_o;
-    const bool w_hs = top->s_axil_wvalid_i && top->s_axil_wready_o;
-    const bool b_hs = top->s_axil_bvalid_o;
-    const unsigned resp = top->s_axil_bresp_o;
+    set_write(aw < n, w < n, wa, data, 0xF);
+    const write_hs hs = eval_write();
     tick();
-    aw += aw_hs;
-    w += w_hs;
-    if (b_hs) {
-      if (resp != OKAY) break;
+    aw += hs.aw;
+    w += hs.w;
+    if (hs.b) {
+      if (hs.bresp != OKAY) break;
       (got++ ? last : first) = cycle;
     }
   }
