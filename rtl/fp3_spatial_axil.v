@@ -7,20 +7,22 @@
 // are not).  Data are 32 bits wide.
 //
 // Channels, as fp3_axil's: AW and W are accepted independently, in either
-// order, into a one-entry holding register each; the write is performed
+// order, into a one-entry holding register each; the write is decided
 // once both are held and the B channel is free (or being emptied this
-// cycle).  AR is held likewise; the read's word is captured RD_CYCLES = 4
+// cycle), and performed in the next cycle.  AR is held likewise, decided
+// and performed a cycle later; the read's word is captured RD_CYCLES = 6
 // cycles after it is performed (the host port's register, the frame's
-// two-cycle memory read and its multiplexer register) and held on R until RREADY.  B and R stay valid,
-// with stable payload, until accepted.  Each channel takes a new transfer
-// every second cycle (reads every fifth).  When N is not a power of two,
-// an access to a window waits clog2(M + 1) + 1 cycles for its object or entry
-// number's division by N (fp3_spatial_divn; none for the next word of the
-// same object), and a write to the awake list or COUNT as long for its
-// word's.  A write and a read that are
-// both ready in one cycle take turns (round robin).  All outputs are
-// registered; no READY depends combinationally on a VALID.  The side band
-// (running_o, done_o) follows STATUS a cycle later.
+// two-cycle memory read and its three read stages) and held on R until
+// RREADY.  B and R stay valid, with stable payload, until accepted.  Each
+// channel takes a new transfer every second cycle (reads every eighth:
+// one read in flight).  When N is not a power of
+// two, an access to a window waits clog2(M + 1) + 1 cycles for its object
+// or entry number's division by N (fp3_spatial_divn; none for the next
+// word of the same object), and a write to the awake list or COUNT as
+// long for its word's.  A write and a read that are both ready in one
+// cycle take turns (round robin).  All outputs are registered; no READY
+// depends combinationally on a VALID.  The side band (running_o, done_o)
+// follows STATUS a cycle later.
 //
 // Addresses are decoded as they are captured (fp3_spatial_dec; the
 // awake entry's object number as the W word is), so that the checks at
@@ -116,7 +118,7 @@ module fp3_spatial_axil #(
   localparam [3:0]  STRB_ALL    = 4'b1111;
   localparam [1:0]  SEL_SCALAR  = 2'd0;
   localparam [1:0]  SEL_AWAKE   = 2'd1;
-  localparam integer RD_CYCLES  = 4;
+  localparam integer RD_CYCLES  = 6;
   // the scalar registers (fp3_spatial_regs.h FP3S_REGS)
   localparam [19:0] R_ID = 20'h000, R_HASH = 20'h001, R_INFO = 20'h002, R_LATENCY = 20'h003,
                     R_MAXOBJ = 20'h004, R_STRIDES = 20'h005, R_CTRL = 20'h008,
@@ -202,12 +204,19 @@ module fp3_spatial_axil #(
   );
 
   // ---- checks ------------------------------------------------------------------
+  // A run is in progress, or its START is on its way to the frame (a CTRL
+  // write performed in the cycle before): an access performed now would
+  // reach the frame after the run has begun.
+  reg  start_q;
+  wire busy = running_i || start_q;
   wire wa_win = wa_sel_q != SEL_SCALAR;
   wire awake_ok = wd_none_q || (wd_obj_ok_q && wd_bank == wa_bank_q);
-  wire wr_ok = w_all_q &&
-               (wa_ctrl ||
-                (!running_i && (wa_steps || (wa_count && wd_count_ok_q) ||
-                                (wa_win && wa_ok_q && (wa_sel_q != SEL_AWAKE || awake_ok)))));
+  // a write's checks: CTRL always; the others only while no run is in
+  // progress (busy, applied at the access)
+  wire wr_ok_ctrl = w_all_q && wa_ctrl;
+  wire wr_ok_idle = w_all_q &&
+                    (wa_steps || (wa_count && wd_count_ok_q) ||
+                     (wa_win && wa_ok_q && (wa_sel_q != SEL_AWAKE || awake_ok)));
   wire ra_win = ra_sel_q != SEL_SCALAR;
   reg  sc_readable;
   reg [31:0] sc_value;
@@ -232,47 +241,63 @@ module fp3_spatial_axil #(
       end
     endcase
   end
-  wire rd_ok = ra_win ? (ra_ok_q && !running_i) : sc_readable;
+  wire rd_ok = ra_win ? (ra_ok_q && !busy) : sc_readable;
 
-  // ---- arbitration -------------------------------------------------------------
+  // ---- arbitration: decided in one cycle, performed in the next -----------
   // (a window's address waits for its division, and so does the word of
   // an awake entry or COUNT; the scalar registers and the other words
-  // need none)
+  // need none).  The decision leaves registers (do_write_q, do_read_q):
+  // from a divider's ready flag through both candidates and the
+  // round-robin choice to the enables of the registers a write sets was
+  // a placed chip's critical path.  The access is performed from them a
+  // cycle later, with the held address and data, which no new transfer
+  // can replace before the end of that cycle (AW, W and AR are taken
+  // again only once their holding register is empty, from the decision
+  // on).  RUNNING (busy) is checked at the access.  Cost: a cycle more
+  // per write response and per read.
+  reg  do_write_q, do_read_q;   // the access decided in the cycle before
   wire wa_divided = wa_ready || !wa_win;
   wire wd_divided = wd_ready || !(wa_sel_q == SEL_AWAKE || wa_count);
   wire wr_cand   = aw_valid_q && w_valid_q && wa_divided && wd_divided &&
                    (!b_valid_q || s_axil_bready_i);
   wire rd_cand   = ar_valid_q && (ra_ready || !ra_win) && rd_pend_q == {RD_CYCLES{1'b0}} &&
                    (!r_valid_q || s_axil_rready_i);
-  wire do_write  = wr_cand && (!rd_cand || !prio_q);
-  wire do_read   = rd_cand && (!wr_cand || prio_q);
+  wire dec_write = wr_cand && (!rd_cand || !prio_q);
+  wire dec_read  = rd_cand && (!wr_cand || prio_q);
+  // what the decided write may do, but for busy (its inputs hold from the
+  // decision to the access)
+  reg  wk_ctrl_q, wk_steps_q, wk_count_q, wk_win_q, wk_ok_ctrl_q, wk_ok_idle_q;
+  always @(posedge clk_i) begin
+    do_write_q <= !rst_i && dec_write;
+    do_read_q  <= !rst_i && dec_read;
+    if (dec_write) begin
+      wk_ctrl_q    <= wa_ctrl;
+      wk_steps_q   <= wa_steps;
+      wk_count_q   <= wa_count;
+      wk_win_q     <= wa_win;
+      wk_ok_ctrl_q <= wr_ok_ctrl;
+      wk_ok_idle_q <= wr_ok_idle;
+    end
+  end
+  wire do_write  = do_write_q;
+  wire do_read   = do_read_q;
+  wire wr_ok     = wk_ok_ctrl_q || (!busy && wk_ok_idle_q);
   wire wr_now    = do_write && wr_ok;
   wire rd_arrive = rd_pend_q[RD_CYCLES-1];
 
-  // a read's word: a scalar's at the read, a window's from the frame
+  // a read's word: a scalar's at the read, a window's from the frame (an
+  // awake entry as its object's number: the frame converts it, in its
+  // bank's stage, so no adder lies between its read-data register and
+  // r_data_q)
   reg [31:0]   rd_sc_q;
-  reg          rd_win_q, rd_awake_q;
-  reg [BW-1:0] rd_bank_q;
+  reg          rd_win_q;
   always @(posedge clk_i) begin
     if (do_read) begin
       rd_sc_q    <= sc_value;
       rd_win_q   <= ra_win;
-      rd_awake_q <= ra_sel_q == SEL_AWAKE;
-      rd_bank_q  <= ra_bank_q;
     end
   end
-  // an awake entry {empty, row} of bank rd_bank_q as its object's number
-  // (row x N as shifts and adds of the row: no multiplier block)
-  reg [31:0] row_n;
-  integer k;
-  always @(*) begin
-    row_n = 32'd0;
-    for (k = 0; k < 8; k = k + 1)
-      if (PIPELINES[k]) row_n = row_n + ({{(32-RW){1'b0}}, host_rdata_i[RW-1:0]} << k);
-  end
-  wire [31:0] entry_obj = host_rdata_i[31] ? 32'hFFFFFFFF
-                        : row_n + {{(32-BW){1'b0}}, rd_bank_q};
-  wire [31:0] rd_word = !rd_win_q ? rd_sc_q : rd_awake_q ? entry_obj : host_rdata_i;
+  wire [31:0] rd_word = !rd_win_q ? rd_sc_q : host_rdata_i;
 
   always @(posedge clk_i) begin
     if (rst_i) begin
@@ -294,20 +319,20 @@ module fp3_spatial_axil #(
       if (aw_take) aw_valid_q <= 1'b1;
       if (w_take) w_valid_q <= 1'b1;
       if (s_axil_bready_i) b_valid_q <= 1'b0;
-      if (do_write) begin
+      if (dec_write) begin
         aw_valid_q <= 1'b0;
         w_valid_q  <= 1'b0;
-        b_valid_q  <= 1'b1;
       end
-      if (wr_now && wa_steps) steps_q <= w_data_q;
-      if (wr_now && wa_count) begin
+      if (do_write) b_valid_q <= 1'b1;
+      if (wr_now && wk_steps_q) steps_q <= w_data_q;
+      if (wr_now && wk_count_q) begin
         count_q  <= w_data_q;
         rounds_q <= wd_rounds;
         tail_q   <= wd_bank == {BW{1'b0}} ? N_T : {1'b0, wd_bank};
       end
       // read: hold AR, perform, capture the word
       if (ar_take) ar_valid_q <= 1'b1;
-      if (do_read) ar_valid_q <= 1'b0;
+      if (dec_read) ar_valid_q <= 1'b0;
       if (s_axil_rready_i) r_valid_q <= 1'b0;
       if (rd_arrive) r_valid_q <= 1'b1;
     end
@@ -342,10 +367,9 @@ module fp3_spatial_axil #(
   reg [RW-1:0] host_row_q;
   reg [7:0]    host_word_q;
   reg [31:0]   host_wdata_q;
-  reg          start_q;
   always @(posedge clk_i) begin
-    start_q      <= !rst_i && wr_now && wa_ctrl && w_data_q[0];
-    host_we_q    <= !rst_i && wr_now && wa_win;
+    start_q      <= !rst_i && wr_now && wk_ctrl_q && w_data_q[0];
+    host_we_q    <= !rst_i && wr_now && wk_win_q;
     host_re_q    <= !rst_i && do_read && rd_ok && ra_win;
     host_sel_q   <= do_write ? wa_sel_q  : ra_sel_q;
     host_bank_q  <= do_write ? wa_bank_q : ra_bank_q;
@@ -385,6 +409,6 @@ module fp3_spatial_axil #(
   // Not decoded: protection bits and the byte offset.  The entry's row
   // and bank fields above RW, BW bits are zero for a number below MAXOBJ.
   wire unused = &{1'b0, s_axil_awprot_i, s_axil_arprot_i, s_axil_awaddr_i[1:0],
-                  s_axil_araddr_i[1:0], wd_row, host_rdata_i[30:RW]};
+                  s_axil_araddr_i[1:0], wd_row};
 endmodule
 `default_nettype wire

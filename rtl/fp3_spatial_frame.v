@@ -50,8 +50,9 @@
 //                          host_sel_i: 1 awake list, 2 carried, 3 inputs
 //   host_wdata_i           the word; for the awake list bit 31 empty,
 //                          [RW-1:0] the object's row
-//   host_rdata_o           a read's word three cycles later, the awake list's
-//                          in host_wdata_i's form (other bits 0)
+//   host_rdata_o           a read's word five cycles later; the awake list's
+//                          entry as its object's number (row x N + bank),
+//                          0xFFFFFFFF when empty
 // Run
 //   start_i, steps_i, rounds_i   fp3_spatial_feeder's (R = ceil(COUNT / N))
 //   tail_i       the entries of the last round, COUNT - (R - 1) N, 1 .. N:
@@ -69,7 +70,7 @@
 //            reset).  A pipeline's flags come at most 2 cycles after its
 //            last write-back, so they are in flags_o by the cycle after
 //            done_o rises, before a host can read DONE (fp3_spatial_axil
-//            answers 4 cycles after a read).
+//            answers a read RD_CYCLES = 6 cycles after performing it).
 // Write-back (observation; what the state memory writes this cycle)
 //   wb_v_o[p]           bank p writes an object's new carried values back
 //                       at the edge that ends this cycle (running and
@@ -246,11 +247,22 @@ module fp3_spatial_frame #(
     end
   endgenerate
 
-  // ---- the host's reads: the selected word, registered ----------------------
+  // ---- the host's reads: the selected word, in three registered stages ------
+  // Stage 1, in each bank: the word of the read (an awake entry as it is
+  // stored, a carried word or an input word) into the bank's register
+  // bank_q; stage 2: the read's bank into word_q; stage 3: an awake entry
+  // as its object's number into rdata_q.  The banks' block RAMs are
+  // spread over the chip: one multiplexer from all of them to a single
+  // register was a placed chip's critical path (about three quarters of
+  // it routing), and so was the entry's conversion (two carry chains)
+  // after either route.  Each stage has one route or one piece of logic.
+  // Cost: two cycles of read latency more than one multiplexer and its
+  // register would take (the slave's RD_CYCLES), 32 flip-flops a bank and
+  // one more word.
   reg [1:0]    rsel_q;
   reg [BW-1:0] rbank_q;
   reg [7:0]    rword_q;
-  reg [31:0]   rdata_q;
+  reg [31:0]   word_q, rdata_q;
   always @(posedge clk_i) begin
     if (host_re_i) begin
       rsel_q  <= host_sel_i;
@@ -258,33 +270,50 @@ module fp3_spatial_frame #(
       rword_q <= host_word_i;
     end
   end
-  // (word and bank are in range: the slave answers SLVERR otherwise).
-  // Multiplexers by comparison with constants, so that no index is
-  // multiplied (synthesis would spend multiplier blocks on it).
-  reg [RW:0]  awake_word;
-  reg [31:0]  state_word, input_word;
-  integer     i, j;
-  always @(*) begin
-    awake_word = {(RW+1){1'b0}};
-    state_word = 32'd0;
-    input_word = 32'd0;
-    j = 0;  // loop index assigned on every path: no latch for synthesis
+  // (word and bank are in range: the slave answers SLVERR otherwise; it
+  // has one read in flight, so rsel_q, rbank_q and rword_q hold through
+  // the stages).  Multiplexers by comparison with constants, so that no
+  // index is multiplied (synthesis would spend multiplier blocks on it).
+  reg [32*PIPELINES-1:0] bank_q;
+  integer i, j;
+  always @(posedge clk_i) begin
     for (i = 0; i < PIPELINES; i = i + 1) begin
-      if (rbank_q == i[BW-1:0]) begin
-        awake_word = awake_rd[i*(RW+1) +: RW+1];
-        for (j = 0; j < NC; j = j + 1)
-          if (rword_q == j[7:0]) state_word = state_rd[(i*NC + j)*32 +: 32];
-        for (j = 0; j < NI; j = j + 1)
-          if (rword_q == j[7:0]) input_word = input_rd[(i*NI + j)*32 +: 32];
-      end
+      case (rsel_q)
+        SEL_AWAKE: bank_q[i*32 +: 32] <= {awake_rd[i*(RW+1) + RW], {(31 - RW){1'b0}},
+                                           awake_rd[i*(RW+1) +: RW]};
+        SEL_STATE: begin
+          bank_q[i*32 +: 32] <= 32'd0;
+          for (j = 0; j < NC; j = j + 1)
+            if (rword_q == j[7:0]) bank_q[i*32 +: 32] <= state_rd[(i*NC + j)*32 +: 32];
+        end
+        default: begin
+          bank_q[i*32 +: 32] <= 32'd0;
+          for (j = 0; j < NI; j = j + 1)
+            if (rword_q == j[7:0]) bank_q[i*32 +: 32] <= input_rd[(i*NI + j)*32 +: 32];
+        end
+      endcase
     end
   end
+  reg [31:0] bank_word;
+  integer    m;
+  always @(*) begin
+    bank_word = 32'd0;
+    for (m = 0; m < PIPELINES; m = m + 1)
+      if (rbank_q == m[BW-1:0]) bank_word = bank_q[m*32 +: 32];
+  end
+  // an awake entry {empty, row} of bank rbank_q as its object's number,
+  // row x N + bank, or 0xFFFFFFFF when empty (row x N as shifts and adds
+  // of the row by N's bits: no multiplier block)
+  reg [31:0] row_n;
+  integer    n;
+  always @(*) begin
+    row_n = {{(32-BW){1'b0}}, rbank_q};
+    for (n = 0; n < 8; n = n + 1)
+      if (PIPELINES[n]) row_n = row_n + ({{(32-RW){1'b0}}, word_q[RW-1:0]} << n);
+  end
   always @(posedge clk_i) begin
-    case (rsel_q)
-      SEL_AWAKE: rdata_q <= {awake_word[RW], {(31 - RW){1'b0}}, awake_word[RW-1:0]};
-      SEL_STATE: rdata_q <= state_word;
-      default:   rdata_q <= input_word;
-    endcase
+    word_q  <= bank_word;
+    rdata_q <= rsel_q != SEL_AWAKE ? word_q : word_q[31] ? 32'hFFFFFFFF : row_n;
   end
   assign host_rdata_o = rdata_q;
 

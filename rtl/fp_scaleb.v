@@ -33,17 +33,19 @@
 //              2: the register between the two halves below (the
 //                 exponent sum, the special cases and the shift amounts |
 //                 the shifts, rounding and packing);
-//              3: a register inside the first half, after the carry
-//                 chains on a's exponent (operands, the exponent sum t,
-//                 the overflow and tiny decisions, the tiny path's shift)
-//                 and the leading-zero count lz;
+//              3: the operand register, in front of the first half
+//                 (a and b's sign and exponent);
 //              4: a register inside the second half, after the shifts
 //                 (before the rounding increment and the packing);
 //              >= 5: LATENCY - 4 delay stages after the output register.
 //            1 and 2 suit a core beside others of a few stages; 4 is for
-//            a chip's clock rate (each stage a short chain: side-by-side
-//            adds and compares on a's exponent | an 8-bit subtract and
-//            selects | the masked shifts | a 23-bit increment).
+//            a chip's clock rate: the route from the core that computes a
+//            (on a full chip often placed far away) ends at the operand
+//            register, then each stage is short (side-by-side chains on
+//            a's exponent and the selects after them | the masked shifts
+//            | a 23-bit increment).  With the constant b of the spatial
+//            back end the first half folds to a few LUT levels: a multiply
+//            by 2 has no tiny path, one by 0.5 no left shift.
 //   ROUND    0: round to nearest, ties to even; 1: round toward zero
 //   FTZ      1: subnormal a read as zero, tiny results flushed to zero
 //
@@ -90,23 +92,39 @@ module fp_scaleb #(
   // synthesis: k's sign decides which paths exist, and each shift amount
   // is masked to the bits its bound under that k needs, so a multiply by
   // 0.5 or 2 keeps a one-place shifter, not a barrel shifter.
-  // Place 3 (LATENCY >= 3) splits this half.  Before it, everything that
-  // needs a carry chain on a's exponent is computed from the operands
-  // (x_*), each chain straight from the exponent field and side by side:
-  // the exponent sum t, the overflow and tiny decisions (t compared
-  // through its bounds moved onto E), the tiny path's shift 1 - t and its
-  // bound, and the leading-zero count lz.  After it the rest reads the
-  // registered copies: selects and short compares, no chain after a chain.
+  // Place 3 (LATENCY >= 3) is the operand register in front of this
+  // half.  Everything that needs a carry chain on a's exponent is
+  // computed side by side straight from the exponent field: the exponent
+  // sum t, the overflow and tiny decisions (t compared through its bounds
+  // moved onto E), the tiny path's shift 1 - t and its bound, and the
+  // leading-zero count lz; the selects after them are short.
   // k = eb - 127 (-126 to 127) and a's significand m, not normalised (its
   // exponent E: ea, 1 for a subnormal a): a * 2^k = m * 2^(E + k - 150),
   // so t = E + k is the result's biased exponent while m's top bit is set.
-  wire [7:0]        x_ea  = a_i[30:23];
-  wire              x_sub = x_ea == 8'h00;
-  wire signed [9:0] x_k   = $signed({2'b00, b_i[30:23]}) - 10'sd127;
-  wire signed [9:0] x_e   = $signed({2'b00, x_sub ? 8'd1 : x_ea});
-  wire [7:0]        x_t   = x_e[7:0] + x_k[7:0]; // t's low 8 bits, the normal path's field
-  wire [4:0]        x_lz;
-  fp_lzc #(.WIDTH(24)) u_lzc (.v_i({~x_sub, a_i[22:0]}), .n_o(x_lz));
+  wire [40:0] p3_q;
+  wire        p3_valid;
+  fp_pipe #(.WIDTH(41), .DEPTH(LATENCY >= 3 ? 1 : 0)) u_p3 (
+    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i),
+    .data_i({a_i, b_i[31:23]}),
+    .valid_o(p3_valid), .data_o(p3_q)
+  );
+  wire [31:0] r_a;
+  wire [8:0]  r_b;
+  assign {r_a, r_b} = p3_q;
+  // b's fraction is 0 by the contract: only its sign and exponent count.
+  wire unused_b_fraction = &{1'b0, b_i[22:0], 1'b0};
+
+  wire              sign  = r_a[31] ^ r_b[8];
+  wire [7:0]        ea    = r_a[30:23];
+  wire [22:0]       fa    = r_a[22:0];
+  wire              a_sub = ea == 8'h00;
+  wire [23:0]       m     = {~a_sub, fa};
+  wire signed [9:0] k     = $signed({2'b00, r_b[7:0]}) - 10'sd127;
+  wire              k_neg = k < 10'sd0;
+  wire signed [9:0] x_e   = $signed({2'b00, a_sub ? 8'd1 : ea});
+  wire [7:0]        t     = x_e[7:0] + k[7:0]; // t's low 8 bits, the normal path's field
+  wire [4:0]        lz;
+  fp_lzc #(.WIDTH(24)) u_lzc (.v_i(m), .n_o(lz));
   // the paths of a finite nonzero a
   //   normal: a normal, 1 <= t <= 254: {sign, t, fa}, exact
   //   ovf:    a normal, t >= 255 (then k > 0)
@@ -117,9 +135,8 @@ module fp_scaleb #(
   //   tiny:   t <= 0 (then k < 0): m shifted right by 1 - t, 1 to -k,
   //           rounded
   // t > 254 is E > 254 - k and t < 1 is E < 1 - k (10-bit signed, exact).
-  wire x_k_neg = x_k < 10'sd0;
-  wire x_ovf   = !x_sub && x_e > 10'sd254 - x_k;
-  wire x_tiny  = x_k_neg && x_e < 10'sd1 - x_k;
+  wire ovf  = !a_sub && x_e > 10'sd254 - k;
+  wire tiny = k_neg && x_e < 10'sd1 - k;
 
   // masks: the bits a shift amount needs when it is at most k (left) or
   // at most min(-k, 26) (tiny; from 26 places on only the sticky remains)
@@ -131,42 +148,17 @@ module fp_scaleb #(
   endfunction
   // the tiny path's shift: 1 - t = (1 - k) - E, bounded by min(-k, 26)
   // (1 - t > bound is E < (1 - k) - bound)
-  wire signed [9:0] x_nk     = -x_k;
+  wire signed [9:0] x_nk     = -k;
   wire [4:0]        x_sh_lim = (x_nk > 10'sd26) ? 5'd26 : x_nk[4:0];
   // (only its low 5 bits are kept, so a 5-bit difference gives them)
-  wire [4:0]        x_sh_w   = 5'd1 - x_k[4:0] - x_e[4:0];
-  wire              x_sh_big = x_e < 10'sd1 - x_k - $signed({5'd0, x_sh_lim});
-  wire [4:0]        x_sh     = (x_sh_big ? x_sh_lim : x_sh_w) & span(x_sh_lim);
+  wire [4:0]        x_sh_w   = 5'd1 - k[4:0] - x_e[4:0];
+  wire              x_sh_big = x_e < 10'sd1 - k - $signed({5'd0, x_sh_lim});
+  wire [4:0]        sh       = (x_sh_big ? x_sh_lim : x_sh_w) & span(x_sh_lim);
 
-  localparam integer P3_W = 32 + 9 + 8 + 5 + 2 + 5;
-  wire [P3_W-1:0] p3_q;
-  wire            p3_valid;
-  fp_pipe #(.WIDTH(P3_W), .DEPTH(LATENCY >= 3 ? 1 : 0)) u_p3 (
-    .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i),
-    .data_i({a_i, b_i[31:23], x_t, x_lz, x_ovf, x_tiny, x_sh}),
-    .valid_o(p3_valid), .data_o(p3_q)
-  );
-  wire [31:0]       r_a;
-  wire [8:0]        r_b;
-  wire [7:0]        t;
-  wire [4:0]        lz, sh;
-  wire              ovf, tiny;
-  assign {r_a, r_b, t, lz, ovf, tiny, sh} = p3_q;
-
-  wire        sign   = r_a[31] ^ r_b[8];
-  wire [7:0]  ea     = r_a[30:23];
-  wire [22:0] fa     = r_a[22:0];
   wire        a_max  = ea == 8'hFF;
-  wire        a_sub  = ea == 8'h00;
   wire        a_nan  = a_max && fa != 23'd0;
   wire        a_inf  = a_max && fa == 23'd0;
   wire        a_zero = a_sub && (fa == 23'd0 || FTZ != 0);
-  // b's fraction is 0 by the contract: only its sign and exponent count.
-  wire unused_b_fraction = &{1'b0, b_i[22:0], 1'b0};
-
-  wire signed [9:0] k     = $signed({2'b00, r_b[7:0]}) - 10'sd127;
-  wire              k_neg = k < 10'sd0;
-  wire [23:0]       m     = {~a_sub, fa};
   wire              left  = a_sub && !k_neg;
   wire [4:0] k_lo    = (k > 10'sd23) ? 5'd23 : k[4:0];       // k for the left shift, bounded
   wire [4:0] d       = ((lz < k_lo) ? lz : k_lo) & span(k_lo);

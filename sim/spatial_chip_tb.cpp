@@ -14,7 +14,8 @@
 // Checks, each reported as "FAIL: <check>: ..." (exit 1 if any fails):
 //   id       ID, HASH, INFO, LATENCY, MAXOBJ and STRIDES read as expected
 //   load     every object's inputs and carried values written through the
-//            windows (AW before W, W before AW, both together) read back
+//            windows (AW before W, W before AW, both together) read back;
+//            a write and a read of another row presented together
 //   slverr   the SLVERR cases of the map answer SLVERR and change nothing,
 //            and the OKAY ones OKAY
 //   run      runs of K steps over an awake list: afterwards every object's
@@ -25,7 +26,10 @@
 //   flags    FLAGS after a run: inexact (the ship's steps round, nothing
 //            else), none after a run of no step (START clears it)
 //   busy     while running: STATUS.RUNNING, SLVERR for STEPS, COUNT and the
-//            windows, START ignored
+//            windows, START ignored; a window read performed right after
+//            START answers SLVERR
+//   rate     back-to-back reads (a scalar register, a window word) answer
+//            every 8th cycle and writes every 2nd (docs/spatial.md)
 // The runs: a few objects awake (n < L: a step is bubbles but for n / N
 // cycles), most awake (n > N * L when M allows), 0 steps.
 #include <cinttypes>
@@ -58,6 +62,34 @@ static void tick() {
   cycle++;
 }
 
+// The AW and W channels' inputs (valid bits, address of word wa, data and
+// strobes), and the AR channel's (valid bit, address of word ra).
+static void set_write(bool aw, bool w, uint32_t wa, uint32_t data, unsigned strb) {
+  top->s_axil_awvalid_i = aw;
+  top->s_axil_awaddr_i = FP3S_BYTE(wa);
+  top->s_axil_awprot_i = 0;
+  top->s_axil_wvalid_i = w;
+  top->s_axil_wdata_i = data;
+  top->s_axil_wstrb_i = strb;
+}
+static void set_read(bool ar, uint32_t ra) {
+  top->s_axil_arvalid_i = ar;
+  top->s_axil_araddr_i = FP3S_BYTE(ra);
+  top->s_axil_arprot_i = 0;
+}
+
+// The write channels' handshakes in this cycle (inputs set, clock low).
+struct write_hs {
+  bool aw, w, b;
+  unsigned bresp;
+};
+static write_hs eval_write() {
+  top->eval();
+  return {top->s_axil_awvalid_i && top->s_axil_awready_o,
+          top->s_axil_wvalid_i && top->s_axil_wready_o, (bool)top->s_axil_bvalid_o,
+          (unsigned)top->s_axil_bresp_o};
+}
+
 // A write of word address wa; order 0: AW and W together, 1: W three
 // cycles before AW, 2: AW three cycles before W.  Returns BRESP.
 static unsigned axi_write(uint32_t wa, uint32_t data, unsigned strb = 0xF, int order = 0) {
@@ -66,28 +98,19 @@ static unsigned axi_write(uint32_t wa, uint32_t data, unsigned strb = 0xF, int o
   top->s_axil_bready_i = 1;
   for (int n = 0; n < 1000; n++) {
     top->clk_i = 0;
-    top->s_axil_awvalid_i = aw && aw_wait == 0;
-    top->s_axil_awaddr_i = FP3S_BYTE(wa);
-    top->s_axil_awprot_i = 0;
-    top->s_axil_wvalid_i = w && w_wait == 0;
-    top->s_axil_wdata_i = data;
-    top->s_axil_wstrb_i = strb;
-    top->eval();
-    const bool aw_hs = top->s_axil_awvalid_i && top->s_axil_awready_o;
-    const bool w_hs = top->s_axil_wvalid_i && top->s_axil_wready_o;
-    const bool b_hs = top->s_axil_bvalid_o;
-    const unsigned resp = top->s_axil_bresp_o;
+    set_write(aw && aw_wait == 0, w && w_wait == 0, wa, data, strb);
+    const write_hs hs = eval_write();
     tick();
-    if (aw_hs) aw = false;
-    if (w_hs) w = false;
+    if (hs.aw) aw = false;
+    if (hs.w) w = false;
     if (aw_wait) aw_wait--;
     if (w_wait) w_wait--;
-    if (b_hs) {
+    if (hs.b) {
       top->s_axil_awvalid_i = 0;
       top->s_axil_wvalid_i = 0;
       top->s_axil_bready_i = 0;
       if (aw || w) fail("axi", "B before AW and W were accepted");
-      return resp;
+      return hs.bresp;
     }
   }
   fail("axi", "no write response");
@@ -100,9 +123,7 @@ static uint32_t axi_read(uint32_t wa, unsigned *resp) {
   top->s_axil_rready_i = 1;
   for (int n = 0; n < 1000; n++) {
     top->clk_i = 0;
-    top->s_axil_arvalid_i = ar;
-    top->s_axil_araddr_i = FP3S_BYTE(wa);
-    top->s_axil_arprot_i = 0;
+    set_read(ar, wa);
     top->eval();
     const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
     const bool r_hs = top->s_axil_rvalid_o;
@@ -122,6 +143,88 @@ static uint32_t axi_read(uint32_t wa, unsigned *resp) {
 }
 
 static const unsigned OKAY = 0, SLVERR = 2;
+
+// A write of data to wa and a read of ra presented together (AW, W and
+// AR in the same cycle, or AR ar_wait cycles later), so that the slave
+// performs one right after the other.  Returns the read's word; *bresp,
+// *rresp the responses.
+static uint32_t axi_write_with_read(uint32_t wa, uint32_t data, uint32_t ra, unsigned *bresp,
+                                    unsigned *rresp, int ar_wait = 0) {
+  bool aw = true, w = true, ar = true, b = false, r = false;
+  uint32_t rdata = 0;
+  *bresp = *rresp = 3;
+  top->s_axil_bready_i = 1;
+  top->s_axil_rready_i = 1;
+  for (int n = 0; n < 1000 && !(b && r); n++) {
+    top->clk_i = 0;
+    set_write(aw, w, wa, data, 0xF);
+    set_read(ar && ar_wait == 0, ra);
+    top->eval();
+    const bool aw_hs = aw && top->s_axil_awready_o, w_hs = w && top->s_axil_wready_o;
+    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
+    if (ar_wait) ar_wait--;
+    if (!b && top->s_axil_bvalid_o) b = true, *bresp = top->s_axil_bresp_o;
+    if (!r && top->s_axil_rvalid_o) r = true, *rresp = top->s_axil_rresp_o,
+                                    rdata = top->s_axil_rdata_o;
+    tick();
+    if (aw_hs) aw = false;
+    if (w_hs) w = false;
+    if (ar_hs) ar = false;
+  }
+  top->s_axil_awvalid_i = top->s_axil_wvalid_i = top->s_axil_arvalid_i = 0;
+  top->s_axil_bready_i = top->s_axil_rready_i = 0;
+  if (!(b && r)) fail("axi", "no response to a write and a read presented together");
+  return rdata;
+}
+
+// The slave's transfer rate, cycle-exact: n reads of wa with ARVALID and
+// RREADY held high (the next AR presented as soon as one is accepted), or
+// n writes of data to wa with AWVALID, WVALID and BREADY held high.
+// Returns the cycles from the first response to the last over n - 1 (the
+// period), or 0 when a response is missing or not OKAY.
+static unsigned axi_read_period(uint32_t wa, unsigned n) {
+  unsigned issued = 0, got = 0;
+  uint64_t first = 0, last = 0;
+  top->s_axil_rready_i = 1;
+  for (int k = 0; k < 100 * (int)n && got < n; k++) {
+    top->clk_i = 0;
+    set_read(issued < n, wa);
+    top->eval();
+    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
+    const bool r_hs = top->s_axil_rvalid_o;
+    const unsigned resp = top->s_axil_rresp_o;
+    tick();
+    if (ar_hs) issued++;
+    if (r_hs) {
+      if (resp != OKAY) break;
+      (got++ ? last : first) = cycle;
+    }
+  }
+  top->s_axil_arvalid_i = 0;
+  top->s_axil_rready_i = 0;
+  return got == n && n > 1 ? (unsigned)((last - first) / (n - 1)) : 0;
+}
+static unsigned axi_write_period(uint32_t wa, uint32_t data, unsigned n) {
+  unsigned aw = 0, w = 0, got = 0;
+  uint64_t first = 0, last = 0;
+  top->s_axil_bready_i = 1;
+  for (int k = 0; k < 100 * (int)n && got < n; k++) {
+    top->clk_i = 0;
+    set_write(aw < n, w < n, wa, data, 0xF);
+    const write_hs hs = eval_write();
+    tick();
+    aw += hs.aw;
+    w += hs.w;
+    if (hs.b) {
+      if (hs.bresp != OKAY) break;
+      (got++ ? last : first) = cycle;
+    }
+  }
+  top->s_axil_awvalid_i = 0;
+  top->s_axil_wvalid_i = 0;
+  top->s_axil_bready_i = 0;
+  return got == n && n > 1 ? (unsigned)((last - first) / (n - 1)) : 0;
+}
 
 static std::string hex(uint32_t v) {
   char b[16];
@@ -190,6 +293,15 @@ int main(int argc, char **argv) {
   const uint32_t SS = FP3S_STATE_STRIDE(strides), SI = FP3S_INPUT_STRIDE(strides);
   expect_read("id", FP3S_STATUS, OKAY, 0);
 
+  // ---- rate: back-to-back transfers, as docs/spatial.md gives them ----
+  // (a scalar register and one object's words: no division by N)
+  const unsigned rp = axi_read_period(FP3S_ID, 8), rpw = axi_read_period(FP3S_STATE_BASE, 8);
+  const unsigned wp = axi_write_period(FP3S_STEPS, 0, 8);
+  if (rp != 8 || rpw != 8 || wp != 2)
+    fail("rate", "a read every " + std::to_string(rp) + " cycles (a window's: " +
+                     std::to_string(rpw) + "), a write every " + std::to_string(wp) +
+                     "; want 8, 8 and 2");
+
   // ---- load: every object, the three channel orders in turn ----
   int order = 0;
   for (unsigned o = 0; o < M; o++) {
@@ -223,6 +335,23 @@ int main(int argc, char **argv) {
       }
     }
   };
+  check_all("load");
+  // a write and a read presented together, to rows of one bank (objects
+  // o and o + N): each performed right after the other, in either order
+  // (the arbitration takes turns), the read's word that of its own row.
+  // Inputs, whose words differ between objects (the initial carried
+  // values may all be zero).
+  for (unsigned o = 0; o + N < M && o < 4 * N; o++)
+    for (unsigned k = 0; k < nin; k++) {
+      unsigned br, rr;
+      const uint32_t want = in[(o + N) * nin + k];
+      const uint32_t got = axi_write_with_read(FP3S_INPUT_BASE + o * SI + k, in[o * nin + k],
+                                               FP3S_INPUT_BASE + (o + N) * SI + k, &br, &rr);
+      if (br != OKAY || rr != OKAY || got != want)
+        fail("load", "a write to object " + std::to_string(o) + " with a read of object " +
+                         std::to_string(o + N) + ", input " + std::to_string(k) + ": " +
+                         hex(got) + ", want " + hex(want));
+    }
   check_all("load");
 
   // ---- slverr: each case answers SLVERR and changes nothing ----
@@ -269,8 +398,22 @@ int main(int argc, char **argv) {
     for (size_t i = 0; i < count; i++) expect_read("run", FP3S_AWAKE_BASE + (uint32_t)i, OKAY, list[i]);
     expect_write("run", FP3S_COUNT, (uint32_t)count, OKAY);
     expect_write("run", FP3S_STEPS, K, OKAY);
-    expect_write("run", FP3S_CTRL, FP3S_CTRL_START, OKAY);
+    if (!busy_checks) expect_write("run", FP3S_CTRL, FP3S_CTRL_START, OKAY);
     if (busy_checks) {
+      // START with a window read right behind it (AR a cycle after AW
+      // and W, so the write is performed first): the read is performed
+      // after START, so it answers as during the run, SLVERR.  (The read
+      // before it is of the same object, so that this one needs no
+      // division by N and follows START by a cycle or two.)
+      unsigned br, rr;
+      const unsigned o = M - 1;
+      expect_read("busy", FP3S_INPUT_BASE + o * SI, OKAY, in[o * nin]);
+      const uint32_t got = axi_write_with_read(FP3S_CTRL, FP3S_CTRL_START,
+                                               FP3S_INPUT_BASE + o * SI + nin - 1, &br, &rr, 1);
+      if (br != OKAY || rr != SLVERR || got != 0)
+        fail("busy", "START with a read of object " + std::to_string(o) + "'s input behind it: resp " +
+                         std::to_string(br) + ", read resp " + std::to_string(rr) + " " +
+                         hex(got) + ", want SLVERR");
       expect_read("busy", FP3S_STATUS, OKAY, FP3S_STATUS_RUNNING);
       expect_write("busy", FP3S_STEPS, 1, SLVERR);
       expect_write("busy", FP3S_COUNT, 1, SLVERR);

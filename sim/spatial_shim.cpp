@@ -179,8 +179,8 @@ int fp3_spatial_shim_read(void *h, uint32_t addr, uint32_t *data) {
 
 // Read the n words at byte addresses addr[0 .. n-1] into data[], their
 // RRESP into resp[]: the next AR is presented as soon as the last one is
-// accepted, so the slave's read channel is kept busy (a read every third
-// cycle, against five for one read at a time).  Returns the reads
+// accepted, so the slave's read channel is kept busy (a read every
+// eighth cycle: docs/spatial.md "The register map").  Returns the reads
 // answered, n unless one timed out (kAxiTimeout cycles without a
 // handshake or a response).
 size_t fp3_spatial_shim_read_many(void *h, const uint32_t *addr, size_t n, uint32_t *data,

@@ -23,7 +23,9 @@
 # the other broken frames (write-back one
 # cycle early, DONE a cycle late, the awake entry's bank unchecked, INFO's
 # fields swapped, windows writable while running, an input write landing
-# in every word, a write response before the write), outside make test.
+# in every word, a write response before the write, the read's word
+# captured a cycle before the frame's read has arrived or a cycle after, a
+# window read performed as START reaches the frame), outside make test.
 # Bad --pipelines / --objects exit 2 and leave no file.
 #
 # Runs from anywhere; the CLI is $FP3_BIN, else build/fp3 of this checkout.
@@ -170,7 +172,11 @@ if [ -n "$mutants" ]; then
   mutant info-swapped 3 252 fp3_spatial_axil.v "CARRIED[7:0], INPUTS[7:0]" \
     "INPUTS[7:0], CARRIED[7:0]" id
   mutant busy-window-writable 1 96 fp3_spatial_axil.v \
-    "(!running_i && (wa_steps " "(1'b1 && (wa_steps " busy
+    "(!busy && wk_ok_idle_q)" "(1'b1 && wk_ok_idle_q)" busy
+  mutant busy-without-start 3 252 fp3_spatial_axil.v "wire busy = running_i || start_q;" \
+    "wire busy = running_i;" busy
+  mutant read-early 3 252 fp3_spatial_axil.v "RD_CYCLES  = 6;" "RD_CYCLES  = 5;" load
+  mutant read-late 3 252 fp3_spatial_axil.v "RD_CYCLES  = 6;" "RD_CYCLES  = 7;" load
   mutant input-word-ignored 1 96 fp3_spatial_frame.v \
     "{NI{we && host_sel_i == SEL_INPUT}} & host_input_word" "{NI{we && host_sel_i == SEL_INPUT}}" load
   mutant b-before-w 1 96 fp3_spatial_axil.v "assign s_axil_bvalid_o  = b_valid_q;" \
