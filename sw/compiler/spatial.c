@@ -287,9 +287,9 @@ static const core_area core_areas[] = {
     {SCALEB, 2, 0, 0, 198, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SCALEB, 2, 0, 1, 297, 106, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SCALEB, 2, 1, 0, 201, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 0, 0, 250, 258, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 0, 1, 312, 218, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 1, 0, 272, 258, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 0, 223, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 1, 239, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 1, 0, 226, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SIGN, 1, 0, 0, 337, 34, 0}, /* fp_sign */
 };
 #undef SIGN
