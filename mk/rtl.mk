@@ -303,11 +303,12 @@ $(BUILD)/bench_chip: sw/bench/bench_chip.c $(BUILD)/bench/cpu_ship.o $(BUILD)/sw
 # CHIP=ecp5-85 PNR_SEEDS=... has measured it (else cycles only).
 CHIP_FMAX ?= $(shell test -f $(BUILD)/pnr/chip_fmax_median.txt && cat $(BUILD)/pnr/chip_fmax_median.txt)
 # The spatial chips' median Fmax, folded and literal, when make pnr-spatial
-# MODEL=models/ship.fp3m INTEGRATOR=rk4se [LITERAL=1] PNR_SEEDS=... (the
-# shape bench_chip runs: the pipelines that fit, --clock-cores) has
+# MODEL=models/ship.fp3m INTEGRATOR=rk4se [LITERAL=1 MULT_BLOCKS=3]
+# PNR_SEEDS=... (the shape bench_chip runs: the pipelines that fit,
+# --clock-cores; three MULT18X18D a multiply have the same latency) has
 # measured it (else their rows give cycles only).
 SPATIAL_FMAX ?= $(shell cat $(BUILD)/pnr-spatial/ship-rk4se/fmax_median.txt 2>/dev/null)
-SPATIAL_LITERAL_FMAX ?= $(shell cat $(BUILD)/pnr-spatial/ship-rk4se-literal/fmax_median.txt 2>/dev/null)
+SPATIAL_LITERAL_FMAX ?= $(shell cat $(BUILD)/pnr-spatial/ship-rk4se-literal-b3/fmax_median.txt 2>/dev/null)
 .PHONY: bench-chip
 ## bench-chip: lanes 1-16, the chip build and the spatial chip: cycles per object-step, literal and compiled RK4, every object bit-exact; the CPU reference in the same run (BENCH_CHIP_MODELS=)
 bench-chip: $(BUILD)/bench_chip
