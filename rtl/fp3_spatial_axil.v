@@ -286,8 +286,8 @@ module fp3_spatial_axil #(
   wire rd_arrive = rd_pend_q[RD_CYCLES-1];
 
   // a read's word: a scalar's at the read, a window's from the frame (an
-  // awake entry as its object's number: the frame converts it, in its
-  // bank's stage, so no adder lies between its read-data register and
+  // awake entry as its object's number: the frame converts it in its last
+  // read stage, so no adder lies between its read-data register and
   // r_data_q)
   reg [31:0]   rd_sc_q;
   reg          rd_win_q;
