@@ -78,16 +78,33 @@ static void set_read(bool ar, uint32_t ra) {
   top->s_axil_arprot_i = 0;
 }
 
-// The write channels' handshakes in this cycle (inputs set, clock low).
+// The write channels' and the read channels' handshakes in this cycle
+// (inputs set, clock low, the model evaluated).
 struct write_hs {
   bool aw, w, b;
   unsigned bresp;
 };
-static write_hs eval_write() {
-  top->eval();
+struct read_hs {
+  bool ar, r;
+  unsigned rresp;
+  uint32_t rdata;
+};
+static write_hs sample_write() {
   return {top->s_axil_awvalid_i && top->s_axil_awready_o,
           top->s_axil_wvalid_i && top->s_axil_wready_o, (bool)top->s_axil_bvalid_o,
           (unsigned)top->s_axil_bresp_o};
+}
+static read_hs sample_read() {
+  return {top->s_axil_arvalid_i && top->s_axil_arready_o, (bool)top->s_axil_rvalid_o,
+          (unsigned)top->s_axil_rresp_o, (uint32_t)top->s_axil_rdata_o};
+}
+static write_hs eval_write() {
+  top->eval();
+  return sample_write();
+}
+static read_hs eval_read() {
+  top->eval();
+  return sample_read();
 }
 
 // A write of word address wa; order 0: AW and W together, 1: W three
@@ -124,17 +141,14 @@ static uint32_t axi_read(uint32_t wa, unsigned *resp) {
   for (int n = 0; n < 1000; n++) {
     top->clk_i = 0;
     set_read(ar, wa);
-    top->eval();
-    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
-    const bool r_hs = top->s_axil_rvalid_o;
-    const uint32_t data = top->s_axil_rdata_o;
-    *resp = top->s_axil_rresp_o;
+    const read_hs hs = eval_read();
+    *resp = hs.rresp;
     tick();
-    if (ar_hs) ar = false;
-    if (r_hs) {
+    if (hs.ar) ar = false;
+    if (hs.r) {
       top->s_axil_arvalid_i = 0;
       top->s_axil_rready_i = 0;
-      return data;
+      return hs.rdata;
     }
   }
   fail("axi", "no read response");
@@ -160,16 +174,15 @@ static uint32_t axi_write_with_read(uint32_t wa, uint32_t data, uint32_t ra, uns
     set_write(aw, w, wa, data, 0xF);
     set_read(ar && ar_wait == 0, ra);
     top->eval();
-    const bool aw_hs = aw && top->s_axil_awready_o, w_hs = w && top->s_axil_wready_o;
-    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
+    const write_hs wh = sample_write();
+    const read_hs rh = sample_read();
     if (ar_wait) ar_wait--;
-    if (!b && top->s_axil_bvalid_o) b = true, *bresp = top->s_axil_bresp_o;
-    if (!r && top->s_axil_rvalid_o) r = true, *rresp = top->s_axil_rresp_o,
-                                    rdata = top->s_axil_rdata_o;
+    if (!b && wh.b) b = true, *bresp = wh.bresp;
+    if (!r && rh.r) r = true, *rresp = rh.rresp, rdata = rh.rdata;
     tick();
-    if (aw_hs) aw = false;
-    if (w_hs) w = false;
-    if (ar_hs) ar = false;
+    if (wh.aw) aw = false;
+    if (wh.w) w = false;
+    if (rh.ar) ar = false;
   }
   top->s_axil_awvalid_i = top->s_axil_wvalid_i = top->s_axil_arvalid_i = 0;
   top->s_axil_bready_i = top->s_axil_rready_i = 0;
@@ -189,14 +202,11 @@ static unsigned axi_read_period(uint32_t wa, unsigned n) {
   for (int k = 0; k < 100 * (int)n && got < n; k++) {
     top->clk_i = 0;
     set_read(issued < n, wa);
-    top->eval();
-    const bool ar_hs = top->s_axil_arvalid_i && top->s_axil_arready_o;
-    const bool r_hs = top->s_axil_rvalid_o;
-    const unsigned resp = top->s_axil_rresp_o;
+    const read_hs hs = eval_read();
     tick();
-    if (ar_hs) issued++;
-    if (r_hs) {
-      if (resp != OKAY) break;
+    if (hs.ar) issued++;
+    if (hs.r) {
+      if (hs.rresp != OKAY) break;
       (got++ ? last : first) = cycle;
     }
   }
