@@ -31,8 +31,9 @@
 //            >= 1.  The register places, added in this order:
 //              1: the output register;
 //              2: the register between the two halves below (the
-//                 exponent sum, the special cases and the shift amounts |
-//                 the shifts, rounding and packing);
+//                 exponent sum, which special case applies and the shift
+//                 amounts | the shifts beside the special case's result,
+//                 rounding and packing);
 //              3: the operand register, in front of the first half
 //                 (a and b's sign and exponent);
 //              4: a register inside the second half, after the shifts
@@ -156,52 +157,57 @@ module fp_scaleb #(
   wire [4:0]        sh       = (x_sh_big ? x_sh_lim : x_sh_w) & span(x_sh_lim);
 
   wire        a_max  = ea == 8'hFF;
-  wire        a_nan  = a_max && fa != 23'd0;
-  wire        a_inf  = a_max && fa == 23'd0;
   wire        a_zero = a_sub && (fa == 23'd0 || FTZ != 0);
   wire              left  = a_sub && !k_neg;
   wire [4:0] k_lo    = (k > 10'sd23) ? 5'd23 : k[4:0];       // k for the left shift, bounded
   wire [4:0] d       = ((lz < k_lo) ? lz : k_lo) & span(k_lo);
   wire [7:0] e_left  = k[7:0] + 8'd1 - {3'b000, lz};        // when the shift reached bit 23
 
-  // the decided results: NaN, infinity, zero, overflow
-  reg        spec;
-  reg [31:0] spec_y;
-  reg [4:0]  spec_f;
-  always @* begin
-    spec   = 1'b1;
-    spec_y = 32'h0;
-    spec_f = 5'd0;
-    if (a_nan) begin
-      spec_y = r_a | 32'h0040_0000;
-      spec_f = fa[22] ? 5'd0 : FLAG_NV;
-    end else if (a_inf) begin
-      spec_y = {sign, 8'hFF, 23'd0};
-    end else if (a_zero) begin
-      spec_y = {sign, 31'd0};
-    end else if (ovf) begin
-      spec_y = ROUND != 0 ? {sign, 31'h7F7F_FFFF} : {sign, 31'h7F80_0000};
-      spec_f = FLAG_OF | FLAG_NX;
-    end else begin
-      spec   = 1'b0;
-    end
-  end
+  // the decided results: NaN, infinity, zero, overflow.  Only which one
+  // (spec_k) crosses the register between the halves; the result and
+  // flags are built after it, beside the shifts, so that the first half
+  // ends at a few decision bits instead of a 32-bit multiplexer.
+  localparam [1:0] SK_NAN = 2'd0, SK_INF = 2'd1, SK_ZERO = 2'd2, SK_OVF = 2'd3;
+  wire       fa_zero = fa == 23'd0;
+  wire       spec    = a_max || a_zero || ovf;
+  wire [1:0] spec_k  = a_max ? (fa_zero ? SK_INF : SK_NAN) : (a_zero ? SK_ZERO : SK_OVF);
 
   // ---- the register between the halves (LATENCY >= 2) ----
-  localparam integer MID_W = 1 + 32 + 5 + 1 + 2 + 8 + 24 + 5 + 8 + 5;
-  wire [MID_W-1:0] mid_d = {spec, spec_y, spec_f, sign, left, tiny, t, m, d, e_left, sh};
+  localparam integer MID_W = 1 + 2 + 1 + 1 + 2 + 8 + 24 + 5 + 8 + 5;
+  wire [MID_W-1:0] mid_d = {spec, spec_k, r_a[31], sign, left, tiny, t, m, d, e_left, sh};
   wire [MID_W-1:0] mid_q;
   wire             mid_valid;
   fp_pipe #(.WIDTH(MID_W), .DEPTH(LATENCY >= 2 ? 1 : 0)) u_mid (
     .clk_i(clk_i), .rst_i(rst_i), .valid_i(p3_valid), .data_i(mid_d),
     .valid_o(mid_valid), .data_o(mid_q)
   );
-  wire        q_spec, q_sign, q_left, q_tiny;
-  wire [31:0] q_spec_y;
-  wire [4:0]  q_spec_f, q_d, q_sh;
+  wire        q_spec, q_a_sign, q_sign, q_left, q_tiny;
+  wire [1:0]  q_spec_k;
+  wire [4:0]  q_d, q_sh;
   wire [7:0]  q_t, q_e_left;
   wire [23:0] q_m;
-  assign {q_spec, q_spec_y, q_spec_f, q_sign, q_left, q_tiny, q_t, q_m, q_d, q_e_left, q_sh} = mid_q;
+  assign {q_spec, q_spec_k, q_a_sign, q_sign, q_left, q_tiny, q_t, q_m, q_d, q_e_left, q_sh} = mid_q;
+
+  // the decided result and flags: a NaN keeps a's sign and payload (q_m's
+  // fraction, a's exponent all ones), quieted
+  reg [31:0] q_spec_y;
+  reg [4:0]  q_spec_f;
+  always @* begin
+    q_spec_y = {q_sign, 31'd0};
+    q_spec_f = 5'd0;
+    case (q_spec_k)
+      SK_NAN: begin
+        q_spec_y = {q_a_sign, 8'hFF, 1'b1, q_m[21:0]};
+        q_spec_f = q_m[22] ? 5'd0 : FLAG_NV;
+      end
+      SK_INF:  q_spec_y = {q_sign, 8'hFF, 23'd0};
+      SK_ZERO: q_spec_y = {q_sign, 31'd0};
+      default: begin
+        q_spec_y = ROUND != 0 ? {q_sign, 31'h7F7F_FFFF} : {q_sign, 31'h7F80_0000};
+        q_spec_f = FLAG_OF | FLAG_NX;
+      end
+    endcase
+  end
 
   // ---- second half: shift | round, pack ----
   // left: exact
