@@ -105,6 +105,26 @@ module fp_mul_prod #(
     end
   endfunction
 
+  // The sticky bit's terms: a product's trailing zeros are those of a and
+  // b together (the product of two odd numbers is odd; a zero factor gives
+  // a zero product), so its low 21 bits hold a one exactly when a's
+  // lowest one (bit i) and b's (bit j) have i + j <= 20.  With the carry
+  // chain: a & ~(a - 1) is a's lowest one alone, ~b & (b - 1) the bits
+  // below b's lowest one (all of them for b = 0), and term i holds when
+  // a's lowest one is bit i and b has a one at or below bit 20 - i.  Only
+  // bits 20:0 of a and b count (bit i of a - 1 depends on bits i:0).
+  // The sticky bit is the OR of the 21 terms.
+  function [20:0] sticky_terms(input [20:0] a, input [20:0] b);
+    reg [20:0] a_low, b_below;
+    integer i;
+    begin
+      a_low   = a & ~(a - 21'd1);
+      b_below = ~b & (b - 21'd1);
+      for (i = 0; i < 21; i = i + 1)
+        sticky_terms[i] = a_low[i] & ~b_below[20 - i];
+    end
+  endfunction
+
   generate
     if ((LUT == 0) && BND[2]) begin : g_bad_bnd
       // Elaboration error on purpose: the DSP structure has no m2d.
@@ -133,6 +153,11 @@ module fp_mul_prod #(
       wire [WH-1:0]     hh;
       wire [23:0]       lh, hl, llp;
       wire              va;
+      // BLOCKS = 3: the sticky bit's terms (sticky_terms) from the
+      // operands, beside the products (with the blocks' input registers,
+      // on PRE's registered copies), ORed in m2b; the sticky bit then
+      // does not wait for m2c's 42-bit sum.  BLOCKS = 4: unused.
+      wire [20:0]       stt;
       if (PRE != 0) begin : g_pre
         // The products in registered blocks (latency 2 from a_i, b_i;
         // 1 from valid_i, side_i), the side band in one fabric register.
@@ -141,6 +166,7 @@ module fp_mul_prod #(
           fp_dsp_mul #(.W(12)) u_lh (.clk_i(clk_i), .a_i(a_i[11:0]),  .b_i(b_i[23:12]), .p_o(lh));
           fp_dsp_mul #(.W(12)) u_hl (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[11:0]),  .p_o(hl));
           fp_dsp_mul #(.W(12)) u_hh (.clk_i(clk_i), .a_i(a_i[23:12]), .b_i(b_i[23:12]), .p_o(hh));
+          assign stt = 21'd0;
         end else begin : g_b3
           // 18 x 6 in an 18 x 18 block: the 6-bit operand zero-extended,
           // the product's top 12 bits zero.
@@ -153,16 +179,20 @@ module fp_mul_prod #(
           assign lh = lh36[23:0];
           assign hl = hl36[23:0];
           wire unused_hi = &{1'b0, lh36[35:24], hl36[35:24]};
-          // aL bL in the fabric with the blocks' two registers: the
-          // operands, then the row pairs (no reset: data only).
-          reg [5:0]  ll_a, ll_b;
+          // aL bL and the sticky bit's terms in the fabric with the
+          // blocks' two registers: the operands, then the row pairs and
+          // the terms (no reset: data only).
+          reg [20:0] cp_a, cp_b;
           reg [23:0] ll_r;
+          reg [20:0] st_r;
           always @(posedge clk_i) begin
-            ll_a <= a_i[5:0];
-            ll_b <= b_i[5:0];
-            ll_r <= ll_rows(ll_a, ll_b);
+            cp_a <= a_i[20:0];
+            cp_b <= b_i[20:0];
+            ll_r <= ll_rows(cp_a[5:0], cp_b[5:0]);
+            st_r <= sticky_terms(cp_a, cp_b);
           end
           assign llp = ll_r;
+          assign stt = st_r;
         end
         fp_pipe #(.WIDTH(SIDE_W), .DEPTH(1)) u_pipe_a (
           .clk_i   (clk_i),
@@ -177,44 +207,49 @@ module fp_mul_prod #(
         wire [23:0]   c_lh = a_i[H-1:0] * b_i[23:H];
         wire [23:0]   c_hl = a_i[23:H] * b_i[H-1:0];
         wire [23:0]   c_llp;
+        wire [20:0]   c_stt;
         if (BLOCKS == 4) begin : g_b4
           assign c_llp = a_i[11:0] * b_i[11:0];
+          assign c_stt = 21'd0;
         end else begin : g_b3
           assign c_llp = ll_rows(a_i[5:0], b_i[5:0]);
+          assign c_stt = sticky_terms(a_i[20:0], b_i[20:0]);
         end
 
-        localparam integer WA = SIDE_W + WH + 3 * 24;
+        localparam integer WA = SIDE_W + 21 + WH + 3 * 24;
         fp_pipe #(.WIDTH(WA), .DEPTH(BND[0] ? 1 : 0)) u_pipe_a (
           .clk_i   (clk_i),
           .rst_i   (rst_i),
           .valid_i (valid_i),
-          .data_i  ({side_i, c_llp, c_lh, c_hl, c_hh}),
+          .data_i  ({side_i, c_stt, c_llp, c_lh, c_hl, c_hh}),
           .valid_o (va),
-          .data_o  ({sa, llp, lh, hl, hh})
+          .data_o  ({sa, stt, llp, lh, hl, hh})
         );
       end
 
       // -----------------------------------------------------------------
       // m2b: the two middle partial products summed; aL bL (2H bits)
-      // whole (BLOCKS = 3: from its row pairs); lo, what the sticky bit
-      // needs of its low H bits: BLOCKS = 4 their OR, BLOCKS = 3 the bits
-      // themselves (ORed in m2c, after the pairs' sum)
+      // whole (BLOCKS = 3: from its row pairs); lo: BLOCKS = 4 the OR of
+      // aL bL's low 12 bits (the sticky bit's part below m2c's sum),
+      // BLOCKS = 3 the sticky bit itself, the OR of its terms
       // -----------------------------------------------------------------
-      localparam integer WL = (BLOCKS == 3) ? H : 1;
       wire [24:0]    c_mid = {1'b0, lh} + {1'b0, hl};
       wire [2*H-1:0] c_ll;
-      wire [WL-1:0]  c_lo;
+      wire           c_lo;
       if (BLOCKS == 4) begin : g_ll4
         assign c_ll = llp;
         assign c_lo = |c_ll[11:0];
+        wire unused_stt = &{1'b0, stt, 1'b0};
       end else begin : g_ll3
-        // aL bL = r0 + 4 r1 + 16 r2 (< 2^12)
+        // aL bL = r0 + 4 r1 + 16 r2 (< 2^12); its low H bits count only
+        // in the sticky bit, which the terms give
         wire [11:0] r01 = {4'd0, llp[7:0]} + {2'd0, llp[15:8], 2'd0};
         assign c_ll = r01 + {llp[23:16], 4'd0};
-        assign c_lo = c_ll[WL-1:0];
+        assign c_lo = |stt;
+        wire unused_ll_lo = &{1'b0, c_ll[H-1:0], 1'b0};
       end
 
-      localparam integer WB = SIDE_W + WH + H + 25 + WL;
+      localparam integer WB = SIDE_W + WH + H + 25 + 1;
       wire          vb;
       wire [WB-1:0] db;
       fp_pipe #(.WIDTH(WB), .DEPTH(BND[1] ? 1 : 0)) u_pipe_b (
@@ -230,17 +265,18 @@ module fp_mul_prod #(
       wire [WH-1:0]     hh_b;
       wire [H-1:0]      ll_hi;
       wire [24:0]       mid;
-      wire [WL-1:0]     lo;
+      wire              lo;
       assign {sb, hh_b, ll_hi, mid, lo} = db;
-      wire lo_st = |lo;
 
       // -----------------------------------------------------------------
       // m2c: prod = hh * 2^(2H) + mid * 2^H + ll; bits 47:H by one adder
+      // (BLOCKS = 3: only its top 27 bits are used)
       // -----------------------------------------------------------------
       wire [47-H:0] c_hi = {hh_b, ll_hi} + {{(23-H){1'b0}}, mid};
+      wire          hi_st = |c_hi[20-H:0];
       assign valid_o  = vb;
       assign top_o    = c_hi[47-H:21-H];
-      assign sticky_o = lo_st | (|c_hi[20-H:0]);
+      assign sticky_o = (BLOCKS == 3) ? lo : (lo | hi_st);
       assign side_o   = sb;
     end else begin : g_lut
       // -----------------------------------------------------------------
@@ -257,23 +293,9 @@ module fp_mul_prod #(
         assign c_r1[26 * j +: 26] = {s, x[0]};
       end
 
-      // The sticky bit: a product's trailing zeros are those of a and b
-      // together (the product of two odd numbers is odd; a zero factor
-      // gives a zero product), so its low 21 bits hold a one exactly when
-      // a's lowest one (bit i) and b's (bit j) have i + j <= 20.  With the
-      // carry chain: a & ~(a - 1) is a's lowest one alone, ~b & (b - 1)
-      // the bits below b's lowest one (all of them for b = 0), and term i
-      // holds when a's lowest one is bit i and b has a one at or below
-      // bit 20 - i.  The 21 terms are registered here and ORed in m2b.
-      wire [23:0] a_dec = a_i - 24'd1;
-      wire [23:0] b_dec = b_i - 24'd1;
-      wire [23:0] a_low = a_i & ~a_dec;
-      wire [23:0] b_below = ~b_i & b_dec;
-      wire [20:0] c_stt;
-      for (j = 0; j < 21; j = j + 1) begin : g_stt
-        assign c_stt[j] = a_low[j] & ~b_below[20 - j];
-      end
-      wire unused_ab = &{1'b0, a_low[23:21], b_below[23:21]};
+      // The sticky bit's terms (sticky_terms), registered here and ORed
+      // in m2b.
+      wire [20:0] c_stt = sticky_terms(a_i[20:0], b_i[20:0]);
 
       localparam integer WA = SIDE_W + 21 + 12 * 26;
       wire          va;

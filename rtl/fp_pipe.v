@@ -6,10 +6,11 @@
 //   DEPTH  register stages (>= 0); 0 is a plain wire (no clock, no reset)
 //   HOLD   0: the data registers load every cycle (the default);
 //          1: each loads only with the valid bit entering its stage, and
-//          holds its word across bubbles.  Two lines with the same inputs
-//          then differ in their enables, so synthesis does not merge
-//          their registers into one set (the FP cores' operand
-//          registers: each core keeps its own, placed beside it).
+//          holds its word across bubbles; its registers carry Yosys's
+//          keep attribute.  Two lines with the same inputs are then not
+//          merged into one set by synthesis, even when their valid bits
+//          are the same net (the FP cores' operand registers: each core
+//          keeps its own, placed beside it).
 //
 // Ports:
 //   clk_i    clock, rising edge
@@ -73,8 +74,19 @@ module fp_pipe #(
 
       genvar k;
       for (k = 0; k < DEPTH; k = k + 1) begin : g_stage
-        always @(posedge clk_i) begin
-          if (HOLD == 0 || valid_d[k]) data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
+        if (HOLD != 0) begin : g_hold
+          // keep: Yosys's opt_merge would otherwise still merge two such
+          // lines whose valid bits are the same net (the spatial
+          // datapath's cores, whose valid_i is a constant 1).  A register
+          // with a constant input is still removed.
+          (* keep *)
+          always @(posedge clk_i) begin
+            if (valid_d[k]) data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
+          end
+        end else begin : g_load
+          always @(posedge clk_i) begin
+            data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
+          end
         end
       end
 

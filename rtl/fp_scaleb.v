@@ -95,16 +95,21 @@ module fp_scaleb #(
   // 0.5 or 2 keeps a one-place shifter, not a barrel shifter.
   // Place 3 (LATENCY >= 3) is the operand register in front of this
   // half.  Everything that needs a carry chain on a's exponent is
-  // computed side by side straight from the exponent field: the exponent
-  // sum t, the overflow and tiny decisions (t compared through its bounds
-  // moved onto E), the tiny path's shift 1 - t and its bound, and the
-  // leading-zero count lz; the selects after them are short.
+  // computed side by side straight from the exponent field ea, with no
+  // select in front: the exponent sum t, the overflow and tiny decisions
+  // (t compared through its bounds moved onto ea), the tiny path's shift
+  // 1 - t and its bound (for a normal and a subnormal a, selected after),
+  // and the leading-zero count lz.  With the spatial back end's constant
+  // b each decision is a compare of ea against a constant.
   // k = eb - 127 (-126 to 127) and a's significand m, not normalised (its
   // exponent E: ea, 1 for a subnormal a): a * 2^k = m * 2^(E + k - 150),
   // so t = E + k is the result's biased exponent while m's top bit is set.
   wire [40:0] p3_q;
   wire        p3_valid;
-  fp_pipe #(.WIDTH(41), .DEPTH(LATENCY >= 3 ? 1 : 0)) u_p3 (
+  // (HOLD: kept apart from the operand registers of other cores that
+  // take the same a, as fp_mul's and fp_add's are; b's constant bits
+  // still fold.)
+  fp_pipe #(.WIDTH(41), .DEPTH(LATENCY >= 3 ? 1 : 0), .HOLD(1)) u_p3 (
     .clk_i(clk_i), .rst_i(rst_i), .valid_i(valid_i),
     .data_i({a_i, b_i[31:23]}),
     .valid_o(p3_valid), .data_o(p3_q)
@@ -122,8 +127,8 @@ module fp_scaleb #(
   wire [23:0]       m     = {~a_sub, fa};
   wire signed [9:0] k     = $signed({2'b00, r_b[7:0]}) - 10'sd127;
   wire              k_neg = k < 10'sd0;
-  wire signed [9:0] x_e   = $signed({2'b00, a_sub ? 8'd1 : ea});
-  wire [7:0]        t     = x_e[7:0] + k[7:0]; // t's low 8 bits, the normal path's field
+  wire signed [9:0] e10   = $signed({2'b00, ea});
+  wire [7:0]        t     = ea + k[7:0]; // t's low 8 bits, the normal path's field (a normal)
   wire [4:0]        lz;
   fp_lzc #(.WIDTH(24)) u_lzc (.v_i(m), .n_o(lz));
   // the paths of a finite nonzero a
@@ -136,8 +141,11 @@ module fp_scaleb #(
   //   tiny:   t <= 0 (then k < 0): m shifted right by 1 - t, 1 to -k,
   //           rounded
   // t > 254 is E > 254 - k and t < 1 is E < 1 - k (10-bit signed, exact).
-  wire ovf  = !a_sub && x_e > 10'sd254 - k;
-  wire tiny = k_neg && x_e < 10'sd1 - k;
+  // Both hold for ea in place of E: a subnormal a (ea = 0, E = 1) never
+  // overflows (0 > 254 - k needs k > 254), and for k < 0 both 0 and 1
+  // are below 1 - k, so a subnormal a is tiny exactly when k < 0.
+  wire ovf  = e10 > 10'sd254 - k;
+  wire tiny = k_neg && e10 < 10'sd1 - k;
 
   // masks: the bits a shift amount needs when it is at most k (left) or
   // at most min(-k, 26) (tiny; from 26 places on only the sticky remains)
@@ -149,12 +157,14 @@ module fp_scaleb #(
   endfunction
   // the tiny path's shift: 1 - t = (1 - k) - E, bounded by min(-k, 26)
   // (1 - t > bound is E < (1 - k) - bound)
-  wire signed [9:0] x_nk     = -k;
-  wire [4:0]        x_sh_lim = (x_nk > 10'sd26) ? 5'd26 : x_nk[4:0];
+  // (a subnormal a, E = 1: 1 - t = -k, beyond the bound iff -k > 26)
+  wire signed [9:0] nk     = -k;
+  wire              nk_big = nk > 10'sd26;
+  wire [4:0]        sh_lim = nk_big ? 5'd26 : nk[4:0];
   // (only its low 5 bits are kept, so a 5-bit difference gives them)
-  wire [4:0]        x_sh_w   = 5'd1 - k[4:0] - x_e[4:0];
-  wire              x_sh_big = x_e < 10'sd1 - k - $signed({5'd0, x_sh_lim});
-  wire [4:0]        sh       = (x_sh_big ? x_sh_lim : x_sh_w) & span(x_sh_lim);
+  wire [4:0]        sh_w   = a_sub ? nk[4:0] : 5'd1 - k[4:0] - ea[4:0];
+  wire              sh_big = a_sub ? nk_big : e10 < 10'sd1 - k - $signed({5'd0, sh_lim});
+  wire [4:0]        sh     = (sh_big ? sh_lim : sh_w) & span(sh_lim);
 
   wire        a_max  = ea == 8'hFF;
   wire        a_zero = a_sub && (fa == 23'd0 || FTZ != 0);
