@@ -74,19 +74,15 @@ module fp_pipe #(
 
       genvar k;
       for (k = 0; k < DEPTH; k = k + 1) begin : g_stage
-        if (HOLD != 0) begin : g_hold
-          // keep: Yosys's opt_merge would otherwise still merge two such
-          // lines whose valid bits are the same net (the spatial
-          // datapath's cores, whose valid_i is a constant 1).  A register
-          // with a constant input is still removed.
-          (* keep *)
-          always @(posedge clk_i) begin
-            if (valid_d[k]) data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
-          end
-        end else begin : g_load
-          always @(posedge clk_i) begin
-            data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
-          end
+        // keep (HOLD = 1): Yosys's opt_merge would otherwise still merge
+        // two such lines whose valid bits are the same net (the spatial
+        // datapath's cores, whose valid_i is a constant 1).  A register
+        // with a constant input is still removed.  (An attribute, not a
+        // generate branch: HOLD = 0 lines keep their names, and so their
+        // netlist.)
+        (* keep = HOLD *)
+        always @(posedge clk_i) begin
+          if (HOLD == 0 || valid_d[k]) data_q[k*WIDTH +: WIDTH] <= data_d[k*WIDTH +: WIDTH];
         end
       end
 
