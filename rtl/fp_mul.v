@@ -67,8 +67,8 @@
 //            4: four 12 x 12-bit partial products, one MULT18X18D each
 //            3: the operands cut at bit 6: three MULT18X18D (18 x 18 and
 //            two 18 x 6) and the 6 x 6-bit low product in the fabric
-//            (fp_mul_prod BLOCKS), 72 to 102 LUT4s and 35 flip-flops more
-//            (latency 9, 10 with FEED; alone, spatial-core-area.sh);
+//            (fp_mul_prod BLOCKS), 150 to 172 LUT4s and 51 flip-flops
+//            more (latency 9, 10 with FEED; alone, spatial-core-area.sh);
 //            same latency, same results.  For chips whose multiplier
 //            blocks run out first (the literal ship pipeline: 56 of the
 //            LFE5U-85F's 156 with 4, 42 with 3)

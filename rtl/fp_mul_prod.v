@@ -33,10 +33,16 @@
 //              aL bH 18 x 6) and aL bL (6 x 6) in the fabric: m2a sums
 //              its rows in pairs (3 of 8 bits, an AND level and one carry
 //              chain), m2b sums the pairs (two carry chains of 12 bits,
-//              beside the middle sum).  It frees a quarter of the
-//              multiplier blocks for 72 to 102 LUT4s and 35 flip-flops
-//              (alone, scripts/spatial-core-area.sh), for chips whose
-//              multiplier blocks run out first (docs/spatial.md)
+//              beside the middle sum).  The sticky bit comes from the
+//              operands' trailing zeros (sticky_terms: m2a the terms,
+//              m2b their OR), beside the products, so that m2c's 42-bit
+//              sum ends at the top bits only (the OR of its low bits
+//              after the carry chain was a placed chip's worst path).  It
+//              frees a quarter of the multiplier blocks for 150 to 172
+//              LUT4s and, at fp_mul latency 9 (10 with FEED), 51
+//              flip-flops (alone, scripts/spatial-core-area.sh), for
+//              chips whose multiplier blocks run out first
+//              (docs/spatial.md)
 //   SIDE_W  bits of the side-band word (>= 1)
 //
 // Ports:

@@ -266,30 +266,30 @@ static const core_area core_areas[] = {
     {MUL_FEED, 10, 0, 0, 1041, 693, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 0, 1, 546, 679, 4}, /* fp_mul, FEED 1 */
     {MUL_FEED, 10, 1, 0, 993, 693, 4}, /* fp_mul, FEED 1 */
-    {MUL_B3, 3, 0, 0, 1752, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 3, 0, 1, 804, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 3, 1, 0, 1297, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 0, 0, 1129, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 0, 1, 635, 649, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_B3, 9, 1, 0, 1084, 661, 3}, /* fp_mul, MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 0, 0, 1139, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 0, 1, 636, 714, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
-    {MUL_FEED_B3, 10, 1, 0, 1092, 728, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_B3, 3, 0, 0, 1843, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 0, 1, 858, 185, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 3, 1, 0, 1375, 187, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 0, 1189, 677, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 0, 1, 714, 665, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_B3, 9, 1, 0, 1144, 677, 3}, /* fp_mul, MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 0, 1199, 744, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 0, 1, 699, 730, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
+    {MUL_FEED_B3, 10, 1, 0, 1157, 744, 3}, /* fp_mul, FEED 1 MULT_BLOCKS 3 */
     {FP3_IR_DIV, 8, 0, 0, 2840, 840, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 0, 1, 1966, 832, 0}, /* fp_div */
     {FP3_IR_DIV, 8, 1, 0, 2473, 840, 0}, /* fp_div */
     {FP3_IR_SQRT, 8, 0, 0, 1457, 512, 0}, /* fp_sqrt */
     {FP3_IR_SQRT, 8, 0, 1, 1011, 512, 0}, /* fp_sqrt */
     {FP3_IR_SQRT, 8, 1, 0, 1407, 512, 0}, /* fp_sqrt */
-    {SCALEB, 1, 0, 0, 236, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 1, 0, 1, 106, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 1, 1, 0, 285, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 2, 0, 0, 198, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 2, 0, 1, 297, 106, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 2, 1, 0, 201, 112, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 0, 0, 223, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 0, 1, 239, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
-    {SCALEB, 4, 1, 0, 226, 244, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 1, 0, 0, 340, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 1, 0, 1, 105, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 1, 1, 0, 281, 37, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 0, 0, 150, 80, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 0, 1, 142, 80, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 2, 1, 0, 175, 80, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 0, 223, 205, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 0, 1, 227, 205, 0}, /* fp_scaleb, b = 0.5 or 2 */
+    {SCALEB, 4, 1, 0, 222, 206, 0}, /* fp_scaleb, b = 0.5 or 2 */
     {SIGN, 1, 0, 0, 337, 34, 0}, /* fp_sign */
 };
 #undef SIGN
