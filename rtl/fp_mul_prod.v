@@ -299,18 +299,9 @@ module fp_mul_prod #(
         assign c_r1[26 * j +: 26] = {s, x[0]};
       end
 
-      // The sticky bit's terms, registered here and ORed in m2b: those of
-      // sticky_terms, written out over all 24 bits (the LUT structure's
-      // netlist, which the build for clock rate places, keeps its names).
-      wire [23:0] a_dec = a_i - 24'd1;
-      wire [23:0] b_dec = b_i - 24'd1;
-      wire [23:0] a_low = a_i & ~a_dec;
-      wire [23:0] b_below = ~b_i & b_dec;
-      wire [20:0] c_stt;
-      for (j = 0; j < 21; j = j + 1) begin : g_stt
-        assign c_stt[j] = a_low[j] & ~b_below[20 - j];
-      end
-      wire unused_ab = &{1'b0, a_low[23:21], b_below[23:21]};
+      // The sticky bit's terms (sticky_terms), registered here and ORed
+      // in m2b.
+      wire [20:0] c_stt = sticky_terms(a_i[20:0], b_i[20:0]);
 
       localparam integer WA = SIDE_W + 21 + 12 * 26;
       wire          va;
